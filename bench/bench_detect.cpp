@@ -1,0 +1,67 @@
+// nbscope_bench: BM_Detect/<algorithm>/<layout>/<N> for every registered detector.
+// Counters: ns_per_element, pairs, bytes_per_element (the detector's own arrays).
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "core/detector.hpp"
+#include "support/generators.hpp"
+
+namespace nbscope {
+namespace {
+
+using testdata::Layout;
+
+// Generated once per (layout, N, dim) and shared by every algorithm.
+const Elements& cached_layout(Layout layout, std::int64_t n, int dim) {
+  static std::map<std::tuple<int, std::int64_t, int>, std::unique_ptr<Elements>> cache;
+  auto& slot = cache[{static_cast<int>(layout), n, dim}];
+  if (!slot) slot = std::make_unique<Elements>(testdata::make_layout(layout, n, dim, 42));
+  return *slot;
+}
+
+void bm_detect(benchmark::State& state, std::string algorithm, Layout layout, std::int64_t n, int dim) {
+  const Elements& e = cached_layout(layout, n, dim);
+  auto detector = make_detector(algorithm);
+  PairList pairs;
+  for (auto _ : state) {
+    detector->detect(e, DetectOptions{}, pairs);
+    benchmark::DoNotOptimize(pairs.data());
+    benchmark::ClobberMemory();
+  }
+  state.counters["ns_per_element"] =
+      benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["pairs"] = static_cast<double>(pairs.size());
+  state.counters["bytes_per_element"] = static_cast<double>(detector->own_bytes()) / static_cast<double>(n);
+}
+
+void register_detect_benchmarks() {
+  const Layout layouts[] = {Layout::Loose, Layout::Dense, Layout::Clustered};
+  for (const DetectorInfo& info : detector_infos()) {
+    for (int dim : {2, 3}) {
+      if ((dim == 2 && !info.dim2) || (dim == 3 && !info.dim3)) continue;
+      for (Layout layout : layouts) {
+        for (std::int64_t n : {1'000, 10'000, 100'000, 1'000'000}) {
+          if (info.name == "brute" && n > 10'000) continue;
+          const std::string name = "BM_Detect/" + info.name + (dim == 3 ? "3d" : "") + "/" +
+                                   testdata::layout_name(layout) + "/" + std::to_string(n);
+          benchmark::RegisterBenchmark(name.c_str(), bm_detect, info.name, layout, n, dim)->Unit(benchmark::kMillisecond);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace nbscope
+
+int main(int argc, char** argv) {
+  nbscope::register_detect_benchmarks();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,19 @@
+#!/usr/bin/env python3
+"""Prints nbscope_bench's JSON output as a table: time per element and bytes per element."""
+import json
+import sys
+
+
+def main(path: str) -> None:
+    with open(path) as f:
+        data = json.load(f)
+    rows = [b for b in data["benchmarks"] if b.get("run_type", "iteration") == "iteration"]
+    print(f"{'benchmark':<48} {'ms/frame':>10} {'ns/elem':>9} {'B/elem':>8} {'pairs':>10}")
+    for b in rows:
+        ms = b["real_time"] if b.get("time_unit") == "ms" else b["real_time"] / 1e6
+        print(f"{b['name']:<48} {ms:>10.3f} {b.get('ns_per_element', 0):>9.1f} "
+              f"{b.get('bytes_per_element', 0):>8.1f} {int(b.get('pairs', 0)):>10}")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])

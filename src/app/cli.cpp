@@ -1,0 +1,108 @@
+#include "app/cli.hpp"
+
+#include <charconv>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace nbscope {
+
+std::optional<std::string> Args::value(const std::string& name) {
+  for (std::size_t i = 0; i < args_.size(); ++i) {
+    if (used_[i]) continue;
+    const std::string& a = args_[i];
+    if (a == name) {
+      if (i + 1 >= args_.size()) throw Error(name + ": missing value");
+      used_[i] = used_[i + 1] = true;
+      return args_[i + 1];
+    }
+    if (a.rfind(name + "=", 0) == 0) {
+      used_[i] = true;
+      return a.substr(name.size() + 1);
+    }
+  }
+  return std::nullopt;
+}
+
+bool Args::flag(const std::string& name) {
+  for (std::size_t i = 0; i < args_.size(); ++i) {
+    if (!used_[i] && args_[i] == name) {
+      used_[i] = true;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::optional<long long> Args::integer(const std::string& name, long long min, long long max) {
+  const auto v = value(name);
+  if (!v) return std::nullopt;
+  long long out = 0;
+  const auto [ptr, ec] = std::from_chars(v->data(), v->data() + v->size(), out);
+  if (v->empty() || ec != std::errc() || ptr != v->data() + v->size() || out < min || out > max)
+    throw Error(name + ": '" + *v + "' is not a whole number from " + std::to_string(min) + " to " + std::to_string(max));
+  return out;
+}
+
+std::optional<double> Args::number(const std::string& name) {
+  const auto v = value(name);
+  if (!v) return std::nullopt;
+  double out = 0;
+  const auto [ptr, ec] = std::from_chars(v->data(), v->data() + v->size(), out);
+  if (v->empty() || ec != std::errc() || ptr != v->data() + v->size() || !std::isfinite(out))
+    throw Error(name + ": '" + *v + "' is not a finite number");
+  return out;
+}
+
+std::optional<std::string> Args::positional() {
+  for (std::size_t i = 0; i < args_.size(); ++i) {
+    if (!used_[i] && args_[i].rfind("--", 0) != 0) {
+      used_[i] = true;
+      return args_[i];
+    }
+  }
+  return std::nullopt;
+}
+
+void Args::finish() const {
+  for (std::size_t i = 0; i < args_.size(); ++i) {
+    if (used_[i]) continue;
+    if (args_[i].rfind("-", 0) == 0) throw Error(args_[i] + ": unknown flag (see nbscope --help)");
+    throw Error(args_[i] + ": unexpected argument (see nbscope --help)");
+  }
+}
+
+void parse_size(const std::string& flag, const std::string& text, int& out_width, int& out_height) {
+  const std::size_t x = text.find('x');
+  int w = 0, h = 0;
+  bool ok = x != std::string::npos;
+  if (ok) {
+    auto [p1, e1] = std::from_chars(text.data(), text.data() + x, w);
+    auto [p2, e2] = std::from_chars(text.data() + x + 1, text.data() + text.size(), h);
+    ok = e1 == std::errc() && e2 == std::errc() && p1 == text.data() + x && p2 == text.data() + text.size();
+  }
+  if (!ok || w < 16 || h < 16 || w > 8192 || h > 8192)
+    throw Error(flag + ": '" + text + "' is not a size WxH with sides from 16 to 8192");
+  out_width = w;
+  out_height = h;
+}
+
+int parse_point(const std::string& flag, const std::string& text, double out[3]) {
+  int count = 0;
+  std::size_t start = 0;
+  while (count < 4) {
+    const std::size_t comma = text.find(',', start);
+    const std::size_t end = comma == std::string::npos ? text.size() : comma;
+    double v = 0;
+    auto [p, ec] = std::from_chars(text.data() + start, text.data() + end, v);
+    if (ec != std::errc() || p != text.data() + end || !std::isfinite(v) || count == 3)
+      throw Error(flag + ": '" + text + "' is not X,Y or X,Y,Z");
+    out[count++] = v;
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (count < 2) throw Error(flag + ": '" + text + "' is not X,Y or X,Y,Z");
+  return count;
+}
+
+}  // namespace nbscope

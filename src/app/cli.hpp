@@ -1,0 +1,38 @@
+// nbscope app: a small command-line parser. Flags are taken by name; whatever is left over is an
+// error, so every command refuses unknown flags the same way.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace nbscope {
+
+class Args {
+ public:
+  // Wraps the arguments after the command name.
+  explicit Args(std::vector<std::string> args) : args_(std::move(args)), used_(args_.size(), false) {}
+
+  // True (and consumed) when `--name` is present.
+  bool flag(const std::string& name);
+  // The value of `--name VALUE` or `--name=VALUE`; Error when the value is missing.
+  std::optional<std::string> value(const std::string& name);
+  // Like value(), parsed as an integer in [min, max]; Error names the flag otherwise.
+  std::optional<long long> integer(const std::string& name, long long min, long long max);
+  // Like value(), parsed as a finite double.
+  std::optional<double> number(const std::string& name);
+  // The next unconsumed argument not starting with "--", consumed.
+  std::optional<std::string> positional();
+  // Error for the first argument nobody consumed ("unknown flag '--x'").
+  void finish() const;
+
+ private:
+  std::vector<std::string> args_;
+  std::vector<bool> used_;
+};
+
+// "W" "x" "H" into width and height; Error names `flag` otherwise.
+void parse_size(const std::string& flag, const std::string& text, int& out_width, int& out_height);
+// "X,Y[,Z]" into up to three doubles; Error names `flag` otherwise. Returns the count (2 or 3).
+int parse_point(const std::string& flag, const std::string& text, double out[3]);
+
+}  // namespace nbscope

@@ -1,0 +1,11 @@
+// nbscope app: one function per sub-command (one file each), returning the process exit code:
+// 0 all well, 1 a check failed, 2 bad input (thrown as Error and reported by main).
+#pragma once
+#include "app/cli.hpp"
+
+namespace nbscope {
+
+// `nbscope pairs --input F [--algorithm A] [--output F] [--repeat K]`
+int run_pairs(Args& args);
+
+}  // namespace nbscope

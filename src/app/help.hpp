@@ -1,0 +1,24 @@
+// nbscope app: the text of `nbscope --help` and the version.
+#pragma once
+
+namespace nbscope {
+
+inline constexpr const char* kVersion = "0.1.0";
+
+inline constexpr const char* kHelpText = R"(nbscope - a visual debugger for grid-based contact detection (Munjiza-NBS and its ancestors)
+
+usage:
+  nbscope pairs --input ELEMENTS.csv [--algorithm NAME] [--output PAIRS.csv] [--repeat K]
+                [--cell-size D] [--origin X,Y[,Z]] [--max-pairs M]
+      Contact pairs of the elements (rows x,y,r or x,y,z,r) as CSV "i,j" (0-based, i < j, sorted),
+      to PAIRS.csv or stdout. Detection time (without I/O) and pair count go to stderr.
+      --repeat K runs detection K times and checks that every run agrees.
+      --cell-size/--origin pin the grid (default: largest diameter, minimum corner).
+      --max-pairs M stops with an error past M pairs (default 50,000,000: 400 MB).
+  nbscope algorithms      list the detectors
+  nbscope --help | --version
+
+exit codes: 0 all well, 1 a check failed, 2 bad input or usage (one line on stderr).
+)";
+
+}  // namespace nbscope

@@ -1,0 +1,58 @@
+// nbscope: entry point. Dispatches to one sub-command and turns errors into exit codes.
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "app/help.hpp"
+#include "core/detector.hpp"
+#include "core/error.hpp"
+
+namespace {
+
+int print_algorithms() {
+  for (const nbscope::DetectorInfo& d : nbscope::detector_infos()) {
+    std::printf("%-7s %-6s %s\n", d.name.c_str(), d.dim3 ? (d.dim2 ? "2D,3D" : "3D") : "2D", d.summary.c_str());
+  }
+  return 0;
+}
+
+int dispatch(const std::string& command, nbscope::Args& args) {
+  if (command == "--help" || command == "-h" || command == "help") {
+    std::fputs(nbscope::kHelpText, stdout);
+    return 0;
+  }
+  if (command == "--version") {
+    std::printf("nbscope %s\n", nbscope::kVersion);
+    return 0;
+  }
+  if (command == "algorithms") {
+    args.finish();
+    return print_algorithms();
+  }
+  if (command == "pairs") return nbscope::run_pairs(args);
+  throw nbscope::Error(command + ": unknown command (see nbscope --help)");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> rest(argv + (argc > 1 ? 2 : 1), argv + argc);
+  const std::string command = argc > 1 ? argv[1] : "--help";
+  nbscope::Args args(std::move(rest));
+  try {
+    return dispatch(command, args);
+  } catch (const nbscope::Error& e) {
+    std::fprintf(stderr, "nbscope: error: %s\n", e.what());
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "nbscope: error: out of memory (the input is too large for this machine)\n");
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "nbscope: error: internal: %s\n", e.what());
+    return 2;
+  }
+}

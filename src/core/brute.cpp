@@ -1,0 +1,32 @@
+#include "core/brute.hpp"
+
+namespace nbscope {
+
+namespace {
+template <class Trace>
+void brute_pairs(const Elements& e, const DetectOptions& options, PairList& out, Trace& trace) {
+  PairCollector pairs(out, options.max_pairs);
+  const auto n = static_cast<ElementId>(e.size());
+  trace.phase(0, "all pairs", -1);
+  for (ElementId i = 0; i < n; ++i) {
+    for (ElementId j = i + 1; j < n; ++j) {
+      const bool contact = in_contact(e, i, j);
+      trace.test_pair(1, i, j, contact);
+      if (contact) pairs.add(i, j);
+    }
+  }
+}
+}  // namespace
+
+void BruteDetector::detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) {
+  NullTrace none;
+  brute_pairs(elements, options, out_pairs, none);
+}
+
+void BruteDetector::detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs,
+                                  TraceLog& out_trace) {
+  out_trace.reset();
+  brute_pairs(elements, options, out_pairs, out_trace);
+}
+
+}  // namespace nbscope

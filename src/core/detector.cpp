@@ -1,0 +1,35 @@
+#include "core/detector.hpp"
+
+#include "core/detectors.hpp"
+#include "core/error.hpp"
+
+namespace nbscope {
+
+namespace {
+std::vector<DetectorInfo>& registry() {
+  static std::vector<DetectorInfo> infos = builtin_detectors();
+  return infos;
+}
+}  // namespace
+
+const std::vector<DetectorInfo>& detector_infos() { return registry(); }
+
+void register_detector(DetectorInfo info) {
+  for (const DetectorInfo& d : registry())
+    if (d.name == info.name) return;
+  registry().push_back(std::move(info));
+}
+
+std::string detector_names() {
+  std::string s;
+  for (const DetectorInfo& d : registry()) s += (s.empty() ? "" : ", ") + d.name;
+  return s;
+}
+
+std::unique_ptr<Detector> make_detector(std::string_view name) {
+  for (const DetectorInfo& d : registry())
+    if (d.name == name) return d.make();
+  throw Error("unknown algorithm '" + std::string(name) + "' (known: " + detector_names() + ")");
+}
+
+}  // namespace nbscope

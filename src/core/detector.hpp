@@ -1,0 +1,63 @@
+// nbscope core: the one interface every contact-detection algorithm implements, and the registry
+// that names them for the command line.
+#pragma once
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/elements.hpp"
+#include "core/grid.hpp"
+#include "core/pairs.hpp"
+#include "core/trace.hpp"
+
+namespace nbscope {
+
+// Inputs of one detection besides the elements.
+struct DetectOptions {
+  GridOptions grid;                        // cell size / origin overrides (defaults: DESIGN.md "Cells")
+  std::size_t max_pairs = kDefaultMaxPairs;  // past this detection throws Error
+};
+
+// A contact-detection algorithm. Instances keep their arrays between calls (as a simulation
+// would), so repeated detection does not reallocate.
+class Detector {
+ public:
+  virtual ~Detector() = default;
+  // Registry name, e.g. "nbs".
+  [[nodiscard]] virtual std::string_view name() const = 0;
+  // True when the detector handles elements of this dimension (2 or 3).
+  [[nodiscard]] virtual bool supports_dim(int dim) const = 0;
+  // Finds every contact of `elements` into `out_pairs` (cleared first): each pair once, i < j,
+  // in the detector's own order. Throws Error on unsupported input or past options.max_pairs.
+  virtual void detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) = 0;
+  // As detect(), also recording every book operation into `out_trace` (reset first).
+  virtual void detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs,
+                             TraceLog& out_trace) = 0;
+  // Bytes of the detector's own arrays used by the last detection (not the input or the pairs).
+  [[nodiscard]] virtual std::size_t own_bytes() const = 0;
+  // The grid of the last detection, or nullptr for detectors without one.
+  [[nodiscard]] virtual const Grid* last_grid() const { return nullptr; }
+};
+
+// What the registry knows of one algorithm.
+struct DetectorInfo {
+  std::string name;
+  std::string summary;  // one line for `nbscope algorithms`
+  bool dim2 = true;
+  bool dim3 = false;
+  std::function<std::unique_ptr<Detector>()> make;
+};
+
+// All registered algorithms, in registration order (core's own first).
+const std::vector<DetectorInfo>& detector_infos();
+// Adds an algorithm defined outside core (e.g. physics' "box2d"); a second add of a name is ignored.
+void register_detector(DetectorInfo info);
+// Creates the detector called `name`; throws Error naming the known ones if there is none.
+std::unique_ptr<Detector> make_detector(std::string_view name);
+// "brute, nbs, ..." for messages.
+std::string detector_names();
+
+}  // namespace nbscope

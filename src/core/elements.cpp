@@ -1,0 +1,58 @@
+#include "core/elements.hpp"
+
+#include <cassert>
+
+namespace nbscope {
+
+void Elements::resize(std::int64_t n) {
+  assert(n >= 0 && n <= kMaxElements && "Elements::resize: count out of range");
+  x.resize(n);
+  y.resize(n);
+  z.resize(dim == 3 ? n : 0);
+  r.resize(n);
+}
+
+void Elements::push_back(double px, double py, double pz, double pr) {
+  const std::int64_t n = size();
+  x.conservativeResize(n + 1);
+  y.conservativeResize(n + 1);
+  r.conservativeResize(n + 1);
+  x[n] = px;
+  y[n] = py;
+  r[n] = pr;
+  if (dim == 3) {
+    z.conservativeResize(n + 1);
+    z[n] = pz;
+  }
+}
+
+double Elements::max_radius() const { return size() == 0 ? 0.0 : r.maxCoeff(); }
+
+Bounds Elements::centre_bounds() const {
+  Bounds b;
+  if (size() == 0) return b;
+  for (int a = 0; a < dim; ++a) {
+    b.min[a] = axis(a).minCoeff();
+    b.max[a] = axis(a).maxCoeff();
+  }
+  return b;
+}
+
+bool Elements::valid() const {
+  if (y.size() != x.size() || r.size() != x.size()) return false;
+  if (dim == 3 && z.size() != x.size()) return false;
+  if (!x.allFinite() || !y.allFinite() || !r.allFinite()) return false;
+  if (dim == 3 && !z.allFinite()) return false;
+  return size() == 0 || r.minCoeff() > 0.0;
+}
+
+Elements make_elements_2d(const Eigen::ArrayXd& x, const Eigen::ArrayXd& y, const Eigen::ArrayXd& r) {
+  Elements e;
+  e.dim = 2;
+  e.x = x;
+  e.y = y;
+  e.r = r;
+  return e;
+}
+
+}  // namespace nbscope

@@ -1,0 +1,44 @@
+// nbscope core: a set of bounding circles (2D) or spheres (3D), stored structure-of-arrays.
+#pragma once
+#include <Eigen/Core>
+#include <cstdint>
+
+namespace nbscope {
+
+// Element ids are 0-based row indices and fit in int32 (the book's integer arrays).
+using ElementId = std::int32_t;
+
+// Most elements one set may hold: ids stay int32 and the arrays stay within memory.
+inline constexpr std::int64_t kMaxElements = 100'000'000;
+
+// Axis-aligned box of the element centres.
+struct Bounds {
+  double min[3] = {0, 0, 0};
+  double max[3] = {0, 0, 0};
+};
+
+// N bounding circles (dim 2: x, y, r) or spheres (dim 3: x, y, z, r); z is empty in 2D.
+struct Elements {
+  int dim = 2;
+  Eigen::ArrayXd x, y, z, r;
+
+  // Number of elements.
+  [[nodiscard]] std::int64_t size() const { return x.size(); }
+  // Resizes every column to n (z only in 3D); contents are unspecified.
+  void resize(std::int64_t n);
+  // Appends one element; z is ignored in 2D.
+  void push_back(double px, double py, double pz, double pr);
+  // Coordinate column by axis (0 = x, 1 = y, 2 = z).
+  [[nodiscard]] const Eigen::ArrayXd& axis(int a) const { return a == 0 ? x : (a == 1 ? y : z); }
+  // Largest radius, 0 for an empty set.
+  [[nodiscard]] double max_radius() const;
+  // Bounding box of the centres (all zero for an empty set).
+  [[nodiscard]] Bounds centre_bounds() const;
+  // True when every coordinate and radius is finite and every radius > 0.
+  [[nodiscard]] bool valid() const;
+};
+
+// Builds a 2D set from columns (convenience for tests and benchmarks).
+Elements make_elements_2d(const Eigen::ArrayXd& x, const Eigen::ArrayXd& y, const Eigen::ArrayXd& r);
+
+}  // namespace nbscope

@@ -1,0 +1,49 @@
+// nbscope core: the cell grid of the book (identical square cells of size d) and its integerisation.
+#pragma once
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+
+#include "core/elements.hpp"
+
+namespace nbscope {
+
+// Most cells along one side. Keeps every cell index in int32 and a heads array of one side
+// (nbs: 2*nx + ny integers) within ~130 MB; a sparser world needs a larger --cell-size.
+inline constexpr std::int64_t kMaxCellsPerSide = std::int64_t{1} << 24;
+
+// How the grid is pinned. Unset fields are derived from the data each frame (DESIGN.md "Cells").
+struct GridOptions {
+  std::optional<double> cell_size;              // default: the largest diameter (the book's d)
+  std::optional<std::array<double, 3>> origin;  // default: minimum corner of the centres' bounding box
+};
+
+// A grid fitted to one element set: nx*ny(*nz) cells of size d from `origin`.
+struct Grid {
+  int dim = 2;
+  double cell_size = 1;
+  double inv_cell_size = 1;
+  double origin[3] = {0, 0, 0};
+  std::int64_t n[3] = {1, 1, 1};  // cells per axis; n[2] == 1 in 2D
+
+  // Integerised coordinate Int((v - origin)/d) on axis a (eq. 3.76), clamped into [0, n[a]).
+  // Clamping keeps neighbours neighbours (the map is monotone), so an origin pinned inside the
+  // data still finds every contact.
+  [[nodiscard]] std::int32_t cell(double v, int a) const {
+    const double c = std::floor((v - origin[a]) * inv_cell_size);
+    if (!(c >= 0)) return 0;  // also catches NaN
+    if (c >= static_cast<double>(n[a])) return static_cast<std::int32_t>(n[a] - 1);
+    return static_cast<std::int32_t>(c);
+  }
+  // Total number of cells nx*ny(*nz), as the screen array would need them.
+  [[nodiscard]] std::int64_t cell_count() const { return n[0] * n[1] * n[2]; }
+};
+
+// Fits a grid to `elements`: d = options.cell_size or the largest diameter; origin = options.origin
+// or the minimum corner; n covers every centre. Throws Error when d is not positive and finite, is
+// smaller than the largest diameter (contacts could then skip a cell), or a side would exceed
+// kMaxCellsPerSide.
+Grid make_grid(const Elements& elements, const GridOptions& options);
+
+}  // namespace nbscope

@@ -1,0 +1,56 @@
+// nbscope core: contact pairs, the contact test, and a bounded pair collector.
+#pragma once
+#include <compare>
+#include <cstdint>
+#include <vector>
+
+#include "core/elements.hpp"
+
+namespace nbscope {
+
+// A contact between elements i < j.
+struct Pair {
+  ElementId i = 0;
+  ElementId j = 0;
+  friend auto operator<=>(const Pair&, const Pair&) = default;
+};
+using PairList = std::vector<Pair>;
+
+// Most pairs one detection may produce by default (8 bytes each: 400 MB). A pile of N elements
+// at one point has N(N-1)/2 contacts, so this allows one of ~10,000 elements; past it detection
+// stops with an Error instead of exhausting memory. Override with DetectOptions::max_pairs.
+inline constexpr std::size_t kDefaultMaxPairs = 50'000'000;
+
+// Contact as in DESIGN.md: |c_i - c_j| <= r_i + r_j, in double, touching counts.
+[[nodiscard]] inline bool in_contact(const Elements& e, ElementId i, ElementId j) {
+  const double dx = e.x[i] - e.x[j];
+  const double dy = e.y[i] - e.y[j];
+  const double dz = e.dim == 3 ? e.z[i] - e.z[j] : 0.0;
+  const double rr = e.r[i] + e.r[j];
+  return dx * dx + dy * dy + dz * dz <= rr * rr;
+}
+
+// Appends pairs in (min, max) order and refuses to grow past a limit.
+class PairCollector {
+ public:
+  // Collects into `out` (cleared), throwing Error once more than `limit` pairs arrive.
+  PairCollector(PairList& out, std::size_t limit) : out_(out), limit_(limit) { out_.clear(); }
+  // Records the contact {a, b}; a != b.
+  void add(ElementId a, ElementId b) {
+    if (out_.size() >= limit_) overflow();
+    out_.push_back(a < b ? Pair{a, b} : Pair{b, a});
+  }
+  [[nodiscard]] std::size_t size() const { return out_.size(); }
+
+ private:
+  [[noreturn]] void overflow() const;
+  PairList& out_;
+  std::size_t limit_;
+};
+
+// Sorts pairs into (i, j) order; detectors emit them in their own order.
+void sort_pairs(PairList& pairs);
+// Pairs in `a` and not in `b`; both must be sorted.
+PairList pairs_missing_from(const PairList& a, const PairList& b);
+
+}  // namespace nbscope

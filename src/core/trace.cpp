@@ -1,0 +1,101 @@
+#include "core/trace.hpp"
+
+#include <algorithm>
+#include <cassert>
+
+namespace nbscope {
+
+void TraceLog::reset() {
+  events_.clear();
+  arrays_.clear();
+}
+
+int TraceLog::declare_array(std::string name, std::vector<std::int64_t> shape, std::span<const std::int32_t> initial) {
+  arrays_.push_back(TracedArray{std::move(name), std::move(shape), {initial.begin(), initial.end()}});
+  return static_cast<int>(arrays_.size()) - 1;
+}
+
+void TraceLog::phase(std::uint8_t line, const char* label, std::int32_t index) {
+  TraceEvent e;
+  e.op = TraceOp::Phase;
+  e.line = line;
+  e.label = label;
+  e.index = index;
+  events_.push_back(e);
+}
+
+void TraceLog::push(std::uint8_t line, const char* kind, int heads, std::int64_t list_index, int next, ElementId k,
+                    std::int32_t old_head, std::int32_t old_next, std::int32_t ix, std::int32_t iy, std::int32_t iz) {
+  TraceEvent e;
+  e.op = TraceOp::Push;
+  e.line = line;
+  e.label = kind;
+  e.element = k;
+  e.index = static_cast<std::int32_t>(list_index);
+  e.cell[0] = ix;
+  e.cell[1] = iy;
+  e.cell[2] = iz;
+  e.write_count = 2;
+  e.writes[0] = ArrayWrite{next, old_next, old_head, k};
+  e.writes[1] = ArrayWrite{heads, old_head, k, list_index};
+  events_.push_back(e);
+}
+
+void TraceLog::clear(std::uint8_t line, const char* kind, int heads, std::int64_t list_index, std::int32_t old_head) {
+  TraceEvent e;
+  e.op = TraceOp::Clear;
+  e.line = line;
+  e.label = kind;
+  e.index = static_cast<std::int32_t>(list_index);
+  e.write_count = 1;
+  e.writes[0] = ArrayWrite{heads, old_head, -1, list_index};
+  events_.push_back(e);
+}
+
+void TraceLog::visit_cell(std::uint8_t line, ElementId k, std::int32_t ix, std::int32_t iy, std::int32_t iz) {
+  TraceEvent e;
+  e.op = TraceOp::VisitCell;
+  e.line = line;
+  e.element = k;
+  e.cell[0] = ix;
+  e.cell[1] = iy;
+  e.cell[2] = iz;
+  events_.push_back(e);
+}
+
+void TraceLog::test_pair(std::uint8_t line, ElementId k, ElementId other, bool contact) {
+  TraceEvent e;
+  e.op = TraceOp::TestPair;
+  e.line = line;
+  e.element = k;
+  e.other = other;
+  e.contact = contact;
+  events_.push_back(e);
+}
+
+void TraceLog::apply(const TraceEvent& e, std::vector<std::vector<std::int32_t>>& state) {
+  for (int w = 0; w < e.write_count; ++w) {
+    const ArrayWrite& a = e.writes[w];
+    assert(a.array >= 0 && static_cast<std::size_t>(a.array) < state.size() && "trace write to an undeclared array");
+    state[a.array][a.index] = a.new_value;
+  }
+}
+
+void TraceLog::undo(const TraceEvent& e, std::vector<std::vector<std::int32_t>>& state) {
+  for (int w = e.write_count - 1; w >= 0; --w) {
+    const ArrayWrite& a = e.writes[w];
+    assert(a.array >= 0 && static_cast<std::size_t>(a.array) < state.size() && "trace write to an undeclared array");
+    state[a.array][a.index] = a.old_value;
+  }
+}
+
+std::vector<std::vector<std::int32_t>> TraceLog::state_after(std::size_t count) const {
+  std::vector<std::vector<std::int32_t>> state;
+  state.reserve(arrays_.size());
+  for (const TracedArray& a : arrays_) state.push_back(a.initial);
+  count = std::min(count, events_.size());
+  for (std::size_t i = 0; i < count; ++i) apply(events_[i], state);
+  return state;
+}
+
+}  // namespace nbscope

@@ -1,0 +1,43 @@
+#include "io/atomic_file.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.hpp"
+
+namespace nbscope {
+
+namespace {
+std::string temp_name_for(const std::string& path) {
+  return path + ".tmp." + std::to_string(static_cast<long>(::getpid()));
+}
+}  // namespace
+
+void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& fill) {
+  if (path.empty()) throw Error("output path is empty");
+  if (std::filesystem::is_directory(path)) throw Error(path + ": cannot write: it is a directory");
+  const std::string tmp = temp_name_for(path);
+  try {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw Error(path + ": cannot write: " + std::strerror(errno));
+    fill(out);
+    out.flush();
+    if (!out) throw Error(path + ": cannot write: " + std::strerror(errno));
+    out.close();
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) throw Error(path + ": cannot write: " + std::strerror(errno));
+  } catch (...) {
+    std::remove(tmp.c_str());
+    throw;
+  }
+}
+
+void write_bytes_atomically(const std::string& path, const void* data, std::size_t size) {
+  write_file_atomically(path, [&](std::ostream& out) { out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size)); });
+}
+
+}  // namespace nbscope

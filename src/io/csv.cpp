@@ -1,0 +1,145 @@
+#include "io/csv.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string_view>
+#include <vector>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+
+namespace nbscope {
+
+namespace {
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+std::vector<std::string_view> split_commas(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = line.find(',', start);
+    out.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+bool is_name(std::string_view s) {
+  if (s.empty() || !std::isalpha(static_cast<unsigned char>(s.front()))) return false;
+  for (char c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+  // "nan" and "inf" are numbers that are refused below, not column names.
+  std::string lower(s);
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return lower != "nan" && lower != "inf" && lower != "infinity";
+}
+
+const char* const kColumnNames2[] = {"x", "y", "r"};
+const char* const kColumnNames3[] = {"x", "y", "z", "r"};
+
+}  // namespace
+
+Elements parse_elements_csv(const std::string& text, const std::string& where) {
+  if (trim(text).empty()) throw Error(where + ":1: empty file (expected rows of x,y,r or x,y,z,r)");
+  Elements e;
+  e.dim = 0;
+  std::vector<double> cols[4];
+  std::size_t line_no = 0;
+  bool seen_row_or_header = false;
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string::npos) end = text.size();
+    std::string_view line(text.data() + pos, end - pos);
+    pos = end + 1;
+    ++line_no;
+    const std::size_t hash = line.find('#');
+    if (hash != std::string_view::npos) line = line.substr(0, hash);
+    line = trim(line);
+    if (line.empty()) {
+      if (end == text.size()) break;
+      continue;
+    }
+    const std::string at = where + ":" + std::to_string(line_no) + ": ";
+    const std::vector<std::string_view> fields = split_commas(line);
+    if (!seen_row_or_header && is_name(fields.front())) {
+      for (std::string_view f : fields)
+        if (!is_name(f)) throw Error(at + "header mixes names and numbers: '" + std::string(f) + "'");
+      if (fields.size() != 3 && fields.size() != 4)
+        throw Error(at + "header has " + std::to_string(fields.size()) + " columns; expected x,y,r or x,y,z,r");
+      seen_row_or_header = true;
+      continue;
+    }
+    seen_row_or_header = true;
+    if (fields.size() != 3 && fields.size() != 4)
+      throw Error(at + std::to_string(fields.size()) + " columns; expected 3 (x,y,r) or 4 (x,y,z,r)");
+    const int dim = fields.size() == 3 ? 2 : 3;
+    if (e.dim == 0) e.dim = dim;
+    if (dim != e.dim)
+      throw Error(at + std::to_string(fields.size()) + " columns, but the first row had " + std::to_string(e.dim + 1));
+    if (static_cast<std::int64_t>(cols[0].size()) >= kMaxElements)
+      throw Error(at + "more than " + std::to_string(kMaxElements) + " elements");
+    const char* const* names = dim == 2 ? kColumnNames2 : kColumnNames3;
+    for (std::size_t c = 0; c < fields.size(); ++c) {
+      const std::string_view f = fields[c];
+      double v = 0;
+      const auto [ptr, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
+      if (f.empty() || ec == std::errc::invalid_argument || ptr != f.data() + f.size())
+        throw Error(at + names[c] + ": '" + std::string(f) + "' is not a number");
+      if (ec == std::errc::result_out_of_range || !std::isfinite(v))
+        throw Error(at + names[c] + ": '" + std::string(f) + "' is not a finite number");
+      if (c + 1 == fields.size() && !(v > 0)) throw Error(at + "r: radius must be > 0, got " + std::string(f));
+      cols[c].push_back(v);
+    }
+    if (end == text.size()) break;
+  }
+  if (e.dim == 0) e.dim = 2;
+  const auto n = static_cast<Eigen::Index>(cols[0].size());
+  auto column = [&](int c) { return Eigen::Map<const Eigen::ArrayXd>(cols[c].data(), n); };
+  e.x = column(0);
+  e.y = column(1);
+  if (e.dim == 3) {
+    e.z = column(2);
+    e.r = column(3);
+  } else {
+    e.r = column(2);
+  }
+  return e;
+}
+
+Elements read_elements_csv(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path + ": cannot open (no such file or not readable)");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw Error(path + ": read error");
+  return parse_elements_csv(ss.str(), path);
+}
+
+void write_pairs_csv(const std::string& path, const PairList& sorted_pairs) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    std::string buf = "i,j\n";
+    buf.reserve(16 * sorted_pairs.size() + 8);
+    char num[32];
+    for (const Pair& p : sorted_pairs) {
+      auto r1 = std::to_chars(num, num + sizeof num, p.i);
+      buf.append(num, r1.ptr);
+      buf.push_back(',');
+      auto r2 = std::to_chars(num, num + sizeof num, p.j);
+      buf.append(num, r2.ptr);
+      buf.push_back('\n');
+    }
+    out.write(buf.data(), static_cast<std::streamsize>(buf.size()));
+  });
+}
+
+}  // namespace nbscope

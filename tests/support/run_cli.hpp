@@ -1,0 +1,24 @@
+// nbscope tests: run the nbscope binary and capture its exit code, stdout and stderr.
+#pragma once
+#include <string>
+
+namespace nbscope::testcli {
+
+struct Result {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+// Path of the nbscope binary under test (baked in by CMake).
+const std::string& binary();
+// Runs `nbscope <args>` through the shell (args are shell words) with stdin from /dev/null.
+Result run(const std::string& args);
+// A fresh empty directory for one test's files.
+std::string scratch_dir(const std::string& test_name);
+// Writes `text` to `path`.
+void write_text(const std::string& path, const std::string& text);
+// Reads a whole file ("" if missing).
+std::string read_text(const std::string& path);
+
+}  // namespace nbscope::testcli

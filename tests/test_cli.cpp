@@ -1,0 +1,118 @@
+// The command line: pairs, help, version, algorithms, and every bad input of the foundation.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "support/run_cli.hpp"
+
+namespace nbscope {
+namespace {
+
+using testcli::read_text;
+using testcli::run;
+using testcli::scratch_dir;
+using testcli::write_text;
+
+std::string example() { return std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/nine.csv"; }
+
+TEST(Cli, HelpVersionAndAlgorithms) {
+  auto help = run("--help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("nbscope pairs"), std::string::npos);
+  auto version = run("--version");
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_EQ(version.out.rfind("nbscope ", 0), 0u);
+  auto algos = run("algorithms");
+  EXPECT_EQ(algos.exit_code, 0);
+  EXPECT_NE(algos.out.find("brute"), std::string::npos);
+  EXPECT_NE(algos.out.find("nbs"), std::string::npos);
+}
+
+TEST(Cli, PairsOfTheBundledExampleToStdoutAndFile) {
+  const std::string dir = scratch_dir("pairs_example");
+  auto r = run("pairs --input '" + example() + "' --algorithm nbs");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("i,j\n", 0), 0u);
+  EXPECT_NE(r.err.find("pairs"), std::string::npos);
+  EXPECT_NE(r.err.find("detection"), std::string::npos);
+  auto b = run("pairs --input '" + example() + "' --algorithm brute --output '" + dir + "/p.csv'");
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_EQ(read_text(dir + "/p.csv"), r.out);
+}
+
+TEST(Cli, EmptyAndSingleElementSetsHaveNoPairs) {
+  const std::string dir = scratch_dir("pairs_small");
+  write_text(dir + "/zero.csv", "x,y,r\n");
+  write_text(dir + "/one.csv", "1,2,0.5\n");
+  for (const char* f : {"zero.csv", "one.csv"}) {
+    auto r = run("pairs --input '" + dir + "/" + f + "'");
+    EXPECT_EQ(r.exit_code, 0) << f << ": " << r.err;
+    EXPECT_EQ(r.out, "i,j\n") << f;
+  }
+}
+
+TEST(Cli, RepeatAgreesWithItself) {
+  auto r = run("pairs --input '" + example() + "' --repeat 5 --output /dev/null");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("all runs agree"), std::string::npos) << r.err;
+}
+
+struct BadInput {
+  const char* name;
+  const char* file_text;  // nullptr: the file does not exist
+  const char* extra_args;
+  const char* message;    // expected after "nbscope: error: "
+};
+
+class CliBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(CliBadInput, ExitsTwoWithOneLineAndNoOutputFile) {
+  const BadInput& c = GetParam();
+  const std::string dir = scratch_dir(std::string("bad_") + c.name);
+  const std::string in = dir + "/in.csv", out = dir + "/out.csv";
+  if (c.file_text) write_text(in, c.file_text);
+  auto r = run("pairs --input '" + in + "' --output '" + out + "' " + c.extra_args);
+  EXPECT_EQ(r.exit_code, 2);
+  std::string expected = std::string("nbscope: error: ") + c.message + "\n";
+  const std::string placeholder = "IN";
+  if (const auto p = expected.find(placeholder); p != std::string::npos) expected.replace(p, placeholder.size(), in);
+  if (const auto p = expected.find("ALGOS"); p != std::string::npos) {
+    EXPECT_EQ(r.err.substr(0, p), expected.substr(0, p));  // the list grows with the registry
+  } else {
+    EXPECT_EQ(r.err, expected);
+  }
+  EXPECT_TRUE(r.out.empty());
+  EXPECT_FALSE(std::filesystem::exists(out));
+  std::size_t files = 0;  // no temporary left behind either
+  for ([[maybe_unused]] const auto& f : std::filesystem::directory_iterator(dir)) ++files;
+  EXPECT_EQ(files, c.file_text ? 1u : 0u);
+}
+
+const BadInput kBadInputs[] = {
+    {"missing_file", nullptr, "", "IN: cannot open (no such file or not readable)"},
+    {"empty_file", "", "", "IN:1: empty file (expected rows of x,y,r or x,y,z,r)"},
+    {"two_columns", "x,y,r\n1,2,1\n3,4\n", "", "IN:3: 2 columns; expected 3 (x,y,r) or 4 (x,y,z,r)"},
+    {"five_columns", "1,2,3,4,5\n", "", "IN:1: 5 columns; expected 3 (x,y,r) or 4 (x,y,z,r)"},
+    {"not_a_number", "1,2,1\n1,two,1\n", "", "IN:2: y: 'two' is not a number"},
+    {"nan", "nan,2,1\n", "", "IN:1: x: 'nan' is not a finite number"},
+    {"inf", "1,2,inf\n", "", "IN:1: r: 'inf' is not a finite number"},
+    {"zero_radius", "1,2,0\n", "", "IN:1: r: radius must be > 0, got 0"},
+    {"negative_radius", "1,2,-0.5\n", "", "IN:1: r: radius must be > 0, got -0.5"},
+    {"unknown_algorithm", "1,2,1\n", "--algorithm quick", "unknown algorithm 'quick' (known: ALGOS)"},
+    {"unknown_flag", "1,2,1\n", "--fast", "--fast: unknown flag (see nbscope --help)"},
+    {"bad_repeat", "1,2,1\n", "--repeat 0", "--repeat: '0' is not a whole number from 1 to 1000000"},
+    {"missing_value", "1,2,1\n", "--algorithm", "--algorithm: missing value"},
+    {"pair_limit", "0,0,1\n0,0,1\n0,0,1\n0,0,1\n0,0,1\n", "--max-pairs 3",
+     "more than 3 contact pairs (the pair limit; too many elements overlap at one place)"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Pairs, CliBadInput, ::testing::ValuesIn(kBadInputs), [](const auto& info) { return info.param.name; });
+
+TEST(Cli, UnknownCommandExitsTwo) {
+  auto r = run("frobnicate");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "nbscope: error: frobnicate: unknown command (see nbscope --help)\n");
+}
+
+}  // namespace
+}  // namespace nbscope

@@ -1,0 +1,84 @@
+// ELEMENTS.csv parsing and PAIRS.csv writing.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.hpp"
+#include "io/csv.hpp"
+
+namespace nbscope {
+namespace {
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_elements_csv(text, "in.csv");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ElementsCsv, Reads2DWithHeaderCommentsAndBlankLines) {
+  const Elements e = parse_elements_csv("# a comment\nx,y,r\n\n1, 2, 0.5  # trailing\n-3e2,4.25,1\n", "in.csv");
+  EXPECT_EQ(e.dim, 2);
+  ASSERT_EQ(e.size(), 2);
+  EXPECT_DOUBLE_EQ(e.x[1], -300);
+  EXPECT_DOUBLE_EQ(e.y[0], 2);
+  EXPECT_DOUBLE_EQ(e.r[1], 1);
+}
+
+TEST(ElementsCsv, Reads3D) {
+  const Elements e = parse_elements_csv("1,2,3,0.5\n4,5,6,0.25", "in.csv");
+  EXPECT_EQ(e.dim, 3);
+  ASSERT_EQ(e.size(), 2);
+  EXPECT_DOUBLE_EQ(e.z[1], 6);
+  EXPECT_DOUBLE_EQ(e.r[1], 0.25);
+}
+
+TEST(ElementsCsv, HeaderOnlyIsAValidEmptySet) {
+  EXPECT_EQ(parse_elements_csv("x,y,r\n", "in.csv").size(), 0);
+  EXPECT_EQ(parse_elements_csv("# nothing here\n", "in.csv").size(), 0);
+}
+
+TEST(ElementsCsv, EveryBadRowNamesFileLineAndWhat) {
+  EXPECT_EQ(error_of(""), "in.csv:1: empty file (expected rows of x,y,r or x,y,z,r)");
+  EXPECT_EQ(error_of("1,2\n"), "in.csv:1: 2 columns; expected 3 (x,y,r) or 4 (x,y,z,r)");
+  EXPECT_EQ(error_of("1,2,3\n1,2,3,4,5\n"), "in.csv:2: 5 columns; expected 3 (x,y,r) or 4 (x,y,z,r)");
+  EXPECT_EQ(error_of("x,y,r\n1,abc,1\n"), "in.csv:2: y: 'abc' is not a number");
+  EXPECT_EQ(error_of("1,2,1\n\n1,nan,1\n"), "in.csv:3: y: 'nan' is not a finite number");
+  EXPECT_EQ(error_of("inf,2,1\n"), "in.csv:1: x: 'inf' is not a finite number");
+  EXPECT_EQ(error_of("1,2,1e999\n"), "in.csv:1: r: '1e999' is not a finite number");
+  EXPECT_EQ(error_of("1,2,0\n"), "in.csv:1: r: radius must be > 0, got 0");
+  EXPECT_EQ(error_of("1,2,-1\n"), "in.csv:1: r: radius must be > 0, got -1");
+  EXPECT_EQ(error_of("1,2,3\n1,2,3,4\n"), "in.csv:2: 4 columns, but the first row had 3");
+  EXPECT_EQ(error_of("1,,3\n"), "in.csv:1: y: '' is not a number");
+  EXPECT_EQ(error_of("1,2,3x\n"), "in.csv:1: r: '3x' is not a number");
+}
+
+TEST(ElementsCsv, MissingFileIsAnError) {
+  EXPECT_THROW(read_elements_csv("/nonexistent/dir/e.csv"), Error);
+}
+
+TEST(PairsCsv, WritesHeaderAndPairsAndLeavesNoTemporary) {
+  const auto dir = std::filesystem::temp_directory_path() / ("nbscope_csv_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "p.csv").string();
+  write_pairs_csv(path, {{0, 1}, {2, 5}});
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  EXPECT_EQ(ss.str(), "i,j\n0,1\n2,5\n");
+  int files = 0;
+  for ([[maybe_unused]] const auto& f : std::filesystem::directory_iterator(dir)) ++files;
+  EXPECT_EQ(files, 1);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(PairsCsv, UnwritablePathThrowsAndCreatesNothing) {
+  EXPECT_THROW(write_pairs_csv("/nonexistent/dir/p.csv", {{0, 1}}), Error);
+  EXPECT_FALSE(std::filesystem::exists("/nonexistent/dir/p.csv"));
+}
+
+}  // namespace
+}  // namespace nbscope

@@ -1,0 +1,163 @@
+// Every registered detector against brute force on the generated families (property tests).
+#include <gtest/gtest.h>
+
+#include "core/brute.hpp"
+#include "core/detector.hpp"
+#include "core/error.hpp"
+#include "support/generators.hpp"
+
+namespace nbscope {
+namespace {
+
+using testdata::Layout;
+
+PairList reference_pairs(const Elements& e) {
+  BruteDetector brute;
+  PairList out;
+  brute.detect(e, DetectOptions{}, out);
+  sort_pairs(out);
+  return out;
+}
+
+// Checks that `pairs` is exactly brute force's answer, each pair once with i < j.
+::testing::AssertionResult same_as_brute(const Elements& e, PairList pairs) {
+  for (const Pair& p : pairs)
+    if (!(p.i < p.j)) return ::testing::AssertionFailure() << "pair (" << p.i << "," << p.j << ") is not i < j";
+  sort_pairs(pairs);
+  for (std::size_t k = 1; k < pairs.size(); ++k)
+    if (pairs[k] == pairs[k - 1]) return ::testing::AssertionFailure() << "pair (" << pairs[k].i << "," << pairs[k].j << ") twice";
+  const PairList ref = reference_pairs(e);
+  const PairList missing = pairs_missing_from(ref, pairs);
+  const PairList extra = pairs_missing_from(pairs, ref);
+  if (missing.empty() && extra.empty()) return ::testing::AssertionSuccess();
+  auto out = ::testing::AssertionFailure();
+  out << missing.size() << " pairs missing, " << extra.size() << " extra (of " << ref.size() << ")";
+  if (!missing.empty()) out << "; first missing (" << missing[0].i << "," << missing[0].j << ")";
+  if (!extra.empty()) out << "; first extra (" << extra[0].i << "," << extra[0].j << ")";
+  return out;
+}
+
+struct Family {
+  Layout layout;
+  std::int64_t n;
+  std::uint64_t seed;
+};
+
+// The generated sets: every layout at sizes from 0 to 5000, three seeds each (243 sets).
+std::vector<Family> families() {
+  std::vector<Family> out;
+  for (Layout layout : testdata::all_layouts()) {
+    for (std::int64_t n : {0, 1, 2, 3, 17, 100, 640, 2000, 5000}) {
+      if (layout == Layout::OnePoint && n > 1000) n = 1000;  // n(n-1)/2 pairs
+      for (std::uint64_t seed = 1; seed <= 3; ++seed) out.push_back({layout, n, seed});
+    }
+  }
+  return out;
+}
+
+class EveryDetector : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryDetector, MatchesBruteForceIn2D) {
+  auto detector = make_detector(GetParam());
+  if (!detector->supports_dim(2)) GTEST_SKIP() << GetParam() << " is not a 2D detector";
+  const std::vector<Family> all = families();
+  ASSERT_GE(all.size(), 200u);
+  PairList pairs;
+  for (const Family& f : all) {
+    const Elements e = testdata::make_layout(f.layout, f.n, 2, f.seed);
+    SCOPED_TRACE(testdata::layout_name(f.layout) + " n=" + std::to_string(f.n) + " seed=" + std::to_string(f.seed));
+    detector->detect(e, DetectOptions{}, pairs);  // the same instance throughout: arrays are reused
+    ASSERT_TRUE(same_as_brute(e, pairs));
+  }
+}
+
+TEST_P(EveryDetector, MatchesBruteForceIn3D) {
+  auto detector = make_detector(GetParam());
+  if (!detector->supports_dim(3)) GTEST_SKIP() << GetParam() << " is not a 3D detector";
+  PairList pairs;
+  int sets = 0;
+  for (const Family& f : families()) {
+    if (f.n > 2000) continue;
+    const Elements e = testdata::make_layout(f.layout, f.n, 3, f.seed);
+    SCOPED_TRACE(testdata::layout_name(f.layout) + " 3D n=" + std::to_string(f.n) + " seed=" + std::to_string(f.seed));
+    detector->detect(e, DetectOptions{}, pairs);
+    ASSERT_TRUE(same_as_brute(e, pairs));
+    ++sets;
+  }
+  EXPECT_GE(sets, 200);
+}
+
+TEST_P(EveryDetector, TracedRunFindsTheSamePairs) {
+  auto detector = make_detector(GetParam());
+  for (int dim : {2, 3}) {
+    if (!detector->supports_dim(dim)) continue;
+    for (Layout layout : testdata::all_layouts()) {
+      const Elements e = testdata::make_layout(layout, 300, dim, 11);
+      PairList plain, traced;
+      TraceLog log;
+      detector->detect(e, DetectOptions{}, plain);
+      detector->detect_traced(e, DetectOptions{}, traced, log);
+      sort_pairs(plain);
+      sort_pairs(traced);
+      EXPECT_EQ(plain, traced) << testdata::layout_name(layout) << " " << dim << "D";
+      // Every contact the detector reports was tested in the trace (list-based detectors).
+      std::size_t hits = 0;
+      for (const TraceEvent& ev : log.events()) hits += ev.op == TraceOp::TestPair && ev.contact;
+      if (hits > 0) {
+        EXPECT_EQ(hits, traced.size());
+      }
+    }
+  }
+}
+
+TEST_P(EveryDetector, StopsAtThePairLimit) {
+  auto detector = make_detector(GetParam());
+  const int dim = detector->supports_dim(2) ? 2 : 3;
+  const Elements e = testdata::make_layout(Layout::OnePoint, 200, dim, 1);  // 19,900 pairs
+  DetectOptions options;
+  options.max_pairs = 1000;
+  PairList pairs;
+  EXPECT_THROW(detector->detect(e, options, pairs), Error);
+  // And the detector is still usable afterwards (its arrays were left consistent).
+  const Elements small = testdata::make_layout(Layout::Dense, 500, dim, 2);
+  detector->detect(small, DetectOptions{}, pairs);
+  EXPECT_TRUE(same_as_brute(small, pairs));
+}
+
+std::vector<std::string> registered_names() {
+  std::vector<std::string> names;
+  for (const DetectorInfo& d : detector_infos()) names.push_back(d.name);
+  return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(Registry, EveryDetector, ::testing::ValuesIn(registered_names()),
+                         [](const auto& info) { return info.param; });
+
+// The comparison itself must be able to fail: a detector that drops one pair is caught.
+TEST(BruteComparison, CatchesADroppedPair) {
+  const Elements e = testdata::make_layout(Layout::Dense, 300, 2, 5);
+  PairList pairs = reference_pairs(e);
+  ASSERT_FALSE(pairs.empty());
+  pairs.pop_back();
+  EXPECT_FALSE(same_as_brute(e, pairs));
+}
+
+TEST(BruteComparison, CatchesADuplicateAndAnExtraPair) {
+  const Elements e = testdata::make_layout(Layout::Loose, 300, 2, 5);
+  PairList pairs = reference_pairs(e);
+  ASSERT_FALSE(pairs.empty());
+  PairList dup = pairs;
+  dup.push_back(pairs.front());
+  EXPECT_FALSE(same_as_brute(e, dup));
+  PairList extra = pairs;
+  extra.push_back({0, static_cast<ElementId>(e.size() - 1)});
+  if (!in_contact(e, 0, static_cast<ElementId>(e.size() - 1))) {
+    EXPECT_FALSE(same_as_brute(e, extra));
+  }
+  PairList reversed = pairs;
+  std::swap(reversed[0].i, reversed[0].j);
+  EXPECT_FALSE(same_as_brute(e, reversed));
+}
+
+}  // namespace
+}  // namespace nbscope
