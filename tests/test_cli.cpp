@@ -64,6 +64,9 @@ struct BadInput {
   const char* message;    // expected after "nbscope: error: "
 };
 
+// Short names in test listings instead of GoogleTest's byte dump.
+void PrintTo(const BadInput& c, std::ostream* os) { *os << c.name; }
+
 class CliBadInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(CliBadInput, ExitsTwoWithOneLineAndNoOutputFile) {
