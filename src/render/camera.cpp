@@ -1,0 +1,74 @@
+#include "render/camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace nbscope::render {
+
+namespace {
+// From a whole continent on one pixel to a micrometre filling the screen: past these, float
+// coordinates on the GPU stop being meaningful.
+constexpr double kMinScale = 1e-4;
+constexpr double kMaxScale = 1e7;
+double clamp_scale(double s) { return std::isfinite(s) ? std::clamp(s, kMinScale, kMaxScale) : 20.0; }
+}  // namespace
+
+void Camera::set_viewport(int width, int height) {
+  width_ = std::max(width, 1);
+  height_ = std::max(height, 1);
+}
+
+void Camera::fit(const WorldRect& rect, double margin) {
+  const Eigen::Vector2d size = (rect.max - rect.min).cwiseMax(1e-3);
+  const double usable = std::max(1.0 - 2.0 * margin, 0.1);
+  pixels_per_metre_ = clamp_scale(std::min(width_ * usable / size.x(), height_ * usable / size.y()));
+  centre_ = 0.5 * (rect.min + rect.max);
+  home_centre_ = centre_;
+  home_pixels_per_metre_ = pixels_per_metre_;
+}
+
+void Camera::home() {
+  centre_ = home_centre_;
+  pixels_per_metre_ = home_pixels_per_metre_;
+}
+
+void Camera::zoom_at(const Eigen::Vector2d& screen, double factor) {
+  const Eigen::Vector2d anchor = to_world(screen);
+  pixels_per_metre_ = clamp_scale(pixels_per_metre_ * factor);
+  centre_ += anchor - to_world(screen);
+}
+
+void Camera::pan_pixels(const Eigen::Vector2d& delta) {
+  centre_ -= Eigen::Vector2d(delta.x(), -delta.y()) / pixels_per_metre_;
+}
+
+Eigen::Vector2d Camera::to_screen(const Eigen::Vector2d& world) const {
+  const Eigen::Vector2d d = (world - centre_) * pixels_per_metre_;
+  return {0.5 * width_ + d.x(), 0.5 * height_ - d.y()};
+}
+
+Eigen::Vector2d Camera::to_world(const Eigen::Vector2d& screen) const {
+  const Eigen::Vector2d d(screen.x() - 0.5 * width_, 0.5 * height_ - screen.y());
+  return centre_ + d / pixels_per_metre_;
+}
+
+WorldRect Camera::view() const {
+  const Eigen::Vector2d half = Eigen::Vector2d(width_, height_) * (0.5 / pixels_per_metre_);
+  return {centre_ - half, centre_ + half};
+}
+
+void Camera::ndc_transform(float scale[2], float offset[2]) const {
+  const double sx = 2.0 * pixels_per_metre_ / width_;
+  const double sy = 2.0 * pixels_per_metre_ / height_;
+  scale[0] = static_cast<float>(sx);
+  scale[1] = static_cast<float>(sy);
+  offset[0] = static_cast<float>(-centre_.x() * sx);
+  offset[1] = static_cast<float>(-centre_.y() * sy);
+}
+
+void Camera::set(const Eigen::Vector2d& centre, double pixels_per_metre) {
+  if (centre.allFinite()) centre_ = centre;
+  pixels_per_metre_ = clamp_scale(pixels_per_metre);
+}
+
+}  // namespace nbscope::render

@@ -1,0 +1,70 @@
+#include "render/gl_window.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "core/error.hpp"
+#include "render/gl.hpp"
+
+namespace nbscope::render {
+
+namespace {
+std::string g_last_glfw_error;
+
+void remember_error(int code, const char* description) {
+  g_last_glfw_error = std::string(description != nullptr ? description : "unknown") + " (GLFW error " +
+                      std::to_string(code) + ")";
+}
+
+void* glfw_proc(const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); }
+}  // namespace
+
+GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
+  glfwSetErrorCallback(&remember_error);
+  g_last_glfw_error.clear();
+  if (glfwInit() != GLFW_TRUE) throw Error("window: cannot open: " + g_last_glfw_error);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+  window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  if (window_ == nullptr) {
+    const std::string why = g_last_glfw_error;
+    glfwTerminate();
+    throw Error("window: cannot open: " + why);
+  }
+  glfwMakeContextCurrent(window_);
+  try {
+    load_gl(&glfw_proc, "window");
+  } catch (...) {
+    glfwDestroyWindow(window_);
+    glfwTerminate();
+    throw;
+  }
+}
+
+GlfwWindow::~GlfwWindow() {
+  glfwDestroyWindow(window_);
+  glfwTerminate();
+}
+
+int GlfwWindow::width() const {
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  return w;
+}
+
+int GlfwWindow::height() const {
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  return h;
+}
+
+void GlfwWindow::make_current() { glfwMakeContextCurrent(window_); }
+void GlfwWindow::present() { glfwSwapBuffers(window_); }
+bool GlfwWindow::should_close() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
+void GlfwWindow::poll_events() { glfwPollEvents(); }
+void GlfwWindow::set_vsync(bool on) { glfwSwapInterval(on ? 1 : 0); }
+double GlfwWindow::time() const { return glfwGetTime(); }
+
+}  // namespace nbscope::render

@@ -1,0 +1,57 @@
+// nbscope render: every colour the renderer and the overlays use, in one place.
+#pragma once
+#include <cstdint>
+
+namespace nbscope::render {
+
+// An 8-bit RGBA colour.
+struct Rgba {
+  std::uint8_t r = 0, g = 0, b = 0, a = 255;
+  // The same colour with alpha `alpha`.
+  [[nodiscard]] constexpr Rgba with_alpha(std::uint8_t alpha) const { return {r, g, b, alpha}; }
+  friend constexpr bool operator==(const Rgba&, const Rgba&) = default;
+};
+
+// The palette: a dark background, bodies in muted tones, overlays in distinct saturated hues,
+// and red reserved for check violations.
+namespace palette {
+inline constexpr Rgba kBackground{24, 26, 31};
+inline constexpr Rgba kDynamicFill{86, 120, 160};
+inline constexpr Rgba kDynamicOutline{170, 200, 235};
+inline constexpr Rgba kStaticFill{70, 74, 82};
+inline constexpr Rgba kStaticOutline{140, 146, 156};
+inline constexpr Rgba kKinematicFill{96, 140, 110};
+inline constexpr Rgba kKinematicOutline{170, 220, 180};
+inline constexpr Rgba kBoundingCircle{220, 220, 220, 70};
+inline constexpr Rgba kGridLine{120, 130, 150, 90};
+inline constexpr Rgba kGridBorder{160, 170, 190, 200};
+inline constexpr Rgba kCellShadeLow{60, 90, 140, 60};    // occupancy 1
+inline constexpr Rgba kCellShadeHigh{250, 190, 60, 150};  // occupancy >= kCellShadeSaturation
+inline constexpr int kCellShadeSaturation = 6;
+inline constexpr Rgba kMaskCell{80, 220, 200, 70};
+inline constexpr Rgba kMaskCentre{80, 220, 200, 130};
+inline constexpr Rgba kYList{250, 170, 60};   // y-lists (rows) / first list kind
+inline constexpr Rgba kXList{120, 200, 255};  // x-lists (cells) / second list kind
+inline constexpr Rgba kXListBelow{190, 150, 255};  // NBS x-lists of the row below (B[1])
+inline constexpr Rgba kListHead{255, 255, 255};
+inline constexpr Rgba kListEnd{200, 200, 200};
+inline constexpr Rgba kPair{250, 230, 90, 220};
+inline constexpr Rgba kConfirmedPair{90, 220, 120, 230};
+inline constexpr Rgba kBroadphaseOnly{150, 150, 160, 110};
+inline constexpr Rgba kViolation{255, 50, 50};
+inline constexpr Rgba kSelection{255, 255, 255};
+inline constexpr Rgba kSelectionCell{255, 255, 255, 45};
+inline constexpr Rgba kTrail{255, 140, 200, 200};
+inline constexpr Rgba kFlash{255, 255, 120, 200};
+inline constexpr Rgba kDragLine{255, 255, 255, 200};
+inline constexpr Rgba kText{235, 235, 240};
+inline constexpr Rgba kTextDim{170, 175, 185};
+}  // namespace palette
+
+// Linear blend of a and b (t in [0, 1]), channel by channel, alpha included.
+constexpr Rgba mix(Rgba a, Rgba b, float t) {
+  auto m = [t](std::uint8_t x, std::uint8_t y) { return static_cast<std::uint8_t>(x + (y - x) * t + 0.5f); };
+  return {m(a.r, b.r), m(a.g, b.g), m(a.b, b.b), m(a.a, b.a)};
+}
+
+}  // namespace nbscope::render
