@@ -1,0 +1,415 @@
+// The stepper: exact array state at every position forwards and backwards, phase jumps,
+// breakpoints, playback and the highlighting queries, for every list-based detector of the registry.
+//
+// Index: helpers (traced runs over the registry) | state at every step | long seeks (checkpoints) |
+// corrupted traces refused | phase jumps | breakpoints | playback | loop variables and lists (nbs).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "core/detector.hpp"
+#include "core/error.hpp"
+#include "core/stepper.hpp"
+#include "support/generators.hpp"
+
+namespace nbscope {
+namespace {
+
+using testdata::Layout;
+
+// One traced detection of a generated set.
+struct TracedRun {
+  std::string what;  // "nbs 2D dense n=40 seed=3", for failure messages
+  Elements elements;
+  Grid grid;
+  bool has_grid = false;
+  TraceLog log;
+};
+
+// Traced runs of every registered detector whose trace declares arrays (the list-based ones),
+// in every dimension it supports, on small sets of several layouts.
+std::vector<TracedRun> list_based_runs(std::int64_t n_max) {
+  std::vector<TracedRun> out;
+  const std::vector<Layout> layouts = {Layout::Loose, Layout::Dense, Layout::Clustered, Layout::OneCell,
+                                       Layout::Touching, Layout::UnequalRadii};
+  for (const DetectorInfo& info : detector_infos()) {
+    for (int dim : {2, 3}) {
+      if ((dim == 2 && !info.dim2) || (dim == 3 && !info.dim3)) continue;
+      std::uint64_t seed = 1;
+      for (Layout layout : layouts) {
+        for (std::int64_t n : {std::int64_t{0}, std::int64_t{1}, std::int64_t{7}, n_max}) {
+          TracedRun run;
+          run.elements = testdata::make_layout(layout, n, dim, seed++);
+          auto detector = info.make();
+          PairList pairs;
+          detector->detect_traced(run.elements, DetectOptions{}, pairs, run.log);
+          if (run.log.arrays().empty()) break;  // not list-based (brute): nothing to step through
+          if (const Grid* g = detector->last_grid()) {
+            run.grid = *g;
+            run.has_grid = true;
+          }
+          run.what = info.name + " " + std::to_string(dim) + "D " + testdata::layout_name(layout) +
+                     " n=" + std::to_string(n) + " seed=" + std::to_string(seed - 1);
+          out.push_back(std::move(run));
+        }
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> names_of(const std::vector<TracedRun>& runs) {
+  std::vector<std::string> names;
+  for (const TracedRun& r : runs) {
+    const std::string name = r.what.substr(0, r.what.find(' '));
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  return names;
+}
+
+TEST(Stepper, TheRegistryHasListBasedDetectorsToStepThrough) {
+  const auto names = names_of(list_based_runs(7));
+  EXPECT_NE(std::find(names.begin(), names.end(), "nbs"), names.end());
+  std::string all;
+  for (const auto& n : names) all += n + " ";
+  RecordProperty("list_based", all);
+}
+
+// ---- state at every step --------------------------------------------------------------------
+
+TEST(Stepper, ForwardThenBackMatchesAFreshReplayAtEveryStep) {
+  for (const TracedRun& run : list_based_runs(40)) {
+    SCOPED_TRACE(run.what);
+    Stepper s;
+    s.load(run.log);
+    const std::size_t n = run.log.events().size();
+    ASSERT_EQ(s.size(), n);
+    ASSERT_EQ(s.position(), 0u);
+    ASSERT_EQ(s.current(), nullptr);
+    std::vector<ArrayState> reference;
+    reference.reserve(n + 1);
+    for (std::size_t p = 0; p <= n; ++p) reference.push_back(run.log.state_after(p));
+    ASSERT_EQ(s.state(), reference[0]);
+    for (std::size_t p = 1; p <= n; ++p) {
+      ASSERT_TRUE(s.step_forward());
+      ASSERT_EQ(s.position(), p);
+      ASSERT_EQ(s.current(), &s.events()[p - 1]);
+      ASSERT_EQ(s.state(), reference[p]) << "after " << p << " events, stepping forward";
+    }
+    EXPECT_FALSE(s.step_forward());
+    for (std::size_t p = n; p-- > 0;) {
+      ASSERT_TRUE(s.step_back());
+      ASSERT_EQ(s.state(), reference[p]) << "after " << p << " events, stepping back";
+    }
+    EXPECT_FALSE(s.step_back());
+    EXPECT_EQ(s.position(), 0u);
+  }
+}
+
+TEST(Stepper, LongSeeksThroughCheckpointsAreExact) {
+  int long_traces = 0;
+  for (const TracedRun& run : list_based_runs(400)) {
+    const std::size_t n = run.log.events().size();
+    Stepper s;
+    s.load(run.log);
+    if (n < 3 * s.checkpoint_interval()) continue;
+    ++long_traces;
+    SCOPED_TRACE(run.what);
+    std::mt19937_64 rng(n);
+    std::uniform_int_distribution<std::size_t> any(0, n + 5);  // past the end clamps
+    for (int i = 0; i < 60; ++i) {
+      const std::size_t target = any(rng);
+      s.seek(target);
+      ASSERT_EQ(s.position(), std::min(target, n));
+      ASSERT_EQ(s.state(), run.log.state_after(target)) << "after seeking to " << target;
+    }
+    // A seek just past a checkpoint and back, then single steps across a checkpoint boundary.
+    s.seek(2 * s.checkpoint_interval() + 1);
+    s.seek(1);
+    s.seek(s.checkpoint_interval() - 1);
+    ASSERT_TRUE(s.step_forward());
+    ASSERT_TRUE(s.step_forward());
+    ASSERT_EQ(s.state(), run.log.state_after(s.checkpoint_interval() + 1));
+  }
+  EXPECT_GT(long_traces, 0) << "no trace was long enough to use a checkpoint";
+}
+
+// ---- corrupted traces are refused (the check that makes undo exact) ----------------------------
+
+TraceLog two_pushes(std::int32_t recorded_old_head_of_second) {
+  TraceLog log;
+  const std::vector<std::int32_t> heads(3, -1), next(4, -1);
+  const int h = log.declare_array("C", {3}, heads);
+  const int e = log.declare_array("E", {4}, next);
+  log.phase(0, "lists", -1);
+  log.push(1, "list", h, 1, e, 0, -1, -1, 1, 0, -1);
+  log.push(1, "list", h, 1, e, 2, recorded_old_head_of_second, -1, 1, 0, -1);  // true old head: 0
+  return log;
+}
+
+TEST(Stepper, ACorruptedTraceIsRefusedNamingTheEventAndArray) {
+  Stepper s;
+  ASSERT_NO_THROW(s.load(two_pushes(0)));
+  EXPECT_EQ(s.list_members(0, 1), std::vector<std::int32_t>{});
+  s.seek(3);
+  EXPECT_EQ(s.list_members(0, 1), (std::vector<std::int32_t>{2, 0}));
+
+  // The fault: the second push claims the head held -1. Undo would then "restore" -1 where the
+  // replay from the start has 0, so stepping back would not be exact; load() must refuse it.
+  const TraceLog bad = two_pushes(-1);
+  ArrayState walked = bad.state_after(3);
+  TraceLog::undo(bad.events()[2], walked);
+  EXPECT_NE(walked, bad.state_after(2)) << "the injected fault would not even be visible";
+  try {
+    s.load(bad);
+    FAIL() << "a corrupted trace was accepted";
+  } catch (const Error& err) {
+    const std::string what = err.what();
+    EXPECT_NE(what.find("event 2"), std::string::npos) << what;
+    EXPECT_NE(what.find("C[1]"), std::string::npos) << what;
+  }
+  EXPECT_EQ(s.size(), 0u) << "a refused trace must leave the stepper empty";
+
+  TraceLog outside;
+  const std::vector<std::int32_t> heads(2, -1);
+  const int h = outside.declare_array("C", {2}, heads);
+  outside.clear(0, "list", h, 5, -1);
+  EXPECT_THROW(s.load(outside), Error);
+}
+
+// ---- phase jumps ---------------------------------------------------------------------------
+
+std::vector<std::size_t> phase_events(const std::vector<TraceEvent>& ev) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < ev.size(); ++i)
+    if (ev[i].op == TraceOp::Phase) out.push_back(i);
+  return out;
+}
+
+TEST(Stepper, PhaseJumpsLandOnEveryPhaseEventInOrder) {
+  for (const TracedRun& run : list_based_runs(40)) {
+    SCOPED_TRACE(run.what);
+    const std::vector<std::size_t> expected = phase_events(run.log.events());
+    Stepper s;
+    s.load(run.log);
+    ASSERT_EQ(s.phases().size(), expected.size());
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      ASSERT_TRUE(s.next_phase());
+      ASSERT_EQ(s.position(), expected[i] + 1);
+      ASSERT_EQ(s.current()->op, TraceOp::Phase);
+      ASSERT_EQ(s.current_phase(), static_cast<std::int64_t>(i));
+    }
+    const std::size_t before = s.position();
+    EXPECT_FALSE(s.next_phase());
+    EXPECT_EQ(s.position(), before);
+
+    // Backwards from the end: first to the start of the phase we are in, then one phase each.
+    s.seek(s.size());
+    std::vector<std::size_t> back;
+    while (s.prev_phase()) back.push_back(s.position() - 1);
+    std::vector<std::size_t> expected_back(expected.rbegin(), expected.rend());
+    if (!expected.empty() && expected.back() + 1 == s.size()) expected_back.erase(expected_back.begin());
+    EXPECT_EQ(back, expected_back);
+
+    // From the middle of a phase, prev goes to that phase's own start.
+    for (std::size_t i = 0; i + 1 < expected.size(); ++i) {
+      if (expected[i + 1] - expected[i] < 3) continue;
+      s.seek(expected[i] + 3);
+      ASSERT_TRUE(s.prev_phase());
+      EXPECT_EQ(s.position(), expected[i] + 1);
+      s.seek_phase(i + 1);
+      EXPECT_EQ(s.position(), expected[i + 1] + 1);
+      break;
+    }
+  }
+}
+
+// ---- breakpoints ---------------------------------------------------------------------------
+
+// The events a breakpoint should stop at, written out per kind from the events' fields.
+std::vector<std::size_t> expected_hits(const std::vector<TraceEvent>& ev, const Breakpoint& b) {
+  std::vector<std::size_t> hits;
+  for (std::size_t i = 0; i < ev.size(); ++i) {
+    const TraceEvent& e = ev[i];
+    bool hit = false;
+    if (b.kind == BreakKind::Element) hit = e.op != TraceOp::Phase && (e.element == b.element || e.other == b.element);
+    if (b.kind == BreakKind::FirstPairOf) hit = e.op == TraceOp::TestPair && (e.element == b.element || e.other == b.element);
+    if (b.kind == BreakKind::Cell)
+      hit = e.op != TraceOp::TestPair && std::equal(e.cell, e.cell + 3, b.cell);
+    if (b.kind == BreakKind::List) {
+      const int head_write = e.op == TraceOp::Push ? 1 : (e.op == TraceOp::Clear ? 0 : -1);
+      hit = head_write >= 0 && e.writes[head_write].array == b.array && e.writes[head_write].index == b.list;
+    }
+    if (hit) hits.push_back(i);
+  }
+  return hits;
+}
+
+// Runs forward from 0 through every hit, then backward through them, checking each landing.
+void check_breakpoint(Stepper& s, const Breakpoint& b, const char* kind) {
+  SCOPED_TRACE(kind);
+  const std::vector<std::size_t> hits = expected_hits(s.events(), b);
+  s.seek(0);
+  for (std::size_t h : hits) {
+    ASSERT_TRUE(s.run_to(b));
+    ASSERT_EQ(s.position(), h + 1);
+  }
+  const std::size_t last = s.position();
+  EXPECT_FALSE(s.run_to(b));
+  EXPECT_EQ(s.position(), last) << "a breakpoint with no later hit must not move";
+  s.seek(s.size());
+  for (auto it = hits.rbegin(); it != hits.rend(); ++it) {
+    if (*it + 1 == s.size()) continue;  // already the current event
+    ASSERT_TRUE(s.run_back_to(b));
+    ASSERT_EQ(s.position(), *it + 1);
+  }
+  EXPECT_FALSE(s.run_back_to(b));
+}
+
+TEST(Stepper, BreakpointsStopAtExactlyTheEventsTheyName) {
+  for (const TracedRun& run : list_based_runs(40)) {
+    if (run.elements.size() == 0) continue;
+    SCOPED_TRACE(run.what);
+    Stepper s;
+    s.load(run.log);
+    std::mt19937_64 rng(run.log.events().size());
+    const auto pick_element = [&] {
+      return static_cast<std::int32_t>(std::uniform_int_distribution<std::int64_t>(0, run.elements.size() - 1)(rng));
+    };
+    for (int round = 0; round < 3; ++round) {
+      Breakpoint element{BreakKind::Element, pick_element()};
+      check_breakpoint(s, element, "element");
+      Breakpoint pair{BreakKind::FirstPairOf, pick_element()};
+      check_breakpoint(s, pair, "first pair of");
+      // A cell and a list taken from a random push.
+      std::vector<const TraceEvent*> pushes;
+      for (const TraceEvent& e : s.events())
+        if (e.op == TraceOp::Push) pushes.push_back(&e);
+      if (pushes.empty()) continue;
+      const TraceEvent& p = *pushes[std::uniform_int_distribution<std::size_t>(0, pushes.size() - 1)(rng)];
+      Breakpoint cell{BreakKind::Cell};
+      std::copy(p.cell, p.cell + 3, cell.cell);
+      if (cell.cell[0] >= 0 && cell.cell[1] >= 0) check_breakpoint(s, cell, "cell");
+      Breakpoint list{BreakKind::List};
+      list.array = p.writes[1].array;
+      list.list = p.writes[1].index;
+      check_breakpoint(s, list, "list");
+    }
+  }
+}
+
+TEST(Stepper, ABreakpointOnAnAbsentElementDoesNotMove) {
+  const TraceLog log = two_pushes(0);
+  Stepper s;
+  s.load(log);
+  s.seek(1);
+  EXPECT_FALSE(s.run_to(Breakpoint{BreakKind::Element, 3}));
+  EXPECT_FALSE(s.run_to(Breakpoint{BreakKind::FirstPairOf, 0}));  // no pair is ever tested here
+  EXPECT_EQ(s.position(), 1u);
+  EXPECT_TRUE(s.run_to(Breakpoint{BreakKind::Element, 2}));
+  EXPECT_EQ(s.position(), 3u);
+}
+
+// ---- playback ------------------------------------------------------------------------------
+
+TEST(Stepper, PlaybackAdvancesBySpeedTimesTimeAndStopsAtTheEndOrABreakpoint) {
+  const std::vector<TracedRun> runs = list_based_runs(40);
+  const auto longest = std::max_element(runs.begin(), runs.end(), [](const TracedRun& a, const TracedRun& b) {
+    return a.log.events().size() < b.log.events().size();
+  });
+  ASSERT_NE(longest, runs.end());
+  Stepper s;
+  s.load(longest->log);
+  ASSERT_GT(s.size(), 20u);
+  s.set_speed(8);
+  EXPECT_EQ(s.advance(1.0), 0u) << "paused: nothing moves";
+  s.play();
+  EXPECT_EQ(s.advance(0.3125), 2u);  // 2.5 events: two now, half owed
+  EXPECT_EQ(s.advance(0.0625), 1u);  // 0.5 + 0.5
+  EXPECT_EQ(s.position(), 3u);
+  EXPECT_EQ(s.advance(-1), 0u);
+  s.set_speed(1e6);
+  EXPECT_EQ(s.advance(10), s.size() - 3);
+  EXPECT_EQ(s.position(), s.size());
+  EXPECT_FALSE(s.playing());
+  EXPECT_EQ(s.state(), longest->log.state_after(s.size()));
+
+  // Playing again restarts; a play breakpoint stops on its first hit.
+  const Breakpoint b{BreakKind::Element, 0};
+  const auto hits = expected_hits(s.events(), b);
+  ASSERT_FALSE(hits.empty());
+  s.set_play_breakpoint(b);
+  s.play();
+  EXPECT_EQ(s.position(), 0u);
+  s.advance(10);
+  EXPECT_EQ(s.position(), hits[0] + 1);
+  EXPECT_FALSE(s.playing());
+}
+
+// ---- loop variables, writes and lists, checked against the grid (nbs) -------------------------
+
+TEST(Stepper, NbsLoopVariablesWritesAndListsAgreeWithTheGrid) {
+  const Elements e = testdata::make_layout(Layout::Dense, 120, 2, 5);
+  auto nbs = make_detector("nbs");
+  PairList pairs;
+  TraceLog log;
+  nbs->detect_traced(e, DetectOptions{}, pairs, log);
+  const Grid g = *nbs->last_grid();
+  Stepper s;
+  s.load(log);
+  const int y_heads = s.array_id("y_heads");
+  ASSERT_GE(y_heads, 0);
+  EXPECT_EQ(s.next_array_of(y_heads), s.array_id("Y"));
+
+  std::int64_t last_write = -1;
+  std::size_t pushes = 0, tests = 0;
+  while (s.step_forward()) {
+    const TraceEvent& ev = *s.current();
+    const LoopVars v = s.loop_vars();
+    if (ev.write_count > 0) last_write = static_cast<std::int64_t>(s.position() - 1);
+    ASSERT_EQ(s.last_write_event().has_value(), last_write >= 0);
+    if (last_write >= 0) {
+      ASSERT_EQ(static_cast<std::int64_t>(*s.last_write_event()), last_write);
+    }
+    ASSERT_EQ(s.current_writes().size(), ev.write_count);
+    if (ev.op == TraceOp::Push) {
+      ++pushes;
+      const std::int32_t k = ev.element;
+      ASSERT_EQ(v.k, k);
+      ASSERT_EQ(v.iy, g.cell(e.y[k], 1));
+      if (v.ix >= 0) {
+        ASSERT_EQ(v.ix, g.cell(e.x[k], 0));
+      }
+      ASSERT_EQ(v.head, k) << "a push makes k the head of its list";
+      ASSERT_EQ(s.current_writes()[1].new_value, k);
+      ASSERT_EQ(s.list_members(v.heads_array, v.list).front(), k);
+    }
+    if (ev.op == TraceOp::TestPair) {
+      ++tests;
+      // The mask cell shown for a test is the cell of the element k is tested against.
+      ASSERT_EQ(v.k, ev.element);
+      ASSERT_EQ(v.j, ev.other);
+      ASSERT_EQ(v.ix, g.cell(e.x[v.j], 0));
+      ASSERT_EQ(v.iy, g.cell(e.y[v.j], 1));
+      ASSERT_LE(std::abs(v.ix - g.cell(e.x[v.k], 0)), 1);
+      ASSERT_LE(std::abs(v.iy - g.cell(e.y[v.k], 1)), 1);
+    }
+    if (std::string(v.phase) == "y-lists" && s.position() == static_cast<std::size_t>(e.size()) + 1) {
+      // All y-lists built: row iy lists its elements in decreasing id (pushed at the head).
+      for (std::int32_t iy = 0; iy < g.n[1]; ++iy) {
+        std::vector<std::int32_t> row;
+        for (std::int32_t k = static_cast<std::int32_t>(e.size()); k-- > 0;)
+          if (g.cell(e.y[k], 1) == iy) row.push_back(k);
+        ASSERT_EQ(s.list_members(y_heads, iy), row) << "row " << iy;
+      }
+    }
+  }
+  EXPECT_GE(pushes, 2 * static_cast<std::size_t>(e.size()));
+  EXPECT_GT(tests, 0u);
+}
+
+}  // namespace
+}  // namespace nbscope
