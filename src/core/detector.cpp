@@ -12,6 +12,11 @@ std::vector<DetectorInfo>& registry() {
 }
 }  // namespace
 
+const std::vector<const char*>& Detector::pseudocode(int /*dim*/) const {
+  static const std::vector<const char*> none;
+  return none;
+}
+
 const std::vector<DetectorInfo>& detector_infos() { return registry(); }
 
 void register_detector(DetectorInfo info) {

@@ -40,6 +40,9 @@ class Detector {
   [[nodiscard]] virtual std::size_t own_bytes() const = 0;
   // The grid of the last detection, or nullptr for detectors without one.
   [[nodiscard]] virtual const Grid* last_grid() const { return nullptr; }
+  // The detector's loops in the book's wording for elements of dimension `dim`, one line each;
+  // TraceEvent::line of a traced run indexes this list. Empty for detectors without a trace.
+  [[nodiscard]] virtual const std::vector<const char*>& pseudocode(int dim) const;
 };
 
 // What the registry knows of one algorithm.

@@ -32,6 +32,15 @@ Grid make_grid(const Elements& elements, const GridOptions& options) {
   for (int a = 0; a < g.dim; ++a) {
     g.origin[a] = options.origin ? (*options.origin)[a] : b.min[a];
     if (!std::isfinite(g.origin[a])) throw Error("grid origin must be finite");
+    if (options.cells) {
+      const std::int64_t pinned = (*options.cells)[a];
+      if (pinned < 1 || pinned > kMaxCellsPerSide) {
+        throw Error(std::string("the number of cells along ") + axis_name[a] + " must be in 1.." +
+                    std::to_string(kMaxCellsPerSide) + ", got " + std::to_string(pinned));
+      }
+      g.n[a] = pinned;
+      continue;
+    }
     const double top = elements.size() == 0 ? g.origin[a] : b.max[a];
     const double span_cells = std::floor((top - g.origin[a]) / d) + 1.0;
     const double cells = span_cells < 1.0 ? 1.0 : span_cells;

@@ -17,6 +17,10 @@ inline constexpr std::int64_t kMaxCellsPerSide = std::int64_t{1} << 24;
 struct GridOptions {
   std::optional<double> cell_size;              // default: the largest diameter (the book's d)
   std::optional<std::array<double, 3>> origin;  // default: minimum corner of the centres' bounding box
+  // Cells per axis (nx, ny, nz), pinning the grid's extent as the book's figures draw it (Fig. 3.15:
+  // 10x10). Default: just enough cells to cover every centre. Centres beyond the pinned grid are
+  // clamped into its border cells, which keeps every contact (see Grid::cell).
+  std::optional<std::array<std::int64_t, 3>> cells;
 };
 
 // A grid fitted to one element set: nx*ny(*nz) cells of size d from `origin`.
@@ -38,12 +42,17 @@ struct Grid {
   }
   // Total number of cells nx*ny(*nz), as the screen array would need them.
   [[nodiscard]] std::int64_t cell_count() const { return n[0] * n[1] * n[2]; }
+  // Flat index of cell (ix, iy, iz) in an array indexed [ix][iy] (2D) or [ix][iy][iz] (3D), the
+  // book's C[nx][ny]; needs cell_count() to fit in int64 (the screen detector checks it first).
+  [[nodiscard]] std::int64_t flat(std::int32_t ix, std::int32_t iy, std::int32_t iz) const {
+    return (std::int64_t{ix} * n[1] + iy) * n[2] + iz;
+  }
 };
 
 // Fits a grid to `elements`: d = options.cell_size or the largest diameter; origin = options.origin
-// or the minimum corner; n covers every centre. Throws Error when d is not positive and finite, is
-// smaller than the largest diameter (contacts could then skip a cell), or a side would exceed
-// kMaxCellsPerSide.
+// or the minimum corner; n = options.cells or enough to cover every centre. Throws Error when d is not
+// positive and finite, is smaller than the largest diameter (contacts could then skip a cell), or a
+// side would exceed kMaxCellsPerSide (or be below 1).
 Grid make_grid(const Elements& elements, const GridOptions& options);
 
 }  // namespace nbscope

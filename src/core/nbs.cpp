@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.hpp"
+#include "core/lists.hpp"
 
 namespace nbscope {
 
@@ -42,8 +43,9 @@ const std::vector<const char*>& NbsDetector::pseudocode_2d() {
 }
 
 std::size_t NbsDetector::own_bytes() const {
-  // ny + 2nx + 2N integers (book p.102), for the grid and N of the last detection.
-  return (y_heads_.size() + x_heads_.size() + y_next_.size() + x_next_.size()) * sizeof(std::int32_t);
+  // 2D: ny + 2nx + 2N integers (book p.102); 3D: nz + 2ny + 5nx + 3N; for the last detection.
+  return (y_heads_.size() + x_heads_.size() + y_next_.size() + x_next_.size() + z_heads_.size() + z_next_.size()) *
+         sizeof(std::int32_t);
 }
 
 void NbsDetector::prepare(std::int64_t n_elements) {
@@ -54,11 +56,14 @@ void NbsDetector::prepare(std::int64_t n_elements) {
   x_heads_.resize(2 * nx, -1);
   y_next_.resize(static_cast<std::size_t>(n_elements));
   x_next_.resize(static_cast<std::size_t>(n_elements));
+  z_heads_.clear();  // the 3D layer lists take no memory in 2D
+  z_next_.clear();
 }
 
 void NbsDetector::reset_heads() {
   std::fill(y_heads_.begin(), y_heads_.end(), -1);
   std::fill(x_heads_.begin(), x_heads_.end(), -1);
+  std::fill(z_heads_.begin(), z_heads_.end(), -1);
 }
 
 template <class Trace>
@@ -99,7 +104,7 @@ void NbsDetector::run_2d(const Elements& e, const DetectOptions& options, PairLi
 
   try {
     // 1. y-lists: one pass over all elements.
-    trace.phase(kLoopAll, "y-lists", -1);
+    trace.phase(kLoopAll, phase_label::kYLists, -1);
     for (ElementId k = 0; k < n; ++k) {
       const std::int32_t iy = g.cell(py[k], 1);
       trace.push(kPushY, kYList, a_yh, iy, a_yn, k, yh[iy], yn[k], -1, iy, -1);
@@ -111,7 +116,7 @@ void NbsDetector::run_2d(const Elements& e, const DetectOptions& options, PairLi
     for (std::int32_t iy = 0; iy < ny; ++iy) {
       if (yh[iy] == -1) continue;
       const bool below = iy > 0 && yh[iy - 1] != -1;
-      trace.phase(kLoopRows, "x-lists of row", iy);
+      trace.phase(kLoopRows, phase_label::kXListsOfRow, iy);
       for (std::int32_t k = yh[iy]; k != -1; k = yn[k]) {
         const std::int32_t ix = g.cell(px[k], 0);
         trace.push(kPushX0, kXList, a_b, ix, a_xn, k, b0[ix], xn[k], ix, iy, -1);
@@ -127,7 +132,7 @@ void NbsDetector::run_2d(const Elements& e, const DetectOptions& options, PairLi
         }
       }
 
-      trace.phase(kLoopRow, "contacts of row", iy);
+      trace.phase(kLoopRow, phase_label::kContactsOfRow, iy);
       for (std::int32_t k = yh[iy]; k != -1; k = yn[k]) {
         const std::int32_t ix = g.cell(px[k], 0);
         trace.visit_cell(kMaskCell, k, ix, iy, -1);
@@ -144,7 +149,7 @@ void NbsDetector::run_2d(const Elements& e, const DetectOptions& options, PairLi
         }
       }
 
-      trace.phase(kClearX, "clear x-lists of row", iy);
+      trace.phase(kClearX, phase_label::kClearXLists, iy);
       for (std::int32_t k = yh[iy]; k != -1; k = yn[k]) {
         const std::int32_t ix = g.cell(px[k], 0);
         if (b0[ix] != -1) {
@@ -164,7 +169,7 @@ void NbsDetector::run_2d(const Elements& e, const DetectOptions& options, PairLi
     }
 
     // 3. clear the y heads that were set.
-    trace.phase(kClearY, "clear y-lists", -1);
+    trace.phase(kClearY, phase_label::kClearYLists, -1);
     for (ElementId k = 0; k < n; ++k) {
       const std::int32_t iy = g.cell(py[k], 1);
       if (yh[iy] != -1) {
@@ -179,12 +184,14 @@ void NbsDetector::run_2d(const Elements& e, const DetectOptions& options, PairLi
 }
 
 void NbsDetector::detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) {
+  if (elements.dim == 3) return detect_3d(elements, options, out_pairs, nullptr);
   NullTrace none;
   run_2d(elements, options, out_pairs, none);
 }
 
 void NbsDetector::detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs,
                                 TraceLog& out_trace) {
+  if (elements.dim == 3) return detect_3d(elements, options, out_pairs, &out_trace);
   out_trace.reset();
   run_2d(elements, options, out_pairs, out_trace);
 }

@@ -24,6 +24,15 @@ void TraceLog::phase(std::uint8_t line, const char* label, std::int32_t index) {
   events_.push_back(e);
 }
 
+void TraceLog::phase(std::uint8_t line, const char* label, std::int32_t index, std::int32_t ix, std::int32_t iy,
+                     std::int32_t iz) {
+  phase(line, label, index);
+  TraceEvent& e = events_.back();
+  e.cell[0] = ix;
+  e.cell[1] = iy;
+  e.cell[2] = iz;
+}
+
 void TraceLog::push(std::uint8_t line, const char* kind, int heads, std::int64_t list_index, int next, ElementId k,
                     std::int32_t old_head, std::int32_t old_next, std::int32_t ix, std::int32_t iy, std::int32_t iz) {
   TraceEvent e;
@@ -53,6 +62,7 @@ void TraceLog::clear(std::uint8_t line, const char* kind, int heads, std::int64_
 }
 
 void TraceLog::visit_cell(std::uint8_t line, ElementId k, std::int32_t ix, std::int32_t iy, std::int32_t iz) {
+  if (!keep_tests_) return;
   TraceEvent e;
   e.op = TraceOp::VisitCell;
   e.line = line;
@@ -64,12 +74,26 @@ void TraceLog::visit_cell(std::uint8_t line, ElementId k, std::int32_t ix, std::
 }
 
 void TraceLog::test_pair(std::uint8_t line, ElementId k, ElementId other, bool contact) {
+  if (!keep_tests_) return;
   TraceEvent e;
   e.op = TraceOp::TestPair;
   e.line = line;
   e.element = k;
   e.other = other;
   e.contact = contact;
+  events_.push_back(e);
+}
+
+void TraceLog::set(std::uint8_t line, const char* label, int array, std::int64_t index, std::int32_t old_value,
+                   std::int32_t new_value, ElementId k) {
+  TraceEvent e;
+  e.op = TraceOp::Set;
+  e.line = line;
+  e.label = label;
+  e.element = k;
+  e.index = static_cast<std::int32_t>(index);
+  e.write_count = 1;
+  e.writes[0] = ArrayWrite{array, old_value, new_value, index};
   events_.push_back(e);
 }
 

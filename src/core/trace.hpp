@@ -22,6 +22,7 @@ enum class TraceOp : std::uint8_t {
   Clear,      // one list head reset to -1
   VisitCell,  // a cell visited under the contact mask of element k
   TestPair,   // pair (k, other) tested; `contact` holds the result
+  Set,        // one array entry set: an integerised coordinate, a sorted position, a tree link
 };
 
 // One integer written into one traced array.
@@ -64,6 +65,9 @@ class TraceLog {
   int declare_array(std::string name, std::vector<std::int64_t> shape, std::span<const std::int32_t> initial);
   // Marks the beginning of a phase; `label` must be a string literal.
   void phase(std::uint8_t line, const char* label, std::int32_t index);
+  // As phase(), naming the cell, row (ix = -1) or layer (ix = iy = -1) the phase works on.
+  void phase(std::uint8_t line, const char* label, std::int32_t index, std::int32_t ix, std::int32_t iy,
+             std::int32_t iz);
   // Element k pushed onto list `list_index` of heads array `heads`, linking through array `next`.
   void push(std::uint8_t line, const char* kind, int heads, std::int64_t list_index, int next, ElementId k,
             std::int32_t old_head, std::int32_t old_next, std::int32_t ix, std::int32_t iy, std::int32_t iz);
@@ -73,6 +77,13 @@ class TraceLog {
   void visit_cell(std::uint8_t line, ElementId k, std::int32_t ix, std::int32_t iy, std::int32_t iz);
   // Pair (k, other) tested; contact is the result.
   void test_pair(std::uint8_t line, ElementId k, ElementId other, bool contact);
+  // Entry `index` of array `array` set from old_value to new_value on behalf of element k (-1: none);
+  // `label` (a string literal) says what the entry is, e.g. "cell", "sorted", "tree node".
+  void set(std::uint8_t line, const char* label, int array, std::int64_t index, std::int32_t old_value,
+           std::int32_t new_value, ElementId k);
+  // When false, VisitCell and TestPair events are not recorded (every array write still is), so a
+  // large detection can be replayed for its arrays (`nbscope dump`) in memory O(writes). Survives reset().
+  void set_keep_tests(bool keep) { keep_tests_ = keep; }
 
   [[nodiscard]] const std::vector<TraceEvent>& events() const { return events_; }
   [[nodiscard]] const std::vector<TracedArray>& arrays() const { return arrays_; }
@@ -85,6 +96,7 @@ class TraceLog {
  private:
   std::vector<TraceEvent> events_;
   std::vector<TracedArray> arrays_;
+  bool keep_tests_ = true;
 };
 
 // The sink of untraced runs: every call compiles to nothing.
@@ -93,11 +105,13 @@ struct NullTrace {
   void reset() {}
   int declare_array(const char*, std::vector<std::int64_t>, std::span<const std::int32_t>) { return -1; }
   void phase(std::uint8_t, const char*, std::int32_t) {}
+  void phase(std::uint8_t, const char*, std::int32_t, std::int32_t, std::int32_t, std::int32_t) {}
   void push(std::uint8_t, const char*, int, std::int64_t, int, ElementId, std::int32_t, std::int32_t, std::int32_t,
             std::int32_t, std::int32_t) {}
   void clear(std::uint8_t, const char*, int, std::int64_t, std::int32_t) {}
   void visit_cell(std::uint8_t, ElementId, std::int32_t, std::int32_t, std::int32_t) {}
   void test_pair(std::uint8_t, ElementId, ElementId, bool) {}
+  void set(std::uint8_t, const char*, int, std::int64_t, std::int32_t, std::int32_t, ElementId) {}
 };
 
 }  // namespace nbscope
