@@ -18,11 +18,15 @@ void Camera::set_viewport(int width, int height) {
   height_ = std::max(height, 1);
 }
 
-void Camera::fit(const WorldRect& rect, double margin) {
+void Camera::fit(const WorldRect& rect, double margin, double left_px, double right_px) {
   const Eigen::Vector2d size = (rect.max - rect.min).cwiseMax(1e-3);
   const double usable = std::max(1.0 - 2.0 * margin, 0.1);
-  pixels_per_metre_ = clamp_scale(std::min(width_ * usable / size.x(), height_ * usable / size.y()));
-  centre_ = 0.5 * (rect.min + rect.max);
+  // Columns wider than half the view are ignored rather than leaving no room at all.
+  if (left_px + right_px > 0.5 * width_) left_px = right_px = 0;
+  const double area_w = width_ - left_px - right_px;
+  pixels_per_metre_ = clamp_scale(std::min(area_w * usable / size.x(), height_ * usable / size.y()));
+  // Centre the rectangle on the middle of the free area: shift the camera by half the imbalance.
+  centre_ = 0.5 * (rect.min + rect.max) - Eigen::Vector2d(0.5 * (left_px - right_px) / pixels_per_metre_, 0);
   home_centre_ = centre_;
   home_pixels_per_metre_ = pixels_per_metre_;
 }

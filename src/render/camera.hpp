@@ -14,9 +14,9 @@ class Camera {
  public:
   // Viewport size in pixels; keeps the centre and the scale.
   void set_viewport(int width, int height);
-  // Shows `rect` whole, centred, with `margin` (a share of the viewport) left free around it;
-  // also remembers it as Home.
-  void fit(const WorldRect& rect, double margin = 0.06);
+  // Shows `rect` whole, centred in the viewport minus `left_px`/`right_px` columns (where panels
+  // sit), with `margin` (a share of that area) left free around it; also remembers it as Home.
+  void fit(const WorldRect& rect, double margin = 0.06, double left_px = 0, double right_px = 0);
   // Back to the last fitted view.
   void home();
   // Zooms by `factor` (> 1 zooms in) keeping the world point under `screen` where it is.

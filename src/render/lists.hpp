@@ -1,0 +1,34 @@
+// nbscope render: the singly connected lists of one traced detection, rebuilt from its events for
+// drawing. A detector clears its heads before it returns, so the final arrays hold no lists: each
+// list is captured from the replayed arrays just before its head is cleared (or at the end of the
+// run if it never is). A list rebuilt several times (NBS: the x-lists of every row) gives one
+// TracedList per build. Sort, which has no lists, gives its runs of equal cell keys instead.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/elements.hpp"
+#include "core/trace.hpp"
+
+namespace nbscope::render {
+
+// One list as the detector built it.
+struct TracedList {
+  std::string kind;              // the events' list kind ("y-list", "x-list", "cell list", "run", ...)
+  std::string heads_name;        // the heads array ("y_heads", "B", "C", ...; "order" for sort runs)
+  std::string next_name;         // the next array it links through ("Y", "X", "E", ...)
+  int heads_array = -1;          // index into TraceLog::arrays()
+  std::int64_t slot = -1;        // flat index of the head in that array
+  std::int32_t phase_index = -1; // index of the phase it was built in (NBS: row iy of the x-lists)
+  std::int32_t cell[3] = {-1, -1, -1};  // the cell of its pushes (-1 for an axis the list does not fix)
+  bool secondary = false;        // a copy built for a neighbour row (NBS B[1]: x-lists of row iy-1)
+  std::vector<ElementId> chain;  // head first, in the order of the next array
+  bool cut = false;              // the walk stopped after N elements (the next array had a cycle)
+};
+
+// Every list of the traced run in `log` over `element_count` elements, ordered by heads array,
+// build phase and slot.
+std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_count);
+
+}  // namespace nbscope::render

@@ -1,0 +1,100 @@
+// nbscope render: what the window shows over the scene, built from plain data into a DrawSink:
+// bodies, the elements' bounding circles, the cell grid with occupancy, the detector's singly
+// connected lists as arrow chains, the contact mask of the hovered cell, detected pairs, check
+// results, the selection, trails and cell-change flashes. No GL here: a recorder sees the same calls.
+//
+// Index: ShapeDraw (bodies) | CheckDraw | OverlayFlags (+ keys) | OverlayScene | draw_scene.
+#pragma once
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/elements.hpp"
+#include "core/grid.hpp"
+#include "core/pairs.hpp"
+#include "render/camera.hpp"
+#include "render/draw_sink.hpp"
+#include "render/lists.hpp"
+
+namespace nbscope::render {
+
+// How a body moves (colours differ).
+enum class Motion : std::uint8_t { Static, Kinematic, Dynamic };
+
+// One fixture to draw: a circle (centre, radius, angle for the spoke) or a convex polygon whose
+// world-space corners are points[first, first + count) of OverlayScene::shape_points.
+struct ShapeDraw {
+  Motion motion = Motion::Dynamic;
+  bool is_circle = true;
+  Vec2 centre{0, 0};
+  float radius = 0;
+  float angle = 0;
+  std::uint32_t first = 0;
+  std::uint32_t count = 0;
+  ElementId element = -1;  // its bounding circle's element id
+};
+
+// The frame's check results, as pairs of element ids (i < j).
+struct CheckDraw {
+  PairList confirmed;        // detected and touching per Box2D at the same positions
+  PairList broadphase_only;  // in Box2D's broadphase (fat AABBs overlap) but not detected
+  PairList violations;       // any broken invariant: wrong, missing or unconfirmed pairs
+};
+
+// Which overlays are on. Each has a key (see kOverlayKeys) and a checkbox in the Overlays panel.
+struct OverlayFlags {
+  bool bodies = true;
+  bool elements = false;    // bounding circles
+  bool grid = true;         // cells in view, occupied cells shaded by count, nx x ny
+  bool lists = false;       // the detector's lists as arrow chains (needs a traced detection)
+  bool mask = true;         // the contact mask of the hovered cell
+  bool pairs = true;        // detected pairs
+  bool checks = true;       // confirmed pairs and violations
+  bool broadphase = false;  // Box2D-only broadphase pairs (fat AABBs)
+  bool ids = false;         // element ids (always with lists)
+  bool trails = true;       // trails of selected elements
+  bool flash = true;        // elements that changed cell this frame
+};
+
+// One overlay's name, key and flag, for panels, key handling and settings.
+struct OverlayInfo {
+  const char* name;      // settings key and label
+  char key;              // upper-case letter (GLFW and ImGui 1.86 key code of that letter)
+  bool OverlayFlags::*flag;
+  const char* help;
+};
+// All overlays in panel order.
+std::span<const OverlayInfo> overlay_infos();
+
+// Everything one frame's overlays are drawn from; null/empty members are simply not drawn.
+struct OverlayScene {
+  const Elements* elements = nullptr;
+  const Grid* grid = nullptr;
+  std::span<const ShapeDraw> shapes;
+  std::span<const Vec2> shape_points;
+  const PairList* pairs = nullptr;
+  const CheckDraw* checks = nullptr;
+  const std::vector<TracedList>* lists = nullptr;  // from traced_lists()
+  ElementId selected = -1;
+  std::optional<std::array<std::int32_t, 2>> hovered_cell;
+  std::optional<std::int32_t> focus_row;  // the row whose secondary (row-below) lists are shown
+  std::span<const std::vector<Vec2>> trails;
+  std::span<const std::pair<ElementId, float>> flashes;  // element, strength in (0, 1]
+  std::optional<std::array<Vec2, 2>> drag;               // body anchor -> mouse while dragging
+};
+
+// Draws the scene and every overlay `flags` turns on, seen through `camera`.
+void draw_scene(const OverlayScene& scene, const OverlayFlags& flags, const Camera& camera, DrawSink& sink);
+
+// The cell (ix, iy) of a world point, or nullopt outside the grid.
+std::optional<std::array<std::int32_t, 2>> cell_at(const Grid& grid, const Eigen::Vector2d& world);
+
+// The element whose bounding circle contains `world` (the smallest such; ties: lowest id), or -1.
+ElementId element_at(const Elements& elements, const Eigen::Vector2d& world);
+
+// The cells of the contact mask of cell (ix, iy): the cell itself first, then its half mask (book: NBS).
+std::vector<std::array<std::int32_t, 2>> mask_cells(const Grid& grid, std::int32_t ix, std::int32_t iy);
+
+}  // namespace nbscope::render

@@ -1,0 +1,121 @@
+// nbscope ui: what the panels read (SimView: one frame's facts, filled by the app), what they
+// change (UiState: view state, persisted in the settings file), and what they ask the app to do
+// (UiRequests: applied by the app after the UI frame). The ui never sees the frame loop itself,
+// so it depends only on render and core.
+#pragma once
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/elements.hpp"
+#include "core/grid.hpp"
+#include "core/pairs.hpp"
+#include "render/camera.hpp"
+#include "render/lists.hpp"
+#include "render/overlays.hpp"
+#include "render/renderer.hpp"
+
+namespace nbscope::ui {
+
+// One algorithm's cost this frame.
+struct AlgorithmStat {
+  std::string name;
+  double detect_ms = 0;
+  std::size_t bytes = 0;  // the detector's own arrays
+  std::size_t pairs = 0;
+};
+
+// Where one frame's time went, in milliseconds.
+struct FrameTimings {
+  double physics_ms = 0;
+  double detect_ms = 0;
+  double check_ms = 0;
+  double trace_ms = 0;    // the traced detection for the list overlay
+  double overlay_ms = 0;  // building the overlays (CPU)
+  double render_ms = 0;   // submitting the scene to GL
+  double ui_ms = 0;       // ImGui panels and their draw data
+  double frame_ms = 0;    // wall time of the whole frame
+};
+
+// The facts of the current frame that panels show. Pointers may be null (nothing loaded yet).
+struct SimView {
+  std::string scene_path;
+  std::string scene_name;
+  std::vector<std::string> scene_files;  // every scene in assets/scenes
+  std::vector<std::string> algorithms;
+  std::string algorithm;
+  std::string error;  // the last failed request (bad scene file, ...), shown in red
+
+  bool paused = false;
+  double time_step = 1.0 / 60.0;
+  double speed = 1.0;
+  std::int64_t frame = 0;
+  double sim_time = 0;
+
+  std::int64_t bodies = 0;
+  const Elements* elements = nullptr;
+  const Grid* grid = nullptr;
+  const PairList* pairs = nullptr;
+  const std::vector<render::TracedList>* lists = nullptr;  // only while the list overlay is on
+  std::vector<AlgorithmStat> algorithm_stats;               // the chosen algorithm first
+
+  bool check_ran = false;
+  bool check_ok = true;
+  std::string check_reference;             // "brute" or "nbs" (above brute force's size)
+  std::size_t violation_count = 0;
+  std::vector<std::string> violation_lines;  // the first few, one line each
+
+  bool hide_timings = false;  // reproducible screenshots: no wall-clock numbers
+  FrameTimings timings;
+  double fps = 0;
+  std::vector<float> frame_history_ms;  // oldest first
+
+  // Self-inspection.
+  const render::RenderStats* render_stats = nullptr;
+  int imgui_vertices = 0, imgui_indices = 0, imgui_lists = 0;
+  std::size_t trace_events = 0, trace_bytes = 0;
+  std::string gl_description;
+  int width = 0, height = 0;
+};
+
+// Open/closed panels, overlays and interaction state: owned by the app, edited by the UI.
+struct UiState {
+  render::OverlayFlags overlays;
+  std::map<std::string, bool> panel_open;  // by panel title; absent = the panel's default
+  ElementId selected = -1;
+  std::optional<std::array<std::int32_t, 2>> hovered_cell;
+  std::optional<Eigen::Vector2d> mouse_world;
+  bool dragging = false;
+  std::string open_path;  // the Scenes panel's file field
+};
+
+// What the user asked for this frame; the app applies it after the UI is drawn.
+struct UiRequests {
+  bool toggle_pause = false;
+  bool step_once = false;
+  bool restart = false;
+  bool quit = false;
+  std::optional<std::string> algorithm;
+  std::optional<std::string> scene;
+  std::optional<double> time_step;
+  std::optional<double> speed;
+  bool camera_home = false;
+  // Mouse joint: begin at a world point, move to one, end.
+  std::optional<Eigen::Vector2d> drag_begin;
+  std::optional<Eigen::Vector2d> drag_to;
+  bool drag_end = false;
+};
+
+// Everything a panel gets each frame.
+struct UiContext {
+  const SimView& sim;
+  UiState& state;
+  UiRequests& requests;
+  render::Camera& camera;
+};
+
+}  // namespace nbscope::ui

@@ -1,0 +1,32 @@
+// nbscope ui: one ImGui panel. The host owns the panels, opens a window for each open one in its
+// column, and gives panels a chance to draw into the scene and to take keys; a new panel (the
+// stepper, an arrays view) is one more class added to the host.
+#pragma once
+#include "render/draw_sink.hpp"
+#include "ui/model.hpp"
+
+namespace nbscope::ui {
+
+// Where the host puts a panel's window.
+enum class PanelPlace { Left, Right, Floating };
+
+class Panel {
+ public:
+  virtual ~Panel() = default;
+  // Window title; also its key in the settings file.
+  [[nodiscard]] virtual const char* title() const = 0;
+  [[nodiscard]] virtual PanelPlace place() const { return PanelPlace::Left; }
+  [[nodiscard]] virtual bool open_by_default() const { return true; }
+  // Width of the window in pixels (columns share the widest).
+  [[nodiscard]] virtual float width() const { return 250.0f; }
+  // False hides the window this frame even when open (e.g. Selection with nothing selected).
+  [[nodiscard]] virtual bool visible(const UiContext&) const { return true; }
+  // Draws the window's contents (the host has called Begin).
+  virtual void draw(UiContext& ctx) = 0;
+  // Adds to the scene, drawn after the overlays (the stepper highlights its current event).
+  virtual void draw_scene(const UiContext&, render::DrawSink&) {}
+  // Handles this panel's keys when no ImGui widget has the keyboard; true when a key was used.
+  virtual bool handle_keys(UiContext&) { return false; }
+};
+
+}  // namespace nbscope::ui

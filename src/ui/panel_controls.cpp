@@ -1,0 +1,42 @@
+// The Controls panel: play/pause (P), single step (O), restart (R), time step, speed, Home.
+#include <imgui.h>
+
+#include "ui/panels.hpp"
+
+namespace nbscope::ui {
+
+namespace {
+
+class ControlsPanel final : public Panel {
+ public:
+  [[nodiscard]] const char* title() const override { return "Controls"; }
+
+  void draw(UiContext& c) override {
+    const SimView& s = c.sim;
+    if (ImGui::Button(s.paused ? "Play (P)" : "Pause (P)", ImVec2(76, 0))) c.requests.toggle_pause = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Step (O)")) c.requests.step_once = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Restart (R)")) c.requests.restart = true;
+    ImGui::Text("frame %lld   t = %.3f s", static_cast<long long>(s.frame), s.sim_time);
+    if (s.paused) {
+      ImGui::SameLine();
+      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "paused");
+    }
+    float step_ms = static_cast<float>(s.time_step * 1000.0);
+    ImGui::SetNextItemWidth(130);
+    if (ImGui::SliderFloat("time step", &step_ms, 2.0f, 50.0f, "%.2f ms", ImGuiSliderFlags_Logarithmic))
+      c.requests.time_step = step_ms / 1000.0;
+    float speed = static_cast<float>(s.speed);
+    ImGui::SetNextItemWidth(130);
+    if (ImGui::SliderFloat("speed", &speed, 0.1f, 8.0f, "%.2fx steps/frame", ImGuiSliderFlags_Logarithmic))
+      c.requests.speed = speed;
+    if (ImGui::Button("Home (fit the scene)")) c.requests.camera_home = true;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Panel> make_controls_panel() { return std::make_unique<ControlsPanel>(); }
+
+}  // namespace nbscope::ui

@@ -1,0 +1,33 @@
+// The Overlays panel: one checkbox per overlay, each also toggled by its key.
+#include <imgui.h>
+
+#include <cstdio>
+
+#include "ui/panels.hpp"
+
+namespace nbscope::ui {
+
+namespace {
+
+class OverlaysPanel final : public Panel {
+ public:
+  [[nodiscard]] const char* title() const override { return "Overlays"; }
+
+  void draw(UiContext& c) override {
+    if (!ImGui::BeginTable("overlays", 2)) return;
+    for (const render::OverlayInfo& o : render::overlay_infos()) {
+      ImGui::TableNextColumn();
+      char label[48];
+      std::snprintf(label, sizeof label, "%s (%c)", o.name, o.key);
+      ImGui::Checkbox(label, &(c.state.overlays.*o.flag));
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", o.help);
+    }
+    ImGui::EndTable();
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Panel> make_overlays_panel() { return std::make_unique<OverlaysPanel>(); }
+
+}  // namespace nbscope::ui

@@ -1,0 +1,101 @@
+// The Stats panel: sizes, pairs, the cost of each algorithm, the check status and the frame split.
+#include <imgui.h>
+
+#include <cstdio>
+
+#include "ui/panels.hpp"
+
+namespace nbscope::ui {
+
+std::string format_ms(const SimView& sim, double ms) {
+  if (sim.hide_timings) return "-";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, ms < 10 ? "%.3f" : "%.1f", ms);
+  return buf;
+}
+
+namespace {
+
+std::string format_bytes(std::size_t bytes) {
+  char buf[32];
+  if (bytes < 10 * 1024) std::snprintf(buf, sizeof buf, "%zu B", bytes);
+  else if (bytes < 10 * 1024 * 1024) std::snprintf(buf, sizeof buf, "%.1f KB", double(bytes) / 1024.0);
+  else std::snprintf(buf, sizeof buf, "%.1f MB", double(bytes) / (1024.0 * 1024.0));
+  return buf;
+}
+
+class StatsPanel final : public Panel {
+ public:
+  [[nodiscard]] const char* title() const override { return "Stats"; }
+  [[nodiscard]] PanelPlace place() const override { return PanelPlace::Right; }
+  [[nodiscard]] float width() const override { return 290.0f; }
+
+  void draw(UiContext& c) override {
+    const SimView& s = c.sim;
+    const long long n = s.elements != nullptr ? static_cast<long long>(s.elements->size()) : 0;
+    ImGui::Text("N = %lld elements, %lld bodies", n, static_cast<long long>(s.bodies));
+    if (s.grid != nullptr) {
+      ImGui::Text("cells %lld x %lld = %lld, d = %.3g m", static_cast<long long>(s.grid->n[0]),
+                  static_cast<long long>(s.grid->n[1]), static_cast<long long>(s.grid->cell_count()),
+                  s.grid->cell_size);
+    }
+    ImGui::Text("pairs %zu", s.pairs != nullptr ? s.pairs->size() : std::size_t{0});
+
+    if (!s.algorithm_stats.empty() && ImGui::BeginTable("algos", 4, ImGuiTableFlags_BordersInnerH)) {
+      ImGui::TableSetupColumn("algorithm");
+      ImGui::TableSetupColumn("ms");
+      ImGui::TableSetupColumn("own bytes");
+      ImGui::TableSetupColumn("pairs");
+      ImGui::TableHeadersRow();
+      for (const AlgorithmStat& a : s.algorithm_stats) {
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(a.name.c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(format_ms(s, a.detect_ms).c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(format_bytes(a.bytes).c_str());
+        ImGui::TableNextColumn();
+        ImGui::Text("%zu", a.pairs);
+      }
+      ImGui::EndTable();
+    }
+
+    ImGui::Separator();
+    if (!s.check_ran) {
+      ImGui::TextDisabled("check: not run");
+    } else if (s.check_ok) {
+      ImGui::TextColored(ImVec4(0.4f, 0.9f, 0.5f, 1.0f), "check OK: A == %s, A in F, T in A", s.check_reference.c_str());
+    } else {
+      ImGui::TextColored(ImVec4(1.0f, 0.3f, 0.3f, 1.0f), "check FAILED: %zu violations", s.violation_count);
+      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.5f, 0.5f, 1.0f));
+      for (const std::string& line : s.violation_lines) ImGui::TextWrapped("%s", line.c_str());
+      ImGui::PopStyleColor();
+    }
+
+    ImGui::Separator();
+    if (s.hide_timings) {
+      ImGui::TextDisabled("timings hidden (--no-timings)");
+      return;
+    }
+    ImGui::Text("%.1f FPS   frame %s ms", s.fps, format_ms(s, s.timings.frame_ms).c_str());
+    if (ImGui::BeginTable("split", 2)) {
+      const std::pair<const char*, double> rows[] = {
+          {"physics", s.timings.physics_ms}, {"detection", s.timings.detect_ms}, {"check", s.timings.check_ms},
+          {"trace (lists)", s.timings.trace_ms}, {"overlays", s.timings.overlay_ms}, {"render", s.timings.render_ms},
+          {"panels", s.timings.ui_ms}};
+      for (const auto& [name, ms] : rows) {
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(name);
+        ImGui::TableNextColumn();
+        ImGui::Text("%s ms", format_ms(s, ms).c_str());
+      }
+      ImGui::EndTable();
+    }
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Panel> make_stats_panel() { return std::make_unique<StatsPanel>(); }
+
+}  // namespace nbscope::ui

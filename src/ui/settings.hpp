@@ -1,0 +1,30 @@
+// nbscope ui: the settings file — overlays, open panels, camera, last scene and algorithm — kept as
+// a small JSON file in the user's config directory, so the window reopens as it was left.
+#pragma once
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "render/overlays.hpp"
+
+namespace nbscope::ui {
+
+struct Settings {
+  render::OverlayFlags overlays;
+  std::map<std::string, bool> panels;
+  std::optional<std::string> last_scene;
+  std::optional<std::string> algorithm;
+  std::optional<std::array<double, 3>> camera;  // centre x, y and pixels per metre, for last_scene
+  double speed = 1.0;
+};
+
+// $XDG_CONFIG_HOME/nbscope/settings.json, else $HOME/.config/nbscope/settings.json, else "".
+std::string settings_path();
+// Reads `path`. A missing file gives the defaults; an unreadable or malformed one gives the defaults
+// and a one-line `warning` ("<path>: ... (ignored)"), since a bad settings file must not stop the app.
+Settings load_settings(const std::string& path, std::string& warning);
+// Writes `s` to `path` atomically, creating its directory; Error("<path>: cannot write: ...").
+void save_settings(const std::string& path, const Settings& s);
+
+}  // namespace nbscope::ui

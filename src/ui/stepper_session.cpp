@@ -1,0 +1,172 @@
+#include "ui/stepper_session.hpp"
+
+#include <algorithm>
+#include <exception>
+
+#include "core/detector.hpp"
+#include "core/error.hpp"
+
+namespace nbscope::ui {
+
+StepperSession::StepperSession(StepperConfig config)
+    : book_numbering(config.book_numbering), pending_step_(config.step) {}
+
+StepperSession::Key StepperSession::key_of(const SimView& sim) {
+  return Key{sim.scene_path, sim.algorithm, sim.frame, sim.elements != nullptr ? sim.elements->size() : -1};
+}
+
+bool StepperSession::current_for(const SimView& sim) const { return captured_ && key_ == key_of(sim); }
+
+bool StepperSession::holds_elements(int array) const {
+  return array >= 0 && static_cast<std::size_t>(array) < element_valued_.size() && element_valued_[array];
+}
+
+void StepperSession::update(const SimView& sim, double dt_seconds, int ui_frame) {
+  if (ui_frame == last_frame_count_) return;
+  last_frame_count_ = ui_frame;
+  // A configured step (headless --step K) shows whatever frame is on screen; otherwise only a
+  // paused frame is recorded, so a running simulation does not pay for tracing every frame.
+  const bool want = sim.paused || pending_step_.has_value();
+  if (want && sim.elements != nullptr && !(key_ == key_of(sim))) capture(sim);
+  if (captured_) stepper_.advance(dt_seconds);
+}
+
+void StepperSession::capture(const SimView& sim) {
+  const std::size_t keep_position = stepper_.position();
+  key_ = key_of(sim);
+  captured_ = false;
+  message_.clear();
+  stepper_.clear();
+  pseudocode_.clear();
+  element_valued_.clear();
+  has_grid_ = false;
+  algorithm_ = sim.algorithm;
+  frame_ = sim.frame;
+  if (sim.elements == nullptr) {
+    message_ = "no scene loaded";
+    return;
+  }
+  const Elements& e = *sim.elements;
+  if (e.size() > kMaxSteppedElements) {
+    message_ = std::to_string(e.size()) + " elements: too many to record every operation (limit " +
+               std::to_string(kMaxSteppedElements) + "); step through a smaller scene";
+    return;
+  }
+  try {
+    auto detector = make_detector(sim.algorithm);
+    if (!detector->supports_dim(e.dim)) {
+      message_ = sim.algorithm + " does not handle " + std::to_string(e.dim) + "D elements";
+      return;
+    }
+    DetectOptions options;
+    if (sim.grid != nullptr) {
+      // The frame's own grid, pinned, so the recorded run sees exactly the cells on screen.
+      const Grid& g = *sim.grid;
+      options.grid.cell_size = g.cell_size;
+      options.grid.origin = std::array<double, 3>{g.origin[0], g.origin[1], g.origin[2]};
+      options.grid.cells = std::array<std::int64_t, 3>{g.n[0], g.n[1], g.n[2]};
+    }
+    PairList pairs;
+    TraceLog log;
+    detector->detect_traced(e, options, pairs, log);
+    if (log.arrays().empty()) {
+      message_ = sim.algorithm + " keeps no lists to step through; choose nbs, screen, tree or sort";
+      return;
+    }
+    stepper_.load(std::move(log));
+    if (const Grid* g = detector->last_grid()) {
+      grid_ = *g;
+      has_grid_ = true;
+    }
+    const auto& lines = detector->pseudocode(e.dim);
+    pseudocode_.assign(lines.begin(), lines.end());
+  } catch (const Error& err) {
+    stepper_.clear();
+    message_ = err.what();
+    return;
+  }
+  elements_ = e;
+  const auto& arrays = stepper_.trace().arrays();
+  element_valued_.assign(arrays.size(), false);
+  for (std::size_t a = 0; a < arrays.size(); ++a) {
+    const int next = stepper_.next_array_of(static_cast<int>(a));
+    if (next >= 0) element_valued_[a] = element_valued_[static_cast<std::size_t>(next)] = true;
+    if (arrays[a].name == "order") element_valued_[a] = true;  // sort's permutation of element ids
+  }
+  captured_ = true;
+  // The next frame keeps the place in the sequence, so stepping frame by frame compares like with like.
+  stepper_.seek(pending_step_.value_or(keep_position));
+}
+
+std::string entry_name(const TracedArray& array, std::int64_t flat, bool book) {
+  std::string out = array.name;
+  if (array.shape.size() <= 1) return out + "[" + std::to_string(shown(flat, book)) + "]";
+  std::vector<std::int64_t> idx(array.shape.size());
+  for (std::size_t d = array.shape.size(); d-- > 0;) {
+    const std::int64_t side = std::max<std::int64_t>(array.shape[d], 1);
+    idx[d] = flat % side;
+    flat /= side;
+  }
+  for (std::int64_t i : idx) out += "[" + std::to_string(shown(i, book)) + "]";
+  return out;
+}
+
+std::int64_t shown_value(const StepperSession& session, int array, std::int32_t value) {
+  return session.holds_elements(array) ? shown(value, session.book_numbering) : value;
+}
+
+std::string describe_event(const StepperSession& session, const TraceEvent& e) {
+  const bool book = session.book_numbering;
+  const auto& arrays = session.stepper().trace().arrays();
+  const auto id = [&](std::int64_t k) { return std::to_string(shown(k, book)); };
+  const auto value = [&](int array, std::int32_t v) { return std::to_string(shown_value(session, array, v)); };
+  const auto name = [&](const ArrayWrite& w) {
+    return w.array >= 0 && static_cast<std::size_t>(w.array) < arrays.size() ? entry_name(arrays[w.array], w.index, book)
+                                                                              : std::string("?");
+  };
+  const auto cell = [&] {
+    std::string c = "(" + id(e.cell[0]) + "," + id(e.cell[1]);
+    if (e.cell[2] >= 0) c += "," + id(e.cell[2]);
+    return c + ")";
+  };
+  switch (e.op) {
+    case TraceOp::Phase:
+      return std::string("phase: ") + e.label + (e.index >= 0 ? " " + id(e.index) : std::string());
+    case TraceOp::Push: {
+      const ArrayWrite& next = e.writes[0];
+      const ArrayWrite& head = e.writes[1];
+      return "push k=" + id(e.element) + " onto " + e.label + " " + name(head) + ": " + name(next) + " = " +
+             value(next.array, next.new_value) + ", " + name(head) + " = " + value(head.array, head.new_value);
+    }
+    case TraceOp::Clear: {
+      const ArrayWrite& head = e.writes[0];
+      return std::string("clear ") + e.label + " " + name(head) + " (head was " + value(head.array, head.old_value) +
+             "): " + name(head) + " = -1";
+    }
+    case TraceOp::VisitCell:
+      return "k=" + id(e.element) + ": visit cell " + cell() + " of the contact mask";
+    case TraceOp::TestPair:
+      return "test k=" + id(e.element) + " against " + id(e.other) + ": " + (e.contact ? "contact" : "no contact");
+    default:
+      break;
+  }
+  // Any other write (sort's keys and permutation, tree links): name, new value, old value.
+  std::string out = std::string(e.label) + ": ";
+  for (int w = 0; w < e.write_count && w < 2; ++w) {
+    if (w > 0) out += ", ";
+    out += name(e.writes[w]) + " = " + value(e.writes[w].array, e.writes[w].new_value) + " (was " +
+           value(e.writes[w].array, e.writes[w].old_value) + ")";
+  }
+  if (e.element >= 0) out += " for k=" + id(e.element);
+  return out;
+}
+
+std::pair<std::int64_t, std::int64_t> window_range(std::int64_t length, std::int64_t focus, std::int64_t width) {
+  if (length <= 0 || width <= 0) return {0, 0};
+  if (length <= width) return {0, length};
+  focus = std::clamp<std::int64_t>(focus, 0, length - 1);
+  const std::int64_t begin = std::clamp<std::int64_t>(focus - width / 2, 0, length - width);
+  return {begin, begin + width};
+}
+
+}  // namespace nbscope::ui

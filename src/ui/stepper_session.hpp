@@ -1,0 +1,105 @@
+// nbscope ui: what the Stepper, Arrays and Pseudocode panels share — the traced detection of one
+// paused frame (captured from the SimView), the core Stepper over it, the user's breakpoint and
+// element filter, and the book-style wording of events and array entries. No ImGui in here, so it
+// is unit-tested without a GL context.
+//
+// Index: StepperConfig | StepperSession (capture, per-frame update, shared view settings) |
+// describe_event / entry_name / window_range (text and layout helpers).
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/elements.hpp"
+#include "core/grid.hpp"
+#include "core/stepper.hpp"
+#include "ui/model.hpp"
+
+namespace nbscope::ui {
+
+// Most elements whose detection the stepper records: ~30 events of ~90 bytes each per element.
+inline constexpr std::int64_t kMaxSteppedElements = 50'000;
+
+// How the stepper starts (headless `--step K`, or the window's defaults).
+struct StepperConfig {
+  std::optional<std::size_t> step;  // show the state after this many events of the captured frame
+  bool book_numbering = false;      // show indices and element numbers 1-based, as the book prints them
+};
+
+// One captured detection and the view settings of the stepper panels.
+class StepperSession {
+ public:
+  explicit StepperSession(StepperConfig config = {});
+
+  // Once per UI frame `ui_frame` (every stepper panel calls it; repeats are ignored): captures the
+  // frame in `sim` when it is paused (or a step was configured) and differs from the captured one,
+  // then advances playback by `dt_seconds`.
+  void update(const SimView& sim, double dt_seconds, int ui_frame);
+  // Records the traced detection of the frame in `sim` now (also while running).
+  void capture(const SimView& sim);
+  // True when a detection is held and it is the frame `sim` shows (the scene overlay is valid).
+  [[nodiscard]] bool current_for(const SimView& sim) const;
+  [[nodiscard]] bool has_capture() const { return captured_; }
+  // Why nothing can be stepped through ("" when a detection is held).
+  [[nodiscard]] const std::string& message() const { return message_; }
+
+  [[nodiscard]] Stepper& stepper() { return stepper_; }
+  [[nodiscard]] const Stepper& stepper() const { return stepper_; }
+  [[nodiscard]] const Elements& elements() const { return elements_; }
+  // The captured detector's grid; nullptr for a detector without one.
+  [[nodiscard]] const Grid* grid() const { return has_grid_ ? &grid_ : nullptr; }
+  [[nodiscard]] const std::string& algorithm() const { return algorithm_; }
+  [[nodiscard]] std::int64_t frame() const { return frame_; }
+  // The detector's pseudocode lines (TraceEvent::line indexes them).
+  [[nodiscard]] const std::vector<const char*>& pseudocode() const { return pseudocode_; }
+  // True for arrays whose values are element ids (list heads and next arrays), shifted by one in
+  // book numbering like the indices.
+  [[nodiscard]] bool holds_elements(int array) const;
+
+  // View settings shared by the panels.
+  bool book_numbering = false;
+  std::int32_t focus_element = -1;  // the Arrays panel's element filter (-1: none)
+  Breakpoint breakpoint;            // the Stepper panel's breakpoint fields
+  bool break_while_playing = true;  // playback stops at the breakpoint
+  std::string status;               // the last action's outcome ("no later event for element 7")
+
+ private:
+  struct Key {
+    std::string scene, algorithm;
+    std::int64_t frame = -1, bodies = -1;
+    friend bool operator==(const Key&, const Key&) = default;
+  };
+  static Key key_of(const SimView& sim);
+
+  std::optional<std::size_t> pending_step_;
+  bool captured_ = false;
+  Key key_;
+  std::string message_;
+  Stepper stepper_;
+  Elements elements_;
+  Grid grid_;
+  bool has_grid_ = false;
+  std::string algorithm_;
+  std::int64_t frame_ = -1;
+  std::vector<const char*> pseudocode_;
+  std::vector<bool> element_valued_;
+  int last_frame_count_ = -1;
+};
+
+// Shown index of an element id or array index: itself, or one more in book numbering (-1 stays -1).
+[[nodiscard]] inline std::int64_t shown(std::int64_t value, bool book) { return (book && value >= 0) ? value + 1 : value; }
+// "C[4][6]" for flat index `flat` of `array` (indices in the chosen numbering).
+[[nodiscard]] std::string entry_name(const TracedArray& array, std::int64_t flat, bool book);
+// One line saying what event `e` of the session's trace does, in the book's words and the session's
+// numbering, e.g. "push k=3 onto cell list C[4][6]: E[3] = -1, C[4][6] = 3".
+[[nodiscard]] std::string describe_event(const StepperSession& session, const TraceEvent& e);
+// A value of `array` as shown: element ids shifted in book numbering, anything else as stored.
+[[nodiscard]] std::int64_t shown_value(const StepperSession& session, int array, std::int32_t value);
+// The window [begin, end) of at most `width` entries of an array of `length` that keeps `focus`
+// (clamped into the array) in view, centred where possible.
+[[nodiscard]] std::pair<std::int64_t, std::int64_t> window_range(std::int64_t length, std::int64_t focus,
+                                                                 std::int64_t width);
+
+}  // namespace nbscope::ui

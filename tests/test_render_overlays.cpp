@@ -1,0 +1,234 @@
+// The overlays without GL: traced lists rebuilt from detector events match lists computed
+// independently from the elements' cells, and a recording DrawSink sees the arrow chains, the
+// grid window, the mask and the violation markers that the flags ask for (and none when off).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+
+#include "core/detector.hpp"
+#include "render/lists.hpp"
+#include "render/overlays.hpp"
+#include "support/generators.hpp"
+
+namespace nbscope::render {
+namespace {
+
+// Records every call, as a debug recorder would.
+struct Recorder final : DrawSink {
+  struct Arrow {
+    Layer layer;
+    Vec2 from, to;
+    Rgba colour;
+  };
+  std::vector<Arrow> arrows;
+  int circles = 0, lines = 0, rects = 0, polygons = 0;
+  std::vector<float> top_circle_min_px;
+  std::vector<std::string> texts;
+  void circle(Layer layer, Vec2, float, Rgba, Rgba, float, float min_px) override {
+    ++circles;
+    if (layer == Layer::Top) top_circle_min_px.push_back(min_px);
+  }
+  void polygon(Layer, std::span<const Vec2>, Rgba, Rgba) override { ++polygons; }
+  void line(Layer, Vec2, Vec2, Rgba, float) override { ++lines; }
+  void arrow(Layer layer, Vec2 a, Vec2 b, Rgba c, float) override { arrows.push_back({layer, a, b, c}); }
+  void rect(Layer, Vec2, Vec2, Rgba) override { ++rects; }
+  void text(Vec2, std::string_view t, Rgba) override { texts.emplace_back(t); }
+};
+
+TraceLog trace_of(const std::string& algorithm, const Elements& e, PairList& pairs, Grid& grid) {
+  auto d = make_detector(algorithm);
+  TraceLog log;
+  d->detect_traced(e, {}, pairs, log);
+  grid = *d->last_grid();
+  return log;
+}
+
+TEST(TracedLists, NbsListsAreTheRowsAndCellsInPushOrder) {
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    const Elements e = testdata::make_layout(testdata::Layout::Dense, 400, 2, seed);
+    PairList pairs;
+    Grid g;
+    const TraceLog log = trace_of("nbs", e, pairs, g);
+    const auto lists = traced_lists(log, static_cast<std::size_t>(e.size()));
+
+    // Independent expectation. y-lists: elements pushed in id order onto the head, so a row's
+    // list runs from its largest id down. x-lists of row iy are built walking that y-list, so a
+    // cell's list runs from its smallest id up; the copies for row iy+1 (B[1]) likewise.
+    std::map<std::int32_t, std::vector<ElementId>> rows;
+    std::map<std::pair<std::int32_t, std::int32_t>, std::vector<ElementId>> cells;
+    for (ElementId k = 0; k < static_cast<ElementId>(e.size()); ++k) {
+      rows[g.cell(e.y[k], 1)].insert(rows[g.cell(e.y[k], 1)].begin(), k);
+      cells[{g.cell(e.x[k], 0), g.cell(e.y[k], 1)}].push_back(k);
+    }
+    std::size_t y_lists = 0, x_lists = 0, below = 0;
+    for (const TracedList& l : lists) {
+      if (l.kind == "y-list") {
+        ++y_lists;
+        EXPECT_EQ(l.chain, rows.at(l.cell[1])) << "row " << l.cell[1];
+      } else {
+        ASSERT_EQ(l.kind, "x-list");
+        EXPECT_EQ(l.chain, cells.at({l.cell[0], l.cell[1]})) << "cell " << l.cell[0] << "," << l.cell[1];
+        if (l.secondary) {
+          ++below;
+          EXPECT_EQ(l.phase_index, l.cell[1] + 1);  // built while processing the row above
+        } else {
+          ++x_lists;
+          EXPECT_EQ(l.phase_index, l.cell[1]);
+        }
+      }
+    }
+    EXPECT_EQ(y_lists, rows.size());
+    EXPECT_EQ(x_lists, cells.size());
+    std::size_t expected_below = 0;
+    for (const auto& [cell, members] : cells) expected_below += rows.contains(cell.second + 1) ? 1 : 0;
+    EXPECT_EQ(below, expected_below);
+  }
+}
+
+TEST(TracedLists, EveryListBasedDetectorGivesEachElementOneListPerKind) {
+  const Elements e = testdata::make_layout(testdata::Layout::Loose, 300, 2, 9);
+  for (const DetectorInfo& info : detector_infos()) {
+    if (!info.dim2) continue;
+    auto d = info.make();
+    TraceLog log;
+    PairList pairs;
+    d->detect_traced(e, {}, pairs, log);
+    const auto lists = traced_lists(log, static_cast<std::size_t>(e.size()));
+    if (lists.empty()) continue;  // brute, box2d: no lists
+    std::map<std::string, std::vector<int>> seen;
+    for (const TracedList& l : lists) {
+      if (l.secondary) continue;
+      auto& s = seen[l.kind];
+      s.resize(static_cast<std::size_t>(e.size()), 0);
+      for (ElementId k : l.chain) ++s[static_cast<std::size_t>(k)];
+      EXPECT_FALSE(l.cut) << info.name;
+    }
+    for (const auto& [kind, counts] : seen)
+      for (ElementId k = 0; k < static_cast<ElementId>(e.size()); ++k)
+        EXPECT_EQ(counts[static_cast<std::size_t>(k)], 1) << info.name << " " << kind << " element " << k;
+  }
+}
+
+// Five elements in one row of 1 m cells from (0.5, 0.5): y-list 4 3 2 1 0, x-lists per cell.
+struct Small {
+  Elements e = make_elements_2d((Eigen::ArrayXd(5) << 0.5, 0.9, 2.5, 3.5, 3.6).finished(),
+                                (Eigen::ArrayXd(5) << 0.5, 0.5, 0.5, 0.5, 0.5).finished(),
+                                Eigen::ArrayXd::Constant(5, 0.5));
+  PairList pairs;
+  Grid grid;
+  std::vector<TracedList> lists;
+  Camera camera;
+  Small() {
+    const TraceLog log = trace_of("nbs", e, pairs, grid);
+    lists = traced_lists(log, 5);
+    camera.set_viewport(400, 200);
+    camera.fit({{0, 0}, {5, 1}});
+  }
+  OverlayScene scene() const {
+    OverlayScene s;
+    s.elements = &e;
+    s.grid = &grid;
+    s.pairs = &pairs;
+    s.lists = &lists;
+    return s;
+  }
+};
+
+TEST(Overlays, ListArrowsFollowTheNextArrayAndVanishWhenTheOverlayIsOff) {
+  Small t;
+  OverlayFlags on;
+  on.lists = true;
+  Recorder rec;
+  draw_scene(t.scene(), on, t.camera, rec);
+  // Each list: one arrow from its head, then one per link.
+  std::size_t expected = 0;
+  for (const TracedList& l : t.lists) expected += l.secondary ? 0 : l.chain.size();
+  EXPECT_EQ(rec.arrows.size(), expected);
+  // The y-list's links point from element k to the next element in the chain: 4 -> 3 -> 2 -> 1 -> 0.
+  const auto y = std::find_if(t.lists.begin(), t.lists.end(), [](const TracedList& l) { return l.kind == "y-list"; });
+  ASSERT_NE(y, t.lists.end());
+  EXPECT_EQ(y->chain, (std::vector<ElementId>{4, 3, 2, 1, 0}));
+  std::size_t matched = 0;
+  for (std::size_t i = 0; i + 1 < y->chain.size(); ++i) {
+    const Vec2 a(float(t.e.x[y->chain[i]]), 0.5f), b(float(t.e.x[y->chain[i + 1]]), 0.5f);
+    for (const auto& arrow : rec.arrows)
+      if (arrow.colour == palette::kYList && (arrow.from - a).norm() < 0.35f && (arrow.to - b).norm() < 0.35f) ++matched;
+  }
+  EXPECT_EQ(matched, y->chain.size() - 1);
+  // Ids are drawn with the lists.
+  EXPECT_NE(std::find(rec.texts.begin(), rec.texts.end(), "4"), rec.texts.end());
+
+  OverlayFlags off = on;
+  off.lists = false;
+  Recorder none;
+  draw_scene(t.scene(), off, t.camera, none);
+  EXPECT_TRUE(none.arrows.empty());
+  EXPECT_EQ(std::find(none.texts.begin(), none.texts.end(), "4"), none.texts.end());
+}
+
+TEST(Overlays, GridDrawsOnlyTheCellsInView) {
+  Small t;
+  OverlayFlags f;
+  Recorder whole;
+  draw_scene(t.scene(), f, t.camera, whole);
+  Camera zoomed = t.camera;
+  zoomed.set({0.5, 0.5}, 400.0);  // one cell fills the view
+  Recorder close;
+  draw_scene(t.scene(), f, zoomed, close);
+  EXPECT_LT(close.lines, whole.lines);
+  EXPECT_LT(close.rects, whole.rects);
+  EXPECT_NE(std::find_if(whole.texts.begin(), whole.texts.end(),
+                         [](const std::string& s) { return s.find("4 x 1 cells") != std::string::npos; }),
+            whole.texts.end());
+}
+
+TEST(Overlays, MaskCoversTheCellAndItsHalfMaskInsideTheGrid) {
+  Grid g;
+  g.n[0] = 4;
+  g.n[1] = 3;
+  EXPECT_EQ(mask_cells(g, 2, 1).size(), 5u);
+  EXPECT_EQ(mask_cells(g, 0, 0).size(), 1u);  // no neighbours before (0, 0)
+  const auto edge = mask_cells(g, 3, 2);       // (4, 1) is outside
+  EXPECT_EQ(edge.size(), 4u);
+  Small t;
+  OverlayScene s = t.scene();
+  s.hovered_cell = std::array<std::int32_t, 2>{2, 0};
+  Recorder with, without;
+  draw_scene(s, OverlayFlags{}, t.camera, with);
+  s.hovered_cell.reset();
+  draw_scene(s, OverlayFlags{}, t.camera, without);
+  EXPECT_EQ(with.rects - without.rects, 2);  // (2,0) and (1,0); the row below does not exist
+}
+
+TEST(Overlays, ViolationsGetMarkersThatStayVisibleWhenZoomedOut) {
+  Small t;
+  CheckDraw checks;
+  checks.violations = {{0, 2}};
+  OverlayScene s = t.scene();
+  s.checks = &checks;
+  Recorder rec;
+  draw_scene(s, OverlayFlags{}, t.camera, rec);
+  ASSERT_EQ(rec.top_circle_min_px.size(), 1u);
+  EXPECT_GE(rec.top_circle_min_px[0], 8.0f);
+  OverlayFlags off;
+  off.checks = false;
+  Recorder none;
+  draw_scene(s, off, t.camera, none);
+  EXPECT_TRUE(none.top_circle_min_px.empty());
+}
+
+TEST(Overlays, PickingFindsTheCellAndTheSmallestElementUnderThePoint) {
+  Small t;
+  // The grid starts at the minimum corner of the centres, (0.5, 0.5), with d = 1: 4 x 1 cells.
+  ASSERT_EQ(t.grid.n[0], 4);
+  EXPECT_EQ(cell_at(t.grid, {2.7, 0.6}), (std::array<std::int32_t, 2>{2, 0}));
+  EXPECT_FALSE(cell_at(t.grid, {2.7, 0.4}).has_value());
+  EXPECT_FALSE(cell_at(t.grid, {4.6, 0.6}).has_value());
+  EXPECT_EQ(element_at(t.e, {0.7, 0.5}), 0);  // inside 0 and 1 (equal radii): the lower id
+  EXPECT_EQ(element_at(t.e, {1.35, 0.5}), 1);
+  EXPECT_EQ(element_at(t.e, {1.7, 0.5}), -1);
+}
+
+}  // namespace
+}  // namespace nbscope::render
