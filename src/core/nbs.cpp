@@ -29,13 +29,15 @@ constexpr const char* kXList = "x-list";
 const std::vector<const char*>& NbsDetector::pseudocode_2d() {
   static const std::vector<const char*> lines = {
       "Loop over all discrete elements k",
-      "  iy = Int((y_k - y_min)/d); add k onto the y_iy list: Y[k] = yhead[iy], yhead[iy] = k",
+      "  iy = Int((y - y_min)/d); add the discrete element k onto the y_iy list: Y[k] = y_heads[iy]; y_heads[iy] = k",
       "Loop over all rows iy whose y_iy list is not empty",
-      "  Loop over k in y_iy: ix = Int((x_k - x_min)/d); add k onto x list B[0][ix] (X[k] = B[0][ix])",
-      "  Loop over k in y_(iy-1): ix = Int((x_k - x_min)/d); add k onto x list B[1][ix]",
+      "  Loop over all discrete elements from the list y_iy: ix = Int((x - x_min)/d); add the discrete element k "
+      "onto the x-list of cell (ix,iy): X[k] = B[0][ix]; B[0][ix] = k",
+      "  Loop over all discrete elements from the list y_{iy-1}: ix = Int((x - x_min)/d); add the discrete element k "
+      "onto the x-list of cell (ix,iy-1): X[k] = B[1][ix]; B[1][ix] = k",
       "  Loop over all discrete elements k from the y_iy list",
       "    visit the cells of the contact mask: (ix,iy), (ix-1,iy), (ix-1,iy-1), (ix,iy-1), (ix+1,iy-1)",
-      "      check k against each element of that cell's x list",
+      "      check k against each discrete element of that cell's x-list (own cell: those after k)",
       "  Clear the heads B[0][ix], B[1][ix] of the cells used (set to -1)",
       "Clear the heads of the y lists (set to -1)",
   };

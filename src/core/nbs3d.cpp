@@ -44,8 +44,8 @@ const std::vector<const char*>& NbsDetector::pseudocode_3d() {
       "  Loop over all discrete elements from the list z_{iz-1} (k=C[iz-1] and k=Z[k] until k=-1)",
       "    iy = Int((y - y_min)/d); add the discrete element k onto y_{iy,iz-1} list: Y[k] = B[1][iy]; B[1][iy] = k",
       "  Loop over all non-empty y_{iy,iz} lists, i.e. rows of cells (iy,iz)",
-      "    ix = Int((x - x_min)/d); add the discrete elements of rows (iy,iz), (iy-1,iz), (iy-1,iz-1), (iy,iz-1), "
-      "(iy+1,iz-1) onto x-lists: X[k] = A[r][ix]; A[r][ix] = k",
+      "    Loop over the y-lists of rows r = (iy,iz), (iy-1,iz), (iy-1,iz-1), (iy,iz-1), (iy+1,iz-1): ix = Int((x - x_min)/d); "
+      "add the discrete element k onto the x-list of cell (ix, row r): X[k] = A[r][ix]; A[r][ix] = k",
       "    Loop over all discrete elements k from the y_{iy,iz} list",
       "      visit the cells of the contact mask: own cell, (ix-1,iy,iz), (ix-1..ix+1,iy-1,iz), "
       "(ix-1..ix+1,iy-1..iy+1,iz-1)",
