@@ -8,4 +8,7 @@ namespace nbscope {
 // `nbscope pairs --input F [--algorithm A] [--output F] [--repeat K]`
 int run_pairs(Args& args);
 
+// `nbscope headless --scene F [--frames N] [--algorithm A] [--report F] [--inject-fault NAME]` (app/headless.hpp)
+int run_headless(Args& args);
+
 }  // namespace nbscope

@@ -15,6 +15,16 @@ usage:
       --repeat K runs detection K times and checks that every run agrees.
       --cell-size/--origin pin the grid (default: largest diameter, minimum corner).
       --max-pairs M stops with an error past M pairs (default 50,000,000: 400 MB).
+  nbscope headless --scene FILE [--frames N] [--algorithm NAME] [--report OUT.json]
+                   [--inject-fault NAME] [--brute-limit N] [--quiet]
+      Runs N frames (default 600) of a scene (assets/scenes/*.json) with no window: Box2D steps,
+      the algorithm detects, and every frame is checked: A==R (R: brute force up to --brute-limit
+      elements, default 2000, then another detector), A-in-F (Box2D's contact list, its filters
+      applied to A), T-in-A (shapes touching now), AABB-in-cells (tight-AABB pairs in neighbouring
+      cells). One summary line on stdout; a progress bar on stderr when it is a terminal; --report
+      writes per-frame counts, timings and every violation as JSON. Exit 1 if any check failed.
+      --inject-fault drop-mask-cell | off-by-one-cell | stale-positions | drop-pair |
+      drop-box2d-contact breaks the detection (or Box2D's side) on purpose, to see the checks catch it.
   nbscope algorithms      list the detectors
   nbscope --help | --version
 

@@ -10,6 +10,7 @@
 #include "app/help.hpp"
 #include "core/detector.hpp"
 #include "core/error.hpp"
+#include "physics/box2d_detector.hpp"
 
 namespace {
 
@@ -34,6 +35,7 @@ int dispatch(const std::string& command, nbscope::Args& args) {
     return print_algorithms();
   }
   if (command == "pairs") return nbscope::run_pairs(args);
+  if (command == "headless") return nbscope::run_headless(args);
   throw nbscope::Error(command + ": unknown command (see nbscope --help)");
 }
 
@@ -44,6 +46,7 @@ int main(int argc, char** argv) {
   const std::string command = argc > 1 ? argv[1] : "--help";
   nbscope::Args args(std::move(rest));
   try {
+    nbscope::register_physics_detectors();  // "box2d" joins core's detectors
     return dispatch(command, args);
   } catch (const nbscope::Error& e) {
     std::fprintf(stderr, "nbscope: error: %s\n", e.what());

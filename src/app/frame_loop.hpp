@@ -1,0 +1,125 @@
+// nbscope app: the per-frame pipeline shared by the headless loop and the window.
+//
+//   load_scene*() -> frame 0: elements at the initial poses, detected and checked (no Box2D step yet)
+//   step()        -> frame k+1: Box2D step (emitters first) -> elements -> detection with the chosen
+//                    algorithm (+ injected fault) -> cross-check (check/check.hpp)
+//
+// After load and after every step() the accessors describe one consistent frame: elements(),
+// pairs() (A), grid() and cells() (the detector's integerisation), report() (counts, timings,
+// violations), the pair sets of the check, and body_shapes() for drawing. Nothing here exposes
+// Box2D: render and ui include this header only.
+//
+// Errors: load_scene_file() throws Error "file:line: field: what" and keeps the previous scene;
+// set_algorithm() throws Error for an unknown or 3D-only name and keeps the previous one; step()
+// and redetect() throw Error when detection refuses the frame (pair limit, a grid too large), with
+// the frame number in the message. The window should show these and stay open.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "check/faults.hpp"
+#include "core/detector.hpp"
+#include "core/grid.hpp"
+#include "core/pairs.hpp"
+#include "core/trace.hpp"
+#include "io/report_json.hpp"
+#include "io/scene_json.hpp"
+#include "physics/shapes.hpp"
+
+namespace nbscope {
+
+struct FrameLoopOptions {
+  std::string algorithm = "nbs";  // registry name (core/detector.hpp)
+  Fault fault = Fault::None;
+  bool checks = true;             // run the cross-check every frame
+  std::int64_t brute_limit = 2000;  // R is brute force up to this many elements (CheckOptions)
+};
+
+class FrameLoop {
+ public:
+  // An empty loop (no scene): configure, then load a scene. Throws Error for an unknown algorithm.
+  explicit FrameLoop(FrameLoopOptions options = {});
+  ~FrameLoop();
+  FrameLoop(const FrameLoop&) = delete;
+  FrameLoop& operator=(const FrameLoop&) = delete;
+
+  // ---- scene ----
+  // Reads, validates and builds the scene, then computes frame 0. On error the old scene stays.
+  void load_scene_file(const std::string& path);
+  // Same for a scene already in memory.
+  void load_scene(const Scene& scene);
+  // Rebuilds the current scene from its description (frame 0 again); no effect without a scene.
+  void restart();
+  [[nodiscard]] bool has_scene() const;
+  // The loaded scene (an empty default Scene before the first load).
+  [[nodiscard]] const Scene& scene() const;
+
+  // ---- configuration (each takes effect at once: the current frame is detected and checked again) ----
+  // Switches the detector; throws Error (old one kept) for an unknown or 3D-only name.
+  void set_algorithm(std::string_view name);
+  [[nodiscard]] const std::string& algorithm() const;
+  void set_fault(Fault fault);
+  [[nodiscard]] Fault fault() const;
+  void set_checks_enabled(bool on);
+  [[nodiscard]] bool checks_enabled() const;
+  // How R is chosen, in words (for the UI and reports).
+  [[nodiscard]] std::string reference_policy() const;
+  // Which pairs A-in-F applies to, in words.
+  [[nodiscard]] static std::string scope_note();
+
+  // ---- advancing ----
+  // Advances one frame: physics, elements, detection, check. No effect without a scene.
+  void step();
+  // Detects and checks the current frame again without stepping (e.g. while paused).
+  void redetect();
+
+  // ---- the current frame ----
+  [[nodiscard]] std::int64_t frame() const;   // 0 after load, +1 per step()
+  [[nodiscard]] double time() const;          // simulated seconds
+  // Bounding circles at the current poses (element k = fixture k, see element_sources()).
+  [[nodiscard]] const Elements& elements() const;
+  // Element -> (body, fixture).
+  [[nodiscard]] const std::vector<ElementSource>& element_sources() const;
+  [[nodiscard]] std::int64_t body_count() const;
+  // A: the chosen algorithm's pairs (after any injected fault), sorted, i < j.
+  [[nodiscard]] const PairList& pairs() const;
+  // The grid of the frame: the detector's own (last_grid) or, for detectors without one, the grid
+  // fitted to the same elements with the scene's cell_size/origin.
+  [[nodiscard]] const Grid& grid() const;
+  // The detector's cell of every element (under grid(); shifted by the off-by-one-cell fault).
+  [[nodiscard]] const std::vector<CellIndex>& cells() const;
+  // Counts, timings and violations of this frame (report().checked is false when checks are off).
+  [[nodiscard]] const FrameReport& report() const;
+  [[nodiscard]] const FrameTimings& timings() const { return report().timings; }
+  // The check's sets of this frame, sorted (empty when checks are off): R, F (Box2D's contact list),
+  // T (shapes touching now), G (tight-AABB pairs).
+  [[nodiscard]] const PairList& reference_pairs() const;
+  [[nodiscard]] const PairList& box2d_pairs() const;
+  [[nodiscard]] const PairList& touching_pairs() const;
+  [[nodiscard]] const PairList& tight_aabb_pairs() const;
+  // Every fixture at the current poses in world coordinates, for drawing (fills `out`).
+  void body_shapes(std::vector<BodyShape>& out) const;
+  // The detector in use (for its name, own_bytes(), pseudocode()).
+  [[nodiscard]] const Detector& detector() const;
+  // Runs the current detector traced on the elements it was given this frame (faults not applied),
+  // for the stepper; returns its pairs in `out_pairs` unsorted.
+  void trace_frame(TraceLog& out_trace, PairList& out_pairs);
+
+  // ---- mouse drag (world coordinates) ----
+  // Grabs the dynamic body under (x, y) with a b2MouseJoint; false when there is none.
+  bool begin_drag(double x, double y);
+  // Moves the grabbed body's target.
+  void drag_to(double x, double y);
+  // Lets go (no effect when nothing is grabbed).
+  void end_drag();
+  [[nodiscard]] bool dragging() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace nbscope

@@ -1,0 +1,30 @@
+// nbscope app: `nbscope headless` — the frame loop with no window. Options live in one struct parsed
+// in one function, so later flags (--screenshot, --size, --step, --record, --gl) are one field and
+// one line each.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "app/cli.hpp"
+#include "check/faults.hpp"
+
+namespace nbscope {
+
+struct HeadlessOptions {
+  std::string scene;                  // --scene FILE (required)
+  std::int64_t frames = 600;          // --frames N
+  std::string algorithm = "nbs";      // --algorithm NAME
+  std::optional<std::string> report;  // --report OUT.json
+  Fault fault = Fault::None;          // --inject-fault NAME
+  std::int64_t brute_limit = 2000;    // --brute-limit N: R is brute force up to N elements
+  bool quiet = false;                 // --quiet: no progress bar even on a terminal
+};
+
+// Reads every headless flag from `args` and refuses leftovers; throws Error on bad values.
+HeadlessOptions parse_headless_options(Args& args);
+// Runs the frames; prints the one-line summary on stdout (progress on stderr when it is a
+// terminal); writes the report. Returns 0 when every frame passed, 1 when a check failed.
+int run_headless_loop(const HeadlessOptions& options);
+
+}  // namespace nbscope

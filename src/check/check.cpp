@@ -1,0 +1,122 @@
+#include "check/check.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/box2d_detector.hpp"
+
+namespace nbscope {
+
+FrameChecker::FrameChecker(CheckOptions options) : options_(options) {}
+FrameChecker::~FrameChecker() = default;
+
+std::string FrameChecker::reference_for(std::int64_t n, std::string_view algorithm) const {
+  if (algorithm != "brute" && n <= options_.brute_limit) return "brute";
+  return algorithm != "nbs" ? "nbs" : "box2d";
+}
+
+std::string FrameChecker::reference_policy() const {
+  return "brute force up to " + std::to_string(options_.brute_limit) +
+         " elements; above that nbs (box2d when the algorithm under test is nbs); nbs when the algorithm is brute";
+}
+
+std::string FrameChecker::scope_note() {
+  return "Box2D's filters are applied to A before comparing with F: pairs of fixtures of the same body, pairs with no "
+         "dynamic body, pairs of bodies joined without collideConnected and pairs the contact filter refuses are left "
+         "out; so are pairs whose shapes' tight AABBs do not overlap (a polygon's bounding circle reaches beyond its "
+         "AABB, where Box2D's broadphase never looks). Each reason is counted per frame.";
+}
+
+Detector& FrameChecker::reference(const std::string& name) {
+  for (const auto& d : references_)
+    if (d->name() == name) return *d;
+  // box2d is physics' own; make it directly so the check does not depend on registration order.
+  references_.push_back(name == "box2d" ? std::make_unique<Box2dDetector>() : make_detector(name));
+  return *references_.back();
+}
+
+void FrameChecker::check(const CheckInput& in, FrameReport& out) {
+  const PhysicsWorld& world = *in.world;
+  const Elements& e = world.elements();
+  const std::vector<CellIndex>& cells = *in.cells;
+  const auto n = static_cast<ElementId>(e.size());
+
+  out.frame = in.frame;
+  out.checked = true;
+  out.box2d_stepped = world.frame() > 0;
+  out.broken = {};
+  out.violations.clear();
+  out.counts = {};
+  out.counts.elements = n;
+  out.counts.bodies = world.body_count();
+
+  const auto cell_of = [&](ElementId k) {
+    return k >= 0 && static_cast<std::size_t>(k) < cells.size() ? cells[static_cast<std::size_t>(k)] : CellIndex{-1, -1};
+  };
+  const auto report = [&](Invariant inv, const Pair& p, const char* what) {
+    ++out.broken[static_cast<std::size_t>(inv)];
+    if (out.violations.size() < kMaxListedViolationsPerFrame)
+      out.violations.push_back({in.frame, inv, p, cell_of(p.i), cell_of(p.j), what});
+  };
+
+  // A itself must be well formed before any set algebra: 0 <= i < j < n, each pair once.
+  PairList a;
+  a.reserve(in.pairs->size());
+  for (const Pair& p : *in.pairs) {
+    if (p.i < 0 || p.j >= n || p.i >= p.j || (!a.empty() && !(a.back() < p))) {
+      report(Invariant::AEqualsR, p, "invalid pair in A (not 0 <= i < j < N, out of order or twice)");
+      continue;
+    }
+    a.push_back(p);
+  }
+  out.counts.a = static_cast<std::int64_t>(a.size());
+
+  // A == R.
+  out.reference = reference_for(n, in.algorithm);
+  Detector& ref = reference(out.reference);
+  ref.detect(e, *in.options, r_);
+  sort_pairs(r_);
+  out.counts.r = static_cast<std::int64_t>(r_.size());
+  for (const Pair& p : pairs_missing_from(r_, a)) report(Invariant::AEqualsR, p, "missing from A (in R)");
+  for (const Pair& p : pairs_missing_from(a, r_)) report(Invariant::AEqualsR, p, "extra in A (not in R)");
+
+  // A ⊆ F, on the pairs Box2D would consider.
+  world.contact_pairs(f_);
+  out.counts.f = static_cast<std::int64_t>(f_.size());
+  Box2dScope why;
+  world.in_box2d_scope(a, scope_, why);
+  out.counts.a_in_scope = static_cast<std::int64_t>(scope_.size());
+  out.counts.same_body = static_cast<std::int64_t>(why.same_body);
+  out.counts.no_dynamic = static_cast<std::int64_t>(why.no_dynamic);
+  out.counts.joint = static_cast<std::int64_t>(why.joint);
+  out.counts.fixture_filter = static_cast<std::int64_t>(why.fixture_filter);
+  out.counts.beyond_aabb = static_cast<std::int64_t>(why.beyond_aabb);
+  if (in.drop_box2d_contact && !scope_.empty()) {
+    const Pair lost = scope_[scope_.size() / 2];
+    if (const auto it = std::lower_bound(f_.begin(), f_.end(), lost); it != f_.end() && *it == lost) f_.erase(it);
+  }
+  if (out.box2d_stepped)
+    for (const Pair& p : pairs_missing_from(scope_, f_)) report(Invariant::AInF, p, "not in Box2D's contact list");
+
+  // T ⊆ A.
+  world.ground_truth(g_, t_);
+  out.counts.g = static_cast<std::int64_t>(g_.size());
+  out.counts.t = static_cast<std::int64_t>(t_.size());
+  for (const Pair& p : pairs_missing_from(t_, a)) report(Invariant::TInA, p, "shapes touch but the pair is not in A");
+
+  // Tight-AABB pairs ⊆ cell-neighbour candidates.
+  for (const Pair& p : g_) {
+    const CellIndex ci = cell_of(p.i), cj = cell_of(p.j);
+    if (std::abs(ci.ix - cj.ix) <= 1 && std::abs(ci.iy - cj.iy) <= 1) continue;
+    // Only pairs whose elements' exact boxes overlap must be neighbours; Box2D's float AABBs may
+    // touch where the double ones are a rounding error apart.
+    const double reach = e.r[p.i] + e.r[p.j];
+    if (std::abs(e.x[p.i] - e.x[p.j]) <= reach && std::abs(e.y[p.i] - e.y[p.j]) <= reach) {
+      report(Invariant::AabbInCells, p, "tight AABBs overlap but the cells are not neighbours");
+    } else {
+      ++out.counts.aabb_float_rounding;
+    }
+  }
+}
+
+}  // namespace nbscope

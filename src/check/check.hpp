@@ -1,0 +1,73 @@
+// nbscope check: the cross-checks of one frame (DESIGN.md "Cross-checks").
+//
+// Sets: A = the chosen algorithm's pairs; R = the reference's (brute force up to
+// CheckOptions::brute_limit elements, above it another detector: nbs, or box2d when the algorithm
+// is nbs); F = Box2D's contact list; G = pairs whose tight AABBs overlap (world.QueryAABB);
+// T ⊆ G = shapes touching now. Invariants, each violation with frame, pair, both cells:
+//   A==R           A equals R (missing and extra pairs both reported);
+//   A-in-F         the pairs of A in Box2D's scope are in F — Box2D's filters (same body, no dynamic
+//                  body, joints without collideConnected, the contact filter) are applied to A first,
+//                  and pairs whose shapes' tight AABBs do not overlap are left out, since a polygon's
+//                  bounding circle reaches beyond its AABB where Box2D never looks;
+//   T-in-A         T ⊆ A;
+//   AABB-in-cells  every pair of G lies in the same or neighbouring cells of the detector's
+//                  integerisation (pairs whose elements' exact boxes do not overlap — Box2D's float
+//                  AABBs touching by rounding — are counted, not flagged).
+#pragma once
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/detector.hpp"
+#include "io/report_json.hpp"
+#include "physics/world.hpp"
+
+namespace nbscope {
+
+struct CheckOptions {
+  // Up to this many elements R is brute force (O(N^2)); above it, another detector.
+  std::int64_t brute_limit = 2000;
+};
+
+// What one frame's check looks at.
+struct CheckInput {
+  std::int64_t frame = 0;
+  const PhysicsWorld* world = nullptr;          // Box2D's side; its elements are the frame's elements
+  std::string_view algorithm;                   // name of the detector under test
+  const PairList* pairs = nullptr;              // A, sorted
+  const std::vector<CellIndex>* cells = nullptr;  // the detector's cell of every element
+  const DetectOptions* options = nullptr;       // grid options the reference uses too
+  bool drop_box2d_contact = false;              // the drop-box2d-contact fault (check/faults.hpp)
+};
+
+class FrameChecker {
+ public:
+  explicit FrameChecker(CheckOptions options = {});
+  ~FrameChecker();
+
+  // The reference detector for n elements when testing `algorithm` (see the header comment).
+  [[nodiscard]] std::string reference_for(std::int64_t n, std::string_view algorithm) const;
+  // How the reference is chosen, in words, for reports.
+  [[nodiscard]] std::string reference_policy() const;
+  // Which pairs A-in-F applies to, in words, for reports.
+  [[nodiscard]] static std::string scope_note();
+
+  // Runs every invariant on one frame into `out` (counts, broken, violations; timings untouched).
+  void check(const CheckInput& in, FrameReport& out);
+
+  // The sets of the last check, sorted: R, F, T, G.
+  [[nodiscard]] const PairList& reference_pairs() const { return r_; }
+  [[nodiscard]] const PairList& box2d_pairs() const { return f_; }
+  [[nodiscard]] const PairList& touching_pairs() const { return t_; }
+  [[nodiscard]] const PairList& tight_aabb_pairs() const { return g_; }
+
+ private:
+  Detector& reference(const std::string& name);
+
+  CheckOptions options_;
+  std::vector<std::unique_ptr<Detector>> references_;  // kept: box2d keeps its tree between frames
+  PairList r_, f_, t_, g_, scope_, diff_;
+};
+
+}  // namespace nbscope

@@ -1,0 +1,158 @@
+// The headless report. Top-level keys:
+//   nbscope_report (format version 1), scene {path, name}, algorithm, fault {name, description},
+//   reference_policy, a_in_f_scope, invariants [{name, description}], frames_requested, frames_run,
+//   passed, violations {total, by_invariant, frames_with_violations, first_frame, listed},
+//   references_used {name: frames}, timing_ms {physics|detection|check: {mean, max, total}},
+//   frames [{frame, elements, bodies, reference, pairs {A, R, F, T, G, A_in_scope},
+//            left_out_of_A_in_F {same_body, no_dynamic, joint, fixture_filter, beyond_aabb},
+//            aabb_float_rounding, ms {physics, detection, check},
+//            held {invariant: true | false | null (not checked)},
+//            violations [{invariant, pair [i, j], cells [[ix, iy], [ix, iy]], what}], violations_not_listed}].
+#include "io/report_json.hpp"
+
+#include <algorithm>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "io/atomic_file.hpp"
+
+namespace nbscope {
+
+const char* invariant_name(Invariant invariant) {
+  switch (invariant) {
+    case Invariant::AEqualsR: return "A==R";
+    case Invariant::AInF: return "A-in-F";
+    case Invariant::TInA: return "T-in-A";
+    case Invariant::AabbInCells: return "AABB-in-cells";
+  }
+  return "?";
+}
+
+const char* invariant_description(Invariant invariant) {
+  switch (invariant) {
+    case Invariant::AEqualsR: return "the algorithm's pairs A equal the reference's pairs R";
+    case Invariant::AInF:
+      return "every pair of A that Box2D would consider (its filters applied, the shapes' tight AABBs overlapping) "
+             "is in Box2D's contact list F";
+    case Invariant::TInA: return "every pair of shapes touching at the current transforms (T) is in A";
+    case Invariant::AabbInCells:
+      return "every pair whose tight AABBs overlap (world.QueryAABB) lies in the same or neighbouring cells of the "
+             "detector's integerisation";
+  }
+  return "?";
+}
+
+std::int64_t FrameReport::violation_count() const {
+  std::int64_t n = 0;
+  for (const std::int64_t b : broken) n += b;
+  return n;
+}
+
+namespace {
+
+using nlohmann::json;
+
+json frame_json(const FrameReport& f) {
+  const FrameCounts& c = f.counts;
+  json held = json::object();
+  for (int k = 0; k < kInvariantCount; ++k) {
+    const auto inv = static_cast<Invariant>(k);
+    const bool ran = f.checked && (inv != Invariant::AInF || f.box2d_stepped);
+    held[invariant_name(inv)] = ran ? json(f.broken[static_cast<std::size_t>(k)] == 0) : json(nullptr);
+  }
+  json violations = json::array();
+  for (const Violation& v : f.violations) {
+    violations.push_back({{"invariant", invariant_name(v.invariant)},
+                          {"pair", {v.pair.i, v.pair.j}},
+                          {"cells", {{v.cell_i.ix, v.cell_i.iy}, {v.cell_j.ix, v.cell_j.iy}}},
+                          {"what", v.what}});
+  }
+  return {{"frame", f.frame},
+          {"elements", c.elements},
+          {"bodies", c.bodies},
+          {"reference", f.reference},
+          {"pairs", {{"A", c.a}, {"R", c.r}, {"F", c.f}, {"T", c.t}, {"G", c.g}, {"A_in_scope", c.a_in_scope}}},
+          {"left_out_of_A_in_F",
+           {{"same_body", c.same_body},
+            {"no_dynamic", c.no_dynamic},
+            {"joint", c.joint},
+            {"fixture_filter", c.fixture_filter},
+            {"beyond_aabb", c.beyond_aabb}}},
+          {"aabb_float_rounding", c.aabb_float_rounding},
+          {"ms", {{"physics", f.timings.physics_ms}, {"detection", f.timings.detection_ms}, {"check", f.timings.check_ms}}},
+          {"held", held},
+          {"violations", violations},
+          {"violations_not_listed", f.violation_count() - static_cast<std::int64_t>(f.violations.size())}};
+}
+
+json timing_json(const std::vector<FrameReport>& frames, double FrameTimings::*field) {
+  double total = 0, max = 0;
+  for (const FrameReport& f : frames) {
+    total += f.timings.*field;
+    max = std::max(max, f.timings.*field);
+  }
+  const double mean = frames.empty() ? 0 : total / static_cast<double>(frames.size());
+  return {{"mean", mean}, {"max", max}, {"total", total}};
+}
+
+}  // namespace
+
+std::string run_report_json(const RunReport& report) {
+  json invariants = json::array();
+  std::array<std::int64_t, kInvariantCount> by{};
+  for (int k = 0; k < kInvariantCount; ++k)
+    invariants.push_back({{"name", invariant_name(static_cast<Invariant>(k))},
+                          {"description", invariant_description(static_cast<Invariant>(k))}});
+  std::int64_t total = 0, listed = 0, bad_frames = 0;
+  json first_frame = nullptr;
+  std::map<std::string, std::int64_t> references;
+  bool all_checked = true;
+  json frames = json::array();
+  for (const FrameReport& f : report.frames) {
+    for (int k = 0; k < kInvariantCount; ++k) by[static_cast<std::size_t>(k)] += f.broken[static_cast<std::size_t>(k)];
+    total += f.violation_count();
+    listed += static_cast<std::int64_t>(f.violations.size());
+    if (f.violation_count() > 0) {
+      ++bad_frames;
+      if (first_frame.is_null()) first_frame = f.frame;
+    }
+    if (!f.checked) all_checked = false;
+    ++references[f.reference];
+    frames.push_back(frame_json(f));
+  }
+  json by_invariant = json::object();
+  for (int k = 0; k < kInvariantCount; ++k) by_invariant[invariant_name(static_cast<Invariant>(k))] = by[static_cast<std::size_t>(k)];
+  const json doc = {
+      {"nbscope_report", 1},
+      {"scene", {{"path", report.scene_path}, {"name", report.scene_name}}},
+      {"algorithm", report.algorithm},
+      {"fault", {{"name", report.fault}, {"description", report.fault_description}}},
+      {"reference_policy", report.reference_policy},
+      {"a_in_f_scope", report.scope_note},
+      {"invariants", invariants},
+      {"frames_requested", report.frames_requested},
+      {"frames_run", static_cast<std::int64_t>(report.frames.size())},
+      {"passed", all_checked && total == 0 && static_cast<std::int64_t>(report.frames.size()) == report.frames_requested},
+      {"violations",
+       {{"total", total}, {"by_invariant", by_invariant}, {"frames_with_violations", bad_frames}, {"first_frame", first_frame}, {"listed", listed}}},
+      {"references_used", references},
+      {"timing_ms",
+       {{"physics", timing_json(report.frames, &FrameTimings::physics_ms)},
+        {"detection", timing_json(report.frames, &FrameTimings::detection_ms)},
+        {"check", timing_json(report.frames, &FrameTimings::check_ms)}}}};
+  // One line per frame keeps a 600-frame report readable and greppable.
+  std::string out = doc.dump(2);
+  out.pop_back();  // the closing brace
+  while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
+  out += ",\n  \"frames\": [";
+  for (std::size_t k = 0; k < frames.size(); ++k) out += (k == 0 ? "\n    " : ",\n    ") + frames[k].dump();
+  out += frames.empty() ? "]\n}\n" : "\n  ]\n}\n";
+  return out;
+}
+
+void write_run_report(const std::string& path, const RunReport& report) {
+  const std::string text = run_report_json(report);
+  write_file_atomically(path, [&](std::ostream& out) { out << text; });
+}
+
+}  // namespace nbscope

@@ -1,0 +1,106 @@
+// nbscope io: the cross-check's results — per frame and per run — as plain structs, and the JSON
+// report of a headless run. The structs live here (not in check) because io writes them and io
+// sits below check; check fills them, the frame loop keeps the current frame's, the GUI draws it.
+//
+// Index: Invariant | CellIndex, Violation | FrameCounts, FrameTimings, FrameReport | RunReport | writing.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/pairs.hpp"
+
+namespace nbscope {
+
+// The four per-frame invariants of DESIGN.md "Cross-checks".
+enum class Invariant : std::uint8_t {
+  AEqualsR,     // "A==R": the algorithm's pairs equal the reference's
+  AInF,         // "A-in-F": the pairs of A in Box2D's scope are all in Box2D's contact list
+  TInA,         // "T-in-A": every pair of shapes touching now is in A
+  AabbInCells,  // "AABB-in-cells": every tight-AABB pair lies in neighbouring cells of the detector's grid
+};
+inline constexpr int kInvariantCount = 4;
+// Short name used in reports, summaries and test expectations ("A==R", "A-in-F", "T-in-A", "AABB-in-cells").
+const char* invariant_name(Invariant invariant);
+// One sentence saying what the invariant checks.
+const char* invariant_description(Invariant invariant);
+
+// An element's cell as the detector integerised it (book numbering is 1-based; these are 0-based).
+struct CellIndex {
+  std::int32_t ix = 0;
+  std::int32_t iy = 0;
+  friend bool operator==(const CellIndex&, const CellIndex&) = default;
+};
+
+// One broken invariant for one pair in one frame.
+struct Violation {
+  std::int64_t frame = 0;
+  Invariant invariant = Invariant::AEqualsR;
+  Pair pair;
+  CellIndex cell_i, cell_j;  // cells of pair.i and pair.j
+  const char* what = "";     // static text: "missing from A", "extra in A", "not in Box2D's contact list", ...
+};
+
+// Sizes of the frame's sets (see DESIGN.md "Cross-checks").
+struct FrameCounts {
+  std::int64_t elements = 0;
+  std::int64_t bodies = 0;
+  std::int64_t a = 0;           // the algorithm's pairs
+  std::int64_t r = 0;           // the reference's pairs
+  std::int64_t f = 0;           // Box2D's contact list
+  std::int64_t t = 0;           // shapes touching now
+  std::int64_t g = 0;           // tight-AABB pairs
+  std::int64_t a_in_scope = 0;  // pairs of A that A-in-F applies to
+  // Pairs of A left out of A-in-F, by reason (Box2D's filters, then shapes' AABBs apart).
+  std::int64_t same_body = 0, no_dynamic = 0, joint = 0, fixture_filter = 0, beyond_aabb = 0;
+  // Tight-AABB pairs left out of AABB-in-cells: Box2D's float AABBs touch, the elements' exact boxes do not.
+  std::int64_t aabb_float_rounding = 0;
+};
+
+// Wall-clock milliseconds of one frame's three stages.
+struct FrameTimings {
+  double physics_ms = 0;    // Box2D step(s), emitters, elements and AABBs at the new transforms
+  double detection_ms = 0;  // the chosen algorithm (and any injected fault)
+  double check_ms = 0;      // reference detection, Box2D's sets, the four invariants
+};
+
+// Most violations listed per frame; counts stay exact beyond it.
+inline constexpr std::size_t kMaxListedViolationsPerFrame = 200;
+
+// Everything the cross-check found in one frame.
+struct FrameReport {
+  std::int64_t frame = 0;
+  bool checked = false;          // the invariants ran (off in the GUI when the user turns checks off)
+  bool box2d_stepped = false;    // A-in-F needs Box2D's contact list, which exists only after a step
+  std::string reference;         // detector that computed R ("brute", "nbs", "box2d")
+  FrameCounts counts;
+  FrameTimings timings;
+  std::array<std::int64_t, kInvariantCount> broken{};  // violations per invariant (exact)
+  std::vector<Violation> violations;                   // the first kMaxListedViolationsPerFrame
+
+  // Total violations of the frame.
+  [[nodiscard]] std::int64_t violation_count() const;
+  // True when checked and nothing broke.
+  [[nodiscard]] bool ok() const { return checked && violation_count() == 0; }
+};
+
+// A headless run, for the JSON report.
+struct RunReport {
+  std::string scene_path;
+  std::string scene_name;
+  std::string algorithm;
+  std::string fault;                 // "none" or the injected fault's name
+  std::string fault_description;
+  std::string reference_policy;      // how R was chosen, in words
+  std::string scope_note;            // which pairs A-in-F applies to, in words (Box2D's filters)
+  std::int64_t frames_requested = 0;
+  std::vector<FrameReport> frames;   // frames 1..N in order
+};
+
+// Writes the report as JSON, atomically (see DESIGN.md; keys documented in report_json.cpp).
+void write_run_report(const std::string& path, const RunReport& report);
+// The same JSON as a string (tests).
+std::string run_report_json(const RunReport& report);
+
+}  // namespace nbscope

@@ -1,0 +1,41 @@
+// nbscope physics: `box2d`, Box2D's b2DynamicTree used as a contact detector: one proxy per element
+// kept between detections (moved, as a physics engine moves them), each element's tight AABB
+// queried against the tree, then the exact circle test of core (DESIGN.md "Contact").
+//
+// Registered with core's registry by register_physics_detectors(), which the app calls at
+// start-up, so core never sees Box2D.
+#pragma once
+#include <box2d/b2_dynamic_tree.h>
+
+#include <vector>
+
+#include "core/detector.hpp"
+
+namespace nbscope {
+
+class Box2dDetector final : public Detector {
+ public:
+  Box2dDetector();
+  ~Box2dDetector() override;
+  [[nodiscard]] std::string_view name() const override { return "box2d"; }
+  [[nodiscard]] bool supports_dim(int dim) const override { return dim == 2; }
+  void detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) override;
+  // No book operations to trace: records nothing and detects as detect().
+  void detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs,
+                     TraceLog& out_trace) override;
+  // The tree's nodes (2N-1 for N proxies) and the proxy ids.
+  [[nodiscard]] std::size_t own_bytes() const override;
+
+ private:
+  // Creates or destroys proxies so there is exactly one per element (ids 0..n-1 as user data).
+  void fit_proxies(std::int64_t n);
+
+  b2DynamicTree tree_;
+  std::vector<std::int32_t> proxies_;  // proxy id of element k
+  std::vector<b2AABB> boxes_;          // tight AABB of element k, rounded outwards to float
+};
+
+// Adds physics' detectors ("box2d") to core's registry; safe to call more than once.
+void register_physics_detectors();
+
+}  // namespace nbscope

@@ -1,0 +1,324 @@
+// PhysicsWorld: building bodies from specs, stepping, and reading Box2D's pair sets back as element
+// pairs. Element ids travel through Box2D as each fixture's user data.
+//
+// Index: building | stepping and geometry | F, G, T and the scope of A ⊆ F | shapes | mouse drag.
+#include "physics/world.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace nbscope {
+
+namespace {
+
+b2Vec2 to_b2(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
+
+// Box2D 2.4.1 has no const GetUserData; reading it changes nothing.
+ElementId element_of(const b2Fixture* f) {
+  return static_cast<ElementId>(const_cast<b2Fixture*>(f)->GetUserData().pointer);
+}
+
+b2BodyType to_b2(BodyType t) {
+  switch (t) {
+    case BodyType::Static: return b2_staticBody;
+    case BodyType::Kinematic: return b2_kinematicBody;
+    case BodyType::Dynamic: return b2_dynamicBody;
+  }
+  return b2_dynamicBody;
+}
+
+BodyType from_b2(b2BodyType t) {
+  switch (t) {
+    case b2_staticBody: return BodyType::Static;
+    case b2_kinematicBody: return BodyType::Kinematic;
+    case b2_dynamicBody: return BodyType::Dynamic;
+  }
+  return BodyType::Dynamic;
+}
+
+// World centre of a body-local point, in double from Box2D's float transform. The elements and
+// the circle test of T both use this, so they agree to the last bit.
+inline void world_point(const b2Transform& xf, b2Vec2 p, double& x, double& y) {
+  const double c = xf.q.c, s = xf.q.s, px = p.x, py = p.y;
+  x = static_cast<double>(xf.p.x) + (c * px - s * py);
+  y = static_cast<double>(xf.p.y) + (s * px + c * py);
+}
+
+}  // namespace
+
+// ---- building ------------------------------------------------------------------------------
+
+PhysicsWorld::PhysicsWorld(const Scene& scene) : scene_(scene) {
+  world_ = std::make_unique<b2World>(to_b2(scene_.gravity));
+  world_->SetAllowSleeping(false);  // a sleeping body would keep stale proxies; every body is checked each frame
+  b2BodyDef ground_def;
+  ground_ = world_->CreateBody(&ground_def);
+  elements_.dim = 2;
+  const std::vector<BodySpec> initial = initial_bodies(scene_);
+  bodies_.reserve(initial.size());
+  for (const BodySpec& b : initial) add_body(b);
+  for (const GeneratorSpec& g : scene_.generators)
+    if (g.kind == GeneratorKind::Emitter) emitters_.emplace_back(g);
+  update_geometry();
+}
+
+PhysicsWorld::~PhysicsWorld() = default;
+
+void PhysicsWorld::add_body(const BodySpec& spec) {
+  b2BodyDef def;
+  def.type = to_b2(spec.type);
+  def.position = to_b2(spec.position);
+  def.angle = static_cast<float>(spec.angle);
+  def.linearVelocity = to_b2(spec.velocity);
+  def.angularVelocity = static_cast<float>(spec.angular_velocity);
+  def.userData.pointer = bodies_.size();
+  b2Body* body = world_->CreateBody(&def);
+  const auto body_index = static_cast<std::int32_t>(bodies_.size());
+  bodies_.push_back(body);
+
+  for (std::size_t k = 0; k < spec.fixtures.size(); ++k) {
+    const ShapeSpec& s = spec.fixtures[k];
+    const auto id = static_cast<ElementId>(fixtures_.size());
+    b2FixtureDef fd;
+    fd.density = static_cast<float>(s.density);
+    fd.friction = static_cast<float>(s.friction);
+    fd.restitution = static_cast<float>(s.restitution);
+    fd.userData.pointer = static_cast<std::uintptr_t>(id);
+    b2CircleShape circle;
+    b2PolygonShape polygon;
+    b2Vec2 centre;
+    double radius = 0;
+    if (s.kind == ShapeKind::Circle) {
+      circle.m_p = to_b2(s.offset);
+      circle.m_radius = static_cast<float>(s.radius);
+      fd.shape = &circle;
+      centre = circle.m_p;
+      radius = circle.m_radius;
+    } else {
+      if (s.kind == ShapeKind::Box) {
+        polygon.SetAsBox(static_cast<float>(s.half_extents.x), static_cast<float>(s.half_extents.y), to_b2(s.offset),
+                         static_cast<float>(s.angle));
+      } else {
+        b2Vec2 points[b2_maxPolygonVertices];
+        for (std::size_t i = 0; i < s.vertices.size(); ++i) points[i] = to_b2(s.vertices[i]);
+        polygon.Set(points, static_cast<int32>(s.vertices.size()));
+        if (polygon.m_count != static_cast<int32>(s.vertices.size()))
+          throw Error(s.where + "Box2D keeps only " + std::to_string(polygon.m_count) + " of the " +
+                      std::to_string(s.vertices.size()) + " polygon vertices (points too close or nearly collinear)");
+      }
+      fd.shape = &polygon;
+      centre = polygon.m_centroid;
+      double far = 0;
+      for (int32 i = 0; i < polygon.m_count; ++i) {
+        const double dx = static_cast<double>(polygon.m_vertices[i].x) - centre.x;
+        const double dy = static_cast<double>(polygon.m_vertices[i].y) - centre.y;
+        far = std::max(far, std::sqrt(dx * dx + dy * dy));
+      }
+      radius = far + static_cast<double>(polygon.m_radius) + kPolygonCircleMargin;
+    }
+    // Our own list keeps the element order (Box2D's fixture list is newest first).
+    fixtures_.push_back(body->CreateFixture(&fd));
+    local_centres_.push_back(centre);
+    radii_.push_back(radius);
+    sources_.push_back({body_index, static_cast<std::int32_t>(k)});
+  }
+}
+
+// ---- stepping and geometry -----------------------------------------------------------------
+
+void PhysicsWorld::step() {
+  pending_.clear();
+  for (Emitter& e : emitters_) e.emit_until(time_, pending_);
+  for (const BodySpec& b : pending_) add_body(b);
+  const float dt = static_cast<float>(scene_.time_step / scene_.sub_steps);
+  for (int k = 0; k < scene_.sub_steps; ++k)
+    world_->Step(dt, scene_.velocity_iterations, scene_.position_iterations);
+  ++frame_;
+  time_ += scene_.time_step;
+  update_geometry();
+}
+
+void PhysicsWorld::update_geometry() {
+  const std::size_t n = fixtures_.size();
+  aabbs_.resize(n);
+  if (static_cast<std::size_t>(elements_.size()) != n) {
+    elements_.resize(static_cast<std::int64_t>(n));
+    for (std::size_t i = 0; i < n; ++i) elements_.r[static_cast<Eigen::Index>(i)] = radii_[i];
+  }
+  double* const x = elements_.x.data();
+  double* const y = elements_.y.data();
+  for (std::size_t i = 0; i < n; ++i) {
+    const b2Fixture* f = fixtures_[i];
+    const b2Transform& xf = f->GetBody()->GetTransform();
+    world_point(xf, local_centres_[i], x[i], y[i]);
+    f->GetShape()->ComputeAABB(&aabbs_[i], xf, 0);
+  }
+}
+
+// ---- F, G, T and the scope of A ⊆ F --------------------------------------------------------
+
+void PhysicsWorld::contact_pairs(PairList& out) const {
+  out.clear();
+  for (const b2Contact* c = world_->GetContactList(); c != nullptr; c = c->GetNext()) {
+    const ElementId a = element_of(c->GetFixtureA()), b = element_of(c->GetFixtureB());
+    out.push_back(a < b ? Pair{a, b} : Pair{b, a});
+  }
+  sort_pairs(out);
+}
+
+bool PhysicsWorld::tight_aabbs_overlap(ElementId a, ElementId b) const {
+  return b2TestOverlap(aabbs_[static_cast<std::size_t>(a)], aabbs_[static_cast<std::size_t>(b)]);
+}
+
+bool PhysicsWorld::touching(ElementId a, ElementId b) const {
+  const b2Fixture* fa = fixtures_[static_cast<std::size_t>(a)];
+  const b2Fixture* fb = fixtures_[static_cast<std::size_t>(b)];
+  if (fa->GetType() == b2Shape::e_circle && fb->GetType() == b2Shape::e_circle) {
+    // Same centres and radii as the elements (see world_point), and Box2D's circle rule.
+    const double dx = elements_.x[a] - elements_.x[b];
+    const double dy = elements_.y[a] - elements_.y[b];
+    const double rr = static_cast<double>(fa->GetShape()->m_radius) + static_cast<double>(fb->GetShape()->m_radius);
+    return dx * dx + dy * dy <= rr * rr;
+  }
+  return b2TestOverlap(fa->GetShape(), 0, fb->GetShape(), 0, fa->GetBody()->GetTransform(), fb->GetBody()->GetTransform());
+}
+
+void PhysicsWorld::ground_truth(PairList& tight_aabb_pairs, PairList& touching_pairs) const {
+  tight_aabb_pairs.clear();
+  touching_pairs.clear();
+  // world.QueryAABB reports every fixture whose fat AABB overlaps the query; the fat AABBs hold the
+  // tight ones, so no pair is missed, and the tight test below removes the extra ones.
+  struct Query final : b2QueryCallback {
+    const PhysicsWorld* self = nullptr;
+    ElementId i = 0;
+    PairList* g = nullptr;
+    PairList* t = nullptr;
+    bool ReportFixture(b2Fixture* fixture) override {
+      const ElementId j = element_of(fixture);
+      if (j <= i || !self->tight_aabbs_overlap(i, j)) return true;
+      g->push_back({i, j});
+      if (self->touching(i, j)) t->push_back({i, j});
+      return true;
+    }
+  } query;
+  query.self = this;
+  query.g = &tight_aabb_pairs;
+  query.t = &touching_pairs;
+  for (std::size_t i = 0; i < fixtures_.size(); ++i) {
+    query.i = static_cast<ElementId>(i);
+    world_->QueryAABB(&query, aabbs_[i]);
+  }
+  sort_pairs(tight_aabb_pairs);
+  sort_pairs(touching_pairs);
+}
+
+void PhysicsWorld::in_box2d_scope(const PairList& pairs, PairList& out, Box2dScope& why_not) const {
+  out.clear();
+  why_not = {};
+  b2ContactFilter* filter = world_->GetContactManager().m_contactFilter;
+  for (const Pair& p : pairs) {
+    b2Fixture* fa = fixtures_[static_cast<std::size_t>(p.i)];
+    b2Fixture* fb = fixtures_[static_cast<std::size_t>(p.j)];
+    const b2Body* ba = fa->GetBody();
+    const b2Body* bb = fb->GetBody();
+    if (ba == bb) {
+      ++why_not.same_body;
+      continue;
+    }
+    if (ba->GetType() != b2_dynamicBody && bb->GetType() != b2_dynamicBody) {
+      ++why_not.no_dynamic;
+      continue;
+    }
+    bool joined = false;  // as b2Body::ShouldCollide (private in 2.4.1)
+    for (const b2JointEdge* je = bb->GetJointList(); je != nullptr; je = je->next)
+      if (je->other == ba && !je->joint->GetCollideConnected()) joined = true;
+    if (joined) {
+      ++why_not.joint;
+      continue;
+    }
+    if (filter != nullptr && !filter->ShouldCollide(fa, fb)) {
+      ++why_not.fixture_filter;
+      continue;
+    }
+    if (!tight_aabbs_overlap(p.i, p.j)) {
+      ++why_not.beyond_aabb;
+      continue;
+    }
+    out.push_back(p);
+  }
+}
+
+// ---- shapes --------------------------------------------------------------------------------
+
+void PhysicsWorld::shapes(std::vector<BodyShape>& out) const {
+  out.clear();
+  out.reserve(fixtures_.size());
+  for (std::size_t i = 0; i < fixtures_.size(); ++i) {
+    const b2Fixture* f = fixtures_[i];
+    const b2Body* body = f->GetBody();
+    const b2Transform& xf = body->GetTransform();
+    BodyShape s;
+    s.element = static_cast<ElementId>(i);
+    s.body = sources_[i].body;
+    s.body_type = from_b2(body->GetType());
+    s.angle = body->GetAngle();
+    s.radius = f->GetShape()->m_radius;
+    if (f->GetType() == b2Shape::e_circle) {
+      s.form = ShapeForm::Circle;
+      world_point(xf, static_cast<const b2CircleShape*>(f->GetShape())->m_p, s.centre.x, s.centre.y);
+    } else {
+      const auto* poly = static_cast<const b2PolygonShape*>(f->GetShape());
+      s.form = ShapeForm::Polygon;
+      world_point(xf, poly->m_centroid, s.centre.x, s.centre.y);
+      s.vertex_count = poly->m_count;
+      for (int32 k = 0; k < poly->m_count; ++k) world_point(xf, poly->m_vertices[k], s.vertices[k].x, s.vertices[k].y);
+    }
+    out.push_back(s);
+  }
+}
+
+// ---- mouse drag ----------------------------------------------------------------------------
+
+bool PhysicsWorld::begin_drag(double x, double y) {
+  end_drag();
+  const b2Vec2 p(static_cast<float>(x), static_cast<float>(y));
+  struct Pick final : b2QueryCallback {
+    b2Vec2 point;
+    b2Body* hit = nullptr;
+    bool ReportFixture(b2Fixture* f) override {
+      if (f->GetBody()->GetType() != b2_dynamicBody || !f->TestPoint(point)) return true;
+      hit = f->GetBody();
+      return false;
+    }
+  } pick;
+  pick.point = p;
+  b2AABB box;
+  box.lowerBound = p - b2Vec2(0.001f, 0.001f);
+  box.upperBound = p + b2Vec2(0.001f, 0.001f);
+  world_->QueryAABB(&pick, box);
+  if (pick.hit == nullptr) return false;
+  b2MouseJointDef def;
+  def.bodyA = ground_;
+  def.bodyB = pick.hit;
+  def.target = p;
+  const float g = std::max(10.0f, world_->GetGravity().Length());
+  def.maxForce = 1000.0f * pick.hit->GetMass() * g;
+  b2LinearStiffness(def.stiffness, def.damping, 5.0f, 0.7f, def.bodyA, def.bodyB);
+  mouse_joint_ = static_cast<b2MouseJoint*>(world_->CreateJoint(&def));
+  pick.hit->SetAwake(true);
+  return true;
+}
+
+void PhysicsWorld::drag_to(double x, double y) {
+  if (mouse_joint_ != nullptr) mouse_joint_->SetTarget(b2Vec2(static_cast<float>(x), static_cast<float>(y)));
+}
+
+void PhysicsWorld::end_drag() {
+  if (mouse_joint_ == nullptr) return;
+  world_->DestroyJoint(mouse_joint_);
+  mouse_joint_ = nullptr;
+}
+
+}  // namespace nbscope

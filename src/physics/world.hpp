@@ -1,0 +1,113 @@
+// nbscope physics: a Box2D 2.4.1 world built from a Scene, stepped frame by frame, handing out the
+// frame's elements (one bounding circle per fixture) and Box2D's side of the cross-check.
+//
+// Index: element geometry | PhysicsWorld (build, step, elements, Box2D's pair sets, scope of A ⊆ F,
+// shapes for drawing, mouse drag).
+//
+// This header includes Box2D; only physics, check and the frame loop's .cpp include it.
+#pragma once
+#include <box2d/box2d.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "core/elements.hpp"
+#include "core/pairs.hpp"
+#include "io/scene_json.hpp"
+#include "physics/generators.hpp"
+#include "physics/shapes.hpp"
+
+namespace nbscope {
+
+// A polygon's bounding circle is enlarged by this much beyond its skin, so that Box2D's float GJK
+// (which calls shapes within ~1e-6 m "overlapping", and rounds world vertices to float) never finds
+// two shapes touching whose bounding circles do not meet. Circles are exact.
+inline constexpr double kPolygonCircleMargin = 1e-3;
+
+// Which pairs of A the A ⊆ F invariant applies to, and why the others are left out.
+struct Box2dScope {
+  std::size_t same_body = 0;       // two fixtures of one body: Box2D never pairs them
+  std::size_t no_dynamic = 0;      // neither body dynamic (static/kinematic only): b2Body::ShouldCollide
+  std::size_t joint = 0;           // bodies joined with collideConnected = false
+  std::size_t fixture_filter = 0;  // refused by the world's b2ContactFilter (category/mask/group)
+  std::size_t beyond_aabb = 0;     // bounding circles meet but the shapes' tight AABBs do not
+};
+
+class PhysicsWorld {
+ public:
+  // Builds the world: gravity, every initial body (scene bodies, then generated ones), sleeping
+  // off (bodies must never skip the broadphase). Throws Error naming the scene field when Box2D
+  // would change a shape (e.g. merge polygon vertices).
+  explicit PhysicsWorld(const Scene& scene);
+  ~PhysicsWorld();
+  PhysicsWorld(const PhysicsWorld&) = delete;
+  PhysicsWorld& operator=(const PhysicsWorld&) = delete;
+
+  // One frame: emitters add the bodies due, then sub_steps Box2D steps of time_step/sub_steps;
+  // then the elements and tight AABBs are recomputed at the new transforms.
+  void step();
+  // Frames stepped since construction, and the simulated time in seconds.
+  [[nodiscard]] std::int64_t frame() const { return frame_; }
+  [[nodiscard]] double time() const { return time_; }
+  [[nodiscard]] const Scene& scene() const { return scene_; }
+
+  // The frame's elements: element k is fixture k's bounding circle (circle: centre and radius;
+  // polygon: centroid and farthest vertex + skin + kPolygonCircleMargin), at the current transforms.
+  [[nodiscard]] const Elements& elements() const { return elements_; }
+  // Element -> (body, fixture), same indexing as elements().
+  [[nodiscard]] const std::vector<ElementSource>& sources() const { return sources_; }
+  [[nodiscard]] std::int64_t body_count() const { return static_cast<std::int64_t>(bodies_.size()); }
+
+  // F: Box2D's contact list after the last step (fat-AABB pairs that passed Box2D's filters),
+  // as sorted element pairs. Empty before the first step (Box2D finds contacts inside Step).
+  void contact_pairs(PairList& out) const;
+  // G: every pair of fixtures whose tight AABBs (shape->ComputeAABB at the current transforms)
+  // overlap, found with world.QueryAABB, no filters applied; and T ⊆ G: the pairs whose shapes
+  // touch now (circles: |c1-c2| <= r1+r2 in double as the elements; otherwise b2TestOverlap).
+  // Both sorted.
+  void ground_truth(PairList& tight_aabb_pairs, PairList& touching) const;
+  // The pairs of `pairs` (sorted, i < j) that Box2D's contact list must hold: Box2D's filters
+  // applied (same body, no dynamic body, joints, contact filter) and the shapes' tight AABBs
+  // overlapping. Counts what was left out and why.
+  void in_box2d_scope(const PairList& pairs, PairList& out, Box2dScope& why_not) const;
+  // True when the tight AABBs of two elements' fixtures overlap (inclusive, in float as Box2D).
+  [[nodiscard]] bool tight_aabbs_overlap(ElementId a, ElementId b) const;
+
+  // Every fixture at the current transforms, for drawing (appends to `out` after clearing it).
+  void shapes(std::vector<BodyShape>& out) const;
+
+  // Picks the dynamic body under (x, y) and pulls it there with a b2MouseJoint; false if none.
+  bool begin_drag(double x, double y);
+  // Moves the drag target.
+  void drag_to(double x, double y);
+  // Releases the body (no effect when not dragging).
+  void end_drag();
+  [[nodiscard]] bool dragging() const { return mouse_joint_ != nullptr; }
+
+  // The Box2D world itself, for the box2d-side tests and the benchmark.
+  [[nodiscard]] const b2World& world() const { return *world_; }
+
+ private:
+  void add_body(const BodySpec& spec);
+  void update_geometry();
+  [[nodiscard]] bool touching(ElementId a, ElementId b) const;
+
+  Scene scene_;
+  std::unique_ptr<b2World> world_;
+  b2Body* ground_ = nullptr;             // anchor of the mouse joint; has no fixtures
+  b2MouseJoint* mouse_joint_ = nullptr;
+  std::vector<Emitter> emitters_;
+  std::vector<BodySpec> pending_;        // emitted bodies waiting to be created
+  std::vector<b2Body*> bodies_;
+  std::vector<b2Fixture*> fixtures_;     // indexed by element id
+  std::vector<b2Vec2> local_centres_;    // bounding-circle centre in body coordinates
+  std::vector<double> radii_;            // bounding-circle radius
+  std::vector<b2AABB> aabbs_;            // tight AABBs at the current transforms
+  std::vector<ElementSource> sources_;
+  Elements elements_;
+  std::int64_t frame_ = 0;
+  double time_ = 0;
+};
+
+}  // namespace nbscope
