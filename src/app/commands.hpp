@@ -8,6 +8,9 @@ namespace nbscope {
 // `nbscope pairs --input F [--algorithm A] [--output F] [--repeat K]`
 int run_pairs(Args& args);
 
+// `nbscope dump --input F --algorithm A [--cell-size D] [--origin X,Y[,Z]] [--cells NX,NY[,NZ]] [--format json]`
+int run_dump(Args& args);
+
 // `nbscope headless --scene F [--frames N] [--algorithm A] [--report F] [--inject-fault NAME]` (app/headless.hpp)
 int run_headless(Args& args);
 

@@ -15,6 +15,14 @@ usage:
       --repeat K runs detection K times and checks that every run agrees.
       --cell-size/--origin pin the grid (default: largest diameter, minimum corner).
       --max-pairs M stops with an error past M pairs (default 50,000,000: 400 MB).
+  nbscope dump --input ELEMENTS.csv --algorithm NAME [--cell-size D] [--origin X,Y[,Z]]
+               [--cells NX,NY[,NZ]] [--format json]
+      The algorithm's integer arrays as JSON on stdout, as they stand when its lists are complete:
+      0-based, -1 for an empty list and for the end of a list, with the grid (cell_size, origin,
+      nx, ny, nz) and the bytes of every array. screen: heads[ix][iy] and next; nbs: y_heads,
+      y_next and per non-empty row its x-lists (3D: z_heads, z_next, layers); tree: its leaves'
+      bounds and HEADs and next; sort: sorted cell keys and order. --cells pins the number of
+      cells per axis (the book's Fig. 3.15 is --cell-size 1 --origin 0,0 --cells 10,10).
   nbscope headless --scene FILE [--frames N] [--algorithm NAME] [--report OUT.json]
                    [--inject-fault NAME] [--brute-limit N] [--quiet]
       Runs N frames (default 600) of a scene (assets/scenes/*.json) with no window: Box2D steps,

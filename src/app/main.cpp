@@ -35,6 +35,7 @@ int dispatch(const std::string& command, nbscope::Args& args) {
     return print_algorithms();
   }
   if (command == "pairs") return nbscope::run_pairs(args);
+  if (command == "dump") return nbscope::run_dump(args);
   if (command == "headless") return nbscope::run_headless(args);
   throw nbscope::Error(command + ": unknown command (see nbscope --help)");
 }

@@ -19,7 +19,7 @@ std::vector<DetectorInfo> builtin_detectors() {
                true, [] { return std::make_unique<SortDetector>(); }});
   d.push_back({"screen", "screen array C[nx][ny] of list heads + next array E[N]; memory grows with the grid (p.91)",
                true, true, [] { return std::make_unique<ScreenDetector>(); }});
-  d.push_back({"nbs", "Munjiza-NBS: y-lists, then x-lists of each row and the row below; O(N) time and memory",
+  d.push_back({"nbs", "Munjiza-NBS: y-lists (3D: z-lists first), then x-lists row by row; O(N) time and memory",
                true, true, [] { return std::make_unique<NbsDetector>(); }});
   return d;
 }

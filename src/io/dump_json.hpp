@@ -1,0 +1,40 @@
+// nbscope io: `nbscope dump` — a detector's integer arrays as JSON, as they stand when its lists
+// are complete (the detectors clear their heads before they return, so the arrays are read from a
+// traced run: the state right before the phase that first uses complete lists).
+//
+// Every index is 0-based and -1 means an empty list or the end of a list. Keys (README "dump"):
+//   all:     algorithm, dim, elements, pairs, cell_size, origin, nx, ny (nz in 3D), own_bytes, bytes
+//   screen:  heads [ix][iy]([iz]) = C, next = E
+//   tree:    nodes, leaves [{node, cell, bounds, head}], next = E
+//   sort:    keys (cell of each sorted position), order (element at each sorted position), ix, iy (iz)
+//   nbs 2D:  y_heads, y_next, rows [{iy, x_heads [[ix, head]], x_next [[k, X[k]]]}]
+//   nbs 3D:  z_heads, z_next, layers [{iz, y_heads [[iy, head]], y_next [[k, Y[k]]], rows [...]}]
+#pragma once
+#include <cstddef>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/elements.hpp"
+#include "core/grid.hpp"
+#include "core/trace.hpp"
+
+namespace nbscope {
+
+// What one dump is made of: the detector's name and grid, its traced run and its memory.
+struct DumpSource {
+  std::string algorithm;
+  const Elements* elements = nullptr;
+  const Grid* grid = nullptr;  // nullptr for detectors without cells (brute)
+  const TraceLog* trace = nullptr;
+  std::size_t own_bytes = 0;
+  std::size_t pairs = 0;
+};
+
+// The dump as a JSON document (keys in the order above).
+nlohmann::ordered_json dump_json(const DumpSource& source);
+
+// `json` as text: objects one key a line, arrays of numbers (and arrays of short number arrays,
+// such as [ix, head] pairs) on one line, so the book's arrays read as the book prints them.
+std::string format_dump(const nlohmann::ordered_json& json);
+
+}  // namespace nbscope
