@@ -1,5 +1,6 @@
 #include "core/tree.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "core/cells.hpp"
@@ -10,7 +11,7 @@ namespace nbscope {
 
 namespace {
 // Pseudocode lines (TraceEvent::line).
-enum Line : std::uint8_t { kLoopBuild = 0, kDescend, kPush, kLoopSearch, kMaskLeaf, kTestPair };
+enum Line : std::uint8_t { kLoopBuild = 0, kDescend, kPush, kLoopLeaves, kMaskLeaf, kLoopLeafList, kTestPair };
 
 // The cells [lo, hi) a node covers, per axis.
 struct Box {
@@ -84,20 +85,22 @@ const std::vector<const char*>& TreeDetector::pseudocode(int dim) const {
       "  from the root: halve the cell across its longer side and go to the half holding the centre of k "
       "(a new node when that half is empty)",
       "  at the leaf (one cell of size d) add the discrete element k onto its list: E[k] = HEAD; HEAD = k",
-      "Loop over all discrete elements k",
-      "  search the tree for the leaves of the contact mask: own cell, (ix-1,iy), (ix-1,iy-1), (ix,iy-1), "
-      "(ix+1,iy-1)",
-      "    check k against each discrete element of that leaf's list (own leaf: those after k)",
+      "Loop over all leaves of the tree (the cells holding discrete elements)",
+      "  search the tree, from the lowest node holding the leaf's neighbourhood, for the leaves of the contact "
+      "mask: own cell, (ix-1,iy), (ix-1,iy-1), (ix,iy-1), (ix+1,iy-1)",
+      "  Loop over all discrete elements k of the leaf's list (k = HEAD and k = E[k] until k = -1)",
+      "    check k against each discrete element of the mask leaves' lists (own leaf: those after k)",
   };
   static const std::vector<const char*> lines_3d = {
       "Loop over all discrete elements k (place them onto the binary tree)",
       "  from the root: halve the cell across its longest side and go to the half holding the centre of k "
       "(a new node when that half is empty)",
       "  at the leaf (one cell of size d) add the discrete element k onto its list: E[k] = HEAD; HEAD = k",
-      "Loop over all discrete elements k",
-      "  search the tree for the leaves of the contact mask: own cell, (ix-1,iy,iz), (ix-1..ix+1,iy-1,iz), "
-      "(ix-1..ix+1,iy-1..iy+1,iz-1)",
-      "    check k against each discrete element of that leaf's list (own leaf: those after k)",
+      "Loop over all leaves of the tree (the cells holding discrete elements)",
+      "  search the tree, from the lowest node holding the leaf's neighbourhood, for the leaves of the contact "
+      "mask: own cell, (ix-1,iy,iz), (ix-1..ix+1,iy-1,iz), (ix-1..ix+1,iy-1..iy+1,iz-1)",
+      "  Loop over all discrete elements k of the leaf's list (k = HEAD and k = E[k] until k = -1)",
+      "    check k against each discrete element of the mask leaves' lists (own leaf: those after k)",
   };
   return dim == 3 ? lines_3d : lines_2d;
 }
@@ -145,48 +148,81 @@ void TreeDetector::build(const Elements& e, Trace& trace, int child_id, int head
 
 template <int D, class Trace>
 void TreeDetector::search(const Elements& e, Trace& trace, PairCollector& pairs) {
-  const auto n = static_cast<ElementId>(e.size());
   const Grid& g = grid_;
-  const Box root = root_box(g);
   const std::int32_t* const child = child_.data();
   const std::int32_t* const head = head_.data();
   const std::int32_t* const next = next_.data();
   struct Frame {
     std::int32_t node;
+    std::int32_t depth;
     Box box;
   };
-  // Depth <= 3 * 24 levels (kMaxCellsPerSide); a pending sibling per level at most.
-  std::array<Frame, 160> stack;
-  trace.phase(kLoopSearch, phase_label::kContacts, -1);
-  for (ElementId k = 0; k < n; ++k) {
-    const std::int32_t c[3] = {g.cell(e.x[k], 0), g.cell(e.y[k], 1), D == 3 ? g.cell(e.z[k], 2) : 0};
-    // The neighbourhood box: +-1 cell on every axis but the last, whose upper half is not searched.
-    std::int32_t qlo[3], qhi[3];  // inclusive
-    for (int a = 0; a < D; ++a) {
-      qlo[a] = c[a] - 1;
-      qhi[a] = a == D - 1 ? c[a] : c[a] + 1;
+  // Depth <= 3 * 24 levels (kMaxCellsPerSide); a depth-first stack holds one pending sibling per level.
+  constexpr std::size_t kMaxDepth = 80;
+  std::array<Frame, kMaxDepth> path;       // path[d]: the ancestor at depth d of the current node
+  std::array<Frame, 2 * kMaxDepth> walk;   // the depth-first walk over all leaves
+  std::array<Frame, 2 * kMaxDepth> query;  // the search for one leaf's neighbours
+  struct MaskLeaf {
+    std::int32_t head;
+    std::int32_t cell[3];
+  };
+  std::array<MaskLeaf, 13> mask;  // the mask leaves of the current leaf (never the own leaf)
+
+  trace.phase(kLoopLeaves, phase_label::kContacts, -1);
+  std::size_t top = 0;
+  walk[top++] = Frame{0, 0, root_box(g)};
+  while (top > 0) {
+    const Frame f = walk[--top];
+    path[static_cast<std::size_t>(f.depth)] = f;
+    const int a = split_axis<D>(f.box);
+    if (a >= 0) {
+      for (int side = 1; side >= 0; --side) {  // upper half pushed first: the lower is walked first
+        const std::int32_t ch = child[2 * static_cast<std::size_t>(f.node) + side];
+        if (ch != -1) walk[top++] = Frame{ch, f.depth + 1, half(f.box, a, side)};
+      }
+      continue;
     }
-    std::size_t top = 0;
-    stack[top++] = Frame{0, root};
-    while (top > 0) {
-      const Frame f = stack[--top];
-      const int a = split_axis<D>(f.box);
-      if (a < 0) {
-        const std::int32_t* cell = f.box.lo;
-        const bool own = cell[0] == c[0] && cell[1] == c[1] && cell[2] == c[2];
-        if (!own && !in_half_mask(cell[0] - c[0], cell[1] - c[1], cell[2] - c[2])) continue;
-        trace.visit_cell(kMaskLeaf, k, cell[0], cell[1], D == 3 ? cell[2] : -1);
-        test_list(trace, kTestPair, e, k, own ? next[k] : head[f.node], next, pairs);
+    // A leaf: its cell c and the neighbourhood q (+-1 cell, only the lower half on the last axis).
+    const std::int32_t* c = f.box.lo;
+    std::int32_t qlo[3] = {0, 0, 0}, qhi[3] = {0, 0, 0};  // inclusive, clipped to the grid
+    for (int i = 0; i < D; ++i) {
+      qlo[i] = std::max(c[i] - 1, 0);
+      qhi[i] = std::min(i == D - 1 ? c[i] : c[i] + 1, static_cast<std::int32_t>(g.n[i] - 1));
+    }
+    // Search from the lowest ancestor whose cells hold the whole neighbourhood, not from the root.
+    std::int32_t from = f.depth;
+    for (; from > 0; --from) {
+      const Box& b = path[static_cast<std::size_t>(from)].box;
+      bool holds = true;
+      for (int i = 0; i < D; ++i) holds = holds && b.lo[i] <= qlo[i] && b.hi[i] - 1 >= qhi[i];
+      if (holds) break;
+    }
+    std::size_t found = 0, qtop = 0;
+    query[qtop++] = path[static_cast<std::size_t>(from)];
+    while (qtop > 0) {
+      const Frame q = query[--qtop];
+      const int qa = split_axis<D>(q.box);
+      if (qa < 0) {
+        const std::int32_t* m = q.box.lo;
+        if (in_half_mask(m[0] - c[0], m[1] - c[1], m[2] - c[2])) mask[found++] = MaskLeaf{head[q.node], {m[0], m[1], m[2]}};
         continue;
       }
-      // Upper half first onto the stack, so the lower half is searched first.
       for (int side = 1; side >= 0; --side) {
-        const std::int32_t ch = child[2 * static_cast<std::size_t>(f.node) + side];
+        const std::int32_t ch = child[2 * static_cast<std::size_t>(q.node) + side];
         if (ch == -1) continue;
-        const Box b = half(f.box, a, side);
+        const Box b = half(q.box, qa, side);
         bool overlaps = true;
         for (int i = 0; i < D; ++i) overlaps = overlaps && b.lo[i] <= qhi[i] && b.hi[i] - 1 >= qlo[i];
-        if (overlaps) stack[top++] = Frame{ch, b};
+        if (overlaps) query[qtop++] = Frame{ch, q.depth + 1, b};
+      }
+    }
+    // Every element of the leaf against the rest of its own list and the mask leaves' lists.
+    for (std::int32_t k = head[f.node]; k != -1; k = next[k]) {
+      trace.visit_cell(kMaskLeaf, k, c[0], c[1], D == 3 ? c[2] : -1);
+      test_list(trace, kTestPair, e, k, next[k], next, pairs);
+      for (std::size_t i = 0; i < found; ++i) {
+        trace.visit_cell(kMaskLeaf, k, mask[i].cell[0], mask[i].cell[1], D == 3 ? mask[i].cell[2] : -1);
+        test_list(trace, kTestPair, e, k, mask[i].head, next, pairs);
       }
     }
   }
