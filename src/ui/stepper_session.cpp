@@ -2,11 +2,20 @@
 
 #include <algorithm>
 #include <exception>
+#include <iterator>
 
 #include "core/detector.hpp"
 #include "core/error.hpp"
 
 namespace nbscope::ui {
+
+namespace {
+// One 64-bit key per cell (-1 components included, so rows and layers have keys of their own).
+std::uint64_t cell_key(const std::int32_t c[3]) {
+  const auto part = [](std::int32_t v) { return static_cast<std::uint64_t>(static_cast<std::uint32_t>(v + 1) & 0x1FFFFFu); };
+  return part(c[0]) | (part(c[1]) << 21) | (part(c[2]) << 42);
+}
+}  // namespace
 
 StepperSession::StepperSession(StepperConfig config)
     : book_numbering(config.book_numbering), pending_step_(config.step) {}
@@ -29,6 +38,7 @@ void StepperSession::update(const SimView& sim, double dt_seconds, int ui_frame)
   const bool want = sim.paused || pending_step_.has_value();
   if (want && sim.elements != nullptr && !(key_ == key_of(sim))) capture(sim);
   if (captured_) stepper_.advance(dt_seconds);
+  was_current_ = current_for(sim);
 }
 
 void StepperSession::capture(const SimView& sim) {
@@ -39,6 +49,9 @@ void StepperSession::capture(const SimView& sim) {
   stepper_.clear();
   pseudocode_.clear();
   element_valued_.clear();
+  cell_pushes_.clear();
+  tests_of_element_ = -1;
+  tests_.clear();
   has_grid_ = false;
   algorithm_ = sim.algorithm;
   frame_ = sim.frame;
@@ -93,9 +106,36 @@ void StepperSession::capture(const SimView& sim) {
     if (next >= 0) element_valued_[a] = element_valued_[static_cast<std::size_t>(next)] = true;
     if (arrays[a].name == "order") element_valued_[a] = true;  // sort's permutation of element ids
   }
+  const auto& events = stepper_.events();
+  for (std::size_t i = 0; i < events.size(); ++i)
+    if (events[i].op == TraceOp::Push) cell_pushes_.emplace_back(cell_key(events[i].cell), i);
+  std::sort(cell_pushes_.begin(), cell_pushes_.end());
   captured_ = true;
   // The next frame keeps the place in the sequence, so stepping frame by frame compares like with like.
   stepper_.seek(pending_step_.value_or(keep_position));
+}
+
+std::optional<StepperSession::ListRef> StepperSession::list_of_cell(const std::int32_t cell[3]) const {
+  const std::uint64_t key = cell_key(cell);
+  // The latest push onto the cell among the events applied so far.
+  auto it = std::lower_bound(cell_pushes_.begin(), cell_pushes_.end(), std::make_pair(key, stepper_.position()));
+  if (it == cell_pushes_.begin() || std::prev(it)->first != key) return std::nullopt;
+  const TraceEvent& e = stepper_.events()[std::prev(it)->second];
+  return ListRef{e.writes[1].array, e.writes[1].index, e.label};
+}
+
+const std::vector<StepperSession::TestedPair>& StepperSession::tests_of(std::int32_t k) {
+  if (k != tests_of_element_) {
+    tests_.clear();
+    tests_of_element_ = k;
+    const auto& events = stepper_.events();
+    for (std::size_t i = 0; i < events.size(); ++i) {
+      const TraceEvent& e = events[i];
+      if (e.op != TraceOp::TestPair || (e.element != k && e.other != k)) continue;
+      tests_.push_back(TestedPair{i, e.element == k ? e.other : e.element, e.contact});
+    }
+  }
+  return tests_;
 }
 
 std::string entry_name(const TracedArray& array, std::int64_t flat, bool book) {

@@ -41,6 +41,8 @@ class StepperSession {
   void capture(const SimView& sim);
   // True when a detection is held and it is the frame `sim` shows (the scene overlay is valid).
   [[nodiscard]] bool current_for(const SimView& sim) const;
+  // current_for() as of the last update() (for scene drawing done before the panels fill the view).
+  [[nodiscard]] bool was_current() const { return was_current_; }
   [[nodiscard]] bool has_capture() const { return captured_; }
   // Why nothing can be stepped through ("" when a detection is held).
   [[nodiscard]] const std::string& message() const { return message_; }
@@ -54,6 +56,21 @@ class StepperSession {
   [[nodiscard]] std::int64_t frame() const { return frame_; }
   // The detector's pseudocode lines (TraceEvent::line indexes them).
   [[nodiscard]] const std::vector<const char*>& pseudocode() const { return pseudocode_; }
+  // The list that holds cell `cell`'s elements at the current position: the target of the latest
+  // push onto that cell so far (NBS: B[1] of the row below during row iy), or nullopt.
+  struct ListRef {
+    int heads = -1;
+    std::int64_t list = -1;
+    const char* kind = "";
+  };
+  [[nodiscard]] std::optional<ListRef> list_of_cell(const std::int32_t cell[3]) const;
+  // Every pair tested with element k, in event order: (event index, the other element, contact).
+  struct TestedPair {
+    std::size_t event = 0;
+    std::int32_t other = -1;
+    bool contact = false;
+  };
+  [[nodiscard]] const std::vector<TestedPair>& tests_of(std::int32_t k);
   // True for arrays whose values are element ids (list heads and next arrays), shifted by one in
   // book numbering like the indices.
   [[nodiscard]] bool holds_elements(int array) const;
@@ -85,7 +102,11 @@ class StepperSession {
   std::int64_t frame_ = -1;
   std::vector<const char*> pseudocode_;
   std::vector<bool> element_valued_;
+  std::vector<std::pair<std::uint64_t, std::size_t>> cell_pushes_;  // (cell key, event), sorted
+  std::int32_t tests_of_element_ = -1;
+  std::vector<TestedPair> tests_;
   int last_frame_count_ = -1;
+  bool was_current_ = false;
 };
 
 // Shown index of an element id or array index: itself, or one more in book numbering (-1 stays -1).

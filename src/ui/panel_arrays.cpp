@@ -1,0 +1,260 @@
+// The Arrays panel: every array of the recorded detection laid out as the book's figures draw them
+// — a next array as a row of integers over its indices (Figs 3.13, 3.20), a heads array of cells as
+// a matrix C[ix][iy] (eq. 3.31), NBS's B[2][nx] as the current row over the row below — with -1 for
+// an empty list or the end of one, the entry just written highlighted with its old value, large
+// arrays windowed around the active entries, and an element filter that answers "where is k?".
+//
+// Index: cell colours | ArrayTable (one array as a table) | element section | ArraysPanel.
+#include <imgui.h>
+
+#include <algorithm>
+#include <string>
+
+#include "ui/panel_anchor.hpp"
+#include "ui/stepper_panels.hpp"
+
+namespace nbscope::ui {
+
+namespace {
+
+constexpr std::int64_t kMaxColumns = 16;
+constexpr std::int64_t kMaxRows = 10;
+const ImVec4 kEmpty(0.50f, 0.52f, 0.56f, 1.0f);  // -1
+const ImVec4 kValue(0.92f, 0.92f, 0.95f, 1.0f);
+const ImVec4 kIndex(0.55f, 0.60f, 0.70f, 1.0f);
+const ImU32 kWrittenBg = IM_COL32(230, 170, 40, 200);
+const ImU32 kFocusBg = IM_COL32(60, 110, 190, 170);
+
+// What to highlight this frame.
+struct Marks {
+  const ArrayWrite* writes = nullptr;  // the last write event's writes
+  int write_count = 0;
+  std::int32_t focus = -1;  // the filtered element
+  std::int64_t n = 0;       // element count (arrays of this length are indexed by element)
+};
+
+bool written(const Marks& m, int array, std::int64_t index) {
+  for (int w = 0; w < m.write_count; ++w)
+    if (m.writes[w].array == array && m.writes[w].index == index) return true;
+  return false;
+}
+
+// One entry as a table cell: the value, coloured; background for the written / filtered entry.
+void value_cell(const StepperSession& s, const Marks& m, int array, std::int64_t flat, std::int32_t value,
+                bool element_indexed_at_focus) {
+  const bool is_written = written(m, array, flat);
+  const bool is_focus = m.focus >= 0 && (element_indexed_at_focus || (s.holds_elements(array) && value == m.focus));
+  if (is_written) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, kWrittenBg);
+  else if (is_focus) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, kFocusBg);
+  const std::int64_t v = shown_value(s, array, value);
+  ImGui::TextColored(value == -1 && !is_written ? kEmpty : kValue, "%lld", static_cast<long long>(v));
+}
+
+// Where an array's window should be centred: the entry just written, else the filtered element.
+std::int64_t focus_index(const Marks& m, int array, const TracedArray& a) {
+  for (int w = 0; w < m.write_count; ++w)
+    if (m.writes[w].array == array) return m.writes[w].index;
+  if (m.focus >= 0 && a.shape.size() == 1 && a.shape[0] == m.n) return m.focus;
+  return 0;
+}
+
+// A 1D array: values over indices, as the book prints E (Fig. 3.20).
+void draw_row_array(const StepperSession& s, const Marks& m, int array) {
+  const TracedArray& a = s.stepper().trace().arrays()[array];
+  const std::vector<std::int32_t>& values = s.stepper().state()[array];
+  const auto length = static_cast<std::int64_t>(values.size());
+  const auto [begin, end] = window_range(length, focus_index(m, array, a), kMaxColumns);
+  const bool by_element = length == m.n;
+  const int columns = static_cast<int>(end - begin) + 1;
+  if (columns > 63 || !ImGui::BeginTable(a.name.c_str(), columns, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV))
+    return;
+  ImGui::TableNextRow();
+  ImGui::TableSetColumnIndex(0);
+  ImGui::TextUnformatted(begin > 0 ? (a.name + " ...").c_str() : a.name.c_str());
+  for (std::int64_t i = begin; i < end; ++i) {
+    ImGui::TableSetColumnIndex(static_cast<int>(i - begin) + 1);
+    value_cell(s, m, array, i, values[static_cast<std::size_t>(i)], by_element && i == m.focus);
+  }
+  ImGui::TableNextRow();
+  ImGui::TableSetColumnIndex(0);
+  ImGui::TextColored(kIndex, end < length ? "index     ..." : "index");
+  for (std::int64_t i = begin; i < end; ++i) {
+    ImGui::TableSetColumnIndex(static_cast<int>(i - begin) + 1);
+    ImGui::TextColored(kIndex, "%lld", static_cast<long long>(shown(i, s.book_numbering)));
+  }
+  ImGui::EndTable();
+}
+
+// A 2D array (or the slice of a 3D one at the focus's last index) as a matrix [row][column], as the
+// book prints C[ix][iy] (eq. 3.31): rows are the first index, columns the second.
+void draw_matrix_array(const StepperSession& s, const Marks& m, int array) {
+  const TracedArray& a = s.stepper().trace().arrays()[array];
+  const std::vector<std::int32_t>& values = s.stepper().state()[array];
+  const std::int64_t rows = a.shape[0], cols = a.shape[1];
+  const std::int64_t depth = a.shape.size() == 3 ? a.shape[2] : 1;
+  const std::int64_t focus = focus_index(m, array, a);
+  const std::int64_t fz = focus % depth, fc = (focus / depth) % cols, fr = focus / depth / cols;
+  const auto [r0, r1] = window_range(rows, fr, kMaxRows);
+  const auto [c0, c1] = window_range(cols, fc, kMaxColumns);
+  const bool book = s.book_numbering;
+  if (depth > 1) ImGui::TextColored(kIndex, "slice [..][..][%lld]", static_cast<long long>(shown(fz, book)));
+  const int columns = static_cast<int>(c1 - c0) + 1;
+  if (!ImGui::BeginTable(a.name.c_str(), columns, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV))
+    return;
+  ImGui::TableNextRow();
+  ImGui::TableSetColumnIndex(0);
+  ImGui::TextColored(kIndex, "%s%s", a.name.c_str(), c0 > 0 ? " ..." : "");
+  for (std::int64_t c = c0; c < c1; ++c) {
+    ImGui::TableSetColumnIndex(static_cast<int>(c - c0) + 1);
+    ImGui::TextColored(kIndex, "%lld", static_cast<long long>(shown(c, book)));
+  }
+  // NBS's x heads: the current row's lists over the row below's (book p.102).
+  const bool nbs_b = a.name == "B" && rows == 2 && s.algorithm() == "nbs" && s.elements().dim == 2;
+  for (std::int64_t r = r0; r < r1; ++r) {
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    if (nbs_b) {
+      ImGui::TextColored(kIndex, r == 0 ? "[%lld] row iy" : "[%lld] row iy-1", static_cast<long long>(shown(r, book)));
+    } else {
+      ImGui::TextColored(kIndex, "[%lld]%s", static_cast<long long>(shown(r, book)), r == r0 && r0 > 0 ? " ..." : "");
+    }
+    for (std::int64_t c = c0; c < c1; ++c) {
+      ImGui::TableSetColumnIndex(static_cast<int>(c - c0) + 1);
+      const std::int64_t flat = (r * cols + c) * depth + fz;
+      value_cell(s, m, array, flat, values[static_cast<std::size_t>(flat)], false);
+    }
+  }
+  ImGui::EndTable();
+  if (r1 < rows) ImGui::TextColored(kIndex, "... %lld more rows", static_cast<long long>(rows - r1));
+}
+
+// Where the filtered element is: its cell, the lists holding it now, the next entries after it and
+// every pair it is tested in (click one to go there).
+void draw_element(StepperSession& s, std::int32_t k) {
+  const bool book = s.book_numbering;
+  const Elements& e = s.elements();
+  Stepper& st = s.stepper();
+  const auto& arrays = st.trace().arrays();
+  ImGui::Text("element %lld", static_cast<long long>(shown(k, book)));
+  std::int32_t cell[3] = {-1, -1, -1};
+  if (const Grid* g = s.grid()) {
+    cell[0] = g->cell(e.x[k], 0);
+    cell[1] = g->cell(e.y[k], 1);
+    if (e.dim == 3) cell[2] = g->cell(e.z[k], 2);
+    ImGui::SameLine();
+    ImGui::Text(e.dim == 3 ? "in cell (%lld, %lld, %lld)" : "in cell (%lld, %lld)", static_cast<long long>(shown(cell[0], book)),
+                static_cast<long long>(shown(cell[1], book)), static_cast<long long>(shown(cell[2], book)));
+  }
+  // Next entries: what each next array says after k.
+  std::string nexts;
+  for (std::size_t a = 0; a < arrays.size(); ++a) {
+    if (!s.holds_elements(static_cast<int>(a)) || st.next_array_of(static_cast<int>(a)) >= 0) continue;
+    if (static_cast<std::int64_t>(st.state()[a].size()) != e.size()) continue;
+    nexts += (nexts.empty() ? "" : ",  ") + entry_name(arrays[a], k, book) + " = " +
+             std::to_string(shown_value(s, static_cast<int>(a), st.state()[a][static_cast<std::size_t>(k)]));
+  }
+  if (!nexts.empty()) ImGui::Text("next: %s", nexts.c_str());
+  // The lists of its row, layer and cell as they stand now.
+  const std::int32_t keys[4][3] = {{cell[0], cell[1], cell[2]}, {-1, cell[1], cell[2]}, {-1, -1, cell[2]}, {-1, cell[1], -1}};
+  for (const auto& key : keys) {
+    if (key[0] == -1 && key[1] == -1 && key[2] == -1) continue;
+    const auto list = s.list_of_cell(key);
+    if (!list) continue;
+    const std::vector<std::int32_t> members = st.list_members(list->heads, list->list);
+    if (std::find(members.begin(), members.end(), k) == members.end()) continue;
+    std::string chain = std::string(list->kind) + " " + entry_name(arrays[list->heads], list->list, book) + ": ";
+    for (std::size_t i = 0; i < members.size() && i < 12; ++i) {
+      const std::string id = std::to_string(shown(members[i], book));
+      chain += (members[i] == k ? "[" + id + "]" : id) + " -> ";
+    }
+    chain += members.size() > 12 ? "..." : "-1";
+    ImGui::TextWrapped("%s", chain.c_str());
+  }
+  const auto& tests = s.tests_of(k);
+  ImGui::Text("tested against (%zu):", tests.size());
+  for (std::size_t i = 0; i < tests.size() && i < 24; ++i) {
+    const auto& t = tests[i];
+    const bool done = t.event < st.position();
+    const std::string label = std::to_string(shown(t.other, book)) + (t.contact ? " contact" : " no") + "##t" + std::to_string(i);
+    ImGui::SameLine();
+    if (ImGui::GetContentRegionAvail().x < 90) ImGui::NewLine();
+    ImGui::PushStyleColor(ImGuiCol_Button, t.contact ? ImVec4(0.2f, 0.55f, 0.3f, done ? 1.0f : 0.4f)
+                                                     : ImVec4(0.35f, 0.35f, 0.4f, done ? 1.0f : 0.4f));
+    if (ImGui::SmallButton(label.c_str())) {
+      st.pause();
+      st.seek(t.event + 1);
+    }
+    ImGui::PopStyleColor();
+  }
+  if (tests.size() > 24) ImGui::TextDisabled("... %zu more", tests.size() - 24);
+}
+
+class ArraysPanel final : public Panel {
+ public:
+  explicit ArraysPanel(std::shared_ptr<StepperSession> session) : session_(std::move(session)) {}
+  [[nodiscard]] const char* title() const override { return kArraysTitle; }
+  [[nodiscard]] PanelPlace place() const override { return PanelPlace::Floating; }
+  [[nodiscard]] bool open_by_default() const override { return false; }
+  [[nodiscard]] float width() const override { return 560.0f; }
+
+  void draw(UiContext& c) override {
+    anchor_.apply(0.5f, 1.0f, ImGui::GetFrameHeight() + 4.0f);
+    StepperSession& s = *session_;
+    s.update(c.sim, ImGui::GetIO().DeltaTime, ImGui::GetFrameCount());
+    if (!s.has_capture()) {
+      ImGui::TextDisabled("nothing recorded: open the Stepper and pause");
+      return;
+    }
+    ImGui::Checkbox("book numbering (1-based)", &s.book_numbering);
+    ImGui::SameLine();
+    int shown_focus = static_cast<int>(shown(s.focus_element, s.book_numbering));
+    ImGui::SetNextItemWidth(90);
+    if (ImGui::InputInt("element", &shown_focus)) {
+      const int k = s.book_numbering ? shown_focus - 1 : shown_focus;
+      s.focus_element = std::clamp<std::int32_t>(k, -1, static_cast<std::int32_t>(s.elements().size()) - 1);
+    }
+    const Stepper& st = s.stepper();
+    Marks marks;
+    marks.focus = s.focus_element;
+    marks.n = s.elements().size();
+    const auto& arrays = st.trace().arrays();
+    if (const auto w = st.last_write_event()) {
+      const TraceEvent& e = st.events()[*w];
+      marks.writes = e.writes;
+      marks.write_count = std::min<int>(e.write_count, 2);
+      std::string text = "just written: ";
+      for (int i = 0; i < marks.write_count; ++i) {
+        const ArrayWrite& a = e.writes[i];
+        text += (i > 0 ? ",  " : "") + entry_name(arrays[a.array], a.index, s.book_numbering) + " = " +
+                std::to_string(shown_value(s, a.array, a.new_value)) + " (was " +
+                std::to_string(shown_value(s, a.array, a.old_value)) + ")";
+      }
+      ImGui::TextColored(ImVec4(0.95f, 0.75f, 0.3f, 1.0f), "%s", text.c_str());
+    }
+    for (std::size_t a = 0; a < arrays.size(); ++a) {
+      ImGui::PushID(static_cast<int>(a));
+      if (arrays[a].shape.size() >= 2) {
+        draw_matrix_array(s, marks, static_cast<int>(a));
+      } else {
+        draw_row_array(s, marks, static_cast<int>(a));
+      }
+      ImGui::PopID();
+    }
+    if (s.focus_element >= 0 && s.focus_element < s.elements().size()) {
+      ImGui::Separator();
+      draw_element(s, s.focus_element);
+    }
+  }
+
+ private:
+  std::shared_ptr<StepperSession> session_;
+  WindowAnchor anchor_;
+};
+
+}  // namespace
+
+std::unique_ptr<Panel> make_arrays_panel(std::shared_ptr<StepperSession> session) {
+  return std::make_unique<ArraysPanel>(std::move(session));
+}
+
+}  // namespace nbscope::ui

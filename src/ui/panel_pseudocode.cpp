@@ -1,0 +1,108 @@
+// The Pseudocode panel: the recorded detector's loops written as the book writes them, the line of
+// the current operation highlighted, and the loop variables (k, ix, iy, iz, the list and its head,
+// the element k is tested against) shown live. Clicking a line runs to its next operation.
+#include <imgui.h>
+
+#include <string>
+
+#include "ui/panel_anchor.hpp"
+#include "ui/stepper_panels.hpp"
+
+namespace nbscope::ui {
+
+namespace {
+
+class PseudocodePanel final : public Panel {
+ public:
+  explicit PseudocodePanel(std::shared_ptr<StepperSession> session) : session_(std::move(session)) {}
+  [[nodiscard]] const char* title() const override { return kPseudocodeTitle; }
+  [[nodiscard]] PanelPlace place() const override { return PanelPlace::Floating; }
+  [[nodiscard]] bool open_by_default() const override { return false; }
+  [[nodiscard]] float width() const override { return 600.0f; }
+
+  void draw(UiContext& c) override {
+    anchor_.apply(0.5f, 0.0f, ImGui::GetFrameHeight() + 4.0f);
+    StepperSession& s = *session_;
+    s.update(c.sim, ImGui::GetIO().DeltaTime, ImGui::GetFrameCount());
+    if (!s.has_capture()) {
+      ImGui::TextDisabled("nothing recorded: open the Stepper and pause");
+      return;
+    }
+    Stepper& st = s.stepper();
+    const TraceEvent* e = st.current();
+    const auto& lines = s.pseudocode();
+    ImGui::TextDisabled("%s, %dD", s.algorithm().c_str(), s.elements().dim);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      const bool here = e != nullptr && e->line == i;
+      const std::string label = std::string(lines[i]) + "##line" + std::to_string(i);
+      if (here) ImGui::PushStyleColor(ImGuiCol_Header, ImVec4(0.75f, 0.55f, 0.15f, 0.85f));
+      if (ImGui::Selectable(label.c_str(), here)) run_to_line(st, i);
+      if (here) ImGui::PopStyleColor();
+    }
+    ImGui::Separator();
+    draw_variables(s);
+  }
+
+ private:
+  // The next operation of pseudocode line `line` after the current one (wrapping to the start).
+  static void run_to_line(Stepper& st, std::size_t line) {
+    st.pause();
+    const auto& ev = st.events();
+    for (std::size_t pass = 0; pass < 2; ++pass) {
+      const std::size_t from = pass == 0 ? st.position() : 0;
+      for (std::size_t i = from; i < ev.size(); ++i) {
+        if (ev[i].line == line) {
+          st.seek(i + 1);
+          return;
+        }
+      }
+    }
+  }
+
+  static void draw_variables(const StepperSession& s) {
+    const LoopVars v = s.stepper().loop_vars();
+    const bool book = s.book_numbering;
+    const auto& arrays = s.stepper().trace().arrays();
+    const auto var = [&](const char* name, std::int64_t value) {
+      ImGui::TextColored(ImVec4(0.55f, 0.6f, 0.7f, 1.0f), "%s", name);
+      ImGui::SameLine(0, 4);
+      if (value < 0) {
+        ImGui::TextDisabled("-");
+      } else {
+        ImGui::Text("%lld", static_cast<long long>(shown(value, book)));
+      }
+      ImGui::SameLine(0, 16);
+    };
+    if (*v.phase != '\0') {
+      ImGui::Text("%s", v.phase);
+      if (v.phase_index >= 0) {
+        ImGui::SameLine(0, 4);
+        ImGui::Text("%lld", static_cast<long long>(shown(v.phase_index, book)));
+      }
+      ImGui::SameLine(0, 16);
+    }
+    var("k =", v.k);
+    var("ix =", v.ix);
+    var("iy =", v.iy);
+    if (s.elements().dim == 3) var("iz =", v.iz);
+    var("tested against", v.j);
+    ImGui::NewLine();
+    if (v.heads_array >= 0 && static_cast<std::size_t>(v.heads_array) < arrays.size()) {
+      ImGui::Text("%s %s: head = %lld", v.list_kind, entry_name(arrays[v.heads_array], v.list, book).c_str(),
+                  static_cast<long long>(shown_value(s, v.heads_array, v.head)));
+    } else {
+      ImGui::TextDisabled("list: -");
+    }
+  }
+
+  std::shared_ptr<StepperSession> session_;
+  WindowAnchor anchor_;
+};
+
+}  // namespace
+
+std::unique_ptr<Panel> make_pseudocode_panel(std::shared_ptr<StepperSession> session) {
+  return std::make_unique<PseudocodePanel>(std::move(session));
+}
+
+}  // namespace nbscope::ui

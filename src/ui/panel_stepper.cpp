@@ -1,0 +1,258 @@
+// The Stepper panel: walk the paused frame's detection one book operation at a time — step (→/←),
+// jump by phase (Shift+→/←, or the phase list), scrub over the whole sequence, play at a chosen
+// speed (Space), and run to a breakpoint (an element, a cell, a list, the first pair of an element).
+#include <imgui.h>
+
+#include <cstdio>
+#include <string>
+
+#include "ui/stepper_panels.hpp"
+
+namespace nbscope::ui {
+
+namespace {
+
+// An index input in the session's numbering (book: 1-based); -1 stays -1.
+bool input_index(const char* label, std::int32_t& value, bool book) {
+  int shown_value = static_cast<int>(shown(value, book));
+  ImGui::SetNextItemWidth(90);
+  if (!ImGui::InputInt(label, &shown_value)) return false;
+  value = book ? (shown_value >= 1 ? shown_value - 1 : -1) : std::max(shown_value, -1);
+  return true;
+}
+
+const char* const kKindNames[] = {"element", "cell", "list", "first pair of"};
+
+class StepperPanel final : public Panel {
+ public:
+  explicit StepperPanel(std::shared_ptr<StepperSession> session) : session_(std::move(session)) {}
+  [[nodiscard]] const char* title() const override { return kStepperTitle; }
+  [[nodiscard]] bool open_by_default() const override { return false; }
+  [[nodiscard]] float width() const override { return 250.0f; }
+
+  void draw(UiContext& c) override {
+    StepperSession& s = *session_;
+    s.update(c.sim, ImGui::GetIO().DeltaTime, ImGui::GetFrameCount());
+    if (c.state.selected != last_selected_) {
+      // A click on an element in the scene aims the breakpoint and the arrays filter at it.
+      last_selected_ = c.state.selected;
+      if (last_selected_ >= 0) {
+        s.breakpoint.element = last_selected_;
+        s.focus_element = last_selected_;
+      }
+    }
+    if (!s.has_capture()) {
+      draw_idle(c);
+      return;
+    }
+    if (!s.current_for(c.sim)) {
+      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "showing frame %lld (now %lld)",
+                         static_cast<long long>(s.frame()), static_cast<long long>(c.sim.frame));
+      if (ImGui::Button("Record this frame")) s.capture(c.sim);
+    }
+    Stepper& st = s.stepper();
+    ImGui::Text("%s, frame %lld: %zu events", s.algorithm().c_str(), static_cast<long long>(s.frame()), st.size());
+    draw_transport(st);
+    draw_phases(s);
+    ImGui::Separator();
+    if (const TraceEvent* e = st.current()) {
+      ImGui::TextWrapped("%s", describe_event(s, *e).c_str());
+    } else {
+      ImGui::TextDisabled("before the first operation");
+    }
+    ImGui::Separator();
+    draw_breakpoint(s);
+  }
+
+  void draw_scene(const UiContext& c, render::DrawSink& sink) override {
+    // The scene may be drawn before the view of this frame is filled in: then trust the last update.
+    const bool current = c.sim.elements != nullptr ? session_->current_for(c.sim) : session_->was_current();
+    if (current) draw_stepper_scene(*session_, sink);
+  }
+
+  bool handle_keys(UiContext&) override {
+    if (!session_->has_capture()) return false;
+    Stepper& st = session_->stepper();
+    const bool shift = ImGui::GetIO().KeyShift;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow), true)) {
+      st.pause();
+      shift ? st.next_phase() : st.step_forward();
+      return true;
+    }
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow), true)) {
+      st.pause();
+      shift ? st.prev_phase() : st.step_back();
+      return true;
+    }
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) {
+      st.playing() ? st.pause() : st.play();
+      return true;
+    }
+    return false;
+  }
+
+ private:
+  void draw_idle(UiContext& c) {
+    const StepperSession& s = *session_;
+    if (!s.message().empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
+      ImGui::TextWrapped("%s", s.message().c_str());
+      ImGui::PopStyleColor();
+    }
+    if (!c.sim.paused) {
+      ImGui::TextWrapped("Pause the simulation (P) to step through this frame's detection.");
+      if (ImGui::Button("Pause and step")) c.requests.toggle_pause = true;
+    }
+  }
+
+  void draw_transport(Stepper& st) {
+    const ImVec2 b(30, 0);
+    if (ImGui::Button("|<", b)) st.seek(0);
+    ImGui::SameLine();
+    if (ImGui::Button("<<", b)) st.prev_phase();
+    ImGui::SameLine();
+    if (ImGui::Button("<", b)) st.step_back();
+    ImGui::SameLine();
+    if (ImGui::Button(">", b)) st.step_forward();
+    ImGui::SameLine();
+    if (ImGui::Button(">>", b)) st.next_phase();
+    ImGui::SameLine();
+    if (ImGui::Button(">|", b)) st.seek(st.size());
+    ImGui::SameLine();
+    if (ImGui::Button(st.playing() ? "Pause" : "Play", ImVec2(-1, 0))) st.playing() ? st.pause() : st.play();
+
+    std::uint64_t pos = st.position();
+    const std::uint64_t lo = 0, hi = st.size();
+    char label[48];
+    std::snprintf(label, sizeof label, "%llu / %llu", static_cast<unsigned long long>(pos),
+                  static_cast<unsigned long long>(hi));
+    ImGui::SetNextItemWidth(-1);
+    if (ImGui::SliderScalar("##scrub", ImGuiDataType_U64, &pos, &lo, &hi, label)) {
+      st.pause();
+      st.seek(pos);
+    }
+    float speed = static_cast<float>(st.speed());
+    ImGui::SetNextItemWidth(150);
+    if (ImGui::SliderFloat("events/s", &speed, 0.5f, 5000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
+      st.set_speed(speed);
+  }
+
+  void draw_phases(StepperSession& s) {
+    Stepper& st = s.stepper();
+    const auto& phases = st.phases();
+    const auto phase_name = [&](std::size_t i) {
+      std::string name = phases[i].label;
+      if (phases[i].index >= 0) name += " " + std::to_string(shown(phases[i].index, s.book_numbering));
+      return name;
+    };
+    const std::int64_t cur = st.current_phase();
+    const std::string preview = cur >= 0 ? phase_name(static_cast<std::size_t>(cur)) : std::string("(start)");
+    ImGui::SetNextItemWidth(-1);
+    if (ImGui::BeginCombo("##phase", preview.c_str())) {
+      ImGuiListClipper clipper;
+      clipper.Begin(static_cast<int>(phases.size()));
+      while (clipper.Step()) {
+        for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+          const std::string name = phase_name(static_cast<std::size_t>(i)) + "##" + std::to_string(i);
+          if (ImGui::Selectable(name.c_str(), i == cur)) {
+            st.pause();
+            st.seek_phase(static_cast<std::size_t>(i));
+          }
+        }
+      }
+      ImGui::EndCombo();
+    }
+  }
+
+  void draw_breakpoint(StepperSession& s) {
+    Breakpoint& b = s.breakpoint;
+    const bool book = s.book_numbering;
+    int kind = static_cast<int>(b.kind);
+    ImGui::SetNextItemWidth(110);
+    if (ImGui::Combo("break at", &kind, kKindNames, IM_ARRAYSIZE(kKindNames))) b.kind = static_cast<BreakKind>(kind);
+    const auto& arrays = s.stepper().trace().arrays();
+    switch (b.kind) {
+      case BreakKind::Element:
+      case BreakKind::FirstPairOf:
+        input_index("element", b.element, book);
+        break;
+      case BreakKind::Cell: {
+        const bool three_d = s.elements().dim == 3;
+        input_index("ix", b.cell[0], book);
+        input_index("iy", b.cell[1], book);
+        if (three_d) {
+          input_index("iz", b.cell[2], book);
+        } else {
+          b.cell[2] = -1;
+        }
+        break;
+      }
+      case BreakKind::List: {
+        // The heads arrays (those some push links through a next array), then the list's indices.
+        std::string preview = b.array >= 0 && static_cast<std::size_t>(b.array) < arrays.size() ? arrays[b.array].name : "-";
+        ImGui::SetNextItemWidth(90);
+        if (ImGui::BeginCombo("heads", preview.c_str())) {
+          for (std::size_t a = 0; a < arrays.size(); ++a) {
+            if (s.stepper().next_array_of(static_cast<int>(a)) < 0) continue;
+            if (ImGui::Selectable(arrays[a].name.c_str(), static_cast<int>(a) == b.array)) {
+              b.array = static_cast<int>(a);
+              list_index_ = {0, 0, 0};
+            }
+          }
+          ImGui::EndCombo();
+        }
+        if (b.array >= 0 && static_cast<std::size_t>(b.array) < arrays.size()) {
+          const TracedArray& a = arrays[b.array];
+          std::int64_t flat = 0;
+          for (std::size_t d = 0; d < a.shape.size() && d < 3; ++d) {
+            const std::string label = "[" + std::to_string(d) + "]";
+            input_index(label.c_str(), list_index_[d], book);
+            list_index_[d] = std::clamp<std::int32_t>(list_index_[d], 0, static_cast<std::int32_t>(a.shape[d]) - 1);
+            flat = flat * a.shape[d] + list_index_[d];
+          }
+          b.list = flat;
+          ImGui::TextDisabled("list %s", entry_name(a, flat, book).c_str());
+        }
+        break;
+      }
+    }
+    Stepper& st = s.stepper();
+    if (ImGui::Button("<< run back")) {
+      st.pause();
+      s.status = st.run_back_to(b) ? "" : "no earlier event for this breakpoint";
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("run to >>")) {
+      st.pause();
+      s.status = st.run_to(b) ? "" : "no later event for this breakpoint";
+    }
+    ImGui::Checkbox("stop playback there", &s.break_while_playing);
+    st.set_play_breakpoint(s.break_while_playing ? std::optional<Breakpoint>(b) : std::nullopt);
+    if (!s.status.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", s.status.c_str());
+    ImGui::TextDisabled("->/<- step, Shift: phase, Space: play");
+  }
+
+  std::shared_ptr<StepperSession> session_;
+  ElementId last_selected_ = -1;
+  std::array<std::int32_t, 3> list_index_{0, 0, 0};
+};
+
+}  // namespace
+
+std::unique_ptr<Panel> make_stepper_panel(std::shared_ptr<StepperSession> session) {
+  return std::make_unique<StepperPanel>(std::move(session));
+}
+
+std::shared_ptr<StepperSession> add_stepper_panels(UiHost& host, StepperConfig config) {
+  auto session = std::make_shared<StepperSession>(config);
+  host.add_panel(make_stepper_panel(session));
+  host.add_panel(make_pseudocode_panel(session));
+  host.add_panel(make_arrays_panel(session));
+  return session;
+}
+
+void open_stepper_panels(UiState& state) {
+  for (const char* title : {kStepperTitle, kArraysTitle, kPseudocodeTitle}) state.panel_open[title] = true;
+}
+
+}  // namespace nbscope::ui

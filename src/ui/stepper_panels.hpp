@@ -1,0 +1,31 @@
+// nbscope ui: the step-through panels — Stepper (walk the paused frame's detection one book
+// operation at a time), Arrays (the heads and next arrays as the book's figures draw them) and
+// Pseudocode (the detector's loops with the current line and its loop variables) — and their scene
+// overlay (the current element, the list being built, the mask cell, the pair being tested).
+#pragma once
+#include <memory>
+
+#include "ui/host.hpp"
+#include "ui/stepper_session.hpp"
+
+namespace nbscope::ui {
+
+// Panel titles (also their keys in the settings file and UiState::panel_open).
+inline constexpr const char* kStepperTitle = "Stepper";
+inline constexpr const char* kArraysTitle = "Arrays";
+inline constexpr const char* kPseudocodeTitle = "Pseudocode";
+
+// Adds the three panels, sharing one session, to `host`; returns the session (the app configures
+// nothing else: `config.step` makes a headless run show the state after that many events).
+std::shared_ptr<StepperSession> add_stepper_panels(UiHost& host, StepperConfig config = {});
+// Opens the three panels in `state` (headless --step shows them whatever the settings say).
+void open_stepper_panels(UiState& state);
+
+// The panels, one file each.
+std::unique_ptr<Panel> make_stepper_panel(std::shared_ptr<StepperSession> session);
+std::unique_ptr<Panel> make_arrays_panel(std::shared_ptr<StepperSession> session);
+std::unique_ptr<Panel> make_pseudocode_panel(std::shared_ptr<StepperSession> session);
+// Draws the session's current event into the scene (used by the Stepper panel).
+void draw_stepper_scene(const StepperSession& session, render::DrawSink& sink);
+
+}  // namespace nbscope::ui

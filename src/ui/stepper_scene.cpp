@@ -1,0 +1,118 @@
+// The stepper's scene overlay: the current operation drawn over the bodies — the element it is
+// about ringed, the list being built (or walked) as an arrow chain growing arrow by arrow, the cell
+// (or row) it works on outlined, and the pair being tested as a segment coloured by its result.
+#include <string>
+
+#include "ui/stepper_panels.hpp"
+
+namespace nbscope::ui {
+
+namespace {
+
+using render::Layer;
+using render::Rgba;
+using render::Vec2;
+namespace palette = render::palette;
+
+const Rgba kNoContact{200, 200, 210, 230};
+
+class SceneWriter {
+ public:
+  SceneWriter(const StepperSession& s, render::DrawSink& sink) : s_(s), sink_(sink), e_(s.elements()) {}
+
+  Vec2 centre(std::int32_t k) const { return {static_cast<float>(e_.x[k]), static_cast<float>(e_.y[k])}; }
+  bool valid(std::int32_t k) const { return k >= 0 && k < e_.size(); }
+
+  // A ring around element k and its id beside it.
+  void ring(std::int32_t k, Rgba colour, float width_px) {
+    if (!valid(k)) return;
+    sink_.circle(Layer::Top, centre(k), static_cast<float>(e_.r[k]) * 1.15f, colour.with_alpha(40), colour, width_px, 7.0f);
+    const float r = static_cast<float>(e_.r[k]);
+    sink_.text(centre(k) + Vec2(0, r * 1.6f), std::to_string(shown(k, s_.book_numbering)), colour);
+  }
+
+  // Outlines a cell; an axis given as -1 spans the whole grid (a row, a layer).
+  void cell(const std::int32_t c[3], Rgba fill, Rgba edge) {
+    const Grid* g = s_.grid();
+    if (g == nullptr || (c[0] < 0 && c[1] < 0)) return;
+    const double d = g->cell_size;
+    const auto lo = [&](int a) { return c[a] >= 0 ? g->origin[a] + c[a] * d : g->origin[a]; };
+    const auto hi = [&](int a) { return c[a] >= 0 ? g->origin[a] + (c[a] + 1) * d : g->origin[a] + static_cast<double>(g->n[a]) * d; };
+    const Vec2 a(static_cast<float>(lo(0)), static_cast<float>(lo(1)));
+    const Vec2 b(static_cast<float>(hi(0)), static_cast<float>(hi(1)));
+    sink_.rect(Layer::Overlay, a, b, fill);
+    const Vec2 corners[4] = {a, {b.x(), a.y()}, b, {a.x(), b.y()}};
+    for (int i = 0; i < 4; ++i) sink_.line(Layer::Top, corners[i], corners[(i + 1) % 4], edge, 2.0f);
+  }
+
+  // The list's chain as it stands now: head ringed, one arrow per next link, "-1" after the end.
+  void list(int heads, std::int64_t slot, Rgba colour) {
+    const std::vector<std::int32_t> members = s_.stepper().list_members(heads, slot);
+    if (members.empty()) return;
+    for (std::size_t i = 0; i + 1 < members.size(); ++i)
+      if (valid(members[i]) && valid(members[i + 1])) sink_.arrow(Layer::Top, centre(members[i]), centre(members[i + 1]), colour, 2.5f);
+    const std::int32_t head = members.front(), last = members.back();
+    if (valid(head)) sink_.circle(Layer::Top, centre(head), static_cast<float>(e_.r[head]) * 0.35f, colour, colour, 1.0f, 4.0f);
+    if (valid(last)) {
+      const float r = static_cast<float>(e_.r[last]);
+      sink_.text(centre(last) + Vec2(r * 1.9f, 0), "-1", colour);
+    }
+  }
+
+  static Rgba list_colour(const char* kind, int heads, std::int64_t slot, const StepperSession& s) {
+    const std::string k = kind;
+    if (k == "y-list" || k == "z-list") return palette::kYList;
+    // NBS B[1]: the lists of the row below.
+    const auto& arrays = s.stepper().trace().arrays();
+    if (heads >= 0 && arrays[heads].shape.size() == 2 && arrays[heads].name == "B" && slot >= arrays[heads].shape[1])
+      return palette::kXListBelow;
+    return palette::kXList;
+  }
+
+ private:
+  const StepperSession& s_;
+  render::DrawSink& sink_;
+  const Elements& e_;
+};
+
+}  // namespace
+
+void draw_stepper_scene(const StepperSession& s, render::DrawSink& sink) {
+  const Stepper& st = s.stepper();
+  const TraceEvent* e = st.current();
+  if (e == nullptr) return;
+  SceneWriter w(s, sink);
+  const LoopVars v = st.loop_vars();
+  const std::int32_t cell[3] = {v.ix, v.iy, v.iz};
+  switch (e->op) {
+    case TraceOp::Push:
+    case TraceOp::Clear: {
+      const Rgba colour = SceneWriter::list_colour(e->label, v.heads_array, v.list, s);
+      w.cell(cell, colour.with_alpha(35), colour);
+      w.list(v.heads_array, v.list, colour);
+      w.ring(e->element, palette::kSelection, 3.0f);
+      break;
+    }
+    case TraceOp::VisitCell:
+    case TraceOp::TestPair: {
+      w.cell(cell, palette::kMaskCell, palette::kMaskCentre.with_alpha(255));
+      if (const auto l = s.list_of_cell(cell)) w.list(l->heads, l->list, SceneWriter::list_colour(l->kind, l->heads, l->list, s));
+      w.ring(e->element, palette::kSelection, 3.0f);
+      if (e->op == TraceOp::TestPair && w.valid(e->other) && w.valid(e->element)) {
+        const Rgba colour = e->contact ? palette::kConfirmedPair : kNoContact;
+        sink.line(Layer::Top, w.centre(e->element), w.centre(e->other), colour, e->contact ? 4.0f : 2.0f);
+        w.ring(e->other, colour, 3.0f);
+        sink.text((w.centre(e->element) + w.centre(e->other)) * 0.5f, e->contact ? "contact" : "no contact", colour);
+      }
+      break;
+    }
+    case TraceOp::Phase:
+      w.cell(e->cell, palette::kSelectionCell, palette::kTextDim);
+      break;
+    default:
+      w.ring(e->element, palette::kSelection, 3.0f);
+      break;
+  }
+}
+
+}  // namespace nbscope::ui
