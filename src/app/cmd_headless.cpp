@@ -7,6 +7,7 @@
 #include "app/commands.hpp"
 #include "app/frame_loop.hpp"
 #include "app/headless.hpp"
+#include "app/headless_view.hpp"
 #include "core/error.hpp"
 
 namespace nbscope {
@@ -87,7 +88,8 @@ HeadlessOptions parse_headless_options(Args& args) {
   if (const auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);
   o.brute_limit = args.integer("--brute-limit", 0, 1'000'000).value_or(o.brute_limit);
   o.quiet = args.flag("--quiet");
-  // (Later flags of DESIGN.md "Command line" go here: --screenshot, --size, --step, --record, --gl.)
+  parse_view_options(args, true, o.view);
+  // (Later flags of DESIGN.md "Command line" go here: --step, --record.)
   args.finish();
   if (!scene) throw Error("headless: --scene FILE is required");
   o.scene = *scene;
@@ -101,6 +103,8 @@ int run_headless_loop(const HeadlessOptions& o) {
   lo.brute_limit = o.brute_limit;
   FrameLoop loop(lo);  // an unknown algorithm fails here, before the scene is read
   loop.load_scene_file(o.scene);
+  // The screenshot's context and shaders are set up first, so a bad --gl/--shader-dir/path fails at once.
+  std::unique_ptr<HeadlessView> view = o.view.screenshot ? make_headless_view(o.view, loop) : nullptr;
 
   RunReport run;
   run.scene_path = o.scene;
@@ -119,9 +123,11 @@ int run_headless_loop(const HeadlessOptions& o) {
     loop.step();
     run.frames.push_back(loop.report());
     all_ok = all_ok && loop.report().ok();
+    if (view) view->after_step(loop);
     progress.update(k + 1);
   }
   progress.finish();
+  if (view) std::fprintf(stderr, "nbscope: %s\n", view->write_screenshot(loop).c_str());
   if (o.report) write_run_report(*o.report, run);
   std::printf("%s\n", summary_of(o, loop, run).c_str());
   return all_ok ? 0 : 1;

@@ -14,4 +14,8 @@ int run_dump(Args& args);
 // `nbscope headless --scene F [--frames N] [--algorithm A] [--report F] [--inject-fault NAME]` (app/headless.hpp)
 int run_headless(Args& args);
 
+// `nbscope [gui] [--scene F] [--algorithm A] [--frames N --screenshot OUT.png] [--size WxH] ...`:
+// the window (app/cmd_gui.cpp); headless with a screenshot when there is no display.
+int run_gui(Args& args);
+
 }  // namespace nbscope

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/cli.hpp"
+#include "app/view_options.hpp"
 #include "check/faults.hpp"
 
 namespace nbscope {
@@ -19,6 +20,7 @@ struct HeadlessOptions {
   Fault fault = Fault::None;          // --inject-fault NAME
   std::int64_t brute_limit = 2000;    // --brute-limit N: R is brute force up to N elements
   bool quiet = false;                 // --quiet: no progress bar even on a terminal
+  ViewOptions view;                   // --screenshot, --size, --gl, --overlays, ... (app/view_options.hpp)
 };
 
 // Reads every headless flag from `args` and refuses leftovers; throws Error on bad values.

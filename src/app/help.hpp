@@ -8,6 +8,15 @@ inline constexpr const char* kVersion = "0.1.0";
 inline constexpr const char* kHelpText = R"(nbscope - a visual debugger for grid-based contact detection (Munjiza-NBS and its ancestors)
 
 usage:
+  nbscope [gui] [--scene FILE] [--algorithm NAME] [--inject-fault NAME] [--size WxH]
+                [--frames N --screenshot OUT.png] [--overlays SPEC] [--panels SPEC] [--select K]
+      The window (default scene assets/scenes/default.json): Box2D bodies, the cell grid, the
+      detector's lists, pairs and check results over them, ImGui panels. Keys: P play/pause,
+      O single step, R restart, Home fit, 1..9 algorithm, overlays B E G L M C K F I T H (see Help
+      in the menu bar). Mouse: left selects an element and drags its body, right-drag pans, wheel
+      zooms. Settings persist in $XDG_CONFIG_HOME/nbscope/settings.json (~/.config/...).
+      --frames N runs N frames, saves --screenshot and exits (no input, no settings: for tests
+      under xvfb-run). Without a display it renders headless and prints where the screenshot is.
   nbscope pairs --input ELEMENTS.csv [--algorithm NAME] [--output PAIRS.csv] [--repeat K]
                 [--cell-size D] [--origin X,Y[,Z]] [--max-pairs M]
       Contact pairs of the elements (rows x,y,r or x,y,z,r) as CSV "i,j" (0-based, i < j, sorted),
@@ -33,6 +42,16 @@ usage:
       writes per-frame counts, timings and every violation as JSON. Exit 1 if any check failed.
       --inject-fault drop-mask-cell | off-by-one-cell | stale-positions | drop-pair |
       drop-box2d-contact breaks the detection (or Box2D's side) on purpose, to see the checks catch it.
+      --screenshot OUT.png [--size WxH] [--gl osmesa|egl|auto] renders the last frame exactly as the
+      window shows it (scene, overlays, panels) off-screen with OSMesa (egl: not built here).
+  rendering flags (gui and headless):
+      --overlays SPEC   comma list: all, none, NAME (only the names listed), +NAME, -NAME; names:
+                        bodies elements grid lists mask pairs checks broadphase ids trails flash
+      --panels SPEC     the same for panels: controls scenes algorithm overlays stats selection metrics
+      --select K        select element K (its cell, lists and pairs highlighted, its trail drawn)
+      --camera X,Y,PPM  look at (X, Y) at PPM pixels per metre instead of fitting the scene
+      --no-timings      show "-" for wall-clock numbers (reproducible screenshots)
+      --shader-dir DIR  GLSL sources (default: the source tree's shaders/, or $NBSCOPE_SHADER_DIR)
   nbscope algorithms      list the detectors
   nbscope --help | --version
 

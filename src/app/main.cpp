@@ -37,14 +37,18 @@ int dispatch(const std::string& command, nbscope::Args& args) {
   if (command == "pairs") return nbscope::run_pairs(args);
   if (command == "dump") return nbscope::run_dump(args);
   if (command == "headless") return nbscope::run_headless(args);
+  if (command == "gui") return nbscope::run_gui(args);
   throw nbscope::Error(command + ": unknown command (see nbscope --help)");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> rest(argv + (argc > 1 ? 2 : 1), argv + argc);
-  const std::string command = argc > 1 ? argv[1] : "--help";
+  // `nbscope` alone, or with flags only (`nbscope --scene F`), is `nbscope gui`.
+  const bool implicit_gui = argc == 1 || (std::strncmp(argv[1], "--", 2) == 0 && std::strcmp(argv[1], "--help") != 0 &&
+                                          std::strcmp(argv[1], "--version") != 0);
+  std::vector<std::string> rest(argv + (implicit_gui ? 1 : 2), argv + argc);
+  const std::string command = implicit_gui ? "gui" : argv[1];
   nbscope::Args args(std::move(rest));
   try {
     nbscope::register_physics_detectors();  // "box2d" joins core's detectors

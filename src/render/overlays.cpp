@@ -129,7 +129,7 @@ void draw_ids(const Elements& e, const WorldRect& view, double ppm, DrawSink& si
 
 // ---- grid -------------------------------------------------------------------------------------
 
-void draw_grid(const OverlayScene& s, const WorldRect& view, double ppm, DrawSink& sink) {
+void draw_grid(const OverlayScene& s, const WorldRect& view, const WorldRect& free, double ppm, DrawSink& sink) {
   const Grid& g = *s.grid;
   const double d = g.cell_size;
   const double x0 = g.origin[0], y0 = g.origin[1];
@@ -178,8 +178,8 @@ void draw_grid(const OverlayScene& s, const WorldRect& view, double ppm, DrawSin
   char buf[96];
   std::snprintf(buf, sizeof buf, "%lld x %lld cells, d = %.3g", static_cast<long long>(g.n[0]),
                 static_cast<long long>(g.n[1]), d);
-  const double label_y = std::min(y1 + 12.0 / ppm, view.max.y() - 10.0 / ppm);
-  sink.text(v2(std::max(x0, view.min.x() + 4.0 / ppm) + 0.5 * std::strlen(buf) * 7.0 / ppm, label_y), buf,
+  const double label_y = std::min(y1 + 12.0 / ppm, free.max.y() - 10.0 / ppm);
+  sink.text(v2(std::max(x0, free.min.x() + 4.0 / ppm) + 0.5 * std::strlen(buf) * 7.0 / ppm, label_y), buf,
             palette::kTextDim);
   if (d * ppm >= 18.0) {
     for (std::int64_t ix = lo_x; ix < hi_x; ++ix) {
@@ -188,7 +188,8 @@ void draw_grid(const OverlayScene& s, const WorldRect& view, double ppm, DrawSin
     }
     for (std::int64_t iy = lo_y; iy < hi_y; ++iy) {
       std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(iy));
-      sink.text(v2(x0 - 10.0 / ppm, y0 + d * (double(iy) + 0.5)), buf, palette::kTextDim);
+      sink.text(v2(std::max(x0 - 10.0 / ppm, free.min.x() + 8.0 / ppm), y0 + d * (double(iy) + 0.5)), buf,
+                palette::kTextDim);
     }
   }
 }
@@ -204,11 +205,13 @@ Rgba list_colour(const TracedList& l) {
 // Where a list's head is drawn: rows at the left edge of the grid, cells in a corner of the cell
 // (top left for a row's own lists, bottom left for the copies of the row below); lists without a
 // cell (tree leaves) just above-left of their first element.
-Vec2 head_anchor(const TracedList& l, const Grid* grid, const Elements& e, double ppm) {
+Vec2 head_anchor(const TracedList& l, const Grid* grid, const Elements& e, const WorldRect& free, double ppm) {
   if (grid != nullptr) {
     const Grid& g = *grid;
     const double d = g.cell_size;
-    if (l.cell[0] < 0 && l.cell[1] >= 0) return v2(g.origin[0] - 0.45 * d, g.origin[1] + d * (l.cell[1] + 0.5));
+    // Row heads sit left of the grid, or at the left edge of the view when the grid's edge is out of it.
+    if (l.cell[0] < 0 && l.cell[1] >= 0)
+      return v2(std::max(g.origin[0] - 0.45 * d, free.min.x() + 22.0 / ppm), g.origin[1] + d * (l.cell[1] + 0.5));
     if (l.cell[0] >= 0 && l.cell[1] >= 0)
       return v2(g.origin[0] + d * (l.cell[0] + 0.12), g.origin[1] + d * (l.cell[1] + (l.secondary ? 0.12 : 0.88)));
   }
@@ -217,17 +220,18 @@ Vec2 head_anchor(const TracedList& l, const Grid* grid, const Elements& e, doubl
   return v2(e.x[k] - off, e.y[k] + off);
 }
 
-void draw_lists(const OverlayScene& s, const WorldRect& view, double ppm, DrawSink& sink) {
+void draw_lists(const OverlayScene& s, const WorldRect& view, const WorldRect& free, double ppm, DrawSink& sink) {
   const Elements& e = *s.elements;
   const auto n = static_cast<ElementId>(e.size());
   for (const TracedList& l : *s.lists) {
     if (l.chain.empty()) continue;
     if (l.secondary && (!s.focus_row || l.phase_index != *s.focus_row)) continue;
     const bool selected = s.selected >= 0 && std::find(l.chain.begin(), l.chain.end(), s.selected) != l.chain.end();
-    const Rgba colour = list_colour(l);
+    // With a selection, the other lists step back so the selected element's lists read clearly.
+    const Rgba colour = s.selected >= 0 && !selected ? list_colour(l).with_alpha(55) : list_colour(l);
     const float width = selected ? 3.0f : 1.5f;
     // Lists of different kinds between the same two elements run side by side, a few pixels apart.
-    const float side = static_cast<float>((colour == palette::kYList ? 2.5 : -2.5) / ppm);
+    const float side = static_cast<float>((l.kind == "y-list" || l.kind == "z-list" ? 2.5 : -2.5) / ppm);
     auto link = [&](Vec2 a, float ra, Vec2 b, float rb) {
       const Vec2 ab = b - a;
       const float len = ab.norm();
@@ -239,7 +243,7 @@ void draw_lists(const OverlayScene& s, const WorldRect& view, double ppm, DrawSi
     };
     if (std::any_of(l.chain.begin(), l.chain.end(), [n](ElementId k) { return k < 0 || k >= n; })) continue;
     // The head: a small square, then an arrow to the first element.
-    Vec2 prev = head_anchor(l, s.grid, e, ppm);
+    Vec2 prev = head_anchor(l, s.grid, e, free, ppm);
     float prev_r = 0;
     sink.rect(Layer::Overlay, prev - Vec2::Constant(float(3.0 / ppm)), prev + Vec2::Constant(float(3.0 / ppm)), colour);
     for (const ElementId k : l.chain) {
@@ -344,8 +348,11 @@ void draw_flashes(const Elements& e, std::span<const std::pair<ElementId, float>
 void draw_scene(const OverlayScene& s, const OverlayFlags& f, const Camera& camera, DrawSink& sink) {
   const WorldRect view = camera.view();
   const double ppm = camera.pixels_per_metre();
+  WorldRect free = view;  // the part of the view no panel covers
+  free.min.x() += s.left_inset_px / ppm;
+  free.max.y() -= s.top_inset_px / ppm;
   const bool have_elements = s.elements != nullptr;
-  if (f.grid && s.grid != nullptr && s.grid->dim == 2) draw_grid(s, view, ppm, sink);
+  if (f.grid && s.grid != nullptr && s.grid->dim == 2) draw_grid(s, view, free, ppm, sink);
   if (f.mask && s.grid != nullptr && s.hovered_cell) draw_mask(*s.grid, *s.hovered_cell, sink);
   if (f.bodies) draw_bodies(s, view, sink);
   if (!have_elements) return;
@@ -358,7 +365,7 @@ void draw_scene(const OverlayScene& s, const OverlayFlags& f, const Camera& came
   if (f.pairs && s.pairs != nullptr) draw_pair_list(e, *s.pairs, view, palette::kPair, 1.5f, Layer::Overlay, sink);
   if (f.checks && s.checks != nullptr)
     draw_pair_list(e, s.checks->confirmed, view, palette::kConfirmedPair, 1.5f, Layer::Overlay, sink);
-  if (f.lists && s.lists != nullptr) draw_lists(s, view, ppm, sink);
+  if (f.lists && s.lists != nullptr) draw_lists(s, view, free, ppm, sink);
   draw_selection(s, view, sink);
   if (f.checks && s.checks != nullptr) draw_violations(e, s.checks->violations, sink);
   if (f.ids || f.lists) draw_ids(e, view, ppm, sink);

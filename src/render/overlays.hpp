@@ -83,6 +83,8 @@ struct OverlayScene {
   std::span<const std::vector<Vec2>> trails;
   std::span<const std::pair<ElementId, float>> flashes;  // element, strength in (0, 1]
   std::optional<std::array<Vec2, 2>> drag;               // body anchor -> mouse while dragging
+  float left_inset_px = 0;  // pixels at the left of the view covered by panels: labels and heads avoid them
+  float top_inset_px = 0;   // the same at the top (the menu bar)
 };
 
 // Draws the scene and every overlay `flags` turns on, seen through `camera`.

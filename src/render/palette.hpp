@@ -25,8 +25,8 @@ inline constexpr Rgba kKinematicOutline{170, 220, 180};
 inline constexpr Rgba kBoundingCircle{220, 220, 220, 70};
 inline constexpr Rgba kGridLine{120, 130, 150, 90};
 inline constexpr Rgba kGridBorder{160, 170, 190, 200};
-inline constexpr Rgba kCellShadeLow{60, 90, 140, 60};    // occupancy 1
-inline constexpr Rgba kCellShadeHigh{250, 190, 60, 150};  // occupancy >= kCellShadeSaturation
+inline constexpr Rgba kCellShadeLow{70, 100, 150, 55};   // occupancy 1
+inline constexpr Rgba kCellShadeHigh{235, 175, 70, 95};   // occupancy >= kCellShadeSaturation
 inline constexpr int kCellShadeSaturation = 6;
 inline constexpr Rgba kMaskCell{80, 220, 200, 70};
 inline constexpr Rgba kMaskCentre{80, 220, 200, 130};

@@ -23,6 +23,15 @@ class OverlaysPanel final : public Panel {
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", o.help);
     }
     ImGui::EndTable();
+    if (c.state.overlays.lists) {
+      // The list colours (render/palette.hpp), so arrows can be read without the manual.
+      auto swatch = [](render::Rgba col, const char* text) {
+        ImGui::TextColored(ImVec4(col.r / 255.0f, col.g / 255.0f, col.b / 255.0f, 1.0f), "%s", text);
+      };
+      swatch(render::palette::kYList, "-> y-lists of rows (Y)");
+      swatch(render::palette::kXList, "-> x-lists, cells, leaves, runs");
+      swatch(render::palette::kXListBelow, "-> x-lists of row below (B[1])");
+    }
   }
 };
 

@@ -77,7 +77,10 @@ class StatsPanel final : public Panel {
       ImGui::TextDisabled("timings hidden (--no-timings)");
       return;
     }
-    ImGui::Text("%.1f FPS   frame %s ms", s.fps, format_ms(s, s.timings.frame_ms).c_str());
+    if (s.fps > 0)
+      ImGui::Text("%.1f FPS   frame %s ms", s.fps, format_ms(s, s.timings.frame_ms).c_str());
+    else
+      ImGui::TextUnformatted("off-screen frame (no FPS)");
     if (ImGui::BeginTable("split", 2)) {
       const std::pair<const char*, double> rows[] = {
           {"physics", s.timings.physics_ms}, {"detection", s.timings.detect_ms}, {"check", s.timings.check_ms},

@@ -1,0 +1,244 @@
+// `nbscope [gui]`: the window on the frame loop. With --frames N it runs N frames, saves
+// --screenshot and exits (scripted: no input, no settings file, one step per frame), so the window
+// itself can be tested under xvfb-run. Without a display it renders the same frames headless and
+// says where the screenshot went.
+//
+// Index: options | headless fallback | applying the panels' requests | the window loop | run_gui.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "app/commands.hpp"
+#include "app/frame_loop.hpp"
+#include "app/gl_view.hpp"
+#include "app/headless_view.hpp"
+#include "app/view_options.hpp"
+#include "check/faults.hpp"
+#include "core/error.hpp"
+#include "render/gl_window.hpp"
+#include "ui/settings.hpp"
+
+namespace nbscope {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// ---- options ----------------------------------------------------------------------------------
+
+struct GuiOptions {
+  std::optional<std::string> scene;
+  std::optional<std::string> algorithm;
+  Fault fault = Fault::None;
+  std::optional<std::int64_t> frames;
+  ViewOptions view;
+};
+
+GuiOptions parse_gui_options(Args& args) {
+  GuiOptions o;
+  o.scene = args.value("--scene");
+  o.algorithm = args.value("--algorithm");
+  if (auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);
+  if (auto n = args.integer("--frames", 0, 100'000'000)) o.frames = *n;
+  parse_view_options(args, false, o.view);
+  if (auto p = args.positional()) throw Error(*p + ": unexpected argument (the scene goes after --scene)");
+  args.finish();
+  if (o.view.screenshot && !o.frames) throw Error("--screenshot: needs --frames N (how many frames to run first)");
+  if (o.view.screenshot) check_screenshot_path(*o.view.screenshot);
+  return o;
+}
+
+bool have_display() {
+  const char* x = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (x != nullptr && *x != '\0') || (wayland != nullptr && *wayland != '\0');
+}
+
+// ---- headless fallback ------------------------------------------------------------------------
+
+int run_without_display(GuiOptions o, FrameLoop& loop) {
+  if (!o.view.screenshot) {
+    const char* tmp = std::getenv("TMPDIR");
+    const std::string dir = tmp != nullptr && *tmp != '\0' ? tmp : "/tmp";
+    o.view.screenshot = dir + "/nbscope-" + (loop.scene().name.empty() ? "scene" : loop.scene().name) + ".png";
+  }
+  const std::int64_t frames = o.frames.value_or(120);
+  std::fprintf(stderr, "nbscope: no display: rendering %lld frames headless instead\n", static_cast<long long>(frames));
+  auto view = make_headless_view(o.view, loop);
+  bool failed = loop.report().checked && !loop.report().ok();
+  for (std::int64_t i = 0; i < frames; ++i) {
+    loop.step();
+    view->after_step(loop);
+    failed = failed || (loop.report().checked && !loop.report().ok());
+  }
+  const std::string summary = view->write_screenshot(loop);
+  std::fprintf(stderr, "nbscope: %s\n", summary.c_str());
+  std::printf("screenshot: %s\n", std::filesystem::absolute(*o.view.screenshot).c_str());
+  return failed ? 1 : 0;
+}
+
+// ---- applying the panels' requests ------------------------------------------------------------
+
+void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Session& session) {
+  auto attempt = [&](auto&& action) {
+    try {
+      action();
+      session.error.clear();
+    } catch (const Error& e) {
+      session.error = e.what();
+    }
+  };
+  if (r.toggle_pause) session.paused = !session.paused;
+  if (r.speed) session.speed = *r.speed;
+  if (r.algorithm) attempt([&] { loop.set_algorithm(*r.algorithm); });
+  if (r.scene) {
+    attempt([&] {
+      loop.load_scene_file(*r.scene);
+      session.scene_path = *r.scene;
+      view.on_scene_loaded(loop);
+    });
+  }
+  if (r.time_step) {
+    // The time step is part of the scene: the scene restarts with the new one.
+    attempt([&] {
+      Scene s = loop.scene();
+      s.time_step = *r.time_step;
+      loop.load_scene(s);
+      view.on_scene_loaded(loop, false);
+    });
+  }
+  if (r.restart) {
+    attempt([&] { loop.restart(); });
+    view.on_scene_loaded(loop, false);
+  }
+  if (r.step_once) {
+    session.paused = true;
+    attempt([&] { loop.step(); });
+    view.after_step(loop);
+  }
+  if (r.drag_begin) loop.begin_drag(r.drag_begin->x(), r.drag_begin->y());
+  if (r.drag_to) loop.drag_to(r.drag_to->x(), r.drag_to->y());
+  if (r.drag_end) loop.end_drag();
+}
+
+// ---- the window loop --------------------------------------------------------------------------
+
+int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Settings* settings) {
+  render::GlfwWindow window(o.view.width, o.view.height, "nbscope - " + loop.scene().name);
+  const bool scripted = o.frames.has_value();
+  window.set_vsync(!scripted);
+  GlView view(window, window.handle(), o.view);
+  if (settings != nullptr) {
+    if (o.view.overlays.empty()) view.state().overlays = settings->overlays;
+    if (o.view.panels.empty()) view.state().panel_open = settings->panels;
+    session.speed = settings->speed;
+  }
+  view.on_scene_loaded(loop);
+  if (settings != nullptr && settings->camera && settings->last_scene == session.scene_path)
+    view.camera().set({(*settings->camera)[0], (*settings->camera)[1]}, (*settings->camera)[2]);
+
+  bool failed = false;
+  double owed_steps = 0;
+  auto last = Clock::now();
+  double fps_window_start = window.time();
+  int fps_frames = 0;
+  for (std::int64_t rendered = 0; !window.should_close(); ++rendered) {
+    window.poll_events();
+    const auto now = Clock::now();
+    session.frame_ms = std::chrono::duration<double, std::milli>(now - last).count();
+    last = now;
+    if (scripted) {
+      if (rendered > 0) {
+        loop.step();
+        view.after_step(loop);
+      }
+    } else if (!session.paused) {
+      owed_steps += session.speed;
+      for (; owed_steps >= 1.0; owed_steps -= 1.0) {
+        try {
+          loop.step();
+        } catch (const Error& e) {
+          session.error = e.what();
+          session.paused = true;
+          owed_steps = 0;
+          break;
+        }
+        view.after_step(loop);
+      }
+    }
+    failed = failed || (loop.report().checked && !loop.report().ok());
+    const ui::UiRequests requests = view.frame(loop, session, !scripted, static_cast<float>(session.frame_ms / 1000.0));
+    if (scripted && rendered >= *o.frames) {
+      if (o.view.screenshot) {
+        write_png(*o.view.screenshot, view.screenshot());
+        std::fprintf(stderr, "nbscope: screenshot %s after %lld frames\n", o.view.screenshot->c_str(),
+                     static_cast<long long>(loop.frame()));
+      }
+      break;
+    }
+    if (!scripted) apply_requests(requests, loop, view, session);
+    window.present();
+    ++fps_frames;
+    if (window.time() - fps_window_start >= 0.5) {
+      session.fps = fps_frames / (window.time() - fps_window_start);
+      fps_window_start = window.time();
+      fps_frames = 0;
+    }
+  }
+  if (settings != nullptr) {
+    settings->overlays = view.state().overlays;
+    settings->panels = view.state().panel_open;
+    settings->last_scene = session.scene_path;
+    settings->algorithm = loop.algorithm();
+    settings->camera = std::array<double, 3>{view.camera().centre().x(), view.camera().centre().y(),
+                                             view.camera().pixels_per_metre()};
+    settings->speed = session.speed;
+  }
+  return failed ? 1 : 0;
+}
+
+}  // namespace
+
+// ---- run_gui ----------------------------------------------------------------------------------
+
+int run_gui(Args& args) {
+  const GuiOptions o = parse_gui_options(args);
+  const bool scripted = o.frames.has_value();
+  // Settings only for interactive sessions: scripted runs must give the same picture everywhere.
+  std::optional<ui::Settings> settings;
+  const std::string settings_file = ui::settings_path();
+  if (!scripted && have_display()) {
+    std::string warning;
+    settings = ui::load_settings(settings_file, warning);
+    if (!warning.empty()) std::fprintf(stderr, "nbscope: warning: %s\n", warning.c_str());
+  }
+
+  FrameLoopOptions loop_options;
+  loop_options.fault = o.fault;
+  if (o.algorithm) loop_options.algorithm = *o.algorithm;
+  else if (settings && settings->algorithm) loop_options.algorithm = *settings->algorithm;
+  FrameLoop loop(loop_options);
+  std::string scene = o.scene.value_or("");
+  if (scene.empty() && settings && settings->last_scene && std::filesystem::is_regular_file(*settings->last_scene))
+    scene = *settings->last_scene;
+  if (scene.empty()) scene = default_scene_path();
+  loop.load_scene_file(scene);
+
+  if (!have_display()) return run_without_display(o, loop);
+
+  Session session;
+  session.scene_path = scene;
+  session.scene_files = bundled_scene_files();
+  const int code = run_window(o, loop, session, settings ? &*settings : nullptr);
+  if (settings) {
+    try {
+      ui::save_settings(settings_file, *settings);
+    } catch (const Error& e) {
+      std::fprintf(stderr, "nbscope: warning: %s\n", e.what());
+    }
+  }
+  return code;
+}
+
+}  // namespace nbscope

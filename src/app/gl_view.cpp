@@ -1,0 +1,363 @@
+// Index: scene files | spec parsing (--overlays, --panels) | GlView: set-up, scene load, per step,
+// lists, shapes, checks, frame.
+#include "app/gl_view.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+
+#include "core/error.hpp"
+#include "render/overlays.hpp"
+#include "render/shader.hpp"
+#include "ui/stepper_panels.hpp"
+
+namespace nbscope {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+std::string data_dir() {
+  const char* env = std::getenv("NBSCOPE_DATA_DIR");
+  return env != nullptr && *env != '\0' ? env : NBSCOPE_DATA_DIR;
+}
+
+constexpr std::size_t kTrailPoints = 240;
+constexpr float kFlashDecay = 0.8f;  // per frame: a flash fades over ~10 frames
+constexpr std::size_t kFrameHistory = 240;
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// A spec is a comma list: "all", "none", "name" (from none: only the names listed), "+name", "-name".
+template <class SetAll, class Set>
+void apply_spec(const std::string& flag, const std::string& spec, const std::vector<std::string>& names,
+                SetAll set_all, Set set) {
+  if (spec.empty()) return;
+  bool first = true;
+  std::size_t start = 0;
+  while (start <= spec.size()) {
+    const std::size_t comma = std::min(spec.find(',', start), spec.size());
+    std::string token = lower(spec.substr(start, comma - start));
+    start = comma + 1;
+    if (token.empty()) continue;
+    if (token == "all" || token == "none") {
+      set_all(token == "all");
+    } else {
+      bool on = true;
+      if (token[0] == '+' || token[0] == '-') {
+        on = token[0] == '+';
+        token.erase(0, 1);
+      } else if (first) {
+        set_all(false);
+      }
+      if (std::find(names.begin(), names.end(), token) == names.end()) {
+        std::string known;
+        for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+        throw Error(flag + ": '" + token + "' is not one of all, none, " + known);
+      }
+      set(token, on);
+    }
+    first = false;
+  }
+}
+
+}  // namespace
+
+// ---- scene files ------------------------------------------------------------------------------
+
+std::vector<std::string> bundled_scene_files() {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(data_dir() + "/assets/scenes", ec))
+    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::string default_scene_path() { return data_dir() + "/assets/scenes/default.json"; }
+
+// ---- GlView -----------------------------------------------------------------------------------
+
+GlView::GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions& options) : context_(context) {
+  renderer_ = std::make_unique<render::Renderer>(render::resolve_shader_dir(options.shader_dir));
+  imgui_ = std::make_unique<render::ImGuiLayer>(window);
+  gl_description_ = context.describe();
+  hide_timings_ = options.no_timings;
+  camera_.set_viewport(context.width(), context.height());
+
+  std::vector<std::string> overlay_names;
+  for (const auto& o : render::overlay_infos()) overlay_names.emplace_back(o.name);
+  apply_spec(
+      "--overlays", options.overlays, overlay_names,
+      [&](bool on) {
+        for (const auto& o : render::overlay_infos()) state_.overlays.*o.flag = on;
+      },
+      [&](const std::string& name, bool on) {
+        for (const auto& o : render::overlay_infos())
+          if (name == o.name) state_.overlays.*o.flag = on;
+      });
+  ui::add_stepper_panels(host_, ui::StepperConfig{options.step ? std::optional<std::size_t>(*options.step) : std::nullopt,
+                                                  options.book_numbering});
+  if (options.step) ui::open_stepper_panels(state_);
+  std::vector<std::string> panel_names;
+  for (const auto& p : host_.panels()) panel_names.push_back(lower(p->title()));
+  apply_spec(
+      "--panels", options.panels, panel_names,
+      [&](bool on) {
+        for (const auto& p : host_.panels()) state_.panel_open[p->title()] = on;
+      },
+      [&](const std::string& name, bool on) {
+        for (const auto& p : host_.panels())
+          if (name == lower(p->title())) state_.panel_open[p->title()] = on;
+      });
+  state_.selected = options.select;
+  trail_element_ = options.select;
+  fixed_camera_ = options.camera;
+}
+
+GlView::~GlView() {
+  // ImGui's GL objects go before the renderer's, both while the context is still current.
+  imgui_.reset();
+  renderer_.reset();
+}
+
+void GlView::fit_camera(const FrameLoop& loop) {
+  camera_.set_viewport(context_.width(), context_.height());
+  const Elements& e = loop.elements();
+  render::WorldRect box{{0, 0}, {1, 1}};
+  if (e.size() > 0) {
+    // The elements and half a cell around them: the neighbour cells and the list heads stay in view
+    // even when the grid is pinned much larger (the book's 10x10 figure).
+    const double d = loop.grid().dim == 2 ? loop.grid().cell_size : 0.0;
+    box.min = Eigen::Vector2d((e.x - e.r).minCoeff(), (e.y - e.r).minCoeff()).array() - 0.5 * d;
+    box.max = Eigen::Vector2d((e.x + e.r).maxCoeff(), (e.y + e.r).maxCoeff()).array() + 0.5 * d;
+  }
+  bool left = false, right = false;
+  for (const auto& p : host_.panels()) {
+    if (!ui::UiHost::is_open(*p, state_)) continue;
+    left = left || p->place() == ui::PanelPlace::Left;
+    right = right || p->place() == ui::PanelPlace::Right;
+  }
+  camera_.fit(box, 0.06, left ? host_.left_width() : 0.0, right ? host_.right_width() : 0.0);
+}
+
+void GlView::on_scene_loaded(const FrameLoop& loop, bool fit) {
+  ++generation_;
+  trails_.clear();
+  trail_element_ = state_.selected;
+  previous_cells_ = loop.cells();
+  flash_.assign(static_cast<std::size_t>(loop.elements().size()), 0.0f);
+  lists_.clear();
+  if (state_.selected >= loop.elements().size()) state_.selected = -1;
+  if (fit) fit_camera(loop);
+  if (fit && fixed_camera_) camera_.set({(*fixed_camera_)[0], (*fixed_camera_)[1]}, (*fixed_camera_)[2]);
+}
+
+void GlView::after_step(const FrameLoop& loop) {
+  const Elements& e = loop.elements();
+  // Trails follow the selected element; a new selection starts a new trail.
+  if (state_.selected != trail_element_) {
+    trails_.clear();
+    trail_element_ = state_.selected;
+  }
+  if (trail_element_ >= 0 && trail_element_ < e.size()) {
+    if (trails_.empty()) trails_.emplace_back();
+    auto& t = trails_.front();
+    t.emplace_back(static_cast<float>(e.x[trail_element_]), static_cast<float>(e.y[trail_element_]));
+    if (t.size() > kTrailPoints) t.erase(t.begin());
+  }
+  // Flashes: elements whose cell (and so list) changed this frame.
+  const auto& cells = loop.cells();
+  flash_.resize(cells.size(), 0.0f);
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    flash_[k] *= kFlashDecay;
+    if (k < previous_cells_.size() && !(cells[k] == previous_cells_[k])) flash_[k] = 1.0f;
+  }
+  previous_cells_ = cells;
+}
+
+void GlView::update_lists(FrameLoop& loop) {
+  if (!state_.overlays.lists) {
+    lists_.clear();
+    lists_frame_ = -1;
+    return;
+  }
+  if (lists_frame_ == loop.frame() && lists_algorithm_ == loop.algorithm() && lists_generation_ == generation_) return;
+  const auto t0 = Clock::now();
+  loop.trace_frame(trace_, trace_pairs_);
+  lists_ = render::traced_lists(trace_, static_cast<std::size_t>(loop.elements().size()));
+  lists_frame_ = loop.frame();
+  lists_algorithm_ = loop.algorithm();
+  lists_generation_ = generation_;
+  cost_.trace_ms = ms_since(t0);
+}
+
+void GlView::build_shapes(const FrameLoop& loop) {
+  loop.body_shapes(body_shapes_);
+  shapes_.clear();
+  shape_points_.clear();
+  for (const BodyShape& b : body_shapes_) {
+    render::ShapeDraw d;
+    d.motion = b.body_type == BodyType::Static      ? render::Motion::Static
+               : b.body_type == BodyType::Kinematic ? render::Motion::Kinematic
+                                                    : render::Motion::Dynamic;
+    d.is_circle = b.form == ShapeForm::Circle;
+    d.centre = render::Vec2(static_cast<float>(b.centre.x), static_cast<float>(b.centre.y));
+    d.radius = static_cast<float>(b.radius);
+    d.angle = static_cast<float>(b.angle);
+    d.element = b.element;
+    if (!d.is_circle) {
+      d.first = static_cast<std::uint32_t>(shape_points_.size());
+      d.count = static_cast<std::uint32_t>(b.vertex_count);
+      for (int v = 0; v < b.vertex_count; ++v)
+        shape_points_.emplace_back(static_cast<float>(b.vertices[static_cast<std::size_t>(v)].x),
+                                   static_cast<float>(b.vertices[static_cast<std::size_t>(v)].y));
+    }
+    shapes_.push_back(d);
+  }
+}
+
+void GlView::build_checks(const FrameLoop& loop) {
+  checks_.confirmed.clear();
+  checks_.broadphase_only.clear();
+  checks_.violations.clear();
+  const FrameReport& r = loop.report();
+  if (!r.checked) return;
+  const PairList& a = loop.pairs();
+  if (state_.overlays.checks) {
+    const PairList& t = loop.touching_pairs();
+    std::set_intersection(a.begin(), a.end(), t.begin(), t.end(), std::back_inserter(checks_.confirmed));
+    for (const Violation& v : r.violations) checks_.violations.push_back(v.pair);
+  }
+  if (state_.overlays.broadphase) {
+    const PairList& f = loop.box2d_pairs();
+    std::set_difference(f.begin(), f.end(), a.begin(), a.end(), std::back_inserter(checks_.broadphase_only));
+  }
+}
+
+ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_input, float dt) {
+  const auto frame_start = Clock::now();
+  camera_.set_viewport(context_.width(), context_.height());
+  const Elements& e = loop.elements();
+  if (state_.selected >= e.size()) state_.selected = -1;
+
+  cost_.trace_ms = 0;
+  update_lists(loop);
+  auto t0 = Clock::now();
+  build_shapes(loop);
+  build_checks(loop);
+  flash_list_.clear();
+  for (std::size_t k = 0; k < flash_.size(); ++k)
+    if (flash_[k] > 0.05f) flash_list_.emplace_back(static_cast<ElementId>(k), flash_[k]);
+
+  render::OverlayScene scene;
+  scene.elements = &e;
+  scene.grid = &loop.grid();
+  scene.shapes = shapes_;
+  scene.shape_points = shape_points_;
+  scene.pairs = &loop.pairs();
+  scene.checks = &checks_;
+  scene.lists = state_.overlays.lists ? &lists_ : nullptr;
+  scene.selected = state_.selected;
+  scene.hovered_cell = state_.hovered_cell;
+  if (state_.hovered_cell) scene.focus_row = (*state_.hovered_cell)[1];
+  else if (state_.selected >= 0) scene.focus_row = loop.grid().cell(e.y[state_.selected], 1);
+  scene.trails = trails_;
+  scene.flashes = flash_list_;
+  for (const auto& p : host_.panels())
+    if (p->place() == ui::PanelPlace::Left && ui::UiHost::is_open(*p, state_)) scene.left_inset_px = host_.left_width();
+  scene.top_inset_px = ImGui::GetFrameHeight();
+  if (loop.dragging() && state_.selected >= 0 && state_.mouse_world)
+    scene.drag = std::array<render::Vec2, 2>{
+        render::Vec2(static_cast<float>(e.x[state_.selected]), static_cast<float>(e.y[state_.selected])),
+        state_.mouse_world->cast<float>()};
+
+  ui::UiRequests requests;
+  ui::SimView sim;
+  ui::UiContext ctx{sim, state_, requests, camera_};
+  renderer_->begin_frame(camera_);
+  render::draw_scene(scene, state_.overlays, camera_, *renderer_);
+  host_.draw_scene(ctx, *renderer_);
+  cost_.overlay_ms = ms_since(t0);
+  t0 = Clock::now();
+  renderer_->draw(render::palette::kBackground);
+  cost_.render_ms = ms_since(t0);
+
+  // The panels' view of this frame.
+  t0 = Clock::now();
+  sim.scene_path = session.scene_path;
+  sim.scene_name = loop.scene().name;
+  sim.scene_files = session.scene_files;
+  for (const DetectorInfo& d : detector_infos())
+    if (d.dim2) sim.algorithms.push_back(d.name);
+  sim.algorithm = loop.algorithm();
+  sim.error = session.error;
+  sim.paused = session.paused;
+  sim.time_step = loop.scene().time_step;
+  sim.speed = session.speed;
+  sim.frame = loop.frame();
+  sim.sim_time = loop.time();
+  sim.bodies = loop.body_count();
+  sim.elements = &e;
+  sim.grid = &loop.grid();
+  sim.pairs = &loop.pairs();
+  sim.lists = state_.overlays.lists ? &lists_ : nullptr;
+  const FrameReport& report = loop.report();
+  sim.algorithm_stats.push_back(
+      {loop.algorithm(), report.timings.detection_ms, loop.detector().own_bytes(), loop.pairs().size()});
+  if (report.checked)
+    sim.algorithm_stats.push_back({"check (R: " + report.reference + ")", report.timings.check_ms, 0,
+                                   loop.reference_pairs().size()});
+  sim.check_ran = report.checked;
+  sim.check_ok = report.ok();
+  sim.check_reference = report.reference;
+  sim.violation_count = static_cast<std::size_t>(report.violation_count());
+  for (std::size_t i = 0; i < report.violations.size() && i < 6; ++i) {
+    const Violation& v = report.violations[i];
+    sim.violation_lines.push_back(std::string(invariant_name(v.invariant)) + ": (" + std::to_string(v.pair.i) + ", " +
+                                  std::to_string(v.pair.j) + ") " + v.what + ", cells (" + std::to_string(v.cell_i.ix) +
+                                  "," + std::to_string(v.cell_i.iy) + ") (" + std::to_string(v.cell_j.ix) + "," +
+                                  std::to_string(v.cell_j.iy) + ")");
+  }
+  sim.hide_timings = hide_timings_;
+  sim.timings.physics_ms = report.timings.physics_ms;
+  sim.timings.detect_ms = report.timings.detection_ms;
+  sim.timings.check_ms = report.timings.check_ms;
+  sim.timings.trace_ms = cost_.trace_ms;
+  sim.timings.overlay_ms = cost_.overlay_ms;
+  sim.timings.render_ms = cost_.render_ms;
+  sim.timings.ui_ms = cost_.ui_ms;  // last frame's: this one is being measured
+  sim.timings.frame_ms = session.frame_ms;
+  sim.fps = session.fps;
+  sim.frame_history_ms = frame_history_;
+  sim.render_stats = &renderer_->stats();
+  sim.imgui_vertices = imgui_->last_vertices();
+  sim.imgui_indices = imgui_->last_indices();
+  sim.imgui_lists = imgui_->last_draw_lists();
+  sim.trace_events = state_.overlays.lists ? trace_.events().size() : 0;
+  sim.trace_bytes = state_.overlays.lists ? trace_.events().size() * sizeof(TraceEvent) : 0;
+  sim.gl_description = gl_description_;
+  sim.width = context_.width();
+  sim.height = context_.height();
+
+  imgui_->new_frame(live_input, context_.width(), context_.height(), dt);
+  host_.frame(ctx, live_input);
+  renderer_->emit_labels(ImGui::GetBackgroundDrawList());
+  imgui_->render();
+  cost_.ui_ms = ms_since(t0);
+
+  // The loop's whole-frame time when it measures one (the window), else this view's share.
+  frame_history_.push_back(static_cast<float>(session.frame_ms > 0 ? session.frame_ms : ms_since(frame_start)));
+  if (frame_history_.size() > kFrameHistory) frame_history_.erase(frame_history_.begin());
+  if (requests.camera_home) fit_camera(loop);
+  return requests;
+}
+
+}  // namespace nbscope

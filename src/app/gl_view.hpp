@@ -1,0 +1,109 @@
+// nbscope app: the GL side of one frame, shared by the window and the headless screenshot: the
+// scene and its overlays through the renderer, then the ImGui panels, from one FrameLoop. The two
+// loops differ only in where the pixels go and whether input is live.
+//
+// Index: Session (what the surrounding loop knows) | GlView (scene load, per-step bookkeeping, frame).
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/frame_loop.hpp"
+#include "app/view_options.hpp"
+#include "core/trace.hpp"
+#include "io/png.hpp"
+#include "render/gl_context.hpp"
+#include "render/imgui_layer.hpp"
+#include "render/renderer.hpp"
+#include "ui/host.hpp"
+
+struct GLFWwindow;
+
+namespace nbscope {
+
+// What the loop around the view knows and the panels show.
+struct Session {
+  std::string scene_path;
+  std::vector<std::string> scene_files;
+  bool paused = false;
+  double speed = 1.0;
+  std::string error;
+  double fps = 0;
+  double frame_ms = 0;
+};
+
+// Every scene file in the bundled assets/scenes directory, sorted.
+std::vector<std::string> bundled_scene_files();
+// The bundled default scene (assets/scenes/default.json).
+std::string default_scene_path();
+
+class GlView {
+ public:
+  // Loads the shaders (Error when missing) and sets overlays, panels and selection from `options`
+  // (Error for an unknown name). `context` must be current; `window` is null headless.
+  GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions& options);
+  ~GlView();
+  GlView(const GlView&) = delete;
+  GlView& operator=(const GlView&) = delete;
+
+  // A scene was (re)loaded: forget trails, flashes and lists; with `fit`, point the camera at it.
+  void on_scene_loaded(const FrameLoop& loop, bool fit = true);
+  // Bookkeeping after each FrameLoop::step(): trails of the selection, cell-change flashes.
+  void after_step(const FrameLoop& loop);
+  // Draws one frame (scene, overlays, panels) into the current framebuffer and returns what the
+  // user asked for. `live_input` lets keys and mouse act (the window, not scripted runs).
+  ui::UiRequests frame(FrameLoop& loop, const Session& session, bool live_input, float dt);
+  // The framebuffer as an image (after frame(), before presenting).
+  [[nodiscard]] Image screenshot() const { return context_.read_pixels(); }
+
+  [[nodiscard]] ui::UiState& state() { return state_; }
+  [[nodiscard]] render::Camera& camera() { return camera_; }
+  [[nodiscard]] ui::UiHost& host() { return host_; }
+  // Where the last frame's time went (overlays, GL submit, panels, traced detection), in ms.
+  struct Cost {
+    double trace_ms = 0, overlay_ms = 0, render_ms = 0, ui_ms = 0;
+  };
+  [[nodiscard]] const Cost& last_cost() const { return cost_; }
+
+ private:
+  void update_lists(FrameLoop& loop);
+  void build_shapes(const FrameLoop& loop);
+  void build_checks(const FrameLoop& loop);
+  void fit_camera(const FrameLoop& loop);
+
+  render::GlContext& context_;
+  std::unique_ptr<render::Renderer> renderer_;
+  std::unique_ptr<render::ImGuiLayer> imgui_;
+  ui::UiHost host_;
+  ui::UiState state_;
+  render::Camera camera_;
+  bool hide_timings_ = false;
+  std::optional<std::array<double, 3>> fixed_camera_;  // --camera: replaces the fit on load
+  std::string gl_description_;
+  Cost cost_;
+
+  // Per-frame scratch, kept to avoid reallocating.
+  std::vector<BodyShape> body_shapes_;
+  std::vector<render::ShapeDraw> shapes_;
+  std::vector<render::Vec2> shape_points_;
+  render::CheckDraw checks_;
+  std::vector<std::pair<ElementId, float>> flash_list_;
+
+  // The list overlay: a traced detection of the current frame, redone when the frame changes.
+  TraceLog trace_;
+  PairList trace_pairs_;
+  std::vector<render::TracedList> lists_;
+  std::int64_t lists_frame_ = -1;
+  std::string lists_algorithm_;
+  std::uint64_t lists_generation_ = 0;
+  std::uint64_t generation_ = 1;  // bumped on every scene load
+
+  // Trails and flashes, advanced per step.
+  ElementId trail_element_ = -1;
+  std::vector<std::vector<render::Vec2>> trails_;
+  std::vector<CellIndex> previous_cells_;
+  std::vector<float> flash_;
+  std::vector<float> frame_history_;
+};
+
+}  // namespace nbscope

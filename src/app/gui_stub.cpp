@@ -1,0 +1,17 @@
+// Built instead of the window and the off-screen renderer when NBSCOPE_GUI=OFF (the sanitizer
+// build): every request to render is refused with one error line (exit 2).
+#include "app/commands.hpp"
+#include "app/headless_view.hpp"
+#include "core/error.hpp"
+
+namespace nbscope {
+
+void check_screenshot_path(const std::string&) {}
+
+std::unique_ptr<HeadlessView> make_headless_view(const ViewOptions&, const FrameLoop&) {
+  throw Error("--screenshot: this nbscope was built without rendering (NBSCOPE_GUI=OFF)");
+}
+
+int run_gui(Args&) { throw Error("gui: this nbscope was built without the window (NBSCOPE_GUI=OFF)"); }
+
+}  // namespace nbscope

@@ -1,0 +1,84 @@
+#include "app/headless_view.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "app/gl_view.hpp"
+#include "core/error.hpp"
+#include "render/gl_context.hpp"
+
+namespace nbscope {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+// ImGui sizes auto-resizing windows over its first frames; the third frame is the settled one.
+constexpr int kSettleFrames = 3;
+
+class OsmesaView final : public HeadlessView {
+ public:
+  OsmesaView(const ViewOptions& options, const FrameLoop& loop)
+      : options_(options),
+        context_(render::make_offscreen_context(options.width, options.height, options.gl)),
+        view_(*context_, nullptr, options) {
+    session_.scene_path = loop.scene().path;
+    session_.scene_files = bundled_scene_files();
+    view_.on_scene_loaded(loop);
+  }
+
+  void after_step(const FrameLoop& loop) override { view_.after_step(loop); }
+
+  std::string write_screenshot(FrameLoop& loop) override {
+    const auto t0 = Clock::now();
+    for (int i = 0; i < kSettleFrames; ++i) view_.frame(loop, session_, false, 1.0f / 60.0f);
+    const double render_ms = ms_since(t0) / kSettleFrames;
+    const GlView::Cost cost = view_.last_cost();
+    auto t1 = Clock::now();
+    const Image image = view_.screenshot();
+    const double read_ms = ms_since(t1);
+    t1 = Clock::now();
+    write_png(*options_.screenshot, image);
+    const double png_ms = ms_since(t1);
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "screenshot %s (%dx%d, %s): frame %.1f ms = lists %.1f + overlays %.1f + GL %.1f + panels %.1f; "
+                  "readback %.1f ms, png %.1f ms",
+                  options_.screenshot->c_str(), image.width, image.height, context_->kind(), render_ms, cost.trace_ms,
+                  cost.overlay_ms, cost.render_ms, cost.ui_ms, read_ms, png_ms);
+    return line;
+  }
+
+ private:
+  ViewOptions options_;
+  std::unique_ptr<render::GlContext> context_;
+  GlView view_;
+  Session session_;
+};
+
+}  // namespace
+
+void check_screenshot_path(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw Error(path + ": cannot write: it is a directory");
+  fs::path dir = fs::path(path).parent_path();
+  if (dir.empty()) dir = ".";
+  if (!fs::is_directory(dir, ec)) throw Error(path + ": cannot write: " + dir.string() + " is not a directory");
+  if (::access(dir.c_str(), W_OK) != 0) throw Error(path + ": cannot write: " + std::strerror(errno));
+}
+
+std::unique_ptr<HeadlessView> make_headless_view(const ViewOptions& options, const FrameLoop& loop) {
+  if (!options.screenshot) throw Error("internal: make_headless_view without --screenshot");
+  // Fail before simulating any frame, not after.
+  check_screenshot_path(*options.screenshot);
+  return std::make_unique<OsmesaView>(options, loop);
+}
+
+}  // namespace nbscope

@@ -1,0 +1,31 @@
+// nbscope app: the screenshot of `nbscope headless --screenshot`: the very frame the window would
+// show (scene, overlays, ImGui panels), rendered off-screen (OSMesa). Without the GUI build,
+// asking for one is refused with an error (exit 2).
+#pragma once
+#include <memory>
+#include <string>
+
+#include "app/frame_loop.hpp"
+#include "app/view_options.hpp"
+
+namespace nbscope {
+
+class HeadlessView {
+ public:
+  virtual ~HeadlessView() = default;
+  // Call after every FrameLoop::step() (trails of the selection, cell-change flashes).
+  virtual void after_step(const FrameLoop& loop) = 0;
+  // Renders the current frame and writes options.screenshot atomically; returns a one-line
+  // summary (path, size, where the time went). Error when the file cannot be written.
+  virtual std::string write_screenshot(FrameLoop& loop) = 0;
+};
+
+// Error("<path>: cannot write: ...") unless a file can be created at `path` (its directory exists
+// and is writable): checked before any frame is simulated.
+void check_screenshot_path(const std::string& path);
+
+// Opens the off-screen context (`options.gl`) and loads the shaders for `loop`'s scene, so bad
+// rendering options fail before any frame is simulated. Error when rendering is unavailable.
+std::unique_ptr<HeadlessView> make_headless_view(const ViewOptions& options, const FrameLoop& loop);
+
+}  // namespace nbscope

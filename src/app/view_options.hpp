@@ -1,0 +1,35 @@
+// nbscope app: the rendering options shared by `nbscope gui` and `nbscope headless`: screenshot,
+// size, GL backend, shader directory, overlays, panels, selection. Parsing needs no GL, so it is
+// built without the GUI too (where any rendering request is then refused).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "app/cli.hpp"
+
+namespace nbscope {
+
+struct ViewOptions {
+  std::optional<std::string> screenshot;  // --screenshot OUT.png
+  int width = 1280;                       // --size WxH
+  int height = 720;
+  std::string gl = "auto";                // --gl osmesa|egl|auto (headless only)
+  std::string shader_dir;                 // --shader-dir DIR ("" = $NBSCOPE_SHADER_DIR or the built-in one)
+  std::string overlays;                   // --overlays SPEC, e.g. "all,-lists" or "+lists" (see help)
+  std::string panels;                     // --panels SPEC, e.g. "none" or "+metrics"
+  std::int32_t select = -1;               // --select K: element selected from the start
+  std::optional<std::array<double, 3>> camera;  // --camera X,Y,PPM: view centre and pixels per metre
+  bool no_timings = false;                // --no-timings: "-" instead of wall-clock numbers
+  std::optional<std::int64_t> step;       // --step K: the stepper shows the state after K trace events
+  bool book_numbering = false;            // --book-numbering: the stepper numbers from 1, as the book
+};
+
+// Takes the rendering flags out of `args`; `headless` also accepts --gl. Error names a bad value.
+void parse_view_options(Args& args, bool headless, ViewOptions& out);
+
+// True when any flag asks for rendering (a screenshot); the others only matter with one.
+[[nodiscard]] inline bool wants_rendering(const ViewOptions& v) { return v.screenshot.has_value(); }
+
+}  // namespace nbscope
