@@ -36,9 +36,13 @@ class OsmesaView final : public HeadlessView {
   void after_step(const FrameLoop& loop) override { view_.after_step(loop); }
 
   std::string write_screenshot(FrameLoop& loop) override {
-    const auto t0 = Clock::now();
-    for (int i = 0; i < kSettleFrames; ++i) view_.frame(loop, session_, false, 1.0f / 60.0f);
-    const double render_ms = ms_since(t0) / kSettleFrames;
+    auto t0 = Clock::now();
+    view_.frame(loop, session_, false, 1.0f / 60.0f);
+    const double first_ms = ms_since(t0);
+    const double trace_ms = view_.last_cost().trace_ms;  // the traced detection runs in the first frame only
+    t0 = Clock::now();
+    for (int i = 1; i < kSettleFrames; ++i) view_.frame(loop, session_, false, 1.0f / 60.0f);
+    const double render_ms = ms_since(t0) / (kSettleFrames - 1);
     const GlView::Cost cost = view_.last_cost();
     auto t1 = Clock::now();
     const Image image = view_.screenshot();
@@ -48,10 +52,10 @@ class OsmesaView final : public HeadlessView {
     const double png_ms = ms_since(t1);
     char line[512];
     std::snprintf(line, sizeof line,
-                  "screenshot %s (%dx%d, %s): frame %.1f ms = lists %.1f + overlays %.1f + GL %.1f + panels %.1f; "
-                  "readback %.1f ms, png %.1f ms",
-                  options_.screenshot->c_str(), image.width, image.height, context_->kind(), render_ms, cost.trace_ms,
-                  cost.overlay_ms, cost.render_ms, cost.ui_ms, read_ms, png_ms);
+                  "screenshot %s (%dx%d, %s): render %.1f ms a frame (overlays %.1f, GL submit %.1f, panels %.1f); "
+                  "first frame %.1f ms incl. traced lists %.1f; readback %.1f ms, png %.1f ms",
+                  options_.screenshot->c_str(), image.width, image.height, context_->kind(), render_ms, cost.overlay_ms,
+                  cost.render_ms, cost.ui_ms, first_ms, trace_ms, read_ms, png_ms);
     return line;
   }
 

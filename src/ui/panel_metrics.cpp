@@ -35,8 +35,8 @@ class MetricsPanel final : public Panel {
     ImGui::Text("framebuffer %d x %d, %.2f px/m", s.width, s.height, c.camera.pixels_per_metre());
     if (s.render_stats != nullptr) {
       const render::RenderStats& r = *s.render_stats;
-      ImGui::Text("scene: %d draw calls, %zu labels (%zu dropped), submit %s ms", r.draw_calls, r.labels,
-                  r.labels_dropped, format_ms(s, r.gpu_submit_ms).c_str());
+      ImGui::Text("scene: %d draw calls, submit %s ms", r.draw_calls, format_ms(s, r.gpu_submit_ms).c_str());
+      ImGui::Text("labels: %zu drawn, %zu dropped (limit %zu)", r.labels, r.labels_dropped, render::Renderer::kMaxLabels);
       if (ImGui::BeginTable("batches", 5, ImGuiTableFlags_BordersInnerH)) {
         for (const char* h : {"layer", "kind", "items", "vertices", "buffer"}) ImGui::TableSetupColumn(h);
         ImGui::TableHeadersRow();

@@ -1,0 +1,226 @@
+// Golden screenshots: fixed scenes and overlays rendered headless (OSMesa) at a fixed size and
+// frame count, compared with assets/golden/*.png; a proof that the comparison fails when an
+// overlay is switched off; the window itself under Xvfb compared with the headless frame; and the
+// rendering errors (missing shaders, unwritable screenshot, EGL, no window) as one line and exit 2.
+//
+// The cases live in assets/golden/cases.txt, shared with scripts/make_golden (which regenerates
+// the references): one case a line, "name | headless arguments", plus "@args" lines of arguments
+// every case gets. On a mismatch the actual image and a diff (differing pixels red) are written
+// to <build>/test-output/golden/.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "io/png.hpp"
+#include "support/run_cli.hpp"
+
+namespace nbscope {
+namespace {
+
+// A pixel differs when any of R, G, B differs by more than this (anti-aliased edges may move by
+// a few levels between Mesa versions; a missing overlay changes its pixels completely).
+constexpr int kChannelTolerance = 24;
+// A screenshot fails when more than this share of its pixels differ (0.1%: ~900 of 1280x720).
+constexpr double kMaxDifferingShare = 0.001;
+
+const std::string kSource = NBSCOPE_SOURCE_DIR;
+const std::string kOut = std::string(NBSCOPE_TEST_OUT) + "/golden";
+
+struct Case {
+  std::string name;
+  std::string args;
+};
+
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t");
+  const auto b = s.find_last_not_of(" \t\r");
+  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
+// Paths in the cases are relative to the source tree; the binary runs elsewhere.
+std::string absolute_paths(const std::string& args) {
+  std::istringstream in(args);
+  std::string word, out;
+  while (in >> word) out += (out.empty() ? "" : " ") + (word.rfind("assets/", 0) == 0 ? "'" + kSource + "/" + word + "'" : word);
+  return out;
+}
+
+std::vector<Case> load_cases() {
+  std::ifstream in(kSource + "/assets/golden/cases.txt");
+  std::vector<Case> cases;
+  std::string common, line;
+  while (std::getline(in, line)) {
+    line = trim(line);
+    if (line.empty() || line[0] == '#') continue;
+    if (line.rfind("@args", 0) == 0) {
+      common += " " + trim(line.substr(5));
+      continue;
+    }
+    const auto bar = line.find('|');
+    if (bar == std::string::npos) continue;
+    cases.push_back({trim(line.substr(0, bar)), absolute_paths(trim(line.substr(bar + 1)) + common)});
+  }
+  return cases;
+}
+
+// Renders `args` headless into OUT_DIR/NAME.png and returns the image.
+Image render(const std::string& name, const std::string& args) {
+  std::filesystem::create_directories(kOut);
+  const std::string path = kOut + "/" + name + ".png";
+  std::filesystem::remove(path);
+  const auto r = testcli::run("headless " + args + " --quiet --screenshot '" + path + "'");
+  EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.err;  // 1: a case may show a failing check
+  return read_png(path);
+}
+
+// Compares with the golden image; on failure keeps the actual and the diff next to the test output.
+::testing::AssertionResult matches_golden(const std::string& name, const Image& actual, const std::string& golden) {
+  const Image expected = read_png(kSource + "/assets/golden/" + golden + ".png");
+  const ImageDiff d = compare_images(actual, expected, kChannelTolerance);
+  if (d.same_size && d.share() <= kMaxDifferingShare) return ::testing::AssertionSuccess();
+  write_png(kOut + "/" + name + ".actual.png", actual);
+  if (d.same_size) write_png(kOut + "/" + name + ".diff.png", d.diff);
+  return ::testing::AssertionFailure() << name << " vs assets/golden/" << golden << ".png: "
+                                       << (d.same_size ? "" : "sizes differ; ") << d.differing << " of " << d.total
+                                       << " pixels differ by more than " << kChannelTolerance << " (share " << d.share()
+                                       << ", limit " << kMaxDifferingShare << ", largest channel delta "
+                                       << d.max_channel_delta << "); actual and diff in " << kOut;
+}
+
+const Case& find_case(const std::string& name) {
+  static const std::vector<Case> cases = load_cases();
+  for (const Case& c : cases)
+    if (c.name == name) return c;
+  throw std::runtime_error("no golden case " + name);
+}
+
+class Golden : public ::testing::TestWithParam<Case> {};
+
+TEST_P(Golden, MatchesTheReference) {
+  const Case& c = GetParam();
+  const Image actual = render(c.name, c.args);
+  EXPECT_FALSE(is_uniform(actual)) << c.name << ": blank screenshot";
+  EXPECT_TRUE(matches_golden(c.name, actual, c.name));
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, Golden, ::testing::ValuesIn(load_cases()),
+                         [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+
+TEST(GoldenCases, AtLeastSixSceneOverlayCombinations) { EXPECT_GE(load_cases().size(), 6u); }
+
+// The comparison must be able to fail: the same case with one overlay off differs from its golden.
+TEST(GoldenCompare, FailsWhenAnOverlayIsSwitchedOff) {
+  for (const auto& [name, overlay] : {std::pair<std::string, std::string>{"default_all", "grid"},
+                                      std::pair<std::string, std::string>{"book_lists_nbs", "lists"}}) {
+    const Case& c = find_case(name);
+    // Append "-overlay" to the case's own --overlays list (a second --overlays flag would be refused).
+    std::string args = c.args;
+    const auto at = args.find("--overlays ");
+    if (at == std::string::npos) {
+      args += " --overlays -" + overlay;
+    } else {
+      const auto end = args.find(' ', at + 11);
+      args.insert(end == std::string::npos ? args.size() : end, ",-" + overlay);
+    }
+    const Image actual = render(name + "_without_" + overlay, args);
+    const ::testing::AssertionResult result = matches_golden(name + "_without_" + overlay, actual, name);
+    EXPECT_FALSE(result) << name << " with " << overlay << " off still matched its golden image";
+  }
+}
+
+// ---- the window under Xvfb --------------------------------------------------------------------
+
+bool have(const char* program) {
+  return std::system((std::string("command -v ") + program + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+TEST(Window, XvfbWindowFor30FramesMatchesTheHeadlessFrame) {
+  if (!have("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
+  std::filesystem::create_directories(kOut);
+  const std::string args = absolute_paths("--scene assets/scenes/default.json --frames 30 --size 1280x720 --no-timings");
+  const std::string window_png = kOut + "/window_default.png", headless_png = kOut + "/window_default_headless.png";
+  std::filesystem::remove(window_png);
+  const std::string cmd = "xvfb-run -a -s '-screen 0 1280x720x24' '" + testcli::binary() + "' gui " + args +
+                          " --screenshot '" + window_png + "' >'" + kOut + "/window.log' 2>&1";
+  const int status = std::system(cmd.c_str());
+  ASSERT_EQ(status, 0) << testcli::read_text(kOut + "/window.log");
+  const Image window = read_png(window_png);
+  EXPECT_FALSE(is_uniform(window)) << "the window's screenshot is blank";
+  const auto r = testcli::run("headless " + args + " --quiet --screenshot '" + headless_png + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Image headless = read_png(headless_png);
+  const ImageDiff d = compare_images(window, headless, kChannelTolerance);
+  if (d.same_size) write_png(kOut + "/window_default.diff.png", d.diff);
+  EXPECT_TRUE(d.same_size);
+  EXPECT_LE(d.share(), kMaxDifferingShare) << d.differing << " pixels differ; see " << kOut;
+}
+
+// ---- rendering errors: one line, exit 2, no file ------------------------------------------------
+
+// Runs a shell command line, capturing its exit code and stderr.
+testcli::Result shell(const std::string& command) {
+  std::filesystem::create_directories(kOut);
+  const std::string err = kOut + "/shell.err";
+  const int status = std::system((command + " </dev/null >/dev/null 2>'" + err + "'").c_str());
+  testcli::Result r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.err = testcli::read_text(err);
+  return r;
+}
+
+void expect_one_line_error(const testcli::Result& r, const std::string& needle) {
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("nbscope: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+}
+
+TEST(RenderErrors, MissingShaderDirectory) {
+  const std::string out = kOut + "/no_shaders.png";
+  std::filesystem::remove(out);
+  expect_one_line_error(testcli::run("headless " + absolute_paths("--scene assets/scenes/default.json") +
+                                     " --frames 1 --shader-dir /nonexistent/shaders --screenshot '" + out + "'"),
+                        "/nonexistent/shaders");
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(RenderErrors, UnwritableScreenshotPath) {
+  expect_one_line_error(testcli::run("headless " + absolute_paths("--scene assets/scenes/default.json") +
+                                     " --frames 1 --screenshot /nonexistent-dir/shot.png"),
+                        "/nonexistent-dir/shot.png");
+  expect_one_line_error(testcli::run("headless " + absolute_paths("--scene assets/scenes/default.json") +
+                                     " --frames 1 --screenshot '" + kSource + "'"),
+                        "directory");
+}
+
+TEST(RenderErrors, OsmesaFailure) {
+  // Told to offer GL 2.1 only, Mesa refuses the 3.3 core context nbscope asks for.
+  const std::string out = kOut + "/osmesa_fail.png";
+  std::filesystem::remove(out);
+  expect_one_line_error(shell("MESA_GL_VERSION_OVERRIDE=2.1 '" + testcli::binary() + "' headless " +
+                              absolute_paths("--scene assets/scenes/default.json") + " --frames 1 --screenshot '" + out +
+                              "'"),
+                        "osmesa");
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(RenderErrors, EglIsNotBuilt) {
+  expect_one_line_error(testcli::run("headless " + absolute_paths("--scene assets/scenes/default.json") +
+                                     " --frames 1 --gl egl --screenshot '" + kOut + "/egl.png'"),
+                        "egl");
+}
+
+TEST(RenderErrors, WindowThatCannotOpen) {
+  // A display that does not exist: GLFW cannot connect, so the window cannot open.
+  expect_one_line_error(shell("DISPLAY=:9999 '" + testcli::binary() + "' gui " +
+                              absolute_paths("--scene assets/scenes/default.json") + " --frames 1"),
+                        "window");
+}
+
+}  // namespace
+}  // namespace nbscope
