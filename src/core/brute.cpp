@@ -18,6 +18,14 @@ void brute_pairs(const Elements& e, const DetectOptions& options, PairList& out,
 }
 }  // namespace
 
+const std::vector<const char*>& BruteDetector::pseudocode(int /*dim*/) const {
+  static const std::vector<const char*> lines = {
+      "Loop over all discrete elements i, and for each over all discrete elements j > i",
+      "  check i against j: in contact when |c_i - c_j| <= r_i + r_j",
+  };
+  return lines;
+}
+
 void BruteDetector::detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) {
   NullTrace none;
   brute_pairs(elements, options, out_pairs, none);

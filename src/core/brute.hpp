@@ -13,6 +13,7 @@ class BruteDetector final : public Detector {
   void detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs,
                      TraceLog& out_trace) override;
   [[nodiscard]] std::size_t own_bytes() const override { return 0; }
+  [[nodiscard]] const std::vector<const char*>& pseudocode(int dim) const override;
 };
 
 }  // namespace nbscope
