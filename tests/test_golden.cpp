@@ -36,6 +36,9 @@ struct Case {
   std::string args;
 };
 
+// gtest names a failing case by this instead of its bytes.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
 std::string trim(const std::string& s) {
   const auto a = s.find_first_not_of(" \t");
   const auto b = s.find_last_not_of(" \t\r");

@@ -140,6 +140,8 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
 
   bool failed = false;
   double owed_steps = 0;
+  const auto started = Clock::now();
+  double sum_physics = 0, sum_detect = 0, sum_check = 0, sum_view = 0;
   auto last = Clock::now();
   double fps_window_start = window.time();
   int fps_frames = 0;
@@ -168,13 +170,25 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       }
     }
     failed = failed || (loop.report().checked && !loop.report().ok());
+    const auto view_start = Clock::now();
     const ui::UiRequests requests = view.frame(loop, session, !scripted, static_cast<float>(session.frame_ms / 1000.0));
+    if (scripted) {
+      sum_view += std::chrono::duration<double, std::milli>(Clock::now() - view_start).count();
+      sum_physics += loop.timings().physics_ms;
+      sum_detect += loop.timings().detection_ms;
+      sum_check += loop.timings().check_ms;
+    }
     if (scripted && rendered >= *o.frames) {
-      if (o.view.screenshot) {
-        write_png(*o.view.screenshot, view.screenshot());
-        std::fprintf(stderr, "nbscope: screenshot %s after %lld frames\n", o.view.screenshot->c_str(),
-                     static_cast<long long>(loop.frame()));
-      }
+      if (o.view.screenshot) write_png(*o.view.screenshot, view.screenshot());
+      // What a scripted run measured: the window's frame rate and where the time went.
+      const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+      const double n = static_cast<double>(rendered + 1);
+      std::fprintf(stderr,
+                   "nbscope: window: %lld frames in %.2f s = %.1f FPS; ms a frame: physics %.2f, detection %.2f, "
+                   "check %.2f, render+panels %.2f%s%s\n",
+                   static_cast<long long>(rendered + 1), seconds, n / seconds, sum_physics / n, sum_detect / n,
+                   sum_check / n, sum_view / n, o.view.screenshot ? "; screenshot " : "",
+                   o.view.screenshot ? o.view.screenshot->c_str() : "");
       break;
     }
     if (!scripted) apply_requests(requests, loop, view, session);

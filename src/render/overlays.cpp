@@ -13,6 +13,8 @@ namespace {
 constexpr Rgba kNone{0, 0, 0, 0};
 // Circles smaller than this on screen get no ids: the text would cover its neighbours.
 constexpr double kMinIdRadiusPx = 7.0;
+// Details (spokes, bounding circles) of circles smaller than this on screen are left out.
+constexpr double kMinDetailPx = 4.0;
 // Most cells the occupancy shading counts; beyond it cells are too small to read anyway.
 constexpr std::int64_t kMaxShadedCells = 400'000;
 
@@ -84,7 +86,7 @@ namespace {
 
 // ---- bodies and elements ----------------------------------------------------------------------
 
-void draw_bodies(const OverlayScene& s, const WorldRect& view, DrawSink& sink) {
+void draw_bodies(const OverlayScene& s, const WorldRect& view, double ppm, DrawSink& sink) {
   for (const ShapeDraw& b : s.shapes) {
     const Rgba fill = b.motion == Motion::Static      ? palette::kStaticFill
                       : b.motion == Motion::Kinematic ? palette::kKinematicFill
@@ -95,7 +97,8 @@ void draw_bodies(const OverlayScene& s, const WorldRect& view, DrawSink& sink) {
     if (b.is_circle) {
       if (!in_view(view, b.centre.x(), b.centre.y(), b.radius)) continue;
       sink.circle(Layer::Bodies, b.centre, b.radius, fill, outline, 1.0f);
-      // A spoke shows the rotation.
+      // A spoke shows the rotation, once it is long enough to see (a software rasterizer pays per primitive).
+      if (b.radius * ppm < kMinDetailPx) continue;
       const Vec2 tip = b.centre + b.radius * Vec2(std::cos(b.angle), std::sin(b.angle));
       sink.line(Layer::Bodies, b.centre, tip, outline.with_alpha(150), 1.0f);
     } else if (b.count >= 3 && b.first + b.count <= s.shape_points.size()) {
@@ -111,9 +114,10 @@ void draw_bodies(const OverlayScene& s, const WorldRect& view, DrawSink& sink) {
   }
 }
 
-void draw_elements(const Elements& e, const WorldRect& view, DrawSink& sink) {
+void draw_elements(const Elements& e, const WorldRect& view, double ppm, DrawSink& sink) {
   for (ElementId k = 0; k < static_cast<ElementId>(e.size()); ++k) {
-    if (!in_view(view, e.x[k], e.y[k], e.r[k])) continue;
+    // A bounding circle under ~2 px would only repaint its body's pixels.
+    if (e.r[k] * ppm < 0.5 * kMinDetailPx || !in_view(view, e.x[k], e.y[k], e.r[k])) continue;
     sink.circle(Layer::Overlay, centre_of(e, k), static_cast<float>(e.r[k]), kNone, palette::kBoundingCircle, 1.0f);
   }
 }
@@ -354,10 +358,10 @@ void draw_scene(const OverlayScene& s, const OverlayFlags& f, const Camera& came
   const bool have_elements = s.elements != nullptr;
   if (f.grid && s.grid != nullptr && s.grid->dim == 2) draw_grid(s, view, free, ppm, sink);
   if (f.mask && s.grid != nullptr && s.hovered_cell) draw_mask(*s.grid, *s.hovered_cell, sink);
-  if (f.bodies) draw_bodies(s, view, sink);
+  if (f.bodies) draw_bodies(s, view, ppm, sink);
   if (!have_elements) return;
   const Elements& e = *s.elements;
-  if (f.elements) draw_elements(e, view, sink);
+  if (f.elements) draw_elements(e, view, ppm, sink);
   if (f.trails) draw_trails(s.trails, sink);
   if (f.flash) draw_flashes(e, s.flashes, view, sink);
   if (f.broadphase && s.checks != nullptr)
