@@ -4,12 +4,16 @@
 #include "core/brute.hpp"
 #include "core/detector.hpp"
 #include "core/error.hpp"
+#include "physics/box2d_detector.hpp"
 #include "support/generators.hpp"
 
 namespace nbscope {
 namespace {
 
 using testdata::Layout;
+
+// "box2d" lives in physics; register it before the suites below read the registry.
+const bool kPhysicsDetectorsRegistered = (register_physics_detectors(), true);
 
 PairList reference_pairs(const Elements& e) {
   BruteDetector brute;
@@ -19,14 +23,13 @@ PairList reference_pairs(const Elements& e) {
   return out;
 }
 
-// Checks that `pairs` is exactly brute force's answer, each pair once with i < j.
-::testing::AssertionResult same_as_brute(const Elements& e, PairList pairs) {
+// Checks that `pairs` is exactly `ref` (sorted), each pair once with i < j.
+::testing::AssertionResult same_as(const PairList& ref, PairList pairs) {
   for (const Pair& p : pairs)
     if (!(p.i < p.j)) return ::testing::AssertionFailure() << "pair (" << p.i << "," << p.j << ") is not i < j";
   sort_pairs(pairs);
   for (std::size_t k = 1; k < pairs.size(); ++k)
     if (pairs[k] == pairs[k - 1]) return ::testing::AssertionFailure() << "pair (" << pairs[k].i << "," << pairs[k].j << ") twice";
-  const PairList ref = reference_pairs(e);
   const PairList missing = pairs_missing_from(ref, pairs);
   const PairList extra = pairs_missing_from(pairs, ref);
   if (missing.empty() && extra.empty()) return ::testing::AssertionSuccess();
@@ -36,6 +39,9 @@ PairList reference_pairs(const Elements& e) {
   if (!extra.empty()) out << "; first extra (" << extra[0].i << "," << extra[0].j << ")";
   return out;
 }
+
+// Checks that `pairs` is exactly brute force's answer on `e`.
+::testing::AssertionResult same_as_brute(const Elements& e, PairList pairs) { return same_as(reference_pairs(e), std::move(pairs)); }
 
 struct Family {
   Layout layout;
@@ -56,44 +62,58 @@ std::vector<Family> families() {
     for (std::int64_t n : {std::int64_t{0}, std::int64_t{1}, std::int64_t{2}, std::int64_t{3}, std::int64_t{17},
                            std::int64_t{100}, std::int64_t{640}, std::int64_t{2000}, kLargestSet}) {
       n = std::min(n, kLargestSet);
-      if (layout == Layout::OnePoint && n > 1000) n = 1000;  // n(n-1)/2 pairs
+      if ((layout == Layout::OnePoint || layout == Layout::OneCell) && n > 1000) n = 1000;  // n(n-1)/2 pairs
       for (std::uint64_t seed = 1; seed <= 3; ++seed) out.push_back({layout, n, seed});
     }
   }
   return out;
 }
 
-class EveryDetector : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(EveryDetector, MatchesBruteForceIn2D) {
-  auto detector = make_detector(GetParam());
-  if (!detector->supports_dim(2)) GTEST_SKIP() << GetParam() << " is not a 2D detector";
-  const std::vector<Family> all = families();
-  ASSERT_GE(all.size(), 200u);
-  PairList pairs;
-  for (const Family& f : all) {
-    const Elements e = testdata::make_layout(f.layout, f.n, 2, f.seed);
-    SCOPED_TRACE(testdata::layout_name(f.layout) + " n=" + std::to_string(f.n) + " seed=" + std::to_string(f.seed));
-    detector->detect(e, DetectOptions{}, pairs);  // the same instance throughout: arrays are reused
-    ASSERT_TRUE(same_as_brute(e, pairs));
-  }
+// Every registered detector supporting `dim`, one instance each (reused across sets, as in a simulation).
+std::vector<std::unique_ptr<Detector>> detectors_for(int dim) {
+  std::vector<std::unique_ptr<Detector>> out;
+  for (const DetectorInfo& info : detector_infos())
+    if ((dim == 2 && info.dim2) || (dim == 3 && info.dim3)) out.push_back(info.make());
+  return out;
 }
 
-TEST_P(EveryDetector, MatchesBruteForceIn3D) {
-  auto detector = make_detector(GetParam());
-  if (!detector->supports_dim(3)) GTEST_SKIP() << GetParam() << " is not a 3D detector";
+// Runs every detector of `dim` on every generated set of `layout`; brute force runs once per set.
+// Returns the number of sets checked.
+int check_layout_against_brute(Layout layout, int dim, std::int64_t max_n) {
+  auto detectors = detectors_for(dim);
+  EXPECT_GE(detectors.size(), 2u);
   PairList pairs;
   int sets = 0;
   for (const Family& f : families()) {
-    if (f.n > 2000) continue;
-    const Elements e = testdata::make_layout(f.layout, f.n, 3, f.seed);
-    SCOPED_TRACE(testdata::layout_name(f.layout) + " 3D n=" + std::to_string(f.n) + " seed=" + std::to_string(f.seed));
-    detector->detect(e, DetectOptions{}, pairs);
-    ASSERT_TRUE(same_as_brute(e, pairs));
+    if (f.layout != layout || f.n > max_n) continue;
+    const Elements e = testdata::make_layout(f.layout, f.n, dim, f.seed);
+    const PairList ref = reference_pairs(e);
+    for (auto& detector : detectors) {
+      SCOPED_TRACE(std::string(detector->name()) + " " + testdata::layout_name(f.layout) + " " + std::to_string(dim) +
+                   "D n=" + std::to_string(f.n) + " seed=" + std::to_string(f.seed));
+      detector->detect(e, DetectOptions{}, pairs);
+      EXPECT_TRUE(same_as(ref, pairs));
+      if (::testing::Test::HasFailure()) return sets;
+    }
     ++sets;
   }
-  EXPECT_GE(sets, 200);
+  return sets;
 }
+
+class EveryLayout : public ::testing::TestWithParam<Layout> {};
+
+TEST_P(EveryLayout, EveryDetectorMatchesBruteForceIn2D) {
+  EXPECT_EQ(check_layout_against_brute(GetParam(), 2, kLargestSet), 27);  // 9 sizes x 3 seeds: 243 sets in all
+}
+
+TEST_P(EveryLayout, EveryDetectorMatchesBruteForceIn3D) {
+  EXPECT_GE(check_layout_against_brute(GetParam(), 3, 2000), 24);  // >= 8 sizes x 3 seeds: >= 216 sets in all
+}
+
+INSTANTIATE_TEST_SUITE_P(Families, EveryLayout, ::testing::ValuesIn(testdata::all_layouts()),
+                         [](const auto& info) { return testdata::layout_name(info.param); });
+
+class EveryDetector : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EveryDetector, TracedRunFindsTheSamePairs) {
   auto detector = make_detector(GetParam());

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "app/commands.hpp"
+#include "app/grid_flags.hpp"
 #include "core/detector.hpp"
 #include "core/error.hpp"
 #include "io/csv.hpp"
@@ -16,12 +17,7 @@ int run_pairs(Args& args) {
   const long long repeat = args.integer("--repeat", 1, 1'000'000).value_or(1);
   DetectOptions options;
   options.max_pairs = static_cast<std::size_t>(args.integer("--max-pairs", 0, 1'000'000'000).value_or(kDefaultMaxPairs));
-  if (const auto d = args.number("--cell-size")) options.grid.cell_size = *d;
-  if (const auto o = args.value("--origin")) {
-    double p[3] = {0, 0, 0};
-    parse_point("--origin", *o, p);
-    options.grid.origin = std::array<double, 3>{p[0], p[1], p[2]};
-  }
+  const GridFlags grid_flags = take_grid_flags(args);
   args.finish();
   if (!input) throw Error("pairs: --input ELEMENTS.csv is required");
 
@@ -29,6 +25,7 @@ int run_pairs(Args& args) {
   const Elements elements = read_elements_csv(*input);
   if (!detector->supports_dim(elements.dim))
     throw Error(*input + ": algorithm '" + algorithm + "' does not support " + std::to_string(elements.dim) + "D elements");
+  options.grid = grid_options_for(grid_flags, elements.dim);
 
   PairList pairs, first;
   double best = 1e300, total = 0;
