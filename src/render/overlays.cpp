@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 
 namespace nbscope::render {
 
@@ -126,7 +127,9 @@ void draw_ids(const Elements& e, const WorldRect& view, double ppm, DrawSink& si
   char buf[16];
   for (ElementId k = 0; k < static_cast<ElementId>(e.size()); ++k) {
     if (e.r[k] * ppm < kMinIdRadiusPx || !in_view(view, e.x[k], e.y[k], 0)) continue;
-    std::snprintf(buf, sizeof buf, "%d", k);
+    const int digits = std::snprintf(buf, sizeof buf, "%d", k);
+    // Only ids that fit inside their circle (ImGui's default font: 7 px a digit).
+    if (2.0 * e.r[k] * ppm < 7.0 * digits + 2.0) continue;
     sink.text(centre_of(e, k), buf, palette::kText);
   }
 }
@@ -232,7 +235,7 @@ void draw_lists(const OverlayScene& s, const WorldRect& view, const WorldRect& f
     if (l.secondary && (!s.focus_row || l.phase_index != *s.focus_row)) continue;
     const bool selected = s.selected >= 0 && std::find(l.chain.begin(), l.chain.end(), s.selected) != l.chain.end();
     // With a selection, the other lists step back so the selected element's lists read clearly.
-    const Rgba colour = s.selected >= 0 && !selected ? list_colour(l).with_alpha(55) : list_colour(l);
+    const Rgba colour = s.selected >= 0 && !selected ? list_colour(l).with_alpha(90) : list_colour(l);
     const float width = selected ? 3.0f : 1.5f;
     // Lists of different kinds between the same two elements run side by side, a few pixels apart.
     const float side = static_cast<float>((l.kind == "y-list" || l.kind == "z-list" ? 2.5 : -2.5) / ppm);
@@ -283,13 +286,19 @@ void draw_mask(const Grid& g, std::array<std::int32_t, 2> cell, DrawSink& sink) 
 
 // ---- pairs and checks -------------------------------------------------------------------------
 
-void draw_pair_list(const Elements& e, const PairList& pairs, const WorldRect& view, Rgba colour, float width,
-                    Layer layer, DrawSink& sink) {
+// Segments between the centres of each pair. Zoomed far out a segment shrinks to a dot; those fade
+// (down to a quarter) so that thousands of pairs tint the picture instead of hiding the bodies.
+void draw_pair_list(const Elements& e, const PairList& pairs, const WorldRect& view, double ppm, Rgba colour,
+                    float width, Layer layer, DrawSink& sink) {
   const auto n = static_cast<ElementId>(e.size());
   for (const Pair& p : pairs) {
     if (p.i < 0 || p.j < 0 || p.i >= n || p.j >= n) continue;
     const Vec2 a = centre_of(e, p.i), b = centre_of(e, p.j);
-    if (segment_in_view(view, a, b)) sink.line(layer, a, b, colour, width);
+    if (!segment_in_view(view, a, b)) continue;
+    const double length_px = (b - a).norm() * ppm;
+    const Rgba c = length_px >= 4.0 ? colour
+                                    : colour.with_alpha(static_cast<std::uint8_t>(colour.a * std::max(0.25, length_px / 4.0)));
+    sink.line(layer, a, b, c, width);
   }
 }
 
@@ -307,7 +316,7 @@ void draw_violations(const Elements& e, const PairList& violations, DrawSink& si
 
 // ---- selection, trails, flashes ---------------------------------------------------------------
 
-void draw_selection(const OverlayScene& s, const WorldRect& view, DrawSink& sink) {
+void draw_selection(const OverlayScene& s, const WorldRect& view, double ppm, DrawSink& sink) {
   const Elements& e = *s.elements;
   const ElementId k = s.selected;
   if (k < 0 || k >= static_cast<ElementId>(e.size())) return;
@@ -321,7 +330,7 @@ void draw_selection(const OverlayScene& s, const WorldRect& view, DrawSink& sink
     PairList mine;
     for (const Pair& p : *s.pairs)
       if (p.i == k || p.j == k) mine.push_back(p);
-    draw_pair_list(e, mine, view, palette::kSelection, 2.5f, Layer::Overlay, sink);
+    draw_pair_list(e, mine, view, ppm, palette::kSelection, 2.5f, Layer::Overlay, sink);
   }
   sink.circle(Layer::Top, centre_of(e, k), static_cast<float>(e.r[k]), kNone, palette::kSelection, 2.0f, 5.0f);
 }
@@ -365,12 +374,22 @@ void draw_scene(const OverlayScene& s, const OverlayFlags& f, const Camera& came
   if (f.trails) draw_trails(s.trails, sink);
   if (f.flash) draw_flashes(e, s.flashes, view, sink);
   if (f.broadphase && s.checks != nullptr)
-    draw_pair_list(e, s.checks->broadphase_only, view, palette::kBroadphaseOnly, 1.0f, Layer::Overlay, sink);
-  if (f.pairs && s.pairs != nullptr) draw_pair_list(e, *s.pairs, view, palette::kPair, 1.5f, Layer::Overlay, sink);
-  if (f.checks && s.checks != nullptr)
-    draw_pair_list(e, s.checks->confirmed, view, palette::kConfirmedPair, 1.5f, Layer::Overlay, sink);
+    draw_pair_list(e, s.checks->broadphase_only, view, ppm, palette::kBroadphaseOnly, 1.0f, Layer::Overlay, sink);
+  const bool confirmed = f.checks && s.checks != nullptr && !s.checks->confirmed.empty();
+  if (f.pairs && s.pairs != nullptr) {
+    // A confirmed pair is drawn once, in the check's colour; the rest of A in the pairs' colour.
+    if (confirmed) {
+      PairList unconfirmed;
+      std::set_difference(s.pairs->begin(), s.pairs->end(), s.checks->confirmed.begin(), s.checks->confirmed.end(),
+                          std::back_inserter(unconfirmed));
+      draw_pair_list(e, unconfirmed, view, ppm, palette::kPair, 1.5f, Layer::Overlay, sink);
+    } else {
+      draw_pair_list(e, *s.pairs, view, ppm, palette::kPair, 1.5f, Layer::Overlay, sink);
+    }
+  }
+  if (confirmed) draw_pair_list(e, s.checks->confirmed, view, ppm, palette::kConfirmedPair, 1.5f, Layer::Overlay, sink);
   if (f.lists && s.lists != nullptr) draw_lists(s, view, free, ppm, sink);
-  draw_selection(s, view, sink);
+  draw_selection(s, view, ppm, sink);
   if (f.checks && s.checks != nullptr) draw_violations(e, s.checks->violations, sink);
   if (f.ids || f.lists) draw_ids(e, view, ppm, sink);
   if (s.drag) sink.line(Layer::Top, (*s.drag)[0], (*s.drag)[1], palette::kDragLine, 1.5f);

@@ -38,7 +38,7 @@ struct ShapeDraw {
 
 // The frame's check results, as pairs of element ids (i < j).
 struct CheckDraw {
-  PairList confirmed;        // detected and touching per Box2D at the same positions
+  PairList confirmed;        // detected and touching per Box2D at the same positions (sorted)
   PairList broadphase_only;  // in Box2D's broadphase (fat AABBs overlap) but not detected
   PairList violations;       // any broken invariant: wrong, missing or unconfirmed pairs
 };
@@ -74,7 +74,7 @@ struct OverlayScene {
   const Grid* grid = nullptr;
   std::span<const ShapeDraw> shapes;
   std::span<const Vec2> shape_points;
-  const PairList* pairs = nullptr;
+  const PairList* pairs = nullptr;               // A, sorted (i, j)
   const CheckDraw* checks = nullptr;
   const std::vector<TracedList>* lists = nullptr;  // from traced_lists()
   ElementId selected = -1;
