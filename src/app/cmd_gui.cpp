@@ -5,6 +5,7 @@
 //
 // Index: options | headless fallback | applying the panels' requests | the window loop | run_gui.
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -24,6 +25,10 @@ namespace nbscope {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// Ctrl+C / SIGTERM close the window like its close button, so the settings are still saved.
+volatile std::sig_atomic_t g_stop_requested = 0;
+void request_stop(int) { g_stop_requested = 1; }
 
 // ---- options ----------------------------------------------------------------------------------
 
@@ -47,6 +52,12 @@ GuiOptions parse_gui_options(Args& args) {
   if (o.view.screenshot && !o.frames) throw Error("--screenshot: needs --frames N (how many frames to run first)");
   if (o.view.screenshot) check_screenshot_path(*o.view.screenshot);
   return o;
+}
+
+std::string absolute_path(const std::string& path) {
+  std::error_code ec;
+  const auto p = std::filesystem::absolute(path, ec);
+  return ec ? path : p.lexically_normal().string();
 }
 
 bool have_display() {
@@ -135,7 +146,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
     session.speed = settings->speed;
   }
   view.on_scene_loaded(loop);
-  if (settings != nullptr && settings->camera && settings->last_scene == session.scene_path)
+  if (settings != nullptr && settings->camera && settings->last_scene == absolute_path(session.scene_path))
     view.camera().set({(*settings->camera)[0], (*settings->camera)[1]}, (*settings->camera)[2]);
 
   bool failed = false;
@@ -145,7 +156,9 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   auto last = Clock::now();
   double fps_window_start = window.time();
   int fps_frames = 0;
-  for (std::int64_t rendered = 0; !window.should_close(); ++rendered) {
+  std::signal(SIGINT, &request_stop);
+  std::signal(SIGTERM, &request_stop);
+  for (std::int64_t rendered = 0; !window.should_close() && g_stop_requested == 0; ++rendered) {
     window.poll_events();
     const auto now = Clock::now();
     session.frame_ms = std::chrono::duration<double, std::milli>(now - last).count();
@@ -203,7 +216,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   if (settings != nullptr) {
     settings->overlays = view.state().overlays;
     settings->panels = view.state().panel_open;
-    settings->last_scene = session.scene_path;
+    settings->last_scene = absolute_path(session.scene_path);  // the next start may be elsewhere
     settings->algorithm = loop.algorithm();
     settings->camera = std::array<double, 3>{view.camera().centre().x(), view.camera().centre().y(),
                                              view.camera().pixels_per_metre()};
