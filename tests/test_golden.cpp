@@ -201,6 +201,17 @@ TEST(RenderErrors, UnwritableScreenshotPath) {
                         "directory");
 }
 
+TEST(RenderErrors, UnknownOverlayPanelOrElement) {
+  const std::string scene = absolute_paths("--scene assets/scenes/book-fig-3-15.json") + " --frames 1";
+  const std::string out = " --screenshot '" + kOut + "/bad_flags.png'";
+  expect_one_line_error(testcli::run("headless " + scene + out + " --overlays grid,+nonsense"), "nonsense");
+  expect_one_line_error(testcli::run("headless " + scene + out + " --panels -nonsense"), "nonsense");
+  expect_one_line_error(testcli::run("headless " + scene + out + " --select 9"), "--select");  // 9 elements: 0..8
+  expect_one_line_error(testcli::run("headless " + scene + out + " --camera 1,2"), "--camera");
+  expect_one_line_error(testcli::run("headless " + scene + out + " --size 10x10"), "--size");
+  EXPECT_FALSE(std::filesystem::exists(kOut + "/bad_flags.png"));
+}
+
 TEST(RenderErrors, OsmesaFailure) {
   // Told to offer GL 2.1 only, Mesa refuses the 3.3 core context nbscope asks for.
   const std::string out = kOut + "/osmesa_fail.png";

@@ -140,6 +140,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   const bool scripted = o.frames.has_value();
   window.set_vsync(!scripted);
   GlView view(window, window.handle(), o.view);
+  view.check_selection(loop);
   if (settings != nullptr) {
     if (o.view.overlays.empty()) view.state().overlays = settings->overlays;
     if (o.view.panels.empty()) view.state().panel_open = settings->panels;

@@ -148,6 +148,12 @@ void GlView::fit_camera(const FrameLoop& loop) {
   camera_.fit(box, 0.06, left ? host_.left_width() : 0.0, right ? host_.right_width() : 0.0);
 }
 
+void GlView::check_selection(const FrameLoop& loop) const {
+  if (state_.selected >= loop.elements().size())
+    throw Error("--select: element " + std::to_string(state_.selected) + " does not exist (the scene has " +
+                std::to_string(loop.elements().size()) + " elements, 0-based)");
+}
+
 void GlView::on_scene_loaded(const FrameLoop& loop, bool fit) {
   ++generation_;
   trails_.clear();

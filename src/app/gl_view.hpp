@@ -46,6 +46,8 @@ class GlView {
   GlView(const GlView&) = delete;
   GlView& operator=(const GlView&) = delete;
 
+  // Error("--select: ...") when the element chosen on the command line is not in `loop`'s scene.
+  void check_selection(const FrameLoop& loop) const;
   // A scene was (re)loaded: forget trails, flashes and lists; with `fit`, point the camera at it.
   void on_scene_loaded(const FrameLoop& loop, bool fit = true);
   // Bookkeeping after each FrameLoop::step(): trails of the selection, cell-change flashes.

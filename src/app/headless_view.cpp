@@ -30,6 +30,7 @@ class OsmesaView final : public HeadlessView {
         view_(*context_, nullptr, options) {
     session_.scene_path = loop.scene().path;
     session_.scene_files = bundled_scene_files();
+    view_.check_selection(loop);
     view_.on_scene_loaded(loop);
   }
 
