@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <map>
+#include <vector>
 
 #include "app/commands.hpp"
 #include "app/frame_loop.hpp"
@@ -38,43 +39,97 @@ class Progress {
   int last_ = -1;
 };
 
-std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const RunReport& run) {
-  std::int64_t total = 0, bad_frames = 0, first = -1;
+// "A==R 30, T-in-A 7" for the invariants `run` broke.
+std::string broken_text(const AlgorithmRun& run, std::int64_t& total, std::int64_t& bad_frames, std::int64_t& first) {
   std::array<std::int64_t, kInvariantCount> by{};
-  double physics = 0, detection = 0, check = 0;
-  std::map<std::string, std::int64_t> refs;
+  total = bad_frames = 0;
+  first = -1;
   for (const FrameReport& f : run.frames) {
     for (std::size_t k = 0; k < by.size(); ++k) by[k] += f.broken[k];
     total += f.violation_count();
     if (f.violation_count() > 0 && bad_frames++ == 0) first = f.frame;
-    physics += f.timings.physics_ms;
-    detection += f.timings.detection_ms;
-    check += f.timings.check_ms;
-    ++refs[f.reference];
   }
-  const double n = std::max<double>(1, static_cast<double>(run.frames.size()));
+  std::string s;
+  for (int k = 0; k < kInvariantCount; ++k)
+    if (by[static_cast<std::size_t>(k)] > 0)
+      s += (s.empty() ? "" : ", ") + std::string(invariant_name(static_cast<Invariant>(k))) + " " + std::to_string(by[static_cast<std::size_t>(k)]);
+  return s;
+}
+
+double mean_ms(const AlgorithmRun& run, double FrameTimings::*field) {
+  double total = 0;
+  for (const FrameReport& f : run.frames) total += f.timings.*field;
+  return run.frames.empty() ? 0 : total / static_cast<double>(run.frames.size());
+}
+
+// The one line on stdout: what ran, whether every invariant held, where it broke, the mean timings.
+std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const RunReport& report) {
+  std::map<std::string, std::int64_t> refs;
+  for (const AlgorithmRun& run : report.runs)
+    for (const FrameReport& f : run.frames) ++refs[f.reference];
   std::string refs_text;
   for (const auto& [name, count] : refs) refs_text += (refs_text.empty() ? "" : ", ") + name;
-  char head[512];
-  std::snprintf(head, sizeof head, "headless: %s, %s%s%s, %zu frames, %lld elements: ", loop.scene().name.c_str(), o.algorithm.c_str(),
-                o.fault == Fault::None ? "" : ", fault ", o.fault == Fault::None ? "" : fault_name(o.fault), run.frames.size(),
-                static_cast<long long>(loop.elements().size()));
-  std::string s = head;
-  if (total == 0) {
-    s += "all " + std::to_string(kInvariantCount) + " invariants held in every frame (reference " + refs_text + ")";
-  } else {
-    s += std::to_string(total) + " violations in " + std::to_string(bad_frames) + " frames (";
-    bool sep = false;
-    for (int k = 0; k < kInvariantCount; ++k) {
-      if (by[static_cast<std::size_t>(k)] == 0) continue;
-      s += (sep ? ", " : "") + std::string(invariant_name(static_cast<Invariant>(k))) + " " + std::to_string(by[static_cast<std::size_t>(k)]);
-      sep = true;
-    }
-    s += "), first in frame " + std::to_string(first) + " (reference " + refs_text + ")";
+  std::string names;
+  for (const AlgorithmRun& run : report.runs) names += (names.empty() ? "" : ",") + run.algorithm;
+  const std::size_t frames = report.runs.empty() ? 0 : report.runs.front().frames.size();
+  std::string s = "headless: " + loop.scene().name + ", " + names + (o.fault == Fault::None ? "" : std::string(", fault ") + fault_name(o.fault)) +
+                  ", " + std::to_string(frames) + " frames, " + std::to_string(loop.elements().size()) + " elements: ";
+  std::string failures;
+  for (const AlgorithmRun& run : report.runs) {
+    std::int64_t total = 0, bad_frames = 0, first = -1;
+    const std::string broken = broken_text(run, total, bad_frames, first);
+    if (total == 0) continue;
+    failures += (failures.empty() ? "" : "; ") + (report.runs.size() > 1 ? run.algorithm + ": " : std::string()) + std::to_string(total) +
+                " violations in " + std::to_string(bad_frames) + " frames (" + broken + "), first in frame " + std::to_string(first);
   }
-  char tail[200];
-  std::snprintf(tail, sizeof tail, "; ms per frame: physics %.3f, detection %.3f, check %.3f", physics / n, detection / n, check / n);
-  return s + tail;
+  if (failures.empty()) {
+    s += "all " + std::to_string(kInvariantCount) + " invariants held in every frame" + (report.runs.size() > 1 ? " for every algorithm" : "");
+  } else {
+    s += failures;
+  }
+  s += " (reference " + refs_text + ")";
+  if (!report.note.empty()) s += " (" + report.note + ")";
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "; ms per frame: physics %.3f, detection", report.runs.empty() ? 0.0 : mean_ms(report.runs.front(), &FrameTimings::physics_ms));
+  s += buf;
+  double check = 0;
+  for (const AlgorithmRun& run : report.runs) {
+    std::snprintf(buf, sizeof buf, "%s%s %.3f", &run == &report.runs.front() ? " " : ", ", report.runs.size() > 1 ? run.algorithm.c_str() : "",
+                  mean_ms(run, &FrameTimings::detection_ms));
+    s += report.runs.size() > 1 ? buf : buf + 1;  // one algorithm: no name
+    check += mean_ms(run, &FrameTimings::check_ms);
+  }
+  std::snprintf(buf, sizeof buf, ", check %.3f", check);
+  return s + buf;
+}
+
+// The detectors `--algorithm` names: one, a comma-separated list, or "all" (every 2D detector;
+// brute only while brute force is the reference anyway). Sets `note` when brute is left out.
+std::vector<std::string> algorithms_of(const std::string& text, std::int64_t elements, std::int64_t brute_limit, std::string& note) {
+  std::vector<std::string> names;
+  if (text == "all") {
+    for (const DetectorInfo& d : detector_infos()) {
+      if (!d.dim2) continue;
+      if (d.name == "brute" && elements > brute_limit) {
+        note = "brute left out of 'all': " + std::to_string(elements) + " elements is past --brute-limit " + std::to_string(brute_limit);
+        continue;
+      }
+      names.push_back(d.name);
+    }
+    return names;
+  }
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', start);
+    const std::string name = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (name.empty()) throw Error("--algorithm: empty name in '" + text + "'");
+    for (const std::string& n : names)
+      if (n == name) throw Error("--algorithm: '" + name + "' named twice");
+    names.push_back(name);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return names;
 }
 
 }  // namespace
@@ -97,40 +152,50 @@ HeadlessOptions parse_headless_options(Args& args) {
 }
 
 int run_headless_loop(const HeadlessOptions& o) {
+  std::string note;
+  std::vector<std::string> names = algorithms_of(o.algorithm, 0, o.brute_limit, note);
   FrameLoopOptions lo;
-  lo.algorithm = o.algorithm;
+  lo.algorithm = o.algorithm == "all" ? "nbs" : names.front();
   lo.fault = o.fault;
   lo.brute_limit = o.brute_limit;
   FrameLoop loop(lo);  // an unknown algorithm fails here, before the scene is read
+  for (const std::string& name : names) make_detector(name);
   loop.load_scene_file(o.scene);
+  if (o.algorithm == "all") {
+    names = algorithms_of(o.algorithm, loop.elements().size(), o.brute_limit, note);
+    loop.set_algorithm(names.front());
+  }
+  loop.set_comparison_algorithms(std::vector<std::string>(names.begin() + 1, names.end()));
   // The screenshot's context and shaders are set up first, so a bad --gl/--shader-dir/path fails at once.
   std::unique_ptr<HeadlessView> view = o.view.screenshot ? make_headless_view(o.view, loop) : nullptr;
 
-  RunReport run;
-  run.scene_path = o.scene;
-  run.scene_name = loop.scene().name;
-  run.algorithm = o.algorithm;
-  run.fault = fault_name(o.fault);
-  run.fault_description = fault_description(o.fault);
-  run.reference_policy = loop.reference_policy();
-  run.scope_note = FrameLoop::scope_note();
-  run.frames_requested = o.frames;
-  run.frames.reserve(static_cast<std::size_t>(std::min<std::int64_t>(o.frames, 100'000)));
+  RunReport report;
+  report.scene_path = o.scene;
+  report.scene_name = loop.scene().name;
+  report.fault = fault_name(o.fault);
+  report.fault_description = fault_description(o.fault);
+  report.reference_policy = loop.reference_policy();
+  report.scope_note = FrameLoop::scope_note();
+  report.note = note;
+  report.frames_requested = o.frames;
+  for (const std::string& name : names) {
+    report.runs.push_back({name, {}});
+    report.runs.back().frames.reserve(static_cast<std::size_t>(std::min<std::int64_t>(o.frames, 100'000)));
+  }
 
   Progress progress(!o.quiet && ::isatty(STDERR_FILENO) == 1, o.frames);
-  bool all_ok = true;
   for (std::int64_t k = 0; k < o.frames; ++k) {
     loop.step();
-    run.frames.push_back(loop.report());
-    all_ok = all_ok && loop.report().ok();
+    report.runs[0].frames.push_back(loop.report());
+    for (std::size_t r = 0; r < loop.comparison_reports().size(); ++r) report.runs[r + 1].frames.push_back(loop.comparison_reports()[r]);
     if (view) view->after_step(loop);
     progress.update(k + 1);
   }
   progress.finish();
   if (view) std::fprintf(stderr, "nbscope: %s\n", view->write_screenshot(loop).c_str());
-  if (o.report) write_run_report(*o.report, run);
-  std::printf("%s\n", summary_of(o, loop, run).c_str());
-  return all_ok ? 0 : 1;
+  if (o.report) write_run_report(*o.report, report);
+  std::printf("%s\n", summary_of(o, loop, report).c_str());
+  return report.passed() ? 0 : 1;
 }
 
 int run_headless(Args& args) { return run_headless_loop(parse_headless_options(args)); }

@@ -4,6 +4,7 @@
 #include "app/frame_loop.hpp"
 
 #include <chrono>
+#include <cstdio>
 
 #include "check/check.hpp"
 #include "core/error.hpp"
@@ -27,28 +28,56 @@ const PairList kNoPairs;
 
 }  // namespace
 
-struct FrameLoop::Impl {
-  FrameLoopOptions options;
-  Scene scene;
-  std::unique_ptr<PhysicsWorld> world;
+// One detector's view of the frame: its pairs, grid, cells and check report.
+struct Lane {
+  std::string name;
   std::unique_ptr<Detector> detector;
-  FrameChecker checker;
-  DetectOptions detect_options;
-  Elements stale;             // last frame's elements (stale-positions fault)
-  Elements detected_on;       // what the detector was given this frame (when not the world's elements)
-  bool detected_on_world = true;
   PairList pairs;
   Grid grid;
   std::vector<CellIndex> cells;
   FrameReport report;
 
-  explicit Impl(FrameLoopOptions o) : options(std::move(o)), checker(CheckOptions{options.brute_limit}) {
-    detector = make_2d_detector(options.algorithm);
+  explicit Lane(std::string_view algorithm) : name(algorithm), detector(make_2d_detector(algorithm)) {}
+
+  // Detection on `input` with the output side of `fault`; timed into report.timings.detection_ms.
+  void detect(const Elements& input, const DetectOptions& options, Fault fault, const std::string& where) {
+    try {
+      const auto t0 = std::chrono::steady_clock::now();
+      detector->detect(input, options, pairs);
+      sort_pairs(pairs);
+      const Grid* own = detector->last_grid();
+      grid = own != nullptr ? *own : make_grid(input, options.grid);
+      integerise_cells(input, grid, cells);
+      apply_output_fault(fault, grid, cells, pairs);
+      report.timings.detection_ms = ms_since(t0);
+    } catch (const Error& e) {
+      throw Error(where + name + ": " + e.what());
+    }
   }
+};
+
+struct FrameLoop::Impl {
+  FrameLoopOptions options;
+  Scene scene;
+  std::unique_ptr<PhysicsWorld> world;
+  Lane main;
+  std::vector<Lane> others;               // comparison algorithms
+  std::vector<std::string> other_names;
+  std::vector<FrameReport> other_reports;
+  FrameChecker checker;
+  PairList main_reference;    // R of the main lane this frame
+  DetectOptions detect_options;
+  Elements stale;             // last frame's elements (stale-positions fault)
+  Elements detected_on;       // what the detectors were given this frame when not the world's elements
+  bool detected_on_world = true;
+
+  explicit Impl(FrameLoopOptions o)
+      : options(std::move(o)), main(options.algorithm), checker(CheckOptions{options.brute_limit}) {}
 
   const Elements& detector_input() const { return detected_on_world ? world->elements() : detected_on; }
 
-  // Detection (with the fault) and the check of the world's current frame; physics_ms is kept.
+  // Detection (with the fault) and the check of the world's current frame, for every lane;
+  // physics_ms is kept.
   void detect_and_check() {
     const Elements& now = world->elements();
     detected_on_world = true;
@@ -60,56 +89,68 @@ struct FrameLoop::Impl {
       detected_on.y.head(old_n) = stale.y.head(old_n);
       detected_on_world = false;
     }
+    const std::string where = scene.path + ": frame " + std::to_string(world->frame()) + ": ";
     const Elements& input = detector_input();
-    try {
-      const auto t0 = std::chrono::steady_clock::now();
-      detector->detect(input, detect_options, pairs);
-      sort_pairs(pairs);
-      const Grid* own = detector->last_grid();
-      grid = own != nullptr ? *own : make_grid(input, detect_options.grid);
-      integerise_cells(input, grid, cells);
-      apply_output_fault(options.fault, grid, cells, pairs);
-      report.timings.detection_ms = ms_since(t0);
-    } catch (const Error& e) {
-      throw Error(scene.path + ": frame " + std::to_string(world->frame()) + ": " + detector->name().data() + ": " + e.what());
-    }
-    report.frame = world->frame();
+    main.detect(input, detect_options, options.fault, where);
+    for (Lane& lane : others) lane.detect(input, detect_options, options.fault, where);
+
     if (!options.checks) {
-      const FrameTimings keep = report.timings;
-      report = FrameReport{};
-      report.frame = world->frame();
-      report.timings = keep;
-      report.timings.check_ms = 0;
-      report.counts.elements = now.size();
-      report.counts.a = static_cast<std::int64_t>(pairs.size());
-      return;
+      for (Lane* lane : lanes()) {
+        const double detection_ms = lane->report.timings.detection_ms, physics_ms = lane->report.timings.physics_ms;
+        lane->report = FrameReport{};
+        lane->report.frame = world->frame();
+        lane->report.timings = {physics_ms, detection_ms, 0};
+        lane->report.counts.elements = now.size();
+        lane->report.counts.bodies = world->body_count();
+        lane->report.counts.a = static_cast<std::int64_t>(lane->pairs.size());
+      }
+    } else {
+      // The first lane's check time includes the sets every lane shares (F, G, T).
+      auto t0 = std::chrono::steady_clock::now();
+      checker.begin_frame(*world, detect_options);
+      for (Lane* lane : lanes()) {
+        CheckInput in;
+        in.algorithm = lane->detector->name();
+        in.pairs = &lane->pairs;
+        in.cells = &lane->cells;
+        in.drop_box2d_contact = options.fault == Fault::DropBox2dContact;
+        checker.check(in, lane->report);
+        if (lane == &main) main_reference = checker.reference_pairs();
+        lane->report.timings.check_ms = ms_since(t0);
+        t0 = std::chrono::steady_clock::now();
+      }
     }
-    const auto t0 = std::chrono::steady_clock::now();
-    CheckInput in;
-    in.frame = world->frame();
-    in.world = world.get();
-    in.algorithm = detector->name();
-    in.pairs = &pairs;
-    in.cells = &cells;
-    in.options = &detect_options;
-    in.drop_box2d_contact = options.fault == Fault::DropBox2dContact;
-    checker.check(in, report);
-    report.timings.check_ms = ms_since(t0);
+    other_reports.clear();
+    for (const Lane& lane : others) other_reports.push_back(lane.report);
+  }
+
+  std::vector<Lane*> lanes() {
+    std::vector<Lane*> all{&main};
+    for (Lane& lane : others) all.push_back(&lane);
+    return all;
+  }
+
+  void set_physics_ms(double ms) {
+    for (Lane* lane : lanes()) lane->report.timings.physics_ms = ms;
   }
 
   void build(const Scene& s) {
     DetectOptions opts;
     if (s.cell_size) opts.grid.cell_size = *s.cell_size;
     if (s.origin) opts.grid.origin = std::array<double, 3>{s.origin->x, s.origin->y, 0};
+    if (s.cells) opts.grid.cells = std::array<std::int64_t, 3>{(*s.cells)[0], (*s.cells)[1], 1};
     auto fresh = std::make_unique<PhysicsWorld>(s);
     // A pinned cell size must hold the largest element from the start (the grid would refuse it).
-    if (s.cell_size && fresh->elements().size() > 0 && *s.cell_size < 2 * fresh->elements().max_radius())
-      throw Error(s.cell_size_where + "smaller than the largest element's diameter " + std::to_string(2 * fresh->elements().max_radius()));
+    if (s.cell_size && fresh->elements().size() > 0 && *s.cell_size < 2 * fresh->elements().max_radius()) {
+      char d[64];
+      std::snprintf(d, sizeof d, "%.6g", 2 * fresh->elements().max_radius());
+      throw Error(s.cell_size_where + "smaller than the largest element's diameter " + d);
+    }
     Scene kept = s;
     scene = std::move(kept);
     world = std::move(fresh);
     detect_options = opts;
-    report = FrameReport{};
+    for (Lane* lane : lanes()) lane->report = FrameReport{};
     stale = world->elements();
     detect_and_check();
   }
@@ -131,7 +172,9 @@ const Scene& FrameLoop::scene() const { return impl_->scene; }
 // ---- configuration -------------------------------------------------------------------------
 
 void FrameLoop::set_algorithm(std::string_view name) {
-  impl_->detector = make_2d_detector(name);
+  Lane fresh(name);
+  fresh.report = impl_->main.report;
+  impl_->main = std::move(fresh);
   impl_->options.algorithm = std::string(name);
   redetect();
 }
@@ -151,6 +194,17 @@ bool FrameLoop::checks_enabled() const { return impl_->options.checks; }
 std::string FrameLoop::reference_policy() const { return impl_->checker.reference_policy(); }
 std::string FrameLoop::scope_note() { return FrameChecker::scope_note(); }
 
+void FrameLoop::set_comparison_algorithms(const std::vector<std::string>& names) {
+  std::vector<Lane> lanes;
+  for (const std::string& name : names) lanes.emplace_back(name);
+  impl_->others = std::move(lanes);
+  impl_->other_names = names;
+  impl_->other_reports.clear();
+  redetect();
+}
+const std::vector<std::string>& FrameLoop::comparison_algorithms() const { return impl_->other_names; }
+const std::vector<FrameReport>& FrameLoop::comparison_reports() const { return impl_->other_reports; }
+
 // ---- one frame -----------------------------------------------------------------------------
 
 void FrameLoop::step() {
@@ -158,7 +212,7 @@ void FrameLoop::step() {
   impl_->stale = impl_->world->elements();
   const auto t0 = std::chrono::steady_clock::now();
   impl_->world->step();
-  impl_->report.timings.physics_ms = ms_since(t0);
+  impl_->set_physics_ms(ms_since(t0));
   impl_->detect_and_check();
 }
 
@@ -180,11 +234,11 @@ const std::vector<ElementSource>& FrameLoop::element_sources() const {
   return impl_->world ? impl_->world->sources() : kNone;
 }
 std::int64_t FrameLoop::body_count() const { return impl_->world ? impl_->world->body_count() : 0; }
-const PairList& FrameLoop::pairs() const { return impl_->pairs; }
-const Grid& FrameLoop::grid() const { return impl_->grid; }
-const std::vector<CellIndex>& FrameLoop::cells() const { return impl_->cells; }
-const FrameReport& FrameLoop::report() const { return impl_->report; }
-const PairList& FrameLoop::reference_pairs() const { return impl_->options.checks ? impl_->checker.reference_pairs() : kNoPairs; }
+const PairList& FrameLoop::pairs() const { return impl_->main.pairs; }
+const Grid& FrameLoop::grid() const { return impl_->main.grid; }
+const std::vector<CellIndex>& FrameLoop::cells() const { return impl_->main.cells; }
+const FrameReport& FrameLoop::report() const { return impl_->main.report; }
+const PairList& FrameLoop::reference_pairs() const { return impl_->options.checks ? impl_->main_reference : kNoPairs; }
 const PairList& FrameLoop::box2d_pairs() const { return impl_->options.checks ? impl_->checker.box2d_pairs() : kNoPairs; }
 const PairList& FrameLoop::touching_pairs() const { return impl_->options.checks ? impl_->checker.touching_pairs() : kNoPairs; }
 const PairList& FrameLoop::tight_aabb_pairs() const { return impl_->options.checks ? impl_->checker.tight_aabb_pairs() : kNoPairs; }
@@ -194,7 +248,7 @@ void FrameLoop::body_shapes(std::vector<BodyShape>& out) const {
   else out.clear();
 }
 
-const Detector& FrameLoop::detector() const { return *impl_->detector; }
+const Detector& FrameLoop::detector() const { return *impl_->main.detector; }
 
 void FrameLoop::trace_frame(TraceLog& out_trace, PairList& out_pairs) {
   if (!impl_->world) {
@@ -202,7 +256,7 @@ void FrameLoop::trace_frame(TraceLog& out_trace, PairList& out_pairs) {
     out_pairs.clear();
     return;
   }
-  impl_->detector->detect_traced(impl_->detector_input(), impl_->detect_options, out_pairs, out_trace);
+  impl_->main.detector->detect_traced(impl_->detector_input(), impl_->detect_options, out_pairs, out_trace);
 }
 
 // ---- drag ----------------------------------------------------------------------------------

@@ -69,6 +69,13 @@ class FrameLoop {
   [[nodiscard]] std::string reference_policy() const;
   // Which pairs A-in-F applies to, in words.
   [[nodiscard]] static std::string scope_note();
+  // More detectors to run and check on every frame beside the chosen one, on the same elements
+  // with the same fault (headless --algorithm a,b,c compares them on identical frames; the window
+  // leaves this empty). Throws Error for an unknown or 3D-only name and keeps the previous list.
+  void set_comparison_algorithms(const std::vector<std::string>& names);
+  [[nodiscard]] const std::vector<std::string>& comparison_algorithms() const;
+  // This frame's report of each comparison algorithm, in the order given.
+  [[nodiscard]] const std::vector<FrameReport>& comparison_reports() const;
 
   // ---- advancing ----
   // Advances one frame: physics, elements, detection, check. No effect without a scene.

@@ -1,8 +1,8 @@
 // nbscope check: the cross-checks of one frame (DESIGN.md "Cross-checks").
 //
 // Sets: A = the chosen algorithm's pairs; R = the reference's (brute force up to
-// CheckOptions::brute_limit elements, above it another detector: nbs, or box2d when the algorithm
-// is nbs); F = Box2D's contact list; G = pairs whose tight AABBs overlap (world.QueryAABB);
+// CheckOptions::brute_limit elements, above it and for brute itself another detector: sort, or nbs
+// when the algorithm is sort); F = Box2D's contact list; G = pairs whose tight AABBs overlap (world.QueryAABB);
 // T ⊆ G = shapes touching now. Invariants, each violation with frame, pair, both cells:
 //   A==R           A equals R (missing and extra pairs both reported);
 //   A-in-F         the pairs of A in Box2D's scope are in F — Box2D's filters (same body, no dynamic
@@ -32,12 +32,9 @@ struct CheckOptions {
 
 // What one frame's check looks at.
 struct CheckInput {
-  std::int64_t frame = 0;
-  const PhysicsWorld* world = nullptr;          // Box2D's side; its elements are the frame's elements
   std::string_view algorithm;                   // name of the detector under test
   const PairList* pairs = nullptr;              // A, sorted
   const std::vector<CellIndex>* cells = nullptr;  // the detector's cell of every element
-  const DetectOptions* options = nullptr;       // grid options the reference uses too
   bool drop_box2d_contact = false;              // the drop-box2d-contact fault (check/faults.hpp)
 };
 
@@ -53,10 +50,15 @@ class FrameChecker {
   // Which pairs A-in-F applies to, in words, for reports.
   [[nodiscard]] static std::string scope_note();
 
-  // Runs every invariant on one frame into `out` (counts, broken, violations; timings untouched).
+  // Computes what does not depend on the algorithm under test, once per frame: F, G and T (R is
+  // computed by the first check() that needs it, and shared by later ones of the frame).
+  void begin_frame(const PhysicsWorld& world, const DetectOptions& options);
+  // Runs every invariant for one algorithm's pairs into `out` (counts, broken, violations; timings
+  // untouched). begin_frame() must have been called for this frame; several algorithms may be
+  // checked against one frame.
   void check(const CheckInput& in, FrameReport& out);
 
-  // The sets of the last check, sorted: R, F, T, G.
+  // The sets of the frame, sorted: R (of the last check()), F, T, G.
   [[nodiscard]] const PairList& reference_pairs() const { return r_; }
   [[nodiscard]] const PairList& box2d_pairs() const { return f_; }
   [[nodiscard]] const PairList& touching_pairs() const { return t_; }
@@ -64,10 +66,20 @@ class FrameChecker {
 
  private:
   Detector& reference(const std::string& name);
+  // R of this frame from detector `name`, computed once per frame.
+  const PairList& reference_of(const std::string& name);
+
+  struct FrameReference {
+    std::string name;
+    PairList pairs;
+  };
 
   CheckOptions options_;
+  const PhysicsWorld* world_ = nullptr;                // of the current frame
+  DetectOptions detect_options_;
   std::vector<std::unique_ptr<Detector>> references_;  // kept: box2d keeps its tree between frames
-  PairList r_, f_, t_, g_, scope_, diff_;
+  std::vector<FrameReference> frame_references_;       // R of this frame per reference used
+  PairList r_, f_, t_, g_, scope_, f_faulty_;
 };
 
 }  // namespace nbscope

@@ -1,13 +1,15 @@
-// The headless report. Top-level keys:
-//   nbscope_report (format version 1), scene {path, name}, algorithm, fault {name, description},
-//   reference_policy, a_in_f_scope, invariants [{name, description}], frames_requested, frames_run,
-//   passed, violations {total, by_invariant, frames_with_violations, first_frame, listed},
-//   references_used {name: frames}, timing_ms {physics|detection|check: {mean, max, total}},
-//   frames [{frame, elements, bodies, reference, pairs {A, R, F, T, G, A_in_scope},
-//            left_out_of_A_in_F {same_body, no_dynamic, joint, fixture_filter, beyond_aabb},
-//            aabb_float_rounding, ms {physics, detection, check},
-//            held {invariant: true | false | null (not checked)},
-//            violations [{invariant, pair [i, j], cells [[ix, iy], [ix, iy]], what}], violations_not_listed}].
+// The headless report. Keys:
+//   nbscope_report (format version 1), scene {path, name}, algorithms [names], fault {name, description},
+//   reference_policy, a_in_f_scope, note, invariants [{name, description}], frames_requested, passed,
+//   violations_total, runs [one per algorithm:
+//     {algorithm, passed, frames_run, violations {total, by_invariant, frames_with_violations, first_frame,
+//      listed}, references_used {name: frames}, timing_ms {physics|detection|check: {mean, max, total}},
+//      frames [{frame, elements, bodies, reference, pairs {A, R, F, T, G, A_in_scope},
+//               left_out_of_A_in_F {same_body, no_dynamic, joint, fixture_filter, beyond_aabb},
+//               aabb_float_rounding, ms {physics, detection, check},
+//               held {invariant: true | false | null (not checked)},
+//               violations [{invariant, pair [i, j], cells [[ix, iy], [ix, iy]], what}],
+//               violations_not_listed}]}].
 #include "io/report_json.hpp"
 
 #include <algorithm>
@@ -95,20 +97,12 @@ json timing_json(const std::vector<FrameReport>& frames, double FrameTimings::*f
   return {{"mean", mean}, {"max", max}, {"total", total}};
 }
 
-}  // namespace
-
-std::string run_report_json(const RunReport& report) {
-  json invariants = json::array();
+json run_json(const AlgorithmRun& run) {
   std::array<std::int64_t, kInvariantCount> by{};
-  for (int k = 0; k < kInvariantCount; ++k)
-    invariants.push_back({{"name", invariant_name(static_cast<Invariant>(k))},
-                          {"description", invariant_description(static_cast<Invariant>(k))}});
   std::int64_t total = 0, listed = 0, bad_frames = 0;
   json first_frame = nullptr;
   std::map<std::string, std::int64_t> references;
-  bool all_checked = true;
-  json frames = json::array();
-  for (const FrameReport& f : report.frames) {
+  for (const FrameReport& f : run.frames) {
     for (int k = 0; k < kInvariantCount; ++k) by[static_cast<std::size_t>(k)] += f.broken[static_cast<std::size_t>(k)];
     total += f.violation_count();
     listed += static_cast<std::int64_t>(f.violations.size());
@@ -116,37 +110,75 @@ std::string run_report_json(const RunReport& report) {
       ++bad_frames;
       if (first_frame.is_null()) first_frame = f.frame;
     }
-    if (!f.checked) all_checked = false;
     ++references[f.reference];
-    frames.push_back(frame_json(f));
   }
   json by_invariant = json::object();
   for (int k = 0; k < kInvariantCount; ++k) by_invariant[invariant_name(static_cast<Invariant>(k))] = by[static_cast<std::size_t>(k)];
-  const json doc = {
-      {"nbscope_report", 1},
-      {"scene", {{"path", report.scene_path}, {"name", report.scene_name}}},
-      {"algorithm", report.algorithm},
-      {"fault", {{"name", report.fault}, {"description", report.fault_description}}},
-      {"reference_policy", report.reference_policy},
-      {"a_in_f_scope", report.scope_note},
-      {"invariants", invariants},
-      {"frames_requested", report.frames_requested},
-      {"frames_run", static_cast<std::int64_t>(report.frames.size())},
-      {"passed", all_checked && total == 0 && static_cast<std::int64_t>(report.frames.size()) == report.frames_requested},
-      {"violations",
-       {{"total", total}, {"by_invariant", by_invariant}, {"frames_with_violations", bad_frames}, {"first_frame", first_frame}, {"listed", listed}}},
-      {"references_used", references},
-      {"timing_ms",
-       {{"physics", timing_json(report.frames, &FrameTimings::physics_ms)},
-        {"detection", timing_json(report.frames, &FrameTimings::detection_ms)},
-        {"check", timing_json(report.frames, &FrameTimings::check_ms)}}}};
-  // One line per frame keeps a 600-frame report readable and greppable.
-  std::string out = doc.dump(2);
+  return {{"algorithm", run.algorithm},
+          {"passed", run.passed()},
+          {"frames_run", static_cast<std::int64_t>(run.frames.size())},
+          {"violations",
+           {{"total", total}, {"by_invariant", by_invariant}, {"frames_with_violations", bad_frames}, {"first_frame", first_frame}, {"listed", listed}}},
+          {"references_used", references},
+          {"timing_ms",
+           {{"physics", timing_json(run.frames, &FrameTimings::physics_ms)},
+            {"detection", timing_json(run.frames, &FrameTimings::detection_ms)},
+            {"check", timing_json(run.frames, &FrameTimings::check_ms)}}}};
+}
+
+}  // namespace
+
+bool AlgorithmRun::passed() const {
+  for (const FrameReport& f : frames)
+    if (!f.ok()) return false;
+  return true;
+}
+
+bool RunReport::passed() const {
+  for (const AlgorithmRun& r : runs)
+    if (!r.passed() || static_cast<std::int64_t>(r.frames.size()) != frames_requested) return false;
+  return !runs.empty();
+}
+
+std::string run_report_json(const RunReport& report) {
+  json invariants = json::array();
+  for (int k = 0; k < kInvariantCount; ++k)
+    invariants.push_back({{"name", invariant_name(static_cast<Invariant>(k))},
+                          {"description", invariant_description(static_cast<Invariant>(k))}});
+  json algorithms = json::array();
+  std::int64_t total = 0;
+  for (const AlgorithmRun& r : report.runs) {
+    algorithms.push_back(r.algorithm);
+    for (const FrameReport& f : r.frames) total += f.violation_count();
+  }
+  const json head = {{"nbscope_report", 1},
+                     {"scene", {{"path", report.scene_path}, {"name", report.scene_name}}},
+                     {"algorithms", algorithms},
+                     {"fault", {{"name", report.fault}, {"description", report.fault_description}}},
+                     {"reference_policy", report.reference_policy},
+                     {"a_in_f_scope", report.scope_note},
+                     {"note", report.note},
+                     {"invariants", invariants},
+                     {"frames_requested", report.frames_requested},
+                     {"passed", report.passed()},
+                     {"violations_total", total}};
+  // Each run's summary indented, its frames one line each: a 600-frame report stays readable and greppable.
+  std::string out = head.dump(2);
   out.pop_back();  // the closing brace
   while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
-  out += ",\n  \"frames\": [";
-  for (std::size_t k = 0; k < frames.size(); ++k) out += (k == 0 ? "\n    " : ",\n    ") + frames[k].dump();
-  out += frames.empty() ? "]\n}\n" : "\n  ]\n}\n";
+  out += ",\n  \"runs\": [";
+  for (std::size_t r = 0; r < report.runs.size(); ++r) {
+    std::string run = run_json(report.runs[r]).dump(2);
+    run.pop_back();
+    while (!run.empty() && (run.back() == '\n' || run.back() == ' ')) run.pop_back();
+    std::string indented;
+    for (const char c : run) indented += c == '\n' ? std::string("\n    ") : std::string(1, c);
+    out += (r == 0 ? "\n    " : ",\n    ") + indented + ",\n      \"frames\": [";
+    const std::vector<FrameReport>& frames = report.runs[r].frames;
+    for (std::size_t k = 0; k < frames.size(); ++k) out += (k == 0 ? "\n        " : ",\n        ") + frame_json(frames[k]).dump();
+    out += frames.empty() ? "]\n    }" : "\n      ]\n    }";
+  }
+  out += report.runs.empty() ? "]\n}\n" : "\n  ]\n}\n";
   return out;
 }
 

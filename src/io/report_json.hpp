@@ -85,17 +85,29 @@ struct FrameReport {
   [[nodiscard]] bool ok() const { return checked && violation_count() == 0; }
 };
 
-// A headless run, for the JSON report.
+// One algorithm's frames in a headless run.
+struct AlgorithmRun {
+  std::string algorithm;
+  std::vector<FrameReport> frames;   // frames 1..N in order
+
+  // True when every frame was checked and held.
+  [[nodiscard]] bool passed() const;
+};
+
+// A headless run (one or more algorithms on the same frames), for the JSON report.
 struct RunReport {
   std::string scene_path;
   std::string scene_name;
-  std::string algorithm;
   std::string fault;                 // "none" or the injected fault's name
   std::string fault_description;
   std::string reference_policy;      // how R was chosen, in words
   std::string scope_note;            // which pairs A-in-F applies to, in words (Box2D's filters)
+  std::string note;                  // anything else the reader should know ("" for nothing)
   std::int64_t frames_requested = 0;
-  std::vector<FrameReport> frames;   // frames 1..N in order
+  std::vector<AlgorithmRun> runs;
+
+  // True when every run ran every requested frame and passed.
+  [[nodiscard]] bool passed() const;
 };
 
 // Writes the report as JSON, atomically (see DESIGN.md; keys documented in report_json.cpp).

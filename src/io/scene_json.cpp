@@ -215,6 +215,13 @@ double length(Vec2 a) { return std::hypot(a.x, a.y); }
 // winding once: what b2PolygonShape::Set keeps as given (it would silently take the convex hull).
 void check_polygon(const LocatedJson& doc, const std::vector<Vec2>& v, const Path& path) {
   const std::size_t n = v.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double edge = length(sub(v[(i + 1) % n], v[i]));
+    if (edge < kMinPolygonFeature)
+      doc.fail(LocatedJson::element(path, (i + 1) % n),
+               "degenerate polygon: vertices " + std::to_string(i) + " and " + std::to_string((i + 1) % n) + " are " + fmt(edge) +
+                   " apart (at least " + fmt(kMinPolygonFeature) + ")");
+  }
   double turning = 0, area2 = 0;
   int left = 0, right = 0;
   std::size_t first_right = 0, first_left = 0;
@@ -222,10 +229,6 @@ void check_polygon(const LocatedJson& doc, const std::vector<Vec2>& v, const Pat
     const Vec2 e1 = sub(v[(i + 1) % n], v[i]);
     const Vec2 e2 = sub(v[(i + 2) % n], v[(i + 1) % n]);
     const std::size_t corner = (i + 1) % n;
-    if (length(e1) < kMinPolygonFeature)
-      doc.fail(LocatedJson::element(path, (i + 1) % n),
-               "degenerate polygon: vertices " + std::to_string(i) + " and " + std::to_string((i + 1) % n) + " are " +
-                   fmt(length(e1)) + " apart (at least " + fmt(kMinPolygonFeature) + ")");
     const double c = cross(e1, e2);
     if (std::abs(c) <= 1e-6 * length(e1) * length(e2))
       doc.fail(LocatedJson::element(path, corner),
@@ -252,14 +255,16 @@ void check_polygon(const LocatedJson& doc, const std::vector<Vec2>& v, const Pat
 constexpr const char* kShapeKeys[] = {"shape", "radius", "half_extents", "vertices", "offset", "density", "friction", "restitution"};
 
 // The shape fields of `r` (a body with one inline shape, or one element of "fixtures").
-ShapeSpec read_shape(ObjectReader& r, bool angle_is_shapes) {
+// In a generator's template a circle's radius may be left out (0.5; random_box may draw it).
+ShapeSpec read_shape(ObjectReader& r, bool angle_is_shapes, bool is_template) {
   const LocatedJson& doc = r.doc();
   ShapeSpec s;
   s.where = doc.locate(r.path());
   const std::string kind = read_string(doc, r.need("shape", "circle, box or polygon"), r.at("shape"));
   if (kind == "circle") {
     s.kind = ShapeKind::Circle;
-    s.radius = read_positive(doc, r.need("radius", "a circle needs its radius"), r.at("radius"), kMaxShapeSize);
+    if (!is_template || r.has("radius"))
+      s.radius = read_positive(doc, r.need("radius", "a circle needs its radius"), r.at("radius"), kMaxShapeSize);
   } else if (kind == "box") {
     s.kind = ShapeKind::Box;
     const Vec2 h = read_vec2(doc, r.need("half_extents", "a box needs [half width, half height]"), r.at("half_extents"), kMaxShapeSize);
@@ -326,7 +331,7 @@ BodySpec read_body(const LocatedJson& doc, const json& v, const Path& path, bool
     if (f.size() > 64) doc.fail(fp, "at most 64 fixtures per body, got " + std::to_string(f.size()));
     for (std::size_t i = 0; i < f.size(); ++i) {
       ObjectReader fr(doc, f[i], LocatedJson::element(fp, i), "a shape");
-      b.fixtures.push_back(read_shape(fr, true));
+      b.fixtures.push_back(read_shape(fr, true, is_template));
       fr.finish();
     }
   } else {
@@ -337,7 +342,7 @@ BodySpec read_body(const LocatedJson& doc, const json& v, const Path& path, bool
       for (const char* k : kShapeKeys)
         if (r.has(k)) doc.fail(r.at(k), "missing \"shape\" next to it");
     } else {
-      b.fixtures.push_back(read_shape(r, false));
+      b.fixtures.push_back(read_shape(r, false, is_template));
     }
   }
   r.finish();
@@ -437,6 +442,7 @@ Scene read_scene(const LocatedJson& doc) {
   s.sub_steps = static_cast<int>(r.integer("sub_steps", 1, 1, 100));
   s.velocity_iterations = static_cast<int>(r.integer("velocity_iterations", 8, 1, 1000));
   s.position_iterations = static_cast<int>(r.integer("position_iterations", 3, 1, 1000));
+  if (r.has("continuous")) s.continuous = read_bool(doc, r.get("continuous"), r.at("continuous"));
   if (r.has_value("cell_size")) {
     s.cell_size = read_positive(doc, r.get("cell_size"), r.at("cell_size"), 1e6);
     s.cell_size_where = doc.locate(r.at("cell_size"));

@@ -5,6 +5,8 @@
 // The format, with every default (lengths in metres, angles in radians, times in seconds):
 //   name "" (the file's stem), gravity [0,-10], time_step 1/60 (one frame), sub_steps 1 (Box2D steps
 //   per frame, each time_step/sub_steps), velocity_iterations 8, position_iterations 3,
+//   continuous true (Box2D's time of impact against static bodies; its TOI solver costs
+//   contacts x events per step, so large piles turn it off),
 //   cell_size null, origin null (null: derived from the elements each frame), cells null ([nx, ny]
 //   pins the grid's extent, e.g. the book's 10x10), bodies [], generators [].
 // A body: type "dynamic" | "static" | "kinematic"; position [0,0]; angle 0; velocity [0,0];
@@ -13,7 +15,8 @@
 //   angle 0 in the body) or "polygon" (vertices: 3 to 8 body-local points, convex,
 //   counter-clockwise); density 1, friction 0.6, restitution 0.
 // A generator: kind "grid" | "random_box" | "pile" | "emitter" and "body", a body without a position
-//   (default: a dynamic circle of radius 0.5); see GeneratorSpec for each kind's fields.
+//   (default: a dynamic circle of radius 0.5; a template circle's radius defaults to 0.5); see
+//   GeneratorSpec for each kind's fields.
 // Unknown fields are errors (a typo must not silently become a default). `//` comments are allowed.
 #pragma once
 #include <array>
@@ -117,6 +120,7 @@ struct Scene {
   int sub_steps = 1;
   int velocity_iterations = 8;
   int position_iterations = 3;
+  bool continuous = true;
   std::optional<double> cell_size;
   std::optional<Vec2> origin;
   std::optional<std::array<std::int64_t, 2>> cells;

@@ -106,6 +106,15 @@ class LocatingSax {
     } else if (const auto bracket = what.find("] "); bracket != std::string::npos) {
       what = what.substr(bracket + 2);
     }
+    // nlohmann's "last read" holds everything since the previous token, escapes included
+    // ("0,<U+000A> N"); keep only the offending token ("N").
+    if (const auto lr = what.find("; last read: '"); lr != std::string::npos) {
+      std::string token = what.substr(lr + 14);
+      if (!token.empty() && token.back() == '\'') token.pop_back();
+      const auto cut = token.find_last_of(" \t,:[{>");
+      if (cut != std::string::npos && cut + 1 < token.size()) token = token.substr(cut + 1);
+      what = what.substr(0, lr) + "; last read: '" + token + "'";
+    }
     if (ex.id == 406) what = "number out of range '" + last_token + "' (not a finite double)";
     const int line = line_at(position == 0 ? 0 : position - 1);
     error_ = out_.where_ + ":" + std::to_string(line) + ": " + (field.empty() ? "" : field + ": ") +

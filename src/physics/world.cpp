@@ -52,7 +52,8 @@ inline void world_point(const b2Transform& xf, b2Vec2 p, double& x, double& y) {
 
 PhysicsWorld::PhysicsWorld(const Scene& scene) : scene_(scene) {
   world_ = std::make_unique<b2World>(to_b2(scene_.gravity));
-  world_->SetAllowSleeping(false);  // a sleeping body would keep stale proxies; every body is checked each frame
+  world_->SetAllowSleeping(false);  // every body moves through the broadphase every frame (STACK.md "Ground truth")
+  world_->SetContinuousPhysics(scene_.continuous);
   b2BodyDef ground_def;
   ground_ = world_->CreateBody(&ground_def);
   elements_.dim = 2;
@@ -160,12 +161,18 @@ void PhysicsWorld::update_geometry() {
 // ---- F, G, T and the scope of A ⊆ F --------------------------------------------------------
 
 void PhysicsWorld::contact_pairs(PairList& out) const {
-  out.clear();
+  // Sorted as 64-bit keys (i in the high half): integer compares, about twice as fast as Pairs.
+  std::vector<std::uint64_t>& keys = contact_keys_;
+  keys.clear();
   for (const b2Contact* c = world_->GetContactList(); c != nullptr; c = c->GetNext()) {
-    const ElementId a = element_of(c->GetFixtureA()), b = element_of(c->GetFixtureB());
-    out.push_back(a < b ? Pair{a, b} : Pair{b, a});
+    const auto a = static_cast<std::uint32_t>(element_of(c->GetFixtureA()));
+    const auto b = static_cast<std::uint32_t>(element_of(c->GetFixtureB()));
+    keys.push_back(a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a));
   }
-  sort_pairs(out);
+  std::sort(keys.begin(), keys.end());
+  out.resize(keys.size());
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    out[k] = {static_cast<ElementId>(keys[k] >> 32), static_cast<ElementId>(keys[k] & 0xffffffffu)};
 }
 
 bool PhysicsWorld::tight_aabbs_overlap(ElementId a, ElementId b) const {
@@ -206,12 +213,15 @@ void PhysicsWorld::ground_truth(PairList& tight_aabb_pairs, PairList& touching_p
   query.self = this;
   query.g = &tight_aabb_pairs;
   query.t = &touching_pairs;
+  // Pairs come grouped by i in increasing order; sorting each group by j sorts the lists.
+  const auto by_j = [](const Pair& x, const Pair& y) { return x.j < y.j; };
   for (std::size_t i = 0; i < fixtures_.size(); ++i) {
     query.i = static_cast<ElementId>(i);
+    const std::size_t g0 = tight_aabb_pairs.size(), t0 = touching_pairs.size();
     world_->QueryAABB(&query, aabbs_[i]);
+    std::sort(tight_aabb_pairs.begin() + static_cast<std::ptrdiff_t>(g0), tight_aabb_pairs.end(), by_j);
+    std::sort(touching_pairs.begin() + static_cast<std::ptrdiff_t>(t0), touching_pairs.end(), by_j);
   }
-  sort_pairs(tight_aabb_pairs);
-  sort_pairs(touching_pairs);
 }
 
 void PhysicsWorld::in_box2d_scope(const PairList& pairs, PairList& out, Box2dScope& why_not) const {

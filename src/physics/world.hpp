@@ -105,6 +105,7 @@ class PhysicsWorld {
   std::vector<double> radii_;            // bounding-circle radius
   std::vector<b2AABB> aabbs_;            // tight AABBs at the current transforms
   std::vector<ElementSource> sources_;
+  mutable std::vector<std::uint64_t> contact_keys_;  // scratch of contact_pairs()
   Elements elements_;
   std::int64_t frame_ = 0;
   double time_ = 0;

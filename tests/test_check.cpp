@@ -1,0 +1,190 @@
+// The cross-check: every invariant holds on a correct frame and breaks, naming the pair, its cells
+// and the invariant, when its input is wrong; the faults produce exactly the pairs a buggy
+// detector would (computed here by hand).
+#include <gtest/gtest.h>
+
+#include "check/check.hpp"
+#include "check/faults.hpp"
+#include "core/brute.hpp"
+#include "core/error.hpp"
+
+namespace nbscope {
+namespace {
+
+// ---- faults --------------------------------------------------------------------------------
+
+TEST(Faults, NamesRoundTrip) {
+  for (Fault f : {Fault::None, Fault::DropMaskCell, Fault::OffByOneCell, Fault::StalePositions, Fault::DropPair,
+                  Fault::DropBox2dContact})
+    EXPECT_EQ(parse_fault(fault_name(f)), f);
+  EXPECT_THROW(parse_fault("drop-everything"), Error);
+  EXPECT_NE(fault_names().find("stale-positions"), std::string::npos);
+}
+
+// Four elements in cells (1,1), (0,0), (2,2), (2,1) of a 4x4 grid, and four pairs among them.
+struct FaultCase {
+  Grid grid;
+  std::vector<CellIndex> cells{{1, 1}, {0, 0}, {2, 2}, {2, 1}};
+  PairList pairs{{0, 1}, {0, 2}, {0, 3}, {1, 2}};
+  FaultCase() {
+    grid.n[0] = 4;
+    grid.n[1] = 4;
+  }
+};
+
+TEST(Faults, DropMaskCellRemovesTheDiagonalNeighbours) {
+  FaultCase c;
+  apply_output_fault(Fault::DropMaskCell, c.grid, c.cells, c.pairs);
+  // (0,1): element 1 is down-left of 0; (0,2): element 2 is up-right of 0. Both are that mask cell.
+  EXPECT_EQ(c.pairs, (PairList{{0, 3}, {1, 2}}));
+}
+
+TEST(Faults, OffByOneCellShiftsTheRightHalfAndLosesPairsAcrossTheSeam) {
+  FaultCase c;
+  apply_output_fault(Fault::OffByOneCell, c.grid, c.cells, c.pairs);
+  EXPECT_EQ(c.cells, (std::vector<CellIndex>{{1, 1}, {0, 0}, {3, 2}, {3, 1}}));
+  EXPECT_EQ(c.pairs, (PairList{{0, 1}}));
+}
+
+TEST(Faults, DropPairRemovesTheMiddlePair) {
+  FaultCase c;
+  apply_output_fault(Fault::DropPair, c.grid, c.cells, c.pairs);
+  EXPECT_EQ(c.pairs, (PairList{{0, 1}, {0, 2}, {1, 2}}));
+}
+
+TEST(Faults, InputFaultsLeaveTheOutputAlone) {
+  for (Fault f : {Fault::None, Fault::StalePositions, Fault::DropBox2dContact}) {
+    FaultCase c;
+    apply_output_fault(f, c.grid, c.cells, c.pairs);
+    EXPECT_EQ(c.pairs.size(), 4u) << fault_name(f);
+  }
+}
+
+// ---- the checker ---------------------------------------------------------------------------
+
+// A row of touching dynamic circles over a static floor tile, after one step.
+class CheckerTest : public ::testing::Test {
+ protected:
+  CheckerTest()
+      : world_(parse_scene_json(R"({"gravity": [0, 0], "bodies": [
+          {"shape": "circle", "radius": 0.5, "position": [0, 1]},
+          {"shape": "circle", "radius": 0.5, "position": [0.95, 1]},
+          {"shape": "circle", "radius": 0.5, "position": [1.9, 1.2]},
+          {"shape": "circle", "radius": 0.5, "position": [6, 1]},
+          {"type": "static", "shape": "box", "half_extents": [0.5, 0.3], "position": [0, 0.25]}]})",
+                                 "row.json")) {
+    world_.step();
+    BruteDetector brute;
+    brute.detect(world_.elements(), DetectOptions{}, correct_);
+    sort_pairs(correct_);
+    grid_ = make_grid(world_.elements(), GridOptions{});
+    integerise_cells(world_.elements(), grid_, cells_);
+  }
+
+  FrameReport run(const PairList& pairs, const std::vector<CellIndex>& cells, bool drop_box2d_contact = false) {
+    checker_.begin_frame(world_, DetectOptions{});
+    CheckInput in;
+    in.algorithm = "nbs";
+    in.pairs = &pairs;
+    in.cells = &cells;
+    in.drop_box2d_contact = drop_box2d_contact;
+    FrameReport out;
+    checker_.check(in, out);
+    return out;
+  }
+
+  PhysicsWorld world_;
+  FrameChecker checker_;
+  PairList correct_;
+  Grid grid_;
+  std::vector<CellIndex> cells_;
+};
+
+TEST_F(CheckerTest, CorrectPairsHoldEveryInvariant) {
+  ASSERT_EQ(correct_, (PairList{{0, 1}, {0, 4}, {1, 2}}));
+  const FrameReport r = run(correct_, cells_);
+  EXPECT_TRUE(r.ok());
+  EXPECT_EQ(r.frame, 1);
+  EXPECT_EQ(r.reference, "brute");
+  EXPECT_EQ(r.counts.elements, 5);
+  EXPECT_EQ(r.counts.a, 3);
+  EXPECT_EQ(r.counts.r, 3);
+  EXPECT_EQ(r.counts.t, 3);
+  EXPECT_EQ(r.counts.a_in_scope, 3);
+  EXPECT_GE(r.counts.f, 3);
+  EXPECT_TRUE(r.violations.empty());
+}
+
+TEST_F(CheckerTest, AMissingTouchingPairBreaksAEqualsRAndTInA) {
+  const FrameReport r = run(PairList{{0, 1}, {0, 4}}, cells_);
+  EXPECT_FALSE(r.ok());
+  EXPECT_EQ(r.broken[static_cast<int>(Invariant::AEqualsR)], 1);
+  EXPECT_EQ(r.broken[static_cast<int>(Invariant::TInA)], 1);
+  EXPECT_EQ(r.broken[static_cast<int>(Invariant::AInF)], 0);
+  ASSERT_EQ(r.violations.size(), 2u);
+  const Violation& v = r.violations[0];
+  EXPECT_EQ(v.invariant, Invariant::AEqualsR);
+  EXPECT_EQ(v.pair, (Pair{1, 2}));
+  EXPECT_EQ(v.frame, 1);
+  EXPECT_EQ(v.cell_i, cells_[1]);
+  EXPECT_EQ(v.cell_j, cells_[2]);
+  EXPECT_STREQ(v.what, "missing from A (in R)");
+  EXPECT_EQ(r.violations[1].invariant, Invariant::TInA);
+}
+
+TEST_F(CheckerTest, AnExtraPairBreaksAEqualsROnly) {
+  PairList a = correct_;
+  a.push_back({2, 3});  // far apart: not a contact, not in Box2D's scope
+  sort_pairs(a);
+  const FrameReport r = run(a, cells_);
+  EXPECT_EQ(r.violation_count(), 1);
+  EXPECT_STREQ(r.violations[0].what, "extra in A (not in R)");
+}
+
+TEST_F(CheckerTest, WrongCellsBreakAabbInCells) {
+  std::vector<CellIndex> cells = cells_;
+  cells[2].ix += 3;  // element 2 integerised three cells too far right
+  const FrameReport r = run(correct_, cells);
+  EXPECT_EQ(r.broken[static_cast<int>(Invariant::AabbInCells)], 1);
+  EXPECT_EQ(r.violations[0].pair, (Pair{1, 2}));
+  EXPECT_EQ(r.violations[0].cell_j, cells[2]);
+}
+
+TEST_F(CheckerTest, ALostBox2dContactBreaksAInF) {
+  const FrameReport r = run(correct_, cells_, true);
+  EXPECT_EQ(r.broken[static_cast<int>(Invariant::AInF)], 1);
+  EXPECT_EQ(r.violation_count(), 1);
+}
+
+TEST_F(CheckerTest, MalformedPairsAreFlaggedNotTrusted) {
+  const FrameReport r = run(PairList{{0, 1}, {0, 1}, {0, 4}, {1, 2}, {2, 2}, {3, 99}}, cells_);
+  EXPECT_EQ(r.broken[static_cast<int>(Invariant::AEqualsR)], 3);
+  EXPECT_EQ(r.counts.a, 3);
+  for (const Violation& v : r.violations) EXPECT_STREQ(v.what, "invalid pair in A (not 0 <= i < j < N, out of order or twice)");
+}
+
+TEST_F(CheckerTest, SeveralAlgorithmsShareOneFrame) {
+  checker_.begin_frame(world_, DetectOptions{});
+  const PairList wrong{{0, 1}};
+  for (const PairList* a : std::initializer_list<const PairList*>{&correct_, &wrong, &correct_}) {
+    CheckInput in;
+    in.algorithm = "sort";
+    in.pairs = a;
+    in.cells = &cells_;
+    FrameReport out;
+    checker_.check(in, out);
+    EXPECT_EQ(out.ok(), a == &correct_);
+  }
+}
+
+TEST(FrameChecker, ReferenceIsBruteForceUpToTheLimitThenAnotherDetector) {
+  FrameChecker c(CheckOptions{100});
+  EXPECT_EQ(c.reference_for(100, "nbs"), "brute");
+  EXPECT_EQ(c.reference_for(101, "nbs"), "sort");
+  EXPECT_EQ(c.reference_for(101, "sort"), "nbs");
+  EXPECT_EQ(c.reference_for(5, "brute"), "sort");
+  EXPECT_NE(c.reference_policy().find("100"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace nbscope
