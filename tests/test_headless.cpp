@@ -186,6 +186,16 @@ const BadRun kBadRuns[] = {
 INSTANTIATE_TEST_SUITE_P(All, HeadlessBadInput, ::testing::ValuesIn(kBadRuns),
                          [](const ::testing::TestParamInfo<BadRun>& info) { return std::string(info.param.name); });
 
+TEST(Headless, AnUnwritableReportFailsBeforeAnyFrame) {
+  const std::string dir = scratch_dir("headless_bad_report");
+  auto r = run("headless --scene '" + scene("default") + "' --frames 100000 --report '" + dir + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "nbscope: error: " + dir + ": cannot write: it is a directory\n");
+  r = run("headless --scene '" + scene("default") + "' --frames 100000 --report '" + dir + "/no/r.json'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "nbscope: error: " + dir + "/no/r.json: cannot write: no directory " + dir + "/no\n");
+}
+
 TEST(Headless, SceneIsRequired) {
   const auto r = run("headless --frames 3");
   EXPECT_EQ(r.exit_code, 2);
