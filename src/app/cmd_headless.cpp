@@ -1,6 +1,7 @@
 // `nbscope headless`: load a scene, run N frames through the FrameLoop, check every frame, report.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -104,8 +105,9 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
   return s + buf;
 }
 
-// The detectors `--algorithm` names: one, a comma-separated list, or "all" (every 2D detector;
-// brute only while brute force is the reference anyway). Sets `note` when brute is left out.
+// The detectors `--algorithm` names: one, a comma-separated list, or "all" (every 2D detector,
+// nbs first as the one shown and summarised first; brute only while brute force is the reference
+// anyway). Sets `note` when brute is left out.
 std::vector<std::string> algorithms_of(const std::string& text, std::int64_t elements, std::int64_t brute_limit, std::string& note) {
   std::vector<std::string> names;
   if (text == "all") {
@@ -117,6 +119,7 @@ std::vector<std::string> algorithms_of(const std::string& text, std::int64_t ele
       }
       names.push_back(d.name);
     }
+    if (const auto nbs = std::find(names.begin(), names.end(), "nbs"); nbs != names.end()) std::rotate(names.begin(), nbs, nbs + 1);
     return names;
   }
   std::size_t start = 0;
