@@ -32,14 +32,15 @@ usage:
       y_next and per non-empty row its x-lists (3D: z_heads, z_next, layers); tree: its leaves'
       bounds and HEADs and next; sort: sorted cell keys and order. --cells pins the number of
       cells per axis (the book's Fig. 3.15 is --cell-size 1 --origin 0,0 --cells 10,10).
-  nbscope headless --scene FILE [--frames N] [--algorithm NAME] [--report OUT.json]
+  nbscope headless --scene FILE [--frames N] [--algorithm NAME[,NAME...]|all] [--report OUT.json]
                    [--inject-fault NAME] [--brute-limit N] [--quiet]
       Runs N frames (default 600) of a scene (assets/scenes/*.json) with no window: Box2D steps,
       the algorithm detects, and every frame is checked: A==R (R: brute force up to --brute-limit
-      elements, default 2000, then another detector), A-in-F (Box2D's contact list, its filters
-      applied to A), T-in-A (shapes touching now), AABB-in-cells (tight-AABB pairs in neighbouring
-      cells). One summary line on stdout; a progress bar on stderr when it is a terminal; --report
+      elements, default 2000, then sort, or nbs when sort is tested), A-in-F (Box2D's contact
+      list, its filters applied to A), T-in-A (shapes touching now), AABB-in-cells (tight-AABB
+      pairs in neighbouring cells). One summary line on stdout; a progress bar on stderr when it is a terminal; --report
       writes per-frame counts, timings and every violation as JSON. Exit 1 if any check failed.
+      Several algorithms (a,b,c or all: every 2D detector) run and are checked on the same frames.
       --inject-fault drop-mask-cell | off-by-one-cell | stale-positions | drop-pair |
       drop-box2d-contact breaks the detection (or Box2D's side) on purpose, to see the checks catch it.
       --screenshot OUT.png [--size WxH] [--gl osmesa|egl|auto] renders the last frame exactly as the
