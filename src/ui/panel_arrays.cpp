@@ -23,12 +23,16 @@ const ImVec4 kEmpty(0.50f, 0.52f, 0.56f, 1.0f);  // -1
 const ImVec4 kValue(0.92f, 0.92f, 0.95f, 1.0f);
 const ImVec4 kIndex(0.55f, 0.60f, 0.70f, 1.0f);
 const ImU32 kWrittenBg = IM_COL32(230, 170, 40, 200);
+const ImU32 kEarlierWrittenBg = IM_COL32(230, 170, 40, 90);
+const ImU32 kActiveBg = IM_COL32(40, 170, 150, 170);
 const ImU32 kFocusBg = IM_COL32(60, 110, 190, 170);
 
 // What to highlight this frame.
 struct Marks {
   const ArrayWrite* writes = nullptr;  // the last write event's writes
   int write_count = 0;
+  bool write_is_current = true;  // false: the last write happened before the current event
+  std::pair<int, std::int64_t> active[2] = {{-1, -1}, {-1, -1}};  // entries the current test reads
   std::int32_t focus = -1;  // the filtered element
   std::int64_t n = 0;       // element count (arrays of this length are indexed by element)
 };
@@ -43,8 +47,11 @@ bool written(const Marks& m, int array, std::int64_t index) {
 void value_cell(const StepperSession& s, const Marks& m, int array, std::int64_t flat, std::int32_t value,
                 bool element_indexed_at_focus) {
   const bool is_written = written(m, array, flat);
+  const bool is_active = (m.active[0].first == array && m.active[0].second == flat) ||
+                         (m.active[1].first == array && m.active[1].second == flat);
   const bool is_focus = m.focus >= 0 && (element_indexed_at_focus || (s.holds_elements(array) && value == m.focus));
-  if (is_written) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, kWrittenBg);
+  if (is_active) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, kActiveBg);
+  else if (is_written) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, m.write_is_current ? kWrittenBg : kEarlierWrittenBg);
   else if (is_focus) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, kFocusBg);
   const std::int64_t v = shown_value(s, array, value);
   ImGui::TextColored(value == -1 && !is_written ? kEmpty : kValue, "%lld", static_cast<long long>(v));
@@ -52,6 +59,8 @@ void value_cell(const StepperSession& s, const Marks& m, int array, std::int64_t
 
 // Where an array's window should be centred: the entry just written, else the filtered element.
 std::int64_t focus_index(const Marks& m, int array, const TracedArray& a) {
+  for (const auto& [act_array, act_index] : m.active)
+    if (act_array == array) return act_index;
   for (int w = 0; w < m.write_count; ++w)
     if (m.writes[w].array == array) return m.writes[w].index;
   if (m.focus >= 0 && a.shape.size() == 1 && a.shape[0] == m.n) return m.focus;
@@ -189,6 +198,20 @@ void draw_element(StepperSession& s, std::int32_t k) {
   if (tests.size() > 24) ImGui::TextDisabled("... %zu more", tests.size() - 24);
 }
 
+// During a mask visit or a pair test: the head of the visited cell's list and, for a test, the
+// next entry of the element tested (the link the walk follows), so the walk can be read in the arrays.
+void mark_walk(const StepperSession& s, Marks& m) {
+  const TraceEvent* e = s.stepper().current();
+  if (e == nullptr || (e->op != TraceOp::VisitCell && e->op != TraceOp::TestPair)) return;
+  const LoopVars v = s.stepper().loop_vars();
+  const std::int32_t cell[3] = {v.ix, v.iy, v.iz};
+  const auto list = s.list_of_cell(cell);
+  if (!list) return;
+  m.active[0] = {list->heads, list->list};
+  const int next = s.stepper().next_array_of(list->heads);
+  if (e->op == TraceOp::TestPair && next >= 0) m.active[1] = {next, e->other};
+}
+
 class ArraysPanel final : public Panel {
  public:
   explicit ArraysPanel(std::shared_ptr<StepperSession> session) : session_(std::move(session)) {}
@@ -222,15 +245,18 @@ class ArraysPanel final : public Panel {
       const TraceEvent& e = st.events()[*w];
       marks.writes = e.writes;
       marks.write_count = std::min<int>(e.write_count, 2);
-      std::string text = "just written: ";
+      marks.write_is_current = *w + 1 == st.position();
+      std::string text = marks.write_is_current ? "just written: " : "last written (operation " + std::to_string(*w + 1) + "): ";
       for (int i = 0; i < marks.write_count; ++i) {
         const ArrayWrite& a = e.writes[i];
         text += (i > 0 ? ",  " : "") + entry_name(arrays[a.array], a.index, s.book_numbering) + " = " +
                 std::to_string(shown_value(s, a.array, a.new_value)) + " (was " +
                 std::to_string(shown_value(s, a.array, a.old_value)) + ")";
       }
-      ImGui::TextColored(ImVec4(0.95f, 0.75f, 0.3f, 1.0f), "%s", text.c_str());
+      ImGui::TextColored(marks.write_is_current ? ImVec4(0.95f, 0.75f, 0.3f, 1.0f) : ImVec4(0.7f, 0.6f, 0.4f, 1.0f), "%s",
+                         text.c_str());
     }
+    mark_walk(s, marks);
     for (std::size_t a = 0; a < arrays.size(); ++a) {
       ImGui::PushID(static_cast<int>(a));
       if (arrays[a].shape.size() >= 2) {

@@ -3,6 +3,7 @@
 // the element k is tested against) shown live. Clicking a line runs to its next operation.
 #include <imgui.h>
 
+#include <array>
 #include <string>
 
 #include "ui/panel_anchor.hpp"
@@ -32,12 +33,23 @@ class PseudocodePanel final : public Panel {
     const TraceEvent* e = st.current();
     const auto& lines = s.pseudocode();
     ImGui::TextDisabled("%s, %dD", s.algorithm().c_str(), s.elements().dim);
+    // Wrapped lines; the current one gets a band drawn behind it (channel 0 under the text).
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
     for (std::size_t i = 0; i < lines.size(); ++i) {
       const bool here = e != nullptr && e->line == i;
-      const std::string label = std::string(lines[i]) + "##line" + std::to_string(i);
-      if (here) ImGui::PushStyleColor(ImGuiCol_Header, ImVec4(0.75f, 0.55f, 0.15f, 0.85f));
-      if (ImGui::Selectable(label.c_str(), here)) run_to_line(st, i);
-      if (here) ImGui::PopStyleColor();
+      draw->ChannelsSplit(2);
+      draw->ChannelsSetCurrent(1);
+      ImGui::TextWrapped("%s", lines[i]);
+      const bool clicked = ImGui::IsItemClicked();
+      const bool hovered = ImGui::IsItemHovered();
+      draw->ChannelsSetCurrent(0);
+      const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+      if (here || hovered)
+        draw->AddRectFilled(ImVec2(lo.x - 3, lo.y - 1), ImVec2(right, hi.y + 1),
+                            here ? IM_COL32(190, 140, 40, 220) : IM_COL32(90, 100, 120, 90));
+      draw->ChannelsMerge();
+      if (clicked) run_to_line(st, i);
     }
     ImGui::Separator();
     draw_variables(s);
@@ -90,6 +102,10 @@ class PseudocodePanel final : public Panel {
     if (v.heads_array >= 0 && static_cast<std::size_t>(v.heads_array) < arrays.size()) {
       ImGui::Text("%s %s: head = %lld", v.list_kind, entry_name(arrays[v.heads_array], v.list, book).c_str(),
                   static_cast<long long>(shown_value(s, v.heads_array, v.head)));
+    } else if (const auto l = s.list_of_cell(std::array<std::int32_t, 3>{v.ix, v.iy, v.iz}.data())) {
+      // A mask visit or a test: the list of the cell being scanned.
+      ImGui::Text("walking %s %s: head = %lld", l->kind, entry_name(arrays[l->heads], l->list, book).c_str(),
+                  static_cast<long long>(shown_value(s, l->heads, s.stepper().state()[l->heads][static_cast<std::size_t>(l->list)])));
     } else {
       ImGui::TextDisabled("list: -");
     }

@@ -27,8 +27,9 @@ class StepperPanel final : public Panel {
  public:
   explicit StepperPanel(std::shared_ptr<StepperSession> session) : session_(std::move(session)) {}
   [[nodiscard]] const char* title() const override { return kStepperTitle; }
+  [[nodiscard]] PanelPlace place() const override { return PanelPlace::Right; }
   [[nodiscard]] bool open_by_default() const override { return false; }
-  [[nodiscard]] float width() const override { return 250.0f; }
+  [[nodiscard]] float width() const override { return 290.0f; }
 
   void draw(UiContext& c) override {
     StepperSession& s = *session_;

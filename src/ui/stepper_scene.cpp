@@ -1,6 +1,7 @@
 // The stepper's scene overlay: the current operation drawn over the bodies — the element it is
 // about ringed, the list being built (or walked) as an arrow chain growing arrow by arrow, the cell
 // (or row) it works on outlined, and the pair being tested as a segment coloured by its result.
+#include <algorithm>
 #include <string>
 
 #include "ui/stepper_panels.hpp"
@@ -102,7 +103,11 @@ void draw_stepper_scene(const StepperSession& s, render::DrawSink& sink) {
         const Rgba colour = e->contact ? palette::kConfirmedPair : kNoContact;
         sink.line(Layer::Top, w.centre(e->element), w.centre(e->other), colour, e->contact ? 4.0f : 2.0f);
         w.ring(e->other, colour, 3.0f);
-        sink.text((w.centre(e->element) + w.centre(e->other)) * 0.5f, e->contact ? "contact" : "no contact", colour);
+        // The verdict below the pair, clear of the ids above the elements.
+        const float below = 2.5f * static_cast<float>(std::max(s.elements().r[e->element], s.elements().r[e->other]));
+        const Vec2 low = w.centre(e->element).y() < w.centre(e->other).y() ? w.centre(e->element) : w.centre(e->other);
+        sink.text(Vec2((w.centre(e->element).x() + w.centre(e->other).x()) * 0.5f, low.y() - below),
+                  e->contact ? "contact" : "no contact", colour);
       }
       break;
     }
