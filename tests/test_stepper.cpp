@@ -411,5 +411,53 @@ TEST(Stepper, NbsLoopVariablesWritesAndListsAgreeWithTheGrid) {
   EXPECT_GT(tests, 0u);
 }
 
+// ---- the book's worked example ---------------------------------------------------------------
+
+TEST(Stepper, ScreenOnTheBooksNineElementsShowsFig320OnceMappedAndWhileTesting) {
+  // Fig. 3.15's centres (assets/examples/nine.csv) on the book's 10x10 grid of unit cells.
+  const double x[] = {4.75, 4.90, 1.85, 4.60, 1.30, 4.50, 1.60, 5.20, 1.20};
+  const double y[] = {6.45, 6.50, 6.45, 6.80, 6.85, 5.55, 6.60, 5.40, 6.55};
+  Elements e;
+  for (int k = 0; k < 9; ++k) e.push_back(x[k], y[k], 0, 0.1);
+  DetectOptions o;
+  o.grid.cell_size = 1;
+  o.grid.origin = std::array<double, 3>{0, 0, 0};
+  o.grid.cells = std::array<std::int64_t, 3>{10, 10, 1};
+  auto screen = make_detector("screen");
+  PairList pairs;
+  TraceLog log;
+  screen->detect_traced(e, o, pairs, log);
+  Stepper s;
+  s.load(std::move(log));
+  const int c = s.array_id("C"), next = s.array_id("E");
+  ASSERT_GE(c, 0);
+  ASSERT_GE(next, 0);
+  // Fig. 3.20 in the book's 1-based numbering: C[5][7]=4, C[5][6]=6, C[6][6]=8, C[2][7]=9,
+  // E = -1 1 -1 2 3 -1 5 -1 7; every other head of the 100 is -1.
+  const auto book_c = [&](int ix, int iy) { return s.state()[c][static_cast<std::size_t>((ix - 1) * 10 + (iy - 1))] + 1; };
+  const std::vector<std::int32_t> book_e = {-1, 1, -1, 2, 3, -1, 5, -1, 7};
+  for (std::size_t step : {std::size_t{10}, std::size_t{20}}) {  // the golden screenshots' steps
+    s.seek(step);
+    SCOPED_TRACE("after " + std::to_string(step) + " events");
+    EXPECT_EQ(book_c(5, 7), 4);
+    EXPECT_EQ(book_c(5, 6), 6);
+    EXPECT_EQ(book_c(6, 6), 8);
+    EXPECT_EQ(book_c(2, 7), 9);
+    EXPECT_EQ(std::count(s.state()[c].begin(), s.state()[c].end(), -1), 96);
+    std::vector<std::int32_t> shown_e;
+    for (std::int32_t v : s.state()[next]) shown_e.push_back(v < 0 ? v : v + 1);
+    EXPECT_EQ(shown_e, book_e);
+  }
+  // Step 5 (golden): four elements mapped, the list {4,2,1} of C[5][7] complete (book numbers).
+  s.seek(5);
+  EXPECT_EQ(s.list_members(c, 4 * 10 + 6), (std::vector<std::int32_t>{3, 1, 0}));
+  // Step 20 (golden): element 2 tested against element 1, in contact (book numbers).
+  s.seek(20);
+  ASSERT_EQ(s.current()->op, TraceOp::TestPair);
+  EXPECT_EQ(s.current()->element, 1);
+  EXPECT_EQ(s.current()->other, 0);
+  EXPECT_TRUE(s.current()->contact);
+}
+
 }  // namespace
 }  // namespace nbscope
