@@ -1,0 +1,223 @@
+// The stepper's UI side without GL: the session (what it records and when, its wording of events
+// and array entries in 0- and 1-based numbering, windows over large arrays), the three panels
+// driven by ImGui frames and keys (→/← step, Shift: phase, Space: play), and the scene overlay
+// recorded through a DrawSink: the element, the growing list, the mask cell, the tested pair.
+#include <gtest/gtest.h>
+#include <imgui.h>
+
+#include <string>
+
+#include "ui/host.hpp"
+#include "ui/stepper_panels.hpp"
+#include "support/generators.hpp"
+
+namespace nbscope::ui {
+namespace {
+
+// An ImGui context with its font atlas built and GLFW's arrow and space key codes mapped.
+struct ImGuiScope {
+  ImGuiScope() {
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    io.DisplaySize = ImVec2(1280, 720);
+    io.DeltaTime = 1.0f / 60.0f;
+    io.KeyMap[ImGuiKey_RightArrow] = 262;
+    io.KeyMap[ImGuiKey_LeftArrow] = 263;
+    io.KeyMap[ImGuiKey_Space] = 32;
+  }
+  ~ImGuiScope() { ImGui::DestroyContext(); }
+};
+
+// The book's Fig. 3.15 on its 10x10 grid of unit cells, as the frame loop would show it.
+struct BookFrame {
+  Elements elements;
+  Grid grid;
+  SimView sim;
+  UiState state;
+  UiRequests requests;
+  render::Camera camera;
+  BookFrame() {
+    const double x[] = {4.75, 4.90, 1.85, 4.60, 1.30, 4.50, 1.60, 5.20, 1.20};
+    const double y[] = {6.45, 6.50, 6.45, 6.80, 6.85, 5.55, 6.60, 5.40, 6.55};
+    for (int k = 0; k < 9; ++k) elements.push_back(x[k], y[k], 0, 0.1);
+    grid.n[0] = grid.n[1] = 10;
+    sim.scene_path = "book-fig-3-15.json";
+    sim.elements = &elements;
+    sim.grid = &grid;
+    sim.algorithm = "screen";
+    sim.paused = true;
+    camera.set_viewport(1280, 720);
+    camera.set({5, 5}, 40.0);
+  }
+};
+
+// A DrawSink that keeps what it is asked to draw.
+struct Recorder final : render::DrawSink {
+  int circles = 0, rects = 0, lines = 0, arrows = 0;
+  std::vector<std::string> texts;
+  void circle(render::Layer, render::Vec2, float, render::Rgba, render::Rgba, float, float) override { ++circles; }
+  void polygon(render::Layer, std::span<const render::Vec2>, render::Rgba, render::Rgba) override {}
+  void line(render::Layer, render::Vec2, render::Vec2, render::Rgba, float) override { ++lines; }
+  void arrow(render::Layer, render::Vec2, render::Vec2, render::Rgba, float) override { ++arrows; }
+  void rect(render::Layer, render::Vec2, render::Vec2, render::Rgba) override { ++rects; }
+  void text(render::Vec2, std::string_view t, render::Rgba) override { texts.emplace_back(t); }
+};
+
+TEST(StepperSession, WindowsKeepTheFocusInViewAndClampAtTheEnds) {
+  EXPECT_EQ(window_range(9, 4, 16), (std::pair<std::int64_t, std::int64_t>{0, 9}));
+  EXPECT_EQ(window_range(100, 50, 10), (std::pair<std::int64_t, std::int64_t>{45, 55}));
+  EXPECT_EQ(window_range(100, 2, 10), (std::pair<std::int64_t, std::int64_t>{0, 10}));
+  EXPECT_EQ(window_range(100, 99, 10), (std::pair<std::int64_t, std::int64_t>{90, 100}));
+  EXPECT_EQ(window_range(100, 500, 10), (std::pair<std::int64_t, std::int64_t>{90, 100}));
+  EXPECT_EQ(window_range(0, 0, 10), (std::pair<std::int64_t, std::int64_t>{0, 0}));
+}
+
+TEST(StepperSession, RecordsOnlyAPausedFrameAndWordsEventsAsTheBook) {
+  BookFrame f;
+  StepperSession s;
+  f.sim.paused = false;
+  s.update(f.sim, 0, 1);
+  EXPECT_FALSE(s.has_capture()) << "a running simulation must not be traced every frame";
+  f.sim.paused = true;
+  s.update(f.sim, 0, 2);
+  ASSERT_TRUE(s.has_capture()) << s.message();
+  EXPECT_TRUE(s.current_for(f.sim));
+  EXPECT_EQ(s.stepper().size(), 77u);
+  const auto& arrays = s.stepper().trace().arrays();
+  EXPECT_EQ(entry_name(arrays[0], 46, false), "C[4][6]");
+  EXPECT_EQ(entry_name(arrays[0], 46, true), "C[5][7]");
+  EXPECT_TRUE(s.holds_elements(0));
+
+  // Operation 5: element 4 pushed onto C[5][7] (book numbers), eq. 3.21: E[4] = HEAD = 2; HEAD = 4.
+  s.stepper().seek(5);
+  s.book_numbering = true;
+  EXPECT_EQ(describe_event(s, *s.stepper().current()), "push k=4 onto cell list C[5][7]: E[4] = 2, C[5][7] = 4");
+  s.book_numbering = false;
+  EXPECT_EQ(describe_event(s, *s.stepper().current()), "push k=3 onto cell list C[4][6]: E[3] = 1, C[4][6] = 3");
+  s.stepper().seek(20);
+  s.book_numbering = true;
+  EXPECT_EQ(describe_event(s, *s.stepper().current()), "test k=2 against 1: contact");
+  const std::int32_t own_cell[3] = {4, 6, -1};
+  const auto list = s.list_of_cell(own_cell);
+  ASSERT_TRUE(list.has_value());
+  EXPECT_EQ(list->list, 46);
+  const auto& tests = s.tests_of(1);
+  ASSERT_FALSE(tests.empty());
+  EXPECT_EQ(tests.front().other, 0);
+  EXPECT_TRUE(tests.front().contact);
+
+  // The next frame keeps the place in the sequence.
+  f.sim.frame = 1;
+  s.update(f.sim, 0, 3);
+  EXPECT_EQ(s.frame(), 1);
+  EXPECT_EQ(s.stepper().position(), 20u);
+}
+
+TEST(StepperSession, SaysWhyNothingCanBeSteppedInsteadOfThrowing) {
+  BookFrame f;
+  for (const char* algorithm : {"brute", "no-such-algorithm"}) {
+    StepperSession s;
+    f.sim.algorithm = algorithm;
+    EXPECT_NO_THROW(s.capture(f.sim));
+    EXPECT_FALSE(s.has_capture());
+    EXPECT_FALSE(s.message().empty()) << algorithm;
+  }
+  const Elements many = testdata::make_layout(testdata::Layout::Loose, kMaxSteppedElements + 1, 2, 1);
+  f.sim.elements = &many;
+  f.sim.grid = nullptr;
+  f.sim.algorithm = "nbs";
+  StepperSession s;
+  s.capture(f.sim);
+  EXPECT_FALSE(s.has_capture());
+  EXPECT_NE(s.message().find("too many"), std::string::npos) << s.message();
+}
+
+TEST(StepperSession, AConfiguredStepRecordsEvenWhileRunning) {
+  BookFrame f;
+  f.sim.paused = false;
+  StepperSession s(StepperConfig{std::size_t{10}, true});
+  s.update(f.sim, 0, 1);
+  ASSERT_TRUE(s.has_capture());
+  EXPECT_EQ(s.stepper().position(), 10u);
+  EXPECT_TRUE(s.book_numbering);
+}
+
+// Runs one UI frame of `host` over `f` and draws its scene overlay into `sink`.
+void run_frame(UiHost& host, BookFrame& f, Recorder* sink = nullptr) {
+  f.requests = {};
+  ImGui::NewFrame();
+  UiContext ctx{f.sim, f.state, f.requests, f.camera};
+  host.frame(ctx, true);
+  if (sink != nullptr) host.draw_scene(ctx, *sink);
+  ImGui::Render();
+}
+
+void press(int key, bool shift = false) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.KeyShift = shift;
+  io.KeysDown[key] = true;
+}
+void release() {
+  ImGuiIO& io = ImGui::GetIO();
+  for (bool& k : io.KeysDown) k = false;
+  io.KeyShift = false;
+}
+
+TEST(StepperPanels, KeysStepPhaseAndPlayAndTheSceneShowsTheOperation) {
+  ImGuiScope scope;
+  UiHost host;
+  auto session = add_stepper_panels(host, StepperConfig{std::size_t{1}, false});
+  BookFrame f;
+  open_stepper_panels(f.state);
+  ImGui::GetIO().MousePos = ImVec2(640, 360);
+  run_frame(host, f);
+  run_frame(host, f);
+  ASSERT_TRUE(session->has_capture()) << session->message();
+  Stepper& st = session->stepper();
+  ASSERT_EQ(st.position(), 1u);
+
+  press(262);  // →
+  run_frame(host, f);
+  release();
+  EXPECT_EQ(st.position(), 2u);
+  press(263);  // ←
+  run_frame(host, f);
+  release();
+  EXPECT_EQ(st.position(), 1u);
+  press(262, true);  // Shift+→: the next phase, "contacts"
+  run_frame(host, f);
+  release();
+  EXPECT_EQ(st.position(), 11u);
+  EXPECT_STREQ(st.phases()[static_cast<std::size_t>(st.current_phase())].label, "contacts");
+
+  // A push: the list C[5][7] = {4,2,1} drawn as two arrows, its cell outlined, the element ringed.
+  st.seek(5);
+  Recorder push;
+  run_frame(host, f, &push);
+  EXPECT_EQ(push.arrows, 2);
+  EXPECT_GE(push.rects, 1);
+  EXPECT_GE(push.lines, 4);
+  EXPECT_GE(push.circles, 1);
+  // A test in contact: the pair's segment and its verdict.
+  st.seek(20);
+  Recorder test;
+  run_frame(host, f, &test);
+  EXPECT_NE(std::find(test.texts.begin(), test.texts.end(), "contact"), test.texts.end());
+
+  // Space plays at the chosen speed; the frames' time moves it on.
+  st.set_speed(600);  // 10 events per 1/60 s frame
+  press(32);
+  run_frame(host, f);
+  release();
+  EXPECT_TRUE(st.playing());
+  run_frame(host, f);
+  run_frame(host, f);
+  EXPECT_GT(st.position(), 20u);
+}
+
+}  // namespace
+}  // namespace nbscope::ui
