@@ -91,6 +91,10 @@ TEST(StepperSession, RecordsOnlyAPausedFrameAndWordsEventsAsTheBook) {
   EXPECT_EQ(entry_name(arrays[0], 46, false), "C[4][6]");
   EXPECT_EQ(entry_name(arrays[0], 46, true), "C[5][7]");
   EXPECT_TRUE(s.holds_elements(0));
+  // NBS's B[0]/B[1] (current row / row below) keeps its 0/1 in book numbering, as on p.123.
+  TracedArray b{"B", {2, 10}, std::vector<std::int32_t>(20, -1)};
+  EXPECT_EQ(entry_name(b, 15, false), "B[1][5]");
+  EXPECT_EQ(entry_name(b, 15, true), "B[1][6]");
 
   // Operation 5: element 4 pushed onto C[5][7] (book numbers), eq. 3.21: E[4] = HEAD = 2; HEAD = 4.
   s.stepper().seek(5);

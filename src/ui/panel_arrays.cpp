@@ -1,7 +1,8 @@
 // The Arrays panel: every array of the recorded detection laid out as the book's figures draw them
 // — a next array as a row of integers over its indices (Figs 3.13, 3.20), a heads array of cells as
 // a matrix C[ix][iy] (eq. 3.31), NBS's B[2][nx] as the current row over the row below — with -1 for
-// an empty list or the end of one, the entry just written highlighted with its old value, large
+// an empty list or the end of one, "·" for an entry not written yet (its contents mean nothing),
+// the entry just written highlighted with its old value, large
 // arrays windowed around the active entries, and an element filter that answers "where is k?".
 //
 // Index: cell colours | ArrayTable (one array as a table) | element section | ArraysPanel.
@@ -53,6 +54,10 @@ void value_cell(const StepperSession& s, const Marks& m, int array, std::int64_t
   if (is_active) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, kActiveBg);
   else if (is_written) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, m.write_is_current ? kWrittenBg : kEarlierWrittenBg);
   else if (is_focus) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, kFocusBg);
+  if (!s.is_set(array, flat)) {
+    ImGui::TextColored(kEmpty, "\xC2\xB7");  // not written yet in this detection: no meaning
+    return;
+  }
   const std::int64_t v = shown_value(s, array, value);
   ImGui::TextColored(value == -1 && !is_written ? kEmpty : kValue, "%lld", static_cast<long long>(v));
 }
@@ -115,7 +120,7 @@ void draw_matrix_array(const StepperSession& s, const Marks& m, int array) {
   ImGui::TextColored(kIndex, "%s%s", a.name.c_str(), c0 > 0 ? " ..." : "");
   for (std::int64_t c = c0; c < c1; ++c) {
     ImGui::TableSetColumnIndex(static_cast<int>(c - c0) + 1);
-    ImGui::TextColored(kIndex, "%lld", static_cast<long long>(shown(c, book)));
+    ImGui::TextColored(kIndex, "%lld", static_cast<long long>(shown(c, book && !index_is_selector(a, 1))));
   }
   // NBS's x heads: the current row's lists over the row below's (book p.102).
   const bool nbs_b = a.name == "B" && rows == 2 && s.algorithm() == "nbs" && s.elements().dim == 2;
@@ -123,9 +128,9 @@ void draw_matrix_array(const StepperSession& s, const Marks& m, int array) {
     ImGui::TableNextRow();
     ImGui::TableSetColumnIndex(0);
     if (nbs_b) {
-      ImGui::TextColored(kIndex, r == 0 ? "[%lld] row iy" : "[%lld] row iy-1", static_cast<long long>(shown(r, book)));
+      ImGui::TextColored(kIndex, r == 0 ? "[%lld] row iy" : "[%lld] row iy-1", static_cast<long long>(r));
     } else {
-      ImGui::TextColored(kIndex, "[%lld]%s", static_cast<long long>(shown(r, book)), r == r0 && r0 > 0 ? " ..." : "");
+      ImGui::TextColored(kIndex, "[%lld]%s", static_cast<long long>(shown(r, book && !index_is_selector(a, 0))), r == r0 && r0 > 0 ? " ..." : "");
     }
     for (std::int64_t c = c0; c < c1; ++c) {
       ImGui::TableSetColumnIndex(static_cast<int>(c - c0) + 1);
@@ -165,10 +170,14 @@ void draw_element(StepperSession& s, std::int32_t k) {
   if (!nexts.empty()) ImGui::Text("next: %s", nexts.c_str());
   // The lists of its row, layer and cell as they stand now.
   const std::int32_t keys[4][3] = {{cell[0], cell[1], cell[2]}, {-1, cell[1], cell[2]}, {-1, -1, cell[2]}, {-1, cell[1], -1}};
+  std::vector<std::pair<int, std::int64_t>> shown_lists;
   for (const auto& key : keys) {
     if (key[0] == -1 && key[1] == -1 && key[2] == -1) continue;
     const auto list = s.list_of_cell(key);
     if (!list) continue;
+    const std::pair<int, std::int64_t> id{list->heads, list->list};
+    if (std::find(shown_lists.begin(), shown_lists.end(), id) != shown_lists.end()) continue;
+    shown_lists.push_back(id);
     const std::vector<std::int32_t> members = st.list_members(list->heads, list->list);
     if (std::find(members.begin(), members.end(), k) == members.end()) continue;
     std::string chain = std::string(list->kind) + " " + entry_name(arrays[list->heads], list->list, book) + ": ";
@@ -251,7 +260,9 @@ class ArraysPanel final : public Panel {
         const ArrayWrite& a = e.writes[i];
         text += (i > 0 ? ",  " : "") + entry_name(arrays[a.array], a.index, s.book_numbering) + " = " +
                 std::to_string(shown_value(s, a.array, a.new_value)) + " (was " +
-                std::to_string(shown_value(s, a.array, a.old_value)) + ")";
+                (s.is_set_after(a.array, a.index, *w) ? std::to_string(shown_value(s, a.array, a.old_value))
+                                                       : std::string("unset")) +
+                ")";
       }
       ImGui::TextColored(marks.write_is_current ? ImVec4(0.95f, 0.75f, 0.3f, 1.0f) : ImVec4(0.7f, 0.6f, 0.4f, 1.0f), "%s",
                          text.c_str());

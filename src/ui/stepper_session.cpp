@@ -49,6 +49,7 @@ void StepperSession::capture(const SimView& sim) {
   stepper_.clear();
   pseudocode_.clear();
   element_valued_.clear();
+  first_write_.clear();
   cell_pushes_.clear();
   tests_of_element_ = -1;
   tests_.clear();
@@ -107,12 +108,30 @@ void StepperSession::capture(const SimView& sim) {
     if (arrays[a].name == "order") element_valued_[a] = true;  // sort's permutation of element ids
   }
   const auto& events = stepper_.events();
-  for (std::size_t i = 0; i < events.size(); ++i)
-    if (events[i].op == TraceOp::Push) cell_pushes_.emplace_back(cell_key(events[i].cell), i);
+  first_write_.resize(arrays.size());
+  for (std::size_t a = 0; a < arrays.size(); ++a)
+    if (stepper_.next_array_of(static_cast<int>(a)) < 0) first_write_[a].assign(arrays[a].initial.size(), 0);
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    const TraceEvent& ev = events[i];
+    if (ev.op == TraceOp::Push) cell_pushes_.emplace_back(cell_key(ev.cell), i);
+    for (int w = 0; w < ev.write_count && w < 2; ++w) {
+      auto& first = first_write_[static_cast<std::size_t>(ev.writes[w].array)];
+      const auto index = static_cast<std::size_t>(ev.writes[w].index);
+      if (index < first.size() && first[index] == 0) first[index] = static_cast<std::uint32_t>(i + 1);
+    }
+  }
   std::sort(cell_pushes_.begin(), cell_pushes_.end());
   captured_ = true;
   // The next frame keeps the place in the sequence, so stepping frame by frame compares like with like.
   stepper_.seek(pending_step_.value_or(keep_position));
+}
+
+bool StepperSession::is_set_after(int array, std::int64_t index, std::size_t position) const {
+  if (array < 0 || static_cast<std::size_t>(array) >= first_write_.size()) return true;
+  const auto& first = first_write_[static_cast<std::size_t>(array)];
+  if (first.empty() || index < 0 || static_cast<std::size_t>(index) >= first.size()) return true;  // a heads array
+  const std::uint32_t f = first[static_cast<std::size_t>(index)];
+  return f != 0 && f <= position;
 }
 
 std::optional<StepperSession::ListRef> StepperSession::list_of_cell(const std::int32_t cell[3]) const {
@@ -138,6 +157,12 @@ const std::vector<StepperSession::TestedPair>& StepperSession::tests_of(std::int
   return tests_;
 }
 
+bool index_is_selector(const TracedArray& array, std::size_t dim) {
+  if (array.shape.size() != 2) return false;
+  if (dim == 0) return (array.name == "B" || array.name == "A") && array.shape[0] <= 5;
+  return array.name == "child" && array.shape[1] == 2;
+}
+
 std::string entry_name(const TracedArray& array, std::int64_t flat, bool book) {
   std::string out = array.name;
   if (array.shape.size() <= 1) return out + "[" + std::to_string(shown(flat, book)) + "]";
@@ -147,7 +172,8 @@ std::string entry_name(const TracedArray& array, std::int64_t flat, bool book) {
     idx[d] = flat % side;
     flat /= side;
   }
-  for (std::int64_t i : idx) out += "[" + std::to_string(shown(i, book)) + "]";
+  for (std::size_t d = 0; d < idx.size(); ++d)
+    out += "[" + std::to_string(shown(idx[d], book && !index_is_selector(array, d))) + "]";
   return out;
 }
 

@@ -71,6 +71,12 @@ class StepperSession {
     bool contact = false;
   };
   [[nodiscard]] const std::vector<TestedPair>& tests_of(std::int32_t k);
+  // False for an entry the detection has not written yet at the current position, in an array whose
+  // initial contents mean nothing (a next array, sort's keys): the panels show it as unset. List
+  // heads always count as set: their initial -1 is the book's empty list.
+  [[nodiscard]] bool is_set(int array, std::int64_t index) const { return is_set_after(array, index, stepper_.position()); }
+  // is_set() after the first `position` events.
+  [[nodiscard]] bool is_set_after(int array, std::int64_t index, std::size_t position) const;
   // True for arrays whose values are element ids (list heads and next arrays), shifted by one in
   // book numbering like the indices.
   [[nodiscard]] bool holds_elements(int array) const;
@@ -102,6 +108,7 @@ class StepperSession {
   std::int64_t frame_ = -1;
   std::vector<const char*> pseudocode_;
   std::vector<bool> element_valued_;
+  std::vector<std::vector<std::uint32_t>> first_write_;  // per array and entry: first writing event (+1), 0 = never
   std::vector<std::pair<std::uint64_t, std::size_t>> cell_pushes_;  // (cell key, event), sorted
   std::int32_t tests_of_element_ = -1;
   std::vector<TestedPair> tests_;
@@ -111,6 +118,9 @@ class StepperSession {
 
 // Shown index of an element id or array index: itself, or one more in book numbering (-1 stays -1).
 [[nodiscard]] inline std::int64_t shown(std::int64_t value, bool book) { return (book && value >= 0) ? value + 1 : value; }
+// True when index `dim` of `array` picks one of a few parallel arrays rather than a cell or an element
+// (NBS's B[0]/B[1] and A[0..4], the tree's child[m][0/1]): the book numbers those from 0 too.
+[[nodiscard]] bool index_is_selector(const TracedArray& array, std::size_t dim);
 // "C[4][6]" for flat index `flat` of `array` (indices in the chosen numbering).
 [[nodiscard]] std::string entry_name(const TracedArray& array, std::int64_t flat, bool book);
 // One line saying what event `e` of the session's trace does, in the book's words and the session's
