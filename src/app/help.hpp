@@ -49,9 +49,13 @@ usage:
       --overlays SPEC   comma list: all, none, NAME (only the names listed), +NAME, -NAME; names:
                         bodies elements grid lists mask pairs checks broadphase ids trails flash
       --panels SPEC     the same for panels: controls scenes algorithm overlays stats selection metrics
+                        stepper pseudocode arrays
       --select K        select element K (its cell, lists and pairs highlighted, its trail drawn)
       --camera X,Y,PPM  look at (X, Y) at PPM pixels per metre instead of fitting the scene
       --no-timings      show "-" for wall-clock numbers (reproducible screenshots)
+      --step K          open the Stepper, Arrays and Pseudocode panels on the state after K operations
+                        of the last frame's detection (headless: needs --screenshot)
+      --book-numbering  number elements and cells from 1 in the stepper panels, as the book does
       --shader-dir DIR  GLSL sources (default: the source tree's shaders/, or $NBSCOPE_SHADER_DIR)
   nbscope algorithms      list the detectors
   nbscope --help | --version
