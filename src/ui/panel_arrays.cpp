@@ -28,6 +28,15 @@ const ImU32 kEarlierWrittenBg = IM_COL32(230, 170, 40, 90);
 const ImU32 kActiveBg = IM_COL32(40, 170, 150, 170);
 const ImU32 kFocusBg = IM_COL32(60, 110, 190, 170);
 
+// How many columns of an array of `length` entries fit the panel: values are at most as wide as the
+// largest index (element ids, cell indices) plus a sign; at least 4, at most kMaxColumns.
+std::int64_t fit_columns(std::int64_t length) {
+  const int digits = static_cast<int>(std::to_string(std::max<std::int64_t>(length, 10)).size()) + 1;
+  const float cell = ImGui::CalcTextSize("0").x * static_cast<float>(digits) + 2 * ImGui::GetStyle().CellPadding.x + 2;
+  const float room = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("index     ...").x - 8;
+  return std::clamp<std::int64_t>(static_cast<std::int64_t>(room / cell), 4, kMaxColumns);
+}
+
 // What to highlight this frame.
 struct Marks {
   const ArrayWrite* writes = nullptr;  // the last write event's writes
@@ -77,7 +86,7 @@ void draw_row_array(const StepperSession& s, const Marks& m, int array) {
   const TracedArray& a = s.stepper().trace().arrays()[array];
   const std::vector<std::int32_t>& values = s.stepper().state()[array];
   const auto length = static_cast<std::int64_t>(values.size());
-  const auto [begin, end] = window_range(length, focus_index(m, array, a), kMaxColumns);
+  const auto [begin, end] = window_range(length, focus_index(m, array, a), fit_columns(length));
   const bool by_element = length == m.n;
   const int columns = static_cast<int>(end - begin) + 1;
   if (columns > 63 || !ImGui::BeginTable(a.name.c_str(), columns, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV))
@@ -99,17 +108,20 @@ void draw_row_array(const StepperSession& s, const Marks& m, int array) {
   ImGui::EndTable();
 }
 
-// A 2D array (or the slice of a 3D one at the focus's last index) as a matrix [row][column], as the
-// book prints C[ix][iy] (eq. 3.31): rows are the first index, columns the second.
+// A 2D array (or the slice of a 3D one at the focus's last index) as a matrix, as the book prints
+// C[ix][iy] (eq. 3.31): rows are the first index, columns the second. An array whose second index
+// only picks one of a few parallel arrays (the tree's child[m][0/1]) is shown the other way round,
+// one row per choice, so it reads like a next array.
 void draw_matrix_array(const StepperSession& s, const Marks& m, int array) {
   const TracedArray& a = s.stepper().trace().arrays()[array];
   const std::vector<std::int32_t>& values = s.stepper().state()[array];
-  const std::int64_t rows = a.shape[0], cols = a.shape[1];
   const std::int64_t depth = a.shape.size() == 3 ? a.shape[2] : 1;
   const std::int64_t focus = focus_index(m, array, a);
-  const std::int64_t fz = focus % depth, fc = (focus / depth) % cols, fr = focus / depth / cols;
-  const auto [r0, r1] = window_range(rows, fr, kMaxRows);
-  const auto [c0, c1] = window_range(cols, fc, kMaxColumns);
+  const std::int64_t fz = focus % depth;
+  const std::int64_t f[2] = {focus / depth / a.shape[1], (focus / depth) % a.shape[1]};
+  const int row_dim = index_is_selector(a, 1) ? 1 : 0, col_dim = 1 - row_dim;
+  const auto [r0, r1] = window_range(a.shape[row_dim], f[row_dim], kMaxRows);
+  const auto [c0, c1] = window_range(a.shape[col_dim], f[col_dim], fit_columns(a.shape[col_dim]));
   const bool book = s.book_numbering;
   if (depth > 1) ImGui::TextColored(kIndex, "slice [..][..][%lld]", static_cast<long long>(shown(fz, book)));
   const int columns = static_cast<int>(c1 - c0) + 1;
@@ -117,29 +129,34 @@ void draw_matrix_array(const StepperSession& s, const Marks& m, int array) {
     return;
   ImGui::TableNextRow();
   ImGui::TableSetColumnIndex(0);
-  ImGui::TextColored(kIndex, "%s%s", a.name.c_str(), c0 > 0 ? " ..." : "");
+  ImGui::TextColored(kIndex, "%s%s%s", a.name.c_str(), row_dim == 1 ? "[..][r]" : "", c0 > 0 ? " ..." : "");
   for (std::int64_t c = c0; c < c1; ++c) {
     ImGui::TableSetColumnIndex(static_cast<int>(c - c0) + 1);
-    ImGui::TextColored(kIndex, "%lld", static_cast<long long>(shown(c, book && !index_is_selector(a, 1))));
+    ImGui::TextColored(kIndex, "%lld", static_cast<long long>(shown(c, book && !index_is_selector(a, col_dim))));
   }
   // NBS's x heads: the current row's lists over the row below's (book p.102).
-  const bool nbs_b = a.name == "B" && rows == 2 && s.algorithm() == "nbs" && s.elements().dim == 2;
+  const bool nbs_b = a.name == "B" && a.shape[0] == 2 && s.algorithm() == "nbs" && s.elements().dim == 2;
   for (std::int64_t r = r0; r < r1; ++r) {
     ImGui::TableNextRow();
     ImGui::TableSetColumnIndex(0);
     if (nbs_b) {
       ImGui::TextColored(kIndex, r == 0 ? "[%lld] row iy" : "[%lld] row iy-1", static_cast<long long>(r));
     } else {
-      ImGui::TextColored(kIndex, "[%lld]%s", static_cast<long long>(shown(r, book && !index_is_selector(a, 0))), r == r0 && r0 > 0 ? " ..." : "");
+      ImGui::TextColored(kIndex, "[%lld]%s", static_cast<long long>(shown(r, book && !index_is_selector(a, row_dim))),
+                         r == r0 && r0 > 0 ? " ..." : "");
     }
     for (std::int64_t c = c0; c < c1; ++c) {
       ImGui::TableSetColumnIndex(static_cast<int>(c - c0) + 1);
-      const std::int64_t flat = (r * cols + c) * depth + fz;
+      std::int64_t i[2];
+      i[row_dim] = r;
+      i[col_dim] = c;
+      const std::int64_t flat = (i[0] * a.shape[1] + i[1]) * depth + fz;
       value_cell(s, m, array, flat, values[static_cast<std::size_t>(flat)], false);
     }
   }
   ImGui::EndTable();
-  if (r1 < rows) ImGui::TextColored(kIndex, "... %lld more rows", static_cast<long long>(rows - r1));
+  if (r1 < a.shape[row_dim])
+    ImGui::TextColored(kIndex, "... %lld more rows", static_cast<long long>(a.shape[row_dim] - r1));
 }
 
 // Where the filtered element is: its cell, the lists holding it now, the next entries after it and
