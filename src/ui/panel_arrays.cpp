@@ -33,7 +33,7 @@ const ImU32 kFocusBg = IM_COL32(60, 110, 190, 170);
 std::int64_t fit_columns(std::int64_t length) {
   const int digits = static_cast<int>(std::to_string(std::max<std::int64_t>(length, 10)).size()) + 1;
   const float cell = ImGui::CalcTextSize("0").x * static_cast<float>(digits) + 2 * ImGui::GetStyle().CellPadding.x + 2;
-  const float room = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("index     ...").x - 8;
+  const float room = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("of 100000000").x - 8;
   return std::clamp<std::int64_t>(static_cast<std::int64_t>(room / cell), 4, kMaxColumns);
 }
 
@@ -93,14 +93,19 @@ void draw_row_array(const StepperSession& s, const Marks& m, int array) {
     return;
   ImGui::TableNextRow();
   ImGui::TableSetColumnIndex(0);
-  ImGui::TextUnformatted(begin > 0 ? (a.name + " ...").c_str() : a.name.c_str());
+  ImGui::TextUnformatted(a.name.c_str());
   for (std::int64_t i = begin; i < end; ++i) {
     ImGui::TableSetColumnIndex(static_cast<int>(i - begin) + 1);
     value_cell(s, m, array, i, values[static_cast<std::size_t>(i)], by_element && i == m.focus);
   }
   ImGui::TableNextRow();
   ImGui::TableSetColumnIndex(0);
-  ImGui::TextColored(kIndex, end < length ? "index     ..." : "index");
+  if (end - begin < length) {
+    // A window: say which part of the array it is.
+    ImGui::TextColored(kIndex, "of %lld", static_cast<long long>(length));
+  } else {
+    ImGui::TextColored(kIndex, "index");
+  }
   for (std::int64_t i = begin; i < end; ++i) {
     ImGui::TableSetColumnIndex(static_cast<int>(i - begin) + 1);
     ImGui::TextColored(kIndex, "%lld", static_cast<long long>(shown(i, s.book_numbering)));
