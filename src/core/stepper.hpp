@@ -76,6 +76,7 @@ class Stepper {
   // Drops the trace; the stepper is empty (size() == 0).
   void clear();
 
+  // The loaded trace (arrays declared, events) and its events.
   [[nodiscard]] const TraceLog& trace() const { return trace_; }
   [[nodiscard]] const std::vector<TraceEvent>& events() const { return trace_.events(); }
   // Number of events.
@@ -117,10 +118,13 @@ class Stepper {
 
   // Playback speed in events per second (clamped to > 0).
   void set_speed(double events_per_second);
+  // The playback speed in events per second.
   [[nodiscard]] double speed() const { return speed_; }
   // Starts playing (from the start when at the end); pause() stops.
   void play();
+  // Stops playback where it is.
   void pause() { playing_ = false; }
+  // True while playback advances.
   [[nodiscard]] bool playing() const { return playing_; }
   // While playing, stops at the first event this breakpoint matches (nullopt: play to the end).
   void set_play_breakpoint(std::optional<Breakpoint> b) { play_break_ = b; }

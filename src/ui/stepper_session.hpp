@@ -43,15 +43,18 @@ class StepperSession {
   [[nodiscard]] bool current_for(const SimView& sim) const;
   // current_for() as of the last update() (for scene drawing done before the panels fill the view).
   [[nodiscard]] bool was_current() const { return was_current_; }
+  // True when a detection is held (current or not).
   [[nodiscard]] bool has_capture() const { return captured_; }
   // Why nothing can be stepped through ("" when a detection is held).
   [[nodiscard]] const std::string& message() const { return message_; }
 
+  // The cursor over the held detection, and the elements it was run on (a copy of that frame's).
   [[nodiscard]] Stepper& stepper() { return stepper_; }
   [[nodiscard]] const Stepper& stepper() const { return stepper_; }
   [[nodiscard]] const Elements& elements() const { return elements_; }
   // The captured detector's grid; nullptr for a detector without one.
   [[nodiscard]] const Grid* grid() const { return has_grid_ ? &grid_ : nullptr; }
+  // The algorithm and frame number of the held detection.
   [[nodiscard]] const std::string& algorithm() const { return algorithm_; }
   [[nodiscard]] std::int64_t frame() const { return frame_; }
   // The detector's pseudocode lines (TraceEvent::line indexes them).
