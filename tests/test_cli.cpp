@@ -105,6 +105,7 @@ const BadInput kBadInputs[] = {
     {"unknown_flag", "1,2,1\n", "--fast", "--fast: unknown flag (see nbscope --help)"},
     {"bad_repeat", "1,2,1\n", "--repeat 0", "--repeat: '0' is not a whole number from 1 to 1000000"},
     {"missing_value", "1,2,1\n", "--algorithm", "--algorithm: missing value"},
+    {"repeated_flag", "1,2,1\n", "--repeat 2 --repeat=3", "--repeat: given more than once"},
     {"pair_limit", "0,0,1\n0,0,1\n0,0,1\n0,0,1\n0,0,1\n", "--max-pairs 3",
      "more than 3 contact pairs (the pair limit; too many elements overlap at one place)"},
 };

@@ -7,6 +7,13 @@
 
 namespace nbscope {
 
+// A flag given twice is refused by name rather than left over as an "unknown flag".
+void Args::refuse_repeat(const std::string& name) const {
+  for (std::size_t i = 0; i < args_.size(); ++i)
+    if (!used_[i] && (args_[i] == name || args_[i].rfind(name + "=", 0) == 0))
+      throw Error(name + ": given more than once");
+}
+
 std::optional<std::string> Args::value(const std::string& name) {
   for (std::size_t i = 0; i < args_.size(); ++i) {
     if (used_[i]) continue;
@@ -14,10 +21,12 @@ std::optional<std::string> Args::value(const std::string& name) {
     if (a == name) {
       if (i + 1 >= args_.size()) throw Error(name + ": missing value");
       used_[i] = used_[i + 1] = true;
+      refuse_repeat(name);
       return args_[i + 1];
     }
     if (a.rfind(name + "=", 0) == 0) {
       used_[i] = true;
+      refuse_repeat(name);
       return a.substr(name.size() + 1);
     }
   }
@@ -28,6 +37,7 @@ bool Args::flag(const std::string& name) {
   for (std::size_t i = 0; i < args_.size(); ++i) {
     if (!used_[i] && args_[i] == name) {
       used_[i] = true;
+      refuse_repeat(name);
       return true;
     }
   }

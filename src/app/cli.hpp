@@ -26,6 +26,8 @@ class Args {
   void finish() const;
 
  private:
+  void refuse_repeat(const std::string& name) const;
+
   std::vector<std::string> args_;
   std::vector<bool> used_;
 };
