@@ -45,6 +45,41 @@ class Detector {
   [[nodiscard]] virtual const std::vector<const char*>& pseudocode(int dim) const;
 };
 
+// Base of a detector written once as `template <int D, class Trace> void run(...)` for D = 2 and 3
+// (Self befriends this class): the dimension and the trace (NullTrace when off) are picked here.
+// Each detector's .cpp instantiates it explicitly where run() is defined; its header says extern.
+template <class Self>
+class DimensionalDetector : public Detector {
+ public:
+  void detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) final;
+  void detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs,
+                     TraceLog& out_trace) final;
+
+ private:
+  template <class Trace>
+  void dispatch(const Elements& elements, const DetectOptions& options, PairList& out_pairs, Trace& trace) {
+    Self& self = static_cast<Self&>(*this);
+    if (elements.dim == 3) {
+      self.template run<3>(elements, options, out_pairs, trace);
+    } else {
+      self.template run<2>(elements, options, out_pairs, trace);
+    }
+  }
+};
+
+template <class Self>
+void DimensionalDetector<Self>::detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) {
+  NullTrace none;
+  dispatch(elements, options, out_pairs, none);
+}
+
+template <class Self>
+void DimensionalDetector<Self>::detect_traced(const Elements& elements, const DetectOptions& options,
+                                              PairList& out_pairs, TraceLog& out_trace) {
+  out_trace.reset();
+  dispatch(elements, options, out_pairs, out_trace);
+}
+
 // What the registry knows of one algorithm.
 struct DetectorInfo {
   std::string name;

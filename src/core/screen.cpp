@@ -136,23 +136,6 @@ void ScreenDetector::run(const Elements& e, const DetectOptions& options, PairLi
   }
 }
 
-void ScreenDetector::detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) {
-  NullTrace none;
-  if (elements.dim == 3) {
-    run<3>(elements, options, out_pairs, none);
-  } else {
-    run<2>(elements, options, out_pairs, none);
-  }
-}
-
-void ScreenDetector::detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs,
-                                   TraceLog& out_trace) {
-  out_trace.reset();
-  if (elements.dim == 3) {
-    run<3>(elements, options, out_pairs, out_trace);
-  } else {
-    run<2>(elements, options, out_pairs, out_trace);
-  }
-}
+template class DimensionalDetector<ScreenDetector>;
 
 }  // namespace nbscope

@@ -22,19 +22,17 @@ inline constexpr std::int64_t kScreenMaxCells = std::int64_t{1} << 25;
 // would need and suggesting `nbs` (with what nbs would need for `n_elements`) or a larger cell.
 void check_screen_array_size(const Grid& grid, std::int64_t n_elements);
 
-class ScreenDetector final : public Detector {
+class ScreenDetector final : public DimensionalDetector<ScreenDetector> {
  public:
   [[nodiscard]] std::string_view name() const override { return "screen"; }
   [[nodiscard]] bool supports_dim(int dim) const override { return dim == 2 || dim == 3; }
-  void detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) override;
-  void detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs,
-                     TraceLog& out_trace) override;
   // nx*ny(*nz) + N integers: the screen array C and the next array E.
   [[nodiscard]] std::size_t own_bytes() const override;
   [[nodiscard]] const Grid* last_grid() const override { return &grid_; }
   [[nodiscard]] const std::vector<const char*>& pseudocode(int dim) const override;
 
  private:
+  friend DimensionalDetector<ScreenDetector>;
   template <int D, class Trace>
   void run(const Elements& elements, const DetectOptions& options, PairList& out_pairs, Trace& trace);
 
@@ -42,5 +40,8 @@ class ScreenDetector final : public Detector {
   std::vector<std::int32_t> heads_;  // C, flat: C[ix][iy][iz] = heads_[grid_.flat(ix, iy, iz)]
   std::vector<std::int32_t> next_;   // E[N]
 };
+
+// Instantiated once, in screen.cpp, where run() is defined.
+extern template class DimensionalDetector<ScreenDetector>;
 
 }  // namespace nbscope

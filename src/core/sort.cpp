@@ -127,23 +127,6 @@ void SortDetector::run(const Elements& e, const DetectOptions& options, PairList
   }
 }
 
-void SortDetector::detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) {
-  NullTrace none;
-  if (elements.dim == 3) {
-    run<3>(elements, options, out_pairs, none);
-  } else {
-    run<2>(elements, options, out_pairs, none);
-  }
-}
-
-void SortDetector::detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs,
-                                 TraceLog& out_trace) {
-  out_trace.reset();
-  if (elements.dim == 3) {
-    run<3>(elements, options, out_pairs, out_trace);
-  } else {
-    run<2>(elements, options, out_pairs, out_trace);
-  }
-}
+template class DimensionalDetector<SortDetector>;
 
 }  // namespace nbscope

@@ -15,19 +15,17 @@
 
 namespace nbscope {
 
-class SortDetector final : public Detector {
+class SortDetector final : public DimensionalDetector<SortDetector> {
  public:
   [[nodiscard]] std::string_view name() const override { return "sort"; }
   [[nodiscard]] bool supports_dim(int dim) const override { return dim == 2 || dim == 3; }
-  void detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) override;
-  void detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs,
-                     TraceLog& out_trace) override;
   // 3N integers in 2D (ix, iy, order), 4N in 3D (ix, iy, iz, order): the book's M = 3N / 4N.
   [[nodiscard]] std::size_t own_bytes() const override;
   [[nodiscard]] const Grid* last_grid() const override { return &grid_; }
   [[nodiscard]] const std::vector<const char*>& pseudocode(int dim) const override;
 
  private:
+  friend DimensionalDetector<SortDetector>;
   template <int D, class Trace>
   void run(const Elements& elements, const DetectOptions& options, PairList& out_pairs, Trace& trace);
 
@@ -35,5 +33,8 @@ class SortDetector final : public Detector {
   std::vector<std::int32_t> cell_[3];  // ix[N], iy[N], iz[N] (iz empty in 2D)
   std::vector<std::int32_t> order_;    // order[p]: the element at sorted position p
 };
+
+// Instantiated once, in sort.cpp, where run() is defined.
+extern template class DimensionalDetector<SortDetector>;
 
 }  // namespace nbscope

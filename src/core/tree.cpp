@@ -257,23 +257,6 @@ void TreeDetector::run(const Elements& e, const DetectOptions& options, PairList
   search<D>(e, trace, pairs);
 }
 
-void TreeDetector::detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) {
-  NullTrace none;
-  if (elements.dim == 3) {
-    run<3>(elements, options, out_pairs, none);
-  } else {
-    run<2>(elements, options, out_pairs, none);
-  }
-}
-
-void TreeDetector::detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs,
-                                 TraceLog& out_trace) {
-  out_trace.reset();
-  if (elements.dim == 3) {
-    run<3>(elements, options, out_pairs, out_trace);
-  } else {
-    run<2>(elements, options, out_pairs, out_trace);
-  }
-}
+template class DimensionalDetector<TreeDetector>;
 
 }  // namespace nbscope

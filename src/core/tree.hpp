@@ -30,13 +30,10 @@ struct TreeLeaf {
 std::vector<TreeLeaf> tree_leaves(const Grid& grid, std::span<const std::int32_t> child,
                                   std::span<const std::int32_t> head);
 
-class TreeDetector final : public Detector {
+class TreeDetector final : public DimensionalDetector<TreeDetector> {
  public:
   [[nodiscard]] std::string_view name() const override { return "tree"; }
   [[nodiscard]] bool supports_dim(int dim) const override { return dim == 2 || dim == 3; }
-  void detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) override;
-  void detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs,
-                     TraceLog& out_trace) override;
   // 3M + N integers: child[M][2], HEAD[M], E[N] for the M nodes of the last tree.
   [[nodiscard]] std::size_t own_bytes() const override;
   [[nodiscard]] const Grid* last_grid() const override { return &grid_; }
@@ -45,6 +42,7 @@ class TreeDetector final : public Detector {
   [[nodiscard]] std::int32_t node_count() const { return node_count_; }
 
  private:
+  friend DimensionalDetector<TreeDetector>;
   template <int D, class Trace>
   void build(const Elements& elements, Trace& trace, int child_id, int head_id, int next_id);
   template <int D, class Trace>
@@ -59,5 +57,8 @@ class TreeDetector final : public Detector {
   std::vector<std::int32_t> head_;   // HEAD[m]
   std::vector<std::int32_t> next_;   // E[N]
 };
+
+// Instantiated once, in tree.cpp, where run() is defined.
+extern template class DimensionalDetector<TreeDetector>;
 
 }  // namespace nbscope
