@@ -15,14 +15,6 @@ using testdata::Layout;
 // "box2d" lives in physics; register it before the suites below read the registry.
 const bool kPhysicsDetectorsRegistered = (register_physics_detectors(), true);
 
-PairList reference_pairs(const Elements& e) {
-  BruteDetector brute;
-  PairList out;
-  brute.detect(e, DetectOptions{}, out);
-  sort_pairs(out);
-  return out;
-}
-
 // Checks that `pairs` is exactly `ref` (sorted), each pair once with i < j.
 ::testing::AssertionResult same_as(const PairList& ref, PairList pairs) {
   for (const Pair& p : pairs)
@@ -41,7 +33,7 @@ PairList reference_pairs(const Elements& e) {
 }
 
 // Checks that `pairs` is exactly brute force's answer on `e`.
-::testing::AssertionResult same_as_brute(const Elements& e, PairList pairs) { return same_as(reference_pairs(e), std::move(pairs)); }
+::testing::AssertionResult same_as_brute(const Elements& e, PairList pairs) { return same_as(testdata::brute_pairs(e), std::move(pairs)); }
 
 struct Family {
   Layout layout;
@@ -87,7 +79,7 @@ int check_layout_against_brute(Layout layout, int dim, std::int64_t max_n) {
   for (const Family& f : families()) {
     if (f.layout != layout || f.n > max_n) continue;
     const Elements e = testdata::make_layout(f.layout, f.n, dim, f.seed);
-    const PairList ref = reference_pairs(e);
+    const PairList ref = testdata::brute_pairs(e);
     for (auto& detector : detectors) {
       SCOPED_TRACE(std::string(detector->name()) + " " + testdata::layout_name(f.layout) + " " + std::to_string(dim) +
                    "D n=" + std::to_string(f.n) + " seed=" + std::to_string(f.seed));
@@ -164,7 +156,7 @@ INSTANTIATE_TEST_SUITE_P(Registry, EveryDetector, ::testing::ValuesIn(registered
 // The comparison itself must be able to fail: a detector that drops one pair is caught.
 TEST(BruteComparison, CatchesADroppedPair) {
   const Elements e = testdata::make_layout(Layout::Dense, 300, 2, 5);
-  PairList pairs = reference_pairs(e);
+  PairList pairs = testdata::brute_pairs(e);
   ASSERT_FALSE(pairs.empty());
   pairs.pop_back();
   EXPECT_FALSE(same_as_brute(e, pairs));
@@ -172,7 +164,7 @@ TEST(BruteComparison, CatchesADroppedPair) {
 
 TEST(BruteComparison, CatchesADuplicateAndAnExtraPair) {
   const Elements e = testdata::make_layout(Layout::Loose, 300, 2, 5);
-  PairList pairs = reference_pairs(e);
+  PairList pairs = testdata::brute_pairs(e);
   ASSERT_FALSE(pairs.empty());
   PairList dup = pairs;
   dup.push_back(pairs.front());

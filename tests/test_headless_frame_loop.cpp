@@ -3,6 +3,8 @@
 // dragging, tracing, and errors that leave the loop usable.
 #include <gtest/gtest.h>
 
+#include "support/generators.hpp"
+
 #include "app/frame_loop.hpp"
 #include "core/brute.hpp"
 #include "core/error.hpp"
@@ -16,13 +18,7 @@ const bool kRegistered = (register_physics_detectors(), true);
 
 std::string scene(const std::string& name) { return std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/" + name + ".json"; }
 
-PairList brute_pairs(const Elements& e) {
-  BruteDetector brute;
-  PairList out;
-  brute.detect(e, DetectOptions{}, out);
-  sort_pairs(out);
-  return out;
-}
+using testdata::brute_pairs;
 
 TEST(FrameLoop, EmptyUntilASceneIsLoaded) {
   FrameLoop loop;

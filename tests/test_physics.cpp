@@ -2,6 +2,8 @@
 // sets against brute force over all fixture pairs, the box2d detector across frames, mouse drag.
 #include <gtest/gtest.h>
 
+#include "support/generators.hpp"
+
 #include <box2d/box2d.h>
 
 #include <cmath>
@@ -21,13 +23,7 @@ constexpr double kSkin = 2 * 0.005;  // b2_polygonRadius, written out as Box2D d
 
 Scene scene_of(const std::string& text) { return parse_scene_json(text, "test.json"); }
 
-PairList brute_pairs(const Elements& e) {
-  BruteDetector brute;
-  PairList out;
-  brute.detect(e, DetectOptions{}, out);
-  sort_pairs(out);
-  return out;
-}
+using testdata::brute_pairs;
 
 // ---- generators ----------------------------------------------------------------------------
 

@@ -1,5 +1,7 @@
 #include "support/generators.hpp"
 
+#include "core/brute.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -118,6 +120,14 @@ Elements make_layout(Layout layout, std::int64_t n, int dim, std::uint64_t seed)
     }
   }
   return e;
+}
+
+PairList brute_pairs(const Elements& elements) {
+  BruteDetector brute;
+  PairList out;
+  brute.detect(elements, DetectOptions{}, out);
+  sort_pairs(out);
+  return out;
 }
 
 }  // namespace nbscope::testdata

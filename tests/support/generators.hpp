@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/elements.hpp"
+#include "core/pairs.hpp"
 
 namespace nbscope::testdata {
 
@@ -27,5 +28,7 @@ const std::vector<Layout>& all_layouts();
 std::string layout_name(Layout layout);
 // N elements of `layout` in `dim` (2 or 3) dimensions, reproducible from `seed`.
 Elements make_layout(Layout layout, std::int64_t n, int dim, std::uint64_t seed);
+// The reference every detector is checked against: brute force, sorted by (i, j).
+PairList brute_pairs(const Elements& elements);
 
 }  // namespace nbscope::testdata
