@@ -181,6 +181,9 @@ const BadRun kBadRuns[] = {
      "--inject-fault: unknown fault 'gremlins' (known: drop-mask-cell, off-by-one-cell, stale-positions, drop-pair, drop-box2d-contact)"},
     {"bad_brute_limit", kGoodScene, "--brute-limit x", "--brute-limit: 'x' is not a whole number from 0 to 1000000"},
     {"unknown_flag", kGoodScene, "--fast", "--fast: unknown flag (see nbscope --help)"},
+    {"repeated_flag", kGoodScene, "--frames 4", "--frames: given more than once"},
+    {"drawing_without_screenshot", kGoodScene, "--overlays grid",
+     "--overlays: needs --screenshot (headless draws nothing without one)"},
 };
 
 INSTANTIATE_TEST_SUITE_P(All, HeadlessBadInput, ::testing::ValuesIn(kBadRuns),
