@@ -112,6 +112,24 @@ const BadInput kBadInputs[] = {
 
 INSTANTIATE_TEST_SUITE_P(Pairs, CliBadInput, ::testing::ValuesIn(kBadInputs), [](const auto& info) { return info.param.name; });
 
+TEST(Cli, AnUnwritableOutputFailsBeforeDetection) {
+  const std::string dir = scratch_dir("bad_output");
+  write_text(dir + "/in.csv", "0,0,1\n1,0,1\n");
+  auto r = run("pairs --input '" + dir + "/in.csv' --output '" + dir + "/no/out.csv'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "nbscope: error: " + dir + "/no/out.csv: cannot write: no directory " + dir + "/no\n");
+  r = run("pairs --input '" + dir + "/in.csv' --output '" + dir + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "nbscope: error: " + dir + ": cannot write: it is a directory\n");
+}
+
+TEST(Cli, ADirectoryAsInputIsRefusedByName) {
+  const std::string dir = scratch_dir("dir_input");
+  const auto r = run("pairs --input '" + dir + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "nbscope: error: " + dir + ": is a directory, not an elements file\n");
+}
+
 TEST(Cli, UnknownCommandExitsTwo) {
   auto r = run("frobnicate");
   EXPECT_EQ(r.exit_code, 2);

@@ -36,6 +36,14 @@ TEST(ElementsCsv, Reads3D) {
   EXPECT_DOUBLE_EQ(e.r[1], 0.25);
 }
 
+TEST(ElementsCsv, SkipsAByteOrderMarkAndCarriageReturns) {
+  const Elements e = parse_elements_csv("\xEF\xBB\xBFx,y,r\r\n1,2,0.5\r\n3,4,1\r\n", "in.csv");
+  ASSERT_EQ(e.size(), 2);
+  EXPECT_DOUBLE_EQ(e.x[1], 3);
+  EXPECT_DOUBLE_EQ(e.r[1], 1);
+  EXPECT_EQ(error_of("\xEF\xBB\xBF\n"), "in.csv:1: empty file (expected rows of x,y,r or x,y,z,r)");
+}
+
 TEST(ElementsCsv, HeaderOnlyIsAValidEmptySet) {
   EXPECT_EQ(parse_elements_csv("x,y,r\n", "in.csv").size(), 0);
   EXPECT_EQ(parse_elements_csv("# nothing here\n", "in.csv").size(), 0);

@@ -6,6 +6,7 @@
 #include "app/grid_flags.hpp"
 #include "core/detector.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/csv.hpp"
 
 namespace nbscope {
@@ -22,6 +23,7 @@ int run_pairs(Args& args) {
   if (!input) throw Error("pairs: --input ELEMENTS.csv is required");
 
   auto detector = make_detector(algorithm);  // before reading: a bad name fails fast
+  if (output) check_output_path(*output);    // and a bad output path before any detection
   const Elements elements = read_elements_csv(*input);
   if (!detector->supports_dim(elements.dim))
     throw Error(*input + ": algorithm '" + algorithm + "' does not support " + std::to_string(elements.dim) + "D elements");

@@ -36,6 +36,14 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   }
 }
 
+void check_output_path(const std::string& path) {
+  namespace fs = std::filesystem;
+  if (path.empty()) throw Error("output path is empty");
+  if (fs::is_directory(path)) throw Error(path + ": cannot write: it is a directory");
+  const fs::path parent = fs::path(path).parent_path();
+  if (!parent.empty() && !fs::is_directory(parent)) throw Error(path + ": cannot write: no directory " + parent.string());
+}
+
 void write_bytes_atomically(const std::string& path, const void* data, std::size_t size) {
   write_file_atomically(path, [&](std::ostream& out) { out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size)); });
 }

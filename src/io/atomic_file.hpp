@@ -11,6 +11,10 @@ namespace nbscope {
 // left as it was, and Error("<path>: cannot write: <reason>") is thrown.
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& fill);
 
+// Refuses, before any work is done, a path that cannot be written: empty, a directory, or in a
+// directory that does not exist. Throws Error("<path>: cannot write: <reason>").
+void check_output_path(const std::string& path);
+
 // Same, for bytes already in memory (PNG encoders hand over a buffer).
 void write_bytes_atomically(const std::string& path, const void* data, std::size_t size);
 

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string_view>
@@ -49,13 +50,14 @@ const char* const kColumnNames3[] = {"x", "y", "z", "r"};
 }  // namespace
 
 Elements parse_elements_csv(const std::string& text, const std::string& where) {
-  if (trim(text).empty()) throw Error(where + ":1: empty file (expected rows of x,y,r or x,y,z,r)");
+  const std::size_t bom = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;  // spreadsheets write a UTF-8 byte order mark
+  if (trim(std::string_view(text).substr(bom)).empty()) throw Error(where + ":1: empty file (expected rows of x,y,r or x,y,z,r)");
   Elements e;
   e.dim = 0;
   std::vector<double> cols[4];
   std::size_t line_no = 0;
   bool seen_row_or_header = false;
-  std::size_t pos = 0;
+  std::size_t pos = bom;
   while (pos <= text.size()) {
     std::size_t end = text.find('\n', pos);
     if (end == std::string::npos) end = text.size();
@@ -117,6 +119,8 @@ Elements parse_elements_csv(const std::string& text, const std::string& where) {
 }
 
 Elements read_elements_csv(const std::string& path) {
+  if (path.empty()) throw Error("input path is empty");
+  if (std::filesystem::is_directory(path)) throw Error(path + ": is a directory, not an elements file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path + ": cannot open (no such file or not readable)");
   std::ostringstream ss;
