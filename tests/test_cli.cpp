@@ -107,7 +107,7 @@ const BadInput kBadInputs[] = {
     {"missing_value", "1,2,1\n", "--algorithm", "--algorithm: missing value"},
     {"repeated_flag", "1,2,1\n", "--repeat 2 --repeat=3", "--repeat: given more than once"},
     {"pair_limit", "0,0,1\n0,0,1\n0,0,1\n0,0,1\n0,0,1\n", "--max-pairs 3",
-     "more than 3 contact pairs (the pair limit; too many elements overlap at one place)"},
+     "IN: more than 3 contact pairs (the pair limit; too many elements overlap at one place)"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Pairs, CliBadInput, ::testing::ValuesIn(kBadInputs), [](const auto& info) { return info.param.name; });

@@ -31,7 +31,11 @@ int run_dump(Args& args) {
   TraceLog trace;
   trace.set_keep_tests(false);  // the arrays are all a dump needs: memory O(writes), not O(tests)
   PairList pairs;
-  detector->detect_traced(elements, options, pairs, trace);
+  try {
+    detector->detect_traced(elements, options, pairs, trace);
+  } catch (const Error& e) {
+    throw Error(*input + ": " + e.what());  // where: the grid or the pairs of this file
+  }
 
   DumpSource source;
   source.algorithm = *algorithm;

@@ -33,7 +33,11 @@ int run_pairs(Args& args) {
   double best = 1e300, total = 0;
   for (long long rep = 0; rep < repeat; ++rep) {
     const auto t0 = std::chrono::steady_clock::now();
-    detector->detect(elements, options, pairs);
+    try {
+      detector->detect(elements, options, pairs);
+    } catch (const Error& e) {
+      throw Error(*input + ": " + e.what());  // where: the grid or the pairs of this file
+    }
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     best = std::min(best, s);
     total += s;

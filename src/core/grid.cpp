@@ -1,5 +1,7 @@
 #include "core/grid.hpp"
 
+#include <charconv>
+#include <cstdio>
 #include <string>
 
 #include "core/error.hpp"
@@ -7,9 +9,16 @@
 namespace nbscope {
 
 namespace {
+// The shortest text that reads back as `v`: exact, yet "2e-300" rather than 17 digits of noise.
 std::string fmt(double v) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
+  const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
+  return std::string(buf, end);
+}
+// A count too large to be exact anyway, in six digits.
+std::string fmt_count(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
 }
 }  // namespace
@@ -45,7 +54,7 @@ Grid make_grid(const Elements& elements, const GridOptions& options) {
     const double span_cells = std::floor((top - g.origin[a]) / d) + 1.0;
     const double cells = span_cells < 1.0 ? 1.0 : span_cells;
     if (!(cells <= static_cast<double>(kMaxCellsPerSide))) {
-      throw Error(std::string("the grid would need ") + fmt(cells) + " cells along " + axis_name[a] +
+      throw Error(std::string("the grid would need ") + fmt_count(cells) + " cells along " + axis_name[a] +
                   " (limit " + std::to_string(kMaxCellsPerSide) + "); the world is " + fmt(top - g.origin[a]) +
                   " wide for cells of " + fmt(d) + ": use a larger --cell-size");
     }
