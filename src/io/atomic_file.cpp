@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <utility>
 
 #include "core/error.hpp"
 
@@ -34,6 +35,37 @@ void write_file_atomically(const std::string& path, const std::function<void(std
     std::remove(tmp.c_str());
     throw;
   }
+}
+
+AtomicFileWriter::AtomicFileWriter(std::string path) : path_(std::move(path)) {
+  if (path_.empty()) throw Error("output path is empty");
+  if (std::filesystem::is_directory(path_)) throw Error(path_ + ": cannot write: it is a directory");
+  temp_ = temp_name_for(path_);
+  out_.open(temp_, std::ios::binary | std::ios::trunc);
+  if (!out_) {
+    const std::string reason = std::strerror(errno);
+    std::remove(temp_.c_str());
+    throw Error(path_ + ": cannot write: " + reason);
+  }
+}
+
+AtomicFileWriter::~AtomicFileWriter() {
+  if (committed_) return;
+  out_.close();
+  std::remove(temp_.c_str());
+}
+
+void AtomicFileWriter::commit() {
+  out_.flush();
+  const bool written = static_cast<bool>(out_);
+  out_.close();
+  if (!written || !out_ || std::rename(temp_.c_str(), path_.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    std::remove(temp_.c_str());
+    committed_ = true;  // nothing left to remove
+    throw Error(path_ + ": cannot write: " + reason);
+  }
+  committed_ = true;
 }
 
 void check_output_path(const std::string& path) {

@@ -49,6 +49,35 @@ const char* const kColumnNames3[] = {"x", "y", "z", "r"};
 
 }  // namespace
 
+std::string_view strip_comment(std::string_view line) {
+  const std::size_t hash = line.find('#');
+  if (hash != std::string_view::npos) line = line.substr(0, hash);
+  return trim(line);
+}
+
+std::vector<std::string_view> split_fields(std::string_view line) { return split_commas(line); }
+
+double parse_finite_number(std::string_view f, const std::string& at, const char* name) {
+  double v = 0;
+  const auto [ptr, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
+  if (f.empty() || ec == std::errc::invalid_argument || ptr != f.data() + f.size())
+    throw Error(at + name + ": '" + std::string(f) + "' is not a number");
+  if (ec == std::errc::result_out_of_range || !std::isfinite(v))
+    throw Error(at + name + ": '" + std::string(f) + "' is not a finite number");
+  return v;
+}
+
+void parse_element_row(const std::vector<std::string_view>& fields, const std::string& at, std::array<double, 4>& out) {
+  if (fields.size() != 3 && fields.size() != 4)
+    throw Error(at + std::to_string(fields.size()) + " columns; expected 3 (x,y,r) or 4 (x,y,z,r)");
+  const char* const* names = fields.size() == 3 ? kColumnNames2 : kColumnNames3;
+  for (std::size_t c = 0; c < fields.size(); ++c) {
+    const double v = parse_finite_number(fields[c], at, names[c]);
+    if (c + 1 == fields.size() && !(v > 0)) throw Error(at + "r: radius must be > 0, got " + std::string(fields[c]));
+    out[c] = v;
+  }
+}
+
 Elements parse_elements_csv(const std::string& text, const std::string& where) {
   const std::size_t bom = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;  // spreadsheets write a UTF-8 byte order mark
   if (trim(std::string_view(text).substr(bom)).empty()) throw Error(where + ":1: empty file (expected rows of x,y,r or x,y,z,r)");
@@ -64,9 +93,7 @@ Elements parse_elements_csv(const std::string& text, const std::string& where) {
     std::string_view line(text.data() + pos, end - pos);
     pos = end + 1;
     ++line_no;
-    const std::size_t hash = line.find('#');
-    if (hash != std::string_view::npos) line = line.substr(0, hash);
-    line = trim(line);
+    line = strip_comment(line);
     if (line.empty()) {
       if (end == text.size()) break;
       continue;
@@ -90,18 +117,9 @@ Elements parse_elements_csv(const std::string& text, const std::string& where) {
       throw Error(at + std::to_string(fields.size()) + " columns, but the first row had " + std::to_string(e.dim + 1));
     if (static_cast<std::int64_t>(cols[0].size()) >= kMaxElements)
       throw Error(at + "more than " + std::to_string(kMaxElements) + " elements");
-    const char* const* names = dim == 2 ? kColumnNames2 : kColumnNames3;
-    for (std::size_t c = 0; c < fields.size(); ++c) {
-      const std::string_view f = fields[c];
-      double v = 0;
-      const auto [ptr, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
-      if (f.empty() || ec == std::errc::invalid_argument || ptr != f.data() + f.size())
-        throw Error(at + names[c] + ": '" + std::string(f) + "' is not a number");
-      if (ec == std::errc::result_out_of_range || !std::isfinite(v))
-        throw Error(at + names[c] + ": '" + std::string(f) + "' is not a finite number");
-      if (c + 1 == fields.size() && !(v > 0)) throw Error(at + "r: radius must be > 0, got " + std::string(f));
-      cols[c].push_back(v);
-    }
+    std::array<double, 4> row{};
+    parse_element_row(fields, at, row);
+    for (std::size_t c = 0; c < fields.size(); ++c) cols[c].push_back(row[c]);
     if (end == text.size()) break;
   }
   if (e.dim == 0) e.dim = 2;

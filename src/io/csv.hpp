@@ -1,6 +1,9 @@
 // nbscope io: ELEMENTS.csv in, PAIRS.csv out (formats in DESIGN.md "Command line").
 #pragma once
+#include <array>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "core/elements.hpp"
 #include "core/pairs.hpp"
@@ -16,6 +19,18 @@ Elements read_elements_csv(const std::string& path);
 
 // Parses the same format from memory; `where` names it in messages.
 Elements parse_elements_csv(const std::string& text, const std::string& where);
+
+// ---- the row parsing, shared with the recorded-frames reader (io/recording.hpp) ----
+
+// `line` without a `#` comment and surrounding white space.
+std::string_view strip_comment(std::string_view line);
+// The comma-separated fields of `line`, each trimmed.
+std::vector<std::string_view> split_fields(std::string_view line);
+// A finite double from `field`; Error(at + name + ": '...' is not a (finite) number") otherwise.
+double parse_finite_number(std::string_view field, const std::string& at, const char* name);
+// One element row of 3 (x,y,r) or 4 (x,y,z,r) fields into `out` (x, y, [z,] r); Error(at + what) for
+// another column count, a non-number, NaN/Inf or r <= 0. `at` is "<where>:<line>: ".
+void parse_element_row(const std::vector<std::string_view>& fields, const std::string& at, std::array<double, 4>& out);
 
 // Writes header `i,j` and then the pairs sorted, one a line, atomically.
 void write_pairs_csv(const std::string& path, const PairList& sorted_pairs);

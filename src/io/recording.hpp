@@ -1,0 +1,82 @@
+// nbscope io: recorded frames, the .nbsrec text format (`nbscope headless --record` writes it,
+// `nbscope replay` reads it; any simulation code can write it too).
+//
+//   nbsrec 1                 the first line that is not blank or a comment: format and version
+//   # a comment              '#' starts a comment anywhere; blank lines are ignored
+//   cell_size 1              optional header lines, before the first frame, pinning the grid as
+//   origin 0,0               --cell-size / --origin / --cells and the scene keys do
+//   cells 10,10
+//   frame 0 0                frame NUMBER TIME: a non-negative integer, increasing (gaps allowed),
+//   x,y,r                    and the simulated time in seconds, finite and non-decreasing;
+//   ...                      then one element a line, as ELEMENTS.csv rows (2D only: x,y,r)
+//   frame 1 0.0166667        a frame may have no elements; element counts may change
+//
+// Numbers are written shortest-round-trip (std::to_chars), so a replay sees bit-identical doubles.
+// Index: Recording | reading | writing.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/elements.hpp"
+
+namespace nbscope {
+
+// The grid a recording pins (all unset: derived from each frame's elements).
+struct RecordingGrid {
+  std::optional<double> cell_size;
+  std::optional<std::array<double, 2>> origin;
+  std::optional<std::array<std::int64_t, 2>> cells;
+};
+
+// One recorded frame.
+struct RecordedFrame {
+  std::int64_t number = 0;
+  double time = 0;
+  Elements elements;
+};
+
+// A whole recording as read.
+struct Recording {
+  std::string path;  // as given
+  RecordingGrid grid;
+  std::vector<RecordedFrame> frames;  // at least one
+};
+
+// Reads and validates a .nbsrec file, at most `max_frames` frames (the rest is not read). Throws
+// Error("<path>:<line>: <what>") on anything wrong: an unreadable or empty file, a missing
+// "nbsrec 1" line or another version, an unknown line, a header line after the first frame, a bad
+// cell_size/origin/cells value, a frame number that does not increase, a time that decreases, a row
+// before the first frame, a bad row (as ELEMENTS.csv: column count, non-number, NaN/Inf, r <= 0), a
+// 4-column row ("replay is 2D"), an element wider than the pinned cell_size, or no frames at all.
+Recording read_recording(const std::string& path, std::int64_t max_frames = std::numeric_limits<std::int64_t>::max());
+// Same from memory; `where` names it in messages.
+Recording parse_recording(const std::string& text, const std::string& where,
+                          std::int64_t max_frames = std::numeric_limits<std::int64_t>::max());
+
+// Streams frames to `path` through a temporary file (io/atomic_file.hpp): the file appears only at
+// commit(); destroyed before that (an error, an interruption) it leaves nothing behind.
+class RecordingWriter {
+ public:
+  // Creates the temporary and writes the "nbsrec 1" line, `comment` (one '#' line per line) and
+  // the header lines of `grid`. Error when the file cannot be created.
+  RecordingWriter(const std::string& path, const RecordingGrid& grid, const std::string& comment);
+  ~RecordingWriter();
+  RecordingWriter(const RecordingWriter&) = delete;
+  RecordingWriter& operator=(const RecordingWriter&) = delete;
+
+  // Appends one frame; Error for 3D elements (the format is 2D).
+  void write_frame(std::int64_t number, double time, const Elements& elements);
+  // Renames the finished file into place; Error when anything could not be written.
+  void commit();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace nbscope

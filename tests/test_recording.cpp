@@ -1,0 +1,176 @@
+// The .nbsrec format (io/recording.hpp): exact round trips of doubles, the header's grid, and every
+// kind of bad input named by file and line.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <random>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "io/recording.hpp"
+
+namespace nbscope {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string temp_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("nbscope-recording-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+// Bit patterns, not values: -0.0 and 0.0 differ here, and so would any rounding.
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Doubles that stress a decimal round trip: random bits over many exponents, subnormals, extremes.
+Elements awkward_elements(std::uint64_t seed, int n) {
+  std::mt19937_64 rng(seed);
+  Elements e;
+  e.dim = 2;
+  auto any_double = [&] {
+    for (;;) {
+      const std::uint64_t bits = rng();
+      double v;
+      std::memcpy(&v, &bits, sizeof v);
+      if (std::isfinite(v)) return v;
+    }
+  };
+  for (int k = 0; k < n; ++k) {
+    const double x = k == 0 ? std::numeric_limits<double>::denorm_min() : (k == 1 ? -0.0 : any_double());
+    const double y = k == 2 ? std::numeric_limits<double>::max() : std::ldexp(static_cast<double>(rng() >> 11), -40) - 1e3;
+    double r = std::abs(std::ldexp(static_cast<double>(rng() >> 11), -53)) + std::numeric_limits<double>::min();
+    if (k == 3) r = 0.1 + 0.2;  // 0.30000000000000004
+    e.push_back(x, y, 0, r);
+  }
+  return e;
+}
+
+TEST(Recording, WriterThenReaderGivesBitIdenticalFramesAndGrid) {
+  const std::string dir = temp_dir("roundtrip");
+  const std::string path = dir + "/run.nbsrec";
+  RecordingGrid grid;
+  grid.cell_size = 1.0 / 3.0 * 7;  // not a short decimal
+  grid.origin = std::array<double, 2>{-0.1, 1e-300};
+  grid.cells = std::array<std::int64_t, 2>{10, 12};
+  std::vector<Elements> frames;
+  {
+    RecordingWriter w(path, grid, "test\nsecond comment line");
+    for (int f = 0; f < 4; ++f) {
+      frames.push_back(awkward_elements(static_cast<std::uint64_t>(f) + 1, f == 2 ? 0 : 50 + f));
+      w.write_frame(f * 3, f / 60.0, frames.back());
+    }
+    EXPECT_FALSE(fs::exists(path)) << "the file appears only at commit";
+    w.commit();
+  }
+  ASSERT_TRUE(fs::exists(path));
+  // A big cell_size in the header would refuse nothing here, but these radii are tiny anyway.
+  const Recording rec = read_recording(path);
+  ASSERT_TRUE(rec.grid.cell_size && rec.grid.origin && rec.grid.cells);
+  EXPECT_TRUE(same_bits(*rec.grid.cell_size, *grid.cell_size));
+  EXPECT_TRUE(same_bits((*rec.grid.origin)[0], -0.1));
+  EXPECT_TRUE(same_bits((*rec.grid.origin)[1], 1e-300));
+  EXPECT_EQ((*rec.grid.cells)[0], 10);
+  EXPECT_EQ((*rec.grid.cells)[1], 12);
+  ASSERT_EQ(rec.frames.size(), frames.size());
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    EXPECT_EQ(rec.frames[f].number, static_cast<std::int64_t>(f) * 3);
+    EXPECT_TRUE(same_bits(rec.frames[f].time, static_cast<double>(f) / 60.0));
+    const Elements& a = frames[f];
+    const Elements& b = rec.frames[f].elements;
+    ASSERT_EQ(a.size(), b.size()) << "frame " << f;
+    for (Eigen::Index k = 0; k < a.size(); ++k) {
+      ASSERT_TRUE(same_bits(a.x[k], b.x[k]) && same_bits(a.y[k], b.y[k]) && same_bits(a.r[k], b.r[k]))
+          << "frame " << f << " element " << k << ": " << a.x[k] << " " << b.x[k];
+    }
+  }
+  // --frames N reads the first N only.
+  EXPECT_EQ(read_recording(path, 2).frames.size(), 2u);
+  fs::remove_all(dir);
+}
+
+TEST(Recording, WriterDestroyedWithoutCommitLeavesNothing) {
+  const std::string dir = temp_dir("abandon");
+  {
+    RecordingWriter w(dir + "/run.nbsrec", {}, "");
+    w.write_frame(0, 0, awkward_elements(1, 10));
+  }
+  EXPECT_TRUE(fs::is_empty(dir)) << "neither the file nor its temporary may remain";
+  EXPECT_THROW(RecordingWriter(dir + "/no/such/dir/run.nbsrec", {}, ""), Error);
+  EXPECT_TRUE(fs::is_empty(dir));
+  fs::remove_all(dir);
+}
+
+TEST(Recording, ParsesTheDocumentedExample) {
+  const Recording rec = parse_recording(
+      "# made by hand\n\nnbsrec 1\ncell_size 1\norigin 0,0\ncells 10,10\nframe 0 0.0\n0.5,0.5,0.5 # one\n1.4,0.5,0.5\n"
+      "frame 1 0.0166667\r\n0.5,0.5,0.5\r\nframe 5 0.0166667\n",
+      "ex.nbsrec");
+  ASSERT_EQ(rec.frames.size(), 3u);
+  EXPECT_EQ(rec.frames[0].elements.size(), 2);
+  EXPECT_EQ(rec.frames[1].elements.size(), 1);
+  EXPECT_EQ(rec.frames[2].elements.size(), 0) << "an empty frame is valid";
+  EXPECT_EQ(rec.frames[2].number, 5);
+  EXPECT_DOUBLE_EQ(rec.frames[0].elements.x[1], 1.4);
+  EXPECT_EQ(*rec.grid.cell_size, 1.0);
+}
+
+// The message of parse_recording(text), or "" when it parses.
+std::string error_of(const std::string& text) {
+  try {
+    parse_recording(text, "bad.nbsrec");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Recording, BadInputIsNamedByLine) {
+  const std::string ok_head = "nbsrec 1\nframe 0 0\n";
+  struct Case {
+    std::string text, expected;
+  };
+  const Case cases[] = {
+      {"", "bad.nbsrec:1: empty file"},
+      {"  \n\n", "bad.nbsrec:1: empty file"},
+      {"# only a comment\n", "bad.nbsrec:1: only comments"},
+      {"frame 0 0\n1,1,1\n", "bad.nbsrec:1: expected 'nbsrec 1'"},
+      {"nbsrec 2\nframe 0 0\n", "bad.nbsrec:1: 'nbsrec 2': this nbscope reads version 1"},
+      {"nbsrec 1\n", "bad.nbsrec:1: no frames"},
+      {"nbsrec 1\ncell_size 1\n\n", "bad.nbsrec:3: no frames"},
+      {ok_head + "frame 0 1\n", "bad.nbsrec:3: frame 0 after frame 0: frame numbers must increase"},
+      {ok_head + "frame 2 1\nframe 1 2\n", "bad.nbsrec:4: frame 1 after frame 2"},
+      {"nbsrec 1\nframe 0 0.5\nframe 1 0.25\n", "bad.nbsrec:3: frame 1: time 0.25 is before frame 0's 0.5"},
+      {ok_head + "1,2,x\n", "bad.nbsrec:3: r: 'x' is not a number"},
+      {ok_head + "1,1,1\n1,2\n", "bad.nbsrec:4: 2 columns; expected 3 (x,y,r)"},
+      {ok_head + "nan,1,1\n", "bad.nbsrec:3: x: 'nan' is not a finite number"},
+      {ok_head + "1,inf,1\n", "bad.nbsrec:3: y: 'inf' is not a finite number"},
+      {ok_head + "1,1,0\n", "bad.nbsrec:3: r: radius must be > 0"},
+      {ok_head + "1,1,-2\n", "bad.nbsrec:3: r: radius must be > 0"},
+      {ok_head + "1,1,1,1\n", "bad.nbsrec:3: 4 columns (x,y,z,r): replay is 2D"},
+      {"nbsrec 1\n1,1,1\n", "bad.nbsrec:2: an element row before the first 'frame"},
+      {ok_head + "cell_size 2\n", "bad.nbsrec:3: cell_size: header lines come before the first frame"},
+      {"nbsrec 1\ncell_size 0\n", "bad.nbsrec:2: cell_size: must be > 0"},
+      {"nbsrec 1\ncell_size 1\nframe 0 0\n1,1,0.6\n", "bad.nbsrec:4: r: diameter 1.2 is larger than the header's cell_size 1"},
+      {"nbsrec 1\norigin 1\n", "bad.nbsrec:2: origin: '1' is not X,Y"},
+      {"nbsrec 1\ncells 0,3\n", "bad.nbsrec:2: cells nx: 0 is out of range"},
+      {"nbsrec 1\ncells 2.5,3\n", "bad.nbsrec:2: cells nx: '2.5' is not an integer"},
+      {"nbsrec 1\nframe -1 0\n", "bad.nbsrec:2: frame number: -1 is out of range"},
+      {"nbsrec 1\nframe 0\n", "bad.nbsrec:2: expected 'frame NUMBER TIME'"},
+      {"nbsrec 1\nframe 0 nan\n", "bad.nbsrec:2: frame time: 'nan' is not a finite number"},
+      {"nbsrec 1\nelements 3\n", "bad.nbsrec:2: unknown line 'elements 3'"},
+  };
+  for (const Case& c : cases) {
+    const std::string message = error_of(c.text);
+    EXPECT_EQ(message.rfind(c.expected, 0), 0u) << "input:\n" << c.text << "\ngot: " << message << "\nexpected: " << c.expected;
+  }
+}
+
+}  // namespace
+}  // namespace nbscope
