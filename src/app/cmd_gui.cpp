@@ -14,6 +14,7 @@
 #include "app/frame_loop.hpp"
 #include "app/gl_view.hpp"
 #include "app/headless_view.hpp"
+#include "app/replay.hpp"
 #include "app/view_options.hpp"
 #include "check/faults.hpp"
 #include "core/error.hpp"
@@ -100,7 +101,14 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
       session.error = e.what();
     }
   };
-  if (r.toggle_pause) session.paused = !session.paused;
+  if (r.toggle_pause) {
+    session.paused = !session.paused;
+    // Playing a recording that has ended starts it again.
+    if (!session.paused && loop.at_end()) {
+      attempt([&] { loop.restart(); });
+      view.on_scene_loaded(loop, false);
+    }
+  }
   if (r.speed) session.speed = *r.speed;
   if (r.algorithm) attempt([&] { loop.set_algorithm(*r.algorithm); });
   if (r.scene) {
@@ -110,7 +118,9 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
       view.on_scene_loaded(loop);
     });
   }
-  if (r.time_step) {
+  if (r.time_step && loop.replaying()) {
+    session.error = "recorded frames: the time step is the recording's";
+  } else if (r.time_step) {
     // The time step is part of the scene: the scene restarts with the new one.
     attempt([&] {
       Scene s = loop.scene();
@@ -182,6 +192,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
         }
         view.after_step(loop);
       }
+      if (loop.at_end()) session.paused = true;  // a recording plays once; P or R starts it again
     }
     failed = failed || (loop.report().checked && !loop.report().ok());
     const auto view_start = Clock::now();
@@ -227,6 +238,29 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
 }
 
 }  // namespace
+
+// ---- replay -----------------------------------------------------------------------------------
+
+bool replay_window_available() { return have_display(); }
+
+int run_replay_window(const HeadlessOptions& o) {
+  FrameLoopOptions loop_options;
+  loop_options.algorithm = o.algorithm;
+  loop_options.fault = o.fault;
+  loop_options.brute_limit = o.brute_limit;
+  FrameLoop loop(loop_options);
+  loop.load_recording_file(*o.replay, o.frames);
+  GuiOptions g;
+  g.algorithm = o.algorithm;
+  g.fault = o.fault;
+  g.view = o.view;
+  // With a screenshot: play to the last recorded frame, save it, exit (scripted, as gui --frames).
+  if (o.view.screenshot) g.frames = loop.recorded_frames() - 1;
+  Session session;
+  session.scene_path = *o.replay;
+  session.scene_files = bundled_scene_files();
+  return run_window(g, loop, session, nullptr);
+}
 
 // ---- run_gui ----------------------------------------------------------------------------------
 

@@ -1,7 +1,10 @@
-// `nbscope headless`: load a scene, run N frames through the FrameLoop, check every frame, report.
+// `nbscope headless`: load a scene, run N frames through the FrameLoop, check every frame, report;
+// optionally record every frame's elements. `nbscope replay --headless` runs the same loop on
+// recorded frames (app/cmd_replay.cpp).
 #include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -11,11 +14,35 @@
 #include "app/frame_loop.hpp"
 #include "app/headless.hpp"
 #include "app/headless_view.hpp"
+#include "app/help.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/recording.hpp"
 
 namespace nbscope {
 
 namespace {
+
+// Ctrl+C / SIGTERM while recording: the loop stops at the next frame and throws, so the
+// recording's temporary file is removed and no half recording remains.
+volatile std::sig_atomic_t g_interrupted = 0;
+extern "C" void note_interrupt(int) { g_interrupted = 1; }
+
+// Installs note_interrupt for SIGINT and SIGTERM while it lives.
+class InterruptGuard {
+ public:
+  InterruptGuard() : old_int_(std::signal(SIGINT, note_interrupt)), old_term_(std::signal(SIGTERM, note_interrupt)) {}
+  ~InterruptGuard() {
+    std::signal(SIGINT, old_int_);
+    std::signal(SIGTERM, old_term_);
+  }
+  InterruptGuard(const InterruptGuard&) = delete;
+  InterruptGuard& operator=(const InterruptGuard&) = delete;
+
+ private:
+  void (*old_int_)(int);
+  void (*old_term_)(int);
+};
 
 // A one-line bar on stderr, redrawn only when it changes.
 class Progress {
@@ -74,7 +101,7 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
   std::string names;
   for (const AlgorithmRun& run : report.runs) names += (names.empty() ? "" : ",") + run.algorithm;
   const std::size_t frames = report.runs.empty() ? 0 : report.runs.front().frames.size();
-  std::string s = "headless: " + loop.scene().name + ", " + names + (o.fault == Fault::None ? "" : std::string(", fault ") + fault_name(o.fault)) +
+  std::string s = std::string(loop.replaying() ? "replay: " : "headless: ") + loop.scene().name + ", " + names + (o.fault == Fault::None ? "" : std::string(", fault ") + fault_name(o.fault)) +
                   ", " + std::to_string(frames) + " frames, " + std::to_string(loop.elements().size()) + " elements: ";
   std::string failures;
   for (const AlgorithmRun& run : report.runs) {
@@ -84,16 +111,21 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
     failures += (failures.empty() ? "" : "; ") + (report.runs.size() > 1 ? run.algorithm + ": " : std::string()) + std::to_string(total) +
                 " violations in " + std::to_string(bad_frames) + " frames (" + broken + "), first in frame " + std::to_string(first);
   }
-  if (failures.empty()) {
-    s += "all " + std::to_string(kInvariantCount) + " invariants held in every frame" + (report.runs.size() > 1 ? " for every algorithm" : "");
+  const std::string every = report.runs.size() > 1 ? " for every algorithm" : "";
+  if (failures.empty() && loop.replaying()) {
+    s += "A==R held in every frame" + every;
+  } else if (failures.empty()) {
+    s += "all " + std::to_string(kInvariantCount) + " invariants held in every frame" + every;
   } else {
     s += failures;
   }
   s += " (reference " + refs_text + ")";
+  // Recorded frames: say plainly what was not checked rather than let it pass silently.
+  if (loop.replaying()) s += "; A-in-F, T-in-A, AABB-in-cells not checked (recorded frames have no Box2D world)";
   if (!report.note.empty()) s += " (" + report.note + ")";
   char buf[160];
   std::snprintf(buf, sizeof buf, "; ms per frame: physics %.3f, detection", report.runs.empty() ? 0.0 : mean_ms(report.runs.front(), &FrameTimings::physics_ms));
-  s += buf;
+  s += loop.replaying() ? "; ms per frame: detection" : buf;  // recorded frames have no physics
   double check = 0;
   for (const AlgorithmRun& run : report.runs) {
     std::snprintf(buf, sizeof buf, "%s%s %.3f", &run == &report.runs.front() ? " " : ", ", report.runs.size() > 1 ? run.algorithm.c_str() : "",
@@ -148,7 +180,7 @@ HeadlessOptions parse_headless_options(Args& args) {
   o.brute_limit = args.integer("--brute-limit", 0, 1'000'000).value_or(o.brute_limit);
   o.quiet = args.flag("--quiet");
   parse_view_options(args, true, o.view);
-  // (Later flags of DESIGN.md "Command line" go here: --step, --record.)
+  o.record = args.value("--record");
   args.finish();
   if (!scene) throw Error("headless: --scene FILE is required");
   o.scene = *scene;
@@ -167,6 +199,7 @@ void check_report_path(const std::string& path) {
 
 int run_headless_loop(const HeadlessOptions& o) {
   if (o.report) check_report_path(*o.report);
+  if (o.record) check_output_path(*o.record);  // before any frame runs, as --report
   std::string note;
   std::vector<std::string> names = algorithms_of(o.algorithm, 0, o.brute_limit, note);
   FrameLoopOptions lo;
@@ -175,7 +208,8 @@ int run_headless_loop(const HeadlessOptions& o) {
   lo.brute_limit = o.brute_limit;
   FrameLoop loop(lo);  // an unknown algorithm fails here, before the scene is read
   for (const std::string& name : names) make_detector(name);
-  loop.load_scene_file(o.scene);
+  if (o.replay) loop.load_recording_file(*o.replay, o.frames);
+  else loop.load_scene_file(o.scene);
   if (o.algorithm == "all") {
     names = algorithms_of(o.algorithm, loop.elements().size(), o.brute_limit, note);
     loop.set_algorithm(names.front());
@@ -185,28 +219,58 @@ int run_headless_loop(const HeadlessOptions& o) {
   std::unique_ptr<HeadlessView> view = o.view.screenshot ? make_headless_view(o.view, loop) : nullptr;
 
   RunReport report;
-  report.scene_path = o.scene;
+  report.source = o.replay ? "recording" : "scene";
+  report.scene_path = o.replay ? *o.replay : o.scene;
   report.scene_name = loop.scene().name;
   report.fault = fault_name(o.fault);
   report.fault_description = fault_description(o.fault);
   report.reference_policy = loop.reference_policy();
   report.scope_note = FrameLoop::scope_note();
   report.note = note;
-  report.frames_requested = o.frames;
+  // A recording runs its frames (at most --frames); frame 0 is one of them. A scene runs frames 1..N.
+  const std::int64_t frames = o.replay ? loop.recorded_frames() : o.frames;
+  report.frames_requested = frames;
   for (const std::string& name : names) {
     report.runs.push_back({name, {}});
-    report.runs.back().frames.reserve(static_cast<std::size_t>(std::min<std::int64_t>(o.frames, 100'000)));
+    report.runs.back().frames.reserve(static_cast<std::size_t>(std::min<std::int64_t>(frames, 100'000)));
   }
-
-  Progress progress(!o.quiet && ::isatty(STDERR_FILENO) == 1, o.frames);
-  for (std::int64_t k = 0; k < o.frames; ++k) {
-    loop.step();
+  const auto keep_frame = [&] {
     report.runs[0].frames.push_back(loop.report());
     for (std::size_t r = 0; r < loop.comparison_reports().size(); ++r) report.runs[r + 1].frames.push_back(loop.comparison_reports()[r]);
+  };
+
+  // The recording: the scene's pinned grid, then frame 0 (the initial poses, detected before any step) and every step.
+  std::unique_ptr<RecordingWriter> recorder;
+  std::optional<InterruptGuard> interrupts;
+  if (o.record) {
+    const Scene& sc = loop.scene();
+    RecordingGrid grid;
+    grid.cell_size = sc.cell_size;
+    if (sc.origin) grid.origin = std::array<double, 2>{sc.origin->x, sc.origin->y};
+    grid.cells = sc.cells;
+    recorder = std::make_unique<RecordingWriter>(*o.record, grid, std::string("nbscope ") + kVersion + " headless --record: scene " + o.scene);
+    g_interrupted = 0;
+    interrupts.emplace();
+    recorder->write_frame(loop.frame(), loop.time(), loop.elements());
+  }
+
+  Progress progress(!o.quiet && ::isatty(STDERR_FILENO) == 1, frames);
+  for (std::int64_t k = 0; k < frames; ++k) {
+    if (o.replay && k == 0) {
+      keep_frame();  // recorded frame 0 was detected and checked on load
+    } else {
+      loop.step();
+      keep_frame();
+    }
+    if (recorder) {
+      if (g_interrupted != 0) throw Error("interrupted: " + *o.record + " not written (a recording is whole or not at all)");
+      recorder->write_frame(loop.frame(), loop.time(), loop.elements());
+    }
     if (view) view->after_step(loop);
     progress.update(k + 1);
   }
   progress.finish();
+  if (recorder) recorder->commit();
   if (view) std::fprintf(stderr, "nbscope: %s\n", view->write_screenshot(loop).c_str());
   if (o.report) write_run_report(*o.report, report);
   std::printf("%s\n", summary_of(o, loop, report).c_str());

@@ -14,6 +14,10 @@ int run_dump(Args& args);
 // `nbscope headless --scene F [--frames N] [--algorithm A] [--report F] [--inject-fault NAME]` (app/headless.hpp)
 int run_headless(Args& args);
 
+// `nbscope replay FILE.nbsrec [--headless] [--frames N] [--algorithm A|a,b|all] [--report F] ...`:
+// recorded frames detected and checked again (app/cmd_replay.cpp, app/replay.hpp).
+int run_replay(Args& args);
+
 // `nbscope [gui] [--scene F] [--algorithm A] [--frames N --screenshot OUT.png] [--size WxH] ...`:
 // the window (app/cmd_gui.cpp); headless with a screenshot when there is no display.
 int run_gui(Args& args);

@@ -1,10 +1,12 @@
-// FrameLoop: owns the Box2D world, the detector, the checker and the frame's results.
+// FrameLoop: owns the frame source (a Box2D world, or recorded frames), the detector, the checker
+// and the frame's results.
 //
-// Index: Impl (state) | scene | configuration | one frame (detect_and_check) | accessors | drag.
+// Index: Impl (state) | scene | recording | configuration | one frame (detect_and_check) | accessors | drag.
 #include "app/frame_loop.hpp"
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 
 #include "check/check.hpp"
 #include "core/error.hpp"
@@ -59,7 +61,9 @@ struct Lane {
 struct FrameLoop::Impl {
   FrameLoopOptions options;
   Scene scene;
-  std::unique_ptr<PhysicsWorld> world;
+  std::unique_ptr<PhysicsWorld> world;          // the frame source for a scene; null when replaying
+  std::shared_ptr<const Recording> recording;   // the frame source when replaying; null for a scene
+  std::size_t recorded = 0;                     // index of the current recorded frame
   Lane main;
   std::vector<Lane> others;               // comparison algorithms
   std::vector<std::string> other_names;
@@ -74,14 +78,20 @@ struct FrameLoop::Impl {
   explicit Impl(FrameLoopOptions o)
       : options(std::move(o)), main(options.algorithm), checker(CheckOptions{options.brute_limit}) {}
 
-  const Elements& detector_input() const { return detected_on_world ? world->elements() : detected_on; }
+  // ---- the frame source ----
+  bool loaded() const { return world != nullptr || recording != nullptr; }
+  const Elements& now() const { return world ? world->elements() : recording->frames[recorded].elements; }
+  std::int64_t frame_number() const { return world ? world->frame() : recording->frames[recorded].number; }
+  bool first_frame() const { return world ? world->frame() == 0 : recorded == 0; }
+
+  const Elements& detector_input() const { return detected_on_world ? now() : detected_on; }
 
   // Detection (with the fault) and the check of the world's current frame, for every lane;
   // physics_ms is kept.
   void detect_and_check() {
-    const Elements& now = world->elements();
+    const Elements& now = this->now();
     detected_on_world = true;
-    if (options.fault == Fault::StalePositions && world->frame() > 0) {
+    if (options.fault == Fault::StalePositions && !first_frame()) {
       // Last frame's positions; elements that did not exist then (emitted now) at their new ones.
       detected_on = now;
       const Eigen::Index old_n = std::min(stale.size(), now.size());
@@ -89,7 +99,7 @@ struct FrameLoop::Impl {
       detected_on.y.head(old_n) = stale.y.head(old_n);
       detected_on_world = false;
     }
-    const std::string where = scene.path + ": frame " + std::to_string(world->frame()) + ": ";
+    const std::string where = scene.path + ": frame " + std::to_string(frame_number()) + ": ";
     const Elements& input = detector_input();
     main.detect(input, detect_options, options.fault, where);
     for (Lane& lane : others) lane.detect(input, detect_options, options.fault, where);
@@ -98,16 +108,17 @@ struct FrameLoop::Impl {
       for (Lane* lane : lanes()) {
         const double detection_ms = lane->report.timings.detection_ms, physics_ms = lane->report.timings.physics_ms;
         lane->report = FrameReport{};
-        lane->report.frame = world->frame();
+        lane->report.frame = frame_number();
         lane->report.timings = {physics_ms, detection_ms, 0};
         lane->report.counts.elements = now.size();
-        lane->report.counts.bodies = world->body_count();
+        lane->report.counts.bodies = world ? world->body_count() : 0;
         lane->report.counts.a = static_cast<std::int64_t>(lane->pairs.size());
       }
     } else {
       // The first lane's check time includes the sets every lane shares (F, G, T).
       auto t0 = std::chrono::steady_clock::now();
-      checker.begin_frame(*world, detect_options);
+      if (world) checker.begin_frame(*world, detect_options);
+      else checker.begin_frame(now, frame_number(), detect_options);
       for (Lane* lane : lanes()) {
         CheckInput in;
         in.algorithm = lane->detector->name();
@@ -149,10 +160,44 @@ struct FrameLoop::Impl {
     Scene kept = s;
     scene = std::move(kept);
     world = std::move(fresh);
+    recording.reset();
     detect_options = opts;
+    start();
+  }
+
+  // The frame source's first frame, detected and checked.
+  void start() {
     for (Lane* lane : lanes()) lane->report = FrameReport{};
-    stale = world->elements();
+    recorded = 0;
+    stale = now();
     detect_and_check();
+  }
+
+  // Replays `rec` instead of a world: its grid pins as a scene's would, its name the file's stem.
+  void build(std::shared_ptr<const Recording> rec) {
+    DetectOptions opts;
+    Scene s;
+    s.path = rec->path;
+    s.name = std::filesystem::path(rec->path).stem().string();
+    if (rec->grid.cell_size) opts.grid.cell_size = s.cell_size = *rec->grid.cell_size;
+    if (rec->grid.origin) {
+      s.origin = Vec2{(*rec->grid.origin)[0], (*rec->grid.origin)[1]};
+      opts.grid.origin = std::array<double, 3>{s.origin->x, s.origin->y, 0};
+    }
+    if (rec->grid.cells) {
+      s.cells = rec->grid.cells;
+      opts.grid.cells = std::array<std::int64_t, 3>{(*s.cells)[0], (*s.cells)[1], 1};
+    }
+    // The recorded time per frame, for the panels (the recording's own times are shown per frame).
+    const RecordedFrame& first = rec->frames.front();
+    const RecordedFrame& last = rec->frames.back();
+    if (last.number > first.number && last.time > first.time)
+      s.time_step = (last.time - first.time) / static_cast<double>(last.number - first.number);
+    scene = std::move(s);
+    world.reset();
+    recording = std::move(rec);
+    detect_options = opts;
+    start();
   }
 };
 
@@ -165,9 +210,25 @@ void FrameLoop::load_scene_file(const std::string& path) { impl_->build(read_sce
 void FrameLoop::load_scene(const Scene& scene) { impl_->build(scene); }
 void FrameLoop::restart() {
   if (impl_->world) impl_->build(Scene(impl_->scene));
+  else if (impl_->recording) impl_->start();
 }
-bool FrameLoop::has_scene() const { return impl_->world != nullptr; }
+bool FrameLoop::has_scene() const { return impl_->loaded(); }
 const Scene& FrameLoop::scene() const { return impl_->scene; }
+
+// ---- recording -----------------------------------------------------------------------------
+
+void FrameLoop::load_recording_file(const std::string& path, std::int64_t max_frames) {
+  load_recording(read_recording(path, max_frames));
+}
+void FrameLoop::load_recording(Recording recording) {
+  if (recording.frames.empty()) throw Error(recording.path + ": no frames");
+  impl_->build(std::make_shared<const Recording>(std::move(recording)));
+}
+bool FrameLoop::replaying() const { return impl_->recording != nullptr; }
+std::int64_t FrameLoop::recorded_frames() const {
+  return impl_->recording ? static_cast<std::int64_t>(impl_->recording->frames.size()) : 0;
+}
+bool FrameLoop::at_end() const { return impl_->recording && impl_->recorded + 1 >= impl_->recording->frames.size(); }
 
 // ---- configuration -------------------------------------------------------------------------
 
@@ -208,6 +269,14 @@ const std::vector<FrameReport>& FrameLoop::comparison_reports() const { return i
 // ---- one frame -----------------------------------------------------------------------------
 
 void FrameLoop::step() {
+  if (impl_->recording) {
+    if (at_end()) return;
+    impl_->stale = impl_->now();
+    ++impl_->recorded;
+    impl_->set_physics_ms(0);  // no physics: the frame was read with the file
+    impl_->detect_and_check();
+    return;
+  }
   if (!impl_->world) return;
   impl_->stale = impl_->world->elements();
   const auto t0 = std::chrono::steady_clock::now();
@@ -217,17 +286,20 @@ void FrameLoop::step() {
 }
 
 void FrameLoop::redetect() {
-  if (impl_->world) impl_->detect_and_check();
+  if (impl_->loaded()) impl_->detect_and_check();
 }
 
 // ---- accessors -----------------------------------------------------------------------------
 
-std::int64_t FrameLoop::frame() const { return impl_->world ? impl_->world->frame() : 0; }
-double FrameLoop::time() const { return impl_->world ? impl_->world->time() : 0; }
+std::int64_t FrameLoop::frame() const { return impl_->loaded() ? impl_->frame_number() : 0; }
+double FrameLoop::time() const {
+  if (impl_->recording) return impl_->recording->frames[impl_->recorded].time;
+  return impl_->world ? impl_->world->time() : 0;
+}
 
 const Elements& FrameLoop::elements() const {
   static const Elements kNone;
-  return impl_->world ? impl_->world->elements() : kNone;
+  return impl_->loaded() ? impl_->now() : kNone;
 }
 const std::vector<ElementSource>& FrameLoop::element_sources() const {
   static const std::vector<ElementSource> kNone;
@@ -244,14 +316,26 @@ const PairList& FrameLoop::touching_pairs() const { return impl_->options.checks
 const PairList& FrameLoop::tight_aabb_pairs() const { return impl_->options.checks ? impl_->checker.tight_aabb_pairs() : kNoPairs; }
 
 void FrameLoop::body_shapes(std::vector<BodyShape>& out) const {
-  if (impl_->world) impl_->world->shapes(out);
-  else out.clear();
+  out.clear();
+  if (impl_->world) {
+    impl_->world->shapes(out);
+  } else if (impl_->recording) {
+    // No bodies: each recorded element is drawn as a dynamic circle.
+    const Elements& e = impl_->now();
+    out.resize(static_cast<std::size_t>(e.size()));
+    for (Eigen::Index k = 0; k < e.size(); ++k) {
+      BodyShape& b = out[static_cast<std::size_t>(k)];
+      b.element = static_cast<ElementId>(k);
+      b.centre = Vec2{e.x[k], e.y[k]};
+      b.radius = e.r[k];
+    }
+  }
 }
 
 const Detector& FrameLoop::detector() const { return *impl_->main.detector; }
 
 void FrameLoop::trace_frame(TraceLog& out_trace, PairList& out_pairs) {
-  if (!impl_->world) {
+  if (!impl_->loaded()) {
     out_trace.reset();
     out_pairs.clear();
     return;

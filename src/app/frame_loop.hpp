@@ -25,6 +25,7 @@
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
 #include "core/trace.hpp"
+#include "io/recording.hpp"
 #include "io/report_json.hpp"
 #include "io/scene_json.hpp"
 #include "physics/shapes.hpp"
@@ -53,9 +54,25 @@ class FrameLoop {
   void load_scene(const Scene& scene);
   // Rebuilds the current scene from its description (frame 0 again); no effect without a scene.
   void restart();
+  // True when a scene or a recording is loaded.
   [[nodiscard]] bool has_scene() const;
-  // The loaded scene (an empty default Scene before the first load).
+  // The loaded scene (an empty default Scene before the first load; for a recording: its path, its
+  // file's stem as name, its pinned grid, no bodies).
   [[nodiscard]] const Scene& scene() const;
+
+  // ---- recorded frames (io/recording.hpp), instead of a Box2D world ----
+  // Reads a .nbsrec file (at most max_frames frames) and detects and checks its first frame. The
+  // check has no Box2D world then: only A==R runs (report().box2d_checks is false). On error the
+  // old scene or recording stays. Loading a scene afterwards replaces the recording.
+  void load_recording_file(const std::string& path, std::int64_t max_frames = INT64_MAX);
+  // Same for a recording already in memory (at least one frame).
+  void load_recording(Recording recording);
+  // True when the frames come from a recording.
+  [[nodiscard]] bool replaying() const;
+  // The number of recorded frames (0 for a scene).
+  [[nodiscard]] std::int64_t recorded_frames() const;
+  // True on a recording's last frame, where step() does nothing (always false for a scene).
+  [[nodiscard]] bool at_end() const;
 
   // ---- configuration (each takes effect at once: the current frame is detected and checked again) ----
   // Switches the detector; throws Error (old one kept) for an unknown or 3D-only name.
@@ -78,14 +95,15 @@ class FrameLoop {
   [[nodiscard]] const std::vector<FrameReport>& comparison_reports() const;
 
   // ---- advancing ----
-  // Advances one frame: physics, elements, detection, check. No effect without a scene.
+  // Advances one frame: physics (or the next recorded frame), elements, detection, check. No effect
+  // without a scene or at a recording's end.
   void step();
   // Detects and checks the current frame again without stepping (e.g. while paused).
   void redetect();
 
   // ---- the current frame ----
-  [[nodiscard]] std::int64_t frame() const;   // 0 after load, +1 per step()
-  [[nodiscard]] double time() const;          // simulated seconds
+  [[nodiscard]] std::int64_t frame() const;   // 0 after load, +1 per step(); a recording's own numbers
+  [[nodiscard]] double time() const;          // simulated seconds (a recording's own times)
   // Bounding circles at the current poses (element k = fixture k, see element_sources()).
   [[nodiscard]] const Elements& elements() const;
   // Element -> (body, fixture).
@@ -107,7 +125,8 @@ class FrameLoop {
   [[nodiscard]] const PairList& box2d_pairs() const;
   [[nodiscard]] const PairList& touching_pairs() const;
   [[nodiscard]] const PairList& tight_aabb_pairs() const;
-  // Every fixture at the current poses in world coordinates, for drawing (fills `out`).
+  // Every fixture at the current poses in world coordinates, for drawing (fills `out`); for a
+  // recording one dynamic circle per element.
   void body_shapes(std::vector<BodyShape>& out) const;
   // The detector in use (for its name, own_bytes(), pseudocode()).
   [[nodiscard]] const Detector& detector() const;

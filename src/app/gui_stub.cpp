@@ -2,6 +2,7 @@
 // build): every request to render is refused with one error line (exit 2).
 #include "app/commands.hpp"
 #include "app/headless_view.hpp"
+#include "app/replay.hpp"
 #include "core/error.hpp"
 
 namespace nbscope {
@@ -11,6 +12,10 @@ void check_screenshot_path(const std::string&) {}
 std::unique_ptr<HeadlessView> make_headless_view(const ViewOptions&, const FrameLoop&) {
   throw Error("--screenshot: this nbscope was built without rendering (NBSCOPE_GUI=OFF)");
 }
+
+bool replay_window_available() { return false; }
+
+int run_replay_window(const HeadlessOptions&) { throw Error("replay: this nbscope was built without the window (NBSCOPE_GUI=OFF)"); }
 
 int run_gui(Args&) { throw Error("gui: this nbscope was built without the window (NBSCOPE_GUI=OFF)"); }
 

@@ -21,11 +21,14 @@ struct HeadlessOptions {
   std::int64_t brute_limit = 2000;    // --brute-limit N: R is brute force up to N elements
   bool quiet = false;                 // --quiet: no progress bar even on a terminal
   ViewOptions view;                   // --screenshot, --size, --gl, --overlays, ... (app/view_options.hpp)
+  std::optional<std::string> record;  // --record OUT.nbsrec: every frame's elements (io/recording.hpp)
+  std::optional<std::string> replay;  // `nbscope replay FILE`: recorded frames instead of a scene
+                                      // (frames = at most that many of them)
 };
 
 // Reads every headless flag from `args` and refuses leftovers; throws Error on bad values.
 HeadlessOptions parse_headless_options(Args& args);
-// Runs the frames; prints the one-line summary on stdout (progress on stderr when it is a
+// Runs the frames (of the scene, or of the recording when `replay` is set); prints the one-line summary on stdout (progress on stderr when it is a
 // terminal); writes the report. Returns 0 when every frame passed, 1 when a check failed.
 int run_headless_loop(const HeadlessOptions& options);
 

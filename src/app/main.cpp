@@ -38,6 +38,7 @@ int dispatch(const std::string& command, nbscope::Args& args) {
   if (command == "dump") return nbscope::run_dump(args);
   if (command == "headless") return nbscope::run_headless(args);
   if (command == "gui") return nbscope::run_gui(args);
+  if (command == "replay") return nbscope::run_replay(args);
   throw nbscope::Error(command + ": unknown command (see nbscope --help)");
 }
 

@@ -47,13 +47,15 @@ const PairList& FrameChecker::reference_of(const std::string& name) {
   for (const FrameReference& r : frame_references_)
     if (r.name == name) return r.pairs;
   frame_references_.push_back({name, {}});
-  reference(name).detect(world_->elements(), detect_options_, frame_references_.back().pairs);
+  reference(name).detect(*elements_, detect_options_, frame_references_.back().pairs);
   sort_pairs(frame_references_.back().pairs);
   return frame_references_.back().pairs;
 }
 
 void FrameChecker::begin_frame(const PhysicsWorld& world, const DetectOptions& options) {
   world_ = &world;
+  elements_ = &world.elements();
+  frame_ = world.frame();
   detect_options_ = options;
   frame_references_.clear();
   r_.clear();
@@ -61,21 +63,33 @@ void FrameChecker::begin_frame(const PhysicsWorld& world, const DetectOptions& o
   world.ground_truth(g_, t_);
 }
 
+void FrameChecker::begin_frame(const Elements& elements, std::int64_t frame, const DetectOptions& options) {
+  world_ = nullptr;
+  elements_ = &elements;
+  frame_ = frame;
+  detect_options_ = options;
+  frame_references_.clear();
+  r_.clear();
+  f_.clear();
+  g_.clear();
+  t_.clear();
+}
+
 void FrameChecker::check(const CheckInput& in, FrameReport& out) {
-  const PhysicsWorld& world = *world_;
-  const Elements& e = world.elements();
+  const Elements& e = *elements_;
   const std::vector<CellIndex>& cells = *in.cells;
   const auto n = static_cast<ElementId>(e.size());
-  const std::int64_t frame = world.frame();
+  const std::int64_t frame = frame_;
 
   out.frame = frame;
   out.checked = true;
-  out.box2d_stepped = frame > 0;
+  out.box2d_checks = world_ != nullptr;
+  out.box2d_stepped = world_ != nullptr && frame > 0;
   out.broken = {};
   out.violations.clear();
   out.counts = {};
   out.counts.elements = n;
-  out.counts.bodies = world.body_count();
+  out.counts.bodies = world_ != nullptr ? world_->body_count() : 0;
 
   const auto cell_of = [&](ElementId k) {
     return k >= 0 && static_cast<std::size_t>(k) < cells.size() ? cells[static_cast<std::size_t>(k)] : CellIndex{-1, -1};
@@ -104,6 +118,9 @@ void FrameChecker::check(const CheckInput& in, FrameReport& out) {
   out.counts.r = static_cast<std::int64_t>(r_.size());
   for (const Pair& p : pairs_missing_from(r_, a)) report(Invariant::AEqualsR, p, "missing from A (in R)");
   for (const Pair& p : pairs_missing_from(a, r_)) report(Invariant::AEqualsR, p, "extra in A (not in R)");
+
+  if (world_ == nullptr) return;  // recorded frames: the rest needs Box2D's world
+  const PhysicsWorld& world = *world_;
 
   // A ⊆ F, on the pairs Box2D would consider.
   Box2dScope why;

@@ -53,6 +53,9 @@ class FrameChecker {
   // Computes what does not depend on the algorithm under test, once per frame: F, G and T (R is
   // computed by the first check() that needs it, and shared by later ones of the frame).
   void begin_frame(const PhysicsWorld& world, const DetectOptions& options);
+  // A frame without a Box2D world (recorded frames): only A==R can be checked; check() marks the
+  // report's box2d_checks false and leaves F, G and T empty. `elements` must outlive the frame's checks.
+  void begin_frame(const Elements& elements, std::int64_t frame, const DetectOptions& options);
   // Runs every invariant for one algorithm's pairs into `out` (counts, broken, violations; timings
   // untouched). begin_frame() must have been called for this frame; several algorithms may be
   // checked against one frame.
@@ -75,7 +78,9 @@ class FrameChecker {
   };
 
   CheckOptions options_;
-  const PhysicsWorld* world_ = nullptr;                // of the current frame
+  const PhysicsWorld* world_ = nullptr;                // of the current frame; null for recorded frames
+  const Elements* elements_ = nullptr;                 // of the current frame
+  std::int64_t frame_ = 0;
   DetectOptions detect_options_;
   std::vector<std::unique_ptr<Detector>> references_;  // kept: box2d keeps its tree between frames
   std::vector<FrameReference> frame_references_;       // R of this frame per reference used

@@ -1,5 +1,6 @@
 // The headless report. Keys:
-//   nbscope_report (format version 1), scene {path, name}, algorithms [names], fault {name, description},
+//   nbscope_report (format version 1), source ("scene" | "recording"), scene {path, name} (a recording's
+//   path and file stem), not_checked {invariants [names], why} (recordings: the Box2D invariants), algorithms [names], fault {name, description},
 //   reference_policy, a_in_f_scope, note, invariants [{name, description}], frames_requested, passed,
 //   violations_total, runs [one per algorithm:
 //     {algorithm, passed, frames_run, violations {total, by_invariant, frames_with_violations, first_frame,
@@ -44,6 +45,8 @@ const char* invariant_description(Invariant invariant) {
   return "?";
 }
 
+bool needs_box2d(Invariant invariant) { return invariant != Invariant::AEqualsR; }
+
 std::int64_t FrameReport::violation_count() const {
   std::int64_t n = 0;
   for (const std::int64_t b : broken) n += b;
@@ -59,7 +62,7 @@ json frame_json(const FrameReport& f) {
   json held = json::object();
   for (int k = 0; k < kInvariantCount; ++k) {
     const auto inv = static_cast<Invariant>(k);
-    const bool ran = f.checked && (inv != Invariant::AInF || f.box2d_stepped);
+    const bool ran = f.checked && (!needs_box2d(inv) || f.box2d_checks) && (inv != Invariant::AInF || f.box2d_stepped);
     held[invariant_name(inv)] = ran ? json(f.broken[static_cast<std::size_t>(k)] == 0) : json(nullptr);
   }
   json violations = json::array();
@@ -151,8 +154,14 @@ std::string run_report_json(const RunReport& report) {
     algorithms.push_back(r.algorithm);
     for (const FrameReport& f : r.frames) total += f.violation_count();
   }
+  json not_checked = json::array();
+  if (report.source == "recording")
+    for (int k = 0; k < kInvariantCount; ++k)
+      if (needs_box2d(static_cast<Invariant>(k))) not_checked.push_back(invariant_name(static_cast<Invariant>(k)));
   const json head = {{"nbscope_report", 1},
+                     {"source", report.source},
                      {"scene", {{"path", report.scene_path}, {"name", report.scene_name}}},
+                     {"not_checked", {{"invariants", not_checked}, {"why", not_checked.empty() ? "" : kNoBox2dReason}}},
                      {"algorithms", algorithms},
                      {"fault", {{"name", report.fault}, {"description", report.fault_description}}},
                      {"reference_policy", report.reference_policy},

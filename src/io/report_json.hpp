@@ -73,6 +73,7 @@ struct FrameReport {
   std::int64_t frame = 0;
   bool checked = false;          // the invariants ran (off in the GUI when the user turns checks off)
   bool box2d_stepped = false;    // A-in-F needs Box2D's contact list, which exists only after a step
+  bool box2d_checks = true;      // A-in-F, T-in-A, AABB-in-cells ran: false for recorded frames (no Box2D world)
   std::string reference;         // detector that computed R ("brute", "nbs", "box2d")
   FrameCounts counts;
   FrameTimings timings;
@@ -103,12 +104,18 @@ struct RunReport {
   std::string reference_policy;      // how R was chosen, in words
   std::string scope_note;            // which pairs A-in-F applies to, in words (Box2D's filters)
   std::string note;                  // anything else the reader should know ("" for nothing)
+  std::string source = "scene";      // where the frames came from: "scene" (Box2D) or "recording" (.nbsrec)
   std::int64_t frames_requested = 0;
   std::vector<AlgorithmRun> runs;
 
   // True when every run ran every requested frame and passed.
   [[nodiscard]] bool passed() const;
 };
+
+// The invariants that need Box2D's world (A-in-F, T-in-A, AABB-in-cells), and why recorded frames skip them.
+[[nodiscard]] bool needs_box2d(Invariant invariant);
+inline constexpr const char* kNoBox2dReason =
+    "recorded frames have no Box2D world: A-in-F, T-in-A and AABB-in-cells are not available (not passed: not checked)";
 
 // Writes the report as JSON, atomically (see DESIGN.md; keys documented in report_json.cpp).
 void write_run_report(const std::string& path, const RunReport& report);

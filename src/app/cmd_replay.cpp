@@ -1,0 +1,42 @@
+// `nbscope replay FILE.nbsrec`: the frames of a recording (nbscope headless --record, or any
+// simulation code writing the documented text format) detected and checked again, with any
+// algorithm; headless by default without a window, in the window when there is one.
+#include <cstdio>
+#include <limits>
+
+#include "app/commands.hpp"
+#include "app/replay.hpp"
+#include "core/error.hpp"
+
+namespace nbscope {
+
+int run_replay(Args& args) {
+  HeadlessOptions o;
+  const bool headless = args.flag("--headless");
+  o.frames = args.integer("--frames", 1, std::numeric_limits<std::int64_t>::max()).value_or(std::numeric_limits<std::int64_t>::max());
+  o.algorithm = args.value("--algorithm").value_or(o.algorithm);
+  o.report = args.value("--report");
+  if (const auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);
+  o.brute_limit = args.integer("--brute-limit", 0, 1'000'000).value_or(o.brute_limit);
+  o.quiet = args.flag("--quiet");
+  const bool window = !headless && replay_window_available();
+  parse_view_options(args, !window, o.view);
+  const auto file = args.positional();  // after the flags, so a flag's value is not taken for it
+  if (const auto extra = args.positional()) throw Error("replay: " + *extra + ": unexpected argument (one recording at a time)");
+  args.finish();
+  if (!file) throw Error("replay: FILE.nbsrec is required (nbscope replay FILE.nbsrec [--headless] ...)");
+  if (o.fault == Fault::DropBox2dContact)
+    throw Error(std::string("--inject-fault ") + fault_name(o.fault) +
+                ": recorded frames have no Box2D contact list (use drop-pair, drop-mask-cell, off-by-one-cell or stale-positions)");
+  o.replay = *file;
+  if (window) {
+    if (o.algorithm == "all" || o.algorithm.find(',') != std::string::npos)
+      throw Error("--algorithm: the window shows one algorithm at a time (switch with 1..9); several need --headless");
+    if (o.report) throw Error("--report: needs --headless (the window writes no report)");
+    return run_replay_window(o);
+  }
+  if (!headless) std::fprintf(stderr, "nbscope: no window (no display, or built without it): replaying headless\n");
+  return run_headless_loop(o);
+}
+
+}  // namespace nbscope
