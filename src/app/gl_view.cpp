@@ -323,6 +323,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
                                    loop.reference_pairs().size()});
   sim.check_ran = report.checked;
   sim.check_ok = report.ok();
+  sim.check_box2d = report.box2d_checks;
   sim.check_reference = report.reference;
   sim.violation_count = static_cast<std::size_t>(report.violation_count());
   for (std::size_t i = 0; i < report.violations.size() && i < 6; ++i) {

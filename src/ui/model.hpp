@@ -66,6 +66,7 @@ struct SimView {
   bool check_ran = false;
   bool check_ok = true;
   std::string check_reference;             // "brute" or "nbs" (above brute force's size)
+  bool check_box2d = true;                 // A in F, T in A ran (false for recorded frames: no Box2D world)
   std::size_t violation_count = 0;
   std::vector<std::string> violation_lines;  // the first few, one line each
 
