@@ -3,6 +3,8 @@
 //   load_scene*() -> frame 0: elements at the initial poses, detected and checked (no Box2D step yet)
 //   step()        -> frame k+1: Box2D step (emitters first) -> elements -> detection with the chosen
 //                    algorithm (+ injected fault) -> cross-check (check/check.hpp)
+//   load_recording*() / step() -> the same on recorded frames (io/recording.hpp) instead of a world:
+//                    no physics, and the check runs only A==R (there is no Box2D world to compare with)
 //
 // After load and after every step() the accessors describe one consistent frame: elements(),
 // pairs() (A), grid() and cells() (the detector's integerisation), report() (counts, timings,

@@ -33,7 +33,7 @@ usage:
       bounds and HEADs and next; sort: sorted cell keys and order. --cells pins the number of
       cells per axis (the book's Fig. 3.15 is --cell-size 1 --origin 0,0 --cells 10,10).
   nbscope headless --scene FILE [--frames N] [--algorithm NAME[,NAME...]|all] [--report OUT.json]
-                   [--inject-fault NAME] [--brute-limit N] [--quiet]
+                   [--inject-fault NAME] [--brute-limit N] [--quiet] [--record OUT.nbsrec]
       Runs N frames (default 600) of a scene (assets/scenes/*.json) with no window: Box2D steps,
       the algorithm detects, and every frame is checked: A==R (R: brute force up to --brute-limit
       elements, default 2000, then sort, or nbs when sort is tested), A-in-F (Box2D's contact
@@ -45,7 +45,19 @@ usage:
       drop-box2d-contact breaks the detection (or Box2D's side) on purpose, to see the checks catch it.
       --screenshot OUT.png [--size WxH] [--gl osmesa|egl|auto] renders the last frame exactly as the
       window shows it (scene, overlays, panels) off-screen with OSMesa (egl: not built here).
-  rendering flags (gui and headless):
+      --record OUT.nbsrec writes every frame's elements (frame 0 too) and the scene's pinned grid.
+  nbscope replay FILE.nbsrec [--headless] [--frames N] [--algorithm NAME[,NAME...]|all]
+                 [--report OUT.json] [--inject-fault NAME] [--brute-limit N] [--quiet]
+                 [--screenshot OUT.png --size WxH ...]
+      Detects and checks recorded frames again (the first N with --frames), as headless does; a
+      window plays them (P, O, R) when there is a display and no --headless. No Box2D world: only
+      A==R is checked; A-in-F, T-in-A, AABB-in-cells are reported as not checked, and the faults
+      are drop-pair, drop-mask-cell, off-by-one-cell, stale-positions. The format (text):
+        nbsrec 1                 first line; '#' comments and blank lines anywhere
+        cell_size D | origin X,Y | cells NX,NY    optional, before the first frame: pin the grid
+        frame NUMBER TIME        NUMBER increasing, TIME (seconds) non-decreasing
+        x,y,r                    one element a line, as ELEMENTS.csv (2D only)
+  rendering flags (gui, headless and replay):
       --overlays SPEC   comma list: all, none, NAME (only the names listed), +NAME, -NAME; names:
                         bodies elements grid lists mask pairs checks broadphase ids trails flash
       --panels SPEC     the same for panels: controls scenes algorithm overlays stats selection metrics
