@@ -163,7 +163,7 @@ TEST_F(Recorded, FramesLimitsTheReplay) {
 TEST_F(Recorded, FaultsThatNeedNoBox2dAreCaughtByAEqualsR) {
   for (const char* fault : {"drop-pair", "drop-mask-cell", "off-by-one-cell", "stale-positions"}) {
     const std::string report = *dir_ + "/fault-" + fault + ".json";
-    const auto r = run("replay '" + rec() + "' --headless --inject-fault " + fault + " --report '" + report + "'");
+    const auto r = run("replay '" + rec() + "' --headless --frames 20 --inject-fault " + fault + " --report '" + report + "'");
     EXPECT_EQ(r.exit_code, 1) << fault << ": " << r.out << r.err;
     EXPECT_NE(r.out.find("(A==R "), std::string::npos) << fault << ": " << r.out;
     EXPECT_NE(r.out.find("not checked (recorded frames have no Box2D world)"), std::string::npos) << r.out;
@@ -258,7 +258,10 @@ TEST(Replay, InterruptedRecordingLeavesNoFile) {
   const std::string dir = scratch_dir("replay_interrupted");
   const std::string cmd = "'" + testcli::binary() + "' headless --scene '" + scene("default") + "' --frames 10000000 --quiet --record '" + dir +
                           "/out.nbsrec' </dev/null >'" + dir + "/../replay_interrupted.out' 2>'" + dir +
-                          "/../replay_interrupted.err' & pid=$!; sleep 1; kill -TERM $pid; wait $pid";
+                          "/../replay_interrupted.err' & pid=$!; "
+                          // Once the recording's temporary exists (frames are running), stop it.
+                          "for i in $(seq 200); do ls '" + dir + "' | grep -q tmp && break; sleep 0.05; done; sleep 0.3; "
+                          "kill -TERM $pid; wait $pid";
   const int status = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2);
