@@ -10,19 +10,23 @@ inline constexpr const char* kHelpText = R"(nbscope - a visual debugger for grid
 usage:
   nbscope [gui] [--scene FILE] [--algorithm NAME] [--inject-fault NAME] [--size WxH]
                 [--frames N --screenshot OUT.png] [--overlays SPEC] [--panels SPEC] [--select K]
-      The window (default scene assets/scenes/default.json): Box2D bodies, the cell grid, the
+      The window (default: the last scene and algorithm used, else assets/scenes/default.json
+      and nbs; $NBSCOPE_DATA_DIR overrides where assets/ is found): Box2D bodies, the cell grid, the
       detector's lists, pairs and check results over them, ImGui panels. Keys: P play/pause,
       O single step, R restart, Home fit, 1..9 algorithm, overlays B E G L M C K F I T H (see Help
       in the menu bar). Mouse: left selects an element and drags its body, right-drag pans, wheel
       zooms. Settings persist in $XDG_CONFIG_HOME/nbscope/settings.json (~/.config/...).
       --frames N runs N frames, saves --screenshot and exits (no input, no settings: for tests
-      under xvfb-run). Without a display it renders headless and prints where the screenshot is.
+      under xvfb-run). Without a display it renders --frames N (default 120) headless into
+      --screenshot (default $TMPDIR/nbscope-SCENE.png) and prints the path.
   nbscope pairs --input ELEMENTS.csv [--algorithm NAME] [--output PAIRS.csv] [--repeat K]
-                [--cell-size D] [--origin X,Y[,Z]] [--max-pairs M]
+                [--cell-size D] [--origin X,Y[,Z]] [--cells NX,NY[,NZ]] [--max-pairs M]
       Contact pairs of the elements (rows x,y,r or x,y,z,r) as CSV "i,j" (0-based, i < j, sorted),
-      to PAIRS.csv or stdout. Detection time (without I/O) and pair count go to stderr.
+      to PAIRS.csv or stdout (algorithm default nbs). Detection time (without I/O) and pair
+      count go to stderr.
       --repeat K runs detection K times and checks that every run agrees.
-      --cell-size/--origin pin the grid (default: largest diameter, minimum corner).
+      --cell-size/--origin/--cells pin the grid (default: cells of the largest diameter from the
+      smallest centre coordinates; D must be at least the largest diameter).
       --max-pairs M stops with an error past M pairs (default 50,000,000: 400 MB).
   nbscope dump --input ELEMENTS.csv --algorithm NAME [--cell-size D] [--origin X,Y[,Z]]
                [--cells NX,NY[,NZ]] [--format json]
@@ -30,19 +34,23 @@ usage:
       0-based, -1 for an empty list and for the end of a list, with the grid (cell_size, origin,
       nx, ny, nz) and the bytes of every array. screen: heads[ix][iy] and next; nbs: y_heads,
       y_next and per non-empty row its x-lists (3D: z_heads, z_next, layers); tree: its leaves'
-      bounds and HEADs and next; sort: sorted cell keys and order. --cells pins the number of
-      cells per axis (the book's Fig. 3.15 is --cell-size 1 --origin 0,0 --cells 10,10).
+      bounds and HEADs and next; sort: sorted cell keys and order; brute, box2d: counts only.
+      --cells pins the number of cells per axis (the book's Fig. 3.15 is --cell-size 1
+      --origin 0,0 --cells 10,10).
   nbscope headless --scene FILE [--frames N] [--algorithm NAME[,NAME...]|all] [--report OUT.json]
                    [--inject-fault NAME] [--brute-limit N] [--quiet] [--record OUT.nbsrec]
       Runs N frames (default 600) of a scene (assets/scenes/*.json) with no window: Box2D steps,
-      the algorithm detects, and every frame is checked: A==R (R: brute force up to --brute-limit
-      elements, default 2000, then sort, or nbs when sort is tested), A-in-F (Box2D's contact
+      the algorithm (default nbs) detects, and every frame is checked: A==R (R: brute force up to
+      --brute-limit elements, default 2000, then sort, or nbs when sort is tested; brute itself
+      is checked against sort), A-in-F (Box2D's contact
       list, its filters applied to A), T-in-A (shapes touching now), AABB-in-cells (tight-AABB
-      pairs in neighbouring cells). One summary line on stdout; a progress bar on stderr when it is a terminal; --report
-      writes per-frame counts, timings and every violation as JSON. Exit 1 if any check failed.
+      pairs in neighbouring cells). One summary line on stdout; a progress bar on stderr when it
+      is a terminal; --report writes per-frame counts, timings and every violation as JSON.
+      Exit 1 if any check failed.
       Several algorithms (a,b,c or all: every 2D detector) run and are checked on the same frames.
       --inject-fault drop-mask-cell | off-by-one-cell | stale-positions | drop-pair |
-      drop-box2d-contact breaks the detection (or Box2D's side) on purpose, to see the checks catch it.
+      drop-box2d-contact breaks the detection (or Box2D's side) on purpose, to see the checks
+      catch it.
       --screenshot OUT.png [--size WxH] [--gl osmesa|egl|auto] renders the last frame exactly as the
       window shows it (scene, overlays, panels) off-screen with OSMesa (egl: not built here).
       --record OUT.nbsrec writes every frame's elements (frame 0 too) and the scene's pinned grid.
@@ -60,18 +68,20 @@ usage:
   rendering flags (gui, headless and replay):
       --overlays SPEC   comma list: all, none, NAME (only the names listed), +NAME, -NAME; names:
                         bodies elements grid lists mask pairs checks broadphase ids trails flash
-      --panels SPEC     the same for panels: controls scenes algorithm overlays stats selection metrics
-                        stepper pseudocode arrays
+      --panels SPEC     the same for panels: controls scenes algorithm overlays stats selection
+                        metrics stepper pseudocode arrays
       --select K        select element K (its cell, lists and pairs highlighted, its trail drawn)
       --camera X,Y,PPM  look at (X, Y) at PPM pixels per metre instead of fitting the scene
       --no-timings      show "-" for wall-clock numbers (reproducible screenshots)
-      --step K          open the Stepper, Arrays and Pseudocode panels on the state after K operations
-                        of the last frame's detection (headless: needs --screenshot)
+      --step K          open the Stepper, Arrays and Pseudocode panels on the state after K
+                        operations of the last frame's detection (headless: needs --screenshot)
       --book-numbering  number elements and cells from 1 in the stepper panels, as the book does
-      --shader-dir DIR  GLSL sources (default: the source tree's shaders/, or $NBSCOPE_SHADER_DIR)
+      --shader-dir DIR  GLSL sources (default: $NBSCOPE_SHADER_DIR if set, else the source tree's
+                        shaders/)
   nbscope algorithms      list the detectors
   nbscope --help | --version
 
+Sub-commands take no --help of their own: this text is the reference.
 exit codes: 0 all well, 1 a check failed, 2 bad input or usage (one line on stderr).
 )";
 
