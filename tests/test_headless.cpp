@@ -63,7 +63,11 @@ class HeadlessFault : public ::testing::TestWithParam<FaultCase> {};
 
 TEST_P(HeadlessFault, IsCaughtOnTheDefaultScene) {
   const FaultCase& c = GetParam();
-  const std::string dir = scratch_dir(std::string("headless_fault_") + c.fault);
+  // One directory per case: two cases of one fault run at once under ctest -j.
+  std::string name = std::string("headless_fault_") + c.fault + "_" + c.invariant;
+  for (char& ch : name)
+    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_') ch = '-';
+  const std::string dir = scratch_dir(name);
   const auto r = run("headless --scene '" + scene("default") + "' --frames 60 --inject-fault " + c.fault + " --report '" + dir + "/r.json'");
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find(std::string("fault ") + c.fault), std::string::npos) << r.out;
