@@ -18,6 +18,7 @@
 #include "app/view_options.hpp"
 #include "check/faults.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "render/gl_window.hpp"
 #include "ui/settings.hpp"
 
@@ -51,7 +52,7 @@ GuiOptions parse_gui_options(Args& args) {
   if (auto p = args.positional()) throw Error(*p + ": unexpected argument (the scene goes after --scene)");
   args.finish();
   if (o.view.screenshot && !o.frames) throw Error("--screenshot: needs --frames N (how many frames to run first)");
-  if (o.view.screenshot) check_screenshot_path(*o.view.screenshot);
+  if (o.view.screenshot) check_output_path(*o.view.screenshot);
   return o;
 }
 

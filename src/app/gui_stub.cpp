@@ -7,8 +7,6 @@
 
 namespace nbscope {
 
-void check_screenshot_path(const std::string&) {}
-
 std::unique_ptr<HeadlessView> make_headless_view(const ViewOptions&, const FrameLoop&) {
   throw Error("--screenshot: this nbscope was built without rendering (NBSCOPE_GUI=OFF)");
 }

@@ -1,15 +1,11 @@
 #include "app/headless_view.hpp"
 
-#include <unistd.h>
-
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
-#include <cstring>
-#include <filesystem>
 
 #include "app/gl_view.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "render/gl_context.hpp"
 
 namespace nbscope {
@@ -69,20 +65,10 @@ class OsmesaView final : public HeadlessView {
 
 }  // namespace
 
-void check_screenshot_path(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) throw Error(path + ": cannot write: it is a directory");
-  fs::path dir = fs::path(path).parent_path();
-  if (dir.empty()) dir = ".";
-  if (!fs::is_directory(dir, ec)) throw Error(path + ": cannot write: " + dir.string() + " is not a directory");
-  if (::access(dir.c_str(), W_OK) != 0) throw Error(path + ": cannot write: " + std::strerror(errno));
-}
-
 std::unique_ptr<HeadlessView> make_headless_view(const ViewOptions& options, const FrameLoop& loop) {
   if (!options.screenshot) throw Error("internal: make_headless_view without --screenshot");
   // Fail before simulating any frame, not after.
-  check_screenshot_path(*options.screenshot);
+  check_output_path(*options.screenshot);
   return std::make_unique<OsmesaView>(options, loop);
 }
 

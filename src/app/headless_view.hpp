@@ -20,10 +20,6 @@ class HeadlessView {
   virtual std::string write_screenshot(FrameLoop& loop) = 0;
 };
 
-// Error("<path>: cannot write: ...") unless a file can be created at `path` (its directory exists
-// and is writable): checked before any frame is simulated.
-void check_screenshot_path(const std::string& path);
-
 // Opens the off-screen context (`options.gl`) and loads the shaders for `loop`'s scene, so bad
 // rendering options fail before any frame is simulated. Error when rendering is unavailable.
 std::unique_ptr<HeadlessView> make_headless_view(const ViewOptions& options, const FrameLoop& loop);

@@ -70,10 +70,13 @@ void AtomicFileWriter::commit() {
 
 void check_output_path(const std::string& path) {
   namespace fs = std::filesystem;
+  std::error_code ec;
   if (path.empty()) throw Error("output path is empty");
-  if (fs::is_directory(path)) throw Error(path + ": cannot write: it is a directory");
+  if (fs::is_directory(path, ec)) throw Error(path + ": cannot write: it is a directory");
   const fs::path parent = fs::path(path).parent_path();
-  if (!parent.empty() && !fs::is_directory(parent)) throw Error(path + ": cannot write: no directory " + parent.string());
+  if (!parent.empty() && !fs::is_directory(parent, ec)) throw Error(path + ": cannot write: no directory " + parent.string());
+  const fs::path dir = parent.empty() ? fs::path(".") : parent;
+  if (::access(dir.c_str(), W_OK) != 0) throw Error(path + ": cannot write: " + std::strerror(errno));
 }
 
 void write_bytes_atomically(const std::string& path, const void* data, std::size_t size) {

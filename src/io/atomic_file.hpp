@@ -13,7 +13,7 @@ namespace nbscope {
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& fill);
 
 // Refuses, before any work is done, a path that cannot be written: empty, a directory, or in a
-// directory that does not exist. Throws Error("<path>: cannot write: <reason>").
+// directory that does not exist or is not writable. Throws Error("<path>: cannot write: <reason>").
 void check_output_path(const std::string& path);
 
 // A file written piece by piece over a long run (headless --record), whole or not at all: it
