@@ -47,14 +47,15 @@ constexpr std::int64_t kLargestSet = 1500;  // brute force under ASan is ~20x sl
 constexpr std::int64_t kLargestSet = 5000;
 #endif
 
-// The generated sets: every layout at sizes from 0 to 5000, three seeds each (243 sets).
+// The generated sets: every layout at nine sizes from 0 to 5000, three seeds each (270 sets).
+// Every element of one point or one cell touches every other, so those stop at 1000 (n(n-1)/2 pairs).
 std::vector<Family> families() {
   std::vector<Family> out;
   for (Layout layout : testdata::all_layouts()) {
+    const bool all_touch = layout == Layout::OnePoint || layout == Layout::OneCell;
+    const std::int64_t big = all_touch ? 800 : 2000, biggest = all_touch ? 1000 : kLargestSet;
     for (std::int64_t n : {std::int64_t{0}, std::int64_t{1}, std::int64_t{2}, std::int64_t{3}, std::int64_t{17},
-                           std::int64_t{100}, std::int64_t{640}, std::int64_t{2000}, kLargestSet}) {
-      n = std::min(n, kLargestSet);
-      if ((layout == Layout::OnePoint || layout == Layout::OneCell) && n > 1000) n = 1000;  // n(n-1)/2 pairs
+                           std::int64_t{100}, std::int64_t{640}, std::min(big, kLargestSet), std::min(biggest, kLargestSet)}) {
       for (std::uint64_t seed = 1; seed <= 3; ++seed) out.push_back({layout, n, seed});
     }
   }
@@ -95,11 +96,43 @@ int check_layout_against_brute(Layout layout, int dim, std::int64_t max_n) {
 class EveryLayout : public ::testing::TestWithParam<Layout> {};
 
 TEST_P(EveryLayout, EveryDetectorMatchesBruteForceIn2D) {
-  EXPECT_EQ(check_layout_against_brute(GetParam(), 2, kLargestSet), 27);  // 9 sizes x 3 seeds: 243 sets in all
+  EXPECT_EQ(check_layout_against_brute(GetParam(), 2, kLargestSet), 27);  // 9 sizes x 3 seeds: 270 sets in all
 }
 
 TEST_P(EveryLayout, EveryDetectorMatchesBruteForceIn3D) {
-  EXPECT_GE(check_layout_against_brute(GetParam(), 3, 2000), 24);  // >= 8 sizes x 3 seeds: >= 216 sets in all
+  EXPECT_EQ(check_layout_against_brute(GetParam(), 3, kLargestSet), 27);  // the same 270 sets in 3D
+}
+
+TEST(Generators, EverySetOfAFamilyIsDistinct) {
+  // Sets repeated under another seed or size would inflate the count without testing more.
+  std::vector<std::pair<Layout, std::vector<double>>> seen;
+  for (const Family& f : families()) {
+    if (f.n < 2) continue;
+    const Elements e = testdata::make_layout(f.layout, f.n, 2, f.seed);
+    std::vector<double> key(e.x.data(), e.x.data() + e.size());
+    key.insert(key.end(), e.y.data(), e.y.data() + e.size());
+    key.insert(key.end(), e.r.data(), e.r.data() + e.size());
+    for (const auto& [layout, other] : seen)
+      EXPECT_FALSE(layout == f.layout && other == key) << testdata::layout_name(f.layout) << " n=" << f.n << " seed=" << f.seed;
+    seen.emplace_back(f.layout, std::move(key));
+  }
+}
+
+TEST(Generators, CellBordersHoldsContactsAsFarApartAsRoundingAllows) {
+  // Each pair (1,2), (3,4), ...: in contact, and one ulp further apart it would not be.
+  for (int dim : {2, 3})
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+      const Elements e = testdata::make_layout(Layout::CellBorders, 41, dim, seed);
+      for (ElementId i = 1; i + 1 < 41; i += 2) {
+        ASSERT_TRUE(in_contact(e, i, i + 1)) << seed;
+        Elements moved = e;
+        for (int a = 0; a < dim; ++a) {
+          Eigen::ArrayXd& col = a == 0 ? moved.x : (a == 1 ? moved.y : moved.z);
+          if (col[i] != col[i + 1]) col[i + 1] = std::nextafter(col[i + 1], HUGE_VAL);
+        }
+        EXPECT_FALSE(in_contact(moved, i, i + 1)) << seed;
+      }
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Families, EveryLayout, ::testing::ValuesIn(testdata::all_layouts()),

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "core/brute.hpp"
+#include "core/detector.hpp"
 #include "core/error.hpp"
 #include "core/nbs.hpp"
 #include "support/generators.hpp"
@@ -133,12 +134,32 @@ TEST(Nbs, RefusesAGridWiderThanTheLimitInsteadOfAllocatingIt) {
   EXPECT_TRUE(p.empty());
 }
 
-TEST(Nbs, RefusesThreeDimensionalInputWithAnError) {
-  const Elements e = testdata::make_layout(Layout::Loose, 10, 3, 1);
-  NbsDetector nbs;
-  PairList p;
-  if (!nbs.supports_dim(3)) {
-    EXPECT_THROW(nbs.detect(e, {}, p), Error);
+TEST(Grid, ACellClearlyLargerThanTheDiameterIntegerisesExactlyAsTheBook) {
+  // Fig. 3.15's grid: d = 1, elements of diameter 0.2. Int((x - 0)/1) exactly, borders included.
+  const Elements e = make_elements_2d((Eigen::ArrayXd(2) << 5.0, 0.3).finished(), (Eigen::ArrayXd(2) << 7.0, 0.1).finished(),
+                                      Eigen::ArrayXd::Constant(2, 0.1));
+  GridOptions o;
+  o.cell_size = 1.0;
+  o.origin = std::array<double, 3>{0, 0, 0};
+  const Grid g = make_grid(e, o);
+  EXPECT_EQ(g.inv_cell_size, 1.0);
+  EXPECT_EQ(g.cell(5.0, 0), 5);
+  EXPECT_EQ(g.cell(7.0, 1), 7);
+}
+
+TEST(Grid, RoundingNeverPutsAContactTwoCellsApart) {
+  // d is the diameter 0.6; elements 1 and 2 are 0.59999999999994 apart, a contact. With x - xmin
+  // rounded, (x - xmin)/d put them two cells apart and every grid detector missed the pair.
+  const Elements e = make_elements_2d((Eigen::ArrayXd(3) << -569.6134599278031, 189.38654007219682, 189.98654007219676).finished(),
+                                      Eigen::ArrayXd::Zero(3), Eigen::ArrayXd::Constant(3, 0.3));
+  ASSERT_TRUE(in_contact(e, 1, 2));
+  const Grid g = make_grid(e, {});
+  EXPECT_EQ(g.cell_size, 0.6);  // d itself is the book's; only the integerisation is guarded
+  EXPECT_LE(std::abs(g.cell(e.x[2], 0) - g.cell(e.x[1], 0)), 1);
+  for (const DetectorInfo& info : detector_infos()) {
+    PairList p;
+    info.make()->detect(e, {}, p);
+    EXPECT_EQ(p, (PairList{{1, 2}})) << info.name;
   }
 }
 

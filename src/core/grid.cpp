@@ -1,6 +1,9 @@
 #include "core/grid.hpp"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 #include <string>
 
@@ -21,6 +24,19 @@ std::string fmt_count(double v) {
   std::snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
 }
+// The factor of Int((v - origin) * factor). Exactly 1/d when d exceeds the largest diameter D by
+// more than rounding can blur; otherwise 1/(D + guard). Why: v - origin is rounded to within
+// u*|v - origin| (u = 2^-53) and the product once more, so two centres D apart could land two
+// cells apart when d == D, and a contact would be missed. With the guard, computed positions of
+// centres at most D apart differ by at most 1 cell, so their cells are neighbours.
+double integerisation_scale(const Grid& g, const Bounds& b, double diameter) {
+  double reach = g.cell_size;  // largest |v - origin| over the data, per axis
+  for (int a = 0; a < g.dim; ++a)
+    reach = std::max({reach, std::abs(b.max[a] - g.origin[a]), std::abs(b.min[a] - g.origin[a])});
+  const double guard = 8.0 * std::numeric_limits<double>::epsilon() * reach;
+  return 1.0 / std::max(g.cell_size, diameter + guard);
+}
+
 }  // namespace
 
 Grid make_grid(const Elements& elements, const GridOptions& options) {
@@ -35,7 +51,6 @@ Grid make_grid(const Elements& elements, const GridOptions& options) {
                 " (contacts could span more than one cell)");
   }
   g.cell_size = d;
-  g.inv_cell_size = 1.0 / d;
   const Bounds b = elements.centre_bounds();
   static const char* axis_name[3] = {"x", "y", "z"};
   for (int a = 0; a < g.dim; ++a) {
@@ -60,6 +75,7 @@ Grid make_grid(const Elements& elements, const GridOptions& options) {
     }
     g.n[a] = static_cast<std::int64_t>(cells);
   }
+  g.inv_cell_size = integerisation_scale(g, b, elements.size() == 0 ? 0.0 : diameter);
   return g;
 }
 

@@ -26,8 +26,8 @@ struct GridOptions {
 // A grid fitted to one element set: nx*ny(*nz) cells of size d from `origin`.
 struct Grid {
   int dim = 2;
-  double cell_size = 1;
-  double inv_cell_size = 1;
+  double cell_size = 1;      // d, as the book and the user see it
+  double inv_cell_size = 1;  // 1/d, or a hair less where rounding could split a contact (make_grid)
   double origin[3] = {0, 0, 0};
   std::int64_t n[3] = {1, 1, 1};  // cells per axis; n[2] == 1 in 2D
 
@@ -50,7 +50,9 @@ struct Grid {
 };
 
 // Fits a grid to `elements`: d = options.cell_size or the largest diameter; origin = options.origin
-// or the minimum corner; n = options.cells or enough to cover every centre. Throws Error when d is not
+// or the minimum corner; n = options.cells or enough to cover every centre. When d is within
+// rounding of the largest diameter, integerisation divides by a d a few ulps of the coordinates
+// larger, so that rounding never puts a contact two cells apart. Throws Error when d is not
 // positive and finite, is smaller than the largest diameter (contacts could then skip a cell), or a
 // side would exceed kMaxCellsPerSide (or be below 1).
 Grid make_grid(const Elements& elements, const GridOptions& options);

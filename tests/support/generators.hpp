@@ -20,6 +20,8 @@ enum class Layout {
   Touching,     // integer lattice, r = 0.5: neighbours touch exactly
   FarAway,      // loose, shifted to about -1e6 (negative and large coordinates)
   UnequalRadii, // radii from 0.01 to 1 (cell size = the largest diameter)
+  CellBorders,  // pairs as far apart as contact allows, to the last ulp, on cell borders, at
+                // magnitudes 1 to 1e9: where rounding in Int((x - xmin)/d) could split a contact
 };
 
 // Every layout, for parameterised tests.
