@@ -4,8 +4,11 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 #include "core/error.hpp"
 #include "io/csv.hpp"
+#include "io/input_file.hpp"
 
 namespace nbscope {
 namespace {
@@ -60,7 +63,12 @@ TEST(ElementsCsv, EveryBadRowNamesFileLineAndWhat) {
   EXPECT_EQ(error_of("1,2,0\n"), "in.csv:1: r: radius must be > 0, got 0");
   EXPECT_EQ(error_of("1,2,-1\n"), "in.csv:1: r: radius must be > 0, got -1");
   EXPECT_EQ(error_of("1,2,3\n1,2,3,4\n"), "in.csv:2: 4 columns, but the first row had 3");
-  EXPECT_EQ(error_of("1,,3\n"), "in.csv:1: y: '' is not a number");
+  EXPECT_EQ(error_of("1,,3\n"), "in.csv:1: column 2 (y) is empty");
+  EXPECT_EQ(error_of("0,0,0.5,\n"), "in.csv:1: column 4 (r) is empty (a trailing comma?)");
+  EXPECT_EQ(error_of("x,y,z,r\n1,2,3\n"), "in.csv:2: 3 columns, but the header on line 1 has 4");
+  EXPECT_EQ(error_of("1e101,0,1\n"), "in.csv:1: x: 1e101 is outside the supported coordinates -1e100 to 1e100");
+  EXPECT_EQ(error_of("0,0,1e-101\n"), "in.csv:1: r: 1e-101 is outside the supported radii 1e-100 to 1e100");
+  EXPECT_EQ(error_of("0,0,1e-309\n"), "in.csv:1: r: 1e-309 is outside the supported radii 1e-100 to 1e100");
   EXPECT_EQ(error_of("1,2,3x\n"), "in.csv:1: r: '3x' is not a number");
 }
 
@@ -86,6 +94,35 @@ TEST(PairsCsv, WritesHeaderAndPairsAndLeavesNoTemporary) {
 TEST(PairsCsv, UnwritablePathThrowsAndCreatesNothing) {
   EXPECT_THROW(write_pairs_csv("/nonexistent/dir/p.csv", {{0, 1}}), Error);
   EXPECT_FALSE(std::filesystem::exists("/nonexistent/dir/p.csv"));
+}
+
+// ---- reading input files --------------------------------------------------------------------
+
+std::string read_error(const std::string& path, std::size_t max_bytes) {
+  try {
+    read_input_file(path, "elements file", max_bytes);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(InputFile, ReadsAFileWholeUpToItsLimit) {
+  const auto path = (std::filesystem::temp_directory_path() / ("nbscope-input-" + std::to_string(::getpid()))).string();
+  std::ofstream(path) << "0,0,1\n";
+  EXPECT_EQ(read_input_file(path, "elements file", 6), "0,0,1\n");
+  EXPECT_EQ(read_error(path, 5), path + ": larger than 5 bytes, the limit for an elements file");
+  std::filesystem::remove(path);
+}
+
+TEST(InputFile, AnEndlessDeviceStopsAtTheLimitInsteadOfFillingMemory) {
+  EXPECT_EQ(read_error("/dev/zero", std::size_t{4} << 20), "/dev/zero: larger than 4 MB, the limit for an elements file");
+}
+
+TEST(InputFile, MissingEmptyPathAndDirectoryAreNamed) {
+  EXPECT_EQ(read_error("/nonexistent/x.csv", 100), "/nonexistent/x.csv: cannot open the elements file (no such file or not readable)");
+  EXPECT_EQ(read_error("", 100), "elements file path is empty");
+  EXPECT_EQ(read_error("/tmp", 100), "/tmp: is a directory, not an elements file");
 }
 
 }  // namespace

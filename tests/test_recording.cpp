@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -29,7 +30,8 @@ std::string temp_dir(const std::string& name) {
 // Bit patterns, not values: -0.0 and 0.0 differ here, and so would any rounding.
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-// Doubles that stress a decimal round trip: random bits over many exponents, subnormals, extremes.
+// Doubles that stress a decimal round trip: random bits over many exponents, subnormals, the
+// extremes of the supported magnitudes (core/elements.hpp).
 Elements awkward_elements(std::uint64_t seed, int n) {
   std::mt19937_64 rng(seed);
   Elements e;
@@ -39,13 +41,13 @@ Elements awkward_elements(std::uint64_t seed, int n) {
       const std::uint64_t bits = rng();
       double v;
       std::memcpy(&v, &bits, sizeof v);
-      if (std::isfinite(v)) return v;
+      if (std::abs(v) <= kMaxCoordinate) return v;  // also refuses NaN and Inf
     }
   };
   for (int k = 0; k < n; ++k) {
     const double x = k == 0 ? std::numeric_limits<double>::denorm_min() : (k == 1 ? -0.0 : any_double());
-    const double y = k == 2 ? std::numeric_limits<double>::max() : std::ldexp(static_cast<double>(rng() >> 11), -40) - 1e3;
-    double r = std::abs(std::ldexp(static_cast<double>(rng() >> 11), -53)) + std::numeric_limits<double>::min();
+    const double y = k == 2 ? kMaxCoordinate : std::ldexp(static_cast<double>(rng() >> 11), -40) - 1e3;
+    double r = std::max(std::ldexp(static_cast<double>(rng() >> 11), -53), kMinRadius);
     if (k == 3) r = 0.1 + 0.2;  // 0.30000000000000004
     e.push_back(x, y, 0, r);
   }

@@ -128,6 +128,7 @@ const BadScene kBadScenes[] = {
     {"syntax_error", "{\n  \"gravity\": [0, -10],\n  \"bodies\": [\n    {\"shape\": \"circle\" \"radius\": 1}\n  ]\n}",
      "4: bodies[0]: JSON syntax error: syntax error while parsing object - unexpected string literal; expected '}'"},
     {"syntax_error_at_end", "{\"name\": \"x\",\n", "1: JSON syntax error: syntax error while parsing object key - unexpected end of input; expected string literal"},
+    {"trailing_garbage", "{}\nx", "2: JSON syntax error: syntax error while parsing value - invalid literal; last read: 'x'; expected end of input"},
     {"empty_file", "", "1: JSON syntax error: syntax error while parsing value - unexpected end of input; expected '[', '{', or a literal"},
     {"nan_literal", "{\n\"bodies\": [{\"shape\": \"circle\",\n  \"radius\": NaN}]}",
      "3: bodies[0].radius: JSON syntax error: syntax error while parsing value - invalid literal; last read: 'N'"},
@@ -193,7 +194,7 @@ TEST(Scene, UnreadableFile) {
     read_scene_json("/nonexistent/scene.json");
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()), "/nonexistent/scene.json: cannot open the scene file");
+    EXPECT_EQ(std::string(e.what()), "/nonexistent/scene.json: cannot open the scene file (no such file or not readable)");
   }
 }
 

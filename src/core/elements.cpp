@@ -41,9 +41,10 @@ Bounds Elements::centre_bounds() const {
 bool Elements::valid() const {
   if (y.size() != x.size() || r.size() != x.size()) return false;
   if (dim == 3 && z.size() != x.size()) return false;
-  if (!x.allFinite() || !y.allFinite() || !r.allFinite()) return false;
-  if (dim == 3 && !z.allFinite()) return false;
-  return size() == 0 || r.minCoeff() > 0.0;
+  // Written as "all within" so that NaN fails too.
+  const auto coordinates_ok = [](const Eigen::ArrayXd& v) { return (v.abs() <= kMaxCoordinate).all(); };
+  if (!coordinates_ok(x) || !coordinates_ok(y) || (dim == 3 && !coordinates_ok(z))) return false;
+  return ((r >= kMinRadius) && (r <= kMaxRadius)).all();
 }
 
 Elements make_elements_2d(const Eigen::ArrayXd& x, const Eigen::ArrayXd& y, const Eigen::ArrayXd& r) {

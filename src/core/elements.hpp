@@ -11,6 +11,13 @@ using ElementId = std::int32_t;
 // Most elements one set may hold: ids stay int32 and the arrays stay within memory.
 inline constexpr std::int64_t kMaxElements = 100'000'000;
 
+// The supported magnitudes. Inside them every square of the contact test (pairs.hpp) is a finite,
+// normal double, so |c_i - c_j| <= r_i + r_j is decided without overflow or underflow; DEM/FDEM
+// models live many orders of magnitude inside. Readers refuse values outside (io/csv.hpp).
+inline constexpr double kMaxCoordinate = 1e100;  // |x|, |y|, |z|
+inline constexpr double kMinRadius = 1e-100;
+inline constexpr double kMaxRadius = 1e100;
+
 // Axis-aligned box of the element centres.
 struct Bounds {
   double min[3] = {0, 0, 0};
@@ -34,7 +41,7 @@ struct Elements {
   [[nodiscard]] double max_radius() const;
   // Bounding box of the centres (all zero for an empty set).
   [[nodiscard]] Bounds centre_bounds() const;
-  // True when every coordinate and radius is finite and every radius > 0.
+  // True when every coordinate is within +-kMaxCoordinate and every radius in [kMinRadius, kMaxRadius].
   [[nodiscard]] bool valid() const;
 };
 

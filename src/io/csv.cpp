@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/input_file.hpp"
 
 namespace nbscope {
 
@@ -71,9 +72,20 @@ void parse_element_row(const std::vector<std::string_view>& fields, const std::s
   if (fields.size() != 3 && fields.size() != 4)
     throw Error(at + std::to_string(fields.size()) + " columns; expected 3 (x,y,r) or 4 (x,y,z,r)");
   const char* const* names = fields.size() == 3 ? kColumnNames2 : kColumnNames3;
+  for (std::size_t c = 0; c < fields.size(); ++c)
+    if (fields[c].empty())
+      throw Error(at + "column " + std::to_string(c + 1) + " (" + names[c] + ") is empty" +
+                  (c + 1 == fields.size() ? " (a trailing comma?)" : ""));
   for (std::size_t c = 0; c < fields.size(); ++c) {
     const double v = parse_finite_number(fields[c], at, names[c]);
-    if (c + 1 == fields.size() && !(v > 0)) throw Error(at + "r: radius must be > 0, got " + std::string(fields[c]));
+    const std::string text(fields[c]);
+    if (c + 1 == fields.size()) {
+      if (!(v > 0)) throw Error(at + "r: radius must be > 0, got " + text);
+      if (v < kMinRadius || v > kMaxRadius)
+        throw Error(at + "r: " + text + " is outside the supported radii 1e-100 to 1e100");
+    } else if (std::abs(v) > kMaxCoordinate) {
+      throw Error(at + names[c] + ": " + text + " is outside the supported coordinates -1e100 to 1e100");
+    }
     out[c] = v;
   }
 }
@@ -86,6 +98,7 @@ Elements parse_elements_csv(const std::string& text, const std::string& where) {
   std::vector<double> cols[4];
   std::size_t line_no = 0;
   bool seen_row_or_header = false;
+  std::size_t header_line = 0;
   std::size_t pos = bom;
   while (pos <= text.size()) {
     std::size_t end = text.find('\n', pos);
@@ -105,6 +118,8 @@ Elements parse_elements_csv(const std::string& text, const std::string& where) {
         if (!is_name(f)) throw Error(at + "header mixes names and numbers: '" + std::string(f) + "'");
       if (fields.size() != 3 && fields.size() != 4)
         throw Error(at + "header has " + std::to_string(fields.size()) + " columns; expected x,y,r or x,y,z,r");
+      e.dim = fields.size() == 3 ? 2 : 3;  // the header fixes the dimension, as a first row would
+      header_line = line_no;
       seen_row_or_header = true;
       continue;
     }
@@ -114,7 +129,10 @@ Elements parse_elements_csv(const std::string& text, const std::string& where) {
     const int dim = fields.size() == 3 ? 2 : 3;
     if (e.dim == 0) e.dim = dim;
     if (dim != e.dim)
-      throw Error(at + std::to_string(fields.size()) + " columns, but the first row had " + std::to_string(e.dim + 1));
+      throw Error(at + std::to_string(fields.size()) + " columns, but " +
+                  (header_line != 0 && cols[0].empty() ? "the header on line " + std::to_string(header_line) + " has "
+                                                       : std::string("the first row had ")) +
+                  std::to_string(e.dim + 1));
     if (static_cast<std::int64_t>(cols[0].size()) >= kMaxElements)
       throw Error(at + "more than " + std::to_string(kMaxElements) + " elements");
     std::array<double, 4> row{};
@@ -137,14 +155,7 @@ Elements parse_elements_csv(const std::string& text, const std::string& where) {
 }
 
 Elements read_elements_csv(const std::string& path) {
-  if (path.empty()) throw Error("input path is empty");
-  if (std::filesystem::is_directory(path)) throw Error(path + ": is a directory, not an elements file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open (no such file or not readable)");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw Error(path + ": read error");
-  return parse_elements_csv(ss.str(), path);
+  return parse_elements_csv(read_input_file(path, "elements file", kMaxElementsBytes), path);
 }
 
 void write_pairs_csv(const std::string& path, const PairList& sorted_pairs) {

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/csv.hpp"
+#include "io/input_file.hpp"
 
 namespace nbscope {
 
@@ -161,14 +162,7 @@ Recording parse_recording(const std::string& text, const std::string& where, std
 // ---- read_recording -------------------------------------------------------------------------
 
 Recording read_recording(const std::string& path, std::int64_t max_frames) {
-  if (path.empty()) throw Error("recording path is empty");
-  if (std::filesystem::is_directory(path)) throw Error(path + ": is a directory, not a recording");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open (no such file or not readable)");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw Error(path + ": read error");
-  return parse_recording(ss.str(), path, max_frames);
+  return parse_recording(read_input_file(path, "recording", kMaxRecordingBytes), path, max_frames);
 }
 
 // ---- RecordingWriter ------------------------------------------------------------------------

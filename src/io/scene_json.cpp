@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "io/input_file.hpp"
 #include "io/scene_json_source.hpp"
 
 namespace nbscope {
@@ -492,14 +493,7 @@ Scene parse_scene_json(const std::string& text, const std::string& where) {
 }
 
 Scene read_scene_json(const std::string& path) {
-  if (std::filesystem::is_directory(path)) throw Error(path + ": is a directory, not a scene file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open the scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw Error(path + ": cannot read the scene file");
-  if (text.str().size() > (std::size_t{256} << 20)) throw Error(path + ": larger than 256 MB; use generators for big scenes");
-  return parse_scene_json(text.str(), path);
+  return parse_scene_json(read_input_file(path, "scene file", kMaxSceneBytes), path);
 }
 
 }  // namespace nbscope
