@@ -108,12 +108,16 @@ class LocatingSax {
     }
     // nlohmann's "last read" holds everything since the previous token, escapes included
     // ("0,<U+000A> N"); keep only the offending token ("N").
+    // A suffix such as "; expected end of input" follows the token's closing quote: keep it.
     if (const auto lr = what.find("; last read: '"); lr != std::string::npos) {
-      std::string token = what.substr(lr + 14);
-      if (!token.empty() && token.back() == '\'') token.pop_back();
+      const std::size_t begin = lr + 14;
+      std::size_t end = what.find("'; ", begin);
+      if (end == std::string::npos) end = what.size() - (what.back() == '\'' ? 1 : 0);
+      std::string token = what.substr(begin, end - begin);
+      const std::string rest = end + 1 < what.size() ? what.substr(end + 1) : "";
       const auto cut = token.find_last_of(" \t,:[{>");
       if (cut != std::string::npos && cut + 1 < token.size()) token = token.substr(cut + 1);
-      what = what.substr(0, lr) + "; last read: '" + token + "'";
+      what = what.substr(0, lr) + "; last read: '" + token + "'" + rest;
     }
     if (ex.id == 406) what = "number out of range '" + last_token + "' (not a finite double)";
     const int line = line_at(position == 0 ? 0 : position - 1);
