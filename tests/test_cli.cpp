@@ -1,6 +1,7 @@
 // The command line: pairs, help, version, algorithms, and every bad input of the foundation.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "support/run_cli.hpp"
@@ -57,6 +58,21 @@ TEST(Cli, RepeatAgreesWithItself) {
   EXPECT_NE(r.err.find("all runs agree"), std::string::npos) << r.err;
 }
 
+TEST(Cli, ADeviceAsOutputIsWrittenInPlaceNotReplaced) {
+  // A temporary renamed over /dev/null would turn the device into a plain file (as root).
+  auto r = run("pairs --input '" + example() + "' --output /dev/null");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+  if (std::filesystem::is_character_file("/dev/full")) {
+    r = run("pairs --input '" + example() + "' --output /dev/full");
+    EXPECT_EQ(r.exit_code, 2);
+    // The summary line of the detection, then the one error line.
+    EXPECT_NE(r.err.find("\nnbscope: error: /dev/full: cannot write: "), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("nbscope: error:"), r.err.rfind("nbscope: error:")) << r.err;
+    EXPECT_TRUE(std::filesystem::is_character_file("/dev/full"));
+  }
+}
+
 struct BadInput {
   const char* name;
   const char* file_text;  // nullptr: the file does not exist
@@ -92,7 +108,7 @@ TEST_P(CliBadInput, ExitsTwoWithOneLineAndNoOutputFile) {
 }
 
 const BadInput kBadInputs[] = {
-    {"missing_file", nullptr, "", "IN: cannot open (no such file or not readable)"},
+    {"missing_file", nullptr, "", "IN: cannot open the elements file (no such file or not readable)"},
     {"empty_file", "", "", "IN:1: empty file (expected rows of x,y,r or x,y,z,r)"},
     {"two_columns", "x,y,r\n1,2,1\n3,4\n", "", "IN:3: 2 columns; expected 3 (x,y,r) or 4 (x,y,z,r)"},
     {"five_columns", "1,2,3,4,5\n", "", "IN:1: 5 columns; expected 3 (x,y,r) or 4 (x,y,z,r)"},
@@ -121,6 +137,19 @@ TEST(Cli, AnUnwritableOutputFailsBeforeDetection) {
   r = run("pairs --input '" + dir + "/in.csv' --output '" + dir + "'");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "nbscope: error: " + dir + ": cannot write: it is a directory\n");
+}
+
+TEST(Cli, AnOutputThatIsTheInputIsRefusedAndTheInputKept) {
+  const std::string dir = scratch_dir("output_is_input");
+  write_text(dir + "/in.csv", "0,0,1\n1,0,1\n");
+  // The same file by another spelling too.
+  for (const std::string& out : {dir + "/in.csv", dir + "/./sub/../in.csv"}) {
+    std::filesystem::create_directories(dir + "/sub");
+    const auto r = run("pairs --input '" + dir + "/in.csv' --output '" + out + "'");
+    EXPECT_EQ(r.exit_code, 2) << out;
+    EXPECT_EQ(r.err, "nbscope: error: " + out + ": cannot write: it is also the --input\n");
+    EXPECT_EQ(read_text(dir + "/in.csv"), "0,0,1\n1,0,1\n");
+  }
 }
 
 TEST(Cli, ADirectoryAsInputIsRefusedByName) {

@@ -53,6 +53,7 @@ GuiOptions parse_gui_options(Args& args) {
   args.finish();
   if (o.view.screenshot && !o.frames) throw Error("--screenshot: needs --frames N (how many frames to run first)");
   if (o.view.screenshot) check_output_path(*o.view.screenshot);
+  if (o.view.screenshot && o.scene) check_outputs_distinct({{"--scene", *o.scene}}, {{"--screenshot", *o.view.screenshot}});
   return o;
 }
 

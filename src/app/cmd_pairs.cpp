@@ -24,6 +24,7 @@ int run_pairs(Args& args) {
 
   auto detector = make_detector(algorithm);  // before reading: a bad name fails fast
   if (output) check_output_path(*output);    // and a bad output path before any detection
+  if (output) check_outputs_distinct({{"--input", *input}}, {{"--output", *output}});
   const Elements elements = read_elements_csv(*input);
   if (!detector->supports_dim(elements.dim))
     throw Error(*input + ": algorithm '" + algorithm + "' does not support " + std::to_string(elements.dim) + "D elements");
