@@ -132,13 +132,26 @@ TEST_F(CheckerTest, AMissingTouchingPairBreaksAEqualsRAndTInA) {
   EXPECT_EQ(r.violations[1].invariant, Invariant::TInA);
 }
 
-TEST_F(CheckerTest, AnExtraPairBreaksAEqualsROnly) {
+TEST_F(CheckerTest, AnExtraCirclePairBreaksAEqualsRAndAInF) {
   PairList a = correct_;
-  a.push_back({2, 3});  // far apart: not a contact, not in Box2D's scope
+  a.push_back({2, 3});  // two dynamic circles 4 m apart: Box2D's broadphase must refute it too
   sort_pairs(a);
   const FrameReport r = run(a, cells_);
-  EXPECT_EQ(r.violation_count(), 1);
+  EXPECT_EQ(r.broken[static_cast<int>(Invariant::AEqualsR)], 1);
+  EXPECT_EQ(r.broken[static_cast<int>(Invariant::AInF)], 1);
+  EXPECT_EQ(r.violation_count(), 2);
   EXPECT_STREQ(r.violations[0].what, "extra in A (not in R)");
+  EXPECT_STREQ(r.violations[1].what, "not in Box2D's contact list");
+}
+
+TEST_F(CheckerTest, AnExtraPolygonPairIsLeftOutOfAInFAndCounted) {
+  PairList a = correct_;
+  a.push_back({3, 4});  // circle and floor box far apart: a polygon's bounding circle is no AABB
+  sort_pairs(a);
+  const FrameReport r = run(a, cells_);
+  EXPECT_EQ(r.broken[static_cast<int>(Invariant::AEqualsR)], 1);
+  EXPECT_EQ(r.broken[static_cast<int>(Invariant::AInF)], 0);
+  EXPECT_EQ(r.counts.beyond_aabb, 1);
 }
 
 TEST_F(CheckerTest, WrongCellsBreakAabbInCells) {

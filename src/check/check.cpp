@@ -31,8 +31,9 @@ std::string FrameChecker::reference_policy() const {
 std::string FrameChecker::scope_note() {
   return "Box2D's filters are applied to A before comparing with F: pairs of fixtures of the same body, pairs with no "
          "dynamic body, pairs of bodies joined without collideConnected and pairs the contact filter refuses are left "
-         "out; so are pairs whose shapes' tight AABBs do not overlap (a polygon's bounding circle reaches beyond its "
-         "AABB, where Box2D's broadphase never looks). Each reason is counted per frame.";
+         "out; so are pairs with a polygon whose shapes' tight AABBs do not overlap (a polygon's bounding circle reaches "
+         "beyond its AABB, where Box2D's broadphase never looks; two circles are always kept, since their bounding "
+         "circles are the shapes). Each reason is counted per frame.";
 }
 
 Detector& FrameChecker::reference(const std::string& name) {

@@ -7,8 +7,9 @@
 //   A==R           A equals R (missing and extra pairs both reported);
 //   A-in-F         the pairs of A in Box2D's scope are in F — Box2D's filters (same body, no dynamic
 //                  body, joints without collideConnected, the contact filter) are applied to A first,
-//                  and pairs whose shapes' tight AABBs do not overlap are left out, since a polygon's
-//                  bounding circle reaches beyond its AABB where Box2D never looks;
+//                  and pairs with a polygon whose shapes' tight AABBs do not overlap are left out,
+//                  since a polygon's bounding circle reaches beyond its AABB where Box2D never looks
+//                  (two circles always stay: a wrong circle pair is far from Box2D's fat AABBs);
 //   T-in-A         T ⊆ A;
 //   AABB-in-cells  every pair of G lies in the same or neighbouring cells of the detector's
 //                  integerisation (pairs whose elements' exact boxes do not overlap — Box2D's float

@@ -35,7 +35,8 @@ const char* invariant_description(Invariant invariant) {
   switch (invariant) {
     case Invariant::AEqualsR: return "the algorithm's pairs A equal the reference's pairs R";
     case Invariant::AInF:
-      return "every pair of A that Box2D would consider (its filters applied, the shapes' tight AABBs overlapping) "
+      return "every pair of A that Box2D would consider (its filters applied; with a polygon, the shapes' tight AABBs "
+             "overlapping) "
              "is in Box2D's contact list F";
     case Invariant::TInA: return "every pair of shapes touching at the current transforms (T) is in A";
     case Invariant::AabbInCells:

@@ -46,6 +46,49 @@ inline void world_point(const b2Transform& xf, b2Vec2 p, double& x, double& y) {
   y = static_cast<double>(xf.p.y) + (s * px + c * py);
 }
 
+
+// A fixture's Box2D shape built from its spec, with the centre (body frame) and radius of its
+// bounding circle, the element the detectors see: a polygon's includes Box2D's skin.
+struct FixtureShape {
+  b2CircleShape circle;
+  b2PolygonShape polygon;
+  const b2Shape* shape = nullptr;
+  b2Vec2 centre{0, 0};
+  double radius = 0;
+
+  explicit FixtureShape(const ShapeSpec& s) {
+    if (s.kind == ShapeKind::Circle) {
+      circle.m_p = to_b2(s.offset);
+      circle.m_radius = static_cast<float>(s.radius);
+      shape = &circle;
+      centre = circle.m_p;
+      radius = circle.m_radius;
+      return;
+    }
+    if (s.kind == ShapeKind::Box) {
+      polygon.SetAsBox(static_cast<float>(s.half_extents.x), static_cast<float>(s.half_extents.y), to_b2(s.offset),
+                       static_cast<float>(s.angle));
+    } else {
+      b2Vec2 points[b2_maxPolygonVertices];
+      for (std::size_t i = 0; i < s.vertices.size(); ++i) points[i] = to_b2(s.vertices[i]);
+      polygon.Set(points, static_cast<int32>(s.vertices.size()));
+      if (polygon.m_count != static_cast<int32>(s.vertices.size()))
+        throw Error(s.where + "Box2D keeps only " + std::to_string(polygon.m_count) + " of the " +
+                    std::to_string(s.vertices.size()) + " polygon vertices (points too close or nearly collinear)");
+    }
+    shape = &polygon;
+    centre = polygon.m_centroid;
+    double far = 0;
+    for (int32 i = 0; i < polygon.m_count; ++i) {
+      const double dx = static_cast<double>(polygon.m_vertices[i].x) - centre.x;
+      const double dy = static_cast<double>(polygon.m_vertices[i].y) - centre.y;
+      far = std::max(far, std::sqrt(dx * dx + dy * dy));
+    }
+    radius = far + static_cast<double>(polygon.m_radius) + kPolygonCircleMargin;
+  }
+  FixtureShape(const FixtureShape&) = delete;
+  FixtureShape& operator=(const FixtureShape&) = delete;
+};
 }  // namespace
 
 // ---- building ------------------------------------------------------------------------------
@@ -67,6 +110,21 @@ PhysicsWorld::PhysicsWorld(const Scene& scene) : scene_(scene) {
 
 PhysicsWorld::~PhysicsWorld() = default;
 
+double PhysicsWorld::largest_emitted_radius(std::string& out_where) const {
+  double largest = 0;
+  for (const GeneratorSpec& g : scene_.generators) {
+    if (g.kind != GeneratorKind::Emitter || g.count == 0) continue;
+    for (const ShapeSpec& s : g.body.fixtures) {
+      const FixtureShape shape(s);
+      if (shape.radius > largest) {
+        largest = shape.radius;
+        out_where = g.where;
+      }
+    }
+  }
+  return largest;
+}
+
 void PhysicsWorld::add_body(const BodySpec& spec) {
   b2BodyDef def;
   def.type = to_b2(spec.type);
@@ -87,38 +145,10 @@ void PhysicsWorld::add_body(const BodySpec& spec) {
     fd.friction = static_cast<float>(s.friction);
     fd.restitution = static_cast<float>(s.restitution);
     fd.userData.pointer = static_cast<std::uintptr_t>(id);
-    b2CircleShape circle;
-    b2PolygonShape polygon;
-    b2Vec2 centre;
-    double radius = 0;
-    if (s.kind == ShapeKind::Circle) {
-      circle.m_p = to_b2(s.offset);
-      circle.m_radius = static_cast<float>(s.radius);
-      fd.shape = &circle;
-      centre = circle.m_p;
-      radius = circle.m_radius;
-    } else {
-      if (s.kind == ShapeKind::Box) {
-        polygon.SetAsBox(static_cast<float>(s.half_extents.x), static_cast<float>(s.half_extents.y), to_b2(s.offset),
-                         static_cast<float>(s.angle));
-      } else {
-        b2Vec2 points[b2_maxPolygonVertices];
-        for (std::size_t i = 0; i < s.vertices.size(); ++i) points[i] = to_b2(s.vertices[i]);
-        polygon.Set(points, static_cast<int32>(s.vertices.size()));
-        if (polygon.m_count != static_cast<int32>(s.vertices.size()))
-          throw Error(s.where + "Box2D keeps only " + std::to_string(polygon.m_count) + " of the " +
-                      std::to_string(s.vertices.size()) + " polygon vertices (points too close or nearly collinear)");
-      }
-      fd.shape = &polygon;
-      centre = polygon.m_centroid;
-      double far = 0;
-      for (int32 i = 0; i < polygon.m_count; ++i) {
-        const double dx = static_cast<double>(polygon.m_vertices[i].x) - centre.x;
-        const double dy = static_cast<double>(polygon.m_vertices[i].y) - centre.y;
-        far = std::max(far, std::sqrt(dx * dx + dy * dy));
-      }
-      radius = far + static_cast<double>(polygon.m_radius) + kPolygonCircleMargin;
-    }
+    FixtureShape shape(s);
+    fd.shape = shape.shape;
+    const b2Vec2 centre = shape.centre;
+    const double radius = shape.radius;
     // Our own list keeps the element order (Box2D's fixture list is newest first).
     fixtures_.push_back(body->CreateFixture(&fd));
     local_centres_.push_back(centre);
@@ -252,7 +282,11 @@ void PhysicsWorld::in_box2d_scope(const PairList& pairs, PairList& out, Box2dSco
       ++why_not.fixture_filter;
       continue;
     }
-    if (!tight_aabbs_overlap(p.i, p.j)) {
+    // A polygon's bounding circle reaches beyond its AABB, where Box2D never looks. Two circles'
+    // bounding circles are the shapes: a real contact has overlapping AABBs, so it must be in F.
+    const bool both_circles =
+        fa->GetType() == b2Shape::e_circle && fb->GetType() == b2Shape::e_circle;
+    if (!both_circles && !tight_aabbs_overlap(p.i, p.j)) {
       ++why_not.beyond_aabb;
       continue;
     }

@@ -31,7 +31,7 @@ struct Box2dScope {
   std::size_t no_dynamic = 0;      // neither body dynamic (static/kinematic only): b2Body::ShouldCollide
   std::size_t joint = 0;           // bodies joined with collideConnected = false
   std::size_t fixture_filter = 0;  // refused by the world's b2ContactFilter (category/mask/group)
-  std::size_t beyond_aabb = 0;     // bounding circles meet but the shapes' tight AABBs do not
+  std::size_t beyond_aabb = 0;     // a polygon's bounding circle meets, its shapes' tight AABBs do not
 };
 
 class PhysicsWorld {
@@ -70,6 +70,9 @@ class PhysicsWorld {
   // The pairs of `pairs` (sorted, i < j) that Box2D's contact list must hold: Box2D's filters
   // applied (same body, no dynamic body, joints, contact filter) and the shapes' tight AABBs
   // overlapping. Counts what was left out and why.
+  // The largest bounding-circle radius of the bodies the emitters will add (0 without emitters);
+  // `out_where` names the emitter ("file:line: generators[k]: ").
+  double largest_emitted_radius(std::string& out_where) const;
   void in_box2d_scope(const PairList& pairs, PairList& out, Box2dScope& why_not) const;
   // True when the tight AABBs of two elements' fixtures overlap (inclusive, in float as Box2D).
   [[nodiscard]] bool tight_aabbs_overlap(ElementId a, ElementId b) const;
