@@ -150,7 +150,7 @@ TEST_P(HeadlessBadInput, ExitsTwoWithOneLineAndNoReport) {
   const auto r = run("headless --scene '" + in + "' --frames 3 --report '" + dir + "/r.json' " + c.args);
   EXPECT_EQ(r.exit_code, 2) << r.out;
   std::string expected = std::string("nbscope: error: ") + c.message + "\n";
-  if (const auto p = expected.find("IN"); p != std::string::npos) expected.replace(p, 2, in);
+  for (auto p = expected.find("IN:"); p != std::string::npos; p = expected.find("IN:", p + in.size())) expected.replace(p, 2, in);
   if (const auto p = expected.find("ALGOS"); p != std::string::npos) {
     EXPECT_EQ(r.err.substr(0, p), expected.substr(0, p));  // the list grows with the registry
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
@@ -179,7 +179,10 @@ const BadRun kBadRuns[] = {
      "IN:2: generators[0].rows: 10000000 bodies requested in all; a scene holds at most 1000000"},
     {"cell_size_too_small", "{\"cell_size\": 0.5,\n \"bodies\": [{\"shape\": \"circle\", \"radius\": 1}]}", "",
      "IN:1: cell_size: smaller than the largest element's diameter 2"},
-    {"missing_file", nullptr, "", "IN: cannot open the scene file"},
+    {"cell_size_too_small_for_an_emitter", "{\"cell_size\": 1,\n \"bodies\": [{\"shape\": \"circle\", \"radius\": 0.4}],\n \"generators\": [\n"
+     "  {\"kind\": \"emitter\", \"count\": 5, \"position\": [0, 5], \"rate\": 1, \"start\": 1,\n   \"body\": {\"shape\": \"circle\", \"radius\": 1}}]}", "",
+     "IN:1: cell_size: smaller than the diameter 2 of the elements emitted by IN:4: generators[0]"},
+    {"missing_file", nullptr, "", "IN: cannot open the scene file (no such file or not readable)"},
     {"unknown_algorithm", kGoodScene, "--algorithm quadtree", "unknown algorithm 'quadtree' (known: ALGOS)"},
     {"unknown_fault", kGoodScene, "--inject-fault gremlins",
      "--inject-fault: unknown fault 'gremlins' (known: drop-mask-cell, off-by-one-cell, stale-positions, drop-pair, drop-box2d-contact)"},
@@ -201,6 +204,20 @@ TEST(Headless, AnUnwritableReportFailsBeforeAnyFrame) {
   r = run("headless --scene '" + scene("default") + "' --frames 100000 --report '" + dir + "/no/r.json'");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "nbscope: error: " + dir + "/no/r.json: cannot write: no directory " + dir + "/no\n");
+}
+
+TEST(Headless, AReportOverTheSceneOrTheRecordingIsRefused) {
+  const std::string dir = scratch_dir("headless_same_paths");
+  const std::string copy = dir + "/s.json";
+  std::filesystem::copy_file(scene("book-fig-3-15"), copy);
+  auto r = run("headless --scene '" + copy + "' --frames 2 --report '" + copy + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "nbscope: error: " + copy + ": cannot write: it is also the --scene\n");
+  EXPECT_EQ(testcli::read_text(copy), testcli::read_text(scene("book-fig-3-15")));
+  r = run("headless --scene '" + copy + "' --frames 2 --record '" + dir + "/x' --report '" + dir + "/x'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "nbscope: error: " + dir + "/x: cannot write: it is also the --report\n");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x"));
 }
 
 TEST(Headless, SceneIsRequired) {

@@ -44,10 +44,14 @@ class InterruptGuard {
   void (*old_term_)(int);
 };
 
-// A one-line bar on stderr, redrawn only when it changes.
+// A one-line bar on stderr, redrawn only when it changes; erased when done or when an error
+// unwinds past it, so that the error line starts clean.
 class Progress {
  public:
   Progress(bool on, std::int64_t total) : on_(on), total_(total) {}
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+  ~Progress() { finish(); }
   void update(std::int64_t done) {
     if (!on_) return;
     const int width = 40;
@@ -59,7 +63,8 @@ class Progress {
     std::fflush(stderr);
   }
   void finish() {
-    if (on_) std::fputs("\r\033[K", stderr);
+    if (on_ && last_ != -1) std::fputs("\r\033[K", stderr);
+    last_ = -1;
   }
 
  private:
@@ -190,6 +195,13 @@ HeadlessOptions parse_headless_options(Args& args) {
 int run_headless_loop(const HeadlessOptions& o) {
   if (o.report) check_output_path(*o.report);  // before any frame runs
   if (o.record) check_output_path(*o.record);
+  {
+    std::vector<NamedPath> outputs;
+    if (o.report) outputs.push_back({"--report", *o.report});
+    if (o.record) outputs.push_back({"--record", *o.record});
+    if (o.view.screenshot) outputs.push_back({"--screenshot", *o.view.screenshot});
+    check_outputs_distinct({o.replay ? NamedPath{"recording", *o.replay} : NamedPath{"--scene", o.scene}}, outputs);
+  }
   std::string note;
   std::vector<std::string> names = algorithms_of(o.algorithm, 0, o.brute_limit, note);
   FrameLoopOptions lo;

@@ -151,11 +151,20 @@ struct FrameLoop::Impl {
     if (s.origin) opts.grid.origin = std::array<double, 3>{s.origin->x, s.origin->y, 0};
     if (s.cells) opts.grid.cells = std::array<std::int64_t, 3>{(*s.cells)[0], (*s.cells)[1], 1};
     auto fresh = std::make_unique<PhysicsWorld>(s);
-    // A pinned cell size must hold the largest element from the start (the grid would refuse it).
-    if (s.cell_size && fresh->elements().size() > 0 && *s.cell_size < 2 * fresh->elements().max_radius()) {
+    // A pinned cell size must hold the largest element from the start and every element an
+    // emitter will add (the grid would refuse it mid-run, far from the field to fix).
+    if (s.cell_size) {
       char d[64];
-      std::snprintf(d, sizeof d, "%.6g", 2 * fresh->elements().max_radius());
-      throw Error(s.cell_size_where + "smaller than the largest element's diameter " + d);
+      if (fresh->elements().size() > 0 && *s.cell_size < 2 * fresh->elements().max_radius()) {
+        std::snprintf(d, sizeof d, "%.6g", 2 * fresh->elements().max_radius());
+        throw Error(s.cell_size_where + "smaller than the largest element's diameter " + d);
+      }
+      std::string emitter;
+      if (const double r = fresh->largest_emitted_radius(emitter); *s.cell_size < 2 * r) {
+        std::snprintf(d, sizeof d, "%.6g", 2 * r);
+        throw Error(s.cell_size_where + "smaller than the diameter " + d + " of the elements emitted by " +
+                    emitter.substr(0, emitter.size() - 2));
+      }
     }
     Scene kept = s;
     scene = std::move(kept);
