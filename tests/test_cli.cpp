@@ -23,6 +23,11 @@ TEST(Cli, HelpVersionAndAlgorithms) {
   auto version = run("--version");
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_EQ(version.out.rfind("nbscope ", 0), 0u);
+  EXPECT_EQ(run("pairs --help").out, help.out);  // help after a command is help, not an unknown flag
+  EXPECT_EQ(run("headless -h").exit_code, 0);
+  const auto extra = run("--version extra");
+  EXPECT_EQ(extra.exit_code, 2);
+  EXPECT_EQ(extra.err, "nbscope: error: extra: unexpected argument (see nbscope --help)\n");
   auto algos = run("algorithms");
   EXPECT_EQ(algos.exit_code, 0);
   EXPECT_NE(algos.out.find("brute"), std::string::npos);

@@ -1,6 +1,7 @@
 // `nbscope pairs`: contact pairs of an ELEMENTS.csv, timed without the I/O.
 #include <chrono>
 #include <cstdio>
+#include <iostream>
 
 #include "app/commands.hpp"
 #include "app/grid_flags.hpp"
@@ -43,8 +44,9 @@ int run_pairs(Args& args) {
     best = std::min(best, s);
     total += s;
     sort_pairs(pairs);
+    if (repeat == 1) break;
     if (rep == 0) {
-      first = pairs;
+      first = pairs;  // kept only to compare the repeats with
     } else if (pairs != first) {
       std::fprintf(stderr, "nbscope: repeat %lld of %s gave %zu pairs, the first gave %zu: detection is not repeatable\n",
                    rep + 1, algorithm.c_str(), pairs.size(), first.size());
@@ -59,9 +61,8 @@ int run_pairs(Args& args) {
   if (output) {
     write_pairs_csv(*output, pairs);
   } else {
-    std::string buf = "i,j\n";
-    for (const Pair& p : pairs) buf += std::to_string(p.i) + "," + std::to_string(p.j) + "\n";
-    std::fwrite(buf.data(), 1, buf.size(), stdout);
+    write_pairs_csv(std::cout, pairs);
+    std::cout.flush();
   }
   return 0;
 }

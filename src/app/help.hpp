@@ -27,7 +27,8 @@ usage:
       --repeat K runs detection K times and checks that every run agrees.
       --cell-size/--origin/--cells pin the grid (default: cells of the largest diameter from the
       smallest centre coordinates; D must be at least the largest diameter).
-      --max-pairs M stops with an error past M pairs (default 50,000,000: 400 MB).
+      --max-pairs M stops with an error past M pairs (default 50,000,000: 400 MB of pairs,
+      about 600 MB at the peak while the list grows).
   nbscope dump --input ELEMENTS.csv --algorithm NAME [--cell-size D] [--origin X,Y[,Z]]
                [--cells NX,NY[,NZ]] [--format json]
       The algorithm's integer arrays as JSON on stdout, as they stand when its lists are complete:

@@ -21,12 +21,16 @@ int print_algorithms() {
   return 0;
 }
 
-int dispatch(const std::string& command, nbscope::Args& args) {
-  if (command == "--help" || command == "-h" || command == "help") {
+bool is_help(const std::string& a) { return a == "--help" || a == "-h" || a == "help"; }
+
+int dispatch(const std::string& command, const std::vector<std::string>& rest, nbscope::Args& args) {
+  // `nbscope pairs --help` is a request for help, not an unknown flag.
+  if (is_help(command) || (command != "--version" && !rest.empty() && (rest[0] == "--help" || rest[0] == "-h"))) {
     std::fputs(nbscope::kHelpText, stdout);
     return 0;
   }
   if (command == "--version") {
+    args.finish();
     std::printf("nbscope %s\n", nbscope::kVersion);
     return 0;
   }
@@ -50,10 +54,10 @@ int main(int argc, char** argv) {
                                           std::strcmp(argv[1], "--version") != 0);
   std::vector<std::string> rest(argv + (implicit_gui ? 1 : 2), argv + argc);
   const std::string command = implicit_gui ? "gui" : argv[1];
-  nbscope::Args args(std::move(rest));
+  nbscope::Args args(rest);
   try {
     nbscope::register_physics_detectors();  // "box2d" joins core's detectors
-    return dispatch(command, args);
+    return dispatch(command, rest, args);
   } catch (const nbscope::Error& e) {
     std::fprintf(stderr, "nbscope: error: %s\n", e.what());
     return 2;

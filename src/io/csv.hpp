@@ -1,6 +1,7 @@
 // nbscope io: ELEMENTS.csv in, PAIRS.csv out (formats in DESIGN.md "Command line").
 #pragma once
 #include <array>
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,5 +35,7 @@ void parse_element_row(const std::vector<std::string_view>& fields, const std::s
 
 // Writes header `i,j` and then the pairs sorted, one a line, atomically.
 void write_pairs_csv(const std::string& path, const PairList& sorted_pairs);
+// The same to a stream (e.g. std::cout), in chunks.
+void write_pairs_csv(std::ostream& out, const PairList& sorted_pairs);
 
 }  // namespace nbscope
