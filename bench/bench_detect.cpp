@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "bench_trace_off.hpp"
 #include "core/detector.hpp"
 #include "support/generators.hpp"
 
@@ -58,7 +59,9 @@ void register_detect_benchmarks() {
 }  // namespace nbscope
 
 int main(int argc, char** argv) {
+  if (!nbscope::trace_off_control_agrees()) return 1;
   nbscope::register_detect_benchmarks();
+  nbscope::register_trace_off_benchmarks();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -1,7 +1,7 @@
 // nbscope_bench: BM_DetectTraced/<algorithm>/<layout>/<N> — the same detections as BM_Detect, but
 // through detect_traced() into a TraceLog (every book operation recorded, as the stepper needs it).
-// Set beside BM_Detect, they show what tracing costs when on, and — with BM_Detect of a build before
-// the trace existed — that it costs nothing when off (the NullTrace instantiation).
+// Set beside BM_Detect, they show what tracing costs when on; BM_TraceOff (bench_trace_off.cpp)
+// shows that it costs nothing when off.
 // Counters: ns_per_element, events (trace events of one run), bytes_per_event.
 #include <benchmark/benchmark.h>
 
