@@ -80,6 +80,18 @@ TEST(Generators, PileRowsAreHexagonal) {
   }
 }
 
+TEST(Generators, APileBeyondTheWorldLimitIsRefusedNamingTheGenerator) {
+  // 100 bodies 10 km apart in one row: 1000 km wide, where float positions mean nothing.
+  const Scene s = scene_of(R"({"generators": [
+      {"kind": "pile", "count": 100, "columns": 100, "position": [0, 1], "spacing": 10000}]})");
+  try {
+    initial_bodies(s);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "test.json:2: generators[0]: the pile would reach beyond +-100000 m (1 rows of 100, 10000 m apart)");
+  }
+}
+
 TEST(Generators, EmitterPoursAtItsRate) {
   const Scene s = scene_of(R"({"generators": [{"kind": "emitter", "count": 10, "position": [0, 5], "rate": 4, "start": 1}]})");
   EXPECT_TRUE(initial_bodies(s).empty());

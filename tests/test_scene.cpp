@@ -184,6 +184,13 @@ const BadScene kBadScenes[] = {
     {"not_an_object", "[1, 2]", "1: must be a scene (a JSON object), got an array [1,2]"},
     {"radius_on_box_template", "{\"generators\": [{\"kind\": \"random_box\", \"count\": 1, \"min\": [0, 0], \"max\": [1, 1],\n \"radius\": [0.1, 0.2],\n \"body\": {\"shape\": \"box\", \"half_extents\": [1, 1]}}]}",
      "2: generators[0].radius: radius applies to circle templates; use scale for other shapes"},
+    {"grid_on_one_point", "{\"generators\": [{\"kind\": \"grid\", \"columns\": 1000, \"rows\": 1, \"origin\": [0, 0],\n \"spacing\": [0, 0]}]}",
+     "2: generators[0].spacing: 0 along an axis with more than one body puts bodies on top of each other"},
+    {"random_box_of_no_area", "{\"generators\": [{\"kind\": \"random_box\", \"count\": 50, \"min\": [1, 1],\n \"max\": [1, 1]}]}",
+     "2: generators[0].max: equals min: all 50 bodies would be at one point"},
+    {"scaled_beyond_shape_size", "{\"generators\": [{\"kind\": \"random_box\", \"count\": 5, \"min\": [0, 0], \"max\": [9, 9],\n"
+     "  \"radius\": [1, 10000], \"scale\": [1, 10000]}]}",
+     "2: generators[0].scale: scales a shape beyond 10000 m"},
 };
 
 INSTANTIATE_TEST_SUITE_P(All, SceneBadInput, ::testing::ValuesIn(kBadScenes),

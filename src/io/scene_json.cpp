@@ -364,6 +364,16 @@ double smallest_feature(const BodySpec& b) {
   return m;
 }
 
+// The largest size, offset or vertex distance of `b`'s shapes: what scale may not grow beyond kMaxShapeSize.
+double largest_feature(const BodySpec& b) {
+  double m = 0;
+  for (const ShapeSpec& s : b.fixtures) {
+    m = std::max({m, std::abs(s.offset.x), std::abs(s.offset.y), s.radius, s.half_extents.x, s.half_extents.y});
+    for (const Vec2& v : s.vertices) m = std::max({m, std::abs(v.x), std::abs(v.y)});
+  }
+  return m;
+}
+
 GeneratorSpec read_generator(const LocatedJson& doc, const json& v, const Path& path) {
   ObjectReader r(doc, v, path, "a generator");
   GeneratorSpec g;
@@ -386,6 +396,9 @@ GeneratorSpec read_generator(const LocatedJson& doc, const json& v, const Path& 
     g.spacing = r.vec2("spacing", {1, 1}, kMaxSceneCoordinate);
     if (g.columns > max_count / g.rows) doc.fail(r.at("rows"), "columns x rows is far too many bodies");
     g.count = g.columns * g.rows;
+    // Bodies stacked on one point: Box2D pairs each with all the others, O(N^2) time and memory.
+    if ((g.columns > 1 && g.spacing.x == 0) || (g.rows > 1 && g.spacing.y == 0))
+      doc.fail(r.at("spacing"), "0 along an axis with more than one body puts bodies on top of each other");
     const Vec2 end{g.origin.x + g.spacing.x * static_cast<double>(g.columns - 1), g.origin.y + g.spacing.y * static_cast<double>(g.rows - 1)};
     if (std::abs(end.x) > kMaxSceneCoordinate || std::abs(end.y) > kMaxSceneCoordinate)
       doc.fail(r.at("spacing"), "the grid would reach beyond +-" + fmt(kMaxSceneCoordinate) + " m");
@@ -395,6 +408,8 @@ GeneratorSpec read_generator(const LocatedJson& doc, const json& v, const Path& 
     g.min = read_vec2(doc, r.need("min", "lower corner of the box"), r.at("min"), kMaxSceneCoordinate);
     g.max = read_vec2(doc, r.need("max", "upper corner of the box"), r.at("max"), kMaxSceneCoordinate);
     if (g.min.x > g.max.x || g.min.y > g.max.y) doc.fail(r.at("max"), "must not be below min on either axis");
+    if (g.count > 1 && g.min.x == g.max.x && g.min.y == g.max.y)
+      doc.fail(r.at("max"), "equals min: all " + std::to_string(g.count) + " bodies would be at one point");
     if (r.has("radius")) {
       if (g.body.fixtures.size() != 1 || g.body.fixtures[0].kind != ShapeKind::Circle)
         doc.fail(r.at("radius"), "radius applies to circle templates; use scale for other shapes");
@@ -405,6 +420,9 @@ GeneratorSpec read_generator(const LocatedJson& doc, const json& v, const Path& 
     if (r.has("random_angle")) g.random_angle = read_bool(doc, r.get("random_angle"), r.at("random_angle"));
     if (smallest_feature(g.body) * g.scale_range[0] < kMinPolygonFeature)
       doc.fail(r.at("scale"), "scales a box or polygon below " + fmt(kMinPolygonFeature) + " m");
+    const double largest_radius = g.radius_range ? (*g.radius_range)[1] : 0.0;
+    if (std::max(largest_feature(g.body), largest_radius) * g.scale_range[1] > kMaxShapeSize)
+      doc.fail(r.at("scale"), "scales a shape beyond " + fmt(kMaxShapeSize) + " m");
   } else if (kind == "pile") {
     g.kind = GeneratorKind::Pile;
     g.count = read_integer(doc, r.need("count"), r.at("count"), 0, max_count);

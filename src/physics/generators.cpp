@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
+
+#include "core/error.hpp"
 
 namespace nbscope {
 
@@ -51,6 +54,16 @@ void make_pile(const GeneratorSpec& g, std::vector<BodySpec>& out) {
   SceneRng rng(g.seed);
   const double spacing = g.spacing.x > 0 ? g.spacing.x : 2 * body_extent(g.body) * 1.05;
   const double row_height = spacing * std::sqrt(3.0) / 2;  // hexagonal packing
+  // The pile's extent is known only here (its spacing may come from the body): keep it in the world.
+  const double rows = std::ceil(static_cast<double>(g.count) / static_cast<double>(g.columns));
+  const double half_width = (static_cast<double>(std::min(g.count, g.columns)) / 2 + 1) * spacing;
+  if (g.count > 0 && (std::abs(g.position.x) + half_width > kMaxSceneCoordinate ||
+                      std::abs(g.position.y) + rows * row_height + spacing > kMaxSceneCoordinate)) {
+    char what[160];
+    std::snprintf(what, sizeof what, "the pile would reach beyond +-%g m (%g rows of %lld, %g m apart)", kMaxSceneCoordinate,
+                  rows, static_cast<long long>(g.columns), spacing);
+    throw Error(g.where + what);
+  }
   for (std::int64_t k = 0; k < g.count; ++k) {
     const std::int64_t row = k / g.columns, col = k % g.columns;
     const double shift = (row % 2 == 1) ? spacing / 2 : 0;
