@@ -164,6 +164,15 @@ TEST(Cli, ADirectoryAsInputIsRefusedByName) {
   EXPECT_EQ(r.err, "nbscope: error: " + dir + ": is a directory, not an elements file\n");
 }
 
+TEST(Cli, BytesFromABadFileAreEscapedSoTheErrorStaysOnePrintableLine) {
+  const std::string dir = scratch_dir("unprintable") + "/d\xC3\xA9j\xC3\xA0";  // a UTF-8 name stays as it is
+  std::filesystem::create_directories(dir);
+  write_text(dir + "/in.csv", std::string("1,2\0x\r\xFF,1\n", 10));
+  const auto r = run("pairs --input '" + dir + "/in.csv'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "nbscope: error: " + dir + "/in.csv:1: y: '2\\x00x\\x0D\\xFF' is not a number\n");
+}
+
 TEST(Cli, UnknownCommandExitsTwo) {
   auto r = run("frobnicate");
   EXPECT_EQ(r.exit_code, 2);

@@ -59,13 +59,13 @@ int main(int argc, char** argv) {
     nbscope::register_physics_detectors();  // "box2d" joins core's detectors
     return dispatch(command, rest, args);
   } catch (const nbscope::Error& e) {
-    std::fprintf(stderr, "nbscope: error: %s\n", e.what());
+    std::fprintf(stderr, "nbscope: error: %s\n", nbscope::printable_line(e.what()).c_str());
     return 2;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "nbscope: error: out of memory (the input is too large for this machine)\n");
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "nbscope: error: internal: %s\n", e.what());
+    std::fprintf(stderr, "nbscope: error: internal: %s\n", nbscope::printable_line(e.what()).c_str());
     return 2;
   }
 }

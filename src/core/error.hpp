@@ -2,6 +2,7 @@
 #pragma once
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace nbscope {
 
@@ -11,5 +12,9 @@ class Error : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// `text` made safe for one line of a terminal: control bytes and bytes that are not valid UTF-8
+// (echoed from a bad input file) become \xNN; valid UTF-8, e.g. a file name with accents, stays.
+std::string printable_line(std::string_view text);
 
 }  // namespace nbscope

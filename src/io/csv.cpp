@@ -62,9 +62,9 @@ double parse_finite_number(std::string_view f, const std::string& at, const char
   double v = 0;
   const auto [ptr, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
   if (f.empty() || ec == std::errc::invalid_argument || ptr != f.data() + f.size())
-    throw Error(at + name + ": '" + std::string(f) + "' is not a number");
+    throw Error(at + name + ": '" + printable_line(f) + "' is not a number");
   if (ec == std::errc::result_out_of_range || !std::isfinite(v))
-    throw Error(at + name + ": '" + std::string(f) + "' is not a finite number");
+    throw Error(at + name + ": '" + printable_line(f) + "' is not a finite number");
   return v;
 }
 
@@ -115,7 +115,7 @@ Elements parse_elements_csv(const std::string& text, const std::string& where) {
     const std::vector<std::string_view> fields = split_commas(line);
     if (!seen_row_or_header && is_name(fields.front())) {
       for (std::string_view f : fields)
-        if (!is_name(f)) throw Error(at + "header mixes names and numbers: '" + std::string(f) + "'");
+        if (!is_name(f)) throw Error(at + "header mixes names and numbers: '" + printable_line(f) + "'");
       if (fields.size() != 3 && fields.size() != 4)
         throw Error(at + "header has " + std::to_string(fields.size()) + " columns; expected x,y,r or x,y,z,r");
       e.dim = fields.size() == 3 ? 2 : 3;  // the header fixes the dimension, as a first row would
