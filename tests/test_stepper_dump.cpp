@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -229,6 +230,40 @@ TEST(StepperCli, StepNeedsAScreenshotAndANonNegativeCount) {
     EXPECT_EQ(r.err.rfind("nbscope: error: ", 0), 0u) << r.err;
     EXPECT_NE(r.err.find("--step"), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+}
+
+// A step past the frame's last operation, an algorithm that records none, or several algorithms:
+// one line naming what is wrong, exit 2, and no screenshot.
+TEST(StepperCli, StepPastTheEndOrWithoutOperationsIsRefusedWithoutAPicture) {
+  const std::string scene = std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/book-fig-3-15.json";
+  const std::string png = testcli::scratch_dir("step_refused") + "/step.png";
+  const auto run = [&](const std::string& args) {
+    std::filesystem::remove(png);
+    return testcli::run("headless --scene '" + scene + "' --frames 1 --quiet --screenshot '" + png + "' " + args);
+  };
+  const std::pair<std::string, std::string> refused[] = {
+      {"--algorithm screen --step 78", "--step: 78 is past the last of the 77 operations of frame 1 (screen)"},
+      {"--algorithm screen --step 1000000000000", "--step: 1000000000000 is past the last of the 77 operations"},
+      {"--algorithm box2d --step 3", "--step: box2d records no operations to step through"},
+      {"--algorithm screen,nbs --step 3", "--algorithm screen,nbs names several: give one"},
+      {"--algorithm all --step 3", "--algorithm all names several: give one"},
+  };
+  for (const auto& [args, message] : refused) {
+    const auto r = run(args);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("nbscope: error: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(png)) << args;
+  }
+  // box2d's refusal names the algorithms that can be stepped.
+  EXPECT_NE(run("--algorithm box2d --step 3").err.find("brute, tree, sort, screen, nbs"), std::string::npos);
+  // The last operation itself, and brute force (its trace is the pair tests), are fine.
+  for (const std::string args : {"--algorithm screen --step 77", "--algorithm brute --step 3"}) {
+    const auto r = run(args);
+    EXPECT_EQ(r.exit_code, 0) << args << ": " << r.err;
+    EXPECT_TRUE(std::filesystem::exists(png)) << args;
   }
 }
 

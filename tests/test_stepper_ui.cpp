@@ -7,7 +7,10 @@
 
 #include <string>
 
+#include "core/detector.hpp"
+#include "render/lists.hpp"
 #include "ui/host.hpp"
+#include "ui/panels.hpp"
 #include "ui/stepper_panels.hpp"
 #include "support/generators.hpp"
 
@@ -121,9 +124,82 @@ TEST(StepperSession, RecordsOnlyAPausedFrameAndWordsEventsAsTheBook) {
   EXPECT_EQ(s.stepper().position(), 20u);
 }
 
+// The element section shows an entry the detection has not written yet as unset, never as the
+// array's meaningless initial contents shifted to book numbering.
+TEST(StepperSession, ElementEntriesNotWrittenYetShowAsUnset) {
+  BookFrame f;
+  f.sim.algorithm = "nbs";
+  StepperSession s;
+  s.capture(f.sim);
+  ASSERT_TRUE(s.has_capture()) << s.message();
+  s.book_numbering = true;
+  s.stepper().seek(5);  // the y-list pushes of elements 1..4 (book): no x-list yet
+  EXPECT_EQ(element_entries(s, 3).next, "Y[4] = 3,  X[4] = \xC2\xB7");
+  s.book_numbering = false;
+  EXPECT_EQ(element_entries(s, 3).next, "Y[3] = 2,  X[3] = \xC2\xB7");
+  s.stepper().seek(s.stepper().size());
+  EXPECT_EQ(element_entries(s, 3).next.find("\xC2\xB7"), std::string::npos) << element_entries(s, 3).next;
+}
+
+// Sort's mapping: a first write says "was unset" in the Stepper's line as in the Arrays panel, and
+// the permutation `order` is a position, not a next array.
+TEST(StepperSession, SortWordsFirstWritesAsUnsetAndOrderAsAPosition) {
+  BookFrame f;
+  f.sim.algorithm = "sort";
+  StepperSession s;
+  s.capture(f.sim);
+  ASSERT_TRUE(s.has_capture()) << s.message();
+  s.stepper().seek(2);  // the phase, then ix[0]
+  EXPECT_EQ(describe_event(s, *s.stepper().current()), "cell: ix[0] = 4 (was unset) for k=0");
+  const ElementEntries early = element_entries(s, 0);
+  EXPECT_TRUE(early.next.empty()) << early.next;
+  EXPECT_EQ(early.own, "ix[0] = 4,  iy[0] = \xC2\xB7");
+  EXPECT_EQ(early.position, "not in order yet");
+  s.stepper().seek(s.stepper().size());
+  const ElementEntries done = element_entries(s, 0);
+  EXPECT_TRUE(done.next.empty()) << done.next;
+  EXPECT_EQ(done.own, "ix[0] = 4,  iy[0] = 6");
+  EXPECT_EQ(done.position.rfind("order[", 0), 0u) << done.position;
+  EXPECT_NE(done.position.find("] = 0"), std::string::npos) << done.position;
+}
+
+// The Selection panel names a list's head as the Arrays panel and the README do (B[0][4], never the
+// flat B[4]; the row below's copy B[1][4]), and counts from 1 in book numbering like everything else.
+TEST(SelectionPanel, NamesListHeadsAsTheArraysDoInEitherNumbering) {
+  BookFrame f;
+  auto nbs = make_detector("nbs");
+  DetectOptions o;
+  o.grid.cell_size = 1.0;
+  o.grid.origin = std::array<double, 3>{0, 0, 0};
+  o.grid.cells = std::array<std::int64_t, 3>{10, 10, 1};
+  PairList pairs;
+  TraceLog log;
+  nbs->detect_traced(f.elements, o, pairs, log);
+  std::vector<std::string> zero, book;
+  for (const render::TracedList& l : render::traced_lists(log, 9)) {
+    if (std::find(l.chain.begin(), l.chain.end(), 3) == l.chain.end()) continue;
+    zero.push_back(describe_chain(l, 3, false));
+    book.push_back(describe_chain(l, 3, true));
+  }
+  const auto has = [](const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); };
+  EXPECT_TRUE(has(zero, "y_heads[6]: 8 -> 6 -> 4 -> [3] -> 2 -> 1 -> 0 -> -1")) << ::testing::PrintToString(zero);
+  EXPECT_TRUE(has(zero, "B[0][4]: 0 -> 1 -> [3] -> -1")) << ::testing::PrintToString(zero);
+  EXPECT_TRUE(has(book, "y_heads[7]: 9 -> 7 -> 5 -> [4] -> 3 -> 2 -> 1 -> -1")) << ::testing::PrintToString(book);
+  EXPECT_TRUE(has(book, "B[0][5]: 1 -> 2 -> [4] -> -1")) << ::testing::PrintToString(book);
+}
+
 TEST(StepperSession, SaysWhyNothingCanBeSteppedInsteadOfThrowing) {
   BookFrame f;
-  for (const char* algorithm : {"brute", "no-such-algorithm"}) {
+  {
+    // Brute force keeps no arrays, but its trace is the pair tests: it can be stepped.
+    StepperSession s;
+    f.sim.algorithm = "brute";
+    s.capture(f.sim);
+    ASSERT_TRUE(s.has_capture()) << s.message();
+    EXPECT_EQ(s.stepper().size(), 1u + 9u * 8u / 2u);  // the phase, then every pair once
+    EXPECT_TRUE(s.stepper().trace().arrays().empty());
+  }
+  for (const char* algorithm : {"no-such-algorithm"}) {
     StepperSession s;
     f.sim.algorithm = algorithm;
     EXPECT_NO_THROW(s.capture(f.sim));

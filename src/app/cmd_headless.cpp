@@ -202,6 +202,7 @@ int run_headless_loop(const HeadlessOptions& o) {
     if (o.view.screenshot) outputs.push_back({"--screenshot", *o.view.screenshot});
     check_outputs_distinct({o.replay ? NamedPath{"recording", *o.replay} : NamedPath{"--scene", o.scene}}, outputs);
   }
+  check_step_algorithm(o.view, o.algorithm);  // before any frame runs
   std::string note;
   std::vector<std::string> names = algorithms_of(o.algorithm, 0, o.brute_limit, note);
   FrameLoopOptions lo;

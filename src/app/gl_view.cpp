@@ -103,8 +103,10 @@ GlView::GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions
         for (const auto& o : render::overlay_infos())
           if (name == o.name) state_.overlays.*o.flag = on;
       });
-  ui::add_stepper_panels(host_, ui::StepperConfig{options.step ? std::optional<std::size_t>(*options.step) : std::nullopt,
-                                                  options.book_numbering});
+  stepper_ = ui::add_stepper_panels(
+      host_, ui::StepperConfig{options.step ? std::optional<std::size_t>(*options.step) : std::nullopt, options.book_numbering});
+  step_option_ = options.step;
+  state_.book_numbering = options.book_numbering;
   if (options.step) ui::open_stepper_panels(state_);
   std::vector<std::string> panel_names;
   for (const auto& p : host_.panels()) panel_names.push_back(lower(p->title()));
@@ -117,8 +119,10 @@ GlView::GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions
         for (const auto& p : host_.panels())
           if (name == lower(p->title())) state_.panel_open[p->title()] = on;
       });
-  state_.selected = options.select;
-  trail_element_ = options.select;
+  // --select takes the number shown: from 1 in book numbering (0 then selects nothing; check_selection refuses it).
+  select_option_ = options.select;
+  state_.selected = options.select < 0 ? -1 : options.book_numbering ? options.select - 1 : options.select;
+  trail_element_ = state_.selected;
   fixed_camera_ = options.camera;
 }
 
@@ -139,19 +143,41 @@ void GlView::fit_camera(const FrameLoop& loop) {
     box.min = Eigen::Vector2d((e.x - e.r).minCoeff(), (e.y - e.r).minCoeff()).array() - 0.5 * d;
     box.max = Eigen::Vector2d((e.x + e.r).maxCoeff(), (e.y + e.r).maxCoeff()).array() + 0.5 * d;
   }
-  bool left = false, right = false;
-  for (const auto& p : host_.panels()) {
-    if (!ui::UiHost::is_open(*p, state_)) continue;
-    left = left || p->place() == ui::PanelPlace::Left;
-    right = right || p->place() == ui::PanelPlace::Right;
+  fit_box_ = box;
+  home_is_fixed_ = false;
+  fitted_insets_ = host_.insets(state_);
+  camera_.fit(box, 0.06, fitted_insets_);
+}
+
+void GlView::refit() {
+  fitted_insets_ = host_.insets(state_);
+  if (home_is_fixed_ && fixed_camera_) {
+    camera_.look_at({(*fixed_camera_)[0], (*fixed_camera_)[1]}, (*fixed_camera_)[2], fitted_insets_);
+  } else if (fit_box_) {
+    camera_.fit(*fit_box_, 0.06, fitted_insets_);
   }
-  camera_.fit(box, 0.06, left ? host_.left_width() : 0.0, right ? host_.right_width() : 0.0);
 }
 
 void GlView::check_selection(const FrameLoop& loop) const {
-  if (state_.selected >= loop.elements().size())
-    throw Error("--select: element " + std::to_string(state_.selected) + " does not exist (the scene has " +
-                std::to_string(loop.elements().size()) + " elements, 0-based)");
+  if (select_option_ < 0) return;
+  const std::int64_t n = loop.elements().size();
+  const bool book = state_.book_numbering;
+  if (!(book ? (select_option_ < 1 || select_option_ > n) : select_option_ >= n)) return;
+  const std::string numbered = n == 0                ? ""
+                               : book                ? ", numbered 1.." + std::to_string(n) + " in book numbering"
+                                                     : ", numbered 0.." + std::to_string(n - 1) + "; --book-numbering counts from 1";
+  throw Error("--select: element " + std::to_string(select_option_) + " does not exist (the scene has " + std::to_string(n) +
+              " elements" + numbered + ")");
+}
+
+void GlView::check_step() const {
+  if (!step_option_) return;
+  const ui::StepperSession& s = *stepper_;
+  if (!s.has_capture()) throw Error("--step: " + (s.message().empty() ? std::string("nothing was recorded") : s.message()));
+  const std::size_t n = s.stepper().size();
+  if (static_cast<std::uint64_t>(*step_option_) > n)
+    throw Error("--step: " + std::to_string(*step_option_) + " is past the last of the " + std::to_string(n) +
+                " operations of frame " + std::to_string(s.frame()) + " (" + s.algorithm() + ")");
 }
 
 void GlView::on_scene_loaded(const FrameLoop& loop, bool fit) {
@@ -163,7 +189,11 @@ void GlView::on_scene_loaded(const FrameLoop& loop, bool fit) {
   lists_.clear();
   if (state_.selected >= loop.elements().size()) state_.selected = -1;
   if (fit) fit_camera(loop);
-  if (fit && fixed_camera_) camera_.set({(*fixed_camera_)[0], (*fixed_camera_)[1]}, (*fixed_camera_)[2]);
+  if (fit && fixed_camera_) {
+    // --camera X,Y,PPM: (X, Y) in the middle of the part of the view the panels leave free.
+    home_is_fixed_ = true;
+    refit();
+  }
 }
 
 void GlView::after_step(const FrameLoop& loop) {
@@ -277,9 +307,9 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   else if (state_.selected >= 0) scene.focus_row = loop.grid().cell(e.y[state_.selected], 1);
   scene.trails = trails_;
   scene.flashes = flash_list_;
-  for (const auto& p : host_.panels())
-    if (p->place() == ui::PanelPlace::Left && ui::UiHost::is_open(*p, state_)) scene.left_inset_px = host_.left_width();
-  scene.top_inset_px = ImGui::GetFrameHeight();
+  scene.insets = host_.insets(state_);  // last frame's panels: labels keep to the part of the view they leave free
+  scene.covered = host_.covered();
+  scene.book_numbering = state_.book_numbering;
   if (loop.dragging() && state_.selected >= 0 && state_.mouse_world)
     scene.drag = std::array<render::Vec2, 2>{
         render::Vec2(static_cast<float>(e.x[state_.selected]), static_cast<float>(e.y[state_.selected])),
@@ -326,12 +356,12 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   sim.check_box2d = report.box2d_checks;
   sim.check_reference = report.reference;
   sim.violation_count = static_cast<std::size_t>(report.violation_count());
+  const auto num = [&](std::int64_t v) { return std::to_string(ui::shown(v, state_.book_numbering)); };
   for (std::size_t i = 0; i < report.violations.size() && i < 6; ++i) {
     const Violation& v = report.violations[i];
-    sim.violation_lines.push_back(std::string(invariant_name(v.invariant)) + ": (" + std::to_string(v.pair.i) + ", " +
-                                  std::to_string(v.pair.j) + ") " + v.what + ", cells (" + std::to_string(v.cell_i.ix) +
-                                  "," + std::to_string(v.cell_i.iy) + ") (" + std::to_string(v.cell_j.ix) + "," +
-                                  std::to_string(v.cell_j.iy) + ")");
+    sim.violation_lines.push_back(std::string(invariant_name(v.invariant)) + ": (" + num(v.pair.i) + ", " + num(v.pair.j) +
+                                  ") " + v.what + ", cells (" + num(v.cell_i.ix) + "," + num(v.cell_i.iy) + ") (" +
+                                  num(v.cell_j.ix) + "," + num(v.cell_j.iy) + ")");
   }
   sim.hide_timings = hide_timings_;
   sim.timings.physics_ms = report.timings.physics_ms;
@@ -363,7 +393,13 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   // The loop's whole-frame time when it measures one (the window), else this view's share.
   frame_history_.push_back(static_cast<float>(session.frame_ms > 0 ? session.frame_ms : ms_since(frame_start)));
   if (frame_history_.size() > kFrameHistory) frame_history_.erase(frame_history_.begin());
-  if (requests.camera_home) fit_camera(loop);
+  if (requests.camera_home) {
+    fit_camera(loop);
+  } else if (camera_.at_home() && !(host_.insets(state_) == fitted_insets_)) {
+    // Panels opened, closed or resized while the camera is where the last fit put it: fit again
+    // into the space they leave.
+    refit();
+  }
   return requests;
 }
 

@@ -16,6 +16,7 @@
 #include "render/imgui_layer.hpp"
 #include "render/renderer.hpp"
 #include "ui/host.hpp"
+#include "ui/stepper_session.hpp"
 
 struct GLFWwindow;
 
@@ -39,6 +40,11 @@ std::string default_scene_path();
 
 class GlView {
  public:
+  // ImGui sizes auto-resizing windows over its first frames, the host then fits its columns, and
+  // the camera refits to the space the panels leave: a scripted screenshot (window or headless) is
+  // taken after this many frames drawn on the final state, so both show the same settled layout.
+  static constexpr int kSettleFrames = 5;
+
   // Loads the shaders (Error when missing) and sets overlays, panels and selection from `options`
   // (Error for an unknown name). `context` must be current; `window` is null headless.
   GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions& options);
@@ -46,8 +52,12 @@ class GlView {
   GlView(const GlView&) = delete;
   GlView& operator=(const GlView&) = delete;
 
-  // Error("--select: ...") when the element chosen on the command line is not in `loop`'s scene.
+  // Error("--select: ...") when the element chosen on the command line (in the shown numbering) is
+  // not in `loop`'s scene.
   void check_selection(const FrameLoop& loop) const;
+  // Error("--step: ...") when --step asked for more operations than the shown frame's detection
+  // has, or its algorithm records none (call after frame(), before the screenshot).
+  void check_step() const;
   // A scene was (re)loaded: forget trails, flashes and lists; with `fit`, point the camera at it.
   void on_scene_loaded(const FrameLoop& loop, bool fit = true);
   // Bookkeeping after each FrameLoop::step(): trails of the selection, cell-change flashes.
@@ -72,6 +82,7 @@ class GlView {
   void build_shapes(const FrameLoop& loop);
   void build_checks(const FrameLoop& loop);
   void fit_camera(const FrameLoop& loop);
+  void refit();
 
   render::GlContext& context_;
   std::unique_ptr<render::Renderer> renderer_;
@@ -81,6 +92,14 @@ class GlView {
   render::Camera camera_;
   bool hide_timings_ = false;
   std::optional<std::array<double, 3>> fixed_camera_;  // --camera: replaces the fit on load
+  std::int64_t select_option_ = -1;                    // --select K as typed (book numbering: from 1)
+  std::optional<std::int64_t> step_option_;            // --step K
+  std::shared_ptr<ui::StepperSession> stepper_;
+  // The last fit (load or Home): while the user leaves the camera there, it refits to the same box
+  // when the panels change the free space.
+  std::optional<render::WorldRect> fit_box_;
+  bool home_is_fixed_ = false;  // Home is --camera's view (until the user asks for Home)
+  render::ScreenInsets fitted_insets_;
   std::string gl_description_;
   Cost cost_;
 

@@ -15,9 +15,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
-// ImGui sizes auto-resizing windows over its first frames; the third frame is the settled one.
-constexpr int kSettleFrames = 3;
-
 class OsmesaView final : public HeadlessView {
  public:
   OsmesaView(const ViewOptions& options, const FrameLoop& loop)
@@ -38,8 +35,10 @@ class OsmesaView final : public HeadlessView {
     const double first_ms = ms_since(t0);
     const double trace_ms = view_.last_cost().trace_ms;  // the traced detection runs in the first frame only
     t0 = Clock::now();
-    for (int i = 1; i < kSettleFrames; ++i) view_.frame(loop, session_, false, 1.0f / 60.0f);
-    const double render_ms = ms_since(t0) / (kSettleFrames - 1);
+    // The settled layout, as the window's scripted screenshot shows it.
+    for (int i = 1; i < GlView::kSettleFrames; ++i) view_.frame(loop, session_, false, 1.0f / 60.0f);
+    const double render_ms = ms_since(t0) / (GlView::kSettleFrames - 1);
+    view_.check_step();
     const GlView::Cost cost = view_.last_cost();
     auto t1 = Clock::now();
     const Image image = view_.screenshot();
@@ -69,6 +68,7 @@ std::unique_ptr<HeadlessView> make_headless_view(const ViewOptions& options, con
   if (!options.screenshot) throw Error("internal: make_headless_view without --screenshot");
   // Fail before simulating any frame, not after.
   check_output_path(*options.screenshot);
+  check_step_algorithm(options, loop.algorithm());
   return std::make_unique<OsmesaView>(options, loop);
 }
 

@@ -71,14 +71,18 @@ usage:
                         bodies elements grid lists mask pairs checks broadphase ids trails flash
       --panels SPEC     the same for panels: controls scenes algorithm overlays stats selection
                         metrics stepper pseudocode arrays
-      --select K        select element K (its cell, lists and pairs highlighted, its trail drawn)
-      --camera X,Y,PPM  look at (X, Y) at PPM pixels per metre instead of fitting the scene
+      --select K        select element K as shown (its cell, lists and pairs highlighted, its trail
+                        drawn): from 0, or from 1 with --book-numbering
+      --camera X,Y,PPM  put (X, Y) in the middle of the view the panels leave free, at PPM pixels
+                        per metre, instead of fitting the scene
       --no-timings      show "-" for wall-clock numbers (reproducible screenshots)
       --step K          open the Stepper, Arrays and Pseudocode panels on the state after K
-                        operations of the last frame's detection (headless: needs --screenshot)
-      --book-numbering  number elements and cells from 1 in the stepper panels, as the book does
-      --shader-dir DIR  GLSL sources (default: $NBSCOPE_SHADER_DIR if set, else the source tree's
-                        shaders/)
+                        operations of the last frame's detection of one algorithm that records
+                        them (not box2d); K past its last operation is an error (headless: needs
+                        --screenshot)
+      --book-numbering  number elements and cells from 1 everywhere, as the book does
+      --shader-dir DIR  GLSL sources (default: $NBSCOPE_SHADER_DIR if set, else
+                        $NBSCOPE_DATA_DIR/shaders, else the source tree's shaders/)
   nbscope algorithms      list the detectors
   nbscope --help | --version
 

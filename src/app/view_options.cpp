@@ -1,10 +1,63 @@
 #include "app/view_options.hpp"
 
+#include <charconv>
+#include <cmath>
 #include <string>
 
+#include "core/detector.hpp"
 #include "core/error.hpp"
+#include "core/trace.hpp"
 
 namespace nbscope {
+
+namespace {
+
+// True when `name`'s traced detection records operations: two touching circles are enough to see.
+bool records_operations(const std::string& name) {
+  Elements e;
+  e.push_back(0, 0, 0, 0.5);
+  e.push_back(0.6, 0, 0, 0.5);
+  PairList pairs;
+  TraceLog log;
+  make_detector(name)->detect_traced(e, DetectOptions{}, pairs, log);
+  return !log.events().empty();
+}
+
+// "X,Y,PPM": three finite numbers, the scale positive. (The generic point parser would name the
+// wrong format in its error.)
+std::array<double, 3> parse_camera(const std::string& text) {
+  const auto bad = [&] {
+    return Error("--camera: '" + text + "' is not X,Y,PPM (the centre in metres and pixels per metre: finite numbers, PPM > 0)");
+  };
+  std::array<double, 3> out{};
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::size_t comma = text.find(',', start);
+    if ((comma == std::string::npos) != (i == 2)) throw bad();
+    const std::size_t end = comma == std::string::npos ? text.size() : comma;
+    const char* first = text.data() + start;
+    const char* last = text.data() + end;
+    const auto [p, ec] = std::from_chars(first, last, out[i]);
+    if (first == last || ec != std::errc() || p != last || !std::isfinite(out[i])) throw bad();
+    start = end + 1;
+  }
+  if (!(out[2] > 0)) throw bad();
+  return out;
+}
+
+}  // namespace
+
+void check_step_algorithm(const ViewOptions& options, const std::string& algorithm) {
+  if (!options.step) return;
+  if (algorithm == "all" || algorithm.find(',') != std::string::npos)
+    throw Error("--step: steps through one algorithm's detection, but --algorithm " + algorithm + " names several: give one");
+  if (records_operations(algorithm)) return;
+  std::string stepped;
+  for (const DetectorInfo& d : detector_infos())
+    if (d.dim2 && d.name != algorithm && records_operations(d.name)) stepped += (stepped.empty() ? "" : ", ") + d.name;
+  throw Error("--step: " + algorithm + " records no operations to step through (no book arrays, no trace); step one of " +
+              stepped);
+}
 
 void parse_view_options(Args& args, bool headless, ViewOptions& out) {
   if (auto v = args.value("--screenshot")) {
@@ -40,10 +93,7 @@ void parse_view_options(Args& args, bool headless, ViewOptions& out) {
   }
   if (auto v = args.value("--camera")) {
     drawing("--camera", true);
-    double p[3] = {0, 0, 0};
-    if (parse_point("--camera", *v, p) != 3 || !(p[2] > 0))
-      throw Error("--camera: '" + *v + "' is not X,Y,PIXELS_PER_METRE with a positive scale");
-    out.camera = std::array<double, 3>{p[0], p[1], p[2]};
+    out.camera = parse_camera(*v);
   }
   const bool no_timings = args.flag("--no-timings");
   drawing("--no-timings", no_timings);

@@ -29,6 +29,10 @@ struct ViewOptions {
 // Takes the rendering flags out of `args`; `headless` also accepts --gl. Error names a bad value.
 void parse_view_options(Args& args, bool headless, ViewOptions& out);
 
+// Error("--step: ...") when --step is given and `algorithm` (an --algorithm value) is not one
+// detector that records its operations (several names, `all`, or one like box2d that records none).
+void check_step_algorithm(const ViewOptions& options, const std::string& algorithm);
+
 // True when any flag asks for rendering (a screenshot); the others only matter with one.
 [[nodiscard]] inline bool wants_rendering(const ViewOptions& v) { return v.screenshot.has_value(); }
 

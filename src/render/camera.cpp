@@ -18,15 +18,25 @@ void Camera::set_viewport(int width, int height) {
   height_ = std::max(height, 1);
 }
 
-void Camera::fit(const WorldRect& rect, double margin, double left_px, double right_px) {
+void Camera::fit(const WorldRect& rect, double margin, const ScreenInsets& insets) {
   const Eigen::Vector2d size = (rect.max - rect.min).cwiseMax(1e-3);
   const double usable = std::max(1.0 - 2.0 * margin, 0.1);
-  // Columns wider than half the view are ignored rather than leaving no room at all.
-  if (left_px + right_px > 0.5 * width_) left_px = right_px = 0;
-  const double area_w = width_ - left_px - right_px;
-  pixels_per_metre_ = clamp_scale(std::min(area_w * usable / size.x(), height_ * usable / size.y()));
+  // Panels leaving less than a quarter of the view are ignored rather than leaving no room at all.
+  double left = insets.left, right = insets.right, top = insets.top, bottom = insets.bottom;
+  if (left + right > 0.75 * width_) left = right = 0;
+  if (top + bottom > 0.75 * height_) top = bottom = 0;
+  const double area_w = width_ - left - right, area_h = height_ - top - bottom;
+  pixels_per_metre_ = clamp_scale(std::min(area_w * usable / size.x(), area_h * usable / size.y()));
   // Centre the rectangle on the middle of the free area: shift the camera by half the imbalance.
-  centre_ = 0.5 * (rect.min + rect.max) - Eigen::Vector2d(0.5 * (left_px - right_px) / pixels_per_metre_, 0);
+  centre_ = 0.5 * (rect.min + rect.max) - Eigen::Vector2d(0.5 * (left - right), 0.5 * (bottom - top)) / pixels_per_metre_;
+  home_centre_ = centre_;
+  home_pixels_per_metre_ = pixels_per_metre_;
+}
+
+void Camera::look_at(const Eigen::Vector2d& at, double pixels_per_metre, const ScreenInsets& insets) {
+  pixels_per_metre_ = clamp_scale(pixels_per_metre);
+  if (at.allFinite())
+    centre_ = at - Eigen::Vector2d(0.5 * (insets.left - insets.right), 0.5 * (insets.bottom - insets.top)) / pixels_per_metre_;
   home_centre_ = centre_;
   home_pixels_per_metre_ = pixels_per_metre_;
 }

@@ -10,15 +10,26 @@ struct WorldRect {
   Eigen::Vector2d max{0, 0};
 };
 
+// Pixels at each edge of the viewport that panels cover (the scene is fitted into the rest).
+struct ScreenInsets {
+  double left = 0, right = 0, top = 0, bottom = 0;
+  friend bool operator==(const ScreenInsets&, const ScreenInsets&) = default;
+};
+
 class Camera {
  public:
   // Viewport size in pixels; keeps the centre and the scale.
   void set_viewport(int width, int height);
-  // Shows `rect` whole, centred in the viewport minus `left_px`/`right_px` columns (where panels
-  // sit), with `margin` (a share of that area) left free around it; also remembers it as Home.
-  void fit(const WorldRect& rect, double margin = 0.06, double left_px = 0, double right_px = 0);
+  // Shows `rect` whole, centred in the viewport minus `insets` (where panels sit), with `margin`
+  // (a share of that area) left free around it; also remembers it as Home.
+  void fit(const WorldRect& rect, double margin = 0.06, const ScreenInsets& insets = {});
+  // Puts world point `at` in the middle of the viewport minus `insets` at `pixels_per_metre`; also
+  // remembers it as Home.
+  void look_at(const Eigen::Vector2d& at, double pixels_per_metre, const ScreenInsets& insets = {});
   // Back to the last fitted view.
   void home();
+  // True while the view is the last fitted one (the user has not panned or zoomed since).
+  [[nodiscard]] bool at_home() const { return centre_ == home_centre_ && pixels_per_metre_ == home_pixels_per_metre_; }
   // Zooms by `factor` (> 1 zooms in) keeping the world point under `screen` where it is.
   void zoom_at(const Eigen::Vector2d& screen, double factor);
   // Moves the view by a mouse drag of `delta` pixels (the world follows the mouse).

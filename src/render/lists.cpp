@@ -56,6 +56,7 @@ std::vector<TracedList> sort_runs(const TraceLog& log, const State& state) {
     run.heads_name = "order";
     run.heads_array = order;
     run.slot = static_cast<std::int64_t>(p);
+    run.heads_shape = {static_cast<std::int64_t>(o.size())};
     const std::int32_t first = o[p];
     run.cell[0] = key(first, ix);
     run.cell[1] = key(first, iy);
@@ -87,6 +88,7 @@ std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_co
     l.phase_index = o.phase_index;
     std::copy(std::begin(o.cell), std::end(o.cell), std::begin(l.cell));
     const auto& shape = log.arrays()[static_cast<std::size_t>(heads)].shape;
+    l.heads_shape = shape;
     l.secondary = shape.size() == 2 && shape[0] == 2 && slot >= shape[1];
     const int next = next_of[static_cast<std::size_t>(heads)];
     if (next >= 0) l.next_name = log.arrays()[static_cast<std::size_t>(next)].name;

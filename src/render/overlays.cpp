@@ -1,5 +1,5 @@
-// Index: overlay table | picking helpers | bodies and elements | grid | lists | mask | pairs and
-// checks | selection, trails, flashes | draw_scene.
+// Index: overlay table | picking helpers | bodies and elements | labels (one space: no label over
+// another) | grid | lists | mask | pairs and checks | selection, trails, flashes | draw_scene.
 #include "render/overlays.hpp"
 
 #include <algorithm>
@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iterator>
+#include <unordered_map>
 
 namespace nbscope::render {
 
@@ -44,7 +45,7 @@ std::span<const OverlayInfo> overlay_infos() {
       {"pairs", 'C', &OverlayFlags::pairs, "detected contact pairs"},
       {"checks", 'K', &OverlayFlags::checks, "pairs confirmed by Box2D, violations in red"},
       {"broadphase", 'F', &OverlayFlags::broadphase, "Box2D-only broadphase pairs (fat AABBs)"},
-      {"ids", 'I', &OverlayFlags::ids, "element ids"},
+      {"ids", 'I', &OverlayFlags::ids, "element ids (inside or beside the circle, never over another label)"},
       {"trails", 'T', &OverlayFlags::trails, "trails of the selected element"},
       {"flash", 'H', &OverlayFlags::flash, "flash elements that changed cell"},
   };
@@ -123,20 +124,96 @@ void draw_elements(const Elements& e, const WorldRect& view, double ppm, DrawSin
   }
 }
 
-void draw_ids(const Elements& e, const WorldRect& view, double ppm, DrawSink& sink) {
-  char buf[16];
-  for (ElementId k = 0; k < static_cast<ElementId>(e.size()); ++k) {
-    if (e.r[k] * ppm < kMinIdRadiusPx || !in_view(view, e.x[k], e.y[k], 0)) continue;
-    const int digits = std::snprintf(buf, sizeof buf, "%d", k);
-    // Only ids that fit inside their circle (ImGui's default font: 7 px a digit).
-    if (2.0 * e.r[k] * ppm < 7.0 * digits + 2.0) continue;
-    sink.text(centre_of(e, k), buf, palette::kText);
+// ---- labels -----------------------------------------------------------------------------------
+
+// ImGui's default font, as the renderer draws labels: 7 px a character, 13 px a line.
+constexpr double kCharPx = 7.0;
+constexpr double kLinePx = 13.0;
+double label_width(std::size_t chars) { return kCharPx * static_cast<double>(chars) + 2.0; }
+
+// Screen rectangles of the labels placed so far, bucketed so that a new label is checked only
+// against its neighbours. The grid's title and axis numbers are placed first, then the ids, so an
+// id never covers them and overlapping bounding circles (a wall of boxes) never pile ids up.
+class LabelSpace {
+ public:
+  LabelSpace(const WorldRect& view, double ppm) : view_(view), ppm_(ppm) {}
+  // True (and the rectangle is taken) when a w x h px label centred on world point `at` overlaps none.
+  bool take(Vec2 at, double w, double h) {
+    const double cx = (at.x() - view_.min.x()) * ppm_, cy = (view_.max.y() - at.y()) * ppm_;
+    const Box b{cx - 0.5 * w, cy - 0.5 * h, cx + 0.5 * w, cy + 0.5 * h};
+    const auto bx0 = bucket(b.x0), bx1 = bucket(b.x1), by0 = bucket(b.y0), by1 = bucket(b.y1);
+    for (auto by = by0; by <= by1; ++by)
+      for (auto bx = bx0; bx <= bx1; ++bx) {
+        const auto it = buckets_.find(key(bx, by));
+        if (it == buckets_.end()) continue;
+        for (const std::size_t i : it->second)
+          if (boxes_[i].x0 < b.x1 && b.x0 < boxes_[i].x1 && boxes_[i].y0 < b.y1 && b.y0 < boxes_[i].y1) return false;
+      }
+    insert(b);
+    return true;
   }
+  // Takes a rectangle in pixels (a panel's window) so that no label is placed under it.
+  void reserve(const PixelRect& r) { insert({r.x0, r.y0, r.x1, r.y1}); }
+  // take() for a text, drawn when it got its place.
+  bool text(Vec2 at, const char* text, Rgba colour, DrawSink& sink) {
+    if (!take(at, label_width(std::strlen(text)), kLinePx)) return false;
+    sink.text(at, text, colour);
+    return true;
+  }
+
+ private:
+  struct Box {
+    double x0, y0, x1, y1;
+  };
+  void insert(const Box& b) {
+    const auto bx0 = bucket(b.x0), bx1 = bucket(b.x1), by0 = bucket(b.y0), by1 = bucket(b.y1);
+    for (auto by = by0; by <= by1; ++by)
+      for (auto bx = bx0; bx <= bx1; ++bx) buckets_[key(bx, by)].push_back(boxes_.size());
+    boxes_.push_back(b);
+  }
+  static constexpr double kBucketPx = 32.0;
+  static std::int64_t bucket(double px) { return static_cast<std::int64_t>(std::floor(px / kBucketPx)); }
+  static std::uint64_t key(std::int64_t bx, std::int64_t by) {
+    return (static_cast<std::uint64_t>(bx) << 32) ^ static_cast<std::uint32_t>(by);
+  }
+  WorldRect view_;
+  double ppm_;
+  std::vector<Box> boxes_;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> buckets_;
+};
+
+// True when a w x h px label centred on `at` lies inside `free` (the view less the panels).
+bool label_inside(const WorldRect& free, Vec2 at, double w, double h, double ppm) {
+  const double hw = 0.5 * w / ppm, hh = 0.5 * h / ppm;
+  return at.x() - hw >= free.min.x() && at.x() + hw <= free.max.x() && at.y() - hh >= free.min.y() &&
+         at.y() + hh <= free.max.y();
+}
+
+// Element ids: inside the circle when they fit, else just above it; only for circles at least
+// kMinIdRadiusPx on screen, only where the view shows them (no panel over them: those are reserved
+// in `space`), never over another label.
+void draw_ids(const Elements& e, const WorldRect& view, double ppm, ElementId selected, bool book, LabelSpace& space,
+              DrawSink& sink) {
+  char buf[16];
+  // The selected element's id first: it must never be the one left out.
+  auto place = [&](ElementId k) {
+    if (e.r[k] * ppm < kMinIdRadiusPx || !in_view(view, e.x[k], e.y[k], e.r[k])) return;
+    const int digits = std::snprintf(buf, sizeof buf, "%d", book ? k + 1 : k);
+    const double w = label_width(static_cast<std::size_t>(digits));
+    const double r_px = e.r[k] * ppm;
+    const Vec2 at = 2.0 * r_px >= w ? centre_of(e, k) : v2(e.x[k], e.y[k] + (r_px + 0.5 * kLinePx + 1.0) / ppm);
+    if (!label_inside(view, at, w, kLinePx, ppm) || !space.take(at, w, kLinePx)) return;
+    sink.text(at, buf, palette::kText);
+  };
+  if (selected >= 0 && selected < static_cast<ElementId>(e.size())) place(selected);
+  for (ElementId k = 0; k < static_cast<ElementId>(e.size()); ++k)
+    if (k != selected) place(k);
 }
 
 // ---- grid -------------------------------------------------------------------------------------
 
-void draw_grid(const OverlayScene& s, const WorldRect& view, const WorldRect& free, double ppm, DrawSink& sink) {
+void draw_grid(const OverlayScene& s, const WorldRect& view, const WorldRect& free, double ppm, LabelSpace& labels,
+               DrawSink& sink) {
   const Grid& g = *s.grid;
   const double d = g.cell_size;
   const double x0 = g.origin[0], y0 = g.origin[1];
@@ -181,23 +258,39 @@ void draw_grid(const OverlayScene& s, const WorldRect& view, const WorldRect& fr
   sink.line(Layer::Cells, c10, c11, palette::kGridBorder);
   sink.line(Layer::Cells, c11, c01, palette::kGridBorder);
   sink.line(Layer::Cells, c01, c00, palette::kGridBorder);
-  // Dimensions above the top-left corner, and the row/column numbers when cells are large enough.
+  if (!(free.max.x() > free.min.x() && free.max.y() > free.min.y())) return;
+  // A label wholly inside the free view and clear of those placed before it.
+  const auto put = [&](Vec2 at, const char* text) {
+    if (label_inside(free, at, label_width(std::strlen(text)), kLinePx, ppm)) labels.text(at, text, palette::kTextDim, sink);
+  };
+  // The dimensions above the top-left corner, kept inside the free part of the view (placed first:
+  // nothing covers them).
   char buf[96];
   std::snprintf(buf, sizeof buf, "%lld x %lld cells, d = %.3g", static_cast<long long>(g.n[0]),
                 static_cast<long long>(g.n[1]), d);
-  const double label_y = std::min(y1 + 12.0 / ppm, free.max.y() - 10.0 / ppm);
-  sink.text(v2(std::max(x0, free.min.x() + 4.0 / ppm) + 0.5 * std::strlen(buf) * 7.0 / ppm, label_y), buf,
-            palette::kTextDim);
-  if (d * ppm >= 18.0) {
-    for (std::int64_t ix = lo_x; ix < hi_x; ++ix) {
-      std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(ix));
-      sink.text(v2(x0 + d * (double(ix) + 0.5), y0 - 9.0 / ppm), buf, palette::kTextDim);
-    }
-    for (std::int64_t iy = lo_y; iy < hi_y; ++iy) {
-      std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(iy));
-      sink.text(v2(std::max(x0 - 10.0 / ppm, free.min.x() + 8.0 / ppm), y0 + d * (double(iy) + 0.5)), buf,
-                palette::kTextDim);
-    }
+  const double title_w = label_width(std::strlen(buf));
+  const double title_x = std::clamp(x0, free.min.x() + 4.0 / ppm, std::max(free.min.x(), free.max.x() - title_w / ppm));
+  const double title_y = std::clamp(y1 + 12.0 / ppm, free.min.y() + 10.0 / ppm, free.max.y() - 10.0 / ppm);
+  put(v2(title_x + 0.5 * title_w / ppm, title_y), buf);
+  // Column and row numbers when cells are large enough: below and left of the grid, or along the
+  // bottom and left edges of the free view when those edges are out of it (zoomed in).
+  if (d * ppm < 18.0) return;
+  const bool book = s.book_numbering;
+  const double col_y = std::clamp(y0 - 9.0 / ppm, free.min.y() + 8.0 / ppm, free.max.y() - 8.0 / ppm);
+  for (std::int64_t ix = lo_x; ix < hi_x; ++ix) {
+    const double cx = x0 + d * (double(ix) + 0.5);
+    if (cx < free.min.x() || cx > free.max.x()) continue;
+    std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(book ? ix + 1 : ix));
+    put(v2(cx, col_y), buf);
+  }
+  for (std::int64_t iy = lo_y; iy < hi_y; ++iy) {
+    const double cy = y0 + d * (double(iy) + 0.5);
+    // Rows reading as one number with the column numbers beside them are left out.
+    if (cy < col_y + 15.0 / ppm || cy > free.max.y()) continue;
+    std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(book ? iy + 1 : iy));
+    const double half_w = 0.5 * label_width(std::strlen(buf)) / ppm;
+    const double row_x = std::clamp(x0 - 3.0 / ppm - half_w, free.min.x() + 3.0 / ppm + half_w, free.max.x() - half_w);
+    put(v2(row_x, cy), buf);
   }
 }
 
@@ -362,10 +455,14 @@ void draw_scene(const OverlayScene& s, const OverlayFlags& f, const Camera& came
   const WorldRect view = camera.view();
   const double ppm = camera.pixels_per_metre();
   WorldRect free = view;  // the part of the view no panel covers
-  free.min.x() += s.left_inset_px / ppm;
-  free.max.y() -= s.top_inset_px / ppm;
+  free.min.x() += s.insets.left / ppm;
+  free.max.x() -= s.insets.right / ppm;
+  free.max.y() -= s.insets.top / ppm;
+  free.min.y() += s.insets.bottom / ppm;
+  LabelSpace labels(view, ppm);
+  for (const PixelRect& r : s.covered) labels.reserve(r);
   const bool have_elements = s.elements != nullptr;
-  if (f.grid && s.grid != nullptr && s.grid->dim == 2) draw_grid(s, view, free, ppm, sink);
+  if (f.grid && s.grid != nullptr && s.grid->dim == 2) draw_grid(s, view, free, ppm, labels, sink);
   if (f.mask && s.grid != nullptr && s.hovered_cell) draw_mask(*s.grid, *s.hovered_cell, sink);
   if (f.bodies) draw_bodies(s, view, ppm, sink);
   if (!have_elements) return;
@@ -391,7 +488,7 @@ void draw_scene(const OverlayScene& s, const OverlayFlags& f, const Camera& came
   if (f.lists && s.lists != nullptr) draw_lists(s, view, free, ppm, sink);
   draw_selection(s, view, ppm, sink);
   if (f.checks && s.checks != nullptr) draw_violations(e, s.checks->violations, sink);
-  if (f.ids || f.lists) draw_ids(e, view, ppm, sink);
+  if (f.ids || f.lists) draw_ids(e, view, ppm, s.selected, s.book_numbering, labels, sink);
   if (s.drag) sink.line(Layer::Top, (*s.drag)[0], (*s.drag)[1], palette::kDragLine, 1.5f);
 }
 

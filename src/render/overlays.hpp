@@ -53,7 +53,7 @@ struct OverlayFlags {
   bool pairs = true;        // detected pairs
   bool checks = true;       // confirmed pairs and violations
   bool broadphase = false;  // Box2D-only broadphase pairs (fat AABBs)
-  bool ids = false;         // element ids (always with lists)
+  bool ids = false;         // element ids, inside the circle or beside it, never over another label (always with lists)
   bool trails = true;       // trails of selected elements
   bool flash = true;        // elements that changed cell this frame
 };
@@ -67,6 +67,11 @@ struct OverlayInfo {
 };
 // All overlays in panel order.
 std::span<const OverlayInfo> overlay_infos();
+
+// A rectangle of the window in pixels (origin top left, y down), e.g. a panel's window.
+struct PixelRect {
+  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
 
 // Everything one frame's overlays are drawn from; null/empty members are simply not drawn.
 struct OverlayScene {
@@ -83,8 +88,9 @@ struct OverlayScene {
   std::span<const std::vector<Vec2>> trails;
   std::span<const std::pair<ElementId, float>> flashes;  // element, strength in (0, 1]
   std::optional<std::array<Vec2, 2>> drag;               // body anchor -> mouse while dragging
-  float left_inset_px = 0;  // pixels at the left of the view covered by panels: labels and heads avoid them
-  float top_inset_px = 0;   // the same at the top (the menu bar)
+  ScreenInsets insets;         // pixels at the view's edges covered by panels: the grid's numbers and list heads keep clear
+  std::span<const PixelRect> covered;  // the panels' windows and the menu bar: no label is drawn under them
+  bool book_numbering = false;  // element ids and cell indices drawn from 1, as the book prints them
 };
 
 // Draws the scene and every overlay `flags` turns on, seen through `camera`.

@@ -51,13 +51,16 @@ GLuint compile(GLenum kind, const std::string& path) {
 
 std::string resolve_shader_dir(const std::string& override_dir) {
   std::string dir = override_dir;
-  if (dir.empty()) {
-    const char* env = std::getenv("NBSCOPE_SHADER_DIR");
-    dir = env != nullptr && *env != '\0' ? env : NBSCOPE_SHADER_DIR;
-  }
+  const auto env = [](const char* name) {
+    const char* v = std::getenv(name);
+    return v != nullptr && *v != '\0' ? std::string(v) : std::string();
+  };
+  if (dir.empty()) dir = env("NBSCOPE_SHADER_DIR");
+  if (dir.empty() && !env("NBSCOPE_DATA_DIR").empty()) dir = env("NBSCOPE_DATA_DIR") + "/shaders";  // moves scenes and shaders together
+  if (dir.empty()) dir = NBSCOPE_SHADER_DIR;
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec))
-    throw Error("shaders: " + dir + ": no such directory (use --shader-dir or NBSCOPE_SHADER_DIR)");
+    throw Error("shaders: " + dir + ": no such directory (use --shader-dir, NBSCOPE_SHADER_DIR or NBSCOPE_DATA_DIR)");
   if (!std::filesystem::is_regular_file(dir + "/circle.vert", ec))
     throw Error("shaders: " + dir + ": holds no nbscope shaders (circle.vert is missing)");
   return dir;

@@ -6,8 +6,9 @@
 
 namespace nbscope::render {
 
-// The shader directory: `override_dir` if not empty, else $NBSCOPE_SHADER_DIR, else the one baked
-// in at build time. Error("shaders: DIR: ...") when it is not a directory holding circle.vert.
+// The shader directory: `override_dir` if not empty, else $NBSCOPE_SHADER_DIR, else
+// $NBSCOPE_DATA_DIR/shaders, else the one baked in at build time. Error("shaders: DIR: ...") when it
+// is not a directory holding circle.vert.
 std::string resolve_shader_dir(const std::string& override_dir);
 
 // A linked GLSL program; owns the GL object (a GL context must be current).

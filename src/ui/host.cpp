@@ -25,25 +25,25 @@ UiHost::UiHost() {
   add_panel(make_metrics_panel());
 }
 
-void UiHost::add_panel(std::unique_ptr<Panel> panel) { panels_.push_back(std::move(panel)); }
+void UiHost::add_panel(std::unique_ptr<Panel> panel) {
+  panels_.push_back(std::move(panel));
+  slots_.emplace_back();
+}
 
 bool UiHost::is_open(const Panel& panel, const UiState& state) {
   const auto it = state.panel_open.find(panel.title());
   return it == state.panel_open.end() ? panel.open_by_default() : it->second;
 }
 
-float UiHost::left_width() const {
-  float w = 0;
-  for (const auto& p : panels_)
-    if (p->place() == PanelPlace::Left) w = std::max(w, p->width());
-  return w > 0 ? w + 2 * kGap : 0;
-}
-
-float UiHost::right_width() const {
-  float w = 0;
-  for (const auto& p : panels_)
-    if (p->place() == PanelPlace::Right) w = std::max(w, p->width());
-  return w > 0 ? w + 2 * kGap : 0;
+render::ScreenInsets UiHost::insets(const UiState& state) const {
+  if (insets_) return *insets_;
+  render::ScreenInsets in;
+  for (const auto& p : panels_) {
+    if (!is_open(*p, state)) continue;
+    if (p->place() == PanelPlace::Left) in.left = std::max<double>(in.left, p->width() + 2 * kGap);
+    if (p->place() == PanelPlace::Right) in.right = std::max<double>(in.right, p->width() + 2 * kGap);
+  }
+  return in;
 }
 
 void UiHost::draw_menu(UiContext& ctx) {
@@ -54,6 +54,7 @@ void UiHost::draw_menu(UiContext& ctx) {
       if (ImGui::MenuItem(p->title(), nullptr, &open)) ctx.state.panel_open[p->title()] = open;
     }
     ImGui::Separator();
+    ImGui::MenuItem("Book numbering (from 1)", nullptr, &ctx.state.book_numbering);
     if (ImGui::MenuItem("Home", "Home")) ctx.requests.camera_home = true;
     ImGui::EndMenu();
   }
@@ -71,32 +72,111 @@ void UiHost::draw_menu(UiContext& ctx) {
   ImGui::EndMainMenuBar();
 }
 
+// Decides which panels of one column are collapsed to their title bars: none while the column fits
+// `available` pixels, else the lowest priority first (the lower one of equals first), never one the
+// user expanded or collapsed by hand. Heights are last frame's, so a change settles in a frame.
+void UiHost::fit_column(PanelPlace place, const std::vector<std::size_t>& shown, float available) {
+  const float title = ImGui::GetFrameHeight();
+  float total = 0;
+  std::vector<std::size_t> candidates;
+  for (const std::size_t i : shown) {
+    if (panels_[i]->place() != place) continue;
+    Slot& s = slots_[i];
+    s.collapsed = s.pin == Slot::Pin::Collapsed;
+    total += (s.collapsed ? title : std::max(s.expanded_height, title)) + kGap;
+    if (s.pin == Slot::Pin::None) candidates.push_back(i);
+  }
+  std::stable_sort(candidates.begin(), candidates.end(), [&](std::size_t a, std::size_t b) {
+    return panels_[a]->priority() != panels_[b]->priority() ? panels_[a]->priority() < panels_[b]->priority() : a > b;
+  });
+  for (const std::size_t i : candidates) {
+    if (total <= available) break;
+    total -= std::max(slots_[i].expanded_height, title) - title;
+    slots_[i].collapsed = true;
+  }
+}
+
 void UiHost::frame(UiContext& ctx, bool accept_input) {
   draw_menu(ctx);
-  const float top = ImGui::GetFrameHeight() + kGap;
-  const float screen_w = ImGui::GetIO().DisplaySize.x;
-  float y_left = top, y_right = top;
-  const float right_w = right_width() - 2 * kGap;
-  for (const auto& p : panels_) {
-    if (!is_open(*p, ctx.state) || !p->visible(ctx)) continue;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float menu = ImGui::GetFrameHeight();
+  const float top = menu + kGap;
+  // The columns are as wide as their widest open panel.
+  std::vector<std::size_t> shown;
+  float left_w = 0, right_w = 0;
+  for (std::size_t i = 0; i < panels_.size(); ++i) {
+    const Panel& p = *panels_[i];
+    if (!is_open(p, ctx.state) || !p.visible(ctx)) continue;
+    shown.push_back(i);
+    if (p.place() == PanelPlace::Left) left_w = std::max(left_w, p.width());
+    if (p.place() == PanelPlace::Right) right_w = std::max(right_w, p.width());
+  }
+  fit_column(PanelPlace::Left, shown, display.y - top);
+  fit_column(PanelPlace::Right, shown, display.y - top);
+  // The bottom dock spans the space between the columns, under the scene, and leaves the scene at
+  // least 40% of the height below the menu.
+  const float dock_x0 = left_w > 0 ? left_w + 2 * kGap : kGap;
+  const float dock_x1 = display.x - (right_w > 0 ? right_w + 2 * kGap : kGap);
+  const float dock_max_h = 0.6f * (display.y - top);
+  float y_left = top, y_right = top, dock_y = display.y - kGap, dock_h = 0;
+  covered_.assign(1, render::PixelRect{0, 0, display.x, menu});
+  for (const std::size_t i : shown) {
+    Panel& p = *panels_[i];
+    Slot& slot = slots_[i];
     ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings;
     float* column_y = nullptr;
-    if (p->place() == PanelPlace::Floating) {
-      ImGui::SetNextWindowPos(ImVec2(screen_w * 0.5f - p->width() * 0.5f, top + 40.0f), ImGuiCond_FirstUseEver);
-    } else {
-      column_y = p->place() == PanelPlace::Left ? &y_left : &y_right;
-      const float x = p->place() == PanelPlace::Left ? kGap : screen_w - kGap - right_w;
-      ImGui::SetNextWindowPos(ImVec2(x, *column_y), ImGuiCond_Always);
-      flags |= ImGuiWindowFlags_NoMove;
+    switch (p.place()) {
+      case PanelPlace::Floating:
+        ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f - p.width() * 0.5f, top + 40.0f), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSizeConstraints(ImVec2(p.width(), 0), ImVec2(p.width(), FLT_MAX));
+        break;
+      case PanelPlace::Bottom: {
+        const float w = std::max(dock_x1 - dock_x0, 200.0f);
+        ImGui::SetNextWindowPos(ImVec2(dock_x0, dock_y), ImGuiCond_Always, ImVec2(0, 1));
+        ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0), ImVec2(w, std::max(dock_max_h - dock_h, 60.0f)));
+        flags |= ImGuiWindowFlags_NoMove;
+        break;
+      }
+      case PanelPlace::Left:
+      case PanelPlace::Right: {
+        const bool left = p.place() == PanelPlace::Left;
+        column_y = left ? &y_left : &y_right;
+        const float w = left ? left_w : right_w;
+        ImGui::SetNextWindowPos(ImVec2(left ? kGap : display.x - kGap - w, *column_y), ImGuiCond_Always);
+        ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0), ImVec2(w, FLT_MAX));
+        ImGui::SetNextWindowCollapsed(slot.collapsed, ImGuiCond_Always);
+        flags |= ImGuiWindowFlags_NoMove;
+        break;
+      }
     }
-    const float w = p->place() == PanelPlace::Right ? right_w : p->width();
-    ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0), ImVec2(w, FLT_MAX));
     bool open = true;
-    if (ImGui::Begin(p->title(), &open, flags)) p->draw(ctx);
-    if (column_y != nullptr) *column_y += ImGui::GetWindowSize().y + kGap;
+    if (ImGui::Begin(p.title(), &open, flags)) p.draw(ctx);
+    const ImVec2 size = ImGui::GetWindowSize();
+    const ImVec2 pos = ImGui::GetWindowPos();
+    covered_.push_back(render::PixelRect{pos.x, pos.y, pos.x + size.x, pos.y + size.y});
+    if (column_y != nullptr) {
+      // A title bar clicked since the last frame: the user's choice stays.
+      const bool collapsed = ImGui::IsWindowCollapsed();
+      if (collapsed != slot.collapsed) slot.pin = collapsed ? Slot::Pin::Collapsed : Slot::Pin::Expanded;
+      if (!collapsed) slot.expanded_height = size.y;
+      *column_y += size.y + kGap;
+    } else if (p.place() == PanelPlace::Bottom) {
+      dock_y -= size.y + kGap;
+      dock_h += size.y + kGap;
+    }
     ImGui::End();
-    if (!open) ctx.state.panel_open[p->title()] = false;
+    if (!open) {
+      ctx.state.panel_open[p.title()] = false;
+      slot.pin = Slot::Pin::None;
+    }
   }
+  double bottom = dock_h > 0 ? dock_h + kGap : 0.0;
+  // Live, the dock's reserved height only grows while it stays open, so the scene does not jump
+  // when a wrapped line comes or goes between two steps; scripted frames reserve what the last
+  // state needs, as headless does.
+  if (accept_input && bottom > 0 && insets_ && insets_->bottom > 0)
+    bottom = std::min<double>(std::max(bottom, insets_->bottom), dock_max_h + kGap);
+  insets_ = render::ScreenInsets{left_w > 0 ? left_w + 2 * kGap : 0.0, right_w > 0 ? right_w + 2 * kGap : 0.0, menu, bottom};
   if (accept_input) {
     handle_keys(ctx);
     handle_mouse(ctx);

@@ -1,8 +1,14 @@
-// nbscope ui: the host of all panels. Draws the menu bar and each open panel's window in its
-// column, routes keys (P pause, O step, R restart, Home, overlay letters, 1..9 algorithms) and
-// scene mouse input (left: select and drag a body, right-drag: pan, wheel: zoom about the cursor).
+// nbscope ui: the host of all panels. Draws the menu bar and each open panel's window in its place
+// — a column at the left or right edge, the bottom dock between them, or floating — collapsing the
+// least important panels of a column that would run off the display; routes keys (P pause, O step,
+// R restart, Home, overlay letters, 1..9 algorithms) and scene mouse input (left: select and drag a
+// body, right-drag: pan, wheel: zoom about the cursor); reports the part of the display the panels
+// leave to the scene.
+//
+// Index: UiHost (panels, frame, insets) | private: column fitting, keys, mouse, menu.
 #pragma once
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -25,15 +31,28 @@ class UiHost {
   void frame(UiContext& ctx, bool accept_input);
   // Lets open panels add to the scene.
   void draw_scene(const UiContext& ctx, render::DrawSink& sink) const;
-  // Widths in pixels of the left and right panel columns (the camera fits the scene between them).
-  [[nodiscard]] float left_width() const;
-  [[nodiscard]] float right_width() const;
+  // Pixels at each display edge the panels covered in the last frame (menu bar, columns, bottom
+  // dock); before the first frame, the widths of the columns `state` opens.
+  [[nodiscard]] render::ScreenInsets insets(const UiState& state) const;
+  // The menu bar's and every panel window's rectangle in the last frame (labels keep clear of them).
+  [[nodiscard]] const std::vector<render::PixelRect>& covered() const { return covered_; }
 
  private:
+  // Per panel (parallel to panels_): what the column fitting knows about its window.
+  struct Slot {
+    enum class Pin { None, Expanded, Collapsed };
+    float expanded_height = 0;  // its height when last drawn expanded
+    bool collapsed = false;     // the host's decision this frame
+    Pin pin = Pin::None;        // the user's own click on its title bar wins over the host
+  };
+  void fit_column(PanelPlace place, const std::vector<std::size_t>& shown, float available);
   void handle_keys(UiContext& ctx);
   void handle_mouse(UiContext& ctx);
   void draw_menu(UiContext& ctx);
   std::vector<std::unique_ptr<Panel>> panels_;
+  std::vector<Slot> slots_;
+  std::optional<render::ScreenInsets> insets_;
+  std::vector<render::PixelRect> covered_;
 };
 
 }  // namespace nbscope::ui

@@ -88,6 +88,7 @@ struct UiState {
   render::OverlayFlags overlays;
   std::map<std::string, bool> panel_open;  // by panel title; absent = the panel's default
   ElementId selected = -1;
+  bool book_numbering = false;  // element ids and cell indices shown (and typed) from 1, as the book prints them
   std::optional<std::array<std::int32_t, 2>> hovered_cell;
   std::optional<Eigen::Vector2d> mouse_world;
   bool dragging = false;

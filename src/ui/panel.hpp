@@ -7,8 +7,9 @@
 
 namespace nbscope::ui {
 
-// Where the host puts a panel's window.
-enum class PanelPlace { Left, Right, Floating };
+// Where the host puts a panel's window: a column at the left or right edge, the dock along the
+// bottom between the columns (under the scene), or floating over the scene.
+enum class PanelPlace { Left, Right, Bottom, Floating };
 
 class Panel {
  public:
@@ -17,8 +18,11 @@ class Panel {
   [[nodiscard]] virtual const char* title() const = 0;
   [[nodiscard]] virtual PanelPlace place() const { return PanelPlace::Left; }
   [[nodiscard]] virtual bool open_by_default() const { return true; }
-  // Width of the window in pixels (columns share the widest).
+  // Width of the window in pixels (columns share the widest; the bottom dock spans the space between them).
   [[nodiscard]] virtual float width() const { return 250.0f; }
+  // When a column is taller than the display, the panels of lowest priority are collapsed to their
+  // title bars first (a click on a title bar expands it again, and the host collapses another).
+  [[nodiscard]] virtual int priority() const { return 0; }
   // False hides the window this frame even when open (e.g. Selection with nothing selected).
   [[nodiscard]] virtual bool visible(const UiContext&) const { return true; }
   // Draws the window's contents (the host has called Begin).

@@ -12,16 +12,20 @@ namespace {
 class AlgorithmPanel final : public Panel {
  public:
   [[nodiscard]] const char* title() const override { return "Algorithm"; }
+  [[nodiscard]] int priority() const override { return 10; }
 
   void draw(UiContext& c) override {
     const SimView& s = c.sim;
+    // Three to a row, in columns as wide as the panel allows (a name never runs into the next).
+    if (!ImGui::BeginTable("algorithms", 3)) return;
     for (std::size_t i = 0; i < s.algorithms.size(); ++i) {
       const std::string& name = s.algorithms[i];
       char label[64];
       std::snprintf(label, sizeof label, "%zu %s", i + 1, name.c_str());
+      ImGui::TableNextColumn();
       if (ImGui::RadioButton(label, name == s.algorithm) && name != s.algorithm) c.requests.algorithm = name;
-      if (i % 3 != 2 && i + 1 < s.algorithms.size()) ImGui::SameLine(static_cast<float>((i % 3 + 1) * 78));
     }
+    ImGui::EndTable();
   }
 };
 

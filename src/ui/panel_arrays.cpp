@@ -2,16 +2,17 @@
 // — a next array as a row of integers over its indices (Figs 3.13, 3.20), a heads array of cells as
 // a matrix C[ix][iy] (eq. 3.31), NBS's B[2][nx] as the current row over the row below — with -1 for
 // an empty list or the end of one, "·" for an entry not written yet (its contents mean nothing),
-// the entry just written highlighted with its old value, large
-// arrays windowed around the active entries, and an element filter that answers "where is k?".
+// the entry just written highlighted with its old value, large arrays windowed around the active
+// entries (what the current operation reads or writes, the list of the cell and row it works on,
+// the element k), and an element filter that answers "where is k?". It sits in the bottom dock.
 //
-// Index: cell colours | ArrayTable (one array as a table) | element section | ArraysPanel.
+// Index: cell colours | column fitting | Marks and window focus | row and matrix arrays | element
+// section | ArraysPanel.
 #include <imgui.h>
 
 #include <algorithm>
 #include <string>
 
-#include "ui/panel_anchor.hpp"
 #include "ui/stepper_panels.hpp"
 
 namespace nbscope::ui {
@@ -29,9 +30,10 @@ const ImU32 kActiveBg = IM_COL32(40, 170, 150, 170);
 const ImU32 kFocusBg = IM_COL32(60, 110, 190, 170);
 
 // How many columns of an array of `length` entries fit the panel: values are at most as wide as the
-// largest index (element ids, cell indices) plus a sign; at least 4, at most kMaxColumns.
-std::int64_t fit_columns(std::int64_t length) {
-  const int digits = static_cast<int>(std::to_string(std::max<std::int64_t>(length, 10)).size()) + 1;
+// largest index or, in an array of element ids, the largest id (`elements`), plus a sign; at least
+// 4, at most kMaxColumns.
+std::int64_t fit_columns(std::int64_t length, std::int64_t elements) {
+  const int digits = static_cast<int>(std::to_string(std::max<std::int64_t>({length, elements, 10})).size()) + 1;
   const float cell = ImGui::CalcTextSize("0").x * static_cast<float>(digits) + 2 * ImGui::GetStyle().CellPadding.x + 2;
   const float room = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("of 100000000").x - 8;
   return std::clamp<std::int64_t>(static_cast<std::int64_t>(room / cell), 4, kMaxColumns);
@@ -45,6 +47,10 @@ struct Marks {
   std::pair<int, std::int64_t> active[2] = {{-1, -1}, {-1, -1}};  // entries the current test reads
   std::int32_t focus = -1;  // the filtered element
   std::int64_t n = 0;       // element count (arrays of this length are indexed by element)
+  // Where the current operation works: its lists (heads array, flat index) of the cell, the row
+  // and the layer, and its element k.
+  std::vector<std::pair<int, std::int64_t>> lists;
+  std::int32_t k = -1;
 };
 
 bool written(const Marks& m, int array, std::int64_t index) {
@@ -71,13 +77,19 @@ void value_cell(const StepperSession& s, const Marks& m, int array, std::int64_t
   ImGui::TextColored(value == -1 && !is_written ? kEmpty : kValue, "%lld", static_cast<long long>(v));
 }
 
-// Where an array's window should be centred: the entry just written, else the filtered element.
-std::int64_t focus_index(const Marks& m, int array, const TracedArray& a) {
+// Where an array's window should be centred: the entry the current operation reads or writes, the
+// list of the cell, row or layer it works on, the entry of its element k (an array indexed by
+// element), the filtered element; else the start.
+std::int64_t focus_index(const StepperSession& s, const Marks& m, int array, const TracedArray& a) {
   for (const auto& [act_array, act_index] : m.active)
     if (act_array == array) return act_index;
   for (int w = 0; w < m.write_count; ++w)
     if (m.writes[w].array == array) return m.writes[w].index;
-  if (m.focus >= 0 && a.shape.size() == 1 && a.shape[0] == m.n) return m.focus;
+  for (const auto& [heads, index] : m.lists)
+    if (heads == array) return index;
+  const bool by_element = a.shape.size() == 1 && a.shape[0] == m.n && s.stepper().next_array_of(array) < 0;
+  if (by_element && m.k >= 0) return m.k;
+  if (by_element && m.focus >= 0) return m.focus;
   return 0;
 }
 
@@ -86,8 +98,9 @@ void draw_row_array(const StepperSession& s, const Marks& m, int array) {
   const TracedArray& a = s.stepper().trace().arrays()[array];
   const std::vector<std::int32_t>& values = s.stepper().state()[array];
   const auto length = static_cast<std::int64_t>(values.size());
-  const auto [begin, end] = window_range(length, focus_index(m, array, a), fit_columns(length));
-  const bool by_element = length == m.n;
+  const auto [begin, end] =
+      window_range(length, focus_index(s, m, array, a), fit_columns(length, s.holds_elements(array) ? m.n : 0));
+  const bool by_element = length == m.n && s.stepper().next_array_of(array) < 0;
   const int columns = static_cast<int>(end - begin) + 1;
   if (columns > 63 || !ImGui::BeginTable(a.name.c_str(), columns, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV))
     return;
@@ -121,12 +134,13 @@ void draw_matrix_array(const StepperSession& s, const Marks& m, int array) {
   const TracedArray& a = s.stepper().trace().arrays()[array];
   const std::vector<std::int32_t>& values = s.stepper().state()[array];
   const std::int64_t depth = a.shape.size() == 3 ? a.shape[2] : 1;
-  const std::int64_t focus = focus_index(m, array, a);
+  const std::int64_t focus = focus_index(s, m, array, a);
   const std::int64_t fz = focus % depth;
   const std::int64_t f[2] = {focus / depth / a.shape[1], (focus / depth) % a.shape[1]};
   const int row_dim = index_is_selector(a, 1) ? 1 : 0, col_dim = 1 - row_dim;
   const auto [r0, r1] = window_range(a.shape[row_dim], f[row_dim], kMaxRows);
-  const auto [c0, c1] = window_range(a.shape[col_dim], f[col_dim], fit_columns(a.shape[col_dim]));
+  const auto [c0, c1] =
+      window_range(a.shape[col_dim], f[col_dim], fit_columns(a.shape[col_dim], s.holds_elements(array) ? m.n : 0));
   const bool book = s.book_numbering;
   if (depth > 1) ImGui::TextColored(kIndex, "slice [..][..][%lld]", static_cast<long long>(shown(fz, book)));
   const int columns = static_cast<int>(c1 - c0) + 1;
@@ -181,15 +195,10 @@ void draw_element(StepperSession& s, std::int32_t k) {
     ImGui::Text(e.dim == 3 ? "in cell (%lld, %lld, %lld)" : "in cell (%lld, %lld)", static_cast<long long>(shown(cell[0], book)),
                 static_cast<long long>(shown(cell[1], book)), static_cast<long long>(shown(cell[2], book)));
   }
-  // Next entries: what each next array says after k.
-  std::string nexts;
-  for (std::size_t a = 0; a < arrays.size(); ++a) {
-    if (!s.holds_elements(static_cast<int>(a)) || st.next_array_of(static_cast<int>(a)) >= 0) continue;
-    if (static_cast<std::int64_t>(st.state()[a].size()) != e.size()) continue;
-    nexts += (nexts.empty() ? "" : ",  ") + entry_name(arrays[a], k, book) + " = " +
-             std::to_string(shown_value(s, static_cast<int>(a), st.state()[a][static_cast<std::size_t>(k)]));
-  }
-  if (!nexts.empty()) ImGui::Text("next: %s", nexts.c_str());
+  const ElementEntries entries = element_entries(s, k);
+  if (!entries.next.empty()) ImGui::TextWrapped("next: %s", entries.next.c_str());
+  if (!entries.own.empty()) ImGui::TextWrapped("its entries: %s", entries.own.c_str());
+  if (!entries.position.empty()) ImGui::TextWrapped("position: %s", entries.position.c_str());
   // The lists of its row, layer and cell as they stand now.
   const std::int32_t keys[4][3] = {{cell[0], cell[1], cell[2]}, {-1, cell[1], cell[2]}, {-1, -1, cell[2]}, {-1, cell[1], -1}};
   std::vector<std::pair<int, std::int64_t>> shown_lists;
@@ -243,23 +252,73 @@ void mark_walk(const StepperSession& s, Marks& m) {
   if (e->op == TraceOp::TestPair && next >= 0) m.active[1] = {next, e->other};
 }
 
+// The line saying what was written last, then every array.
+void draw_arrays(const StepperSession& s) {
+  const Stepper& st = s.stepper();
+  const auto& arrays = st.trace().arrays();
+  if (arrays.empty()) {
+    ImGui::TextWrapped("%s keeps no arrays: it tests every pair i < j. Pick an element to see its tests.",
+                       s.algorithm().c_str());
+    return;
+  }
+  Marks marks;
+  marks.focus = s.focus_element;
+  marks.n = s.elements().size();
+  if (const auto w = st.last_write_event()) {
+    const TraceEvent& e = st.events()[*w];
+    marks.writes = e.writes;
+    marks.write_count = std::min<int>(e.write_count, 2);
+    marks.write_is_current = *w + 1 == st.position();
+    std::string text = marks.write_is_current ? "just written: " : "last written (operation " + std::to_string(*w + 1) + "): ";
+    for (int i = 0; i < marks.write_count; ++i) {
+      const ArrayWrite& a = e.writes[i];
+      text += (i > 0 ? ",  " : "") + entry_name(arrays[a.array], a.index, s.book_numbering) + " = " +
+              std::to_string(shown_value(s, a.array, a.new_value)) + " (was " +
+              (s.is_set_after(a.array, a.index, *w) ? std::to_string(shown_value(s, a.array, a.old_value))
+                                                     : std::string("unset")) +
+              ")";
+    }
+    ImGui::PushStyleColor(ImGuiCol_Text, marks.write_is_current ? ImVec4(0.95f, 0.75f, 0.3f, 1.0f) : ImVec4(0.7f, 0.6f, 0.4f, 1.0f));
+    ImGui::TextWrapped("%s", text.c_str());
+    ImGui::PopStyleColor();
+  }
+  mark_walk(s, marks);
+  // The lists of the cell, row and layer the current operation works on, and its element.
+  const LoopVars v = st.loop_vars();
+  marks.k = v.k;
+  const std::int32_t keys[3][3] = {{v.ix, v.iy, v.iz}, {-1, v.iy, v.iz}, {-1, -1, v.iz}};
+  for (const auto& key : keys) {
+    if (key[0] < 0 && key[1] < 0 && key[2] < 0) continue;
+    if (const auto l = s.list_of_cell(key)) marks.lists.emplace_back(l->heads, l->list);
+  }
+  for (std::size_t a = 0; a < arrays.size(); ++a) {
+    ImGui::PushID(static_cast<int>(a));
+    if (arrays[a].shape.size() >= 2) {
+      draw_matrix_array(s, marks, static_cast<int>(a));
+    } else {
+      draw_row_array(s, marks, static_cast<int>(a));
+    }
+    ImGui::PopID();
+  }
+}
+
 class ArraysPanel final : public Panel {
  public:
   explicit ArraysPanel(std::shared_ptr<StepperSession> session) : session_(std::move(session)) {}
   [[nodiscard]] const char* title() const override { return kArraysTitle; }
-  [[nodiscard]] PanelPlace place() const override { return PanelPlace::Floating; }
+  [[nodiscard]] PanelPlace place() const override { return PanelPlace::Bottom; }
   [[nodiscard]] bool open_by_default() const override { return false; }
   [[nodiscard]] float width() const override { return 560.0f; }
 
   void draw(UiContext& c) override {
-    anchor_.apply(0.5f, 1.0f, ImGui::GetFrameHeight() + 4.0f);
     StepperSession& s = *session_;
+    s.book_numbering = c.state.book_numbering;
     s.update(c.sim, ImGui::GetIO().DeltaTime, ImGui::GetFrameCount());
     if (!s.has_capture()) {
       ImGui::TextDisabled("nothing recorded: open the Stepper and pause");
       return;
     }
-    ImGui::Checkbox("book numbering (1-based)", &s.book_numbering);
+    if (ImGui::Checkbox("book numbering (from 1)", &c.state.book_numbering)) s.book_numbering = c.state.book_numbering;
     ImGui::SameLine();
     int shown_focus = static_cast<int>(shown(s.focus_element, s.book_numbering));
     ImGui::SetNextItemWidth(90);
@@ -267,39 +326,22 @@ class ArraysPanel final : public Panel {
       const int k = s.book_numbering ? shown_focus - 1 : shown_focus;
       s.focus_element = std::clamp<std::int32_t>(k, -1, static_cast<std::int32_t>(s.elements().size()) - 1);
     }
-    const Stepper& st = s.stepper();
-    Marks marks;
-    marks.focus = s.focus_element;
-    marks.n = s.elements().size();
-    const auto& arrays = st.trace().arrays();
-    if (const auto w = st.last_write_event()) {
-      const TraceEvent& e = st.events()[*w];
-      marks.writes = e.writes;
-      marks.write_count = std::min<int>(e.write_count, 2);
-      marks.write_is_current = *w + 1 == st.position();
-      std::string text = marks.write_is_current ? "just written: " : "last written (operation " + std::to_string(*w + 1) + "): ";
-      for (int i = 0; i < marks.write_count; ++i) {
-        const ArrayWrite& a = e.writes[i];
-        text += (i > 0 ? ",  " : "") + entry_name(arrays[a.array], a.index, s.book_numbering) + " = " +
-                std::to_string(shown_value(s, a.array, a.new_value)) + " (was " +
-                (s.is_set_after(a.array, a.index, *w) ? std::to_string(shown_value(s, a.array, a.old_value))
-                                                       : std::string("unset")) +
-                ")";
-      }
-      ImGui::TextColored(marks.write_is_current ? ImVec4(0.95f, 0.75f, 0.3f, 1.0f) : ImVec4(0.7f, 0.6f, 0.4f, 1.0f), "%s",
-                         text.c_str());
+    const bool element = s.focus_element >= 0 && s.focus_element < s.elements().size();
+    // A wide dock (a large display) puts the element beside the arrays, so the scene keeps its height.
+    if (element && ImGui::GetContentRegionAvail().x >= 880.0f &&
+        ImGui::BeginTable("##layout", 2, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_BordersInnerV)) {
+      ImGui::TableSetupColumn("arrays", ImGuiTableColumnFlags_WidthStretch, 0.62f);
+      ImGui::TableSetupColumn("element", ImGuiTableColumnFlags_WidthStretch, 0.38f);
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      draw_arrays(s);
+      ImGui::TableSetColumnIndex(1);
+      draw_element(s, s.focus_element);
+      ImGui::EndTable();
+      return;
     }
-    mark_walk(s, marks);
-    for (std::size_t a = 0; a < arrays.size(); ++a) {
-      ImGui::PushID(static_cast<int>(a));
-      if (arrays[a].shape.size() >= 2) {
-        draw_matrix_array(s, marks, static_cast<int>(a));
-      } else {
-        draw_row_array(s, marks, static_cast<int>(a));
-      }
-      ImGui::PopID();
-    }
-    if (s.focus_element >= 0 && s.focus_element < s.elements().size()) {
+    draw_arrays(s);
+    if (element) {
       ImGui::Separator();
       draw_element(s, s.focus_element);
     }
@@ -307,7 +349,6 @@ class ArraysPanel final : public Panel {
 
  private:
   std::shared_ptr<StepperSession> session_;
-  WindowAnchor anchor_;
 };
 
 }  // namespace

@@ -10,6 +10,7 @@ namespace {
 class ControlsPanel final : public Panel {
  public:
   [[nodiscard]] const char* title() const override { return "Controls"; }
+  [[nodiscard]] int priority() const override { return 20; }
 
   void draw(UiContext& c) override {
     const SimView& s = c.sim;

@@ -12,6 +12,7 @@ namespace {
 class OverlaysPanel final : public Panel {
  public:
   [[nodiscard]] const char* title() const override { return "Overlays"; }
+  [[nodiscard]] int priority() const override { return 20; }
 
   void draw(UiContext& c) override {
     if (!ImGui::BeginTable("overlays", 2)) return;

@@ -6,7 +6,6 @@
 #include <array>
 #include <string>
 
-#include "ui/panel_anchor.hpp"
 #include "ui/stepper_panels.hpp"
 
 namespace nbscope::ui {
@@ -17,13 +16,14 @@ class PseudocodePanel final : public Panel {
  public:
   explicit PseudocodePanel(std::shared_ptr<StepperSession> session) : session_(std::move(session)) {}
   [[nodiscard]] const char* title() const override { return kPseudocodeTitle; }
-  [[nodiscard]] PanelPlace place() const override { return PanelPlace::Floating; }
+  [[nodiscard]] PanelPlace place() const override { return PanelPlace::Right; }
   [[nodiscard]] bool open_by_default() const override { return false; }
-  [[nodiscard]] float width() const override { return 600.0f; }
+  [[nodiscard]] float width() const override { return 380.0f; }
+  [[nodiscard]] int priority() const override { return 20; }
 
   void draw(UiContext& c) override {
-    anchor_.apply(0.5f, 0.0f, ImGui::GetFrameHeight() + 4.0f);
     StepperSession& s = *session_;
+    s.book_numbering = c.state.book_numbering;
     s.update(c.sim, ImGui::GetIO().DeltaTime, ImGui::GetFrameCount());
     if (!s.has_capture()) {
       ImGui::TextDisabled("nothing recorded: open the Stepper and pause");
@@ -75,30 +75,36 @@ class PseudocodePanel final : public Panel {
     const LoopVars v = s.stepper().loop_vars();
     const bool book = s.book_numbering;
     const auto& arrays = s.stepper().trace().arrays();
-    const auto var = [&](const char* name, std::int64_t value) {
-      ImGui::TextColored(ImVec4(0.55f, 0.6f, 0.7f, 1.0f), "%s", name);
+    // One flowing line of "name value" items, wrapped before an item that would not fit.
+    bool first = true;
+    const auto item = [&](const char* name, const std::string& value, bool dim_name) {
+      const float w = ImGui::CalcTextSize(name).x + 4 + ImGui::CalcTextSize(value.c_str()).x;
+      if (!first) {
+        ImGui::SameLine(0, 16);
+        if (ImGui::GetContentRegionAvail().x < w) ImGui::NewLine();
+      }
+      first = false;
+      if (dim_name) {
+        ImGui::TextColored(ImVec4(0.55f, 0.6f, 0.7f, 1.0f), "%s", name);
+      } else {
+        ImGui::TextUnformatted(name);
+      }
       ImGui::SameLine(0, 4);
-      if (value < 0) {
+      if (value == "-") {
         ImGui::TextDisabled("-");
       } else {
-        ImGui::Text("%lld", static_cast<long long>(shown(value, book)));
+        ImGui::TextUnformatted(value.c_str());
       }
-      ImGui::SameLine(0, 16);
     };
-    if (*v.phase != '\0') {
-      ImGui::Text("%s", v.phase);
-      if (v.phase_index >= 0) {
-        ImGui::SameLine(0, 4);
-        ImGui::Text("%lld", static_cast<long long>(shown(v.phase_index, book)));
-      }
-      ImGui::SameLine(0, 16);
-    }
+    const auto var = [&](const char* name, std::int64_t value) {
+      item(name, value < 0 ? std::string("-") : std::to_string(shown(value, book)), true);
+    };
+    if (*v.phase != '\0') item(v.phase, v.phase_index >= 0 ? std::to_string(shown(v.phase_index, book)) : std::string(), false);
     var("k =", v.k);
     var("ix =", v.ix);
     var("iy =", v.iy);
     if (s.elements().dim == 3) var("iz =", v.iz);
     var("tested against", v.j);
-    ImGui::NewLine();
     if (v.heads_array >= 0 && static_cast<std::size_t>(v.heads_array) < arrays.size()) {
       ImGui::Text("%s %s: head = %lld", v.list_kind, entry_name(arrays[v.heads_array], v.list, book).c_str(),
                   static_cast<long long>(shown_value(s, v.heads_array, v.head)));
@@ -112,7 +118,6 @@ class PseudocodePanel final : public Panel {
   }
 
   std::shared_ptr<StepperSession> session_;
-  WindowAnchor anchor_;
 };
 
 }  // namespace

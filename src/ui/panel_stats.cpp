@@ -64,10 +64,13 @@ class StatsPanel final : public Panel {
     if (!s.check_ran) {
       ImGui::TextDisabled("check: not run");
     } else if (s.check_ok && s.check_box2d) {
-      ImGui::TextColored(ImVec4(0.4f, 0.9f, 0.5f, 1.0f), "check OK: A == %s, A in F, T in A", s.check_reference.c_str());
+      ImGui::TextColored(ImVec4(0.4f, 0.9f, 0.5f, 1.0f), "check OK: all 4 invariants (R = %s)", s.check_reference.c_str());
+      ImGui::TextDisabled("A == R, A in F, T in A, AABB in cells");
     } else if (s.check_ok) {
       ImGui::TextColored(ImVec4(0.4f, 0.9f, 0.5f, 1.0f), "check OK: A == %s", s.check_reference.c_str());
-      ImGui::TextDisabled("no Box2D: A in F, T in A not checked");
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextDisabled("no Box2D: A in F, T in A, AABB in cells not checked");
+      ImGui::PopTextWrapPos();
     } else {
       ImGui::TextColored(ImVec4(1.0f, 0.3f, 0.3f, 1.0f), "check FAILED: %zu violations", s.violation_count);
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.5f, 0.5f, 1.0f));

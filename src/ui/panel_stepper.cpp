@@ -30,9 +30,11 @@ class StepperPanel final : public Panel {
   [[nodiscard]] PanelPlace place() const override { return PanelPlace::Right; }
   [[nodiscard]] bool open_by_default() const override { return false; }
   [[nodiscard]] float width() const override { return 290.0f; }
+  [[nodiscard]] int priority() const override { return 30; }
 
   void draw(UiContext& c) override {
     StepperSession& s = *session_;
+    s.book_numbering = c.state.book_numbering;  // one numbering for everything the user sees
     s.update(c.sim, ImGui::GetIO().DeltaTime, ImGui::GetFrameCount());
     if (c.state.selected != last_selected_) {
       // A click on an element in the scene aims the breakpoint and the arrays filter at it.
@@ -52,8 +54,7 @@ class StepperPanel final : public Panel {
       if (ImGui::Button("Record this frame")) s.capture(c.sim);
     }
     Stepper& st = s.stepper();
-    ImGui::Text("%s, frame %lld: %zu events", s.algorithm().c_str(), static_cast<long long>(s.frame()), st.size());
-    draw_transport(st);
+    draw_transport(s);
     draw_phases(s);
     ImGui::Separator();
     if (const TraceEvent* e = st.current()) {
@@ -106,7 +107,10 @@ class StepperPanel final : public Panel {
     }
   }
 
-  void draw_transport(Stepper& st) {
+  // The buttons, the scrubber (which also names the algorithm and frame) and, by the phase list,
+  // the playback speed; the keys in a tooltip. Kept compact: the column shares the display's height.
+  void draw_transport(StepperSession& s) {
+    Stepper& st = s.stepper();
     const ImVec2 b(30, 0);
     if (ImGui::Button("|<", b)) st.seek(0);
     ImGui::SameLine();
@@ -121,21 +125,18 @@ class StepperPanel final : public Panel {
     if (ImGui::Button(">|", b)) st.seek(st.size());
     ImGui::SameLine();
     if (ImGui::Button(st.playing() ? "Pause" : "Play", ImVec2(-1, 0))) st.playing() ? st.pause() : st.play();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("->/<- step, Shift+->/<- phase, Space play/pause");
 
     std::uint64_t pos = st.position();
     const std::uint64_t lo = 0, hi = st.size();
-    char label[48];
-    std::snprintf(label, sizeof label, "%llu / %llu", static_cast<unsigned long long>(pos),
-                  static_cast<unsigned long long>(hi));
+    char label[96];
+    std::snprintf(label, sizeof label, "%llu / %llu  (%s, frame %lld)", static_cast<unsigned long long>(pos),
+                  static_cast<unsigned long long>(hi), s.algorithm().c_str(), static_cast<long long>(s.frame()));
     ImGui::SetNextItemWidth(-1);
     if (ImGui::SliderScalar("##scrub", ImGuiDataType_U64, &pos, &lo, &hi, label)) {
       st.pause();
       st.seek(pos);
     }
-    float speed = static_cast<float>(st.speed());
-    ImGui::SetNextItemWidth(150);
-    if (ImGui::SliderFloat("events/s", &speed, 0.5f, 5000.0f, "%.1f", ImGuiSliderFlags_Logarithmic))
-      st.set_speed(speed);
   }
 
   void draw_phases(StepperSession& s) {
@@ -148,7 +149,9 @@ class StepperPanel final : public Panel {
     };
     const std::int64_t cur = st.current_phase();
     const std::string preview = cur >= 0 ? phase_name(static_cast<std::size_t>(cur)) : std::string("(start)");
-    ImGui::SetNextItemWidth(-1);
+    float speed = static_cast<float>(st.speed());
+    const float speed_w = 120.0f;
+    ImGui::SetNextItemWidth(std::max(80.0f, ImGui::GetContentRegionAvail().x - speed_w - ImGui::GetStyle().ItemSpacing.x));
     if (ImGui::BeginCombo("##phase", preview.c_str())) {
       ImGuiListClipper clipper;
       clipper.Begin(static_cast<int>(phases.size()));
@@ -163,19 +166,27 @@ class StepperPanel final : public Panel {
       }
       ImGui::EndCombo();
     }
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1);
+    if (ImGui::SliderFloat("##speed", &speed, 0.5f, 5000.0f, "%.1f events/s", ImGuiSliderFlags_Logarithmic))
+      st.set_speed(speed);
   }
 
   void draw_breakpoint(StepperSession& s) {
     Breakpoint& b = s.breakpoint;
     const bool book = s.book_numbering;
     int kind = static_cast<int>(b.kind);
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("break at");
+    ImGui::SameLine();
     ImGui::SetNextItemWidth(110);
-    if (ImGui::Combo("break at", &kind, kKindNames, IM_ARRAYSIZE(kKindNames))) b.kind = static_cast<BreakKind>(kind);
+    if (ImGui::Combo("##break", &kind, kKindNames, IM_ARRAYSIZE(kKindNames))) b.kind = static_cast<BreakKind>(kind);
     const auto& arrays = s.stepper().trace().arrays();
     switch (b.kind) {
       case BreakKind::Element:
       case BreakKind::FirstPairOf:
-        input_index("element", b.element, book);
+        ImGui::SameLine();
+        input_index("##element", b.element, book);
         break;
       case BreakKind::Cell: {
         const bool three_d = s.elements().dim == 3;
@@ -227,10 +238,11 @@ class StepperPanel final : public Panel {
       st.pause();
       s.status = st.run_to(b) ? "" : "no later event for this breakpoint";
     }
-    ImGui::Checkbox("stop playback there", &s.break_while_playing);
+    ImGui::SameLine();
+    ImGui::Checkbox("stop play", &s.break_while_playing);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("playback stops at this breakpoint");
     st.set_play_breakpoint(s.break_while_playing ? std::optional<Breakpoint>(b) : std::nullopt);
     if (!s.status.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", s.status.c_str());
-    ImGui::TextDisabled("->/<- step, Shift: phase, Space: play");
   }
 
   std::shared_ptr<StepperSession> session_;

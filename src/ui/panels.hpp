@@ -21,6 +21,10 @@ std::unique_ptr<Panel> make_selection_panel();
 // Self-inspection: draw calls, batches, buffers, frame time history, trace size.
 std::unique_ptr<Panel> make_metrics_panel();
 
+// The Selection panel's line for list `l` around element k: "B[1][8]: 11 -> [12] -> 191 -> ... ",
+// the head named as the Arrays panel names it, every number from 1 with `book`.
+std::string describe_chain(const render::TracedList& l, ElementId k, bool book);
+
 // Formats milliseconds for a panel, or "-" when timings are hidden (reproducible screenshots).
 std::string format_ms(const SimView& sim, double ms);
 

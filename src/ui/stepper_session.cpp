@@ -72,6 +72,14 @@ void StepperSession::capture(const SimView& sim) {
       message_ = sim.algorithm + " does not handle " + std::to_string(e.dim) + "D elements";
       return;
     }
+    // Brute force records one test per pair: past a few million the recording alone takes gigabytes.
+    const double brute_tests = 0.5 * static_cast<double>(e.size()) * static_cast<double>(e.size() - 1);
+    if (sim.algorithm == "brute" && brute_tests > static_cast<double>(kMaxBruteTests)) {
+      message_ = "brute: " + std::to_string(e.size()) + " elements make " + std::to_string(static_cast<std::int64_t>(brute_tests)) +
+                 " pair tests, too many to record (limit " + std::to_string(kMaxBruteTests) +
+                 "); step through a smaller scene or a grid algorithm";
+      return;
+    }
     DetectOptions options;
     if (sim.grid != nullptr) {
       // The frame's own grid, pinned, so the recorded run sees exactly the cells on screen.
@@ -83,8 +91,8 @@ void StepperSession::capture(const SimView& sim) {
     PairList pairs;
     TraceLog log;
     detector->detect_traced(e, options, pairs, log);
-    if (log.arrays().empty()) {
-      message_ = sim.algorithm + " keeps no lists to step through; choose nbs, screen, tree or sort";
+    if (log.events().empty()) {
+      message_ = sim.algorithm + " records no operations to step through (no book arrays, no trace); choose nbs, screen, sort, tree or brute";
       return;
     }
     stepper_.load(std::move(log));
@@ -181,6 +189,42 @@ std::int64_t shown_value(const StepperSession& session, int array, std::int32_t 
   return session.holds_elements(array) ? shown(value, session.book_numbering) : value;
 }
 
+ElementEntries element_entries(const StepperSession& s, std::int32_t k) {
+  const bool book = s.book_numbering;
+  const Stepper& st = s.stepper();
+  const auto& arrays = st.trace().arrays();
+  std::vector<bool> is_next(arrays.size(), false);
+  for (std::size_t a = 0; a < arrays.size(); ++a)
+    if (const int n = st.next_array_of(static_cast<int>(a)); n >= 0) is_next[static_cast<std::size_t>(n)] = true;
+  const auto entry = [&](std::size_t a, std::int64_t index) {
+    const int id = static_cast<int>(a);
+    return entry_name(arrays[a], index, book) + " = " +
+           (s.is_set(id, index) ? std::to_string(shown_value(s, id, st.state()[a][static_cast<std::size_t>(index)]))
+                                : std::string("\xC2\xB7"));
+  };
+  const auto add = [](std::string& list, const std::string& item) { list += (list.empty() ? "" : ",  ") + item; };
+  ElementEntries out;
+  if (k < 0 || k >= s.elements().size()) return out;
+  for (std::size_t a = 0; a < arrays.size(); ++a) {
+    const std::vector<std::int32_t>& values = st.state()[a];
+    if (arrays[a].shape.size() != 1 || static_cast<std::int64_t>(values.size()) != s.elements().size()) continue;
+    const int id = static_cast<int>(a);
+    if (is_next[a]) {
+      add(out.next, entry(a, k));
+    } else if (st.next_array_of(id) >= 0) {
+      continue;  // a heads array that happens to have N entries
+    } else if (s.holds_elements(id)) {
+      std::int64_t p = -1;
+      for (std::size_t i = 0; i < values.size() && p < 0; ++i)
+        if (values[i] == k && s.is_set(id, static_cast<std::int64_t>(i))) p = static_cast<std::int64_t>(i);
+      add(out.position, p >= 0 ? entry(a, p) : "not in " + arrays[a].name + " yet");
+    } else {
+      add(out.own, entry(a, k));
+    }
+  }
+  return out;
+}
+
 std::string describe_event(const StepperSession& session, const TraceEvent& e) {
   const bool book = session.book_numbering;
   const auto& arrays = session.stepper().trace().arrays();
@@ -216,12 +260,17 @@ std::string describe_event(const StepperSession& session, const TraceEvent& e) {
     default:
       break;
   }
-  // Any other write (sort's keys and permutation, tree links): name, new value, old value.
+  // Any other write (sort's keys and permutation, tree links): name, new value, old value ("unset"
+  // when the entry had not been written before, as the Arrays panel says).
+  const auto& events = session.stepper().events();
+  const bool in_trace = !events.empty() && &e >= events.data() && &e < events.data() + events.size();
+  const std::size_t at = in_trace ? static_cast<std::size_t>(&e - events.data()) : 0;
   std::string out = std::string(e.label) + ": ";
   for (int w = 0; w < e.write_count && w < 2; ++w) {
+    const ArrayWrite& wr = e.writes[w];
+    const bool was_set = !in_trace || session.is_set_after(wr.array, wr.index, at);
     if (w > 0) out += ", ";
-    out += name(e.writes[w]) + " = " + value(e.writes[w].array, e.writes[w].new_value) + " (was " +
-           value(e.writes[w].array, e.writes[w].old_value) + ")";
+    out += name(wr) + " = " + value(wr.array, wr.new_value) + " (was " + (was_set ? value(wr.array, wr.old_value) : "unset") + ")";
   }
   if (e.element >= 0) out += " for k=" + id(e.element);
   return out;

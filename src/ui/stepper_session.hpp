@@ -21,6 +21,8 @@ namespace nbscope::ui {
 
 // Most elements whose detection the stepper records: ~30 events of ~90 bytes each per element.
 inline constexpr std::int64_t kMaxSteppedElements = 50'000;
+// Most pair tests of brute force it records (one event each; brute keeps no arrays, only tests).
+inline constexpr std::int64_t kMaxBruteTests = 2'000'000;
 
 // How the stepper starts (headless `--step K`, or the window's defaults).
 struct StepperConfig {
@@ -126,6 +128,15 @@ class StepperSession {
 [[nodiscard]] bool index_is_selector(const TracedArray& array, std::size_t dim);
 // "C[4][6]" for flat index `flat` of `array` (indices in the chosen numbering).
 [[nodiscard]] std::string entry_name(const TracedArray& array, std::int64_t flat, bool book);
+// What the Arrays panel's element section says about element k's entries at the current position,
+// in the session's numbering, "·" for an entry the detection has not written yet: `next`, what each
+// next array says after k ("Y[4] = 3,  X[4] = ·"); `own`, its entries of arrays indexed by element
+// (sort's "ix[12] = 3,  iy[12] = 5"); `position`, where a permutation of element ids holds it (sort's
+// "order[7] = 12", or "not in order yet").
+struct ElementEntries {
+  std::string next, own, position;
+};
+[[nodiscard]] ElementEntries element_entries(const StepperSession& session, std::int32_t k);
 // One line saying what event `e` of the session's trace does, in the book's words and the session's
 // numbering, e.g. "push k=3 onto cell list C[4][6]: E[3] = -1, C[4][6] = 3".
 [[nodiscard]] std::string describe_event(const StepperSession& session, const TraceEvent& e);
