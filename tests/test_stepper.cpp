@@ -109,6 +109,49 @@ TEST(Stepper, ForwardThenBackMatchesAFreshReplayAtEveryStep) {
   }
 }
 
+// The replays above trust the trace. Here a fresh detection is watched as it runs: before every
+// event is recorded, the detector's own arrays must equal the replay of the events so far, so the
+// stepper shows at step K exactly what the detector had written after K operations. Sort maps
+// every element in one vectorised integerisation and sorts with std::sort, then reports the
+// results entry by entry: its arrays match at its phase boundaries, where each phase is complete.
+TEST(Stepper, TheTraceHoldsWhatTheDetectorReallyWroteAtEveryStep) {
+  const std::vector<Layout> layouts = {Layout::Loose, Layout::Dense, Layout::Clustered, Layout::OneCell, Layout::Touching};
+  int watched = 0;
+  for (const DetectorInfo& info : detector_infos()) {
+    for (int dim : {2, 3}) {
+      if ((dim == 2 && !info.dim2) || (dim == 3 && !info.dim3)) continue;
+      std::uint64_t seed = 1;
+      for (Layout layout : layouts) {
+        for (std::int64_t n : {std::int64_t{7}, std::int64_t{40}}) {
+          const Elements e = testdata::make_layout(layout, n, dim, seed++);
+          SCOPED_TRACE(info.name + " " + std::to_string(dim) + "D " + testdata::layout_name(layout) + " n=" + std::to_string(n));
+          TraceLog log;
+          std::vector<std::vector<std::int32_t>> replayed;
+          std::size_t applied = 0, mismatches = 0, compared = 0;
+          const bool atomic_phases = info.name == "sort";
+          log.set_probe([&](std::size_t position, const TraceEvent& upcoming, const std::vector<std::vector<std::int32_t>>& live) {
+            if (atomic_phases && upcoming.op != TraceOp::Phase) return;
+            if (replayed.size() != log.arrays().size()) {  // arrays declared since: start from their contents
+              replayed = log.state_after(position);
+              applied = position;
+            }
+            for (; applied < position; ++applied) TraceLog::apply(log.events()[applied], replayed);
+            ++compared;
+            if (live != replayed && mismatches++ == 0) ADD_FAILURE() << "the detector's arrays differ from the trace after " << position << " events";
+          });
+          PairList pairs;
+          info.make()->detect_traced(e, DetectOptions{}, pairs, log);
+          if (log.arrays().empty()) break;  // not list-based: no arrays to watch
+          EXPECT_EQ(mismatches, 0u);
+          EXPECT_GE(compared, atomic_phases ? 2u : log.events().size() - 1);  // sort: at "sort" and "contacts"
+          ++watched;
+        }
+      }
+    }
+  }
+  EXPECT_GE(watched, 40);  // tree, sort, screen and nbs, in 2D and 3D
+}
+
 TEST(Stepper, LongSeeksThroughCheckpointsAreExact) {
   int long_traces = 0;
   for (const TracedRun& run : list_based_runs(400)) {

@@ -8,10 +8,12 @@ namespace nbscope {
 void TraceLog::reset() {
   events_.clear();
   arrays_.clear();
+  live_.clear();
 }
 
 int TraceLog::declare_array(std::string name, std::vector<std::int64_t> shape, std::span<const std::int32_t> initial) {
   arrays_.push_back(TracedArray{std::move(name), std::move(shape), {initial.begin(), initial.end()}});
+  live_.push_back(initial);
   return static_cast<int>(arrays_.size()) - 1;
 }
 
@@ -21,7 +23,7 @@ void TraceLog::phase(std::uint8_t line, const char* label, std::int32_t index) {
   e.line = line;
   e.label = label;
   e.index = index;
-  events_.push_back(e);
+  record(e);
 }
 
 void TraceLog::phase(std::uint8_t line, const char* label, std::int32_t index, std::int32_t ix, std::int32_t iy,
@@ -47,7 +49,7 @@ void TraceLog::push(std::uint8_t line, const char* kind, int heads, std::int64_t
   e.write_count = 2;
   e.writes[0] = ArrayWrite{next, old_next, old_head, k};
   e.writes[1] = ArrayWrite{heads, old_head, k, list_index};
-  events_.push_back(e);
+  record(e);
 }
 
 void TraceLog::clear(std::uint8_t line, const char* kind, int heads, std::int64_t list_index, std::int32_t old_head) {
@@ -58,7 +60,7 @@ void TraceLog::clear(std::uint8_t line, const char* kind, int heads, std::int64_
   e.index = static_cast<std::int32_t>(list_index);
   e.write_count = 1;
   e.writes[0] = ArrayWrite{heads, old_head, -1, list_index};
-  events_.push_back(e);
+  record(e);
 }
 
 void TraceLog::visit_cell(std::uint8_t line, ElementId k, std::int32_t ix, std::int32_t iy, std::int32_t iz) {
@@ -70,7 +72,7 @@ void TraceLog::visit_cell(std::uint8_t line, ElementId k, std::int32_t ix, std::
   e.cell[0] = ix;
   e.cell[1] = iy;
   e.cell[2] = iz;
-  events_.push_back(e);
+  record(e);
 }
 
 void TraceLog::test_pair(std::uint8_t line, ElementId k, ElementId other, bool contact) {
@@ -81,7 +83,7 @@ void TraceLog::test_pair(std::uint8_t line, ElementId k, ElementId other, bool c
   e.element = k;
   e.other = other;
   e.contact = contact;
-  events_.push_back(e);
+  record(e);
 }
 
 void TraceLog::set(std::uint8_t line, const char* label, int array, std::int64_t index, std::int32_t old_value,
@@ -94,6 +96,16 @@ void TraceLog::set(std::uint8_t line, const char* label, int array, std::int64_t
   e.index = static_cast<std::int32_t>(index);
   e.write_count = 1;
   e.writes[0] = ArrayWrite{array, old_value, new_value, index};
+  record(e);
+}
+
+void TraceLog::record(const TraceEvent& e) {
+  if (probe_) {
+    std::vector<std::vector<std::int32_t>> live;
+    live.reserve(live_.size());
+    for (const auto& a : live_) live.emplace_back(a.begin(), a.end());
+    probe_(events_.size(), e, live);
+  }
   events_.push_back(e);
 }
 

@@ -7,6 +7,7 @@
 // `if constexpr (Trace::enabled)` removes the bookkeeping, so tracing costs nothing when off.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -84,6 +85,12 @@ class TraceLog {
   // When false, VisitCell and TestPair events are not recorded (every array write still is), so a
   // large detection can be replayed for its arrays (`nbscope dump`) in memory O(writes). Survives reset().
   void set_keep_tests(bool keep) { keep_tests_ = keep; }
+  // Test hook: called just before each event is recorded with its position, the event, and the
+  // detector's arrays as they really are at that moment, which a faithful trace makes equal to
+  // state_after(position). The detector's arrays must not move while it runs. Survives reset().
+  using Probe = std::function<void(std::size_t position, const TraceEvent& upcoming,
+                                   const std::vector<std::vector<std::int32_t>>& live)>;
+  void set_probe(Probe probe) { probe_ = std::move(probe); }
 
   [[nodiscard]] const std::vector<TraceEvent>& events() const { return events_; }
   [[nodiscard]] const std::vector<TracedArray>& arrays() const { return arrays_; }
@@ -94,9 +101,14 @@ class TraceLog {
   static void undo(const TraceEvent& e, std::vector<std::vector<std::int32_t>>& state);
 
  private:
+  // Appends `e`, first showing the probe the live arrays.
+  void record(const TraceEvent& e);
+
   std::vector<TraceEvent> events_;
   std::vector<TracedArray> arrays_;
+  std::vector<std::span<const std::int32_t>> live_;  // the detector's arrays, during its run
   bool keep_tests_ = true;
+  Probe probe_;
 };
 
 // The sink of untraced runs: every call compiles to nothing.
