@@ -153,7 +153,6 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   window.set_vsync(!scripted);
   GlView view(window, window.handle(), o.view);
   view.check_selection(loop);
-  check_step_algorithm(o.view, loop.algorithm());
   if (settings != nullptr) {
     if (o.view.overlays.empty()) view.state().overlays = settings->overlays;
     if (o.view.panels.empty()) view.state().panel_open = settings->panels;
@@ -255,6 +254,7 @@ int run_replay_window(const HeadlessOptions& o) {
   loop_options.brute_limit = o.brute_limit;
   FrameLoop loop(loop_options);
   loop.load_recording_file(*o.replay, o.frames);
+  check_step_algorithm(o.view, loop.algorithm());
   GuiOptions g;
   g.algorithm = o.algorithm;
   g.fault = o.fault;
@@ -291,6 +291,7 @@ int run_gui(Args& args) {
     scene = *settings->last_scene;
   if (scene.empty()) scene = default_scene_path();
   loop.load_scene_file(scene);
+  check_step_algorithm(o.view, loop.algorithm());  // the window and the fallback alike, before any frame
 
   if (!have_display()) return run_without_display(o, loop);
 

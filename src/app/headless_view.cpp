@@ -68,7 +68,6 @@ std::unique_ptr<HeadlessView> make_headless_view(const ViewOptions& options, con
   if (!options.screenshot) throw Error("internal: make_headless_view without --screenshot");
   // Fail before simulating any frame, not after.
   check_output_path(*options.screenshot);
-  check_step_algorithm(options, loop.algorithm());
   return std::make_unique<OsmesaView>(options, loop);
 }
 

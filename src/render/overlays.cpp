@@ -141,14 +141,7 @@ class LabelSpace {
   bool take(Vec2 at, double w, double h) {
     const double cx = (at.x() - view_.min.x()) * ppm_, cy = (view_.max.y() - at.y()) * ppm_;
     const Box b{cx - 0.5 * w, cy - 0.5 * h, cx + 0.5 * w, cy + 0.5 * h};
-    const auto bx0 = bucket(b.x0), bx1 = bucket(b.x1), by0 = bucket(b.y0), by1 = bucket(b.y1);
-    for (auto by = by0; by <= by1; ++by)
-      for (auto bx = bx0; bx <= bx1; ++bx) {
-        const auto it = buckets_.find(key(bx, by));
-        if (it == buckets_.end()) continue;
-        for (const std::size_t i : it->second)
-          if (boxes_[i].x0 < b.x1 && b.x0 < boxes_[i].x1 && boxes_[i].y0 < b.y1 && b.y0 < boxes_[i].y1) return false;
-      }
+    if (overlaps(b)) return false;
     insert(b);
     return true;
   }
@@ -165,10 +158,24 @@ class LabelSpace {
   struct Box {
     double x0, y0, x1, y1;
   };
+  // Calls f(bucket key) for every bucket `b` touches.
+  template <class F>
+  static void for_buckets(const Box& b, F&& f) {
+    for (auto by = bucket(b.y0); by <= bucket(b.y1); ++by)
+      for (auto bx = bucket(b.x0); bx <= bucket(b.x1); ++bx) f(key(bx, by));
+  }
+  bool overlaps(const Box& b) const {
+    bool hit = false;
+    for_buckets(b, [&](std::uint64_t k) {
+      const auto it = buckets_.find(k);
+      if (hit || it == buckets_.end()) return;
+      for (const std::size_t i : it->second)
+        hit = hit || (boxes_[i].x0 < b.x1 && b.x0 < boxes_[i].x1 && boxes_[i].y0 < b.y1 && b.y0 < boxes_[i].y1);
+    });
+    return hit;
+  }
   void insert(const Box& b) {
-    const auto bx0 = bucket(b.x0), bx1 = bucket(b.x1), by0 = bucket(b.y0), by1 = bucket(b.y1);
-    for (auto by = by0; by <= by1; ++by)
-      for (auto bx = bx0; bx <= bx1; ++bx) buckets_[key(bx, by)].push_back(boxes_.size());
+    for_buckets(b, [&](std::uint64_t k) { buckets_[k].push_back(boxes_.size()); });
     boxes_.push_back(b);
   }
   static constexpr double kBucketPx = 32.0;
