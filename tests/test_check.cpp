@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "check/check.hpp"
+#include "physics/world.hpp"
 #include "check/faults.hpp"
 #include "core/brute.hpp"
 #include "core/error.hpp"

@@ -1,15 +1,18 @@
-// FrameLoop: owns the frame source (a Box2D world, or recorded frames), the detector, the checker
-// and the frame's results.
+// FrameLoop: owns the frame source (a Box2D world, or recorded frames), the detector, the checker,
+// the frame's results and the run's history.
 //
-// Index: Impl (state) | scene | recording | configuration | one frame (detect_and_check) | accessors | drag.
+// Index: Impl (state) | scene | recording | configuration | one frame (detect_and_check) | history |
+// resume | accessors | drag.
 #include "app/frame_loop.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 
 #include "check/check.hpp"
 #include "core/error.hpp"
+#include "physics/kept_frame.hpp"
 #include "physics/world.hpp"
 
 namespace nbscope {
@@ -75,14 +78,39 @@ struct FrameLoop::Impl {
   Elements detected_on;       // what the detectors were given this frame when not the world's elements
   bool detected_on_world = true;
 
+  // ---- history ----
+  FrameHistory history;
+  ViolationLog violations;
+  std::unique_ptr<KeptWorldFrame> kept;  // the past frame shown, or null for the live world's
+
+  // A drag call, with the frame it was made on (before that frame's successor was stepped).
+  struct DragInput {
+    enum class Kind : std::uint8_t { Begin, To, End } kind = Kind::Begin;
+    std::int64_t frame = 0;
+    double x = 0, y = 0;
+  };
+  std::vector<DragInput> inputs;
+
+  // ---- resume ----
+  std::unique_ptr<PhysicsWorld> resume_world;  // re-simulating towards resume_target
+  std::int64_t resume_target = -1;
+  std::size_t resume_input = 0;                // next input to replay
+  Elements resume_stale;                       // the re-simulated frame before the target
+  std::optional<std::int64_t> divergence;
+
   explicit Impl(FrameLoopOptions o)
-      : options(std::move(o)), main(options.algorithm), checker(CheckOptions{options.brute_limit}) {}
+      : options(std::move(o)), main(options.algorithm), checker(CheckOptions{options.brute_limit}) {
+    history.set_budget(options.history_budget);
+  }
 
   // ---- the frame source ----
   bool loaded() const { return world != nullptr || recording != nullptr; }
-  const Elements& now() const { return world ? world->elements() : recording->frames[recorded].elements; }
-  std::int64_t frame_number() const { return world ? world->frame() : recording->frames[recorded].number; }
-  bool first_frame() const { return world ? world->frame() == 0 : recorded == 0; }
+  // Box2D's side of the frame shown: a kept past frame or the live world (null when replaying).
+  const Box2dFrame* box2d() const { return kept ? static_cast<const Box2dFrame*>(kept.get()) : world.get(); }
+  const Elements& now() const { return world ? box2d()->elements() : recording->frames[recorded].elements; }
+  std::int64_t frame_number() const { return world ? box2d()->frame() : recording->frames[recorded].number; }
+  double time_now() const { return world ? box2d()->time() : recording->frames[recorded].time; }
+  bool first_frame() const { return world ? box2d()->frame() == 0 : recorded == 0; }
 
   const Elements& detector_input() const { return detected_on_world ? now() : detected_on; }
 
@@ -111,13 +139,13 @@ struct FrameLoop::Impl {
         lane->report.frame = frame_number();
         lane->report.timings = {physics_ms, detection_ms, 0};
         lane->report.counts.elements = now.size();
-        lane->report.counts.bodies = world ? world->body_count() : 0;
+        lane->report.counts.bodies = world ? box2d()->body_count() : 0;
         lane->report.counts.a = static_cast<std::int64_t>(lane->pairs.size());
       }
     } else {
       // The first lane's check time includes the sets every lane shares (F, G, T).
       auto t0 = std::chrono::steady_clock::now();
-      if (world) checker.begin_frame(*world, detect_options);
+      if (world) checker.begin_frame(*box2d(), detect_options);
       else checker.begin_frame(now, frame_number(), detect_options);
       for (Lane* lane : lanes()) {
         CheckInput in;
@@ -131,8 +159,41 @@ struct FrameLoop::Impl {
         t0 = std::chrono::steady_clock::now();
       }
     }
+    const std::uint64_t hash = hash_elements(now);
+    for (Lane* lane : lanes()) lane->report.hash = hash;
     other_reports.clear();
     for (const Lane& lane : others) other_reports.push_back(lane.report);
+    record_frame();
+  }
+
+  // The shown frame's summary into the history (a new live frame is pushed with its kept state; a
+  // frame shown again has its counts replaced), and its violations into the run's log.
+  void record_frame() {
+    const FrameReport& r = main.report;
+    FrameSummary s;
+    s.frame = frame_number();
+    s.time = time_now();
+    s.hash = r.hash;
+    s.kept = true;
+    s.checked = r.checked;
+    s.elements = now().size();
+    s.pairs = static_cast<std::int64_t>(main.pairs.size());
+    s.violations = r.violation_count();
+    s.physics_ms = static_cast<float>(r.timings.physics_ms);
+    s.detection_ms = static_cast<float>(r.timings.detection_ms);
+    s.check_ms = static_cast<float>(r.timings.check_ms);
+    if (const auto index = history.find(s.frame)) {
+      s.physics_ms = history.at(*index).physics_ms;  // a frame shown again is not simulated again
+      history.update(*index, s);
+    } else {
+      std::shared_ptr<WorldState> state;
+      if (world && history.budget() > 0) {
+        state = std::make_shared<WorldState>();
+        world->capture(*state, options.checks ? &checker.box2d_pairs() : nullptr);
+      }
+      history.push(s, state, state ? state->bytes() : 0);
+    }
+    violations.set_frame(r);
   }
 
   std::vector<Lane*> lanes() {
@@ -166,20 +227,56 @@ struct FrameLoop::Impl {
                     emitter.substr(0, emitter.size() - 2));
       }
     }
-    Scene kept = s;
-    scene = std::move(kept);
+    Scene copy = s;
+    scene = std::move(copy);
+    kept.reset();  // it points into the old world
     world = std::move(fresh);
     recording.reset();
     detect_options = opts;
     start();
   }
 
-  // The frame source's first frame, detected and checked.
+  // The frame source's first frame, detected and checked; a new run: the history starts again.
   void start() {
     for (Lane* lane : lanes()) lane->report = FrameReport{};
     recorded = 0;
+    kept.reset();
+    resume_world.reset();
+    resume_target = -1;
+    divergence.reset();
+    inputs.clear();
+    history.clear();
+    violations.clear();
+    if (recording) {
+      // Every recorded frame is showable from the start; each is checked when first shown.
+      for (const RecordedFrame& f : recording->frames) {
+        FrameSummary s;
+        s.frame = f.number;
+        s.time = f.time;
+        s.kept = true;
+        s.elements = f.elements.size();
+        history.push(s, nullptr, 0);
+      }
+    }
     stale = now();
     detect_and_check();
+  }
+
+  // Index of recorded frame number `frame` (it must exist).
+  std::size_t recorded_index(std::int64_t frame) const {
+    const auto& frames = recording->frames;
+    const auto it = std::lower_bound(frames.begin(), frames.end(), frame,
+                                     [](const RecordedFrame& f, std::int64_t n) { return f.number < n; });
+    return static_cast<std::size_t>(it - frames.begin());
+  }
+
+  // The elements of the frame before `frame` when it can be shown, else `frame`'s own (the
+  // stale-positions fault then has nothing older to give).
+  Elements elements_before(std::int64_t frame) {
+    if (recording) return recording->frames[recorded > 0 ? recorded - 1 : 0].elements;
+    const auto index = history.find(frame - 1);
+    if (index && history.state(*index)) return KeptWorldFrame(*world, history.state(*index)).elements();
+    return now();
   }
 
   // Replays `rec` instead of a world: its grid pins as a scene's would, its name the file's stem.
@@ -203,6 +300,7 @@ struct FrameLoop::Impl {
     if (last.number > first.number && last.time > first.time)
       s.time_step = (last.time - first.time) / static_cast<double>(last.number - first.number);
     scene = std::move(s);
+    kept.reset();
     world.reset();
     recording = std::move(rec);
     detect_options = opts;
@@ -278,33 +376,192 @@ const std::vector<FrameReport>& FrameLoop::comparison_reports() const { return i
 // ---- one frame -----------------------------------------------------------------------------
 
 void FrameLoop::step() {
-  if (impl_->recording) {
-    if (at_end()) return;
-    impl_->stale = impl_->now();
-    ++impl_->recorded;
-    impl_->set_physics_ms(0);  // no physics: the frame was read with the file
-    impl_->detect_and_check();
+  Impl& m = *impl_;
+  if (m.resume_world) return;
+  if (m.kept) {
+    // A past frame: the next one is the run's own, kept (or the live one).
+    if (const auto next = neighbour(1)) show_frame(*next);
     return;
   }
-  if (!impl_->world) return;
-  impl_->stale = impl_->world->elements();
+  if (m.recording) {
+    if (at_end()) return;
+    m.stale = m.now();
+    ++m.recorded;
+    m.set_physics_ms(0);  // no physics: the frame was read with the file
+    m.detect_and_check();
+    return;
+  }
+  if (!m.world) return;
+  m.stale = m.world->elements();
   const auto t0 = std::chrono::steady_clock::now();
-  impl_->world->step();
-  impl_->set_physics_ms(ms_since(t0));
-  impl_->detect_and_check();
+  m.world->step();
+  m.set_physics_ms(ms_since(t0));
+  m.detect_and_check();
 }
 
 void FrameLoop::redetect() {
   if (impl_->loaded()) impl_->detect_and_check();
 }
 
+// ---- history -------------------------------------------------------------------------------
+
+const FrameHistory& FrameLoop::history() const { return impl_->history; }
+void FrameLoop::set_history_budget(std::size_t bytes) {
+  impl_->options.history_budget = bytes;
+  impl_->history.set_budget(bytes);
+}
+const ViolationLog& FrameLoop::violation_log() const { return impl_->violations; }
+bool FrameLoop::showing_past() const { return impl_->kept != nullptr; }
+
+std::int64_t FrameLoop::newest_frame() const {
+  const Impl& m = *impl_;
+  if (m.recording) return m.recording->frames.back().number;
+  return m.world ? m.world->frame() : 0;
+}
+
+bool FrameLoop::can_show(std::int64_t frame) const {
+  const Impl& m = *impl_;
+  if (!m.loaded()) return false;
+  if (m.world && frame == m.world->frame()) return true;
+  const auto index = m.history.find(frame);
+  return index && m.history.at(*index).kept && (m.recording || m.history.state(*index));
+}
+
+void FrameLoop::show_frame(std::int64_t frame) {
+  Impl& m = *impl_;
+  if (!m.loaded()) return;
+  if (m.resume_world) throw Error("frame " + std::to_string(frame) + ": the simulation is being resumed; wait or cancel");
+  if (!can_show(frame)) {
+    const auto first = m.history.first_kept();
+    throw Error("frame " + std::to_string(frame) + " is not kept (frames " +
+                (first ? std::to_string(*first) : std::to_string(newest_frame())) + ".." + std::to_string(newest_frame()) +
+                " are; a larger history budget keeps more)");
+  }
+  if (frame == m.frame_number()) return;
+  const double physics_ms = 0;  // nothing was simulated to show it
+  if (m.recording) {
+    m.recorded = m.recorded_index(frame);
+    m.stale = m.elements_before(frame);
+  } else if (frame == m.world->frame()) {
+    m.kept.reset();
+    if (m.options.fault == Fault::StalePositions) m.stale = m.elements_before(frame);
+  } else {
+    m.kept = std::make_unique<KeptWorldFrame>(*m.world, m.history.state(*m.history.find(frame)));
+    if (m.options.fault == Fault::StalePositions) m.stale = m.elements_before(frame);
+  }
+  m.set_physics_ms(physics_ms);
+  m.detect_and_check();
+}
+
+std::optional<std::int64_t> FrameLoop::neighbour(std::int64_t delta) const {
+  const Impl& m = *impl_;
+  if (!m.loaded() || delta == 0 || m.history.empty()) return std::nullopt;
+  const auto here = m.history.find(m.frame_number());
+  if (!here) return std::nullopt;
+  const auto last = static_cast<std::int64_t>(m.history.size()) - 1;
+  std::int64_t index = std::clamp<std::int64_t>(static_cast<std::int64_t>(*here) + delta, 0, last);
+  // Past frames whose states were dropped cannot be shown: stop at the oldest that can.
+  const auto showable = [&](std::int64_t i) { return can_show(m.history.at(static_cast<std::size_t>(i)).frame); };
+  while (index != static_cast<std::int64_t>(*here) && !showable(index)) index += delta > 0 ? -1 : 1;
+  if (index == static_cast<std::int64_t>(*here)) return std::nullopt;
+  return m.history.at(static_cast<std::size_t>(index)).frame;
+}
+
+void FrameLoop::element_path(ElementId k, std::int64_t from, std::int64_t to, std::vector<std::array<double, 2>>& out) const {
+  out.clear();
+  const Impl& m = *impl_;
+  if (!m.loaded() || k < 0) return;
+  for (std::size_t i = 0; i < m.history.size(); ++i) {
+    const FrameSummary& f = m.history.at(i);
+    if (f.frame < from || f.frame > to || k >= f.elements) continue;
+    if (m.recording) {
+      const Elements& e = m.recording->frames[m.recorded_index(f.frame)].elements;
+      out.push_back({e.x[k], e.y[k]});
+    } else if (const auto& state = m.history.state(i)) {
+      std::array<double, 2> p{};
+      m.world->element_centre(*state, k, p[0], p[1]);
+      out.push_back(p);
+    } else if (f.frame == m.world->frame()) {
+      out.push_back({m.world->elements().x[k], m.world->elements().y[k]});
+    }
+  }
+}
+
+// ---- resume --------------------------------------------------------------------------------
+
+void FrameLoop::begin_resume() {
+  Impl& m = *impl_;
+  if (!m.world || !m.kept || m.resume_world) return;
+  m.resume_target = m.kept->frame();
+  m.resume_world = std::make_unique<PhysicsWorld>(m.scene);
+  m.resume_input = 0;
+  m.divergence.reset();
+}
+
+bool FrameLoop::continue_resume(double budget_ms) {
+  Impl& m = *impl_;
+  if (!m.resume_world) return true;
+  PhysicsWorld& w = *m.resume_world;
+  const auto t0 = std::chrono::steady_clock::now();
+  do {
+    if (w.frame() >= m.resume_target) break;
+    // The drags made on this frame, in their order, then the step, as the original run did.
+    while (m.resume_input < m.inputs.size() && m.inputs[m.resume_input].frame <= w.frame()) {
+      const Impl::DragInput& in = m.inputs[m.resume_input++];
+      if (in.kind == Impl::DragInput::Kind::Begin) w.begin_drag(in.x, in.y);
+      else if (in.kind == Impl::DragInput::Kind::To) w.drag_to(in.x, in.y);
+      else w.end_drag();
+    }
+    if (w.frame() + 1 == m.resume_target) m.resume_stale = w.elements();
+    try {
+      w.step();
+    } catch (const Error& e) {
+      cancel_resume();
+      throw Error(m.scene.path + ": resuming at frame " + std::to_string(w.frame()) + ": " + e.what());
+    }
+    // Determinism check: every kept frame on the way must come back exactly.
+    if (!m.divergence) {
+      const auto index = m.history.find(w.frame());
+      if (index && m.history.at(*index).hash != 0 && m.history.at(*index).hash != hash_elements(w.elements()))
+        m.divergence = w.frame();
+    }
+  } while (ms_since(t0) < budget_ms);
+  if (w.frame() < m.resume_target) return false;
+
+  // Arrived: the re-simulated world is the live one at K, the later frames are gone.
+  const std::int64_t k = m.resume_target;
+  if (w.dragging()) w.end_drag();  // nobody holds the mouse now
+  m.kept.reset();
+  m.world = std::move(m.resume_world);
+  m.resume_target = -1;
+  m.history.truncate_after(k);
+  m.violations.truncate_after(k);
+  std::erase_if(m.inputs, [&](const Impl::DragInput& in) { return in.frame >= k; });
+  m.stale = k > 0 ? m.resume_stale : m.world->elements();
+  m.set_physics_ms(0);
+  m.detect_and_check();
+  return true;
+}
+
+void FrameLoop::cancel_resume() {
+  impl_->resume_world.reset();
+  impl_->resume_target = -1;
+}
+
+bool FrameLoop::resuming() const { return impl_->resume_world != nullptr; }
+
+std::pair<std::int64_t, std::int64_t> FrameLoop::resume_progress() const {
+  const Impl& m = *impl_;
+  if (!m.resume_world) return {0, 0};
+  return {m.resume_world->frame(), m.resume_target};
+}
+
+std::optional<std::int64_t> FrameLoop::resume_divergence() const { return impl_->divergence; }
+
 // ---- accessors -----------------------------------------------------------------------------
 
 std::int64_t FrameLoop::frame() const { return impl_->loaded() ? impl_->frame_number() : 0; }
-double FrameLoop::time() const {
-  if (impl_->recording) return impl_->recording->frames[impl_->recorded].time;
-  return impl_->world ? impl_->world->time() : 0;
-}
+double FrameLoop::time() const { return impl_->loaded() ? impl_->time_now() : 0; }
 
 const Elements& FrameLoop::elements() const {
   static const Elements kNone;
@@ -314,7 +571,7 @@ const std::vector<ElementSource>& FrameLoop::element_sources() const {
   static const std::vector<ElementSource> kNone;
   return impl_->world ? impl_->world->sources() : kNone;
 }
-std::int64_t FrameLoop::body_count() const { return impl_->world ? impl_->world->body_count() : 0; }
+std::int64_t FrameLoop::body_count() const { return impl_->world ? impl_->box2d()->body_count() : 0; }
 const PairList& FrameLoop::pairs() const { return impl_->main.pairs; }
 const Grid& FrameLoop::grid() const { return impl_->main.grid; }
 const std::vector<CellIndex>& FrameLoop::cells() const { return impl_->main.cells; }
@@ -327,7 +584,7 @@ const PairList& FrameLoop::tight_aabb_pairs() const { return impl_->options.chec
 void FrameLoop::body_shapes(std::vector<BodyShape>& out) const {
   out.clear();
   if (impl_->world) {
-    impl_->world->shapes(out);
+    impl_->box2d()->shapes(out);
   } else if (impl_->recording) {
     // No bodies: each recorded element is drawn as a dynamic circle.
     const Elements& e = impl_->now();
@@ -354,13 +611,24 @@ void FrameLoop::trace_frame(TraceLog& out_trace, PairList& out_pairs) {
 
 // ---- drag ----------------------------------------------------------------------------------
 
-bool FrameLoop::begin_drag(double x, double y) { return impl_->world && impl_->world->begin_drag(x, y); }
+bool FrameLoop::begin_drag(double x, double y) {
+  Impl& m = *impl_;
+  if (!m.world || m.kept || m.resume_world) return false;
+  m.inputs.push_back({Impl::DragInput::Kind::Begin, m.world->frame(), x, y});
+  return m.world->begin_drag(x, y);
+}
 void FrameLoop::drag_to(double x, double y) {
-  if (impl_->world) impl_->world->drag_to(x, y);
+  Impl& m = *impl_;
+  if (!m.world || m.kept || m.resume_world || !m.world->dragging()) return;
+  m.inputs.push_back({Impl::DragInput::Kind::To, m.world->frame(), x, y});
+  m.world->drag_to(x, y);
 }
 void FrameLoop::end_drag() {
-  if (impl_->world) impl_->world->end_drag();
+  Impl& m = *impl_;
+  if (!m.world || m.kept || m.resume_world || !m.world->dragging()) return;
+  m.inputs.push_back({Impl::DragInput::Kind::End, m.world->frame(), 0, 0});
+  m.world->end_drag();
 }
-bool FrameLoop::dragging() const { return impl_->world && impl_->world->dragging(); }
+bool FrameLoop::dragging() const { return impl_->world && !impl_->kept && impl_->world->dragging(); }
 
 }  // namespace nbscope

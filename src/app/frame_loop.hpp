@@ -5,6 +5,11 @@
 //                    algorithm (+ injected fault) -> cross-check (check/check.hpp)
 //   load_recording*() / step() -> the same on recorded frames (io/recording.hpp) instead of a world:
 //                    no physics, and the check runs only A==R (there is no Box2D world to compare with)
+//   show_frame()  -> a kept past frame (app/history.hpp) made current: its elements, shapes and Box2D
+//                    sets rebuilt from the history (physics/kept_frame.hpp), detected and checked again
+//   begin_resume() / continue_resume() -> the simulation continued from the shown past frame: a fresh
+//                    world re-simulated from the scene with the same steps and drags arrives at that
+//                    frame bit for bit (Box2D is deterministic), and the later frames are replaced
 //
 // After load and after every step() the accessors describe one consistent frame: elements(),
 // pairs() (A), grid() and cells() (the detector's integerisation), report() (counts, timings,
@@ -16,12 +21,16 @@
 // and redetect() throw Error when detection refuses the frame (pair limit, a grid too large), with
 // the frame number in the message. The window should show these and stay open.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "app/history.hpp"
 #include "check/faults.hpp"
 #include "core/detector.hpp"
 #include "core/grid.hpp"
@@ -39,6 +48,9 @@ struct FrameLoopOptions {
   Fault fault = Fault::None;
   bool checks = true;             // run the cross-check every frame
   std::int64_t brute_limit = 2000;  // R is brute force up to this many elements (CheckOptions)
+  // Bytes of past world states the history keeps (FrameHistory::kDefaultBudget in the window); 0
+  // keeps none (headless runs that never go back), summaries are kept either way.
+  std::size_t history_budget = FrameHistory::kDefaultBudget;
 };
 
 class FrameLoop {
@@ -97,11 +109,51 @@ class FrameLoop {
   [[nodiscard]] const std::vector<FrameReport>& comparison_reports() const;
 
   // ---- advancing ----
-  // Advances one frame: physics (or the next recorded frame), elements, detection, check. No effect
-  // without a scene or at a recording's end.
+  // Advances one frame: while a past frame is shown, to the next kept frame (nothing is simulated:
+  // the later frames are the run's own); else physics (or the next recorded frame), elements,
+  // detection, check. No effect without a scene, at a recording's end or while resuming.
   void step();
   // Detects and checks the current frame again without stepping (e.g. while paused).
   void redetect();
+
+  // ---- history: every frame of the run (app/history.hpp) ----
+  // The run's frames: a summary of each, and the kept states that show past ones again.
+  [[nodiscard]] const FrameHistory& history() const;
+  // Bytes of world states to keep; older states are dropped at once when the budget shrinks.
+  void set_history_budget(std::size_t bytes);
+  // Every violation of the run, in frame order.
+  [[nodiscard]] const ViolationLog& violation_log() const;
+  // True while the frame shown is a kept past frame rather than the newest one.
+  [[nodiscard]] bool showing_past() const;
+  // The newest frame of the run: the live world's, or a recording's last.
+  [[nodiscard]] std::int64_t newest_frame() const;
+  // True when frame `frame` can be shown (kept, the newest, or recorded).
+  [[nodiscard]] bool can_show(std::int64_t frame) const;
+  // Makes frame `frame` current, with detection and every check run on it again (the overlays,
+  // panels and stepper then show it as they show a live frame). Throws Error when it is not kept.
+  void show_frame(std::int64_t frame);
+  // The showable frame `delta` frames from the shown one (clamped to the first/newest showable), or
+  // nullopt when there is none in that direction.
+  [[nodiscard]] std::optional<std::int64_t> neighbour(std::int64_t delta) const;
+  // Element k's centre at each showable frame in [from, to], oldest first (a past frame's trail).
+  void element_path(ElementId k, std::int64_t from, std::int64_t to, std::vector<std::array<double, 2>>& out) const;
+
+  // ---- resuming the simulation from a past frame ----
+  // Starts continuing the simulation from the shown past frame K: a fresh world is built from the
+  // scene and stepped to K with the drags recorded before K (continue_resume). No effect on the live
+  // frame or a recording.
+  void begin_resume();
+  // Re-simulates for about `budget_ms` of wall time (at least one step); true once the world is at
+  // K: the frames after K are dropped and K is the live frame. Throws Error as step() does.
+  bool continue_resume(double budget_ms);
+  // Stops a resume before it arrives; the history is unchanged.
+  void cancel_resume();
+  [[nodiscard]] bool resuming() const;
+  // Frames re-simulated so far and the frame being resumed from.
+  [[nodiscard]] std::pair<std::int64_t, std::int64_t> resume_progress() const;
+  // After a resume: the first re-simulated frame whose element hash differed from what the history
+  // kept for it (nullopt: every kept frame on the way was reproduced exactly).
+  [[nodiscard]] std::optional<std::int64_t> resume_divergence() const;
 
   // ---- the current frame ----
   [[nodiscard]] std::int64_t frame() const;   // 0 after load, +1 per step(); a recording's own numbers
@@ -137,7 +189,9 @@ class FrameLoop {
   void trace_frame(TraceLog& out_trace, PairList& out_pairs);
 
   // ---- mouse drag (world coordinates) ----
-  // Grabs the dynamic body under (x, y) with a b2MouseJoint; false when there is none.
+  // Each call is recorded with its frame, so that a resume replays it. Only on the live frame.
+  // Grabs the dynamic body under (x, y) with a b2MouseJoint; false when there is none (or a past
+  // frame is shown: resume first).
   bool begin_drag(double x, double y);
   // Moves the grabbed body's target.
   void drag_to(double x, double y);

@@ -53,7 +53,7 @@ const PairList& FrameChecker::reference_of(const std::string& name) {
   return frame_references_.back().pairs;
 }
 
-void FrameChecker::begin_frame(const PhysicsWorld& world, const DetectOptions& options) {
+void FrameChecker::begin_frame(const Box2dFrame& world, const DetectOptions& options) {
   world_ = &world;
   elements_ = &world.elements();
   frame_ = world.frame();
@@ -121,7 +121,7 @@ void FrameChecker::check(const CheckInput& in, FrameReport& out) {
   for (const Pair& p : pairs_missing_from(a, r_)) report(Invariant::AEqualsR, p, "extra in A (not in R)");
 
   if (world_ == nullptr) return;  // recorded frames: the rest needs Box2D's world
-  const PhysicsWorld& world = *world_;
+  const Box2dFrame& world = *world_;
 
   // A ⊆ F, on the pairs Box2D would consider.
   Box2dScope why;

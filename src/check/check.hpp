@@ -22,7 +22,7 @@
 
 #include "core/detector.hpp"
 #include "io/report_json.hpp"
-#include "physics/world.hpp"
+#include "physics/box2d_frame.hpp"
 
 namespace nbscope {
 
@@ -52,8 +52,9 @@ class FrameChecker {
   [[nodiscard]] static std::string scope_note();
 
   // Computes what does not depend on the algorithm under test, once per frame: F, G and T (R is
-  // computed by the first check() that needs it, and shared by later ones of the frame).
-  void begin_frame(const PhysicsWorld& world, const DetectOptions& options);
+  // computed by the first check() that needs it, and shared by later ones of the frame). `world` is
+  // the live world or a kept past frame (physics/kept_frame.hpp); it must outlive the frame's checks.
+  void begin_frame(const Box2dFrame& world, const DetectOptions& options);
   // A frame without a Box2D world (recorded frames): only A==R can be checked; check() marks the
   // report's box2d_checks false and leaves F, G and T empty. `elements` must outlive the frame's checks.
   void begin_frame(const Elements& elements, std::int64_t frame, const DetectOptions& options);
@@ -79,7 +80,7 @@ class FrameChecker {
   };
 
   CheckOptions options_;
-  const PhysicsWorld* world_ = nullptr;                // of the current frame; null for recorded frames
+  const Box2dFrame* world_ = nullptr;                  // of the current frame; null for recorded frames
   const Elements* elements_ = nullptr;                 // of the current frame
   std::int64_t frame_ = 0;
   DetectOptions detect_options_;

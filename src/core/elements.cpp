@@ -1,6 +1,7 @@
 #include "core/elements.hpp"
 
 #include <cassert>
+#include <cstring>
 
 namespace nbscope {
 
@@ -45,6 +46,31 @@ bool Elements::valid() const {
   const auto coordinates_ok = [](const Eigen::ArrayXd& v) { return (v.abs() <= kMaxCoordinate).all(); };
   if (!coordinates_ok(x) || !coordinates_ok(y) || (dim == 3 && !coordinates_ok(z))) return false;
   return ((r >= kMinRadius) && (r <= kMaxRadius)).all();
+}
+
+std::uint64_t hash_elements(const Elements& e) {
+  constexpr std::uint64_t kPrime = 0x100000001b3ULL;
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  const auto mix = [&](std::uint64_t word) {
+    for (int b = 0; b < 8; ++b) {
+      h ^= (word >> (8 * b)) & 0xffu;
+      h *= kPrime;
+    }
+  };
+  mix(static_cast<std::uint64_t>(e.dim));
+  mix(static_cast<std::uint64_t>(e.size()));
+  const auto column = [&](const Eigen::ArrayXd& v) {
+    for (Eigen::Index k = 0; k < v.size(); ++k) {
+      std::uint64_t bits = 0;
+      std::memcpy(&bits, &v[k], sizeof bits);
+      mix(bits);
+    }
+  };
+  column(e.x);
+  column(e.y);
+  if (e.dim == 3) column(e.z);
+  column(e.r);
+  return h;
 }
 
 Elements make_elements_2d(const Eigen::ArrayXd& x, const Eigen::ArrayXd& y, const Eigen::ArrayXd& r) {

@@ -45,6 +45,11 @@ struct Elements {
   [[nodiscard]] bool valid() const;
 };
 
+// A 64-bit fingerprint of the set (FNV-1a over dim, N and the bit patterns of every coordinate and
+// radius, column by column): equal sets hash equal, so two runs can be compared frame by frame
+// (report "hash", the history's determinism check) without storing the elements.
+[[nodiscard]] std::uint64_t hash_elements(const Elements& elements);
+
 // Builds a 2D set from columns (convenience for tests and benchmarks).
 Elements make_elements_2d(const Eigen::ArrayXd& x, const Eigen::ArrayXd& y, const Eigen::ArrayXd& r);
 

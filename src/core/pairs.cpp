@@ -1,6 +1,7 @@
 #include "core/pairs.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <iterator>
 #include <string>
 
@@ -14,6 +15,54 @@ void PairCollector::overflow() const {
 }
 
 void sort_pairs(PairList& pairs) { std::sort(pairs.begin(), pairs.end()); }
+
+namespace {
+void put_varint(std::vector<std::uint8_t>& out, std::uint32_t v) {
+  while (v >= 0x80u) {
+    out.push_back(static_cast<std::uint8_t>(v | 0x80u));
+    v >>= 7;
+  }
+  out.push_back(static_cast<std::uint8_t>(v));
+}
+std::uint32_t get_varint(const std::uint8_t*& p) {
+  std::uint32_t v = 0;
+  for (int shift = 0;; shift += 7) {
+    const std::uint8_t b = *p++;
+    v |= static_cast<std::uint32_t>(b & 0x7fu) << shift;
+    if ((b & 0x80u) == 0) return v;
+  }
+}
+}  // namespace
+
+PackedPairs PackedPairs::pack(const PairList& sorted) {
+  PackedPairs out;
+  out.count_ = sorted.size();
+  out.bytes_.reserve(sorted.size() * 3);
+  ElementId last_i = 0, last_j = 0;
+  for (const Pair& p : sorted) {
+    assert(p.i >= last_i && p.i < p.j && "PackedPairs::pack: pairs must be sorted with i < j");
+    if (p.i != last_i) last_j = p.i;
+    put_varint(out.bytes_, static_cast<std::uint32_t>(p.i - last_i));
+    put_varint(out.bytes_, static_cast<std::uint32_t>(p.j - last_j));
+    last_i = p.i;
+    last_j = p.j;
+  }
+  out.bytes_.shrink_to_fit();
+  return out;
+}
+
+void PackedPairs::unpack(PairList& out) const {
+  out.resize(count_);
+  const std::uint8_t* p = bytes_.data();
+  ElementId i = 0, j = 0;
+  for (std::size_t k = 0; k < count_; ++k) {
+    const auto di = static_cast<ElementId>(get_varint(p));
+    if (di != 0) j = i + di;
+    i += di;
+    j += static_cast<ElementId>(get_varint(p));
+    out[k] = {i, j};
+  }
+}
 
 PairList pairs_missing_from(const PairList& a, const PairList& b) {
   PairList out;

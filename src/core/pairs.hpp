@@ -49,6 +49,23 @@ class PairCollector {
   std::size_t limit_;
 };
 
+// A sorted pair list packed as variable-length deltas (the gap to the previous i, then the gap to the
+// previous j of the same i, or to i): 2-4 bytes a pair instead of 8, for what the frame history keeps.
+class PackedPairs {
+ public:
+  // Packs `sorted` (i < j, sorted, no duplicates).
+  [[nodiscard]] static PackedPairs pack(const PairList& sorted);
+  // The pairs again, sorted, into `out`.
+  void unpack(PairList& out) const;
+  // Number of pairs, and the bytes they take.
+  [[nodiscard]] std::size_t size() const { return count_; }
+  [[nodiscard]] std::size_t bytes() const { return bytes_.capacity(); }
+
+ private:
+  std::vector<std::uint8_t> bytes_;
+  std::size_t count_ = 0;
+};
+
 // Sorts pairs into (i, j) order; detectors emit them in their own order.
 void sort_pairs(PairList& pairs);
 // Pairs in `a` and not in `b`; both must be sorted.

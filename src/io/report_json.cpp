@@ -5,7 +5,7 @@
 //   violations_total, runs [one per algorithm:
 //     {algorithm, passed, frames_run, violations {total, by_invariant, frames_with_violations, first_frame,
 //      listed}, references_used {name: frames}, timing_ms {physics|detection|check: {mean, max, total}},
-//      frames [{frame, elements, bodies, reference, pairs {A, R, F, T, G, A_in_scope},
+//      frames [{frame, hash (16 hex digits: hash_elements of the frame's elements), elements, bodies, reference, pairs {A, R, F, T, G, A_in_scope},
 //               left_out_of_A_in_F {same_body, no_dynamic, joint, fixture_filter, beyond_aabb},
 //               aabb_float_rounding, ms {physics, detection, check},
 //               held {invariant: true | false | null (not checked)},
@@ -14,6 +14,7 @@
 #include "io/report_json.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <nlohmann/json.hpp>
 
@@ -73,7 +74,10 @@ json frame_json(const FrameReport& f) {
                           {"cells", {{v.cell_i.ix, v.cell_i.iy}, {v.cell_j.ix, v.cell_j.iy}}},
                           {"what", v.what}});
   }
+  char hash[24];
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(f.hash));
   return {{"frame", f.frame},
+          {"hash", hash},
           {"elements", c.elements},
           {"bodies", c.bodies},
           {"reference", f.reference},

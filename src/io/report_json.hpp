@@ -71,6 +71,7 @@ inline constexpr std::size_t kMaxListedViolationsPerFrame = 200;
 // Everything the cross-check found in one frame.
 struct FrameReport {
   std::int64_t frame = 0;
+  std::uint64_t hash = 0;        // hash_elements() of the frame's elements (core/elements.hpp)
   bool checked = false;          // the invariants ran (off in the GUI when the user turns checks off)
   bool box2d_stepped = false;    // A-in-F needs Box2D's contact list, which exists only after a step
   bool box2d_checks = true;      // A-in-F, T-in-A, AABB-in-cells ran: false for recorded frames (no Box2D world)
@@ -84,6 +85,20 @@ struct FrameReport {
   [[nodiscard]] std::int64_t violation_count() const;
   // True when checked and nothing broke.
   [[nodiscard]] bool ok() const { return checked && violation_count() == 0; }
+};
+
+// What the timeline shows of one frame of a run: kept for every frame, whether or not the frame
+// itself can still be shown (the history keeps frames within a memory budget, app/history.hpp).
+struct FrameSummary {
+  std::int64_t frame = 0;
+  double time = 0;
+  std::uint64_t hash = 0;        // hash_elements() of the frame's elements
+  bool kept = false;             // the frame can be shown again (re-detected, re-checked, resumed from)
+  bool checked = false;          // detected and checked (a recorded frame not visited yet: false)
+  std::int64_t elements = 0;
+  std::int64_t pairs = 0;        // |A| of the algorithm shown
+  std::int64_t violations = 0;   // all invariants together
+  float physics_ms = 0, detection_ms = 0, check_ms = 0;
 };
 
 // One algorithm's frames in a headless run.

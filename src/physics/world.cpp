@@ -172,20 +172,55 @@ void PhysicsWorld::step() {
 }
 
 void PhysicsWorld::update_geometry() {
-  const std::size_t n = fixtures_.size();
-  aabbs_.resize(n);
-  if (static_cast<std::size_t>(elements_.size()) != n) {
-    elements_.resize(static_cast<std::int64_t>(n));
-    for (std::size_t i = 0; i < n; ++i) elements_.r[static_cast<Eigen::Index>(i)] = radii_[i];
+  poses_.resize(bodies_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b) poses_[b] = bodies_[b]->GetTransform();
+  geometry_at(poses_, fixtures_.size(), elements_, aabbs_);
+}
+
+void PhysicsWorld::geometry_at(const std::vector<b2Transform>& poses, std::size_t n, Elements& out_elements,
+                               std::vector<b2AABB>& out_aabbs) const {
+  out_aabbs.resize(n);
+  out_elements.dim = 2;
+  if (static_cast<std::size_t>(out_elements.size()) != n) {
+    out_elements.resize(static_cast<std::int64_t>(n));
+    for (std::size_t i = 0; i < n; ++i) out_elements.r[static_cast<Eigen::Index>(i)] = radii_[i];
   }
-  double* const x = elements_.x.data();
-  double* const y = elements_.y.data();
+  double* const x = out_elements.x.data();
+  double* const y = out_elements.y.data();
   for (std::size_t i = 0; i < n; ++i) {
-    const b2Fixture* f = fixtures_[i];
-    const b2Transform& xf = f->GetBody()->GetTransform();
+    const b2Transform& xf = poses[static_cast<std::size_t>(sources_[i].body)];
     world_point(xf, local_centres_[i], x[i], y[i]);
-    f->GetShape()->ComputeAABB(&aabbs_[i], xf, 0);
+    fixtures_[i]->GetShape()->ComputeAABB(&out_aabbs[i], xf, 0);
   }
+}
+
+void PhysicsWorld::capture(WorldState& out, const PairList* contacts) const {
+  out.frame = frame_;
+  out.time = time_;
+  out.fixtures = static_cast<std::int32_t>(fixtures_.size());
+  out.poses.resize(poses_.size());
+  for (std::size_t b = 0; b < poses_.size(); ++b) {
+    const b2Transform& xf = poses_[b];
+    out.poses[b] = BodyPose{xf.p.x, xf.p.y, xf.q.s, xf.q.c};
+  }
+  out.poses.shrink_to_fit();
+  if (contacts != nullptr) {
+    out.contacts = PackedPairs::pack(*contacts);
+  } else {
+    PairList f;
+    contact_pairs(f);
+    out.contacts = PackedPairs::pack(f);
+  }
+}
+
+void PhysicsWorld::element_centre(const WorldState& state, ElementId k, double& x, double& y) const {
+  const auto i = static_cast<std::size_t>(k);
+  const BodyPose& p = state.poses[static_cast<std::size_t>(sources_[i].body)];
+  b2Transform xf;
+  xf.p.Set(p.x, p.y);
+  xf.q.s = p.s;
+  xf.q.c = p.c;
+  world_point(xf, local_centres_[i], x, y);
 }
 
 // ---- F, G, T and the scope of A ⊆ F --------------------------------------------------------
@@ -209,17 +244,20 @@ bool PhysicsWorld::tight_aabbs_overlap(ElementId a, ElementId b) const {
   return b2TestOverlap(aabbs_[static_cast<std::size_t>(a)], aabbs_[static_cast<std::size_t>(b)]);
 }
 
-bool PhysicsWorld::touching(ElementId a, ElementId b) const {
+bool PhysicsWorld::touching_at(ElementId a, ElementId b, const std::vector<b2Transform>& poses,
+                               const Elements& elements) const {
   const b2Fixture* fa = fixtures_[static_cast<std::size_t>(a)];
   const b2Fixture* fb = fixtures_[static_cast<std::size_t>(b)];
   if (fa->GetType() == b2Shape::e_circle && fb->GetType() == b2Shape::e_circle) {
     // Same centres and radii as the elements (see world_point), and Box2D's circle rule.
-    const double dx = elements_.x[a] - elements_.x[b];
-    const double dy = elements_.y[a] - elements_.y[b];
+    const double dx = elements.x[a] - elements.x[b];
+    const double dy = elements.y[a] - elements.y[b];
     const double rr = static_cast<double>(fa->GetShape()->m_radius) + static_cast<double>(fb->GetShape()->m_radius);
     return dx * dx + dy * dy <= rr * rr;
   }
-  return b2TestOverlap(fa->GetShape(), 0, fb->GetShape(), 0, fa->GetBody()->GetTransform(), fb->GetBody()->GetTransform());
+  const b2Transform& xa = poses[static_cast<std::size_t>(sources_[static_cast<std::size_t>(a)].body)];
+  const b2Transform& xb = poses[static_cast<std::size_t>(sources_[static_cast<std::size_t>(b)].body)];
+  return b2TestOverlap(fa->GetShape(), 0, fb->GetShape(), 0, xa, xb);
 }
 
 void PhysicsWorld::ground_truth(PairList& tight_aabb_pairs, PairList& touching_pairs) const {
@@ -236,7 +274,7 @@ void PhysicsWorld::ground_truth(PairList& tight_aabb_pairs, PairList& touching_p
       const ElementId j = element_of(fixture);
       if (j <= i || !self->tight_aabbs_overlap(i, j)) return true;
       g->push_back({i, j});
-      if (self->touching(i, j)) t->push_back({i, j});
+      if (self->touching_at(i, j, self->poses_, self->elements_)) t->push_back({i, j});
       return true;
     }
   } query;
@@ -255,6 +293,11 @@ void PhysicsWorld::ground_truth(PairList& tight_aabb_pairs, PairList& touching_p
 }
 
 void PhysicsWorld::in_box2d_scope(const PairList& pairs, PairList& out, Box2dScope& why_not) const {
+  scope_at(pairs, aabbs_, out, why_not);
+}
+
+void PhysicsWorld::scope_at(const PairList& pairs, const std::vector<b2AABB>& aabbs, PairList& out,
+                            Box2dScope& why_not) const {
   out.clear();
   why_not = {};
   b2ContactFilter* filter = world_->GetContactManager().m_contactFilter;
@@ -286,7 +329,7 @@ void PhysicsWorld::in_box2d_scope(const PairList& pairs, PairList& out, Box2dSco
     // bounding circles are the shapes: a real contact has overlapping AABBs, so it must be in F.
     const bool both_circles =
         fa->GetType() == b2Shape::e_circle && fb->GetType() == b2Shape::e_circle;
-    if (!both_circles && !tight_aabbs_overlap(p.i, p.j)) {
+    if (!both_circles && !b2TestOverlap(aabbs[static_cast<std::size_t>(p.i)], aabbs[static_cast<std::size_t>(p.j)])) {
       ++why_not.beyond_aabb;
       continue;
     }
@@ -296,18 +339,20 @@ void PhysicsWorld::in_box2d_scope(const PairList& pairs, PairList& out, Box2dSco
 
 // ---- shapes --------------------------------------------------------------------------------
 
-void PhysicsWorld::shapes(std::vector<BodyShape>& out) const {
+void PhysicsWorld::shapes(std::vector<BodyShape>& out) const { shapes_at(poses_, fixtures_.size(), out); }
+
+void PhysicsWorld::shapes_at(const std::vector<b2Transform>& poses, std::size_t n, std::vector<BodyShape>& out) const {
   out.clear();
-  out.reserve(fixtures_.size());
-  for (std::size_t i = 0; i < fixtures_.size(); ++i) {
+  out.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
     const b2Fixture* f = fixtures_[i];
     const b2Body* body = f->GetBody();
-    const b2Transform& xf = body->GetTransform();
+    const b2Transform& xf = poses[static_cast<std::size_t>(sources_[i].body)];
     BodyShape s;
     s.element = static_cast<ElementId>(i);
     s.body = sources_[i].body;
     s.body_type = from_b2(body->GetType());
-    s.angle = body->GetAngle();
+    s.angle = std::atan2(static_cast<double>(xf.q.s), static_cast<double>(xf.q.c));
     s.radius = f->GetShape()->m_radius;
     if (f->GetType() == b2Shape::e_circle) {
       s.form = ShapeForm::Circle;

@@ -15,6 +15,7 @@
 #include "core/elements.hpp"
 #include "core/pairs.hpp"
 #include "io/scene_json.hpp"
+#include "physics/box2d_frame.hpp"
 #include "physics/generators.hpp"
 #include "physics/shapes.hpp"
 
@@ -25,16 +26,7 @@ namespace nbscope {
 // two shapes touching whose bounding circles do not meet. Circles are exact.
 inline constexpr double kPolygonCircleMargin = 1e-3;
 
-// Which pairs of A the A ⊆ F invariant applies to, and why the others are left out.
-struct Box2dScope {
-  std::size_t same_body = 0;       // two fixtures of one body: Box2D never pairs them
-  std::size_t no_dynamic = 0;      // neither body dynamic (static/kinematic only): b2Body::ShouldCollide
-  std::size_t joint = 0;           // bodies joined with collideConnected = false
-  std::size_t fixture_filter = 0;  // refused by the world's b2ContactFilter (category/mask/group)
-  std::size_t beyond_aabb = 0;     // a polygon's bounding circle meets, its shapes' tight AABBs do not
-};
-
-class PhysicsWorld {
+class PhysicsWorld final : public Box2dFrame {
  public:
   // Builds the world: gravity, every initial body (scene bodies, then generated ones), sleeping
   // off (bodies must never skip the broadphase). Throws Error naming the scene field when Box2D
@@ -48,37 +40,43 @@ class PhysicsWorld {
   // then the elements and tight AABBs are recomputed at the new transforms.
   void step();
   // Frames stepped since construction, and the simulated time in seconds.
-  [[nodiscard]] std::int64_t frame() const { return frame_; }
-  [[nodiscard]] double time() const { return time_; }
+  [[nodiscard]] std::int64_t frame() const override { return frame_; }
+  [[nodiscard]] double time() const override { return time_; }
   [[nodiscard]] const Scene& scene() const { return scene_; }
 
   // The frame's elements: element k is fixture k's bounding circle (circle: centre and radius;
   // polygon: centroid and farthest vertex + skin + kPolygonCircleMargin), at the current transforms.
-  [[nodiscard]] const Elements& elements() const { return elements_; }
+  [[nodiscard]] const Elements& elements() const override { return elements_; }
   // Element -> (body, fixture), same indexing as elements().
   [[nodiscard]] const std::vector<ElementSource>& sources() const { return sources_; }
-  [[nodiscard]] std::int64_t body_count() const { return static_cast<std::int64_t>(bodies_.size()); }
+  [[nodiscard]] std::int64_t body_count() const override { return static_cast<std::int64_t>(bodies_.size()); }
 
   // F: Box2D's contact list after the last step (fat-AABB pairs that passed Box2D's filters),
   // as sorted element pairs. Empty before the first step (Box2D finds contacts inside Step).
-  void contact_pairs(PairList& out) const;
+  void contact_pairs(PairList& out) const override;
   // G: every pair of fixtures whose tight AABBs (shape->ComputeAABB at the current transforms)
   // overlap, found with world.QueryAABB, no filters applied; and T ⊆ G: the pairs whose shapes
   // touch now (circles: |c1-c2| <= r1+r2 in double as the elements; otherwise b2TestOverlap).
   // Both sorted.
-  void ground_truth(PairList& tight_aabb_pairs, PairList& touching) const;
+  void ground_truth(PairList& tight_aabb_pairs, PairList& touching) const override;
   // The pairs of `pairs` (sorted, i < j) that Box2D's contact list must hold: Box2D's filters
   // applied (same body, no dynamic body, joints, contact filter) and the shapes' tight AABBs
   // overlapping. Counts what was left out and why.
+  void in_box2d_scope(const PairList& pairs, PairList& out, Box2dScope& why_not) const override;
   // The largest bounding-circle radius of the bodies the emitters will add (0 without emitters);
   // `out_where` names the emitter ("file:line: generators[k]: ").
   double largest_emitted_radius(std::string& out_where) const;
-  void in_box2d_scope(const PairList& pairs, PairList& out, Box2dScope& why_not) const;
   // True when the tight AABBs of two elements' fixtures overlap (inclusive, in float as Box2D).
   [[nodiscard]] bool tight_aabbs_overlap(ElementId a, ElementId b) const;
 
   // Every fixture at the current transforms, for drawing (appends to `out` after clearing it).
-  void shapes(std::vector<BodyShape>& out) const;
+  void shapes(std::vector<BodyShape>& out) const override;
+
+  // What the history keeps of this frame (every body's transform, Box2D's contact list) into `out`;
+  // `contacts`, when given, is this frame's contact_pairs() already computed (by the check).
+  void capture(WorldState& out, const PairList* contacts = nullptr) const;
+  // Element k's centre at a kept frame (k must exist at that frame), as elements() had it then.
+  void element_centre(const WorldState& state, ElementId k, double& x, double& y) const;
 
   // Picks the dynamic body under (x, y) and pulls it there with a b2MouseJoint; false if none.
   bool begin_drag(double x, double y);
@@ -92,9 +90,21 @@ class PhysicsWorld {
   [[nodiscard]] const b2World& world() const { return *world_; }
 
  private:
+  friend class KeptWorldFrame;  // rebuilds a past frame with the geometry helpers below
+
   void add_body(const BodySpec& spec);
   void update_geometry();
-  [[nodiscard]] bool touching(ElementId a, ElementId b) const;
+  // Elements and tight AABBs of the first `fixtures` fixtures with bodies at `poses` (live and kept
+  // frames alike, so both compute the same bits).
+  void geometry_at(const std::vector<b2Transform>& poses, std::size_t fixtures, Elements& out_elements,
+                   std::vector<b2AABB>& out_aabbs) const;
+  // True when fixtures a and b touch with their bodies at `poses` (the elements give circle centres).
+  [[nodiscard]] bool touching_at(ElementId a, ElementId b, const std::vector<b2Transform>& poses,
+                                 const Elements& elements) const;
+  // in_box2d_scope() with the tight AABBs of some frame.
+  void scope_at(const PairList& pairs, const std::vector<b2AABB>& aabbs, PairList& out, Box2dScope& why_not) const;
+  // shapes() of the first `fixtures` fixtures with bodies at `poses`.
+  void shapes_at(const std::vector<b2Transform>& poses, std::size_t fixtures, std::vector<BodyShape>& out) const;
 
   Scene scene_;
   std::unique_ptr<b2World> world_;
@@ -107,6 +117,7 @@ class PhysicsWorld {
   std::vector<b2Vec2> local_centres_;    // bounding-circle centre in body coordinates
   std::vector<double> radii_;            // bounding-circle radius
   std::vector<b2AABB> aabbs_;            // tight AABBs at the current transforms
+  std::vector<b2Transform> poses_;       // every body's transform, as of the last update_geometry()
   std::vector<ElementSource> sources_;
   mutable std::vector<std::uint64_t> contact_keys_;  // scratch of contact_pairs()
   Elements elements_;

@@ -1,0 +1,95 @@
+#include "core/locate.hpp"
+
+#include <cstdlib>
+
+#include "core/cells.hpp"
+
+namespace nbscope {
+
+namespace {
+
+using Cell = std::array<std::int32_t, 3>;
+
+// True when cell `b` is in the half contact mask of cell `a` (not `a` itself).
+bool in_mask_of(const Cell& a, const Cell& b, int dim) {
+  const std::int32_t dx = b[0] - a[0], dy = b[1] - a[1], dz = dim == 3 ? b[2] - a[2] : 0;
+  if (std::abs(dx) > 1 || std::abs(dy) > 1 || std::abs(dz) > 1) return false;
+  if (dx == 0 && dy == 0 && dz == 0) return false;
+  return in_half_mask(dx, dy, dz);
+}
+
+bool same_cell(const TraceEvent& e, const Cell& c, int dim) {
+  return e.cell[0] == c[0] && e.cell[1] == c[1] && (dim != 3 || e.cell[2] == c[2]);
+}
+
+}  // namespace
+
+PairLocation locate_pair(std::span<const TraceEvent> events, std::int32_t i, std::int32_t j, const PairCells& cells,
+                         int dim) {
+  PairLocation out;
+  // 1. A test of the pair itself, in either order.
+  std::optional<std::size_t> first_about_i, first_about_j;
+  for (std::size_t n = 0; n < events.size(); ++n) {
+    const TraceEvent& e = events[n];
+    if (e.op == TraceOp::TestPair && ((e.element == i && e.other == j) || (e.element == j && e.other == i))) {
+      out.finding = PairFinding::Tested;
+      out.event = n;
+      out.contact = e.contact;
+      out.scanner = e.element;
+      out.other = e.other;
+      out.cell = e.other == j ? cells.j : cells.i;
+      return out;
+    }
+    if (e.op == TraceOp::Push || e.op == TraceOp::Set) {
+      if (e.element == i && !first_about_i) first_about_i = n;
+      if (e.element == j && !first_about_j) first_about_j = n;
+    }
+  }
+
+  // 2. Which element's mask reaches the other's cell (in the same cell either one tests the other).
+  const bool same = cells.i[0] == cells.j[0] && cells.i[1] == cells.j[1] && (dim != 3 || cells.i[2] == cells.j[2]);
+  if (same || in_mask_of(cells.i, cells.j, dim)) {
+    out.scanner = i;
+    out.other = j;
+    out.cell = cells.j;
+  } else if (in_mask_of(cells.j, cells.i, dim)) {
+    out.scanner = j;
+    out.other = i;
+    out.cell = cells.i;
+  } else {
+    out.finding = first_about_i || first_about_j ? PairFinding::NotNeighbours : PairFinding::NotInTrace;
+    out.event = first_about_i ? first_about_i : first_about_j;
+    out.scanner = i;
+    out.other = j;
+    out.cell = cells.j;
+    return out;
+  }
+
+  // 3. A visit of that cell under the scanner's mask (in the same cell: under either one's).
+  std::optional<std::size_t> last_visit;
+  for (std::size_t n = 0; n < events.size(); ++n) {
+    const TraceEvent& e = events[n];
+    if (e.op != TraceOp::VisitCell) continue;
+    const bool by_scanner = e.element == out.scanner || (same && e.element == out.other);
+    if (!by_scanner) continue;
+    if (same_cell(e, out.cell, dim)) {
+      out.finding = PairFinding::CellVisited;
+      out.event = n;
+      if (e.element != out.scanner) std::swap(out.scanner, out.other);
+      return out;
+    }
+    if (e.element == out.scanner) last_visit = n;
+  }
+
+  // 4. Never visited: show where the scanner's mask was walked, or where it was put in its list.
+  const std::optional<std::size_t> pushed = out.scanner == i ? first_about_i : first_about_j;
+  if (!last_visit && !pushed) {
+    out.finding = PairFinding::NotInTrace;
+    return out;
+  }
+  out.finding = PairFinding::CellNotVisited;
+  out.event = last_visit ? last_visit : pushed;
+  return out;
+}
+
+}  // namespace nbscope

@@ -1,0 +1,50 @@
+// nbscope core: where in one detection's trace a pair was decided — the operation a debugger shows
+// for a check's violation. A pair the detector reported was tested somewhere; a pair it missed was
+// either tested and found apart, or its cells met under a contact mask that skipped the other
+// element, or the mask that should have reached the other element's cell never visited it.
+//
+// Index: PairFinding (what was found) | locate_pair (the search, O(events)).
+#pragma once
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+
+#include "core/trace.hpp"
+
+namespace nbscope {
+
+// How a pair stands in a trace.
+enum class PairFinding : std::uint8_t {
+  Tested,          // `event` tests the pair (TestPair; `contact` its result)
+  CellVisited,     // never tested, but `event` visits the other element's cell under `scanner`'s mask
+  CellNotVisited,  // never tested, and `scanner`'s mask never visits the other's cell; `event` is the
+                   // last mask visit of `scanner` (where that visit should have been), or its push
+  NotNeighbours,   // the two cells are not neighbours: no mask relates them; `event` pushes `first`
+  NotInTrace,      // the trace says nothing about either element
+};
+
+// The answer of locate_pair.
+struct PairLocation {
+  PairFinding finding = PairFinding::NotInTrace;
+  std::optional<std::size_t> event;  // index into the trace's events: the operation to show
+  bool contact = false;              // Tested: the test's result
+  std::int32_t scanner = -1;         // the element whose contact mask reaches the other's cell
+  std::int32_t other = -1;           // the element in that cell
+  std::array<std::int32_t, 3> cell{-1, -1, -1};  // the cell of `other` (iz = -1 in 2D)
+};
+
+// Cells of the two elements of a pair under the detector's grid (iz = -1 in 2D).
+struct PairCells {
+  std::array<std::int32_t, 3> i{-1, -1, -1};
+  std::array<std::int32_t, 3> j{-1, -1, -1};
+};
+
+// Finds the operation of `events` (one detection, dimension `dim`) that decided pair (i, j), given
+// both elements' cells. Deterministic: the first test of the pair, else the first visit of the
+// other's cell by the scanning element, else its last mask visit.
+[[nodiscard]] PairLocation locate_pair(std::span<const TraceEvent> events, std::int32_t i, std::int32_t j,
+                                       const PairCells& cells, int dim);
+
+}  // namespace nbscope

@@ -1,0 +1,40 @@
+// nbscope physics: a past frame of a world, rebuilt from what the history kept of it (WorldState)
+// and the world's fixed geometry: the same elements, shapes, tight AABBs, F, G, T and scope of
+// A-in-F the live world had at that frame, bit for bit, without stepping anything.
+//
+// G and T come from a b2DynamicTree of the frame's tight AABBs (the live world asks its own
+// broadphase): both find every overlapping pair and keep exactly the tight-AABB overlaps.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "physics/world.hpp"
+
+namespace nbscope {
+
+class KeptWorldFrame final : public Box2dFrame {
+ public:
+  // `world` supplies the shapes and bodies (it must be the same scene's world, at this frame or
+  // later, and outlive this object); `state` the frame's transforms and contact list.
+  KeptWorldFrame(const PhysicsWorld& world, std::shared_ptr<const WorldState> state);
+
+  [[nodiscard]] std::int64_t frame() const override { return state_->frame; }
+  [[nodiscard]] double time() const override { return state_->time; }
+  [[nodiscard]] const Elements& elements() const override { return elements_; }
+  [[nodiscard]] std::int64_t body_count() const override { return static_cast<std::int64_t>(state_->poses.size()); }
+  void contact_pairs(PairList& out) const override { state_->contacts.unpack(out); }
+  void ground_truth(PairList& tight_aabb_pairs, PairList& touching) const override;
+  void in_box2d_scope(const PairList& pairs, PairList& out, Box2dScope& why_not) const override;
+  void shapes(std::vector<BodyShape>& out) const override;
+  // The kept state this frame was rebuilt from.
+  [[nodiscard]] const WorldState& state() const { return *state_; }
+
+ private:
+  const PhysicsWorld& world_;
+  std::shared_ptr<const WorldState> state_;
+  std::vector<b2Transform> poses_;
+  Elements elements_;
+  std::vector<b2AABB> aabbs_;
+};
+
+}  // namespace nbscope

@@ -1,0 +1,308 @@
+// The frame history: a kept past frame shows exactly what the live frame showed (elements, shapes,
+// pairs, every check set and report), resuming from it reproduces the original run bit for bit,
+// the memory budget drops the oldest states only, and the run's violation log follows re-checks.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "app/frame_loop.hpp"
+#include "app/history.hpp"
+#include "core/error.hpp"
+#include "io/scene_json.hpp"
+#include "physics/box2d_detector.hpp"
+#include "physics/kept_frame.hpp"
+#include "physics/world.hpp"
+
+namespace nbscope {
+namespace {
+
+const bool kRegistered = (register_physics_detectors(), true);
+
+std::string scene(const std::string& name) { return std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/" + name + ".json"; }
+
+// Everything a frame shows and checks, to compare a live frame with the same frame shown again.
+struct FrameFacts {
+  std::uint64_t hash = 0;
+  Elements elements;
+  PairList pairs, reference, f, t, g;
+  std::vector<CellIndex> cells;
+  std::array<std::int64_t, kInvariantCount> broken{};
+  FrameCounts counts;
+  std::vector<BodyShape> shapes;
+};
+
+FrameFacts facts_of(const FrameLoop& loop) {
+  FrameFacts f;
+  f.hash = loop.report().hash;
+  f.elements = loop.elements();
+  f.pairs = loop.pairs();
+  f.reference = loop.reference_pairs();
+  f.f = loop.box2d_pairs();
+  f.t = loop.touching_pairs();
+  f.g = loop.tight_aabb_pairs();
+  f.cells = loop.cells();
+  f.broken = loop.report().broken;
+  f.counts = loop.report().counts;
+  loop.body_shapes(f.shapes);
+  return f;
+}
+
+void expect_same(const FrameFacts& a, const FrameFacts& b, std::int64_t frame) {
+  SCOPED_TRACE("frame " + std::to_string(frame));
+  EXPECT_EQ(a.hash, b.hash);
+  ASSERT_EQ(a.elements.size(), b.elements.size());
+  EXPECT_TRUE((a.elements.x == b.elements.x).all() && (a.elements.y == b.elements.y).all() &&
+              (a.elements.r == b.elements.r).all());
+  EXPECT_EQ(a.pairs, b.pairs);
+  EXPECT_EQ(a.reference, b.reference);
+  EXPECT_EQ(a.f, b.f);
+  EXPECT_EQ(a.t, b.t);
+  EXPECT_EQ(a.g, b.g);
+  EXPECT_EQ(a.cells, b.cells);
+  EXPECT_EQ(a.broken, b.broken);
+  EXPECT_EQ(a.counts.a_in_scope, b.counts.a_in_scope);
+  EXPECT_EQ(a.counts.beyond_aabb, b.counts.beyond_aabb);
+  EXPECT_EQ(a.counts.no_dynamic, b.counts.no_dynamic);
+  ASSERT_EQ(a.shapes.size(), b.shapes.size());
+  for (std::size_t k = 0; k < a.shapes.size(); ++k) {
+    EXPECT_EQ(a.shapes[k].centre.x, b.shapes[k].centre.x);
+    EXPECT_EQ(a.shapes[k].centre.y, b.shapes[k].centre.y);
+    EXPECT_EQ(a.shapes[k].vertex_count, b.shapes[k].vertex_count);
+    for (int v = 0; v < a.shapes[k].vertex_count; ++v) {
+      EXPECT_EQ(a.shapes[k].vertices[static_cast<std::size_t>(v)].x, b.shapes[k].vertices[static_cast<std::size_t>(v)].x);
+      EXPECT_EQ(a.shapes[k].vertices[static_cast<std::size_t>(v)].y, b.shapes[k].vertices[static_cast<std::size_t>(v)].y);
+    }
+  }
+}
+
+TEST(PackedPairs, RoundTripsSortedPairs) {
+  PairList pairs = {{0, 1}, {0, 7}, {0, 300000}, {2, 3}, {2, 200}, {150, 151}, {150, 9000}, {70000, 70001}};
+  PairList back;
+  PackedPairs::pack(pairs).unpack(back);
+  EXPECT_EQ(back, pairs);
+  PackedPairs::pack({}).unpack(back);
+  EXPECT_TRUE(back.empty());
+  // A dense random-ish list packs to well under 8 bytes a pair.
+  PairList many;
+  for (ElementId i = 0; i < 5000; ++i)
+    for (ElementId d = 1; d <= 6; ++d) many.push_back({i, i + d * 3});
+  const PackedPairs packed = PackedPairs::pack(many);
+  packed.unpack(back);
+  EXPECT_EQ(back, many);
+  EXPECT_LT(packed.bytes(), many.size() * 3);
+}
+
+// Every kept frame of three scenes (circles, boxes, polygons, emitters) rebuilt from the history
+// gives the live frame's elements, shapes and check sets bit for bit.
+TEST(History, AKeptFrameIsTheLiveFrameAgain) {
+  ASSERT_TRUE(kRegistered);
+  for (const char* name : {"default", "mixed-sizes", "pile"}) {
+    SCOPED_TRACE(name);
+    FrameLoop loop;
+    loop.load_scene_file(scene(name));
+    std::map<std::int64_t, FrameFacts> live;
+    live[0] = facts_of(loop);
+    for (int k = 1; k <= 60; ++k) {
+      loop.step();
+      live[k] = facts_of(loop);
+    }
+    for (const std::int64_t k : {0, 1, 17, 42, 59, 60}) {
+      loop.show_frame(k);
+      EXPECT_EQ(loop.frame(), k);
+      EXPECT_EQ(loop.showing_past(), k != 60);
+      expect_same(live[k], facts_of(loop), k);
+    }
+  }
+}
+
+// The kept frame's own broadphase (a tree of its tight AABBs) finds G and T as the live world's does.
+TEST(History, KeptGroundTruthEqualsTheWorldsQuery) {
+  Scene s = read_scene_json(scene("mixed-sizes"));
+  PhysicsWorld world(s);
+  for (int k = 0; k < 40; ++k) world.step();
+  auto state = std::make_shared<WorldState>();
+  world.capture(*state);
+  KeptWorldFrame kept(world, state);
+  PairList g1, t1, g2, t2, f1, f2;
+  world.ground_truth(g1, t1);
+  kept.ground_truth(g2, t2);
+  EXPECT_FALSE(g1.empty());
+  EXPECT_EQ(g1, g2);
+  EXPECT_EQ(t1, t2);
+  world.contact_pairs(f1);
+  kept.contact_pairs(f2);
+  EXPECT_EQ(f1, f2);
+  EXPECT_EQ(kept.body_count(), world.body_count());
+}
+
+// Resuming from a past frame re-simulates the scene to it and continues exactly as the original run.
+TEST(History, ResumingReproducesTheOriginalRun) {
+  ASSERT_TRUE(kRegistered);
+  for (const char* name : {"default", "pile"}) {
+    SCOPED_TRACE(name);
+    FrameLoop straight, rewound;
+    straight.load_scene_file(scene(name));
+    rewound.load_scene_file(scene(name));
+    std::vector<std::uint64_t> hashes{straight.report().hash};
+    for (int k = 1; k <= 120; ++k) {
+      straight.step();
+      hashes.push_back(straight.report().hash);
+    }
+    for (int k = 1; k <= 90; ++k) rewound.step();
+    rewound.show_frame(30);
+    ASSERT_TRUE(rewound.showing_past());
+    rewound.begin_resume();
+    ASSERT_TRUE(rewound.resuming());
+    while (!rewound.continue_resume(1.0)) {
+    }
+    EXPECT_FALSE(rewound.showing_past());
+    EXPECT_FALSE(rewound.resume_divergence().has_value());
+    EXPECT_EQ(rewound.frame(), 30);
+    EXPECT_EQ(rewound.newest_frame(), 30);
+    EXPECT_EQ(rewound.history().summaries().back().frame, 30);
+    EXPECT_EQ(rewound.report().hash, hashes[30]);
+    for (int k = 31; k <= 120; ++k) {
+      rewound.step();
+      ASSERT_EQ(rewound.report().hash, hashes[static_cast<std::size_t>(k)]) << "frame " << k;
+    }
+  }
+}
+
+// Drags are replayed: a run with a mouse drag, rewound past it, reaches the same frames again.
+TEST(History, ResumingReplaysDrags) {
+  ASSERT_TRUE(kRegistered);
+  FrameLoop straight, rewound;
+  for (FrameLoop* loop : {&straight, &rewound}) loop->load_scene_file(scene("default"));
+  const auto drive = [](FrameLoop& loop, int from, int to) {
+    for (int k = from; k < to; ++k) {
+      if (k == 10) {
+        const Elements& e = loop.elements();
+        // The last element is a dynamic circle of the default scene.
+        ASSERT_TRUE(loop.begin_drag(e.x[e.size() - 1], e.y[e.size() - 1]));
+      }
+      if (k > 10 && k < 30) loop.drag_to(static_cast<double>(k) * 0.1, 8.0);
+      if (k == 30) loop.end_drag();
+      loop.step();
+    }
+  };
+  drive(straight, 0, 80);
+  drive(rewound, 0, 60);
+  rewound.show_frame(40);
+  rewound.begin_resume();
+  while (!rewound.continue_resume(5.0)) {
+  }
+  EXPECT_FALSE(rewound.resume_divergence().has_value());
+  drive(rewound, 40, 80);
+  EXPECT_EQ(rewound.report().hash, straight.report().hash);
+  // The drag mattered: without it frame 80 is another.
+  FrameLoop undisturbed;
+  undisturbed.load_scene_file(scene("default"));
+  for (int k = 0; k < 80; ++k) undisturbed.step();
+  EXPECT_NE(undisturbed.report().hash, straight.report().hash);
+}
+
+TEST(History, ThePastIsReadOnlyUntilResumed) {
+  ASSERT_TRUE(kRegistered);
+  FrameLoop loop;
+  loop.load_scene_file(scene("default"));
+  for (int k = 0; k < 20; ++k) loop.step();
+  loop.show_frame(5);
+  const Elements& e = loop.elements();
+  EXPECT_FALSE(loop.begin_drag(e.x[e.size() - 1], e.y[e.size() - 1]));  // resume first
+  loop.step();  // moves through the kept frames, simulates nothing
+  EXPECT_EQ(loop.frame(), 6);
+  EXPECT_EQ(loop.newest_frame(), 20);
+  loop.show_frame(20);
+  EXPECT_FALSE(loop.showing_past());
+  loop.step();
+  EXPECT_EQ(loop.newest_frame(), 21);
+}
+
+TEST(History, TheBudgetDropsTheOldestStatesOnly) {
+  ASSERT_TRUE(kRegistered);
+  FrameLoop loop;
+  loop.load_scene_file(scene("default"));
+  for (int k = 0; k < 50; ++k) loop.step();
+  const std::size_t all = loop.history().bytes();
+  loop.set_history_budget(all / 4);
+  EXPECT_LE(loop.history().bytes(), all / 4 + 51 * sizeof(FrameSummary));
+  EXPECT_EQ(loop.history().size(), 51u);  // every summary stays
+  const auto first = loop.history().first_kept();
+  ASSERT_TRUE(first.has_value());
+  EXPECT_GT(*first, 0);
+  EXPECT_FALSE(loop.can_show(0));
+  EXPECT_TRUE(loop.can_show(50));
+  EXPECT_THROW(loop.show_frame(0), Error);
+  try {
+    loop.show_frame(1);
+  } catch (const Error& err) {
+    EXPECT_NE(std::string(err.what()).find("not kept"), std::string::npos) << err.what();
+  }
+  loop.show_frame(*first);
+  EXPECT_EQ(loop.neighbour(-1), std::nullopt);  // nothing older can be shown
+  EXPECT_EQ(loop.neighbour(-10), std::nullopt);
+  EXPECT_EQ(loop.neighbour(+3), *first + 3);
+  loop.set_history_budget(0);  // only the newest stays
+  EXPECT_EQ(loop.history().first_kept(), 50);
+}
+
+TEST(History, TheViolationLogFollowsTheRun) {
+  ASSERT_TRUE(kRegistered);
+  FrameLoopOptions o;
+  o.fault = Fault::DropPair;
+  FrameLoop loop(o);
+  loop.load_scene_file(scene("default"));
+  for (int k = 0; k < 30; ++k) loop.step();
+  const ViolationLog& log = loop.violation_log();
+  EXPECT_GT(log.total(), 0);
+  EXPECT_EQ(log.total(), static_cast<std::int64_t>(log.listed().size()));
+  for (std::size_t k = 1; k < log.listed().size(); ++k) EXPECT_LE(log.listed()[k - 1].frame, log.listed()[k].frame);
+  const std::int64_t total = log.total();
+  // Showing a frame again checks it again: its violations are replaced, not added.
+  loop.show_frame(10);
+  EXPECT_EQ(log.total(), total);
+  loop.set_fault(Fault::None);  // frame 10 re-checked without the fault
+  EXPECT_LT(log.total(), total);
+  for (const Violation& v : log.listed()) EXPECT_NE(v.frame, 10);
+  // Resuming from frame 10 drops the later frames' violations.
+  loop.begin_resume();
+  while (!loop.continue_resume(5.0)) {
+  }
+  for (const Violation& v : log.listed()) EXPECT_LT(v.frame, 10);
+  EXPECT_EQ(loop.history().summaries().back().frame, 10);
+}
+
+TEST(History, ARecordingIsItsOwnHistory) {
+  ASSERT_TRUE(kRegistered);
+  Recording rec;
+  rec.path = "mem.nbsrec";
+  for (int f = 0; f < 5; ++f) {
+    RecordedFrame frame;
+    frame.number = f * 2;
+    frame.time = f * 0.1;
+    frame.elements = make_elements_2d(Eigen::ArrayXd::LinSpaced(4, 0, 3) + 0.1 * f, Eigen::ArrayXd::Zero(4),
+                                      Eigen::ArrayXd::Constant(4, 0.6));
+    rec.frames.push_back(frame);
+  }
+  FrameLoop loop;
+  loop.load_recording(rec);
+  EXPECT_EQ(loop.history().size(), 5u);
+  EXPECT_TRUE(loop.history().at(0).checked);
+  EXPECT_FALSE(loop.history().at(3).checked);  // not shown yet
+  EXPECT_EQ(loop.newest_frame(), 8);
+  loop.show_frame(6);
+  EXPECT_EQ(loop.frame(), 6);
+  EXPECT_TRUE(loop.history().at(3).checked);
+  EXPECT_EQ(loop.neighbour(-1), 4);
+  EXPECT_EQ(loop.neighbour(+5), 8);
+  EXPECT_FALSE(loop.showing_past());  // recorded frames are all "recorded", none is live
+  loop.begin_resume();                // nothing to resume
+  EXPECT_FALSE(loop.resuming());
+  std::vector<std::array<double, 2>> path;
+  loop.element_path(1, 0, 8, path);
+  ASSERT_EQ(path.size(), 5u);
+  EXPECT_DOUBLE_EQ(path[4][0], 1.4);
+}
+
+}  // namespace
+}  // namespace nbscope
