@@ -1,0 +1,133 @@
+// locate_pair: the operation of a detection's trace that decided a pair — the test of a pair every
+// grid detector and brute force tests, the visit of a cell when a test was lost, the last mask
+// visit when a cell visit was lost, the pushes of two elements in cells that are not neighbours.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "core/detector.hpp"
+#include "core/locate.hpp"
+#include "support/generators.hpp"
+
+namespace nbscope {
+namespace {
+
+using testdata::Layout;
+
+PairCells cells_of(const Grid& g, const Elements& e, std::int32_t i, std::int32_t j) {
+  PairCells c;
+  for (int a = 0; a < e.dim; ++a) {
+    c.i[static_cast<std::size_t>(a)] = g.cell(e.axis(a)[i], a);
+    c.j[static_cast<std::size_t>(a)] = g.cell(e.axis(a)[j], a);
+  }
+  if (e.dim == 2) c.i[2] = c.j[2] = -1;
+  return c;
+}
+
+bool neighbours(const PairCells& c, int dim) {
+  for (int a = 0; a < dim; ++a)
+    if (std::abs(c.i[static_cast<std::size_t>(a)] - c.j[static_cast<std::size_t>(a)]) > 1) return false;
+  return true;
+}
+
+struct Traced {
+  Elements e;
+  Grid grid;
+  TraceLog log;
+  PairList pairs;
+};
+
+Traced traced(const std::string& algorithm, Layout layout, std::int64_t n, int dim, std::uint64_t seed) {
+  Traced t;
+  t.e = testdata::make_layout(layout, n, dim, seed);
+  auto d = make_detector(algorithm);
+  d->detect_traced(t.e, DetectOptions{}, t.pairs, t.log);
+  t.grid = d->last_grid() != nullptr ? *d->last_grid() : make_grid(t.e, GridOptions{});
+  return t;
+}
+
+// Every pair of neighbouring cells is tested by every grid detector (and every pair by brute force),
+// and the test found is that pair's, with the detector's result.
+TEST(LocatePair, FindsTheTestOfEveryNeighbourPair) {
+  for (const DetectorInfo& info : detector_infos()) {
+    if (info.name == "box2d") continue;  // records no trace
+    for (const int dim : {2, 3}) {
+      if ((dim == 2 && !info.dim2) || (dim == 3 && !info.dim3)) continue;
+      for (const Layout layout : {Layout::Dense, Layout::Clustered, Layout::Touching}) {
+        SCOPED_TRACE(info.name + " " + std::to_string(dim) + "D " + testdata::layout_name(layout));
+        const Traced t = traced(info.name, layout, 60, dim, 5);
+        const std::set<Pair> found(t.pairs.begin(), t.pairs.end());
+        int checked = 0;
+        for (std::int32_t i = 0; i < t.e.size(); ++i) {
+          for (std::int32_t j = i + 1; j < t.e.size(); ++j) {
+            const PairCells c = cells_of(t.grid, t.e, i, j);
+            const PairLocation at = locate_pair(t.log.events(), i, j, c, dim);
+            if (!neighbours(c, dim) && info.name != "brute") {
+              EXPECT_EQ(at.finding, PairFinding::NotNeighbours) << i << "," << j;
+              continue;
+            }
+            ASSERT_EQ(at.finding, PairFinding::Tested) << i << "," << j;
+            const TraceEvent& ev = t.log.events()[*at.event];
+            EXPECT_EQ(ev.op, TraceOp::TestPair);
+            EXPECT_TRUE((ev.element == i && ev.other == j) || (ev.element == j && ev.other == i));
+            EXPECT_EQ(at.contact, found.count({i, j}) == 1);
+            ++checked;
+          }
+        }
+        EXPECT_GT(checked, 0);
+      }
+    }
+  }
+}
+
+// A trace that lost a pair's test (as a broken detector would) points at the visit of the cell
+// that holds the other element; one that also lost that visit points at the scanner's last visit.
+TEST(LocatePair, FindsWhereAMissedPairShouldHaveBeenTested) {
+  for (const char* algorithm : {"nbs", "screen", "tree", "sort"}) {
+    SCOPED_TRACE(algorithm);
+    const Traced t = traced(algorithm, Layout::Dense, 80, 2, 11);
+    ASSERT_FALSE(t.pairs.empty());
+    int cases = 0;
+    for (const Pair& p : t.pairs) {
+      const PairCells c = cells_of(t.grid, t.e, p.i, p.j);
+      if (c.i == c.j) continue;  // a pair in one cell: no mask cell between them
+      std::vector<TraceEvent> events = t.log.events();
+      std::erase_if(events, [&](const TraceEvent& e) {
+        return e.op == TraceOp::TestPair && ((e.element == p.i && e.other == p.j) || (e.element == p.j && e.other == p.i));
+      });
+      const PairLocation visited = locate_pair(events, p.i, p.j, c, 2);
+      ASSERT_EQ(visited.finding, PairFinding::CellVisited);
+      const TraceEvent& v = events[*visited.event];
+      EXPECT_EQ(v.op, TraceOp::VisitCell);
+      EXPECT_EQ(v.element, visited.scanner);
+      EXPECT_EQ(v.cell[0], visited.cell[0]);
+      EXPECT_EQ(v.cell[1], visited.cell[1]);
+      const std::array<std::int32_t, 3>& other_cell = visited.other == p.j ? c.j : c.i;
+      EXPECT_EQ(visited.cell, other_cell);
+
+      // The visit itself lost too (the drop-mask-cell kind of bug): the scanner's last visit.
+      const std::int32_t scanner = visited.scanner;
+      std::erase_if(events, [&](const TraceEvent& e) {
+        return e.op == TraceOp::VisitCell && e.element == scanner && e.cell[0] == visited.cell[0] && e.cell[1] == visited.cell[1];
+      });
+      const PairLocation lost = locate_pair(events, p.i, p.j, c, 2);
+      ASSERT_EQ(lost.finding, PairFinding::CellNotVisited);
+      EXPECT_EQ(lost.scanner, scanner);
+      const TraceEvent& last = events[*lost.event];
+      EXPECT_TRUE(last.op == TraceOp::VisitCell || last.op == TraceOp::Push || last.op == TraceOp::Set);
+      EXPECT_EQ(last.element, scanner);
+      for (std::size_t n = *lost.event + 1; n < events.size(); ++n)
+        EXPECT_FALSE(events[n].op == TraceOp::VisitCell && events[n].element == scanner);
+      if (++cases == 10) break;
+    }
+    EXPECT_GT(cases, 0);
+  }
+}
+
+TEST(LocatePair, SaysWhenTheTraceKnowsNothing) {
+  const PairCells c{{0, 0, -1}, {5, 5, -1}};
+  EXPECT_EQ(locate_pair({}, 1, 2, c, 2).finding, PairFinding::NotInTrace);
+}
+
+}  // namespace
+}  // namespace nbscope
