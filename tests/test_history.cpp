@@ -272,6 +272,48 @@ TEST(History, TheViolationLogFollowsTheRun) {
   EXPECT_EQ(loop.history().summaries().back().frame, 10);
 }
 
+// A replay scrubbed back, frame by frame, shows the pairs and check results it showed played forwards.
+TEST(History, AReplayScrubbedBackShowsWhatItShowedForwards) {
+  ASSERT_TRUE(kRegistered);
+  FrameLoop source;
+  source.load_scene_file(scene("mixed-sizes"));
+  Recording rec;
+  rec.path = "mixed.nbsrec";
+  for (int k = 0; k <= 40; ++k) {
+    if (k > 0) source.step();
+    RecordedFrame f;
+    f.number = source.frame();
+    f.time = source.time();
+    f.elements = source.elements();
+    rec.frames.push_back(std::move(f));
+  }
+  FrameLoopOptions o;
+  o.fault = Fault::DropMaskCell;  // violations too, so the check results are compared as well
+  FrameLoop loop(o);
+  loop.load_recording(rec);
+  std::map<std::int64_t, std::pair<PairList, std::array<std::int64_t, kInvariantCount>>> forwards;
+  forwards[loop.frame()] = {loop.pairs(), loop.report().broken};
+  while (!loop.at_end()) {
+    loop.step();
+    forwards[loop.frame()] = {loop.pairs(), loop.report().broken};
+  }
+  ASSERT_EQ(forwards.size(), 41u);
+  std::int64_t broken = 0;
+  for (std::int64_t k = 40; k >= 0; --k) {
+    if (k < 40) {
+      const auto previous = loop.neighbour(-1);
+      ASSERT_TRUE(previous.has_value());
+      loop.show_frame(*previous);
+    }
+    ASSERT_EQ(loop.frame(), k);
+    EXPECT_EQ(loop.pairs(), forwards[k].first) << "frame " << k;
+    EXPECT_EQ(loop.report().broken, forwards[k].second) << "frame " << k;
+    for (const std::int64_t b : loop.report().broken) broken += b;
+  }
+  EXPECT_GT(broken, 0);
+  EXPECT_EQ(loop.neighbour(-1), std::nullopt);
+}
+
 TEST(History, ARecordingIsItsOwnHistory) {
   ASSERT_TRUE(kRegistered);
   Recording rec;

@@ -39,6 +39,7 @@ struct GuiOptions {
   std::optional<std::string> algorithm;
   Fault fault = Fault::None;
   std::optional<std::int64_t> frames;
+  std::optional<std::int64_t> history_mb;  // --history-mb N: memory for kept frames (else the settings' 256)
   ViewOptions view;
 };
 
@@ -48,6 +49,7 @@ GuiOptions parse_gui_options(Args& args) {
   o.algorithm = args.value("--algorithm");
   if (auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);
   if (auto n = args.integer("--frames", 0, 100'000'000)) o.frames = *n;
+  if (auto mb = args.integer("--history-mb", 0, 1'000'000)) o.history_mb = *mb;
   parse_view_options(args, false, o.view);
   if (auto p = args.positional()) throw Error(*p + ": unexpected argument (the scene goes after --scene)");
   args.finish();
@@ -103,13 +105,27 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
       session.error = e.what();
     }
   };
+  // Another frame of the history on screen: the simulation pauses there.
+  auto show = [&](std::int64_t frame) {
+    attempt([&] {
+      loop.show_frame(frame);
+      view.on_frame_shown(loop);
+    });
+    session.paused = true;
+  };
   if (r.toggle_pause) {
     session.paused = !session.paused;
+    session.play_direction = 1;
     // Playing a recording that has ended starts it again.
     if (!session.paused && loop.at_end()) {
       attempt([&] { loop.restart(); });
       view.on_scene_loaded(loop, false);
     }
+  }
+  if (r.play) {
+    const bool same = !session.paused && session.play_direction == *r.play;
+    session.paused = same;
+    session.play_direction = *r.play;
   }
   if (r.speed) session.speed = *r.speed;
   if (r.algorithm) attempt([&] { loop.set_algorithm(*r.algorithm); });
@@ -135,14 +151,64 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
     attempt([&] { loop.restart(); });
     view.on_scene_loaded(loop, false);
   }
-  if (r.step_once) {
+  if (r.history_budget_mb) loop.set_history_budget(static_cast<std::size_t>(*r.history_budget_mb) << 20);
+  if (r.cancel_resume) loop.cancel_resume();
+  if (r.resume_here && loop.showing_past()) {
+    loop.begin_resume();
+    session.resume_note.clear();
+  }
+  if (r.show_frame && !loop.resuming()) show(*r.show_frame);
+  if (r.frame_delta && !loop.resuming()) {
+    if (const auto to = loop.neighbour(*r.frame_delta)) {
+      show(*to);
+    } else if (*r.frame_delta > 0 && !loop.showing_past()) {
+      // Forward from the newest frame: one more step, as O does.
+      session.paused = true;
+      attempt([&] { loop.step(); });
+      view.after_step(loop);
+    }
+  }
+  if (r.step_once && !loop.resuming()) {
     session.paused = true;
     attempt([&] { loop.step(); });
     view.after_step(loop);
   }
+  if (r.go_to_violation && !loop.resuming()) {
+    const auto& listed = loop.violation_log().listed();
+    if (*r.go_to_violation < listed.size()) {
+      const Violation v = listed[*r.go_to_violation];  // a copy: showing the frame checks it again
+      view.state().current_violation = static_cast<std::int64_t>(*r.go_to_violation);
+      if (loop.can_show(v.frame)) {
+        show(v.frame);
+        view.focus_violation(loop, v, false);
+      } else {
+        session.error = "frame " + std::to_string(v.frame) + " is no longer kept (the history budget dropped it; a larger budget in the Timeline keeps more)";
+      }
+    }
+  }
   if (r.drag_begin) loop.begin_drag(r.drag_begin->x(), r.drag_begin->y());
   if (r.drag_to) loop.drag_to(r.drag_to->x(), r.drag_to->y());
   if (r.drag_end) loop.end_drag();
+}
+
+// One slice of a resume in progress (the window stays responsive); when it arrives the simulation
+// plays on from the resumed frame.
+void continue_resume(FrameLoop& loop, GlView& view, Session& session) {
+  try {
+    if (!loop.continue_resume(25.0)) return;
+  } catch (const Error& e) {
+    session.error = e.what();
+    session.paused = true;
+    return;
+  }
+  const std::int64_t k = loop.frame();
+  session.resume_note = loop.resume_divergence()
+                            ? "resumed at " + std::to_string(k) + ": re-simulation DIFFERS from the kept frames from frame " +
+                                  std::to_string(*loop.resume_divergence())
+                            : "resumed at " + std::to_string(k) + " (re-simulated frames matched the kept ones)";
+  view.on_frame_shown(loop);
+  session.paused = false;
+  session.play_direction = 1;
 }
 
 // ---- the window loop --------------------------------------------------------------------------
@@ -158,6 +224,9 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
     if (o.view.panels.empty()) view.state().panel_open = settings->panels;
     session.speed = settings->speed;
   }
+  if (o.history_mb) view.state().history_budget_mb = *o.history_mb;
+  else if (settings != nullptr) view.state().history_budget_mb = settings->history_mb;
+  loop.set_history_budget(static_cast<std::size_t>(view.state().history_budget_mb) << 20);
   view.on_scene_loaded(loop);
   if (settings != nullptr && settings->camera && settings->last_scene == absolute_path(session.scene_path))
     view.camera().set({(*settings->camera)[0], (*settings->camera)[1]}, (*settings->camera)[2]);
@@ -182,10 +251,24 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
         loop.step();
         view.after_step(loop);
       }
+    } else if (loop.resuming()) {
+      continue_resume(loop, view, session);
     } else if (!session.paused) {
       owed_steps += session.speed;
       for (; owed_steps >= 1.0; owed_steps -= 1.0) {
         try {
+          if (session.play_direction < 0) {
+            // Backwards through the kept frames, until the oldest.
+            const auto previous = loop.neighbour(-1);
+            if (!previous) {
+              session.paused = true;
+              owed_steps = 0;
+              break;
+            }
+            loop.show_frame(*previous);
+            view.on_frame_shown(loop);
+            continue;
+          }
           loop.step();
         } catch (const Error& e) {
           session.error = e.what();
@@ -237,6 +320,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
     settings->camera = std::array<double, 3>{view.camera().centre().x(), view.camera().centre().y(),
                                              view.camera().pixels_per_metre()};
     settings->speed = session.speed;
+    settings->history_mb = view.state().history_budget_mb;
   }
   return failed ? 1 : 0;
 }

@@ -125,6 +125,20 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
     s += failures;
   }
   s += " (reference " + refs_text + ")";
+  if (report.stopped_at) {
+    const Violation& v = loop.report().violations.front();
+    s += "; stopped at the first violation, frame " + std::to_string(*report.stopped_at) + ": " + invariant_name(v.invariant) +
+         " (" + std::to_string(v.pair.i) + ", " + std::to_string(v.pair.j) + ") " + v.what;
+  } else if (o.stop_at_violation) {
+    s += "; no violation to stop at";
+  }
+  if (report.rewind) {
+    const RunReport::Rewind& r = *report.rewind;
+    s += "; rewound from frame " + std::to_string(r.from) + " to " + std::to_string(r.to) + " and resumed: " +
+         (r.diverged_at ? "the frames simulated again DIFFER from the first run from frame " + std::to_string(*r.diverged_at)
+                        : "frames " + std::to_string(r.to + 1) + ".." + std::to_string(r.from) +
+                              " simulated again are identical to the first run (element hashes)");
+  }
   // Recorded frames: say plainly what was not checked rather than let it pass silently.
   if (loop.replaying()) s += "; A-in-F, T-in-A, AABB-in-cells not checked (recorded frames have no Box2D world)";
   if (!report.note.empty()) s += " (" + report.note + ")";
@@ -173,7 +187,60 @@ std::vector<std::string> algorithms_of(const std::string& text, std::int64_t ele
   return names;
 }
 
+// True when no frame of the loaded scene or recording can have a pair: no elements now, and no
+// emitter (scene) or recorded frame (recording) that brings any.
+bool nothing_to_check(const FrameLoop& loop) {
+  if (loop.elements().size() > 0) return false;
+  if (loop.replaying()) {
+    for (const FrameSummary& f : loop.history().summaries())
+      if (f.elements > 0) return false;
+    return true;
+  }
+  for (const GeneratorSpec& g : loop.scene().generators)
+    if (g.kind == GeneratorKind::Emitter && g.count > 0) return false;
+  return true;
+}
+
+// --rewind FROM:TO at frame FROM: back to kept frame TO, the world re-simulated to it, the report's
+// frames after TO dropped (they run again).
+// Returns the first pass's element hash of every frame after TO, to compare the second pass with.
+std::map<std::int64_t, std::uint64_t> rewind(FrameLoop& loop, const HeadlessOptions::Rewind& r, RunReport& report) {
+  if (!loop.can_show(r.to)) {
+    const auto first = loop.history().first_kept();
+    throw Error("--rewind: frame " + std::to_string(r.to) + " is no longer kept (frames " +
+                std::to_string(first.value_or(loop.newest_frame())) + ".." + std::to_string(loop.newest_frame()) +
+                " are; a larger --history-mb keeps more)");
+  }
+  loop.show_frame(r.to);
+  loop.begin_resume();
+  while (!loop.continue_resume(1e9)) {
+  }
+  std::map<std::int64_t, std::uint64_t> first_pass;
+  for (const FrameReport& f : report.runs.front().frames)
+    if (f.frame > r.to) first_pass[f.frame] = f.hash;
+  for (AlgorithmRun& run : report.runs)
+    std::erase_if(run.frames, [&](const FrameReport& f) { return f.frame > r.to; });
+  // Frames up to TO were compared while re-simulating; those after TO are compared as they run again.
+  report.rewind = RunReport::Rewind{r.from, r.to, loop.resume_divergence()};
+  return first_pass;
+}
+
 }  // namespace
+
+HeadlessOptions::Rewind parse_rewind(const std::string& text) {
+  const std::size_t colon = text.find(':');
+  const auto number = [&](const std::string& part) -> std::int64_t {
+    if (part.empty() || part.size() > 12 || part.find_first_not_of("0123456789") != std::string::npos)
+      throw Error("--rewind: expected FROM:TO, two frame numbers (e.g. 200:50), got '" + text + "'");
+    return std::stoll(part);
+  };
+  if (colon == std::string::npos) throw Error("--rewind: expected FROM:TO, two frame numbers (e.g. 200:50), got '" + text + "'");
+  HeadlessOptions::Rewind r{number(text.substr(0, colon)), number(text.substr(colon + 1))};
+  if (r.to >= r.from)
+    throw Error("--rewind: " + text + " goes forwards: TO (" + std::to_string(r.to) + ") must be before FROM (" +
+                std::to_string(r.from) + ")");
+  return r;
+}
 
 HeadlessOptions parse_headless_options(Args& args) {
   HeadlessOptions o;
@@ -186,10 +253,26 @@ HeadlessOptions parse_headless_options(Args& args) {
   o.quiet = args.flag("--quiet");
   parse_view_options(args, true, o.view);
   o.record = args.value("--record");
+  o.stop_at_violation = args.flag("--stop-at-violation");
+  if (const auto r = args.value("--rewind")) o.rewind = parse_rewind(*r);
+  if (const auto mb = args.integer("--history-mb", 0, 1'000'000)) o.history_mb = *mb;
   args.finish();
   if (!scene) throw Error("headless: --scene FILE is required");
   o.scene = *scene;
+  if (o.rewind && o.rewind->from > o.frames)
+    throw Error("--rewind: FROM " + std::to_string(o.rewind->from) + " is past the end of the run (--frames " +
+                std::to_string(o.frames) + ")");
+  if (o.rewind && o.record) throw Error("--rewind: --record writes frames as they run; record a straight run");
+  if (o.rewind && o.stop_at_violation) throw Error("--rewind: and --stop-at-violation are two runs; give one");
+  check_stop_at_violation(o);
   return o;
+}
+
+void check_stop_at_violation(const HeadlessOptions& o) {
+  if (!o.stop_at_violation) return;
+  if (o.algorithm == "all" || o.algorithm.find(',') != std::string::npos)
+    throw Error("--stop-at-violation: shows one algorithm's violation; name one (got '" + o.algorithm + "')");
+  if (o.view.step) throw Error("--step: --stop-at-violation puts the stepper at the violation's operation");
 }
 
 int run_headless_loop(const HeadlessOptions& o) {
@@ -203,12 +286,17 @@ int run_headless_loop(const HeadlessOptions& o) {
     check_outputs_distinct({o.replay ? NamedPath{"recording", *o.replay} : NamedPath{"--scene", o.scene}}, outputs);
   }
   check_step_algorithm(o.view, o.algorithm);  // before any frame runs
+  check_stop_at_violation(o);
   std::string note;
   std::vector<std::string> names = algorithms_of(o.algorithm, 0, o.brute_limit, note);
   FrameLoopOptions lo;
   lo.algorithm = o.algorithm == "all" ? "nbs" : names.front();
   lo.fault = o.fault;
   lo.brute_limit = o.brute_limit;
+  // Past frames are kept when the run goes back to one, or draws the Timeline as the window would
+  // (the window's default budget), or the user asks for a budget; else none.
+  const bool keep = o.rewind || o.view.screenshot;
+  lo.history_budget = static_cast<std::size_t>(o.history_mb.value_or(keep ? 256 : 0)) << 20;
   FrameLoop loop(lo);  // an unknown algorithm fails here, before the scene is read
   for (const std::string& name : names) make_detector(name);
   if (o.replay) loop.load_recording_file(*o.replay, o.frames);
@@ -218,6 +306,9 @@ int run_headless_loop(const HeadlessOptions& o) {
     loop.set_algorithm(names.front());
   }
   loop.set_comparison_algorithms(std::vector<std::string>(names.begin() + 1, names.end()));
+  if (o.stop_at_violation && nothing_to_check(loop))
+    throw Error("--stop-at-violation: " + (o.replay ? *o.replay : o.scene) +
+                " has no elements in any frame (and nothing adds any): there is nothing to check");
   // The screenshot's context and shaders are set up first, so a bad --gl/--shader-dir/path fails at once.
   std::unique_ptr<HeadlessView> view = o.view.screenshot ? make_headless_view(o.view, loop) : nullptr;
 
@@ -258,6 +349,8 @@ int run_headless_loop(const HeadlessOptions& o) {
   }
 
   Progress progress(!o.quiet && ::isatty(STDERR_FILENO) == 1, frames);
+  bool rewound = false;
+  std::map<std::int64_t, std::uint64_t> first_pass;  // --rewind: the replaced frames' hashes
   for (std::int64_t k = 0; k < frames; ++k) {
     if (o.replay && k == 0) {
       keep_frame();  // recorded frame 0 was detected and checked on load
@@ -271,10 +364,26 @@ int run_headless_loop(const HeadlessOptions& o) {
     }
     if (view) view->after_step(loop);
     progress.update(k + 1);
+    if (const auto was = first_pass.find(loop.frame());
+        was != first_pass.end() && was->second != loop.report().hash && !report.rewind->diverged_at)
+      report.rewind->diverged_at = loop.frame();
+    if (o.stop_at_violation && loop.report().violation_count() > 0) {
+      report.stopped_at = loop.frame();
+      break;
+    }
+    if (o.rewind && !rewound && loop.frame() == o.rewind->from) {
+      first_pass = rewind(loop, *o.rewind, report);
+      rewound = true;
+      k = o.rewind->to - 1;  // the frames after TO run again
+      if (view) view->on_rewound(loop);
+    }
   }
   progress.finish();
   if (recorder) recorder->commit();
-  if (view) std::fprintf(stderr, "nbscope: %s\n", view->write_screenshot(loop).c_str());
+  if (view) {
+    if (report.stopped_at) view->focus_violation(loop, loop.report().violations.front());
+    std::fprintf(stderr, "nbscope: %s\n", view->write_screenshot(loop).c_str());
+  }
   if (o.report) write_run_report(*o.report, report);
   std::printf("%s\n", summary_of(o, loop, report).c_str());
   return report.passed() ? 0 : 1;

@@ -19,6 +19,7 @@ int run_replay(Args& args) {
   if (const auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);
   o.brute_limit = args.integer("--brute-limit", 0, 1'000'000).value_or(o.brute_limit);
   o.quiet = args.flag("--quiet");
+  o.stop_at_violation = args.flag("--stop-at-violation");
   const bool window = !headless && replay_window_available();
   parse_view_options(args, !window, o.view);
   const auto file = args.positional();  // after the flags, so a flag's value is not taken for it
@@ -33,6 +34,8 @@ int run_replay(Args& args) {
     if (o.algorithm == "all" || o.algorithm.find(',') != std::string::npos)
       throw Error("--algorithm: the window shows one algorithm at a time (switch with 1..9); several need --headless");
     if (o.report) throw Error("--report: needs --headless (the window writes no report)");
+    if (o.stop_at_violation)
+      throw Error("--stop-at-violation: needs --headless (the window lists every violation in its Violations panel)");
     return run_replay_window(o);
   }
   if (!headless) std::fprintf(stderr, "nbscope: no window (no display, or built without it): replaying headless\n");

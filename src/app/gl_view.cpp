@@ -8,10 +8,12 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <tuple>
 
 #include "core/error.hpp"
 #include "render/overlays.hpp"
 #include "render/shader.hpp"
+#include "ui/panels.hpp"
 #include "ui/stepper_panels.hpp"
 
 namespace nbscope {
@@ -187,7 +189,10 @@ void GlView::on_scene_loaded(const FrameLoop& loop, bool fit) {
   previous_cells_ = loop.cells();
   flash_.assign(static_cast<std::size_t>(loop.elements().size()), 0.0f);
   lists_.clear();
+  previous_frame_ = loop.frame();
   if (state_.selected >= loop.elements().size()) state_.selected = -1;
+  state_.selected_pair.reset();
+  state_.current_violation = -1;
   if (fit) fit_camera(loop);
   if (fit && fixed_camera_) {
     // --camera X,Y,PPM: (X, Y) in the middle of the part of the view the panels leave free.
@@ -217,6 +222,73 @@ void GlView::after_step(const FrameLoop& loop) {
     if (k < previous_cells_.size() && !(cells[k] == previous_cells_[k])) flash_[k] = 1.0f;
   }
   previous_cells_ = cells;
+  previous_frame_ = loop.frame();
+}
+
+void GlView::on_frame_shown(const FrameLoop& loop) {
+  // A neighbouring frame flashes as a step does; a jump starts the flashes again.
+  if (std::llabs(loop.frame() - previous_frame_) != 1) {
+    std::fill(flash_.begin(), flash_.end(), 0.0f);
+    previous_cells_ = loop.cells();
+  }
+  after_step(loop);
+  rebuild_trail(loop);
+}
+
+void GlView::rebuild_trail(const FrameLoop& loop) {
+  // The selected element over the kept frames up to this one.
+  trails_.clear();
+  trail_element_ = state_.selected;
+  if (trail_element_ < 0) return;
+  std::vector<std::array<double, 2>> path;
+  loop.element_path(trail_element_, loop.frame() - static_cast<std::int64_t>(kTrailPoints) + 1, loop.frame(), path);
+  auto& t = trails_.emplace_back();
+  for (const auto& p : path) t.emplace_back(static_cast<float>(p[0]), static_cast<float>(p[1]));
+}
+
+void GlView::focus_violation(const FrameLoop& loop, const Violation& v, bool open_stepper) {
+  const Elements& e = loop.elements();
+  if (v.pair.i < 0 || v.pair.j < 0 || v.pair.i >= e.size() || v.pair.j >= e.size()) return;
+  state_.selected = v.pair.i;
+  state_.selected_pair = v.pair;
+  state_.selected_cell = std::array<std::int32_t, 2>{v.cell_i.ix, v.cell_i.iy};
+  state_.panel_open[ui::kViolationsTitle] = true;
+  const auto& log = loop.violation_log().listed();
+  for (std::size_t k = 0; k < log.size(); ++k)
+    if (log[k].frame == v.frame && log[k].pair == v.pair && log[k].invariant == v.invariant) {
+      state_.current_violation = static_cast<std::int64_t>(k);
+      break;
+    }
+  const Eigen::Vector2d a(e.x[v.pair.i], e.y[v.pair.i]), b(e.x[v.pair.j], e.y[v.pair.j]);
+  focus_ = Focus{a, b, (b - a).norm() + e.r[v.pair.i] + e.r[v.pair.j], std::nullopt};
+  apply_focus();
+  rebuild_trail(loop);
+  if (open_stepper) state_.panel_open[ui::kStepperTitle] = true;
+  if (stepper_open()) stepper_->set_target(ui::StepperSession::PairTarget{v.frame, v.pair, v.invariant, v.what});
+}
+
+void GlView::apply_focus() {
+  if (!focus_) return;
+  // The user panned or zoomed since: the camera is theirs again.
+  if (focus_->applied && !(focus_->applied->first == camera_.centre() && focus_->applied->second == camera_.pixels_per_metre())) {
+    focus_.reset();
+    return;
+  }
+  // The pair's middle in the middle of the free view, zoomed so that it spans a sixth to a half of it.
+  const render::ScreenInsets in = host_.insets(state_);
+  const double free_px = std::max(100.0, std::min(context_.width() - in.left - in.right, context_.height() - in.top - in.bottom));
+  double ppm = camera_.pixels_per_metre();
+  if (focus_->span * ppm < free_px / 6) ppm = free_px / 6 / focus_->span;
+  if (focus_->span * ppm > free_px / 2) ppm = free_px / 2 / focus_->span;
+  camera_.set(camera_.centre(), ppm);
+  camera_.centre_on(0.5 * (focus_->a + focus_->b), in);
+  focus_->applied = std::make_pair(camera_.centre(), camera_.pixels_per_metre());
+}
+
+bool GlView::stepper_open() const {
+  for (const auto& p : host_.panels())
+    if (std::string(p->title()) == ui::kStepperTitle) return ui::UiHost::is_open(*p, state_);
+  return false;
 }
 
 void GlView::update_lists(FrameLoop& loop) {
@@ -302,6 +374,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   scene.checks = &checks_;
   scene.lists = state_.overlays.lists ? &lists_ : nullptr;
   scene.selected = state_.selected;
+  scene.focus_pair = state_.selected_pair;
   scene.hovered_cell = state_.hovered_cell;
   if (state_.hovered_cell) scene.focus_row = (*state_.hovered_cell)[1];
   else if (state_.selected >= 0) scene.focus_row = loop.grid().cell(e.y[state_.selected], 1);
@@ -363,6 +436,33 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
                                   ") " + v.what + ", cells (" + num(v.cell_i.ix) + "," + num(v.cell_i.iy) + ") (" +
                                   num(v.cell_j.ix) + "," + num(v.cell_j.iy) + ")");
   }
+  sim.violation_lines_more = sim.violation_count - sim.violation_lines.size();
+  if (loop.fault() != Fault::None) {
+    sim.fault_name = fault_name(loop.fault());
+    sim.fault_description = fault_description(loop.fault());
+  }
+  // The run: its frames for the Timeline, its violations for their panel.
+  const FrameHistory& history = loop.history();
+  sim.timeline = &history.summaries();
+  sim.newest_frame = loop.newest_frame();
+  sim.showing_past = loop.showing_past();
+  sim.replaying = loop.replaying();
+  sim.play_direction = session.play_direction;
+  sim.history_bytes = history.bytes();
+  sim.history_budget = history.budget();
+  sim.history_dropped = history.dropped();
+  sim.resuming = loop.resuming();
+  std::tie(sim.resume_done, sim.resume_target) = loop.resume_progress();
+  sim.resume_note = session.resume_note;
+  const ViolationLog& log = loop.violation_log();
+  sim.violations = &log.listed();
+  sim.violations_total = log.total();
+  sim.violations_by_invariant = log.by_invariant();
+  sim.violation_frames = log.frames();
+  if (state_.current_violation >= static_cast<std::int64_t>(log.listed().size())) state_.current_violation = -1;
+  sim.locate_status = stepper_open() ? stepper_->target_status()
+                                     : "Open the Stepper (View menu) to see the operation that decided this pair.";
+  sim.scene_insets = host_.insets(state_);
   sim.hide_timings = hide_timings_;
   sim.timings.physics_ms = report.timings.physics_ms;
   sim.timings.detect_ms = report.timings.detection_ms;
@@ -394,7 +494,10 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   frame_history_.push_back(static_cast<float>(session.frame_ms > 0 ? session.frame_ms : ms_since(frame_start)));
   if (frame_history_.size() > kFrameHistory) frame_history_.erase(frame_history_.begin());
   if (requests.camera_home) {
+    focus_.reset();
     fit_camera(loop);
+  } else if (focus_) {
+    apply_focus();
   } else if (camera_.at_home() && !(host_.insets(state_) == fitted_insets_)) {
     // Panels opened, closed or resized while the camera is where the last fit put it: fit again
     // into the space they leave.

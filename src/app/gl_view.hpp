@@ -27,7 +27,9 @@ struct Session {
   std::string scene_path;
   std::vector<std::string> scene_files;
   bool paused = false;
+  int play_direction = 1;  // +1 forwards (past frames: through the kept ones, then live), -1 backwards
   double speed = 1.0;
+  std::string resume_note;  // how the last resume went
   std::string error;
   double fps = 0;
   double frame_ms = 0;
@@ -62,6 +64,13 @@ class GlView {
   void on_scene_loaded(const FrameLoop& loop, bool fit = true);
   // Bookkeeping after each FrameLoop::step(): trails of the selection, cell-change flashes.
   void after_step(const FrameLoop& loop);
+  // The loop shows another frame of its history (a jump, a rewind, a resume): the trail is rebuilt
+  // from the kept frames, flashes continue only from the neighbouring frame.
+  void on_frame_shown(const FrameLoop& loop);
+  // Shows `violation` (of the loop's current frame) as choosing it in the Violations panel does: both
+  // elements selected, the camera on them, the Violations panel open; with `open_stepper` (or the
+  // stepper already open) the stepper moves to the operation that decided the pair.
+  void focus_violation(const FrameLoop& loop, const Violation& violation, bool open_stepper = true);
   // Draws one frame (scene, overlays, panels) into the current framebuffer and returns what the
   // user asked for. `live_input` lets keys and mouse act (the window, not scripted runs).
   ui::UiRequests frame(FrameLoop& loop, const Session& session, bool live_input, float dt);
@@ -82,6 +91,11 @@ class GlView {
   void build_shapes(const FrameLoop& loop);
   void build_checks(const FrameLoop& loop);
   void fit_camera(const FrameLoop& loop);
+  void rebuild_trail(const FrameLoop& loop);
+  // Puts the camera on focus_ in the space the panels leave (again while they settle), until the
+  // user moves the camera.
+  void apply_focus();
+  [[nodiscard]] bool stepper_open() const;
   void refit();
 
   render::GlContext& context_;
@@ -100,6 +114,13 @@ class GlView {
   std::optional<render::WorldRect> fit_box_;
   bool home_is_fixed_ = false;  // Home is --camera's view (until the user asks for Home)
   render::ScreenInsets fitted_insets_;
+  // A violation's pair the camera is kept on: both centres and the pair's extent.
+  struct Focus {
+    Eigen::Vector2d a, b;
+    double span = 0;
+    std::optional<std::pair<Eigen::Vector2d, double>> applied;  // where the camera was put
+  };
+  std::optional<Focus> focus_;
   std::string gl_description_;
   Cost cost_;
 
@@ -123,6 +144,7 @@ class GlView {
   ElementId trail_element_ = -1;
   std::vector<std::vector<render::Vec2>> trails_;
   std::vector<CellIndex> previous_cells_;
+  std::int64_t previous_frame_ = -1;  // the frame previous_cells_ belong to
   std::vector<float> flash_;
   std::vector<float> frame_history_;
 };

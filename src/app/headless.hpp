@@ -24,7 +24,20 @@ struct HeadlessOptions {
   std::optional<std::string> record;  // --record OUT.nbsrec: every frame's elements (io/recording.hpp)
   std::optional<std::string> replay;  // `nbscope replay FILE`: recorded frames instead of a scene
                                       // (frames = at most that many of them)
+  bool stop_at_violation = false;     // --stop-at-violation: stop on the first frame with a violation,
+                                      // show it (pair, Violations panel, stepper) and exit 1
+  struct Rewind {
+    std::int64_t from = 0, to = 0;
+  };
+  std::optional<Rewind> rewind;       // --rewind FROM:TO: at frame FROM go back to TO and resume
+  std::optional<std::int64_t> history_mb;  // --history-mb N: memory for kept frames (default: 256 with
+                                           // --rewind, else none: a run that never goes back keeps none)
 };
+
+// Error when --stop-at-violation is combined with what it cannot show (several algorithms, --step).
+void check_stop_at_violation(const HeadlessOptions& options);
+// "FROM:TO" of --rewind; Error names the flag and what is wrong.
+HeadlessOptions::Rewind parse_rewind(const std::string& text);
 
 // Reads every headless flag from `args` and refuses leftovers; throws Error on bad values.
 HeadlessOptions parse_headless_options(Args& args);

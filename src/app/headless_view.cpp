@@ -28,6 +28,10 @@ class OsmesaView final : public HeadlessView {
   }
 
   void after_step(const FrameLoop& loop) override { view_.after_step(loop); }
+  void on_rewound(const FrameLoop& loop) override { view_.on_frame_shown(loop); }
+  void focus_violation(const FrameLoop& loop, const Violation& violation) override {
+    view_.focus_violation(loop, violation);
+  }
 
   std::string write_screenshot(FrameLoop& loop) override {
     auto t0 = Clock::now();

@@ -15,6 +15,11 @@ class HeadlessView {
   virtual ~HeadlessView() = default;
   // Call after every FrameLoop::step() (trails of the selection, cell-change flashes).
   virtual void after_step(const FrameLoop& loop) = 0;
+  // Call after the loop went back to a past frame (trails and flashes start again from it).
+  virtual void on_rewound(const FrameLoop& loop) = 0;
+  // Shows `violation` of the current frame as the Violations panel's choice does: both elements
+  // selected, the camera on them, the Violations panel open and the stepper at the operation.
+  virtual void focus_violation(const FrameLoop& loop, const Violation& violation) = 0;
   // Renders the current frame and writes options.screenshot atomically; returns a one-line
   // summary (path, size, where the time went). Error when the file cannot be written.
   virtual std::string write_screenshot(FrameLoop& loop) = 0;

@@ -1,7 +1,9 @@
 // The headless report. Keys:
 //   nbscope_report (format version 1), source ("scene" | "recording"), scene {path, name} (a recording's
 //   path and file stem), not_checked {invariants [names], why} (recordings: the Box2D invariants), algorithms [names], fault {name, description},
-//   reference_policy, a_in_f_scope, note, invariants [{name, description}], frames_requested, passed,
+//   reference_policy, a_in_f_scope, note, invariants [{name, description}], frames_requested,
+//   rewind (null | {from, to, frames_simulated_again, identical, first_difference}),
+//   stopped_at_violation (null | frame), passed,
 //   violations_total, runs [one per algorithm:
 //     {algorithm, passed, frames_run, violations {total, by_invariant, frames_with_violations, first_frame,
 //      listed}, references_used {name: frames}, timing_ms {physics|detection|check: {mean, max, total}},
@@ -143,6 +145,7 @@ bool AlgorithmRun::passed() const {
 }
 
 bool RunReport::passed() const {
+  if (rewind && rewind->diverged_at) return false;
   for (const AlgorithmRun& r : runs)
     if (!r.passed() || static_cast<std::int64_t>(r.frames.size()) != frames_requested) return false;
   return !runs.empty();
@@ -174,6 +177,13 @@ std::string run_report_json(const RunReport& report) {
                      {"note", report.note},
                      {"invariants", invariants},
                      {"frames_requested", report.frames_requested},
+                     {"rewind", report.rewind ? json{{"from", report.rewind->from},
+                                                     {"to", report.rewind->to},
+                                                     {"frames_simulated_again", report.rewind->from - report.rewind->to},
+                                                     {"identical", !report.rewind->diverged_at},
+                                                     {"first_difference", report.rewind->diverged_at ? json(*report.rewind->diverged_at) : json(nullptr)}}
+                                              : json(nullptr)},
+                     {"stopped_at_violation", report.stopped_at ? json(*report.stopped_at) : json(nullptr)},
                      {"passed", report.passed()},
                      {"violations_total", total}};
   // Each run's summary indented, its frames one line each: a 600-frame report stays readable and greppable.

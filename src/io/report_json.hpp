@@ -6,6 +6,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -122,6 +123,15 @@ struct RunReport {
   std::string source = "scene";      // where the frames came from: "scene" (Box2D) or "recording" (.nbsrec)
   std::int64_t frames_requested = 0;
   std::vector<AlgorithmRun> runs;
+  // headless --rewind FROM:TO: the run went back from frame FROM to TO and simulated the frames
+  // after TO again; `diverged_at` is the first of them whose elements differed from the first pass.
+  struct Rewind {
+    std::int64_t from = 0, to = 0;
+    std::optional<std::int64_t> diverged_at;
+  };
+  std::optional<Rewind> rewind;
+  // headless --stop-at-violation: the frame the run stopped on (nullopt: no violation, every frame ran).
+  std::optional<std::int64_t> stopped_at;
 
   // True when every run ran every requested frame and passed.
   [[nodiscard]] bool passed() const;

@@ -41,6 +41,21 @@ void Camera::look_at(const Eigen::Vector2d& at, double pixels_per_metre, const S
   home_pixels_per_metre_ = pixels_per_metre_;
 }
 
+void Camera::centre_on(const Eigen::Vector2d& p, const ScreenInsets& insets) {
+  if (!p.allFinite()) return;
+  centre_ = p - Eigen::Vector2d(0.5 * (insets.left - insets.right), 0.5 * (insets.bottom - insets.top)) / pixels_per_metre_;
+}
+
+void Camera::keep_in_view(const Eigen::Vector2d& p, const ScreenInsets& insets, double margin) {
+  if (!p.allFinite()) return;
+  // The free area in screen pixels, shrunk by the margin on each side.
+  const double x0 = insets.left, x1 = width_ - insets.right, y0 = insets.top, y1 = height_ - insets.bottom;
+  const double mx = margin * (x1 - x0), my = margin * (y1 - y0);
+  const Eigen::Vector2d s = to_screen(p);
+  if (s.x() >= x0 + mx && s.x() <= x1 - mx && s.y() >= y0 + my && s.y() <= y1 - my) return;
+  centre_on(p, insets);
+}
+
 void Camera::home() {
   centre_ = home_centre_;
   pixels_per_metre_ = home_pixels_per_metre_;

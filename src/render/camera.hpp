@@ -28,6 +28,11 @@ class Camera {
   void look_at(const Eigen::Vector2d& at, double pixels_per_metre, const ScreenInsets& insets = {});
   // Back to the last fitted view.
   void home();
+  // Pans (keeping the scale and Home) so that world point `p` lies inside the viewport minus
+  // `insets`, at least `margin` (a share of that area's size) from its edges; no move when it does.
+  void keep_in_view(const Eigen::Vector2d& p, const ScreenInsets& insets, double margin);
+  // Pans (keeping the scale and Home) so that `p` is in the middle of the viewport minus `insets`.
+  void centre_on(const Eigen::Vector2d& p, const ScreenInsets& insets);
   // True while the view is the last fitted one (the user has not panned or zoomed since).
   [[nodiscard]] bool at_home() const { return centre_ == home_centre_ && pixels_per_metre_ == home_pixels_per_metre_; }
   // Zooms by `factor` (> 1 zooms in) keeping the world point under `screen` where it is.

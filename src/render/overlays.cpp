@@ -435,6 +435,28 @@ void draw_selection(const OverlayScene& s, const WorldRect& view, double ppm, Dr
   sink.circle(Layer::Top, centre_of(e, k), static_cast<float>(e.r[k]), kNone, palette::kSelection, 2.0f, 5.0f);
 }
 
+// The pair of a violation gone to: both cells outlined, both elements ringed (never smaller than
+// 9 px, so the pair is found zoomed out), joined by a dashed-looking double segment.
+void draw_focus_pair(const OverlayScene& s, DrawSink& sink) {
+  const Elements& e = *s.elements;
+  const Pair p = *s.focus_pair;
+  const auto n = static_cast<ElementId>(e.size());
+  if (p.i < 0 || p.j < 0 || p.i >= n || p.j >= n) return;
+  if (s.grid != nullptr) {
+    const Grid& g = *s.grid;
+    const double d = g.cell_size;
+    for (const ElementId k : {p.i, p.j}) {
+      const Vec2 a = v2(g.origin[0] + d * g.cell(e.x[k], 0), g.origin[1] + d * g.cell(e.y[k], 1));
+      sink.rect(Layer::Cells, a, a + Vec2::Constant(float(d)), palette::kSelectionCell);
+    }
+  }
+  const Vec2 a = centre_of(e, p.i), b = centre_of(e, p.j);
+  sink.line(Layer::Top, a, b, palette::kSelection, 3.5f);
+  sink.line(Layer::Top, a, b, palette::kViolation, 1.5f);
+  for (const ElementId k : {p.i, p.j})
+    sink.circle(Layer::Top, centre_of(e, k), static_cast<float>(e.r[k]), kNone, palette::kSelection, 2.5f, 9.0f);
+}
+
 void draw_trails(std::span<const std::vector<Vec2>> trails, DrawSink& sink) {
   for (const auto& t : trails) {
     for (std::size_t i = 1; i < t.size(); ++i) {
@@ -495,6 +517,7 @@ void draw_scene(const OverlayScene& s, const OverlayFlags& f, const Camera& came
   if (f.lists && s.lists != nullptr) draw_lists(s, view, free, ppm, sink);
   draw_selection(s, view, ppm, sink);
   if (f.checks && s.checks != nullptr) draw_violations(e, s.checks->violations, sink);
+  if (s.focus_pair) draw_focus_pair(s, sink);
   if (f.ids || f.lists) draw_ids(e, view, ppm, s.selected, s.book_numbering, labels, sink);
   if (s.drag) sink.line(Layer::Top, (*s.drag)[0], (*s.drag)[1], palette::kDragLine, 1.5f);
 }

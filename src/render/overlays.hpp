@@ -83,6 +83,7 @@ struct OverlayScene {
   const CheckDraw* checks = nullptr;
   const std::vector<TracedList>* lists = nullptr;  // from traced_lists()
   ElementId selected = -1;
+  std::optional<Pair> focus_pair;  // a violation's pair gone to: both elements, their cells and the segment marked
   std::optional<std::array<std::int32_t, 2>> hovered_cell;
   std::optional<std::int32_t> focus_row;  // the row whose secondary (row-below) lists are shown
   std::span<const std::vector<Vec2>> trails;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "ui/panels.hpp"
 
@@ -23,6 +24,8 @@ UiHost::UiHost() {
   add_panel(make_stats_panel());
   add_panel(make_selection_panel());
   add_panel(make_metrics_panel());
+  add_panel(make_violations_panel());
+  add_panel(make_timeline_panel());
 }
 
 void UiHost::add_panel(std::unique_ptr<Panel> panel) {
@@ -61,14 +64,31 @@ void UiHost::draw_menu(UiContext& ctx) {
   if (ImGui::BeginMenu("Help")) {
     ImGui::TextUnformatted("P play/pause   O single step   R restart   Home: fit the scene");
     ImGui::TextUnformatted("1..9 algorithm   Esc: clear the selection");
+    ImGui::Separator();
+    ImGui::TextUnformatted("Timeline: , / . one frame back / forward (Shift: 10)   J play backwards");
+    ImGui::TextUnformatted("          P on a past frame plays on through the kept frames; Resume here re-simulates");
+    ImGui::TextUnformatted("Violations: [ previous   ] next   Shift+[ the first");
+    ImGui::TextUnformatted("Stepper: <- / -> one operation (Shift: one phase)   Space play");
+    ImGui::TextUnformatted("         PageUp / PageDown the operation before / after on the selected element");
+    ImGui::TextUnformatted("         (Shift: on the selected cell)");
+    ImGui::Separator();
     for (const render::OverlayInfo& o : render::overlay_infos()) ImGui::Text("%c  %s", o.key, o.help);
-    ImGui::TextUnformatted("left-click: select an element; left-drag: pull a body (mouse joint)");
-    ImGui::TextUnformatted("right-drag: pan   wheel: zoom about the cursor");
+    ImGui::Separator();
+    ImGui::TextUnformatted("left-click: select an element (or an empty cell); left-drag: pull a body (mouse joint,");
+    ImGui::TextUnformatted("            live frame only)   right-drag: pan   wheel: zoom about the cursor");
     ImGui::EndMenu();
   }
-  ImGui::SameLine(ImGui::GetWindowWidth() - 360.0f);
-  ImGui::TextDisabled("%s  |  %s  |  frame %lld", ctx.sim.scene_name.c_str(), ctx.sim.algorithm.c_str(),
-                      static_cast<long long>(ctx.sim.frame));
+  char where[160];
+  std::snprintf(where, sizeof where, "%s  |  %s  |  frame %lld%s", ctx.sim.scene_name.c_str(), ctx.sim.algorithm.c_str(),
+                static_cast<long long>(ctx.sim.frame), ctx.sim.showing_past ? " (past)" : "");
+  ImGui::SameLine(std::max(ImGui::GetCursorPosX() + 20.0f, ImGui::GetWindowWidth() - ImGui::CalcTextSize(where).x - 16.0f));
+  if (!ctx.sim.fault_name.empty()) {
+    ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowWidth() - ImGui::CalcTextSize(where).x - 16.0f -
+                                                         ImGui::CalcTextSize("FAULT: ").x - ImGui::CalcTextSize(ctx.sim.fault_name.c_str()).x - 16.0f));
+    ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.35f, 1.0f), "FAULT: %s", ctx.sim.fault_name.c_str());
+    ImGui::SameLine();
+  }
+  ImGui::TextDisabled("%s", where);
   ImGui::EndMainMenuBar();
 }
 
@@ -176,11 +196,40 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
   // state needs, as headless does.
   if (accept_input && bottom > 0 && insets_ && insets_->bottom > 0)
     bottom = std::min<double>(std::max(bottom, insets_->bottom), dock_max_h + kGap);
-  insets_ = render::ScreenInsets{left_w > 0 ? left_w + 2 * kGap : 0.0, right_w > 0 ? right_w + 2 * kGap : 0.0, menu, bottom};
+  const float banner = draw_fault_banner(ctx, dock_x0, dock_x1, top);
+  insets_ = render::ScreenInsets{left_w > 0 ? left_w + 2 * kGap : 0.0, right_w > 0 ? right_w + 2 * kGap : 0.0,
+                                 menu + banner, bottom};
   if (accept_input) {
     handle_keys(ctx);
     handle_mouse(ctx);
   }
+}
+
+float UiHost::draw_fault_banner(const UiContext& ctx, float x0, float x1, float top) {
+  if (ctx.sim.fault_name.empty()) return 0.0f;
+  // Between the columns, under the menu bar: in the window and in every screenshot, so a failed
+  // check is never blamed on the algorithm when the failure was planted.
+  const float w = std::max(x1 - x0, 200.0f);
+  ImGui::SetNextWindowPos(ImVec2(x0, top), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(w, 0), ImGuiCond_Always);
+  ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.55f, 0.08f, 0.08f, 0.92f));
+  ImGui::PushStyleColor(ImGuiCol_Border, ImVec4(1.0f, 0.35f, 0.35f, 1.0f));
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoMove |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize |
+                                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus;
+  float height = 0;
+  if (ImGui::Begin("##fault banner", nullptr, flags)) {
+    ImGui::PushTextWrapPos(w - ImGui::GetStyle().WindowPadding.x);
+    ImGui::TextColored(ImVec4(1.0f, 0.92f, 0.92f, 1.0f), "FAULT INJECTED: %s - the checks are meant to fail (Help: --inject-fault)",
+                       ctx.sim.fault_name.c_str());
+    ImGui::PopTextWrapPos();
+    const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    covered_.push_back(render::PixelRect{pos.x, pos.y, pos.x + size.x, pos.y + size.y});
+    height = size.y + kGap;
+  }
+  ImGui::End();
+  ImGui::PopStyleColor(2);
+  return height;
 }
 
 void UiHost::draw_scene(const UiContext& ctx, render::DrawSink& sink) const {
@@ -194,11 +243,23 @@ void UiHost::handle_keys(UiContext& ctx) {
   for (const auto& p : panels_)
     if (is_open(*p, ctx.state) && p->handle_keys(ctx)) return;
   auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
+  const bool shift = io.KeyShift;
+  // The timeline: , and . step through the kept frames (held: repeats), J plays backwards.
+  if (ImGui::IsKeyPressed(',', true)) ctx.requests.frame_delta = shift ? -10 : -1;
+  if (ImGui::IsKeyPressed('.', true)) ctx.requests.frame_delta = shift ? 10 : 1;
+  if (pressed('J')) ctx.requests.play = -1;
+  // Violations: [ previous, ] next, Shift+[ the first.
+  if (pressed('[')) ctx.requests.go_to_violation = step_violation(ctx.sim, ctx.state, shift ? 0 : -1);
+  if (pressed(']')) ctx.requests.go_to_violation = step_violation(ctx.sim, ctx.state, +1);
   if (pressed('P')) ctx.requests.toggle_pause = true;
   if (ImGui::IsKeyPressed('O', true)) ctx.requests.step_once = true;
   if (pressed('R')) ctx.requests.restart = true;
   if (pressed(ImGui::GetKeyIndex(ImGuiKey_Home))) ctx.requests.camera_home = true;
-  if (pressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ctx.state.selected = -1;
+  if (pressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+    ctx.state.selected = -1;
+    ctx.state.selected_pair.reset();
+    ctx.state.selected_cell.reset();
+  }
   for (const render::OverlayInfo& o : render::overlay_infos())
     if (pressed(o.key)) ctx.state.overlays.*o.flag = !(ctx.state.overlays.*o.flag);
   for (std::size_t i = 0; i < ctx.sim.algorithms.size() && i < 9; ++i)
@@ -231,7 +292,10 @@ void UiHost::handle_mouse(UiContext& ctx) {
     ctx.camera.pan_pixels({io.MouseDelta.x, io.MouseDelta.y});
   if (ImGui::IsMouseClicked(0) && !ctx.state.dragging) {
     ctx.state.selected = ctx.sim.elements != nullptr ? render::element_at(*ctx.sim.elements, world) : -1;
-    if (ctx.state.selected >= 0) {
+    ctx.state.selected_pair.reset();
+    ctx.state.selected_cell = ctx.state.hovered_cell;
+    // A past frame is looked at, not pushed: dragging a body needs the live frame (Resume here).
+    if (ctx.state.selected >= 0 && !ctx.sim.showing_past && !ctx.sim.replaying) {
       ctx.requests.drag_begin = world;
       ctx.state.dragging = true;
     }

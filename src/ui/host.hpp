@@ -18,7 +18,8 @@ namespace nbscope::ui {
 
 class UiHost {
  public:
-  // A host with the standard panels: Controls, Scenes, Algorithm, Overlays, Stats, Selection, Metrics.
+  // A host with the standard panels: Controls, Scenes, Algorithm, Overlays, Stats, Selection, Metrics,
+  // Violations and the Timeline.
   UiHost();
   // Adds a panel after the existing ones of its column.
   void add_panel(std::unique_ptr<Panel> panel);
@@ -49,6 +50,9 @@ class UiHost {
   void handle_keys(UiContext& ctx);
   void handle_mouse(UiContext& ctx);
   void draw_menu(UiContext& ctx);
+  // The banner of an injected fault between the columns under the menu bar; returns its height
+  // (0 without a fault).
+  float draw_fault_banner(const UiContext& ctx, float x0, float x1, float top);
   std::vector<std::unique_ptr<Panel>> panels_;
   std::vector<Slot> slots_;
   std::optional<render::ScreenInsets> insets_;

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <optional>
 #include <string>
@@ -14,12 +15,16 @@
 #include "core/elements.hpp"
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
+#include "io/report_json.hpp"
 #include "render/camera.hpp"
 #include "render/lists.hpp"
 #include "render/overlays.hpp"
 #include "render/renderer.hpp"
 
 namespace nbscope::ui {
+
+// Shown index of an element id or array index: itself, or one more in book numbering (-1 stays -1).
+[[nodiscard]] inline std::int64_t shown(std::int64_t value, bool book) { return (book && value >= 0) ? value + 1 : value; }
 
 // One algorithm's cost this frame.
 struct AlgorithmStat {
@@ -69,6 +74,27 @@ struct SimView {
   bool check_box2d = true;                 // A in F, T in A ran (false for recorded frames: no Box2D world)
   std::size_t violation_count = 0;
   std::vector<std::string> violation_lines;  // the first few, one line each
+  std::size_t violation_lines_more = 0;      // this frame's violations not among the lines
+  std::string fault_name;                    // an injected fault ("" for none): a banner says so
+  std::string fault_description;
+
+  // The run's history (Timeline panel) and violations (Violations panel).
+  const std::deque<FrameSummary>* timeline = nullptr;  // every frame of the run, oldest first
+  std::int64_t newest_frame = 0;     // the live frame (a recording: its last)
+  bool showing_past = false;         // the frame shown is a kept past frame
+  bool replaying = false;            // recorded frames: nothing to resume
+  int play_direction = 1;            // while not paused: +1 forwards, -1 backwards through the kept frames
+  std::size_t history_bytes = 0, history_budget = 0;
+  std::int64_t history_dropped = 0;  // frames whose states the budget dropped
+  bool resuming = false;             // re-simulating towards the shown frame
+  std::int64_t resume_done = 0, resume_target = 0;
+  std::string resume_note;           // how the last resume went ("identical to the first run", ...)
+  const std::vector<Violation>* violations = nullptr;  // every violation of the run, in frame order
+  std::int64_t violations_total = 0;  // listed or not
+  std::array<std::int64_t, kInvariantCount> violations_by_invariant{};
+  std::int64_t violation_frames = 0;  // frames with any
+  std::string locate_status;          // where the stepper found the chosen violation's pair
+  render::ScreenInsets scene_insets;  // pixels the panels cover at each edge (last frame)
 
   bool hide_timings = false;  // reproducible screenshots: no wall-clock numbers
   FrameTimings timings;
@@ -88,6 +114,12 @@ struct UiState {
   render::OverlayFlags overlays;
   std::map<std::string, bool> panel_open;  // by panel title; absent = the panel's default
   ElementId selected = -1;
+  std::optional<Pair> selected_pair;  // a violation's pair: both elements marked, the camera on them
+  std::optional<std::array<std::int32_t, 2>> selected_cell;  // the cell last clicked (stepper: its operations)
+  std::int64_t current_violation = -1;  // index into SimView::violations of the one gone to
+  std::array<bool, kInvariantCount> violation_filter{true, true, true, true};  // invariants listed
+  bool follow_operation = false;  // the camera follows the stepper's current operation
+  std::int64_t history_budget_mb = 256;  // the Timeline's memory budget, saved in the settings
   bool book_numbering = false;  // element ids and cell indices shown (and typed) from 1, as the book prints them
   std::optional<std::array<std::int32_t, 2>> hovered_cell;
   std::optional<Eigen::Vector2d> mouse_world;
@@ -106,6 +138,16 @@ struct UiRequests {
   std::optional<double> time_step;
   std::optional<double> speed;
   bool camera_home = false;
+  // History: a kept frame, a step through the kept frames (, . and Shift), play backwards (J) or
+  // forwards, resume the simulation from the past frame shown, a new memory budget.
+  std::optional<std::int64_t> show_frame;
+  std::optional<std::int64_t> frame_delta;
+  std::optional<int> play;  // +1 forwards, -1 backwards (toggles when already playing that way)
+  bool resume_here = false;
+  bool cancel_resume = false;
+  std::optional<std::int64_t> history_budget_mb;
+  // Violations: go to SimView::violations[index] (its frame, both elements, the camera, the stepper).
+  std::optional<std::size_t> go_to_violation;
   // Mouse joint: begin at a world point, move to one, end.
   std::optional<Eigen::Vector2d> drag_begin;
   std::optional<Eigen::Vector2d> drag_to;

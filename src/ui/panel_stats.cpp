@@ -26,7 +26,7 @@ std::string format_bytes(std::size_t bytes) {
 
 class StatsPanel final : public Panel {
  public:
-  [[nodiscard]] const char* title() const override { return "Stats"; }
+  [[nodiscard]] const char* title() const override { return kStatsTitle; }
   [[nodiscard]] PanelPlace place() const override { return PanelPlace::Right; }
   [[nodiscard]] float width() const override { return 290.0f; }
 
@@ -72,10 +72,18 @@ class StatsPanel final : public Panel {
       ImGui::TextDisabled("no Box2D: A in F, T in A, AABB in cells not checked");
       ImGui::PopTextWrapPos();
     } else {
-      ImGui::TextColored(ImVec4(1.0f, 0.3f, 0.3f, 1.0f), "check FAILED: %zu violations", s.violation_count);
+      ImGui::TextColored(ImVec4(1.0f, 0.3f, 0.3f, 1.0f), "check FAILED: %zu violation%s", s.violation_count,
+                         s.violation_count == 1 ? "" : "s");
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.5f, 0.5f, 1.0f));
       for (const std::string& line : s.violation_lines) ImGui::TextWrapped("%s", line.c_str());
       ImGui::PopStyleColor();
+      // Never cut silently: say how many more, and where they all are.
+      if (s.violation_lines_more > 0) {
+        char more[96];
+        std::snprintf(more, sizeof more, "+%zu more: the Violations panel lists them", s.violation_lines_more);
+        if (ImGui::SmallButton(more)) c.state.panel_open[kViolationsTitle] = true;
+      }
+      if (!s.fault_name.empty()) ImGui::TextDisabled("(fault %s injected)", s.fault_name.c_str());
     }
 
     ImGui::Separator();

@@ -1,6 +1,8 @@
 // The Stepper panel: walk the paused frame's detection one book operation at a time — step (→/←),
-// jump by phase (Shift+→/←, or the phase list), scrub over the whole sequence, play at a chosen
-// speed (Space), and run to a breakpoint (an element, a cell, a list, the first pair of an element).
+// jump by phase (Shift+→/←, or the phase list), scrub over the whole sequence, go to operation K,
+// jump to the operation before/after on the selected element or cell (PageUp/PageDown, Shift: cell),
+// play at a chosen speed (Space) with the camera following the operation, and run to a breakpoint
+// (an element, a cell, a list, the first pair of an element).
 #include <imgui.h>
 
 #include <cstdio>
@@ -56,14 +58,21 @@ class StepperPanel final : public Panel {
     Stepper& st = s.stepper();
     draw_transport(s);
     draw_phases(s);
+    draw_long_trace(c, s);
     ImGui::Separator();
     if (const TraceEvent* e = st.current()) {
       ImGui::TextWrapped("%s", describe_event(s, *e).c_str());
     } else {
       ImGui::TextDisabled("before the first operation");
     }
+    if (!s.target_status().empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.55f, 0.55f, 1.0f));
+      ImGui::TextWrapped("violation: %s", s.target_status().c_str());
+      ImGui::PopStyleColor();
+    }
     ImGui::Separator();
     draw_breakpoint(s);
+    follow(c, s);
   }
 
   void draw_scene(const UiContext& c, render::DrawSink& sink) override {
@@ -72,10 +81,16 @@ class StepperPanel final : public Panel {
     if (current) draw_stepper_scene(*session_, sink);
   }
 
-  bool handle_keys(UiContext&) override {
+  bool handle_keys(UiContext& c) override {
     if (!session_->has_capture()) return false;
     Stepper& st = session_->stepper();
     const bool shift = ImGui::GetIO().KeyShift;
+    for (const int direction : {+1, -1}) {
+      const int key = ImGui::GetKeyIndex(direction > 0 ? ImGuiKey_PageDown : ImGuiKey_PageUp);
+      if (!ImGui::IsKeyPressed(key, true)) continue;
+      seek_touching(c, *session_, shift, direction);
+      return true;
+    }
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow), true)) {
       st.pause();
       shift ? st.next_phase() : st.step_forward();
@@ -94,6 +109,58 @@ class StepperPanel final : public Panel {
   }
 
  private:
+  // Operation K, and the operation before/after on the selected element or cell; the camera toggle.
+  void draw_long_trace(UiContext& c, StepperSession& s) {
+    Stepper& st = s.stepper();
+    std::uint64_t k = st.position();
+    const std::uint64_t step = 1, fast = 1000;
+    ImGui::SetNextItemWidth(110);
+    if (ImGui::InputScalar("##goto", ImGuiDataType_U64, &k, &step, &fast, "%llu", ImGuiInputTextFlags_EnterReturnsTrue)) {
+      st.pause();
+      st.seek(static_cast<std::size_t>(k));
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("go to operation K (type, then Enter)");
+    ImGui::SameLine();
+    ImGui::TextDisabled("elem");
+    ImGui::SameLine();
+    if (ImGui::ArrowButton("##eprev", ImGuiDir_Left)) seek_touching(c, s, false, -1);
+    ImGui::SameLine(0, 2);
+    if (ImGui::ArrowButton("##enext", ImGuiDir_Right)) seek_touching(c, s, false, +1);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the operation before/after on the selected element (PageUp/PageDown)");
+    ImGui::SameLine();
+    ImGui::TextDisabled("cell");
+    ImGui::SameLine();
+    if (ImGui::ArrowButton("##cprev", ImGuiDir_Left)) seek_touching(c, s, true, -1);
+    ImGui::SameLine(0, 2);
+    if (ImGui::ArrowButton("##cnext", ImGuiDir_Right)) seek_touching(c, s, true, +1);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the operation before/after on the selected cell (Shift+PageUp/PageDown)");
+    ImGui::SameLine();
+    ImGui::Checkbox("follow", &c.state.follow_operation);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the camera follows the current operation");
+  }
+
+  // The selected element (or cell: the clicked one, else the selected element's) for PageUp/PageDown.
+  static void seek_touching(UiContext& c, StepperSession& s, bool cell, int direction) {
+    std::optional<std::array<std::int32_t, 2>> at = c.state.selected_cell;
+    const ElementId k = c.state.selected;
+    if (!at && k >= 0 && c.sim.grid != nullptr && c.sim.elements != nullptr && k < c.sim.elements->size())
+      at = std::array<std::int32_t, 2>{c.sim.grid->cell(c.sim.elements->x[k], 0), c.sim.grid->cell(c.sim.elements->y[k], 1)};
+    if (cell ? !at : k < 0) {
+      s.status = cell ? "select a cell (click it) first" : "select an element (click it) first";
+      return;
+    }
+    s.seek_touching(cell ? BreakKind::Cell : BreakKind::Element, k, at.value_or(std::array<std::int32_t, 2>{-1, -1}), direction);
+  }
+
+  // With "follow" on, a current operation that leaves the middle of the view brings the camera to it.
+  void follow(UiContext& c, const StepperSession& s) {
+    const std::size_t pos = s.stepper().position();
+    if (!c.state.follow_operation || pos == followed_position_) return;
+    followed_position_ = pos;
+    const auto p = s.focus_point();
+    if (p) c.camera.keep_in_view(*p, c.sim.scene_insets, 0.2);
+  }
+
   void draw_idle(UiContext& c) {
     const StepperSession& s = *session_;
     if (!s.message().empty()) {
@@ -247,6 +314,7 @@ class StepperPanel final : public Panel {
 
   std::shared_ptr<StepperSession> session_;
   ElementId last_selected_ = -1;
+  std::size_t followed_position_ = static_cast<std::size_t>(-1);
   std::array<std::int32_t, 3> list_index_{0, 0, 0};
 };
 

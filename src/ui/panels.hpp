@@ -1,6 +1,8 @@
 // nbscope ui: the standard panels (one file each).
 #pragma once
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "ui/panel.hpp"
 
@@ -20,6 +22,21 @@ std::unique_ptr<Panel> make_stats_panel();
 std::unique_ptr<Panel> make_selection_panel();
 // Self-inspection: draw calls, batches, buffers, frame time history, trace size.
 std::unique_ptr<Panel> make_metrics_panel();
+// The run's frames under the scene: scrub, step and play through the kept ones, resume from a past one.
+std::unique_ptr<Panel> make_timeline_panel();
+// Every violation of the run, filtered by invariant; choosing one goes to it.
+std::unique_ptr<Panel> make_violations_panel();
+
+// Panel titles the app and the host refer to (also their keys in the settings file).
+inline constexpr const char* kTimelineTitle = "Timeline";
+inline constexpr const char* kViolationsTitle = "Violations";
+inline constexpr const char* kStatsTitle = "Stats";
+
+// The violation to go to from the current one (UiState::current_violation) among those the filter
+// lists: direction 0 the first, +1 the next, -1 the previous; nullopt when there is none.
+std::optional<std::size_t> step_violation(const SimView& sim, const UiState& state, int direction);
+// "A==R in frame 3: (4, 6) missing from A (in R); cells (5,6) and (4,7)", in the chosen numbering.
+std::string describe_violation(const Violation& violation, bool book);
 
 // The Selection panel's line for list `l` around element k: "B[1][8]: 11 -> [12] -> 191 -> ... ",
 // the head named as the Arrays panel names it, every number from 1 with `book`.

@@ -50,6 +50,8 @@ Settings load_settings(const std::string& path, std::string& warning) {
     }
     out.speed = j.value("speed", 1.0);
     if (!(out.speed > 0.0 && out.speed <= 100.0)) out.speed = 1.0;
+    const std::int64_t mb = j.contains("history_mb") && j["history_mb"].is_number_integer() ? j["history_mb"].get<std::int64_t>() : 256;
+    out.history_mb = mb >= 0 && mb <= 1'000'000 ? mb : 256;
     return out;
   } catch (const std::exception& e) {
     warning = path + ": " + e.what() + " (settings ignored)";
@@ -67,6 +69,7 @@ void save_settings(const std::string& path, const Settings& s) {
   if (s.algorithm) j["algorithm"] = *s.algorithm;
   if (s.camera) j["camera"] = *s.camera;
   j["speed"] = s.speed;
+  j["history_mb"] = s.history_mb;
   std::error_code ec;
   std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
   if (ec) throw Error(path + ": cannot write: " + ec.message());

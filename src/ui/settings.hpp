@@ -2,6 +2,7 @@
 // a small JSON file in the user's config directory, so the window reopens as it was left.
 #pragma once
 #include <array>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -17,6 +18,7 @@ struct Settings {
   std::optional<std::string> algorithm;
   std::optional<std::array<double, 3>> camera;  // centre x, y and pixels per metre, for last_scene
   double speed = 1.0;
+  std::int64_t history_mb = 256;  // the Timeline's memory budget for kept frames
 };
 
 // $XDG_CONFIG_HOME/nbscope/settings.json, else $HOME/.config/nbscope/settings.json, else "".

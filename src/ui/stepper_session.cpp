@@ -35,14 +35,118 @@ void StepperSession::update(const SimView& sim, double dt_seconds, int ui_frame)
   last_frame_count_ = ui_frame;
   // A configured step (headless --step K) shows whatever frame is on screen; otherwise only a
   // paused frame is recorded, so a running simulation does not pay for tracing every frame.
-  const bool want = sim.paused || pending_step_.has_value();
+  const bool target_here = target_ && target_->frame == sim.frame;
+  const bool want = sim.paused || pending_step_.has_value() || target_here;
   if (want && sim.elements != nullptr && !(key_ == key_of(sim))) capture(sim);
+  if (target_here && (key_ == key_of(sim))) apply_target(sim);
   if (captured_) stepper_.advance(dt_seconds);
   was_current_ = current_for(sim);
 }
 
+void StepperSession::set_target(const PairTarget& target) {
+  target_ = target;
+  target_status_.clear();
+  target_location_.reset();
+}
+
+void StepperSession::apply_target(const SimView& sim) {
+  const PairTarget t = *target_;
+  target_.reset();
+  const bool book = book_numbering;
+  const auto id = [&](std::int64_t k) { return std::to_string(shown(k, book)); };
+  const auto cell_text = [&](const std::array<std::int32_t, 3>& c) {
+    std::string out = "(" + id(c[0]) + "," + id(c[1]);
+    if (c[2] >= 0) out += "," + id(c[2]);
+    return out + ")";
+  };
+  if (!captured_) {
+    target_status_ = "stepper: " + (message_.empty() ? std::string("nothing recorded for frame ") + std::to_string(t.frame) : message_);
+    return;
+  }
+  const Elements& e = elements_;
+  if (t.pair.i < 0 || t.pair.j < 0 || t.pair.i >= e.size() || t.pair.j >= e.size() || !has_locate_grid_) {
+    target_status_ = "stepper: the pair is not among this frame's elements";
+    return;
+  }
+  PairCells cells;
+  for (int a = 0; a < e.dim; ++a) {
+    cells.i[static_cast<std::size_t>(a)] = locate_grid_.cell(e.axis(a)[t.pair.i], a);
+    cells.j[static_cast<std::size_t>(a)] = locate_grid_.cell(e.axis(a)[t.pair.j], a);
+  }
+  const PairLocation at = locate_pair(stepper_.events(), t.pair.i, t.pair.j, cells, e.dim);
+  target_location_ = at;
+  if (at.event) stepper_.seek(*at.event + 1);
+  focus_element = t.pair.i;
+  breakpoint.kind = BreakKind::FirstPairOf;
+  breakpoint.element = t.pair.i;
+  const std::string op = at.event ? "operation " + std::to_string(*at.event + 1) + " of " + std::to_string(stepper_.size()) + ": " : "";
+  const bool missing = t.invariant == Invariant::TInA || (t.invariant == Invariant::AEqualsR && std::string(t.what).find("missing") != std::string::npos);
+  switch (at.finding) {
+    case PairFinding::Tested:
+      target_status_ = op + "k=" + id(at.scanner) + " tested against " + id(at.other) + ": " + (at.contact ? "contact" : "no contact") + ". ";
+      if (missing && at.contact) target_status_ += "The detector found this contact here; it was lost after detection (an output fault), not by the lists.";
+      else if (missing) target_status_ += "The detector's test says no contact where the reference (or Box2D) says contact.";
+      else if (t.invariant == Invariant::AInF) target_status_ += "The detector found this contact here; Box2D's contact list does not have it.";
+      else if (t.invariant == Invariant::AabbInCells) target_status_ += "The detector's own cells " + cell_text(cells.i) + " and " + cell_text(cells.j) + " are neighbours; the cells the check saw are not.";
+      else target_status_ += "The detector reported the pair from this test; the reference does not have it.";
+      break;
+    case PairFinding::CellVisited:
+      target_status_ = op + "the mask of k=" + id(at.scanner) + " visits cell " + cell_text(at.cell) + ", which holds " + id(at.other) +
+                       ", but the pair is never tested there.";
+      break;
+    case PairFinding::CellNotVisited:
+      target_status_ = op + "cell " + cell_text(at.cell) + " of " + id(at.other) + " is in the contact mask of k=" + id(at.scanner) +
+                       " but is never visited; this is the last cell k's mask visits, where that visit was due.";
+      break;
+    case PairFinding::NotNeighbours:
+      target_status_ = op + id(t.pair.i) + " lies in cell " + cell_text(cells.i) + " and " + id(t.pair.j) + " in " + cell_text(cells.j) +
+                       ": not neighbours, so no contact mask relates them; this operation puts " + id(t.pair.i) + " in its list.";
+      break;
+    case PairFinding::NotInTrace:
+      target_status_ = "frame " + std::to_string(t.frame) + "'s " + algorithm_ + " trace records nothing about " + id(t.pair.i) + " and " + id(t.pair.j) + ".";
+      break;
+  }
+  (void)sim;
+}
+
+bool StepperSession::seek_touching(BreakKind kind, std::int32_t element, const std::array<std::int32_t, 2>& cell, int direction) {
+  if (!captured_) return false;
+  Breakpoint b;
+  b.kind = kind;
+  b.element = element;
+  b.cell[0] = cell[0];
+  b.cell[1] = cell[1];
+  b.cell[2] = -1;
+  stepper_.pause();
+  const bool moved = direction > 0 ? stepper_.run_to(b) : stepper_.run_back_to(b);
+  const std::string what = kind == BreakKind::Element ? "element " + std::to_string(shown(element, book_numbering))
+                                                      : "cell (" + std::to_string(shown(cell[0], book_numbering)) + "," +
+                                                            std::to_string(shown(cell[1], book_numbering)) + ")";
+  status = moved ? "" : std::string("no ") + (direction > 0 ? "later" : "earlier") + " operation on " + what;
+  return moved;
+}
+
+std::optional<Eigen::Vector2d> StepperSession::focus_point() const {
+  const TraceEvent* e = stepper_.current();
+  if (e == nullptr) return std::nullopt;
+  if (e->element >= 0 && e->element < elements_.size()) {
+    if (e->op == TraceOp::TestPair && e->other >= 0 && e->other < elements_.size())
+      return Eigen::Vector2d(0.5 * (elements_.x[e->element] + elements_.x[e->other]), 0.5 * (elements_.y[e->element] + elements_.y[e->other]));
+    return Eigen::Vector2d(elements_.x[e->element], elements_.y[e->element]);
+  }
+  if (has_locate_grid_ && e->cell[0] >= 0 && e->cell[1] >= 0) {
+    const double d = locate_grid_.cell_size;
+    return Eigen::Vector2d(locate_grid_.origin[0] + d * (e->cell[0] + 0.5), locate_grid_.origin[1] + d * (e->cell[1] + 0.5));
+  }
+  return std::nullopt;
+}
+
 void StepperSession::capture(const SimView& sim) {
   const std::size_t keep_position = stepper_.position();
+  if (!target_ || target_->frame != sim.frame) {
+    target_status_.clear();  // it described another frame
+    target_location_.reset();
+  }
   key_ = key_of(sim);
   captured_ = false;
   message_.clear();
@@ -54,6 +158,7 @@ void StepperSession::capture(const SimView& sim) {
   tests_of_element_ = -1;
   tests_.clear();
   has_grid_ = false;
+  has_locate_grid_ = false;
   algorithm_ = sim.algorithm;
   frame_ = sim.frame;
   if (sim.elements == nullptr) {
@@ -100,6 +205,8 @@ void StepperSession::capture(const SimView& sim) {
       grid_ = *g;
       has_grid_ = true;
     }
+    has_locate_grid_ = has_grid_ || sim.grid != nullptr;
+    if (has_locate_grid_) locate_grid_ = has_grid_ ? grid_ : *sim.grid;
     const auto& lines = detector->pseudocode(e.dim);
     pseudocode_.assign(lines.begin(), lines.end());
   } catch (const Error& err) {

@@ -6,6 +6,7 @@
 // Index: StepperConfig | StepperSession (capture, per-frame update, shared view settings) |
 // describe_event / entry_name / window_range (text and layout helpers).
 #pragma once
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -14,6 +15,7 @@
 
 #include "core/elements.hpp"
 #include "core/grid.hpp"
+#include "core/locate.hpp"
 #include "core/stepper.hpp"
 #include "ui/model.hpp"
 
@@ -86,6 +88,32 @@ class StepperSession {
   // book numbering like the indices.
   [[nodiscard]] bool holds_elements(int array) const;
 
+  // ---- a violation's pair to find (the Violations panel, headless --stop-at-violation) ----
+  // What the stepper is asked to find: pair (i, j) of frame `frame` and the check that flagged it.
+  struct PairTarget {
+    std::int64_t frame = -1;
+    Pair pair;
+    Invariant invariant = Invariant::AEqualsR;
+    const char* what = "";
+  };
+  // Once the stepper holds `target.frame` (captured even while running), it moves to the operation
+  // that decided the pair (core/locate.hpp) and target_status() says which, and why it matters.
+  void set_target(const PairTarget& target);
+  // True while a target waits for its frame.
+  [[nodiscard]] bool target_pending() const { return target_.has_value(); }
+  // Where the last target was found, in words ("" before any).
+  [[nodiscard]] const std::string& target_status() const { return target_status_; }
+  // The location found for the last target (nullopt before any, or when nothing was recorded).
+  [[nodiscard]] const std::optional<PairLocation>& target_location() const { return target_location_; }
+
+  // ---- long traces ----
+  // The next (direction +1) or previous (-1) operation touching element k (BreakKind::Element) or
+  // cell (ix, iy) (BreakKind::Cell), moved to; false (unmoved) when there is none. Sets status.
+  bool seek_touching(BreakKind kind, std::int32_t element, const std::array<std::int32_t, 2>& cell, int direction);
+  // The world point of the current operation: its element's centre, else its cell's centre; nullopt
+  // at position 0 or without one.
+  [[nodiscard]] std::optional<Eigen::Vector2d> focus_point() const;
+
   // View settings shared by the panels.
   bool book_numbering = false;
   std::int32_t focus_element = -1;  // the Arrays panel's element filter (-1: none)
@@ -117,12 +145,16 @@ class StepperSession {
   std::vector<std::pair<std::uint64_t, std::size_t>> cell_pushes_;  // (cell key, event), sorted
   std::int32_t tests_of_element_ = -1;
   std::vector<TestedPair> tests_;
+  void apply_target(const SimView& sim);
+  std::optional<PairTarget> target_;
+  std::string target_status_;
+  std::optional<PairLocation> target_location_;
+  Grid locate_grid_;  // the captured detector's grid, or the frame's for detectors without one
+  bool has_locate_grid_ = false;
   int last_frame_count_ = -1;
   bool was_current_ = false;
 };
 
-// Shown index of an element id or array index: itself, or one more in book numbering (-1 stays -1).
-[[nodiscard]] inline std::int64_t shown(std::int64_t value, bool book) { return (book && value >= 0) ? value + 1 : value; }
 // True when index `dim` of `array` picks one of a few parallel arrays rather than a cell or an element
 // (NBS's B[0]/B[1] and A[0..4], the tree's child[m][0/1]): the book numbers those from 0 too.
 [[nodiscard]] bool index_is_selector(const TracedArray& array, std::size_t dim);

@@ -1,0 +1,264 @@
+// The Timeline panel, docked under the scene: the run's frames as a strip — kept frames light, frames
+// whose states the memory budget dropped dark — with per-frame plots of pairs (yellow), detection
+// time (cyan) and violations (red bars, and a red tick on every frame that had one), the shown frame
+// as a white cursor. Click or drag to go to a frame; the buttons (and keys) step and play through
+// the kept frames in either direction, and resume the simulation from a past frame.
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "ui/panels.hpp"
+
+namespace nbscope::ui {
+
+namespace {
+
+constexpr float kStripHeight = 42.0f;
+const ImU32 kKeptBg = IM_COL32(48, 52, 62, 255);
+const ImU32 kDroppedBg = IM_COL32(30, 31, 36, 255);
+const ImU32 kPairsLine = IM_COL32(250, 230, 90, 200);
+const ImU32 kTimeLine = IM_COL32(110, 200, 240, 170);
+const ImU32 kViolationBar = IM_COL32(255, 60, 60, 230);
+const ImU32 kCursor = IM_COL32(255, 255, 255, 255);
+const ImU32 kNewest = IM_COL32(120, 220, 140, 220);
+
+// One pixel column of the strip: the frames it covers, aggregated.
+struct Column {
+  bool any = false, kept = false, checked = false;
+  float pairs = 0, ms = 0;
+  std::int64_t violations = 0;
+};
+
+class TimelinePanel final : public Panel {
+ public:
+  [[nodiscard]] const char* title() const override { return kTimelineTitle; }
+  [[nodiscard]] PanelPlace place() const override { return PanelPlace::Bottom; }
+  [[nodiscard]] bool visible(const UiContext& c) const override { return c.sim.timeline != nullptr && !c.sim.timeline->empty(); }
+
+  void draw(UiContext& c) override {
+    const SimView& s = c.sim;
+    draw_transport(c);
+    draw_strip(c);
+    if (s.resuming) {
+      const float done = s.resume_target > 0 ? static_cast<float>(s.resume_done) / static_cast<float>(s.resume_target) : 1.0f;
+      char label[96];
+      std::snprintf(label, sizeof label, "re-simulating frame %lld of %lld", static_cast<long long>(s.resume_done),
+                    static_cast<long long>(s.resume_target));
+      ImGui::ProgressBar(done, ImVec2(-90, 0), label);
+      ImGui::SameLine();
+      if (ImGui::Button("Cancel")) c.requests.cancel_resume = true;
+    }
+  }
+
+ private:
+  void draw_transport(UiContext& c) {
+    const SimView& s = c.sim;
+    const ImVec2 b(28, 0);
+    const bool past = s.showing_past || (s.replaying && s.frame != s.newest_frame);
+    if (ImGui::Button("|<", b)) c.requests.show_frame = first_showable(s);
+    tooltip("the oldest kept frame");
+    ImGui::SameLine();
+    const bool backwards = !s.paused && s.play_direction < 0;
+    if (ImGui::Button(backwards ? "||##back" : "<<", b)) c.requests.play = -1;
+    tooltip("play backwards through the kept frames (J)");
+    ImGui::SameLine();
+    if (ImGui::Button("<", b)) c.requests.frame_delta = -1;
+    tooltip("one frame back (,); Shift+, ten");
+    ImGui::SameLine();
+    const bool forwards = !s.paused && s.play_direction > 0;
+    if (ImGui::Button(forwards ? "||" : ">##play", b)) c.requests.play = +1;
+    tooltip(past ? "play forwards through the kept frames, then on (P)" : "play (P)");
+    ImGui::SameLine();
+    if (ImGui::Button(">", b)) c.requests.frame_delta = +1;
+    tooltip("one frame forward (.); Shift+. ten; at the newest frame: one step");
+    ImGui::SameLine();
+    if (ImGui::Button(">|", b)) c.requests.show_frame = s.newest_frame;
+    tooltip(s.replaying ? "the last recorded frame" : "the newest (live) frame");
+    ImGui::SameLine();
+    if (s.showing_past) {
+      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "frame %lld of %lld (past)", static_cast<long long>(s.frame),
+                         static_cast<long long>(s.newest_frame));
+      ImGui::SameLine();
+      if (ImGui::SmallButton("Resume here")) c.requests.resume_here = true;
+      tooltip("continue the simulation from this frame: the later frames are replaced. The scene is re-simulated\n"
+              "from frame 0 with the same steps and drags, so Box2D arrives here bit for bit.");
+    } else {
+      ImGui::Text("frame %lld of %lld%s", static_cast<long long>(s.frame), static_cast<long long>(s.newest_frame),
+                  s.replaying ? " (recorded)" : " (live)");
+    }
+    if (!s.resume_note.empty()) {
+      ImGui::SameLine();
+      ImGui::TextDisabled("%s", s.resume_note.c_str());
+    }
+    // The memory the kept frames take, and the budget (a click opens the setting).
+    char mem[96];
+    if (s.replaying) {
+      std::snprintf(mem, sizeof mem, "%zu recorded frames", s.timeline->size());
+    } else if (s.history_budget == 0) {
+      std::snprintf(mem, sizeof mem, "no past frames kept (budget 0 MB)");
+    } else {
+      std::snprintf(mem, sizeof mem, "history %.1f / %.0f MB", static_cast<double>(s.history_bytes) / 1048576.0,
+                    static_cast<double>(s.history_budget) / 1048576.0);
+    }
+    const float w = ImGui::CalcTextSize(mem).x + 2 * ImGui::GetStyle().FramePadding.x;
+    ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowContentRegionMax().x - w));
+    if (ImGui::SmallButton(mem) && !s.replaying) ImGui::OpenPopup("budget");
+    if (!s.replaying) {
+      tooltip(s.history_dropped > 0 ? "the oldest frames' states were dropped to stay within the budget; their summaries stay"
+                                    : "memory for the kept frames (oldest dropped first)");
+    }
+    if (ImGui::BeginPopup("budget")) {
+      int mb = static_cast<int>(c.state.history_budget_mb);
+      ImGui::SetNextItemWidth(160);
+      if (ImGui::SliderInt("MB kept", &mb, 16, 4096, "%d MB", ImGuiSliderFlags_Logarithmic)) {
+        c.state.history_budget_mb = mb;
+        c.requests.history_budget_mb = mb;
+      }
+      ImGui::TextDisabled("%lld frames dropped so far", static_cast<long long>(s.history_dropped));
+      ImGui::EndPopup();
+    }
+  }
+
+  void draw_strip(UiContext& c) {
+    const SimView& s = c.sim;
+    const std::deque<FrameSummary>& frames = *s.timeline;
+    const float width = std::max(ImGui::GetContentRegionAvail().x, 50.0f);
+    const ImVec2 p0 = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton("##strip", ImVec2(width, kStripHeight));
+    const bool hovered = ImGui::IsItemHovered();
+    const bool active = ImGui::IsItemActive();
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const std::int64_t f0 = frames.front().frame;
+    const std::int64_t f1 = std::max(frames.back().frame, f0 + 1);
+    const auto x_of = [&](std::int64_t f) {
+      return p0.x + static_cast<float>(static_cast<double>(f - f0) / static_cast<double>(f1 - f0)) * (width - 1.0f);
+    };
+
+    // Aggregate the frames into pixel columns.
+    const int n_cols = std::max(1, static_cast<int>(width));
+    cols_.assign(static_cast<std::size_t>(n_cols), Column{});
+    float max_pairs = 1, max_ms = 1e-3f;
+    std::int64_t max_violations = 1;
+    for (const FrameSummary& f : frames) {
+      const int x = std::clamp(static_cast<int>(x_of(f.frame) - p0.x), 0, n_cols - 1);
+      Column& col = cols_[static_cast<std::size_t>(x)];
+      col.any = true;
+      col.kept = col.kept || f.kept;
+      if (!f.checked) continue;
+      col.checked = true;
+      col.pairs = std::max(col.pairs, static_cast<float>(f.pairs));
+      col.ms = std::max(col.ms, f.detection_ms);
+      col.violations += f.violations;
+      max_pairs = std::max(max_pairs, col.pairs);
+      max_ms = std::max(max_ms, col.ms);
+      max_violations = std::max(max_violations, col.violations);
+    }
+    dl->AddRectFilled(p0, ImVec2(p0.x + width, p0.y + kStripHeight), kDroppedBg);
+    const float plot_top = p0.y + 5, plot_h = kStripHeight - 8;
+    for (int x = 0; x < n_cols; ++x) {
+      const Column& col = cols_[static_cast<std::size_t>(x)];
+      if (!col.any) continue;
+      const float px = p0.x + static_cast<float>(x);
+      if (col.kept) dl->AddLine(ImVec2(px + 0.5f, p0.y), ImVec2(px + 0.5f, p0.y + kStripHeight), kKeptBg);
+      if (col.violations > 0) {
+        const float h = 4.0f + (plot_h - 4.0f) * 0.5f * static_cast<float>(col.violations) / static_cast<float>(max_violations);
+        dl->AddRectFilled(ImVec2(px, p0.y + kStripHeight - h), ImVec2(px + 1.5f, p0.y + kStripHeight), kViolationBar);
+        dl->AddRectFilled(ImVec2(px - 1, p0.y), ImVec2(px + 2, p0.y + 4), kViolationBar);  // the marker
+      }
+    }
+    // Polylines of the aggregated columns (gaps where nothing was checked).
+    const auto plot = [&](float Column::*value, float max_value, ImU32 colour) {
+      ImVec2 last;
+      bool have_last = false;
+      for (int x = 0; x < n_cols; ++x) {
+        const Column& col = cols_[static_cast<std::size_t>(x)];
+        if (!col.checked) continue;
+        const ImVec2 p(p0.x + static_cast<float>(x), plot_top + plot_h * (1.0f - col.*value / max_value));
+        if (have_last) dl->AddLine(last, p, colour, 1.2f);
+        else dl->AddCircleFilled(p, 1.2f, colour);
+        last = p;
+        have_last = true;
+      }
+    };
+    plot(&Column::pairs, max_pairs, kPairsLine);
+    if (!s.hide_timings) plot(&Column::ms, max_ms, kTimeLine);
+    dl->AddLine(ImVec2(x_of(s.newest_frame), p0.y), ImVec2(x_of(s.newest_frame), p0.y + kStripHeight), kNewest, 1.0f);
+    const float cx = x_of(s.frame);
+    dl->AddRectFilled(ImVec2(cx - 1, p0.y - 1), ImVec2(cx + 2, p0.y + kStripHeight + 1), kCursor);
+    dl->AddRect(p0, ImVec2(p0.x + width, p0.y + kStripHeight), IM_COL32(90, 95, 110, 255));
+
+    if (hovered || active) {
+      const double t = std::clamp((ImGui::GetIO().MousePos.x - p0.x) / std::max(width - 1.0f, 1.0f), 0.0f, 1.0f);
+      const std::int64_t want = f0 + static_cast<std::int64_t>(std::llround(t * static_cast<double>(f1 - f0)));
+      const FrameSummary* near = nearest(frames, want);
+      if (near != nullptr && hovered) {
+        if (near->checked) {
+          ImGui::SetTooltip("frame %lld%s\nA = %lld pairs, detection %s ms\n%lld violations", static_cast<long long>(near->frame),
+                            near->kept ? "" : " (not kept: the budget dropped it)", static_cast<long long>(near->pairs),
+                            format_ms(s, near->detection_ms).c_str(), static_cast<long long>(near->violations));
+        } else {
+          ImGui::SetTooltip("frame %lld%s\nnot checked yet", static_cast<long long>(near->frame),
+                            near->kept ? "" : " (not kept)");
+        }
+      }
+      // Clicking or dragging goes to the nearest frame that can be shown.
+      if (active && near != nullptr && near->frame != s.frame) {
+        const FrameSummary* target = near->kept || near->frame == s.newest_frame ? near : nearest_kept(frames, want);
+        if (target != nullptr && target->frame != s.frame) c.requests.show_frame = target->frame;
+      }
+    }
+    legend(s);
+  }
+
+  static void legend(const SimView& s) {
+    const ImU32 colours[] = {kPairsLine, kTimeLine, kViolationBar};
+    const char* names[] = {"pairs", "detection ms", "violations"};
+    for (int k = 0; k < 3; ++k) {
+      if (k == 1 && s.hide_timings) continue;
+      if (k > 0) ImGui::SameLine();
+      const ImVec2 p = ImGui::GetCursorScreenPos();
+      const float h = ImGui::GetTextLineHeight();
+      ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(p.x, p.y + h * 0.35f), ImVec2(p.x + 12, p.y + h * 0.65f), colours[k]);
+      ImGui::Dummy(ImVec2(14, h));
+      ImGui::SameLine(0, 2);
+      ImGui::TextDisabled("%s", names[k]);
+    }
+    ImGui::SameLine();
+    ImGui::TextDisabled("  light: kept, dark: dropped; white: shown; green: newest");
+  }
+
+  static const FrameSummary* nearest(const std::deque<FrameSummary>& frames, std::int64_t frame) {
+    const auto it = std::lower_bound(frames.begin(), frames.end(), frame,
+                                     [](const FrameSummary& f, std::int64_t n) { return f.frame < n; });
+    if (it == frames.end()) return &frames.back();
+    if (it != frames.begin() && frame - std::prev(it)->frame < it->frame - frame) return &*std::prev(it);
+    return &*it;
+  }
+
+  static const FrameSummary* nearest_kept(const std::deque<FrameSummary>& frames, std::int64_t frame) {
+    const FrameSummary* best = nullptr;
+    for (const FrameSummary& f : frames)
+      if (f.kept && (best == nullptr || std::llabs(f.frame - frame) < std::llabs(best->frame - frame))) best = &f;
+    return best;
+  }
+
+  static std::int64_t first_showable(const SimView& s) {
+    for (const FrameSummary& f : *s.timeline)
+      if (f.kept) return f.frame;
+    return s.newest_frame;
+  }
+
+  static void tooltip(const char* text) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+  }
+
+  std::vector<Column> cols_;
+};
+
+}  // namespace
+
+std::unique_ptr<Panel> make_timeline_panel() { return std::make_unique<TimelinePanel>(); }
+
+}  // namespace nbscope::ui

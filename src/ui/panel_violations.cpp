@@ -1,0 +1,192 @@
+// The Violations panel: every violation of the run (frame, invariant, pair, both cells), filtered by
+// invariant, with first / previous / next (Shift+[, [ and ]). Choosing one goes to its frame,
+// selects both elements, centres the camera on them and, with the stepper open, moves the stepper
+// to the operation that decided the pair (the app does it: UiRequests::go_to_violation).
+#include <imgui.h>
+
+#include <cstdio>
+#include <string>
+
+#include "ui/panels.hpp"
+
+namespace nbscope::ui {
+
+namespace {
+
+const ImVec4 kRed(1.0f, 0.4f, 0.4f, 1.0f);
+
+class ViolationsPanel final : public Panel {
+ public:
+  [[nodiscard]] const char* title() const override { return kViolationsTitle; }
+  [[nodiscard]] PanelPlace place() const override { return PanelPlace::Left; }
+  [[nodiscard]] float width() const override { return 300.0f; }
+  // Above the other panels of its column: when the column is short, they collapse first.
+  [[nodiscard]] int priority() const override { return 30; }
+  [[nodiscard]] bool visible(const UiContext& c) const override { return c.sim.violations_total > 0; }
+
+  void draw(UiContext& c) override {
+    const SimView& s = c.sim;
+    const bool book = c.state.book_numbering;
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(kRed, "%lld violation%s in %lld frame%s", static_cast<long long>(s.violations_total),
+                       s.violations_total == 1 ? "" : "s", static_cast<long long>(s.violation_frames),
+                       s.violation_frames == 1 ? "" : "s");
+    if (!s.fault_name.empty()) ImGui::TextDisabled("expected: the fault %s is injected", s.fault_name.c_str());
+    ImGui::PopTextWrapPos();
+
+    // Filter by invariant (only those that broke), with counts.
+    for (int k = 0; k < kInvariantCount; ++k) {
+      const std::int64_t n = s.violations_by_invariant[static_cast<std::size_t>(k)];
+      if (n == 0) continue;
+      char label[64];
+      std::snprintf(label, sizeof label, "%s %lld", invariant_name(static_cast<Invariant>(k)), static_cast<long long>(n));
+      ImGui::Checkbox(label, &c.state.violation_filter[static_cast<std::size_t>(k)]);
+      ImGui::SameLine();
+    }
+    ImGui::NewLine();
+
+    const std::vector<Violation>& all = *s.violations;
+    const std::int64_t shown = count_shown(all, c.state);
+    if (ImGui::Button("First")) go(c, step_violation(s, c.state, 0));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the first violation of the run (Shift+[)");
+    ImGui::SameLine();
+    if (ImGui::Button("< Prev")) go(c, step_violation(s, c.state, -1));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("previous ([)");
+    ImGui::SameLine();
+    if (ImGui::Button("Next >")) go(c, step_violation(s, c.state, +1));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("next (])");
+    ImGui::SameLine();
+    const std::int64_t at = position_of(all, c.state);
+    if (at >= 0) ImGui::TextDisabled("%lld / %lld", static_cast<long long>(at + 1), static_cast<long long>(shown));
+    else ImGui::TextDisabled("%lld listed", static_cast<long long>(shown));
+
+    draw_table(c, all, book);
+    const std::int64_t unlisted = s.violations_total - static_cast<std::int64_t>(all.size());
+    if (unlisted > 0) ImGui::TextDisabled("+%lld more counted, not listed (200 a frame at most)", static_cast<long long>(unlisted));
+
+    // What the chosen one is, and where the stepper found its pair.
+    if (c.state.current_violation >= 0 && static_cast<std::size_t>(c.state.current_violation) < all.size()) {
+      const Violation& v = all[static_cast<std::size_t>(c.state.current_violation)];
+      ImGui::Separator();
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextColored(kRed, "%s", describe_violation(v, book).c_str());
+      if (!s.locate_status.empty()) ImGui::TextWrapped("%s", s.locate_status.c_str());
+      ImGui::PopTextWrapPos();
+    }
+  }
+
+ private:
+  void draw_table(UiContext& c, const std::vector<Violation>& all, bool book) {
+    // Rows of the filtered list, rebuilt when the log or the filter changes.
+    if (all.size() != rows_source_size_ || &all != rows_source_ || c.state.violation_filter != rows_filter_) {
+      rows_.clear();
+      for (std::size_t k = 0; k < all.size(); ++k)
+        if (c.state.violation_filter[static_cast<std::size_t>(all[k].invariant)]) rows_.push_back(k);
+      rows_source_ = &all;
+      rows_source_size_ = all.size();
+      rows_filter_ = c.state.violation_filter;
+    }
+    const float row_h = ImGui::GetTextLineHeightWithSpacing();
+    const float height = std::min(8.0f, static_cast<float>(rows_.size()) + 1.0f) * row_h + 6.0f;
+    const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                                  ImGuiTableFlags_SizingFixedFit;
+    if (!ImGui::BeginTable("violations", 4, flags, ImVec2(0, height))) return;
+    ImGui::TableSetupScrollFreeze(0, 1);
+    ImGui::TableSetupColumn("frame");
+    ImGui::TableSetupColumn("check");
+    ImGui::TableSetupColumn("pair");
+    ImGui::TableSetupColumn("cells", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableHeadersRow();
+    ImGuiListClipper clipper;
+    clipper.Begin(static_cast<int>(rows_.size()));
+    // Keep the chosen row in view after a jump (a key, a button, the app going to one).
+    if (c.state.current_violation != scrolled_to_) {
+      scrolled_to_ = c.state.current_violation;
+      scroll_to_current_ = true;
+    }
+    if (scroll_to_current_) {
+      for (std::size_t r = 0; r < rows_.size(); ++r)
+        if (static_cast<std::int64_t>(rows_[r]) == c.state.current_violation)
+          ImGui::SetScrollY(static_cast<float>(r) * row_h);
+      scroll_to_current_ = false;
+    }
+    while (clipper.Step()) {
+      for (int r = clipper.DisplayStart; r < clipper.DisplayEnd; ++r) {
+        const std::size_t index = rows_[static_cast<std::size_t>(r)];
+        const Violation& v = all[index];
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        char frame[32];
+        std::snprintf(frame, sizeof frame, "%lld##v%zu", static_cast<long long>(v.frame), index);
+        const bool current = static_cast<std::int64_t>(index) == c.state.current_violation;
+        if (ImGui::Selectable(frame, current, ImGuiSelectableFlags_SpanAllColumns)) go(c, index);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe_violation(v, book).c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(invariant_name(v.invariant));
+        ImGui::TableNextColumn();
+        ImGui::Text("%lld, %lld", static_cast<long long>(shown(v.pair.i, book)), static_cast<long long>(shown(v.pair.j, book)));
+        ImGui::TableNextColumn();
+        ImGui::Text("(%lld,%lld) (%lld,%lld)", static_cast<long long>(shown(v.cell_i.ix, book)),
+                    static_cast<long long>(shown(v.cell_i.iy, book)), static_cast<long long>(shown(v.cell_j.ix, book)),
+                    static_cast<long long>(shown(v.cell_j.iy, book)));
+      }
+    }
+    ImGui::EndTable();
+  }
+
+  void go(UiContext& c, std::optional<std::size_t> index) {
+    if (!index) return;
+    c.requests.go_to_violation = *index;
+    scroll_to_current_ = true;
+  }
+
+  static std::int64_t count_shown(const std::vector<Violation>& all, const UiState& state) {
+    std::int64_t n = 0;
+    for (const Violation& v : all) n += state.violation_filter[static_cast<std::size_t>(v.invariant)] ? 1 : 0;
+    return n;
+  }
+
+  static std::int64_t position_of(const std::vector<Violation>& all, const UiState& state) {
+    if (state.current_violation < 0 || static_cast<std::size_t>(state.current_violation) >= all.size()) return -1;
+    std::int64_t n = 0;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(state.current_violation); ++k)
+      n += state.violation_filter[static_cast<std::size_t>(all[k].invariant)] ? 1 : 0;
+    return n;
+  }
+
+  std::vector<std::size_t> rows_;
+  const std::vector<Violation>* rows_source_ = nullptr;
+  std::size_t rows_source_size_ = 0;
+  std::array<bool, kInvariantCount> rows_filter_{};
+  bool scroll_to_current_ = false;
+  std::int64_t scrolled_to_ = -1;
+};
+
+}  // namespace
+
+std::optional<std::size_t> step_violation(const SimView& sim, const UiState& state, int direction) {
+  if (sim.violations == nullptr || sim.violations->empty()) return std::nullopt;
+  const std::vector<Violation>& all = *sim.violations;
+  const auto listed = [&](std::size_t k) { return state.violation_filter[static_cast<std::size_t>(all[k].invariant)]; };
+  const std::int64_t n = static_cast<std::int64_t>(all.size());
+  if (direction == 0 || state.current_violation < 0 || state.current_violation >= n) {
+    // The first listed one (also where Next/Prev start when none is chosen yet).
+    for (std::size_t k = 0; k < all.size(); ++k)
+      if (listed(k)) return k;
+    return std::nullopt;
+  }
+  for (std::int64_t k = state.current_violation + direction; k >= 0 && k < n; k += direction)
+    if (listed(static_cast<std::size_t>(k))) return static_cast<std::size_t>(k);
+  return std::nullopt;
+}
+
+std::string describe_violation(const Violation& v, bool book) {
+  const auto id = [&](std::int64_t k) { return std::to_string(shown(k, book)); };
+  return std::string(invariant_name(v.invariant)) + " in frame " + std::to_string(v.frame) + ": (" + id(v.pair.i) + ", " +
+         id(v.pair.j) + ") " + v.what + "; cells (" + id(v.cell_i.ix) + "," + id(v.cell_i.iy) + ") and (" + id(v.cell_j.ix) +
+         "," + id(v.cell_j.iy) + ")";
+}
+
+std::unique_ptr<Panel> make_violations_panel() { return std::make_unique<ViolationsPanel>(); }
+
+}  // namespace nbscope::ui
