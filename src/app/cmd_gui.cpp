@@ -40,6 +40,7 @@ struct GuiOptions {
   Fault fault = Fault::None;
   std::optional<std::int64_t> frames;
   std::optional<std::int64_t> history_mb;  // --history-mb N: memory for kept frames (else the settings' 256)
+  std::int64_t back = 0;  // --back K (scripted): after the frames, K frames back through the history, each drawn
   ViewOptions view;
 };
 
@@ -50,10 +51,14 @@ GuiOptions parse_gui_options(Args& args) {
   if (auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);
   if (auto n = args.integer("--frames", 0, 100'000'000)) o.frames = *n;
   if (auto mb = args.integer("--history-mb", 0, 1'000'000)) o.history_mb = *mb;
+  o.back = args.integer("--back", 1, 100'000'000).value_or(0);
   parse_view_options(args, false, o.view);
   if (auto p = args.positional()) throw Error(*p + ": unexpected argument (the scene goes after --scene)");
   args.finish();
   if (o.view.screenshot && !o.frames) throw Error("--screenshot: needs --frames N (how many frames to run first)");
+  if (o.back > 0 && !o.frames) throw Error("--back: needs --frames N (the frames to go back through)");
+  if (o.frames && o.back > *o.frames)
+    throw Error("--back: " + std::to_string(o.back) + " is more than the " + std::to_string(*o.frames) + " frames run");
   if (o.view.screenshot) check_output_path(*o.view.screenshot);
   if (o.view.screenshot && o.scene) check_outputs_distinct({{"--scene", *o.scene}}, {{"--screenshot", *o.view.screenshot}});
   return o;
@@ -87,6 +92,11 @@ int run_without_display(GuiOptions o, FrameLoop& loop) {
     loop.step();
     view->after_step(loop);
     failed = failed || (loop.report().checked && !loop.report().ok());
+  }
+  for (std::int64_t i = 0; i < o.back; ++i) {
+    if (!loop.step_back())
+      throw Error("--back: frame " + std::to_string(loop.frame()) + " is the oldest kept (a larger --history-mb keeps more)");
+    view->on_rewound(loop);
   }
   const std::string summary = view->write_screenshot(loop);
   std::fprintf(stderr, "nbscope: %s\n", summary.c_str());
@@ -235,6 +245,8 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   double owed_steps = 0;
   const auto started = Clock::now();
   double sum_physics = 0, sum_detect = 0, sum_check = 0, sum_view = 0;
+  double sum_back_show = 0, sum_back_view = 0;  // --back: showing a kept frame again, and drawing it
+  const std::int64_t scripted_frames = o.frames.value_or(0) + o.back;
   auto last = Clock::now();
   double fps_window_start = window.time();
   int fps_frames = 0;
@@ -246,10 +258,17 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
     session.frame_ms = std::chrono::duration<double, std::milli>(now - last).count();
     last = now;
     if (scripted) {
-      // Frames 1..N each step once; then the last state is drawn until the layout has settled.
+      // Frames 1..N each step once, then --back K goes back one kept frame a frame; then the last
+      // state is drawn until the layout has settled.
       if (rendered > 0 && rendered <= *o.frames) {
         loop.step();
         view.after_step(loop);
+      } else if (rendered > *o.frames && rendered <= scripted_frames) {
+        const auto t0 = Clock::now();
+        if (!loop.step_back())
+          throw Error("--back: frame " + std::to_string(loop.frame()) + " is the oldest kept (a larger --history-mb keeps more)");
+        view.on_frame_shown(loop);
+        sum_back_show += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
       }
     } else if (loop.resuming()) {
       continue_resume(loop, view, session);
@@ -259,13 +278,11 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
         try {
           if (session.play_direction < 0) {
             // Backwards through the kept frames, until the oldest.
-            const auto previous = loop.neighbour(-1);
-            if (!previous) {
+            if (!loop.step_back()) {
               session.paused = true;
               owed_steps = 0;
               break;
             }
-            loop.show_frame(*previous);
             view.on_frame_shown(loop);
             continue;
           }
@@ -284,12 +301,14 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
     const auto view_start = Clock::now();
     const ui::UiRequests requests = view.frame(loop, session, !scripted, static_cast<float>(session.frame_ms / 1000.0));
     if (scripted) {
-      sum_view += std::chrono::duration<double, std::milli>(Clock::now() - view_start).count();
+      const double view_ms = std::chrono::duration<double, std::milli>(Clock::now() - view_start).count();
+      if (rendered > *o.frames && rendered <= scripted_frames) sum_back_view += view_ms;
+      sum_view += view_ms;
       sum_physics += loop.timings().physics_ms;
       sum_detect += loop.timings().detection_ms;
       sum_check += loop.timings().check_ms;
     }
-    if (scripted && rendered >= *o.frames + GlView::kSettleFrames - 1) {
+    if (scripted && rendered >= scripted_frames + GlView::kSettleFrames - 1) {
       view.check_step();
       if (o.view.screenshot) write_png(*o.view.screenshot, view.screenshot());
       // What a scripted run measured: the window's frame rate and where the time went.
@@ -298,9 +317,17 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       std::fprintf(stderr,
                    "nbscope: window: %lld frames (+%d redrawn while the layout settles) in %.2f s = %.1f FPS; ms a "
                    "frame: physics %.2f, detection %.2f, check %.2f, render+panels %.2f%s%s\n",
-                   static_cast<long long>(*o.frames + 1), GlView::kSettleFrames - 1, seconds, n / seconds,
+                   static_cast<long long>(scripted_frames + 1), GlView::kSettleFrames - 1, seconds, n / seconds,
                    sum_physics / n, sum_detect / n, sum_check / n, sum_view / n, o.view.screenshot ? "; screenshot " : "",
                    o.view.screenshot ? o.view.screenshot->c_str() : "");
+      if (o.back > 0) {
+        const double k = static_cast<double>(o.back);
+        std::fprintf(stderr,
+                     "nbscope: window: went back %lld frames to frame %lld: %.2f ms a frame (the kept frame rebuilt, "
+                     "detected and checked again %.2f, render+panels %.2f)\n",
+                     static_cast<long long>(o.back), static_cast<long long>(loop.frame()), (sum_back_show + sum_back_view) / k,
+                     sum_back_show / k, sum_back_view / k);
+      }
       break;
     }
     if (!scripted) apply_requests(requests, loop, view, session);
@@ -367,6 +394,7 @@ int run_gui(Args& args) {
 
   FrameLoopOptions loop_options;
   loop_options.fault = o.fault;
+  loop_options.history_budget = static_cast<std::size_t>(o.history_mb.value_or(settings ? settings->history_mb : 256)) << 20;
   if (o.algorithm) loop_options.algorithm = *o.algorithm;
   else if (settings && settings->algorithm) loop_options.algorithm = *settings->algorithm;
   FrameLoop loop(loop_options);

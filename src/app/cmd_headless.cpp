@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -203,6 +204,22 @@ bool nothing_to_check(const FrameLoop& loop) {
 
 // --rewind FROM:TO at frame FROM: back to kept frame TO, the world re-simulated to it, the report's
 // frames after TO dropped (they run again).
+// --violation N: the run's N-th listed violation's frame shown again, and (drawing) the violation
+// chosen as in the Violations panel.
+void go_to_violation(FrameLoop& loop, std::int64_t n, HeadlessView* view) {
+  const std::vector<Violation>& listed = loop.violation_log().listed();
+  if (static_cast<std::size_t>(n) > listed.size())
+    throw Error("--violation: " + std::to_string(n) + " is past the run's " + std::to_string(listed.size()) + " listed violations");
+  const Violation v = listed[static_cast<std::size_t>(n - 1)];
+  if (!loop.can_show(v.frame))
+    throw Error("--violation: its frame " + std::to_string(v.frame) + " is no longer kept (a larger --history-mb keeps more)");
+  loop.show_frame(v.frame);
+  if (view != nullptr) {
+    view->on_rewound(loop);
+    view->focus_violation(loop, v);
+  }
+}
+
 // Returns the first pass's element hash of every frame after TO, to compare the second pass with.
 std::map<std::int64_t, std::uint64_t> rewind(FrameLoop& loop, const HeadlessOptions::Rewind& r, RunReport& report) {
   if (!loop.can_show(r.to)) {
@@ -256,6 +273,8 @@ HeadlessOptions parse_headless_options(Args& args) {
   o.stop_at_violation = args.flag("--stop-at-violation");
   if (const auto r = args.value("--rewind")) o.rewind = parse_rewind(*r);
   if (const auto mb = args.integer("--history-mb", 0, 1'000'000)) o.history_mb = *mb;
+  o.back = args.integer("--back", 1, 100'000'000).value_or(0);
+  o.violation = args.integer("--violation", 1, 1'000'000'000).value_or(0);
   args.finish();
   if (!scene) throw Error("headless: --scene FILE is required");
   o.scene = *scene;
@@ -264,6 +283,11 @@ HeadlessOptions parse_headless_options(Args& args) {
                 std::to_string(o.frames) + ")");
   if (o.rewind && o.record) throw Error("--rewind: --record writes frames as they run; record a straight run");
   if (o.rewind && o.stop_at_violation) throw Error("--rewind: and --stop-at-violation are two runs; give one");
+  if (o.back > o.frames)
+    throw Error("--back: " + std::to_string(o.back) + " is more than the " + std::to_string(o.frames) + " frames run");
+  if (o.back > 0 && o.stop_at_violation) throw Error("--back: --stop-at-violation shows the violation's frame itself");
+  if (o.violation > 0 && (o.stop_at_violation || o.back > 0))
+    throw Error("--violation: goes to a violation's own frame; --back and --stop-at-violation choose another");
   check_stop_at_violation(o);
   return o;
 }
@@ -295,7 +319,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   lo.brute_limit = o.brute_limit;
   // Past frames are kept when the run goes back to one, or draws the Timeline as the window would
   // (the window's default budget), or the user asks for a budget; else none.
-  const bool keep = o.rewind || o.view.screenshot;
+  const bool keep = o.rewind || o.view.screenshot || o.back > 0 || o.violation > 0;
   lo.history_budget = static_cast<std::size_t>(o.history_mb.value_or(keep ? 256 : 0)) << 20;
   FrameLoop loop(lo);  // an unknown algorithm fails here, before the scene is read
   for (const std::string& name : names) make_detector(name);
@@ -380,12 +404,29 @@ int run_headless_loop(const HeadlessOptions& o) {
   }
   progress.finish();
   if (recorder) recorder->commit();
+  // --back K: through the history, one kept frame at a time, each detected and checked again.
+  double back_ms = 0;
+  for (std::int64_t k = 0; k < o.back; ++k) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (!loop.step_back())
+      throw Error("--back: frame " + std::to_string(loop.frame()) + " is the oldest kept (a larger --history-mb keeps more)");
+    back_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (view) view->on_rewound(loop);
+  }
+  if (o.violation > 0) go_to_violation(loop, o.violation, view.get());
   if (view) {
     if (report.stopped_at) view->focus_violation(loop, loop.report().violations.front());
     std::fprintf(stderr, "nbscope: %s\n", view->write_screenshot(loop).c_str());
   }
   if (o.report) write_run_report(*o.report, report);
-  std::printf("%s\n", summary_of(o, loop, report).c_str());
+  std::string summary = summary_of(o, loop, report);
+  if (o.back > 0) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "; went back %lld frames to frame %lld: %.3f ms a frame (kept frame rebuilt, detected, checked)",
+                  static_cast<long long>(o.back), static_cast<long long>(loop.frame()), back_ms / static_cast<double>(o.back));
+    summary += buf;
+  }
+  std::printf("%s\n", summary.c_str());
   return report.passed() ? 0 : 1;
 }
 

@@ -453,6 +453,13 @@ void FrameLoop::show_frame(std::int64_t frame) {
   m.detect_and_check();
 }
 
+bool FrameLoop::step_back() {
+  const auto previous = neighbour(-1);
+  if (!previous) return false;
+  show_frame(*previous);
+  return true;
+}
+
 std::optional<std::int64_t> FrameLoop::neighbour(std::int64_t delta) const {
   const Impl& m = *impl_;
   if (!m.loaded() || delta == 0 || m.history.empty()) return std::nullopt;

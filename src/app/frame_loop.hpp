@@ -132,6 +132,9 @@ class FrameLoop {
   // Makes frame `frame` current, with detection and every check run on it again (the overlays,
   // panels and stepper then show it as they show a live frame). Throws Error when it is not kept.
   void show_frame(std::int64_t frame);
+  // Shows the kept frame before the shown one (detected and checked again); false, unmoved, at the
+  // oldest showable frame.
+  bool step_back();
   // The showable frame `delta` frames from the shown one (clamped to the first/newest showable), or
   // nullopt when there is none in that direction.
   [[nodiscard]] std::optional<std::int64_t> neighbour(std::int64_t delta) const;

@@ -30,6 +30,10 @@ struct HeadlessOptions {
     std::int64_t from = 0, to = 0;
   };
   std::optional<Rewind> rewind;       // --rewind FROM:TO: at frame FROM go back to TO and resume
+  std::int64_t violation = 0;         // --violation N: after the run, go to its N-th violation (from 1, as
+                                      // the Violations panel lists them) and show it as choosing it there does
+  std::int64_t back = 0;              // --back K: after the frames, K frames back through the history
+                                      // (each shown, detected and checked again); the screenshot shows it
   std::optional<std::int64_t> history_mb;  // --history-mb N: memory for kept frames (default: 256 with
                                            // --rewind, else none: a run that never goes back keeps none)
 };

@@ -8,17 +8,21 @@ inline constexpr const char* kVersion = "0.1.0";
 inline constexpr const char* kHelpText = R"(nbscope - a visual debugger for grid-based contact detection (Munjiza-NBS and its ancestors)
 
 usage:
-  nbscope [gui] [--scene FILE] [--algorithm NAME] [--inject-fault NAME] [--size WxH]
-                [--frames N --screenshot OUT.png] [--overlays SPEC] [--panels SPEC] [--select K]
+  nbscope [gui] [--scene FILE] [--algorithm NAME] [--inject-fault NAME] [--size WxH] [--history-mb N]
+                [--frames N [--back K] --screenshot OUT.png] [--overlays SPEC] [--panels SPEC] [--select K]
       The window (default: the last scene and algorithm used, else assets/scenes/default.json
       and nbs; $NBSCOPE_DATA_DIR overrides where assets/ is found): Box2D bodies, the cell grid, the
       detector's lists, pairs and check results over them, ImGui panels. Keys: P play/pause,
-      O single step, R restart, Home fit, 1..9 algorithm, overlays B E G L M C K F I T H (see Help
-      in the menu bar). Mouse: left selects an element and drags its body, right-drag pans, wheel
-      zooms. Settings persist in $XDG_CONFIG_HOME/nbscope/settings.json (~/.config/...).
+      O single step, R restart, Home fit, 1..9 algorithm, overlays B E G L M C K F I T H; the
+      Timeline: , and . one frame back/forward (Shift: 10), J play backwards; the Violations
+      panel: [ and ] previous/next, Shift+[ the first (see Help in the menu bar). Mouse: left
+      selects an element and drags its body, right-drag pans, wheel zooms. Every frame is kept
+      for the Timeline within --history-mb N (default 256, saved with the settings; oldest frames
+      dropped first). Settings persist in $XDG_CONFIG_HOME/nbscope/settings.json (~/.config/...).
       --frames N runs N frames, saves --screenshot and exits (no input, no settings: for tests
-      under xvfb-run). Without a display it renders --frames N (default 120) headless into
-      --screenshot (default $TMPDIR/nbscope-SCENE.png) and prints the path.
+      under xvfb-run); --back K then goes K frames back through the history first, each drawn,
+      and says how long a frame took. Without a display it renders --frames N (default 120)
+      headless into --screenshot (default $TMPDIR/nbscope-SCENE.png) and prints the path.
   nbscope pairs --input ELEMENTS.csv [--algorithm NAME] [--output PAIRS.csv] [--repeat K]
                 [--cell-size D] [--origin X,Y[,Z]] [--cells NX,NY[,NZ]] [--max-pairs M]
       Contact pairs of the elements (rows x,y,r or x,y,z,r) as CSV "i,j" (0-based, i < j, sorted),
@@ -40,6 +44,7 @@ usage:
       --origin 0,0 --cells 10,10).
   nbscope headless --scene FILE [--frames N] [--algorithm NAME[,NAME...]|all] [--report OUT.json]
                    [--inject-fault NAME] [--brute-limit N] [--quiet] [--record OUT.nbsrec]
+                   [--stop-at-violation | --rewind FROM:TO] [--back K | --violation N] [--history-mb N]
       Runs N frames (default 600) of a scene (assets/scenes/*.json) with no window: Box2D steps,
       the algorithm (default nbs) detects, and every frame is checked: A==R (R: brute force up to
       --brute-limit elements, default 2000, then sort, or nbs when sort is tested; brute itself
@@ -55,11 +60,26 @@ usage:
       --screenshot OUT.png [--size WxH] [--gl osmesa|egl|auto] renders the last frame exactly as the
       window shows it (scene, overlays, panels) off-screen with OSMesa (egl: not built here).
       --record OUT.nbsrec writes every frame's elements (frame 0 too) and the scene's pinned grid.
+      --stop-at-violation stops on the first frame with a violation and (with --screenshot) shows
+      it as the window's Violations panel does: the pair selected, the camera on it, the stepper
+      at the operation that decided it; exit 1, or 0 when no frame broke (one algorithm only).
+      --rewind FROM:TO runs to frame FROM, goes back to kept frame TO and resumes to --frames:
+      the frames after TO are simulated again (deterministically, from the scene) and replace
+      the first ones; every report frame carries "hash", the hash of its elements, so a rewound
+      run can be compared with a straight one frame by frame.
+      --back K after the last frame goes K frames back through the history (each detected and
+      checked again); --screenshot then shows that frame. --violation N goes to the run's N-th
+      violation instead (from 1, as the Violations panel lists them) and shows it as choosing it
+      there does.
+      --history-mb N memory for kept frames (default 256 with --rewind, --back or --screenshot,
+      else 0: a run that never goes back keeps only summaries).
   nbscope replay FILE.nbsrec [--headless] [--frames N] [--algorithm NAME[,NAME...]|all]
                  [--report OUT.json] [--inject-fault NAME] [--brute-limit N] [--quiet]
-                 [--screenshot OUT.png --size WxH ...]
-      Detects and checks recorded frames again (the first N with --frames), as headless does; a
-      window plays them (P, O, R) when there is a display and no --headless. No Box2D world: only
+                 [--stop-at-violation] [--screenshot OUT.png --size WxH ...]
+      Detects and checks recorded frames again (the first N with --frames), as headless does
+      (--stop-at-violation too); a window plays them (P, O, R, the Timeline over every recorded
+      frame, the Violations panel, the stepper on any frame) when there is a display and no
+      --headless. No Box2D world: only
       A==R is checked; A-in-F, T-in-A, AABB-in-cells are reported as not checked, and the faults
       are drop-pair, drop-mask-cell, off-by-one-cell, stale-positions. The format (text):
         nbsrec 1                 first line; '#' comments and blank lines anywhere
@@ -70,7 +90,7 @@ usage:
       --overlays SPEC   comma list: all, none, NAME (only the names listed), +NAME, -NAME; names:
                         bodies elements grid lists mask pairs checks broadphase ids trails flash
       --panels SPEC     the same for panels: controls scenes algorithm overlays stats selection
-                        metrics stepper pseudocode arrays
+                        metrics violations timeline stepper pseudocode arrays
       --select K        select element K as shown (its cell, lists and pairs highlighted, its trail
                         drawn): from 0, or from 1 with --book-numbering
       --camera X,Y,PPM  put (X, Y) in the middle of the view the panels leave free, at PPM pixels

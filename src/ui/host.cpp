@@ -81,11 +81,13 @@ void UiHost::draw_menu(UiContext& ctx) {
   char where[160];
   std::snprintf(where, sizeof where, "%s  |  %s  |  frame %lld%s", ctx.sim.scene_name.c_str(), ctx.sim.algorithm.c_str(),
                 static_cast<long long>(ctx.sim.frame), ctx.sim.showing_past ? " (past)" : "");
-  ImGui::SameLine(std::max(ImGui::GetCursorPosX() + 20.0f, ImGui::GetWindowWidth() - ImGui::CalcTextSize(where).x - 16.0f));
-  if (!ctx.sim.fault_name.empty()) {
-    ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowWidth() - ImGui::CalcTextSize(where).x - 16.0f -
-                                                         ImGui::CalcTextSize("FAULT: ").x - ImGui::CalcTextSize(ctx.sim.fault_name.c_str()).x - 16.0f));
-    ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.35f, 1.0f), "FAULT: %s", ctx.sim.fault_name.c_str());
+  // Right-aligned: the injected fault (red), then scene, algorithm and frame.
+  const std::string fault = ctx.sim.fault_name.empty() ? "" : "FAULT: " + ctx.sim.fault_name;
+  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+  const float total = ImGui::CalcTextSize(where).x + (fault.empty() ? 0.0f : ImGui::CalcTextSize(fault.c_str()).x + spacing);
+  ImGui::SameLine(std::max(ImGui::GetCursorPosX() + 20.0f, ImGui::GetWindowWidth() - total - 16.0f));
+  if (!fault.empty()) {
+    ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.35f, 1.0f), "%s", fault.c_str());
     ImGui::SameLine();
   }
   ImGui::TextDisabled("%s", where);

@@ -57,6 +57,14 @@ class MetricsPanel final : public Panel {
     }
     ImGui::Text("ImGui: %d vertices, %d indices, %d draw lists", s.imgui_vertices, s.imgui_indices, s.imgui_lists);
     ImGui::Text("trace: %zu events, %.1f KB", s.trace_events, double(s.trace_bytes) / 1024.0);
+    if (s.timeline != nullptr) {
+      std::size_t kept = 0;
+      for (const FrameSummary& f : *s.timeline) kept += f.kept ? 1 : 0;
+      ImGui::Text("history: %zu frames, %zu kept, %.1f of %.0f MB", s.timeline->size(), kept,
+                  double(s.history_bytes) / 1048576.0, double(s.history_budget) / 1048576.0);
+      ImGui::Text("violations: %zu listed (%.1f KB)", s.violations != nullptr ? s.violations->size() : std::size_t{0},
+                  s.violations != nullptr ? double(s.violations->size() * sizeof(Violation)) / 1024.0 : 0.0);
+    }
     if (s.elements != nullptr)
       ImGui::Text("elements: %.1f KB, pairs: %.1f KB", double(s.elements->size()) * 3 * sizeof(double) / 1024.0,
                   s.pairs != nullptr ? double(s.pairs->size() * sizeof(Pair)) / 1024.0 : 0.0);

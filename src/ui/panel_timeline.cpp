@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cfloat>
 #include <cstdio>
 
 #include "ui/panels.hpp"
@@ -15,7 +16,7 @@ namespace nbscope::ui {
 
 namespace {
 
-constexpr float kStripHeight = 42.0f;
+constexpr float kStripHeight = 34.0f;
 const ImU32 kKeptBg = IM_COL32(48, 52, 62, 255);
 const ImU32 kDroppedBg = IM_COL32(30, 31, 36, 255);
 const ImU32 kPairsLine = IM_COL32(250, 230, 90, 200);
@@ -139,7 +140,7 @@ class TimelinePanel final : public Panel {
     // Aggregate the frames into pixel columns.
     const int n_cols = std::max(1, static_cast<int>(width));
     cols_.assign(static_cast<std::size_t>(n_cols), Column{});
-    float max_pairs = 1, max_ms = 1e-3f;
+    float min_pairs = 1e30f, max_pairs = 0, max_ms = 1e-3f;
     std::int64_t max_violations = 1;
     for (const FrameSummary& f : frames) {
       const int x = std::clamp(static_cast<int>(x_of(f.frame) - p0.x), 0, n_cols - 1);
@@ -152,6 +153,7 @@ class TimelinePanel final : public Panel {
       col.ms = std::max(col.ms, f.detection_ms);
       col.violations += f.violations;
       max_pairs = std::max(max_pairs, col.pairs);
+      min_pairs = std::min(min_pairs, col.pairs);
       max_ms = std::max(max_ms, col.ms);
       max_violations = std::max(max_violations, col.violations);
     }
@@ -168,22 +170,25 @@ class TimelinePanel final : public Panel {
         dl->AddRectFilled(ImVec2(px - 1, p0.y), ImVec2(px + 2, p0.y + 4), kViolationBar);  // the marker
       }
     }
-    // Polylines of the aggregated columns (gaps where nothing was checked).
-    const auto plot = [&](float Column::*value, float max_value, ImU32 colour) {
+    // Polylines of the aggregated columns (gaps where nothing was checked), each scaled to its own
+    // range: pairs from the run's fewest to most (their change is what shows), time from 0.
+    const auto plot = [&](float Column::*value, float min_value, float max_value, ImU32 colour) {
       ImVec2 last;
       bool have_last = false;
       for (int x = 0; x < n_cols; ++x) {
         const Column& col = cols_[static_cast<std::size_t>(x)];
         if (!col.checked) continue;
-        const ImVec2 p(p0.x + static_cast<float>(x), plot_top + plot_h * (1.0f - col.*value / max_value));
+        const float range = std::max(max_value - min_value, 1e-6f);
+        const float t = max_value > min_value ? (col.*value - min_value) / range : 0.5f;
+        const ImVec2 p(p0.x + static_cast<float>(x), plot_top + plot_h * (1.0f - t));
         if (have_last) dl->AddLine(last, p, colour, 1.2f);
         else dl->AddCircleFilled(p, 1.2f, colour);
         last = p;
         have_last = true;
       }
     };
-    plot(&Column::pairs, max_pairs, kPairsLine);
-    if (!s.hide_timings) plot(&Column::ms, max_ms, kTimeLine);
+    plot(&Column::pairs, min_pairs, max_pairs, kPairsLine);
+    if (!s.hide_timings) plot(&Column::ms, 0.0f, max_ms, kTimeLine);
     dl->AddLine(ImVec2(x_of(s.newest_frame), p0.y), ImVec2(x_of(s.newest_frame), p0.y + kStripHeight), kNewest, 1.0f);
     const float cx = x_of(s.frame);
     dl->AddRectFilled(ImVec2(cx - 1, p0.y - 1), ImVec2(cx + 2, p0.y + kStripHeight + 1), kCursor);
@@ -195,8 +200,10 @@ class TimelinePanel final : public Panel {
       const FrameSummary* near = nearest(frames, want);
       if (near != nullptr && hovered) {
         if (near->checked) {
-          ImGui::SetTooltip("frame %lld%s\nA = %lld pairs, detection %s ms\n%lld violations", static_cast<long long>(near->frame),
-                            near->kept ? "" : " (not kept: the budget dropped it)", static_cast<long long>(near->pairs),
+          ImGui::SetTooltip("frame %lld%s\nA = %lld pairs, detection %s ms\n%lld violations\n(light: kept frames; dark: "
+                            "dropped by the budget; white: shown; green: newest)",
+                            static_cast<long long>(near->frame), near->kept ? "" : " (not kept: the budget dropped it)",
+                            static_cast<long long>(near->pairs),
                             format_ms(s, near->detection_ms).c_str(), static_cast<long long>(near->violations));
         } else {
           ImGui::SetTooltip("frame %lld%s\nnot checked yet", static_cast<long long>(near->frame),
@@ -209,24 +216,25 @@ class TimelinePanel final : public Panel {
         if (target != nullptr && target->frame != s.frame) c.requests.show_frame = target->frame;
       }
     }
-    legend(s);
+    legend(s, dl, p0);
   }
 
-  static void legend(const SimView& s) {
+  // The legend, small, in the strip's top-left corner: the panel stays two rows high.
+  static void legend(const SimView& s, ImDrawList* dl, ImVec2 at) {
     const ImU32 colours[] = {kPairsLine, kTimeLine, kViolationBar};
     const char* names[] = {"pairs", "detection ms", "violations"};
+    const float scale = 0.85f;
+    ImFont* font = ImGui::GetFont();
+    const float size = ImGui::GetFontSize() * scale;
+    float x = at.x + 4;
     for (int k = 0; k < 3; ++k) {
       if (k == 1 && s.hide_timings) continue;
-      if (k > 0) ImGui::SameLine();
-      const ImVec2 p = ImGui::GetCursorScreenPos();
-      const float h = ImGui::GetTextLineHeight();
-      ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(p.x, p.y + h * 0.35f), ImVec2(p.x + 12, p.y + h * 0.65f), colours[k]);
-      ImGui::Dummy(ImVec2(14, h));
-      ImGui::SameLine(0, 2);
-      ImGui::TextDisabled("%s", names[k]);
+      const ImVec2 text = font->CalcTextSizeA(size, FLT_MAX, 0.0f, names[k]);
+      dl->AddRectFilled(ImVec2(x - 2, at.y + 1), ImVec2(x + 12 + text.x + 2, at.y + size + 3), IM_COL32(20, 22, 26, 190));
+      dl->AddRectFilled(ImVec2(x, at.y + size * 0.5f), ImVec2(x + 9, at.y + size * 0.5f + 3), colours[k]);
+      dl->AddText(font, size, ImVec2(x + 12, at.y + 2), IM_COL32(200, 205, 215, 255), names[k]);
+      x += 12 + text.x + 10;
     }
-    ImGui::SameLine();
-    ImGui::TextDisabled("  light: kept, dark: dropped; white: shown; green: newest");
   }
 
   static const FrameSummary* nearest(const std::deque<FrameSummary>& frames, std::int64_t frame) {

@@ -19,7 +19,7 @@ class ViolationsPanel final : public Panel {
  public:
   [[nodiscard]] const char* title() const override { return kViolationsTitle; }
   [[nodiscard]] PanelPlace place() const override { return PanelPlace::Left; }
-  [[nodiscard]] float width() const override { return 300.0f; }
+  [[nodiscard]] float width() const override { return 320.0f; }
   // Above the other panels of its column: when the column is short, they collapse first.
   [[nodiscard]] int priority() const override { return 30; }
   [[nodiscard]] bool visible(const UiContext& c) const override { return c.sim.violations_total > 0; }
@@ -62,7 +62,11 @@ class ViolationsPanel final : public Panel {
 
     draw_table(c, all, book);
     const std::int64_t unlisted = s.violations_total - static_cast<std::int64_t>(all.size());
-    if (unlisted > 0) ImGui::TextDisabled("+%lld more counted, not listed (200 a frame at most)", static_cast<long long>(unlisted));
+    if (unlisted > 0) {
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextDisabled("+%lld more counted, not listed (200 a frame at most)", static_cast<long long>(unlisted));
+      ImGui::PopTextWrapPos();
+    }
 
     // What the chosen one is, and where the stepper found its pair.
     if (c.state.current_violation >= 0 && static_cast<std::size_t>(c.state.current_violation) < all.size()) {

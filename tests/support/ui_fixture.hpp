@@ -1,0 +1,90 @@
+// nbscope tests: an ImGui context without GL, the book's Fig. 3.15 as a frame the panels see, a
+// DrawSink that records, and one UI frame of a host with keys pressed — for the panel tests.
+#pragma once
+#include <imgui.h>
+
+#include <string>
+#include <vector>
+
+#include "ui/host.hpp"
+#include "ui/model.hpp"
+
+namespace nbscope::ui::testui {
+
+// An ImGui context with its font atlas built and GLFW's arrow and space key codes mapped.
+struct ImGuiScope {
+  ImGuiScope() {
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    io.DisplaySize = ImVec2(1280, 720);
+    io.DeltaTime = 1.0f / 60.0f;
+    io.KeyMap[ImGuiKey_RightArrow] = 262;
+    io.KeyMap[ImGuiKey_LeftArrow] = 263;
+    io.KeyMap[ImGuiKey_Space] = 32;
+    io.KeyMap[ImGuiKey_PageUp] = 266;
+    io.KeyMap[ImGuiKey_PageDown] = 267;
+  }
+  ~ImGuiScope() { ImGui::DestroyContext(); }
+};
+
+// The book's Fig. 3.15 on its 10x10 grid of unit cells, as the frame loop would show it.
+struct BookFrame {
+  Elements elements;
+  Grid grid;
+  SimView sim;
+  UiState state;
+  UiRequests requests;
+  render::Camera camera;
+  BookFrame() {
+    const double x[] = {4.75, 4.90, 1.85, 4.60, 1.30, 4.50, 1.60, 5.20, 1.20};
+    const double y[] = {6.45, 6.50, 6.45, 6.80, 6.85, 5.55, 6.60, 5.40, 6.55};
+    for (int k = 0; k < 9; ++k) elements.push_back(x[k], y[k], 0, 0.1);
+    grid.n[0] = grid.n[1] = 10;
+    sim.scene_path = "book-fig-3-15.json";
+    sim.elements = &elements;
+    sim.grid = &grid;
+    sim.algorithm = "screen";
+    sim.paused = true;
+    camera.set_viewport(1280, 720);
+    camera.set({5, 5}, 40.0);
+  }
+};
+
+// A DrawSink that keeps what it is asked to draw.
+struct Recorder final : render::DrawSink {
+  int circles = 0, rects = 0, lines = 0, arrows = 0;
+  std::vector<std::string> texts;
+  void circle(render::Layer, render::Vec2, float, render::Rgba, render::Rgba, float, float) override { ++circles; }
+  void polygon(render::Layer, std::span<const render::Vec2>, render::Rgba, render::Rgba) override {}
+  void line(render::Layer, render::Vec2, render::Vec2, render::Rgba, float) override { ++lines; }
+  void arrow(render::Layer, render::Vec2, render::Vec2, render::Rgba, float) override { ++arrows; }
+  void rect(render::Layer, render::Vec2, render::Vec2, render::Rgba) override { ++rects; }
+  void text(render::Vec2, std::string_view t, render::Rgba) override { texts.emplace_back(t); }
+};
+
+// Runs one UI frame of `host` over `f` and draws its scene overlay into `sink`.
+inline void run_frame(UiHost& host, BookFrame& f, Recorder* sink = nullptr) {
+  f.requests = {};
+  ImGui::NewFrame();
+  UiContext ctx{f.sim, f.state, f.requests, f.camera};
+  host.frame(ctx, true);
+  if (sink != nullptr) host.draw_scene(ctx, *sink);
+  ImGui::Render();
+}
+
+inline void press(int key, bool shift = false) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.KeyShift = shift;
+  io.KeysDown[key] = true;
+}
+inline void release() {
+  ImGuiIO& io = ImGui::GetIO();
+  for (bool& k : io.KeysDown) k = false;
+  io.KeyShift = false;
+}
+
+}  // namespace nbscope::ui::testui

@@ -1,0 +1,236 @@
+// The debugging loop's UI side without GL: the stepper finds a violation's pair (the test, or why
+// there is none) and says so; first/previous/next violation through the filter; the operation
+// before/after on an element or a cell; the Timeline's and Violations panel's keys and requests;
+// the camera kept on a point.
+#include <gtest/gtest.h>
+#include <imgui.h>
+
+#include <deque>
+
+#include "core/detector.hpp"
+#include "support/ui_fixture.hpp"
+#include "ui/panels.hpp"
+#include "ui/stepper_panels.hpp"
+
+namespace nbscope::ui {
+namespace {
+
+using testui::BookFrame;
+using testui::ImGuiScope;
+using testui::press;
+using testui::release;
+using testui::run_frame;
+
+// In the book's nine elements (0-based here) 0 and 1 touch, 2 and 4 share cell (1, 6), and 0 and 8
+// lie three columns apart.
+TEST(StepperTarget, GoesToTheTestOfAPairAndSaysWhatItMeans) {
+  BookFrame f;
+  f.sim.algorithm = "nbs";
+  f.sim.paused = false;  // a target is captured even while the simulation runs
+  StepperSession s;
+  s.set_target({0, Pair{0, 1}, Invariant::AEqualsR, "missing from A (in R)"});
+  EXPECT_TRUE(s.target_pending());
+  s.update(f.sim, 0, 1);
+  ASSERT_TRUE(s.has_capture()) << s.message();
+  EXPECT_FALSE(s.target_pending());
+  ASSERT_TRUE(s.target_location().has_value());
+  EXPECT_EQ(s.target_location()->finding, PairFinding::Tested);
+  const TraceEvent* e = s.stepper().current();
+  ASSERT_NE(e, nullptr);
+  EXPECT_EQ(e->op, TraceOp::TestPair);
+  EXPECT_TRUE((e->element == 0 && e->other == 1) || (e->element == 1 && e->other == 0));
+  EXPECT_TRUE(e->contact);
+  EXPECT_EQ(s.stepper().position(), *s.target_location()->event + 1);
+  EXPECT_NE(s.target_status().find("tested against"), std::string::npos) << s.target_status();
+  EXPECT_NE(s.target_status().find("lost after detection"), std::string::npos) << s.target_status();
+  // The element filter and the breakpoint aim at the pair, for the next question.
+  EXPECT_EQ(s.focus_element, 0);
+  EXPECT_EQ(s.breakpoint.kind, BreakKind::FirstPairOf);
+}
+
+TEST(StepperTarget, SaysWhenTwoCellsAreNotNeighboursInBookNumbering) {
+  BookFrame f;
+  f.sim.algorithm = "screen";
+  StepperSession s(StepperConfig{std::nullopt, true});
+  s.set_target({0, Pair{0, 8}, Invariant::AabbInCells, "tight AABBs overlap but the cells are not neighbours"});
+  s.update(f.sim, 0, 1);
+  ASSERT_TRUE(s.target_location().has_value());
+  EXPECT_EQ(s.target_location()->finding, PairFinding::NotNeighbours);
+  // Book numbering: element 1 in cell (5,7), element 9 in (2,7).
+  EXPECT_NE(s.target_status().find("1 lies in cell (5,7) and 9 in (2,7): not neighbours"), std::string::npos)
+      << s.target_status();
+}
+
+TEST(StepperTarget, WaitsForItsFrame) {
+  BookFrame f;
+  f.sim.algorithm = "nbs";
+  f.sim.paused = true;
+  StepperSession s;
+  s.set_target({7, Pair{0, 1}, Invariant::TInA, "shapes touch but the pair is not in A"});
+  s.update(f.sim, 0, 1);  // frame 0 shown: the target waits
+  EXPECT_TRUE(s.target_pending());
+  EXPECT_TRUE(s.target_status().empty());
+  f.sim.frame = 7;
+  s.update(f.sim, 0, 2);
+  EXPECT_FALSE(s.target_pending());
+  EXPECT_FALSE(s.target_status().empty());
+  // Another frame captured later: the status described frame 7, and goes.
+  f.sim.frame = 8;
+  s.update(f.sim, 0, 3);
+  EXPECT_TRUE(s.target_status().empty());
+}
+
+TEST(StepperLongTraces, SeeksTheOperationsOfAnElementOrACell) {
+  BookFrame f;
+  f.sim.algorithm = "nbs";
+  StepperSession s;
+  s.update(f.sim, 0, 1);
+  ASSERT_TRUE(s.has_capture());
+  Stepper& st = s.stepper();
+  st.seek(0);
+  std::vector<std::size_t> about_3;
+  for (std::size_t n = 0; n < st.size(); ++n) {
+    Breakpoint b;
+    b.element = 3;
+    if (breakpoint_matches(b, st.events()[n])) about_3.push_back(n);
+  }
+  ASSERT_GE(about_3.size(), 3u);
+  ASSERT_TRUE(s.seek_touching(BreakKind::Element, 3, {-1, -1}, +1));
+  EXPECT_EQ(st.position(), about_3[0] + 1);
+  ASSERT_TRUE(s.seek_touching(BreakKind::Element, 3, {-1, -1}, +1));
+  EXPECT_EQ(st.position(), about_3[1] + 1);
+  ASSERT_TRUE(s.seek_touching(BreakKind::Element, 3, {-1, -1}, -1));
+  EXPECT_EQ(st.position(), about_3[0] + 1);
+  EXPECT_FALSE(s.seek_touching(BreakKind::Element, 3, {-1, -1}, -1));
+  EXPECT_NE(s.status.find("no earlier operation on element 3"), std::string::npos) << s.status;
+  // Cell (4, 6) holds element 0 (x 4.75, y 6.45): the first operation naming it is a push onto it.
+  st.seek(0);
+  ASSERT_TRUE(s.seek_touching(BreakKind::Cell, -1, {4, 6}, +1));
+  const TraceEvent* e = st.current();
+  ASSERT_NE(e, nullptr);
+  EXPECT_EQ(e->cell[0], 4);
+  EXPECT_EQ(e->cell[1], 6);
+  // The operation's point for the camera: its element's centre.
+  const auto p = s.focus_point();
+  ASSERT_TRUE(p.has_value());
+  EXPECT_DOUBLE_EQ(p->x(), f.elements.x[e->element]);
+}
+
+// Five violations over three frames; the filter hides T-in-A.
+struct ViolationsFixture {
+  std::vector<Violation> all;
+  SimView sim;
+  UiState state;
+  ViolationsFixture() {
+    const Invariant inv[] = {Invariant::AEqualsR, Invariant::TInA, Invariant::AEqualsR, Invariant::TInA, Invariant::AabbInCells};
+    for (int k = 0; k < 5; ++k) all.push_back(Violation{k / 2 + 1, inv[k], Pair{k, k + 1}, {}, {}, "x"});
+    sim.violations = &all;
+    sim.violations_total = 5;
+  }
+};
+
+TEST(Violations, FirstNextPreviousFollowTheFilter) {
+  ViolationsFixture v;
+  EXPECT_EQ(step_violation(v.sim, v.state, +1), 0u);  // nothing chosen yet: the first
+  v.state.violation_filter[static_cast<std::size_t>(Invariant::TInA)] = false;
+  v.state.current_violation = 0;
+  EXPECT_EQ(step_violation(v.sim, v.state, +1), 2u);  // 1 is T-in-A: skipped
+  v.state.current_violation = 2;
+  EXPECT_EQ(step_violation(v.sim, v.state, +1), 4u);
+  EXPECT_EQ(step_violation(v.sim, v.state, -1), 0u);
+  v.state.current_violation = 4;
+  EXPECT_EQ(step_violation(v.sim, v.state, +1), std::nullopt);
+  EXPECT_EQ(step_violation(v.sim, v.state, 0), 0u);
+  v.state.violation_filter = {false, false, false, false};
+  EXPECT_EQ(step_violation(v.sim, v.state, 0), std::nullopt);
+  EXPECT_EQ(describe_violation(v.all[2], true), "A==R in frame 2: (3, 4) x; cells (1,1) and (1,1)");
+}
+
+// The host's keys ask for frames and violations; the panels draw from the run's data.
+TEST(DebugPanels, KeysAskForFramesPlaybackAndViolations) {
+  ImGuiScope scope;
+  UiHost host;
+  BookFrame f;
+  ViolationsFixture v;
+  std::deque<FrameSummary> timeline;
+  for (int k = 0; k <= 3; ++k) timeline.push_back(FrameSummary{k, k / 60.0, 0, true, true, 9, 1, k == 2 ? 2 : 0, 0, 0.1f, 0});
+  f.sim.timeline = &timeline;
+  f.sim.newest_frame = 3;
+  f.sim.frame = 3;
+  f.sim.violations = &v.all;
+  f.sim.violations_total = 5;
+  f.sim.violation_frames = 3;
+  f.sim.violations_by_invariant = {2, 0, 2, 1};
+  f.sim.fault_name = "drop-pair";
+  ImGui::GetIO().MousePos = ImVec2(640, 360);
+  run_frame(host, f);
+  run_frame(host, f);
+
+  press(',');
+  run_frame(host, f);
+  release();
+  EXPECT_EQ(f.requests.frame_delta, -1);
+  press('.', true);
+  run_frame(host, f);
+  release();
+  EXPECT_EQ(f.requests.frame_delta, 10);
+  press('J');
+  run_frame(host, f);
+  release();
+  EXPECT_EQ(f.requests.play, -1);
+  press(']');
+  run_frame(host, f);
+  release();
+  EXPECT_EQ(f.requests.go_to_violation, 0u);
+  f.state.current_violation = 3;
+  press('[');
+  run_frame(host, f);
+  release();
+  EXPECT_EQ(f.requests.go_to_violation, 2u);
+  run_frame(host, f);  // the key up for a frame: the next press is a new one
+  press('[', true);
+  run_frame(host, f);
+  release();
+  EXPECT_EQ(f.requests.go_to_violation, 0u);
+
+  // The banner of the injected fault covers the top of the scene: the insets say so.
+  EXPECT_GT(host.insets(f.state).top, ImGui::GetFrameHeight() + 5);
+  // Both panels were drawn (their windows are among the covered rectangles with the menu and banner).
+  EXPECT_GE(host.covered().size(), 4u);
+}
+
+TEST(DebugPanels, APastFrameIsSelectedNotDragged) {
+  ImGuiScope scope;
+  UiHost host;
+  BookFrame f;
+  f.camera.set({4.75, 6.45}, 40.0);  // element 0 in the middle of the view
+  f.sim.showing_past = true;
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = ImVec2(640, 360);
+  run_frame(host, f);
+  io.MouseDown[0] = true;
+  run_frame(host, f);
+  io.MouseDown[0] = false;
+  EXPECT_EQ(f.state.selected, 0);
+  EXPECT_FALSE(f.requests.drag_begin.has_value());
+  EXPECT_FALSE(f.state.dragging);
+  ASSERT_TRUE(f.state.selected_cell.has_value());
+  EXPECT_EQ((*f.state.selected_cell)[0], 4);
+}
+
+TEST(CameraFollow, KeepsAPointInsideTheFreeView) {
+  render::Camera cam;
+  cam.set_viewport(1000, 600);
+  cam.set({0, 0}, 10.0);
+  const render::ScreenInsets in{200, 100, 20, 80};
+  cam.keep_in_view({1, 1}, in, 0.2);  // already well inside: no move
+  EXPECT_EQ(cam.centre(), Eigen::Vector2d(0, 0));
+  cam.keep_in_view({200, -50}, in, 0.2);
+  const Eigen::Vector2d s = cam.to_screen({200, -50});
+  EXPECT_NEAR(s.x(), 200 + 0.5 * (1000 - 200 - 100), 1e-6);
+  EXPECT_NEAR(s.y(), 20 + 0.5 * (600 - 20 - 80), 1e-6);
+  EXPECT_EQ(cam.pixels_per_metre(), 10.0);
+}
+
+}  // namespace
+}  // namespace nbscope::ui
