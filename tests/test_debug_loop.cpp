@@ -79,8 +79,14 @@ TEST_P(StopAtViolation, StopsOnTheFrameTheStraightRunReportsFirst) {
   const json a = json::parse(read_text(dir + "/straight.json"));
   const std::int64_t first = a["runs"][0]["violations"]["first_frame"].get<std::int64_t>();
 
+#ifdef NBSCOPE_TEST_GUI
+  // The frame as the Violations panel shows it (the golden test checks one such picture pixel by pixel).
+  const std::string shot = " --no-timings --screenshot '" + dir + "/stopped.png'";
+#else
+  const std::string shot;
+#endif
   const auto stopped = run("headless --scene '" + scene("default") + "' --frames 60 --inject-fault " + fault +
-                           " --stop-at-violation --report '" + dir + "/stopped.json'");
+                           " --stop-at-violation --report '" + dir + "/stopped.json'" + shot);
   EXPECT_EQ(stopped.exit_code, 1) << stopped.out << stopped.err;
   EXPECT_NE(stopped.out.find("stopped at the first violation, frame " + std::to_string(first) + ": "), std::string::npos)
       << stopped.out;
@@ -89,6 +95,9 @@ TEST_P(StopAtViolation, StopsOnTheFrameTheStraightRunReportsFirst) {
   ASSERT_EQ(b["runs"][0]["frames"].size(), static_cast<std::size_t>(first));
   EXPECT_EQ(b["runs"][0]["frames"].back()["frame"], first);
   EXPECT_GT(b["runs"][0]["frames"].back()["violations"].size(), 0u);
+#ifdef NBSCOPE_TEST_GUI
+  EXPECT_GT(std::filesystem::file_size(dir + "/stopped.png"), 10000u);
+#endif
   // The frames up to it are the straight run's.
   for (std::int64_t k = 0; k < first; ++k)
     EXPECT_EQ(b["runs"][0]["frames"][static_cast<std::size_t>(k)]["hash"], a["runs"][0]["frames"][static_cast<std::size_t>(k)]["hash"]);

@@ -177,6 +177,13 @@ TEST(Window, XvfbWindowOnOneFrameWithTheStepperMatchesTheHeadlessFrame) {
                              "--book-numbering --select 3 --size 1280x720 --no-timings"));
 }
 
+// Going back through the history in the window (gui --back) shows the past frame as headless --back
+// does: the same rebuilt frame, trail, Timeline cursor and panels.
+TEST(Window, XvfbWindowGoingBackMatchesTheHeadlessFrame) {
+  expect_window_matches_headless(
+      "back", absolute_paths("--scene assets/scenes/default.json --frames 40 --back 12 --select 12 --size 1280x720 --no-timings"));
+}
+
 // ---- rendering errors: one line, exit 2, no file ------------------------------------------------
 
 // Runs a shell command line, capturing its exit code and stderr.
@@ -195,6 +202,12 @@ void expect_one_line_error(const testcli::Result& r, const std::string& needle) 
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_EQ(r.err.rfind("nbscope: error: ", 0), 0u) << r.err;
   EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+}
+
+TEST(RenderErrors, BackNeedsScriptedFrames) {
+  expect_one_line_error(shell("'" + testcli::binary() + "' gui --back 5"), "--back: needs --frames N");
+  expect_one_line_error(shell("'" + testcli::binary() + "' gui --frames 5 --back 6 --screenshot /tmp/nbscope_never.png"),
+                        "--back: 6 is more than the 5 frames run");
 }
 
 TEST(RenderErrors, MissingShaderDirectory) {

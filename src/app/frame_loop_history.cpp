@@ -1,0 +1,171 @@
+// FrameLoop's history side: showing kept past frames (and recorded ones) again, and resuming the
+// simulation from a past frame by deterministic re-simulation.
+//
+// Index: history | resume.
+#include "app/frame_loop_impl.hpp"
+
+namespace nbscope {
+
+// ---- history -------------------------------------------------------------------------------
+
+const FrameHistory& FrameLoop::history() const { return impl_->history; }
+void FrameLoop::set_history_budget(std::size_t bytes) {
+  impl_->options.history_budget = bytes;
+  impl_->history.set_budget(bytes);
+}
+const ViolationLog& FrameLoop::violation_log() const { return impl_->violations; }
+bool FrameLoop::showing_past() const { return impl_->kept != nullptr; }
+
+std::int64_t FrameLoop::newest_frame() const {
+  const Impl& m = *impl_;
+  if (m.recording) return m.recording->frames.back().number;
+  return m.world ? m.world->frame() : 0;
+}
+
+bool FrameLoop::can_show(std::int64_t frame) const {
+  const Impl& m = *impl_;
+  if (!m.loaded()) return false;
+  if (m.world && frame == m.world->frame()) return true;
+  const auto index = m.history.find(frame);
+  return index && m.history.at(*index).kept && (m.recording || m.history.state(*index));
+}
+
+void FrameLoop::show_frame(std::int64_t frame) {
+  Impl& m = *impl_;
+  if (!m.loaded()) return;
+  if (m.resume_world) throw Error("frame " + std::to_string(frame) + ": the simulation is being resumed; wait or cancel");
+  if (!can_show(frame)) {
+    const auto first = m.history.first_kept();
+    throw Error("frame " + std::to_string(frame) + " is not kept (frames " +
+                (first ? std::to_string(*first) : std::to_string(newest_frame())) + ".." + std::to_string(newest_frame()) +
+                " are; a larger history budget keeps more)");
+  }
+  if (frame == m.frame_number()) return;
+  const double physics_ms = 0;  // nothing was simulated to show it
+  if (m.recording) {
+    m.recorded = m.recorded_index(frame);
+    m.stale = m.elements_before(frame);
+  } else if (frame == m.world->frame()) {
+    m.kept.reset();
+    if (m.options.fault == Fault::StalePositions) m.stale = m.elements_before(frame);
+  } else {
+    m.kept = std::make_unique<KeptWorldFrame>(*m.world, m.history.state(*m.history.find(frame)));
+    if (m.options.fault == Fault::StalePositions) m.stale = m.elements_before(frame);
+  }
+  m.set_physics_ms(physics_ms);
+  m.detect_and_check();
+}
+
+bool FrameLoop::step_back() {
+  const auto previous = neighbour(-1);
+  if (!previous) return false;
+  show_frame(*previous);
+  return true;
+}
+
+std::optional<std::int64_t> FrameLoop::neighbour(std::int64_t delta) const {
+  const Impl& m = *impl_;
+  if (!m.loaded() || delta == 0 || m.history.empty()) return std::nullopt;
+  const auto here = m.history.find(m.frame_number());
+  if (!here) return std::nullopt;
+  const auto last = static_cast<std::int64_t>(m.history.size()) - 1;
+  std::int64_t index = std::clamp<std::int64_t>(static_cast<std::int64_t>(*here) + delta, 0, last);
+  // Past frames whose states were dropped cannot be shown: stop at the oldest that can.
+  const auto showable = [&](std::int64_t i) { return can_show(m.history.at(static_cast<std::size_t>(i)).frame); };
+  while (index != static_cast<std::int64_t>(*here) && !showable(index)) index += delta > 0 ? -1 : 1;
+  if (index == static_cast<std::int64_t>(*here)) return std::nullopt;
+  return m.history.at(static_cast<std::size_t>(index)).frame;
+}
+
+void FrameLoop::element_path(ElementId k, std::int64_t from, std::int64_t to, std::vector<std::array<double, 2>>& out) const {
+  out.clear();
+  const Impl& m = *impl_;
+  if (!m.loaded() || k < 0) return;
+  for (std::size_t i = 0; i < m.history.size(); ++i) {
+    const FrameSummary& f = m.history.at(i);
+    if (f.frame < from || f.frame > to || k >= f.elements) continue;
+    if (m.recording) {
+      const Elements& e = m.recording->frames[m.recorded_index(f.frame)].elements;
+      out.push_back({e.x[k], e.y[k]});
+    } else if (const auto& state = m.history.state(i)) {
+      std::array<double, 2> p{};
+      m.world->element_centre(*state, k, p[0], p[1]);
+      out.push_back(p);
+    } else if (f.frame == m.world->frame()) {
+      out.push_back({m.world->elements().x[k], m.world->elements().y[k]});
+    }
+  }
+}
+
+// ---- resume --------------------------------------------------------------------------------
+
+void FrameLoop::begin_resume() {
+  Impl& m = *impl_;
+  if (!m.world || !m.kept || m.resume_world) return;
+  m.resume_target = m.kept->frame();
+  m.resume_world = std::make_unique<PhysicsWorld>(m.scene);
+  m.resume_input = 0;
+  m.divergence.reset();
+}
+
+bool FrameLoop::continue_resume(double budget_ms) {
+  Impl& m = *impl_;
+  if (!m.resume_world) return true;
+  PhysicsWorld& w = *m.resume_world;
+  const auto t0 = std::chrono::steady_clock::now();
+  do {
+    if (w.frame() >= m.resume_target) break;
+    // The drags made on this frame, in their order, then the step, as the original run did.
+    while (m.resume_input < m.inputs.size() && m.inputs[m.resume_input].frame <= w.frame()) {
+      const Impl::DragInput& in = m.inputs[m.resume_input++];
+      if (in.kind == Impl::DragInput::Kind::Begin) w.begin_drag(in.x, in.y);
+      else if (in.kind == Impl::DragInput::Kind::To) w.drag_to(in.x, in.y);
+      else w.end_drag();
+    }
+    if (w.frame() + 1 == m.resume_target) m.resume_stale = w.elements();
+    try {
+      w.step();
+    } catch (const Error& e) {
+      cancel_resume();
+      throw Error(m.scene.path + ": resuming at frame " + std::to_string(w.frame()) + ": " + e.what());
+    }
+    // Determinism check: every kept frame on the way must come back exactly.
+    if (!m.divergence) {
+      const auto index = m.history.find(w.frame());
+      if (index && m.history.at(*index).hash != 0 && m.history.at(*index).hash != hash_elements(w.elements()))
+        m.divergence = w.frame();
+    }
+  } while (ms_since(t0) < budget_ms);
+  if (w.frame() < m.resume_target) return false;
+
+  // Arrived: the re-simulated world is the live one at K, the later frames are gone.
+  const std::int64_t k = m.resume_target;
+  if (w.dragging()) w.end_drag();  // nobody holds the mouse now
+  m.kept.reset();
+  m.world = std::move(m.resume_world);
+  m.resume_target = -1;
+  m.history.truncate_after(k);
+  m.violations.truncate_after(k);
+  std::erase_if(m.inputs, [&](const Impl::DragInput& in) { return in.frame >= k; });
+  m.stale = k > 0 ? m.resume_stale : m.world->elements();
+  m.set_physics_ms(0);
+  m.detect_and_check();
+  return true;
+}
+
+void FrameLoop::cancel_resume() {
+  impl_->resume_world.reset();
+  impl_->resume_target = -1;
+}
+
+bool FrameLoop::resuming() const { return impl_->resume_world != nullptr; }
+
+std::pair<std::int64_t, std::int64_t> FrameLoop::resume_progress() const {
+  const Impl& m = *impl_;
+  if (!m.resume_world) return {0, 0};
+  return {m.resume_world->frame(), m.resume_target};
+}
+
+std::optional<std::int64_t> FrameLoop::resume_divergence() const { return impl_->divergence; }
+
+}  // namespace nbscope

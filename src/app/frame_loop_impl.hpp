@@ -1,0 +1,311 @@
+// nbscope app: FrameLoop's private state (Lane, FrameLoop::Impl), shared by the .cpp files that
+// implement the loop (frame_loop.cpp: frames, configuration, accessors; frame_loop_history.cpp:
+// showing kept frames and resuming). Not for anyone else: it includes Box2D.
+//
+// Index: helpers | Lane (one detector's view of a frame) | Impl (the frame source, the lanes, the
+// checker, the history, the resume in progress; detect_and_check and record_frame).
+#pragma once
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/frame_loop.hpp"
+#include "check/check.hpp"
+#include "core/error.hpp"
+#include "physics/kept_frame.hpp"
+#include "physics/world.hpp"
+
+namespace nbscope {
+
+// Milliseconds since t0.
+inline double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// A detector of the registry that handles 2D; Error otherwise.
+inline std::unique_ptr<Detector> make_2d_detector(std::string_view name) {
+  auto d = make_detector(name);
+  if (!d->supports_dim(2)) throw Error("algorithm '" + std::string(name) + "' does not handle 2D scenes");
+  return d;
+}
+
+struct Lane {
+  std::string name;
+  std::unique_ptr<Detector> detector;
+  PairList pairs;
+  Grid grid;
+  std::vector<CellIndex> cells;
+  FrameReport report;
+
+  explicit Lane(std::string_view algorithm) : name(algorithm), detector(make_2d_detector(algorithm)) {}
+
+  // Detection on `input` with the output side of `fault`; timed into report.timings.detection_ms.
+  void detect(const Elements& input, const DetectOptions& options, Fault fault, const std::string& where) {
+    try {
+      const auto t0 = std::chrono::steady_clock::now();
+      detector->detect(input, options, pairs);
+      sort_pairs(pairs);
+      const Grid* own = detector->last_grid();
+      grid = own != nullptr ? *own : make_grid(input, options.grid);
+      integerise_cells(input, grid, cells);
+      apply_output_fault(fault, grid, cells, pairs);
+      report.timings.detection_ms = ms_since(t0);
+    } catch (const Error& e) {
+      throw Error(where + name + ": " + e.what());
+    }
+  }
+};
+
+struct FrameLoop::Impl {
+  FrameLoopOptions options;
+  Scene scene;
+  std::unique_ptr<PhysicsWorld> world;          // the frame source for a scene; null when replaying
+  std::shared_ptr<const Recording> recording;   // the frame source when replaying; null for a scene
+  std::size_t recorded = 0;                     // index of the current recorded frame
+  Lane main;
+  std::vector<Lane> others;               // comparison algorithms
+  std::vector<std::string> other_names;
+  std::vector<FrameReport> other_reports;
+  FrameChecker checker;
+  PairList main_reference;    // R of the main lane this frame
+  DetectOptions detect_options;
+  Elements stale;             // last frame's elements (stale-positions fault)
+  Elements detected_on;       // what the detectors were given this frame when not the world's elements
+  bool detected_on_world = true;
+
+  // ---- history ----
+  FrameHistory history;
+  ViolationLog violations;
+  std::unique_ptr<KeptWorldFrame> kept;  // the past frame shown, or null for the live world's
+
+  // A drag call, with the frame it was made on (before that frame's successor was stepped).
+  struct DragInput {
+    enum class Kind : std::uint8_t { Begin, To, End } kind = Kind::Begin;
+    std::int64_t frame = 0;
+    double x = 0, y = 0;
+  };
+  std::vector<DragInput> inputs;
+
+  // ---- resume ----
+  std::unique_ptr<PhysicsWorld> resume_world;  // re-simulating towards resume_target
+  std::int64_t resume_target = -1;
+  std::size_t resume_input = 0;                // next input to replay
+  Elements resume_stale;                       // the re-simulated frame before the target
+  std::optional<std::int64_t> divergence;
+
+  explicit Impl(FrameLoopOptions o)
+      : options(std::move(o)), main(options.algorithm), checker(CheckOptions{options.brute_limit}) {
+    history.set_budget(options.history_budget);
+  }
+
+  // ---- the frame source ----
+  bool loaded() const { return world != nullptr || recording != nullptr; }
+  // Box2D's side of the frame shown: a kept past frame or the live world (null when replaying).
+  const Box2dFrame* box2d() const { return kept ? static_cast<const Box2dFrame*>(kept.get()) : world.get(); }
+  const Elements& now() const { return world ? box2d()->elements() : recording->frames[recorded].elements; }
+  std::int64_t frame_number() const { return world ? box2d()->frame() : recording->frames[recorded].number; }
+  double time_now() const { return world ? box2d()->time() : recording->frames[recorded].time; }
+  bool first_frame() const { return world ? box2d()->frame() == 0 : recorded == 0; }
+
+  const Elements& detector_input() const { return detected_on_world ? now() : detected_on; }
+
+  // Detection (with the fault) and the check of the world's current frame, for every lane;
+  // physics_ms is kept.
+  void detect_and_check() {
+    const Elements& now = this->now();
+    detected_on_world = true;
+    if (options.fault == Fault::StalePositions && !first_frame()) {
+      // Last frame's positions; elements that did not exist then (emitted now) at their new ones.
+      detected_on = now;
+      const Eigen::Index old_n = std::min(stale.size(), now.size());
+      detected_on.x.head(old_n) = stale.x.head(old_n);
+      detected_on.y.head(old_n) = stale.y.head(old_n);
+      detected_on_world = false;
+    }
+    const std::string where = scene.path + ": frame " + std::to_string(frame_number()) + ": ";
+    const Elements& input = detector_input();
+    main.detect(input, detect_options, options.fault, where);
+    for (Lane& lane : others) lane.detect(input, detect_options, options.fault, where);
+
+    if (!options.checks) {
+      for (Lane* lane : lanes()) {
+        const double detection_ms = lane->report.timings.detection_ms, physics_ms = lane->report.timings.physics_ms;
+        lane->report = FrameReport{};
+        lane->report.frame = frame_number();
+        lane->report.timings = {physics_ms, detection_ms, 0};
+        lane->report.counts.elements = now.size();
+        lane->report.counts.bodies = world ? box2d()->body_count() : 0;
+        lane->report.counts.a = static_cast<std::int64_t>(lane->pairs.size());
+      }
+    } else {
+      // The first lane's check time includes the sets every lane shares (F, G, T).
+      auto t0 = std::chrono::steady_clock::now();
+      if (world) checker.begin_frame(*box2d(), detect_options);
+      else checker.begin_frame(now, frame_number(), detect_options);
+      for (Lane* lane : lanes()) {
+        CheckInput in;
+        in.algorithm = lane->detector->name();
+        in.pairs = &lane->pairs;
+        in.cells = &lane->cells;
+        in.drop_box2d_contact = options.fault == Fault::DropBox2dContact;
+        checker.check(in, lane->report);
+        if (lane == &main) main_reference = checker.reference_pairs();
+        lane->report.timings.check_ms = ms_since(t0);
+        t0 = std::chrono::steady_clock::now();
+      }
+    }
+    const std::uint64_t hash = hash_elements(now);
+    for (Lane* lane : lanes()) lane->report.hash = hash;
+    other_reports.clear();
+    for (const Lane& lane : others) other_reports.push_back(lane.report);
+    record_frame();
+  }
+
+  // The shown frame's summary into the history (a new live frame is pushed with its kept state; a
+  // frame shown again has its counts replaced), and its violations into the run's log.
+  void record_frame() {
+    const FrameReport& r = main.report;
+    FrameSummary s;
+    s.frame = frame_number();
+    s.time = time_now();
+    s.hash = r.hash;
+    s.kept = true;
+    s.checked = r.checked;
+    s.elements = now().size();
+    s.pairs = static_cast<std::int64_t>(main.pairs.size());
+    s.violations = r.violation_count();
+    s.physics_ms = static_cast<float>(r.timings.physics_ms);
+    s.detection_ms = static_cast<float>(r.timings.detection_ms);
+    s.check_ms = static_cast<float>(r.timings.check_ms);
+    if (const auto index = history.find(s.frame)) {
+      s.physics_ms = history.at(*index).physics_ms;  // a frame shown again is not simulated again
+      history.update(*index, s);
+    } else {
+      std::shared_ptr<WorldState> state;
+      if (world && history.budget() > 0) {
+        state = std::make_shared<WorldState>();
+        world->capture(*state, options.checks ? &checker.box2d_pairs() : nullptr);
+      }
+      history.push(s, state, state ? state->bytes() : 0);
+    }
+    violations.set_frame(r);
+  }
+
+  std::vector<Lane*> lanes() {
+    std::vector<Lane*> all{&main};
+    for (Lane& lane : others) all.push_back(&lane);
+    return all;
+  }
+
+  void set_physics_ms(double ms) {
+    for (Lane* lane : lanes()) lane->report.timings.physics_ms = ms;
+  }
+
+  void build(const Scene& s) {
+    DetectOptions opts;
+    if (s.cell_size) opts.grid.cell_size = *s.cell_size;
+    if (s.origin) opts.grid.origin = std::array<double, 3>{s.origin->x, s.origin->y, 0};
+    if (s.cells) opts.grid.cells = std::array<std::int64_t, 3>{(*s.cells)[0], (*s.cells)[1], 1};
+    auto fresh = std::make_unique<PhysicsWorld>(s);
+    // A pinned cell size must hold the largest element from the start and every element an
+    // emitter will add (the grid would refuse it mid-run, far from the field to fix).
+    if (s.cell_size) {
+      char d[64];
+      if (fresh->elements().size() > 0 && *s.cell_size < 2 * fresh->elements().max_radius()) {
+        std::snprintf(d, sizeof d, "%.6g", 2 * fresh->elements().max_radius());
+        throw Error(s.cell_size_where + "smaller than the largest element's diameter " + d);
+      }
+      std::string emitter;
+      if (const double r = fresh->largest_emitted_radius(emitter); *s.cell_size < 2 * r) {
+        std::snprintf(d, sizeof d, "%.6g", 2 * r);
+        throw Error(s.cell_size_where + "smaller than the diameter " + d + " of the elements emitted by " +
+                    emitter.substr(0, emitter.size() - 2));
+      }
+    }
+    Scene copy = s;
+    scene = std::move(copy);
+    kept.reset();  // it points into the old world
+    world = std::move(fresh);
+    recording.reset();
+    detect_options = opts;
+    start();
+  }
+
+  // The frame source's first frame, detected and checked; a new run: the history starts again.
+  void start() {
+    for (Lane* lane : lanes()) lane->report = FrameReport{};
+    recorded = 0;
+    kept.reset();
+    resume_world.reset();
+    resume_target = -1;
+    divergence.reset();
+    inputs.clear();
+    history.clear();
+    violations.clear();
+    if (recording) {
+      // Every recorded frame is showable from the start; each is checked when first shown.
+      for (const RecordedFrame& f : recording->frames) {
+        FrameSummary s;
+        s.frame = f.number;
+        s.time = f.time;
+        s.kept = true;
+        s.elements = f.elements.size();
+        history.push(s, nullptr, 0);
+      }
+    }
+    stale = now();
+    detect_and_check();
+  }
+
+  // Index of recorded frame number `frame` (it must exist).
+  std::size_t recorded_index(std::int64_t frame) const {
+    const auto& frames = recording->frames;
+    const auto it = std::lower_bound(frames.begin(), frames.end(), frame,
+                                     [](const RecordedFrame& f, std::int64_t n) { return f.number < n; });
+    return static_cast<std::size_t>(it - frames.begin());
+  }
+
+  // The elements of the frame before `frame` when it can be shown, else `frame`'s own (the
+  // stale-positions fault then has nothing older to give).
+  Elements elements_before(std::int64_t frame) {
+    if (recording) return recording->frames[recorded > 0 ? recorded - 1 : 0].elements;
+    const auto index = history.find(frame - 1);
+    if (index && history.state(*index)) return KeptWorldFrame(*world, history.state(*index)).elements();
+    return now();
+  }
+
+  // Replays `rec` instead of a world: its grid pins as a scene's would, its name the file's stem.
+  void build(std::shared_ptr<const Recording> rec) {
+    DetectOptions opts;
+    Scene s;
+    s.path = rec->path;
+    s.name = std::filesystem::path(rec->path).stem().string();
+    if (rec->grid.cell_size) opts.grid.cell_size = s.cell_size = *rec->grid.cell_size;
+    if (rec->grid.origin) {
+      s.origin = Vec2{(*rec->grid.origin)[0], (*rec->grid.origin)[1]};
+      opts.grid.origin = std::array<double, 3>{s.origin->x, s.origin->y, 0};
+    }
+    if (rec->grid.cells) {
+      s.cells = rec->grid.cells;
+      opts.grid.cells = std::array<std::int64_t, 3>{(*s.cells)[0], (*s.cells)[1], 1};
+    }
+    // The recorded time per frame, for the panels (the recording's own times are shown per frame).
+    const RecordedFrame& first = rec->frames.front();
+    const RecordedFrame& last = rec->frames.back();
+    if (last.number > first.number && last.time > first.time)
+      s.time_step = (last.time - first.time) / static_cast<double>(last.number - first.number);
+    scene = std::move(s);
+    kept.reset();
+    world.reset();
+    recording = std::move(rec);
+    detect_options = opts;
+    start();
+  }
+};
+
+}  // namespace nbscope
