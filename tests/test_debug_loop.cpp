@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "support/paths.hpp"
 #include "support/run_cli.hpp"
 
 namespace nbscope {
@@ -19,7 +20,7 @@ using testcli::run;
 using testcli::scratch_dir;
 using testcli::write_text;
 
-std::string scene(const std::string& name) { return std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/" + name + ".json"; }
+using testpaths::scene;
 
 // One frame's hash per frame number of the first run of a report.
 std::vector<std::pair<std::int64_t, std::string>> hashes_of(const json& report) {

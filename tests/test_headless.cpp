@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "support/paths.hpp"
 #include "support/run_cli.hpp"
 
 namespace nbscope {
@@ -17,7 +18,7 @@ using testcli::run;
 using testcli::scratch_dir;
 using testcli::write_text;
 
-std::string scene(const std::string& name) { return std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/" + name + ".json"; }
+using testpaths::scene;
 
 TEST(Headless, DefaultScenePassesAndReportsEveryFrame) {
   const std::string dir = scratch_dir("headless_default");

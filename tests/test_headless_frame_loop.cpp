@@ -3,6 +3,7 @@
 // dragging, tracing, and errors that leave the loop usable.
 #include <gtest/gtest.h>
 
+#include "support/paths.hpp"
 #include "support/generators.hpp"
 
 #include "app/frame_loop.hpp"
@@ -16,7 +17,7 @@ namespace {
 
 const bool kRegistered = (register_physics_detectors(), true);
 
-std::string scene(const std::string& name) { return std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/" + name + ".json"; }
+using testpaths::scene;
 
 using testdata::brute_pairs;
 

@@ -5,6 +5,7 @@
 
 #include <map>
 
+#include "support/paths.hpp"
 #include "app/frame_loop.hpp"
 #include "app/history.hpp"
 #include "core/error.hpp"
@@ -18,7 +19,7 @@ namespace {
 
 const bool kRegistered = (register_physics_detectors(), true);
 
-std::string scene(const std::string& name) { return std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/" + name + ".json"; }
+using testpaths::scene;
 
 // Everything a frame shows and checks, to compare a live frame with the same frame shown again.
 struct FrameFacts {

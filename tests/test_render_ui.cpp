@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/ui_fixture.hpp"
 #include "render/overlays.hpp"
 #include "ui/host.hpp"
 #include "ui/settings.hpp"
@@ -15,20 +16,7 @@
 namespace nbscope::ui {
 namespace {
 
-// An ImGui context with its font atlas built, so frames can run without a GL backend.
-struct ImGuiContextScope {
-  ImGuiContextScope() {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    io.DisplaySize = ImVec2(1280, 720);
-    io.DeltaTime = 1.0f / 60.0f;
-  }
-  ~ImGuiContextScope() { ImGui::DestroyContext(); }
-};
+using ImGuiContextScope = testui::ImGuiScope;
 
 // Three elements in a 3x1 grid of 2 m cells, a camera of 20 px/m centred on them.
 struct World {

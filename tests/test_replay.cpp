@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "support/paths.hpp"
 #include "support/generators.hpp"
 #include "support/run_cli.hpp"
 
@@ -27,7 +28,7 @@ using testcli::run;
 using testcli::scratch_dir;
 using testcli::write_text;
 
-std::string scene(const std::string& name) { return std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/" + name + ".json"; }
+using testpaths::scene;
 
 // ---- helpers: the format as the README documents it, read with nothing but strtod -------------
 

@@ -120,20 +120,20 @@ class StepperPanel final : public Panel {
       st.seek(static_cast<std::size_t>(k));
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("go to operation K (type, then Enter)");
-    ImGui::SameLine();
-    ImGui::TextDisabled("elem");
-    ImGui::SameLine();
-    if (ImGui::ArrowButton("##eprev", ImGuiDir_Left)) seek_touching(c, s, false, -1);
-    ImGui::SameLine(0, 2);
-    if (ImGui::ArrowButton("##enext", ImGuiDir_Right)) seek_touching(c, s, false, +1);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the operation before/after on the selected element (PageUp/PageDown)");
-    ImGui::SameLine();
-    ImGui::TextDisabled("cell");
-    ImGui::SameLine();
-    if (ImGui::ArrowButton("##cprev", ImGuiDir_Left)) seek_touching(c, s, true, -1);
-    ImGui::SameLine(0, 2);
-    if (ImGui::ArrowButton("##cnext", ImGuiDir_Right)) seek_touching(c, s, true, +1);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the operation before/after on the selected cell (Shift+PageUp/PageDown)");
+    // A pair of arrows: the operation before / after on the selected element, or cell.
+    const auto arrows = [&](const char* label, bool cell, const char* tooltip) {
+      ImGui::SameLine();
+      ImGui::TextDisabled("%s", label);
+      ImGui::PushID(label);
+      ImGui::SameLine();
+      if (ImGui::ArrowButton("##prev", ImGuiDir_Left)) seek_touching(c, s, cell, -1);
+      ImGui::SameLine(0, 2);
+      if (ImGui::ArrowButton("##next", ImGuiDir_Right)) seek_touching(c, s, cell, +1);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
+      ImGui::PopID();
+    };
+    arrows("elem", false, "the operation before/after on the selected element (PageUp/PageDown)");
+    arrows("cell", true, "the operation before/after on the selected cell (Shift+PageUp/PageDown)");
     ImGui::SameLine();
     ImGui::Checkbox("follow", &c.state.follow_operation);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the camera follows the current operation");

@@ -1,0 +1,10 @@
+// nbscope tests: paths into the source tree (NBSCOPE_SOURCE_DIR is baked in by CMake).
+#pragma once
+#include <string>
+
+namespace nbscope::testpaths {
+
+// assets/scenes/NAME.json of the source tree.
+inline std::string scene(const std::string& name) { return std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/" + name + ".json"; }
+
+}  // namespace nbscope::testpaths
