@@ -107,7 +107,11 @@ TEST(History, AKeptFrameIsTheLiveFrameAgain) {
       loop.step();
       live[k] = facts_of(loop);
     }
-    for (const std::int64_t k : {0, 1, 17, 42, 59, 60}) {
+    // Every fifth kept frame and the two ends, newest first (as scrubbing back goes).
+    std::vector<std::int64_t> shown{60, 59};
+    for (std::int64_t k = 55; k >= 0; k -= 5) shown.push_back(k);
+    shown.push_back(1);
+    for (const std::int64_t k : shown) {
       loop.show_frame(k);
       EXPECT_EQ(loop.frame(), k);
       EXPECT_EQ(loop.showing_past(), k != 60);
