@@ -206,6 +206,61 @@ TEST(History, ResumingReplaysDrags) {
   EXPECT_NE(undisturbed.report().hash, straight.report().hash);
 }
 
+// Leaving the live frame while a body is held lets it go, as the user's own release would, and a
+// later resume replays that release too.
+TEST(History, ADragHeldWhenGoingBackIsReleasedAndReplayed) {
+  ASSERT_TRUE(kRegistered);
+  FrameLoop straight, viewer;
+  for (FrameLoop* loop : {&straight, &viewer}) loop->load_scene_file(scene("default"));
+  const auto drag = [](FrameLoop& loop, int from, int to) {
+    for (int k = from; k < to; ++k) {
+      if (k == 10) {
+        const Elements& e = loop.elements();
+        ASSERT_TRUE(loop.begin_drag(e.x[e.size() - 1], e.y[e.size() - 1]));
+      }
+      if (k > 10) loop.drag_to(static_cast<double>(k) * 0.1, 8.0);
+      loop.step();
+    }
+  };
+  drag(straight, 0, 20);
+  straight.end_drag();
+  for (int k = 20; k < 60; ++k) straight.step();
+  drag(viewer, 0, 20);
+  ASSERT_TRUE(viewer.dragging());
+  viewer.show_frame(15);  // still holding the body: it is let go at frame 20
+  EXPECT_FALSE(viewer.dragging());
+  viewer.show_frame(20);
+  EXPECT_FALSE(viewer.dragging());
+  for (int k = 20; k < 60; ++k) viewer.step();
+  EXPECT_EQ(viewer.report().hash, straight.report().hash);
+  // Resumed from frame 30, the re-simulation replays the drag and its release.
+  viewer.show_frame(30);
+  viewer.begin_resume();
+  while (!viewer.continue_resume(5.0)) {
+  }
+  EXPECT_FALSE(viewer.resume_divergence().has_value());
+  for (int k = 30; k < 60; ++k) viewer.step();
+  EXPECT_EQ(viewer.report().hash, straight.report().hash);
+}
+
+// Switching the checks off does not erase what they found: the run's violations stay listed.
+TEST(History, ChecksSwitchedOffKeepTheRunsViolations) {
+  ASSERT_TRUE(kRegistered);
+  FrameLoopOptions o;
+  o.fault = Fault::DropPair;
+  FrameLoop loop(o);
+  loop.load_scene_file(scene("default"));
+  for (int k = 0; k < 10; ++k) loop.step();
+  const std::int64_t total = loop.violation_log().total();
+  ASSERT_GT(total, 0);
+  loop.set_checks_enabled(false);
+  EXPECT_EQ(loop.violation_log().total(), total);
+  loop.show_frame(5);
+  EXPECT_EQ(loop.violation_log().total(), total);
+  EXPECT_TRUE(loop.history().at(5).checked);
+  EXPECT_GT(loop.history().at(5).violations, 0);
+}
+
 TEST(History, ThePastIsReadOnlyUntilResumed) {
   ASSERT_TRUE(kRegistered);
   FrameLoop loop;

@@ -139,11 +139,17 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
   }
   if (r.speed) session.speed = *r.speed;
   if (r.algorithm) attempt([&] { loop.set_algorithm(*r.algorithm); });
+  // A new run (another scene, a restart, a new time step): nothing of the old one's playback stays.
+  const auto new_run = [&] {
+    session.resume_note.clear();
+    session.play_direction = 1;
+  };
   if (r.scene) {
     attempt([&] {
       loop.load_scene_file(*r.scene);
       session.scene_path = *r.scene;
       view.on_scene_loaded(loop);
+      new_run();
     });
   }
   if (r.time_step && loop.replaying()) {
@@ -155,11 +161,13 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
       s.time_step = *r.time_step;
       loop.load_scene(s);
       view.on_scene_loaded(loop, false);
+      new_run();
     });
   }
   if (r.restart) {
     attempt([&] { loop.restart(); });
     view.on_scene_loaded(loop, false);
+    new_run();
   }
   if (r.history_budget_mb) loop.set_history_budget(static_cast<std::size_t>(*r.history_budget_mb) << 20);
   if (r.cancel_resume) loop.cancel_resume();

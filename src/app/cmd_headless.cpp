@@ -107,8 +107,11 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
   std::string names;
   for (const AlgorithmRun& run : report.runs) names += (names.empty() ? "" : ",") + run.algorithm;
   const std::size_t frames = report.runs.empty() ? 0 : report.runs.front().frames.size();
+  // The run's last frame's, not the frame shown at the end (--back, --violation go elsewhere).
+  const std::int64_t elements =
+      frames > 0 ? report.runs.front().frames.back().counts.elements : loop.elements().size();
   std::string s = std::string(loop.replaying() ? "replay: " : "headless: ") + loop.scene().name + ", " + names + (o.fault == Fault::None ? "" : std::string(", fault ") + fault_name(o.fault)) +
-                  ", " + std::to_string(frames) + " frames, " + std::to_string(loop.elements().size()) + " elements: ";
+                  ", " + std::to_string(frames) + " frames, " + std::to_string(elements) + " elements: ";
   std::string failures;
   for (const AlgorithmRun& run : report.runs) {
     std::int64_t total = 0, bad_frames = 0, first = -1;

@@ -44,14 +44,14 @@ void FrameLoop::show_frame(std::int64_t frame) {
   const double physics_ms = 0;  // nothing was simulated to show it
   if (m.recording) {
     m.recorded = m.recorded_index(frame);
-    m.stale = m.elements_before(frame);
   } else if (frame == m.world->frame()) {
     m.kept.reset();
-    if (m.options.fault == Fault::StalePositions) m.stale = m.elements_before(frame);
   } else {
+    m.release_drag();  // leaving the live frame: nobody holds a body in the past
     m.kept = std::make_unique<KeptWorldFrame>(*m.world, m.history.state(*m.history.find(frame)));
-    if (m.options.fault == Fault::StalePositions) m.stale = m.elements_before(frame);
   }
+  // The frame before this one, for the stale-positions fault (now or if it is chosen later here).
+  m.stale = m.elements_before(frame);
   m.set_physics_ms(physics_ms);
   m.detect_and_check();
 }
@@ -102,6 +102,7 @@ void FrameLoop::element_path(ElementId k, std::int64_t from, std::int64_t to, st
 void FrameLoop::begin_resume() {
   Impl& m = *impl_;
   if (!m.world || !m.kept || m.resume_world) return;
+  m.release_drag();
   m.resume_target = m.kept->frame();
   m.resume_world = std::make_unique<PhysicsWorld>(m.scene);
   m.resume_input = 0;
@@ -126,8 +127,9 @@ bool FrameLoop::continue_resume(double budget_ms) {
     try {
       w.step();
     } catch (const Error& e) {
-      cancel_resume();
-      throw Error(m.scene.path + ": resuming at frame " + std::to_string(w.frame()) + ": " + e.what());
+      const std::int64_t at = w.frame();
+      cancel_resume();  // `w` is gone after this
+      throw Error(m.scene.path + ": resuming at frame " + std::to_string(at) + ": " + e.what());
     }
     // Determinism check: every kept frame on the way must come back exactly.
     if (!m.divergence) {
@@ -140,13 +142,13 @@ bool FrameLoop::continue_resume(double budget_ms) {
 
   // Arrived: the re-simulated world is the live one at K, the later frames are gone.
   const std::int64_t k = m.resume_target;
-  if (w.dragging()) w.end_drag();  // nobody holds the mouse now
   m.kept.reset();
   m.world = std::move(m.resume_world);
   m.resume_target = -1;
   m.history.truncate_after(k);
   m.violations.truncate_after(k);
   std::erase_if(m.inputs, [&](const Impl::DragInput& in) { return in.frame >= k; });
+  m.release_drag();  // nobody holds the mouse now; recorded, so a later resume replays it too
   m.stale = k > 0 ? m.resume_stale : m.world->elements();
   m.set_physics_ms(0);
   m.detect_and_check();

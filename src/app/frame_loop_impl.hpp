@@ -174,7 +174,6 @@ struct FrameLoop::Impl {
     s.frame = frame_number();
     s.time = time_now();
     s.hash = r.hash;
-    s.kept = true;
     s.checked = r.checked;
     s.elements = now().size();
     s.pairs = static_cast<std::int64_t>(main.pairs.size());
@@ -183,17 +182,27 @@ struct FrameLoop::Impl {
     s.detection_ms = static_cast<float>(r.timings.detection_ms);
     s.check_ms = static_cast<float>(r.timings.check_ms);
     if (const auto index = history.find(s.frame)) {
-      s.physics_ms = history.at(*index).physics_ms;  // a frame shown again is not simulated again
-      history.update(*index, s);
+      const FrameSummary& before = history.at(*index);
+      s.physics_ms = before.physics_ms;  // a frame shown again is not simulated again
+      if (!r.checked && before.checked) {
+        // Checks switched off: what the frame's last check found stays (summary and violations).
+        s.checked = true;
+        s.violations = before.violations;
+        s.check_ms = before.check_ms;
+        history.update(*index, s);
+        return;
+      }
+      history.update(*index, s);  // (update keeps its `kept`)
     } else {
       std::shared_ptr<WorldState> state;
       if (world && history.budget() > 0) {
         state = std::make_shared<WorldState>();
         world->capture(*state, options.checks ? &checker.box2d_pairs() : nullptr);
       }
+      s.kept = state != nullptr;  // with no budget only the live frame itself can be shown
       history.push(s, state, state ? state->bytes() : 0);
     }
-    violations.set_frame(r);
+    if (r.checked) violations.set_frame(r);
   }
 
   std::vector<Lane*> lanes() {
@@ -260,6 +269,14 @@ struct FrameLoop::Impl {
     }
     stale = now();
     detect_and_check();
+  }
+
+  // Ends a drag of the live world, recording the end as the user's own would be, so that a resume
+  // replays it (a drag cannot continue where the live frame is left).
+  void release_drag() {
+    if (!world || !world->dragging()) return;
+    inputs.push_back({DragInput::Kind::End, world->frame(), 0, 0});
+    world->end_drag();
   }
 
   // Index of recorded frame number `frame` (it must exist).

@@ -192,7 +192,9 @@ void GlView::on_scene_loaded(const FrameLoop& loop, bool fit) {
   previous_frame_ = loop.frame();
   if (state_.selected >= loop.elements().size()) state_.selected = -1;
   state_.selected_pair.reset();
+  state_.selected_cell.reset();
   state_.current_violation = -1;
+  focus_.reset();
   if (fit) fit_camera(loop);
   if (fit && fixed_camera_) {
     // --camera X,Y,PPM: (X, Y) in the middle of the part of the view the panels leave free.
@@ -254,6 +256,7 @@ void GlView::focus_violation(const FrameLoop& loop, const Violation& v, bool ope
   state_.selected_cell = std::array<std::int32_t, 2>{v.cell_i.ix, v.cell_i.iy};
   state_.panel_open[ui::kViolationsTitle] = true;
   const auto& log = loop.violation_log().listed();
+  state_.current_violation = -1;  // unless it is still listed (the frame was checked again)
   for (std::size_t k = 0; k < log.size(); ++k)
     if (log[k].frame == v.frame && log[k].pair == v.pair && log[k].invariant == v.invariant) {
       state_.current_violation = static_cast<std::int64_t>(k);
@@ -459,6 +462,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   sim.violations_total = log.total();
   sim.violations_by_invariant = log.by_invariant();
   sim.violation_frames = log.frames();
+  sim.violations_generation = log.generation();
   if (state_.current_violation >= static_cast<std::int64_t>(log.listed().size())) state_.current_violation = -1;
   sim.locate_status = stepper_open() ? stepper_->target_status()
                                      : "Open the Stepper (View menu) to see the operation that decided this pair.";

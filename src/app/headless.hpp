@@ -35,7 +35,7 @@ struct HeadlessOptions {
   std::int64_t back = 0;              // --back K: after the frames, K frames back through the history
                                       // (each shown, detected and checked again); the screenshot shows it
   std::optional<std::int64_t> history_mb;  // --history-mb N: memory for kept frames (default: 256 with
-                                           // --rewind, else none: a run that never goes back keeps none)
+                                           // --rewind, --back, --violation or --screenshot, else none)
 };
 
 // Error when --stop-at-violation is combined with what it cannot show (several algorithms, --step).

@@ -71,8 +71,8 @@ usage:
       checked again); --screenshot then shows that frame. --violation N goes to the run's N-th
       violation instead (from 1, as the Violations panel lists them) and shows it as choosing it
       there does.
-      --history-mb N memory for kept frames (default 256 with --rewind, --back or --screenshot,
-      else 0: a run that never goes back keeps only summaries).
+      --history-mb N memory for kept frames (default 256 with --rewind, --back, --violation or
+      --screenshot, else 0: a run that never goes back keeps only summaries).
   nbscope replay FILE.nbsrec [--headless] [--frames N] [--algorithm NAME[,NAME...]|all]
                  [--report OUT.json] [--inject-fault NAME] [--brute-limit N] [--quiet]
                  [--stop-at-violation] [--screenshot OUT.png --size WxH ...]

@@ -102,12 +102,9 @@ void ViolationLog::forget_frame(std::int64_t frame) {
 }
 
 void ViolationLog::set_frame(const FrameReport& report) {
-  const bool had = per_frame_.count(report.frame) > 0;
   forget_frame(report.frame);
-  if (report.violation_count() == 0) {
-    if (had) ++generation_;
-    return;
-  }
+  ++generation_;  // also when a frame checked again lists the same number of others
+  if (report.violation_count() == 0) return;
   per_frame_[report.frame] = report.broken;
   for (std::size_t k = 0; k < by_invariant_.size(); ++k) by_invariant_[k] += report.broken[k];
   const auto by_frame = [](std::int64_t f, const Violation& v) { return f < v.frame; };
@@ -115,7 +112,6 @@ void ViolationLog::set_frame(const FrameReport& report) {
   const std::size_t room = kMaxListed > listed_.size() ? kMaxListed - listed_.size() : 0;
   const std::size_t n = std::min(room, report.violations.size());
   listed_.insert(at, report.violations.begin(), report.violations.begin() + static_cast<std::ptrdiff_t>(n));
-  ++generation_;
 }
 
 void ViolationLog::truncate_after(std::int64_t frame) {

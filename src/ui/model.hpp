@@ -93,6 +93,7 @@ struct SimView {
   std::int64_t violations_total = 0;  // listed or not
   std::array<std::int64_t, kInvariantCount> violations_by_invariant{};
   std::int64_t violation_frames = 0;  // frames with any
+  std::uint64_t violations_generation = 0;  // changes whenever the list does
   std::string locate_status;          // where the stepper found the chosen violation's pair
   render::ScreenInsets scene_insets;  // pixels the panels cover at each edge (last frame)
 

@@ -39,7 +39,8 @@ class ViolationsPanel final : public Panel {
       const std::int64_t n = s.violations_by_invariant[static_cast<std::size_t>(k)];
       if (n == 0) continue;
       char label[64];
-      std::snprintf(label, sizeof label, "%s %lld", invariant_name(static_cast<Invariant>(k)), static_cast<long long>(n));
+      // "###": the checkbox keeps its ID while the count in its label grows.
+      std::snprintf(label, sizeof label, "%s %lld###inv%d", invariant_name(static_cast<Invariant>(k)), static_cast<long long>(n), k);
       ImGui::Checkbox(label, &c.state.violation_filter[static_cast<std::size_t>(k)]);
       ImGui::SameLine();
     }
@@ -82,12 +83,12 @@ class ViolationsPanel final : public Panel {
  private:
   void draw_table(UiContext& c, const std::vector<Violation>& all, bool book) {
     // Rows of the filtered list, rebuilt when the log or the filter changes.
-    if (all.size() != rows_source_size_ || &all != rows_source_ || c.state.violation_filter != rows_filter_) {
+    if (c.sim.violations_generation != rows_generation_ || &all != rows_source_ || c.state.violation_filter != rows_filter_) {
       rows_.clear();
       for (std::size_t k = 0; k < all.size(); ++k)
         if (c.state.violation_filter[static_cast<std::size_t>(all[k].invariant)]) rows_.push_back(k);
       rows_source_ = &all;
-      rows_source_size_ = all.size();
+      rows_generation_ = c.sim.violations_generation;
       rows_filter_ = c.state.violation_filter;
     }
     const float row_h = ImGui::GetTextLineHeightWithSpacing();
@@ -160,7 +161,7 @@ class ViolationsPanel final : public Panel {
 
   std::vector<std::size_t> rows_;
   const std::vector<Violation>* rows_source_ = nullptr;
-  std::size_t rows_source_size_ = 0;
+  std::uint64_t rows_generation_ = static_cast<std::uint64_t>(-1);
   std::array<bool, kInvariantCount> rows_filter_{};
   bool scroll_to_current_ = false;
   std::int64_t scrolled_to_ = -1;
