@@ -189,7 +189,8 @@ TEST(Window, XvfbWindowGoingBackMatchesTheHeadlessFrame) {
 // Runs a shell command line, capturing its exit code and stderr.
 testcli::Result shell(const std::string& command) {
   std::filesystem::create_directories(kOut);
-  const std::string err = kOut + "/shell.err";
+  // One file per test: ctest runs the tests of this binary in parallel processes.
+  const std::string err = kOut + "/shell." + ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".err";
   const int status = std::system((command + " </dev/null >/dev/null 2>'" + err + "'").c_str());
   testcli::Result r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
