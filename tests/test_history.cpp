@@ -173,23 +173,26 @@ TEST(History, ResumingReproducesTheOriginalRun) {
   }
 }
 
+// Steps `loop` over frames [from, to): on frame 10 it grabs the last element (a dynamic circle of the
+// default scene), pulls it along until frame `release_at`, lets go there.
+void drive_with_drag(FrameLoop& loop, int from, int to, int release_at) {
+  for (int k = from; k < to; ++k) {
+    if (k == 10) {
+      const Elements& e = loop.elements();
+      ASSERT_TRUE(loop.begin_drag(e.x[e.size() - 1], e.y[e.size() - 1]));
+    }
+    if (k > 10 && k < release_at) loop.drag_to(static_cast<double>(k) * 0.1, 8.0);
+    if (k == release_at) loop.end_drag();
+    loop.step();
+  }
+}
+
 // Drags are replayed: a run with a mouse drag, rewound past it, reaches the same frames again.
 TEST(History, ResumingReplaysDrags) {
   ASSERT_TRUE(kRegistered);
   FrameLoop straight, rewound;
   for (FrameLoop* loop : {&straight, &rewound}) loop->load_scene_file(scene("default"));
-  const auto drive = [](FrameLoop& loop, int from, int to) {
-    for (int k = from; k < to; ++k) {
-      if (k == 10) {
-        const Elements& e = loop.elements();
-        // The last element is a dynamic circle of the default scene.
-        ASSERT_TRUE(loop.begin_drag(e.x[e.size() - 1], e.y[e.size() - 1]));
-      }
-      if (k > 10 && k < 30) loop.drag_to(static_cast<double>(k) * 0.1, 8.0);
-      if (k == 30) loop.end_drag();
-      loop.step();
-    }
-  };
+  const auto drive = [](FrameLoop& loop, int from, int to) { drive_with_drag(loop, from, to, 30); };
   drive(straight, 0, 80);
   drive(rewound, 0, 60);
   rewound.show_frame(40);
@@ -212,20 +215,8 @@ TEST(History, ADragHeldWhenGoingBackIsReleasedAndReplayed) {
   ASSERT_TRUE(kRegistered);
   FrameLoop straight, viewer;
   for (FrameLoop* loop : {&straight, &viewer}) loop->load_scene_file(scene("default"));
-  const auto drag = [](FrameLoop& loop, int from, int to) {
-    for (int k = from; k < to; ++k) {
-      if (k == 10) {
-        const Elements& e = loop.elements();
-        ASSERT_TRUE(loop.begin_drag(e.x[e.size() - 1], e.y[e.size() - 1]));
-      }
-      if (k > 10) loop.drag_to(static_cast<double>(k) * 0.1, 8.0);
-      loop.step();
-    }
-  };
-  drag(straight, 0, 20);
-  straight.end_drag();
-  for (int k = 20; k < 60; ++k) straight.step();
-  drag(viewer, 0, 20);
+  drive_with_drag(straight, 0, 60, 20);  // let go on frame 20
+  drive_with_drag(viewer, 0, 20, 20);    // still holding the body on frame 20
   ASSERT_TRUE(viewer.dragging());
   viewer.show_frame(15);  // still holding the body: it is let go at frame 20
   EXPECT_FALSE(viewer.dragging());

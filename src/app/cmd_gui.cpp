@@ -13,6 +13,7 @@
 #include "app/commands.hpp"
 #include "app/frame_loop.hpp"
 #include "app/gl_view.hpp"
+#include "app/headless.hpp"
 #include "app/headless_view.hpp"
 #include "app/replay.hpp"
 #include "app/view_options.hpp"
@@ -94,8 +95,7 @@ int run_without_display(GuiOptions o, FrameLoop& loop) {
     failed = failed || (loop.report().checked && !loop.report().ok());
   }
   for (std::int64_t i = 0; i < o.back; ++i) {
-    if (!loop.step_back())
-      throw Error("--back: frame " + std::to_string(loop.frame()) + " is the oldest kept (a larger --history-mb keeps more)");
+    step_back_for_flag(loop);
     view->on_rewound(loop);
   }
   const std::string summary = view->write_screenshot(loop);
@@ -273,8 +273,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
         view.after_step(loop);
       } else if (rendered > *o.frames && rendered <= scripted_frames) {
         const auto t0 = Clock::now();
-        if (!loop.step_back())
-          throw Error("--back: frame " + std::to_string(loop.frame()) + " is the oldest kept (a larger --history-mb keeps more)");
+        step_back_for_flag(loop);
         view.on_frame_shown(loop);
         sum_back_show += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
       }

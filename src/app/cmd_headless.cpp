@@ -247,6 +247,11 @@ std::map<std::int64_t, std::uint64_t> rewind(FrameLoop& loop, const HeadlessOpti
 
 }  // namespace
 
+void step_back_for_flag(FrameLoop& loop) {
+  if (!loop.step_back())
+    throw Error("--back: frame " + std::to_string(loop.frame()) + " is the oldest kept (a larger --history-mb keeps more)");
+}
+
 HeadlessOptions::Rewind parse_rewind(const std::string& text) {
   const std::size_t colon = text.find(':');
   const auto number = [&](const std::string& part) -> std::int64_t {
@@ -411,8 +416,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   double back_ms = 0;
   for (std::int64_t k = 0; k < o.back; ++k) {
     const auto t0 = std::chrono::steady_clock::now();
-    if (!loop.step_back())
-      throw Error("--back: frame " + std::to_string(loop.frame()) + " is the oldest kept (a larger --history-mb keeps more)");
+    step_back_for_flag(loop);
     back_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (view) view->on_rewound(loop);
   }

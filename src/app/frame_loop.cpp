@@ -89,12 +89,14 @@ void FrameLoop::step() {
     if (at_end()) return;
     m.stale = m.now();
     ++m.recorded;
+    m.stale_for = m.frame_number();
     m.set_physics_ms(0);  // no physics: the frame was read with the file
     m.detect_and_check();
     return;
   }
   if (!m.world) return;
   m.stale = m.world->elements();
+  m.stale_for = m.world->frame() + 1;
   const auto t0 = std::chrono::steady_clock::now();
   m.world->step();
   m.set_physics_ms(ms_since(t0));

@@ -50,8 +50,6 @@ void FrameLoop::show_frame(std::int64_t frame) {
     m.release_drag();  // leaving the live frame: nobody holds a body in the past
     m.kept = std::make_unique<KeptWorldFrame>(*m.world, m.history.state(*m.history.find(frame)));
   }
-  // The frame before this one, for the stale-positions fault (now or if it is chosen later here).
-  m.stale = m.elements_before(frame);
   m.set_physics_ms(physics_ms);
   m.detect_and_check();
 }
@@ -81,9 +79,14 @@ void FrameLoop::element_path(ElementId k, std::int64_t from, std::int64_t to, st
   out.clear();
   const Impl& m = *impl_;
   if (!m.loaded() || k < 0) return;
-  for (std::size_t i = 0; i < m.history.size(); ++i) {
+  // From the first summary at or after `from` (a trail is a few hundred frames of a long history).
+  const auto& summaries = m.history.summaries();
+  const auto first = std::lower_bound(summaries.begin(), summaries.end(), from,
+                                      [](const FrameSummary& f, std::int64_t n) { return f.frame < n; });
+  for (auto i = static_cast<std::size_t>(first - summaries.begin()); i < m.history.size(); ++i) {
     const FrameSummary& f = m.history.at(i);
-    if (f.frame < from || f.frame > to || k >= f.elements) continue;
+    if (f.frame > to) break;
+    if (k >= f.elements) continue;
     if (m.recording) {
       const Elements& e = m.recording->frames[m.recorded_index(f.frame)].elements;
       out.push_back({e.x[k], e.y[k]});
@@ -150,6 +153,7 @@ bool FrameLoop::continue_resume(double budget_ms) {
   std::erase_if(m.inputs, [&](const Impl::DragInput& in) { return in.frame >= k; });
   m.release_drag();  // nobody holds the mouse now; recorded, so a later resume replays it too
   m.stale = k > 0 ? m.resume_stale : m.world->elements();
+  m.stale_for = k;
   m.set_physics_ms(0);
   m.detect_and_check();
   return true;

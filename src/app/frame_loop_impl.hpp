@@ -74,7 +74,8 @@ struct FrameLoop::Impl {
   FrameChecker checker;
   PairList main_reference;    // R of the main lane this frame
   DetectOptions detect_options;
-  Elements stale;             // last frame's elements (stale-positions fault)
+  Elements stale;             // the elements of the frame before stale_for (stale-positions fault)
+  std::int64_t stale_for = -1;  // the frame `stale` serves; another frame fetches its own when needed
   Elements detected_on;       // what the detectors were given this frame when not the world's elements
   bool detected_on_world = true;
 
@@ -121,6 +122,11 @@ struct FrameLoop::Impl {
     detected_on_world = true;
     if (options.fault == Fault::StalePositions && !first_frame()) {
       // Last frame's positions; elements that did not exist then (emitted now) at their new ones.
+      // A step leaves them ready; a frame shown from the history fetches them only here, when asked.
+      if (stale_for != frame_number()) {
+        stale = elements_before(frame_number());
+        stale_for = frame_number();
+      }
       detected_on = now;
       const Eigen::Index old_n = std::min(stale.size(), now.size());
       detected_on.x.head(old_n) = stale.x.head(old_n);
@@ -268,6 +274,7 @@ struct FrameLoop::Impl {
       }
     }
     stale = now();
+    stale_for = frame_number();
     detect_and_check();
   }
 

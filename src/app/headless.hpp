@@ -12,6 +12,8 @@
 
 namespace nbscope {
 
+class FrameLoop;
+
 struct HeadlessOptions {
   std::string scene;                  // --scene FILE (required)
   std::int64_t frames = 600;          // --frames N
@@ -40,6 +42,9 @@ struct HeadlessOptions {
 
 // Error when --stop-at-violation is combined with what it cannot show (several algorithms, --step).
 void check_stop_at_violation(const HeadlessOptions& options);
+// One frame back through `loop`'s history for --back (headless and the window alike); Error when
+// the frame shown is the oldest kept.
+void step_back_for_flag(FrameLoop& loop);
 // "FROM:TO" of --rewind; Error names the flag and what is wrong.
 HeadlessOptions::Rewind parse_rewind(const std::string& text);
 

@@ -4,6 +4,7 @@
 // to the operation that decided the pair (the app does it: UiRequests::go_to_violation).
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -47,7 +48,8 @@ class ViolationsPanel final : public Panel {
     ImGui::NewLine();
 
     const std::vector<Violation>& all = *s.violations;
-    const std::int64_t shown = count_shown(all, c.state);
+    refresh_rows(c, all);
+    const auto shown = static_cast<std::int64_t>(rows_.size());
     if (ImGui::Button("First")) go(c, step_violation(s, c.state, 0));
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the first violation of the run (Shift+[)");
     ImGui::SameLine();
@@ -57,7 +59,7 @@ class ViolationsPanel final : public Panel {
     if (ImGui::Button("Next >")) go(c, step_violation(s, c.state, +1));
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("next (])");
     ImGui::SameLine();
-    const std::int64_t at = position_of(all, c.state);
+    const std::int64_t at = position_of(c.state.current_violation);
     if (at >= 0) ImGui::TextDisabled("%lld / %lld", static_cast<long long>(at + 1), static_cast<long long>(shown));
     else ImGui::TextDisabled("%lld listed", static_cast<long long>(shown));
 
@@ -81,8 +83,8 @@ class ViolationsPanel final : public Panel {
   }
 
  private:
-  void draw_table(UiContext& c, const std::vector<Violation>& all, bool book) {
-    // Rows of the filtered list, rebuilt when the log or the filter changes.
+  // Rows of the filtered list (indices into `all`), rebuilt only when the log or the filter changes.
+  void refresh_rows(const UiContext& c, const std::vector<Violation>& all) {
     if (c.sim.violations_generation != rows_generation_ || &all != rows_source_ || c.state.violation_filter != rows_filter_) {
       rows_.clear();
       for (std::size_t k = 0; k < all.size(); ++k)
@@ -91,6 +93,9 @@ class ViolationsPanel final : public Panel {
       rows_generation_ = c.sim.violations_generation;
       rows_filter_ = c.state.violation_filter;
     }
+  }
+
+  void draw_table(UiContext& c, const std::vector<Violation>& all, bool book) {
     const float row_h = ImGui::GetTextLineHeightWithSpacing();
     const float height = std::min(8.0f, static_cast<float>(rows_.size()) + 1.0f) * row_h + 6.0f;
     const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
@@ -145,18 +150,10 @@ class ViolationsPanel final : public Panel {
     scroll_to_current_ = true;
   }
 
-  static std::int64_t count_shown(const std::vector<Violation>& all, const UiState& state) {
-    std::int64_t n = 0;
-    for (const Violation& v : all) n += state.violation_filter[static_cast<std::size_t>(v.invariant)] ? 1 : 0;
-    return n;
-  }
-
-  static std::int64_t position_of(const std::vector<Violation>& all, const UiState& state) {
-    if (state.current_violation < 0 || static_cast<std::size_t>(state.current_violation) >= all.size()) return -1;
-    std::int64_t n = 0;
-    for (std::size_t k = 0; k < static_cast<std::size_t>(state.current_violation); ++k)
-      n += state.violation_filter[static_cast<std::size_t>(all[k].invariant)] ? 1 : 0;
-    return n;
+  // The position of violation `index` among the rows, or -1 when it is not listed.
+  [[nodiscard]] std::int64_t position_of(std::int64_t index) const {
+    const auto it = std::lower_bound(rows_.begin(), rows_.end(), static_cast<std::size_t>(std::max<std::int64_t>(index, 0)));
+    return index >= 0 && it != rows_.end() && static_cast<std::int64_t>(*it) == index ? it - rows_.begin() : -1;
   }
 
   std::vector<std::size_t> rows_;
