@@ -30,7 +30,7 @@ TEST(StepperTarget, GoesToTheTestOfAPairAndSaysWhatItMeans) {
   StepperSession s;
   s.set_target({0, Pair{0, 1}, Invariant::AEqualsR, "missing from A (in R)"});
   EXPECT_TRUE(s.target_pending());
-  s.update(f.sim, 0, 1);
+  s.update(f.traced(), 0, 1);
   ASSERT_TRUE(s.has_capture()) << s.message();
   EXPECT_FALSE(s.target_pending());
   ASSERT_TRUE(s.target_location().has_value());
@@ -53,7 +53,7 @@ TEST(StepperTarget, SaysWhenTwoCellsAreNotNeighboursInBookNumbering) {
   f.sim.algorithm = "screen";
   StepperSession s(StepperConfig{std::nullopt, true});
   s.set_target({0, Pair{0, 8}, Invariant::AabbInCells, "tight AABBs overlap but the cells are not neighbours"});
-  s.update(f.sim, 0, 1);
+  s.update(f.traced(), 0, 1);
   ASSERT_TRUE(s.target_location().has_value());
   EXPECT_EQ(s.target_location()->finding, PairFinding::NotNeighbours);
   // Book numbering: element 1 in cell (5,7), element 9 in (2,7).
@@ -67,16 +67,16 @@ TEST(StepperTarget, WaitsForItsFrame) {
   f.sim.paused = true;
   StepperSession s;
   s.set_target({7, Pair{0, 1}, Invariant::TInA, "shapes touch but the pair is not in A"});
-  s.update(f.sim, 0, 1);  // frame 0 shown: the target waits
+  s.update(f.traced(), 0, 1);  // frame 0 shown: the target waits
   EXPECT_TRUE(s.target_pending());
   EXPECT_TRUE(s.target_status().empty());
   f.sim.frame = 7;
-  s.update(f.sim, 0, 2);
+  s.update(f.traced(), 0, 2);
   EXPECT_FALSE(s.target_pending());
   EXPECT_FALSE(s.target_status().empty());
   // Another frame captured later: the status described frame 7, and goes.
   f.sim.frame = 8;
-  s.update(f.sim, 0, 3);
+  s.update(f.traced(), 0, 3);
   EXPECT_TRUE(s.target_status().empty());
 }
 
@@ -84,7 +84,7 @@ TEST(StepperLongTraces, SeeksTheOperationsOfAnElementOrACell) {
   BookFrame f;
   f.sim.algorithm = "nbs";
   StepperSession s;
-  s.update(f.sim, 0, 1);
+  s.update(f.traced(), 0, 1);
   ASSERT_TRUE(s.has_capture());
   Stepper& st = s.stepper();
   st.seek(0);

@@ -138,12 +138,22 @@ TEST(FrameLoop, ABadSceneKeepsTheOldOneAndRestartGoesBackToFrameZero) {
   EXPECT_EQ(loop.grid().cell_size, 1);
   // Book element 1 (element 0) is in C[5][7] (1-based): cell (4, 6) here.
   EXPECT_EQ(loop.cells()[0], (CellIndex{4, 6}));
-  TraceLog trace;
-  PairList traced;
-  loop.trace_frame(trace, traced);
-  EXPECT_FALSE(trace.events().empty());
+  const auto trace = loop.frame_trace();
+  ASSERT_NE(trace, nullptr);
+  EXPECT_FALSE(trace->log.events().empty());
+  EXPECT_TRUE(trace->refusal.empty());
+  EXPECT_EQ(trace->frame, loop.frame());
+  PairList traced = trace->pairs;
   sort_pairs(traced);
   EXPECT_EQ(traced, loop.pairs());
+  // One trace per frame: asked again, the same record; after a step, a new one.
+  EXPECT_EQ(loop.frame_trace(), trace);
+  loop.step();
+  EXPECT_NE(loop.frame_trace()->serial, trace->serial);
+  EXPECT_EQ(loop.frame_trace()->frame, loop.frame());
+  loop.set_algorithm("box2d");
+  EXPECT_TRUE(loop.frame_trace()->log.events().empty());
+  EXPECT_NE(loop.frame_trace()->refusal.find("records no operations"), std::string::npos);
 }
 
 TEST(FrameLoop, DraggingMovesABody) {

@@ -8,6 +8,7 @@
 
 #include "core/detector.hpp"
 #include "render/lists.hpp"
+#include "core/stepper.hpp"
 #include "render/overlays.hpp"
 #include "support/generators.hpp"
 
@@ -21,7 +22,7 @@ struct Recorder final : DrawSink {
     Vec2 from, to;
     Rgba colour;
   };
-  std::vector<Arrow> arrows;
+  std::vector<Arrow> arrows, segments;
   int circles = 0, lines = 0, rects = 0, polygons = 0;
   std::vector<float> top_circle_min_px;
   std::vector<std::string> texts;
@@ -30,7 +31,10 @@ struct Recorder final : DrawSink {
     if (layer == Layer::Top) top_circle_min_px.push_back(min_px);
   }
   void polygon(Layer, std::span<const Vec2>, Rgba, Rgba) override { ++polygons; }
-  void line(Layer, Vec2, Vec2, Rgba, float) override { ++lines; }
+  void line(Layer layer, Vec2 a, Vec2 b, Rgba c, float) override {
+    ++lines;
+    segments.push_back({layer, a, b, c});
+  }
   void arrow(Layer layer, Vec2 a, Vec2 b, Rgba c, float) override { arrows.push_back({layer, a, b, c}); }
   void rect(Layer, Vec2, Vec2, Rgba) override { ++rects; }
   void text(Vec2, std::string_view t, Rgba) override { texts.emplace_back(t); }
@@ -147,16 +151,26 @@ TEST(Overlays, ListArrowsFollowTheNextArrayAndVanishWhenTheOverlayIsOff) {
   for (const TracedList& l : t.lists) expected += l.secondary ? 0 : l.chain.size();
   EXPECT_EQ(rec.arrows.size(), expected);
   // The y-list's links point from element k to the next element in the chain: 4 -> 3 -> 2 -> 1 -> 0.
+  // Each is an arc inside the row's band ending in an arrow at the next element; these run leftwards,
+  // so they bow below the row's middle (rightward links bow above).
   const auto y = std::find_if(t.lists.begin(), t.lists.end(), [](const TracedList& l) { return l.kind == "y-list"; });
   ASSERT_NE(y, t.lists.end());
   EXPECT_EQ(y->chain, (std::vector<ElementId>{4, 3, 2, 1, 0}));
+  const float lo = float(t.grid.origin[1]), hi = lo + float(t.grid.cell_size), mid = 0.5f * (lo + hi);
   std::size_t matched = 0;
   for (std::size_t i = 0; i + 1 < y->chain.size(); ++i) {
-    const Vec2 a(float(t.e.x[y->chain[i]]), 0.5f), b(float(t.e.x[y->chain[i + 1]]), 0.5f);
+    const Vec2 a(float(t.e.x[y->chain[i]]), mid), b(float(t.e.x[y->chain[i + 1]]), mid);
     for (const auto& arrow : rec.arrows)
-      if (arrow.colour == palette::kYList && (arrow.from - a).norm() < 0.35f && (arrow.to - b).norm() < 0.35f) ++matched;
+      if (arrow.colour == palette::kYList && (arrow.to - b).norm() < 0.05f && arrow.from.x() > b.x() && arrow.from.x() < a.x() &&
+          arrow.from.y() < mid && arrow.from.y() > lo)
+        ++matched;
   }
   EXPECT_EQ(matched, y->chain.size() - 1);
+  for (const auto& line : rec.segments) {
+    if (line.colour == palette::kYList && line.layer == Layer::Overlay) {
+      EXPECT_TRUE(line.from.y() >= lo && line.from.y() <= hi) << "an arc left the row's band";
+    }
+  }
   // Ids are drawn with the lists, but never over each other: 3 and 4 are 8 px apart here, so
   // only the first of them is labelled.
   const auto drawn = [&](const char* id) { return std::count(rec.texts.begin(), rec.texts.end(), id); };
@@ -233,6 +247,62 @@ TEST(Overlays, PickingFindsTheCellAndTheSmallestElementUnderThePoint) {
   EXPECT_EQ(element_at(t.e, {0.7, 0.5}), 0);  // inside 0 and 1 (equal radii): the lower id
   EXPECT_EQ(element_at(t.e, {1.35, 0.5}), 1);
   EXPECT_EQ(element_at(t.e, {1.7, 0.5}), -1);
+}
+
+}  // namespace
+}  // namespace nbscope::render
+
+namespace nbscope::render {
+namespace {
+
+// The lists overlay agrees with the stepper: at every operation of the book's Fig. 3.15 under each
+// algorithm with lists, each list not yet cleared is exactly the chain the stepper's arrays hold at
+// that operation; before any push there are none; and at the end the lists are the finished ones.
+TEST(Overlays, ListsMidTraceAreTheStepperArraysAtThatOperation) {
+  const double x[] = {4.75, 4.90, 1.85, 4.60, 1.30, 4.50, 1.60, 5.20, 1.20};
+  const double y[] = {6.45, 6.50, 6.45, 6.80, 6.85, 5.55, 6.60, 5.40, 6.55};
+  Elements e;
+  for (int k = 0; k < 9; ++k) e.push_back(x[k], y[k], 0, 0.1);
+  DetectOptions o;
+  o.grid.cell_size = 1.0;
+  o.grid.origin = std::array<double, 3>{0, 0, 0};
+  o.grid.cells = std::array<std::int64_t, 3>{10, 10, 1};
+  for (const char* algorithm : {"nbs", "screen", "tree"}) {
+    PairList pairs;
+    TraceLog log;
+    make_detector(algorithm)->detect_traced(e, o, pairs, log);
+    Stepper st;
+    st.load(log);
+    std::size_t checked = 0;
+    for (std::size_t p = 0; p <= st.size(); ++p) {
+      st.seek(p);
+      const auto lists = traced_lists(log, 9, p);
+      if (p == 0) {
+        EXPECT_TRUE(lists.empty()) << algorithm;
+      }
+      for (const TracedList& l : lists) {
+        const auto& head = st.state()[static_cast<std::size_t>(l.heads_array)];
+        // Lists still standing at p (their head not cleared) are read off the stepper's arrays.
+        if (head[static_cast<std::size_t>(l.slot)] == -1 || head[static_cast<std::size_t>(l.slot)] != l.chain.front()) continue;
+        EXPECT_EQ(l.chain, st.list_members(l.heads_array, l.slot)) << algorithm << " at operation " << p;
+        ++checked;
+      }
+    }
+    EXPECT_GT(checked, 9u) << algorithm;
+    const auto finished = traced_lists(log, 9);
+    const auto at_end = traced_lists(log, 9, st.size());
+    ASSERT_EQ(finished.size(), at_end.size()) << algorithm;
+    for (std::size_t i = 0; i < finished.size(); ++i) EXPECT_EQ(finished[i].chain, at_end[i].chain) << algorithm;
+  }
+  // NBS after 3 operations (the phase, then elements 0 and 1 pushed onto the y-list of row 6): one
+  // list, 1 -> 0, as the Arrays panel shows it.
+  PairList pairs;
+  TraceLog log;
+  make_detector("nbs")->detect_traced(e, o, pairs, log);
+  const auto three = traced_lists(log, 9, 3);
+  ASSERT_EQ(three.size(), 1u);
+  EXPECT_EQ(three.front().kind, "y-list");
+  EXPECT_EQ(three.front().chain, (std::vector<ElementId>{1, 0}));
 }
 
 }  // namespace

@@ -35,10 +35,10 @@ TEST(StepperSession, RecordsOnlyAPausedFrameAndWordsEventsAsTheBook) {
   BookFrame f;
   StepperSession s;
   f.sim.paused = false;
-  s.update(f.sim, 0, 1);
+  s.update(f.traced(), 0, 1);
   EXPECT_FALSE(s.has_capture()) << "a running simulation must not be traced every frame";
   f.sim.paused = true;
-  s.update(f.sim, 0, 2);
+  s.update(f.traced(), 0, 2);
   ASSERT_TRUE(s.has_capture()) << s.message();
   EXPECT_TRUE(s.current_for(f.sim));
   EXPECT_EQ(s.stepper().size(), 77u);
@@ -71,7 +71,7 @@ TEST(StepperSession, RecordsOnlyAPausedFrameAndWordsEventsAsTheBook) {
 
   // The next frame keeps the place in the sequence.
   f.sim.frame = 1;
-  s.update(f.sim, 0, 3);
+  s.update(f.traced(), 0, 3);
   EXPECT_EQ(s.frame(), 1);
   EXPECT_EQ(s.stepper().position(), 20u);
 }
@@ -82,7 +82,7 @@ TEST(StepperSession, ElementEntriesNotWrittenYetShowAsUnset) {
   BookFrame f;
   f.sim.algorithm = "nbs";
   StepperSession s;
-  s.capture(f.sim);
+  s.capture(f.traced());
   ASSERT_TRUE(s.has_capture()) << s.message();
   s.book_numbering = true;
   s.stepper().seek(5);  // the y-list pushes of elements 1..4 (book): no x-list yet
@@ -99,7 +99,7 @@ TEST(StepperSession, SortWordsFirstWritesAsUnsetAndOrderAsAPosition) {
   BookFrame f;
   f.sim.algorithm = "sort";
   StepperSession s;
-  s.capture(f.sim);
+  s.capture(f.traced());
   ASSERT_TRUE(s.has_capture()) << s.message();
   s.stepper().seek(2);  // the phase, then ix[0]
   EXPECT_EQ(describe_event(s, *s.stepper().current()), "cell: ix[0] = 4 (was unset) for k=0");
@@ -146,24 +146,28 @@ TEST(StepperSession, SaysWhyNothingCanBeSteppedInsteadOfThrowing) {
     // Brute force keeps no arrays, but its trace is the pair tests: it can be stepped.
     StepperSession s;
     f.sim.algorithm = "brute";
-    s.capture(f.sim);
+    s.capture(f.traced());
     ASSERT_TRUE(s.has_capture()) << s.message();
     EXPECT_EQ(s.stepper().size(), 1u + 9u * 8u / 2u);  // the phase, then every pair once
     EXPECT_TRUE(s.stepper().trace().arrays().empty());
   }
-  for (const char* algorithm : {"no-such-algorithm"}) {
+  {
+    // A trace the frame loop refused (here: a detector that records nothing) says why, in the panels.
     StepperSession s;
-    f.sim.algorithm = algorithm;
+    auto refused = std::make_shared<FrameTrace>();
+    refused->refusal = "box2d records no operations";
+    f.sim.trace = refused;
     EXPECT_NO_THROW(s.capture(f.sim));
     EXPECT_FALSE(s.has_capture());
-    EXPECT_FALSE(s.message().empty()) << algorithm;
+    EXPECT_EQ(s.message(), "box2d records no operations");
+    EXPECT_EQ(idle_message(s), "box2d records no operations");
   }
-  const Elements many = testdata::make_layout(testdata::Layout::Loose, kMaxSteppedElements + 1, 2, 1);
+  const Elements many = testdata::make_layout(testdata::Layout::Loose, kMaxTracedElements + 1, 2, 1);
   f.sim.elements = &many;
   f.sim.grid = nullptr;
   f.sim.algorithm = "nbs";
   StepperSession s;
-  s.capture(f.sim);
+  s.capture(f.traced());
   EXPECT_FALSE(s.has_capture());
   EXPECT_NE(s.message().find("too many"), std::string::npos) << s.message();
 }
@@ -172,7 +176,7 @@ TEST(StepperSession, AConfiguredStepRecordsEvenWhileRunning) {
   BookFrame f;
   f.sim.paused = false;
   StepperSession s(StepperConfig{std::size_t{10}, true});
-  s.update(f.sim, 0, 1);
+  s.update(f.traced(), 0, 1);
   ASSERT_TRUE(s.has_capture());
   EXPECT_EQ(s.stepper().position(), 10u);
   EXPECT_TRUE(s.book_numbering);

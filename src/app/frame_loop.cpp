@@ -149,13 +149,11 @@ void FrameLoop::body_shapes(std::vector<BodyShape>& out) const {
 
 const Detector& FrameLoop::detector() const { return *impl_->main.detector; }
 
-void FrameLoop::trace_frame(TraceLog& out_trace, PairList& out_pairs) {
-  if (!impl_->loaded()) {
-    out_trace.reset();
-    out_pairs.clear();
-    return;
-  }
-  impl_->main.detector->detect_traced(impl_->detector_input(), impl_->detect_options, out_pairs, out_trace);
+std::shared_ptr<const FrameTrace> FrameLoop::frame_trace() {
+  Impl& m = *impl_;
+  if (!m.loaded()) return nullptr;
+  if (!m.trace) m.trace = trace_frame(*m.main.detector, m.detector_input(), m.detect_options, m.frame_number(), grid());
+  return m.trace;
 }
 
 // ---- drag ----------------------------------------------------------------------------------

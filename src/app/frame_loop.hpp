@@ -35,7 +35,7 @@
 #include "core/detector.hpp"
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
-#include "core/trace.hpp"
+#include "core/frame_trace.hpp"
 #include "io/recording.hpp"
 #include "io/report_json.hpp"
 #include "io/scene_json.hpp"
@@ -187,9 +187,11 @@ class FrameLoop {
   void body_shapes(std::vector<BodyShape>& out) const;
   // The detector in use (for its name, own_bytes(), pseudocode()).
   [[nodiscard]] const Detector& detector() const;
-  // Runs the current detector traced on the elements it was given this frame (faults not applied),
-  // for the stepper; returns its pairs in `out_pairs` unsorted.
-  void trace_frame(TraceLog& out_trace, PairList& out_pairs);
+  // The current detector's traced run on the elements it was given this frame (faults not
+  // applied): the one trace the stepper and the lists overlay both show. Made on the first request
+  // and kept until the frame or the detector changes; its `refusal` says why it holds no operations
+  // (too many elements, a detector without a trace). Null without a scene.
+  [[nodiscard]] std::shared_ptr<const FrameTrace> frame_trace();
 
   // ---- mouse drag (world coordinates) ----
   // Each call is recorded with its frame, so that a resume replays it. Only on the live frame.

@@ -98,6 +98,7 @@ struct FrameLoop::Impl {
   std::size_t resume_input = 0;                // next input to replay
   Elements resume_stale;                       // the re-simulated frame before the target
   std::optional<std::int64_t> divergence;
+  std::shared_ptr<const FrameTrace> trace;  // this frame's traced detection, once asked for (frame_trace)
 
   explicit Impl(FrameLoopOptions o)
       : options(std::move(o)), main(options.algorithm), checker(CheckOptions{options.brute_limit}) {
@@ -135,6 +136,7 @@ struct FrameLoop::Impl {
     }
     const std::string where = scene.path + ": frame " + std::to_string(frame_number()) + ": ";
     const Elements& input = detector_input();
+    trace.reset();  // made again on request, for this frame and detector
     main.detect(input, detect_options, options.fault, where);
     for (Lane& lane : others) lane.detect(input, detect_options, options.fault, where);
 

@@ -31,6 +31,13 @@ std::string data_dir() {
 constexpr std::size_t kTrailPoints = 240;
 constexpr float kFlashDecay = 0.8f;  // per frame: a flash fades over ~10 frames
 constexpr std::size_t kFrameHistory = 240;
+// A fit leaves this much below the scene for the legend (render::draw_scene's lower right corner).
+constexpr double kLegendReservePx = 44.0;
+
+render::ScreenInsets with_legend(render::ScreenInsets insets) {
+  insets.bottom += kLegendReservePx;
+  return insets;
+}
 
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -126,6 +133,8 @@ GlView::GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions
   state_.selected = options.select < 0 ? -1 : options.book_numbering ? options.select - 1 : options.select;
   trail_element_ = state_.selected;
   fixed_camera_ = options.camera;
+  for (std::size_t f = 0; f < std::size(render::kListFilterNames); ++f)
+    if (options.lists == render::kListFilterNames[f]) state_.list_filter = static_cast<render::ListFilter>(f);
 }
 
 GlView::~GlView() {
@@ -148,7 +157,7 @@ void GlView::fit_camera(const FrameLoop& loop) {
   fit_box_ = box;
   home_is_fixed_ = false;
   fitted_insets_ = host_.insets(state_);
-  camera_.fit(box, 0.06, fitted_insets_);
+  camera_.fit(box, 0.06, with_legend(fitted_insets_));
 }
 
 void GlView::refit() {
@@ -156,7 +165,7 @@ void GlView::refit() {
   if (home_is_fixed_ && fixed_camera_) {
     camera_.look_at({(*fixed_camera_)[0], (*fixed_camera_)[1]}, (*fixed_camera_)[2], fitted_insets_);
   } else if (fit_box_) {
-    camera_.fit(*fit_box_, 0.06, fitted_insets_);
+    camera_.fit(*fit_box_, 0.06, with_legend(fitted_insets_));
   }
 }
 
@@ -183,12 +192,19 @@ void GlView::check_step() const {
 }
 
 void GlView::on_scene_loaded(const FrameLoop& loop, bool fit) {
-  ++generation_;
+  // Element k of another scene is another body: the selection is kept across a restart only (and
+  // for the first scene, where --select chose it).
+  if (!loaded_scene_.empty() && loaded_scene_ != loop.scene().path) {
+    state_.selected = -1;
+    stepper_->focus_element = -1;
+  }
+  loaded_scene_ = loop.scene().path;
   trails_.clear();
   trail_element_ = state_.selected;
   previous_cells_ = loop.cells();
   flash_.assign(static_cast<std::size_t>(loop.elements().size()), 0.0f);
   lists_.clear();
+  lists_serial_ = 0;
   previous_frame_ = loop.frame();
   if (state_.selected >= loop.elements().size()) state_.selected = -1;
   state_.selected_pair.reset();
@@ -294,20 +310,77 @@ bool GlView::stepper_open() const {
   return false;
 }
 
-void GlView::update_lists(FrameLoop& loop) {
-  if (!state_.overlays.lists) {
+void GlView::update_lists(const FrameLoop& loop, const std::shared_ptr<const FrameTrace>& trace) {
+  if (!state_.overlays.lists || !trace) {
     lists_.clear();
-    lists_frame_ = -1;
+    lists_serial_ = 0;
     return;
   }
-  if (lists_frame_ == loop.frame() && lists_algorithm_ == loop.algorithm() && lists_generation_ == generation_) return;
+  // Mid-trace, the lists as they stand at the stepper's operation; else the finished ones.
+  std::size_t upto = SIZE_MAX;
+  const Stepper& st = stepper_->stepper();
+  if (stepper_open() && stepper_->has_capture() && stepper_->frame_trace() == trace && st.position() < st.size())
+    upto = st.position();
+  if (lists_serial_ == trace->serial && lists_upto_ == upto) return;
   const auto t0 = Clock::now();
-  loop.trace_frame(trace_, trace_pairs_);
-  lists_ = render::traced_lists(trace_, static_cast<std::size_t>(loop.elements().size()));
-  lists_frame_ = loop.frame();
-  lists_algorithm_ = loop.algorithm();
-  lists_generation_ = generation_;
-  cost_.trace_ms = ms_since(t0);
+  lists_ = render::traced_lists(trace->log, static_cast<std::size_t>(loop.elements().size()), upto);
+  lists_serial_ = trace->serial;
+  lists_upto_ = upto;
+  cost_.trace_ms += ms_since(t0);
+}
+
+void GlView::describe_lists(const FrameLoop& loop, const std::shared_ptr<const FrameTrace>& trace,
+                            render::OverlayScene& scene) const {
+  const Elements& e = loop.elements();
+  const bool book = state_.book_numbering;
+  const auto num = [&](std::int64_t v) { return std::to_string(ui::shown(v, book)); };
+  scene.list_filter = state_.list_filter.value_or(e.size() > render::kRowFilterAbove ? render::ListFilter::Row
+                                                                                       : render::ListFilter::All);
+  // The stepper's current operation, when it holds this frame's trace and is not at its end.
+  const Stepper& st = stepper_->stepper();
+  const bool stepping = stepper_open() && stepper_->has_capture() && trace && stepper_->frame_trace() == trace &&
+                        st.position() < st.size();
+  std::optional<std::int32_t> stepper_row;
+  if (stepping && st.current() != nullptr) {
+    const TraceEvent& ev = *st.current();
+    if (ev.op == TraceOp::Push) scene.active_list = std::make_pair(ev.writes[1].array, ev.writes[1].index);
+    if (ev.op == TraceOp::Clear) scene.active_list = std::make_pair(ev.writes[0].array, ev.writes[0].index);
+    if (ev.op == TraceOp::VisitCell || ev.op == TraceOp::TestPair)
+      if (const auto l = stepper_->list_of_cell(ev.cell)) scene.active_list = std::make_pair(l->heads, l->list);
+    if (ev.op == TraceOp::TestPair && ev.element >= 0 && ev.other >= 0) {
+      scene.tested_pair = Pair{std::min(ev.element, ev.other), std::max(ev.element, ev.other)};
+      scene.tested_contact = ev.contact;
+    }
+    const LoopVars v = st.loop_vars();
+    if (v.phase_index >= 0 || v.iy >= 0) stepper_row = v.phase_index >= 0 ? v.phase_index : v.iy;
+  }
+  // The row whose lists the Row filter keeps (and whose row-below copies are drawn): hovered, else
+  // the stepper's, else the selected element's.
+  if (state_.hovered_cell) scene.focus_row = (*state_.hovered_cell)[1];
+  else if (stepper_row) scene.focus_row = stepper_row;
+  else if (state_.selected >= 0 && state_.selected < e.size()) scene.focus_row = loop.grid().cell(e.y[state_.selected], 1);
+  if (!state_.overlays.lists) return;
+  auto& caption = scene.lists_caption;
+  if (!trace || lists_.empty()) {
+    const std::string why = trace && !trace->refusal.empty() ? trace->refusal
+                            : trace && !trace->log.events().empty() && !stepping ? "it keeps no heads or next arrays, only its tests"
+                                                                                 : "";
+    caption.push_back("lists: " + loop.algorithm() + (stepping ? " has built none yet" : " builds none") + (why.empty() ? "" : ":"));
+    if (!why.empty()) caption.push_back("  " + why);
+    return;
+  }
+  if (stepping) caption.push_back("lists at operation " + std::to_string(st.position()) + " of " + std::to_string(st.size()) + " (Stepper)");
+  switch (scene.list_filter) {
+    case render::ListFilter::All: break;
+    case render::ListFilter::Selected:
+      caption.push_back(scene.selected >= 0 ? "lists holding element " + num(scene.selected)
+                                            : "lists filter 'selected': click an element");
+      break;
+    case render::ListFilter::Row:
+      caption.push_back(scene.focus_row ? "lists of row " + num(*scene.focus_row) + " (filter 'row': hover a row)"
+                                        : "lists filter 'row': hover a row or click an element");
+      break;
+  }
 }
 
 void GlView::build_shapes(const FrameLoop& loop) {
@@ -359,9 +432,14 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   const Elements& e = loop.elements();
   if (state_.selected >= e.size()) state_.selected = -1;
 
+  // The one traced detection of this frame, made when the lists overlay or the stepper wants it.
   cost_.trace_ms = 0;
-  update_lists(loop);
   auto t0 = Clock::now();
+  const bool stepper_wants = stepper_open() && stepper_->wants_trace(loop.frame(), session.paused);
+  const std::shared_ptr<const FrameTrace> trace = state_.overlays.lists || stepper_wants ? loop.frame_trace() : nullptr;
+  cost_.trace_ms = ms_since(t0);
+  update_lists(loop, trace);
+  t0 = Clock::now();
   build_shapes(loop);
   build_checks(loop);
   flash_list_.clear();
@@ -379,8 +457,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   scene.selected = state_.selected;
   scene.focus_pair = state_.selected_pair;
   scene.hovered_cell = state_.hovered_cell;
-  if (state_.hovered_cell) scene.focus_row = (*state_.hovered_cell)[1];
-  else if (state_.selected >= 0) scene.focus_row = loop.grid().cell(e.y[state_.selected], 1);
+  describe_lists(loop, trace, scene);
   scene.trails = trails_;
   scene.flashes = flash_list_;
   scene.insets = host_.insets(state_);  // last frame's panels: labels keep to the part of the view they leave free
@@ -421,6 +498,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   sim.grid = &loop.grid();
   sim.pairs = &loop.pairs();
   sim.lists = state_.overlays.lists ? &lists_ : nullptr;
+  sim.trace = trace;
   const FrameReport& report = loop.report();
   sim.algorithm_stats.push_back(
       {loop.algorithm(), report.timings.detection_ms, loop.detector().own_bytes(), loop.pairs().size()});
@@ -482,8 +560,8 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   sim.imgui_vertices = imgui_->last_vertices();
   sim.imgui_indices = imgui_->last_indices();
   sim.imgui_lists = imgui_->last_draw_lists();
-  sim.trace_events = state_.overlays.lists ? trace_.events().size() : 0;
-  sim.trace_bytes = state_.overlays.lists ? trace_.events().size() * sizeof(TraceEvent) : 0;
+  sim.trace_events = trace ? trace->log.events().size() : 0;
+  sim.trace_bytes = trace ? trace->log.events().size() * sizeof(TraceEvent) : 0;
   sim.gl_description = gl_description_;
   sim.width = context_.width();
   sim.height = context_.height();

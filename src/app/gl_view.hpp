@@ -10,7 +10,7 @@
 
 #include "app/frame_loop.hpp"
 #include "app/view_options.hpp"
-#include "core/trace.hpp"
+#include "core/frame_trace.hpp"
 #include "io/png.hpp"
 #include "render/gl_context.hpp"
 #include "render/imgui_layer.hpp"
@@ -87,7 +87,9 @@ class GlView {
   [[nodiscard]] const Cost& last_cost() const { return cost_; }
 
  private:
-  void update_lists(FrameLoop& loop);
+  void update_lists(const FrameLoop& loop, const std::shared_ptr<const FrameTrace>& trace);
+  // The lists overlay's part of `scene` from the stepper's current operation and the filter.
+  void describe_lists(const FrameLoop& loop, const std::shared_ptr<const FrameTrace>& trace, render::OverlayScene& scene) const;
   void build_shapes(const FrameLoop& loop);
   void build_checks(const FrameLoop& loop);
   void fit_camera(const FrameLoop& loop);
@@ -131,14 +133,11 @@ class GlView {
   render::CheckDraw checks_;
   std::vector<std::pair<ElementId, float>> flash_list_;
 
-  // The list overlay: a traced detection of the current frame, redone when the frame changes.
-  TraceLog trace_;
-  PairList trace_pairs_;
+  // The lists overlay, rebuilt from the frame loop's trace when it or the stepper's position changes.
   std::vector<render::TracedList> lists_;
-  std::int64_t lists_frame_ = -1;
-  std::string lists_algorithm_;
-  std::uint64_t lists_generation_ = 0;
-  std::uint64_t generation_ = 1;  // bumped on every scene load
+  std::uint64_t lists_serial_ = 0;   // the trace they were built from
+  std::size_t lists_upto_ = 0;       // the events applied (SIZE_MAX: all)
+  std::string loaded_scene_;         // the scene last loaded: a selection survives a restart, not a new scene
 
   // Trails and flashes, advanced per step.
   ElementId trail_element_ = -1;

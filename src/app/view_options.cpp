@@ -102,6 +102,11 @@ void parse_view_options(Args& args, bool headless, ViewOptions& out) {
   const bool book = args.flag("--book-numbering");
   drawing("--book-numbering", book);
   out.book_numbering = book || out.book_numbering;
+  if (auto v = args.value("--lists")) {
+    if (*v != "all" && *v != "selected" && *v != "row") throw Error("--lists: '" + *v + "' is not one of all, selected, row");
+    out.lists = *v;
+    drawing("--lists", true);
+  }
   if (headless && out.step && !out.screenshot) throw Error("--step: needs --screenshot (it sets what the screenshot shows)");
   // Headless draws nothing without a screenshot: a drawing flag alone would be silently ignored.
   if (headless && drawing_flag && !out.screenshot)

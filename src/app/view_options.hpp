@@ -24,6 +24,7 @@ struct ViewOptions {
   bool no_timings = false;                // --no-timings: "-" instead of wall-clock numbers
   std::optional<std::int64_t> step;       // --step K: the stepper shows the state after K trace events
   bool book_numbering = false;            // --book-numbering: the stepper numbers from 1, as the book
+  std::string lists;                      // --lists all|selected|row: the lists overlay's filter ("" = by size)
 };
 
 // Takes the rendering flags out of `args`; `headless` also accepts --gl. Error names a bad value.

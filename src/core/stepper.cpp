@@ -40,7 +40,7 @@ bool breakpoint_matches(const Breakpoint& b, const TraceEvent& e) {
 }
 
 void Stepper::clear() {
-  trace_.reset();
+  trace_ = empty_trace();
   state_.clear();
   position_ = 0;
   checkpoints_.clear();
@@ -52,18 +52,25 @@ void Stepper::clear() {
   playing_ = false;
 }
 
-void Stepper::load(TraceLog trace) {
+std::shared_ptr<const TraceLog> Stepper::empty_trace() {
+  static const auto empty = std::make_shared<const TraceLog>();
+  return empty;
+}
+
+void Stepper::load(TraceLog trace) { load(std::make_shared<const TraceLog>(std::move(trace))); }
+
+void Stepper::load(std::shared_ptr<const TraceLog> trace) {
   clear();
-  trace_ = std::move(trace);
-  const std::vector<TraceEvent>& ev = trace_.events();
-  const std::vector<TracedArray>& arrays = trace_.arrays();
+  trace_ = trace ? std::move(trace) : empty_trace();
+  const std::vector<TraceEvent>& ev = trace_->events();
+  const std::vector<TracedArray>& arrays = trace_->arrays();
 
   std::size_t state_ints = 0;
   for (const TracedArray& a : arrays) state_ints += a.initial.size();
   // Checkpoint memory (size/interval copies of the state) stays within one int per event.
   interval_ = std::max(kMinCheckpointInterval, state_ints);
 
-  ArrayState s = trace_.state_after(0);
+  ArrayState s = trace_->state_after(0);
   next_of_heads_.assign(arrays.size(), -1);
   phase_of_.resize(ev.size());
   last_write_.resize(ev.size());
@@ -108,7 +115,7 @@ void Stepper::load(TraceLog trace) {
   position_ = 0;
 }
 
-const TraceEvent* Stepper::current() const { return position_ == 0 ? nullptr : &trace_.events()[position_ - 1]; }
+const TraceEvent* Stepper::current() const { return position_ == 0 ? nullptr : &trace_->events()[position_ - 1]; }
 
 void Stepper::restore_checkpoint(std::size_t n) {
   state_ = checkpoints_[n];
@@ -116,7 +123,7 @@ void Stepper::restore_checkpoint(std::size_t n) {
 }
 
 void Stepper::seek(std::size_t target) {
-  const std::vector<TraceEvent>& ev = trace_.events();
+  const std::vector<TraceEvent>& ev = trace_->events();
   target = std::min(target, ev.size());
   const std::size_t distance = target > position_ ? target - position_ : position_ - target;
   if (distance > interval_ && !checkpoints_.empty())
@@ -127,13 +134,13 @@ void Stepper::seek(std::size_t target) {
 
 bool Stepper::step_forward() {
   if (position_ >= size()) return false;
-  TraceLog::apply(trace_.events()[position_++], state_);
+  TraceLog::apply(trace_->events()[position_++], state_);
   return true;
 }
 
 bool Stepper::step_back() {
   if (position_ == 0) return false;
-  TraceLog::undo(trace_.events()[--position_], state_);
+  TraceLog::undo(trace_->events()[--position_], state_);
   return true;
 }
 
@@ -165,14 +172,14 @@ bool Stepper::prev_phase() {
 }
 
 std::optional<std::size_t> Stepper::find_next(const Breakpoint& b, std::size_t from) const {
-  const std::vector<TraceEvent>& ev = trace_.events();
+  const std::vector<TraceEvent>& ev = trace_->events();
   for (std::size_t i = from; i < ev.size(); ++i)
     if (breakpoint_matches(b, ev[i])) return i;
   return std::nullopt;
 }
 
 std::optional<std::size_t> Stepper::find_prev(const Breakpoint& b, std::size_t before) const {
-  const std::vector<TraceEvent>& ev = trace_.events();
+  const std::vector<TraceEvent>& ev = trace_->events();
   for (std::size_t i = std::min(before, ev.size()); i-- > 0;)
     if (breakpoint_matches(b, ev[i])) return i;
   return std::nullopt;
@@ -214,7 +221,7 @@ std::size_t Stepper::advance(double dt_seconds) {
   const std::size_t steps = whole >= static_cast<double>(remaining) ? remaining : static_cast<std::size_t>(whole);
   std::size_t target = position_ + steps;
   if (play_break_) {
-    const std::vector<TraceEvent>& ev = trace_.events();
+    const std::vector<TraceEvent>& ev = trace_->events();
     for (std::size_t i = position_; i < target; ++i) {
       if (breakpoint_matches(*play_break_, ev[i])) {
         target = i + 1;
@@ -264,7 +271,7 @@ LoopVars Stepper::loop_vars() const {
   }
   if (e->op == TraceOp::TestPair) {
     // The mask cell being scanned: the VisitCell of k just before this run of k's tests.
-    const std::vector<TraceEvent>& ev = trace_.events();
+    const std::vector<TraceEvent>& ev = trace_->events();
     for (std::size_t i = position_ - 1; i-- > 0;) {
       if (ev[i].op == TraceOp::TestPair && ev[i].element == e->element) continue;
       if (ev[i].op == TraceOp::VisitCell && ev[i].element == e->element) {
@@ -297,7 +304,7 @@ std::vector<std::int32_t> Stepper::list_members(int heads_array, std::int64_t li
 }
 
 int Stepper::array_id(const std::string& name) const {
-  const std::vector<TracedArray>& arrays = trace_.arrays();
+  const std::vector<TracedArray>& arrays = trace_->arrays();
   for (std::size_t a = 0; a < arrays.size(); ++a)
     if (arrays[a].name == name) return static_cast<int>(a);
   return -1;

@@ -14,6 +14,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -73,14 +74,16 @@ class Stepper {
   // Takes the trace of one detection and rewinds to position 0. Throws Error when an event writes
   // outside its array or a recorded old value is not what the array held (the trace is corrupt).
   void load(TraceLog trace);
+  // As load(TraceLog), sharing a trace others also read (the frame loop's: the lists overlay draws it).
+  void load(std::shared_ptr<const TraceLog> trace);
   // Drops the trace; the stepper is empty (size() == 0).
   void clear();
 
   // The loaded trace (arrays declared, events) and its events.
-  [[nodiscard]] const TraceLog& trace() const { return trace_; }
-  [[nodiscard]] const std::vector<TraceEvent>& events() const { return trace_.events(); }
+  [[nodiscard]] const TraceLog& trace() const { return *trace_; }
+  [[nodiscard]] const std::vector<TraceEvent>& events() const { return trace_->events(); }
   // Number of events.
-  [[nodiscard]] std::size_t size() const { return trace_.events().size(); }
+  [[nodiscard]] std::size_t size() const { return trace_->events().size(); }
   // Number of events applied.
   [[nodiscard]] std::size_t position() const { return position_; }
   // Every array after position() events.
@@ -151,7 +154,9 @@ class Stepper {
  private:
   void restore_checkpoint(std::size_t n);
 
-  TraceLog trace_;
+  static std::shared_ptr<const TraceLog> empty_trace();
+
+  std::shared_ptr<const TraceLog> trace_ = empty_trace();
   ArrayState state_;
   std::size_t position_ = 0;
   std::size_t interval_ = 1024;

@@ -71,7 +71,7 @@ std::vector<TracedList> sort_runs(const TraceLog& log, const State& state) {
 
 }  // namespace
 
-std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_count) {
+std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_count, std::size_t upto) {
   State state;
   for (const TracedArray& a : log.arrays()) state.push_back(a.initial);
   std::vector<int> next_of(log.arrays().size(), -1);
@@ -96,7 +96,9 @@ std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_co
     if (!l.chain.empty()) out.push_back(std::move(l));
   };
 
-  for (const TraceEvent& e : log.events()) {
+  const std::size_t count = std::min(upto, log.events().size());
+  for (std::size_t i = 0; i < count; ++i) {
+    const TraceEvent& e = log.events()[i];
     switch (e.op) {
       case TraceOp::Phase: phase_index = e.index; break;
       case TraceOp::Push: {
@@ -126,7 +128,16 @@ std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_co
   }
   for (const auto& [key, o] : open) capture(key.first, key.second, o);
 
-  if (out.empty()) out = sort_runs(log, state);
+  // Sort's runs exist once its permutation is complete (no write to it remains).
+  if (out.empty()) {
+    bool order_done = true;
+    for (std::size_t i = count; i < log.events().size() && order_done; ++i)
+      for (int w = 0; w < log.events()[i].write_count && w < 2; ++w) {
+        const int a = log.events()[i].writes[w].array;
+        if (a >= 0 && log.arrays()[static_cast<std::size_t>(a)].name == "order") order_done = false;
+      }
+    if (order_done) out = sort_runs(log, state);
+  }
   std::stable_sort(out.begin(), out.end(), [](const TracedList& a, const TracedList& b) {
     return std::tie(a.heads_array, a.phase_index, a.slot) < std::tie(b.heads_array, b.phase_index, b.slot);
   });

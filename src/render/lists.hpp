@@ -4,6 +4,7 @@
 // run if it never is). A list rebuilt several times (NBS: the x-lists of every row) gives one
 // TracedList per build. Sort, which has no lists, gives its runs of equal cell keys instead.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -29,7 +30,10 @@ struct TracedList {
 };
 
 // Every list of the traced run in `log` over `element_count` elements, ordered by heads array,
-// build phase and slot.
-std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_count);
+// build phase and slot, as they stand after the first `upto` events (the stepper's position): the
+// lists whose head was cleared before then as they were when cleared, the others from the arrays at
+// that moment (sort: its runs once its permutation is complete). Past the last event: the finished
+// lists.
+std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_count, std::size_t upto = SIZE_MAX);
 
 }  // namespace nbscope::render

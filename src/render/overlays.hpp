@@ -3,7 +3,8 @@
 // connected lists as arrow chains, the contact mask of the hovered cell, detected pairs, check
 // results, the selection, trails and cell-change flashes. No GL here: a recorder sees the same calls.
 //
-// Index: ShapeDraw (bodies) | CheckDraw | OverlayFlags (+ keys) | OverlayScene | draw_scene.
+// Index: ShapeDraw (bodies) | CheckDraw | OverlayFlags (+ keys) | ListFilter | OverlayScene | draw_scene.
+// The grid, its heat map and the legend are drawn in overlay_grid.cpp, the lists in overlay_lists.cpp.
 #pragma once
 #include <array>
 #include <optional>
@@ -16,6 +17,7 @@
 #include "core/pairs.hpp"
 #include "render/camera.hpp"
 #include "render/draw_sink.hpp"
+#include "render/label_space.hpp"
 #include "render/lists.hpp"
 
 namespace nbscope::render {
@@ -49,7 +51,7 @@ struct OverlayFlags {
   bool elements = false;    // bounding circles
   bool grid = true;         // cells in view, occupied cells shaded by count, nx x ny
   bool lists = false;       // the detector's lists as arrow chains (needs a traced detection)
-  bool mask = true;         // the contact mask of the hovered cell
+  bool mask = true;         // the contact mask of the hovered cell (else the selected element's)
   bool pairs = true;        // detected pairs
   bool checks = true;       // confirmed pairs and violations
   bool broadphase = false;  // Box2D-only broadphase pairs (fat AABBs)
@@ -68,10 +70,19 @@ struct OverlayInfo {
 // All overlays in panel order.
 std::span<const OverlayInfo> overlay_infos();
 
-// A rectangle of the window in pixels (origin top left, y down), e.g. a panel's window.
-struct PixelRect {
-  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+// Which lists the lists overlay draws.
+enum class ListFilter : std::uint8_t {
+  All,       // every list
+  Selected,  // the lists that hold the selected element
+  Row,       // the lists of the hovered row, else the stepper's row, else the selected element's row
 };
+// Settings and flag names of the filters, in enum order.
+inline constexpr const char* kListFilterNames[] = {"all", "selected", "row"};
+// Elements above which the filter defaults to Row: past it all lists together are a tangle.
+inline constexpr std::int64_t kRowFilterAbove = 300;
+// Cells narrower than this on screen (pixels) switch the grid to its overview: major lines and a
+// heat map of elements per cell, drawn over the bodies.
+inline constexpr double kHeatMapBelowPx = 6.0;
 
 // Everything one frame's overlays are drawn from; null/empty members are simply not drawn.
 struct OverlayScene {
@@ -86,6 +97,14 @@ struct OverlayScene {
   std::optional<Pair> focus_pair;  // a violation's pair gone to: both elements, their cells and the segment marked
   std::optional<std::array<std::int32_t, 2>> hovered_cell;
   std::optional<std::int32_t> focus_row;  // the row whose secondary (row-below) lists are shown
+  ListFilter list_filter = ListFilter::All;
+  // The stepper's current operation, mid-trace: the list being written (heads array, slot) and the
+  // pair being tested (with its result), drawn highlighted by the lists overlay.
+  std::optional<std::pair<int, std::int64_t>> active_list;
+  std::optional<Pair> tested_pair;
+  bool tested_contact = false;
+  // Lines the legend says about the lists ("lists at operation 3 of 91", "brute keeps no lists").
+  std::vector<std::string> lists_caption;
   std::span<const std::vector<Vec2>> trails;
   std::span<const std::pair<ElementId, float>> flashes;  // element, strength in (0, 1]
   std::optional<std::array<Vec2, 2>> drag;               // body anchor -> mouse while dragging

@@ -28,6 +28,12 @@ inline constexpr Rgba kGridBorder{160, 170, 190, 200};
 inline constexpr Rgba kCellShadeLow{70, 100, 150, 55};   // occupancy 1
 inline constexpr Rgba kCellShadeHigh{235, 175, 70, 95};   // occupancy >= kCellShadeSaturation
 inline constexpr int kCellShadeSaturation = 6;
+inline constexpr Rgba kGridMajor{140, 150, 175, 120};   // every few cells, in the overview
+// The overview's heat map, elements per cell from 1 (first) to the fullest cell in view (last).
+inline constexpr Rgba kHeat[5] = {{50, 30, 110, 215}, {130, 40, 130, 220}, {210, 80, 70, 225}, {245, 170, 40, 230}, {252, 245, 160, 235}};
+inline constexpr Rgba kRowBar{250, 170, 60, 200};       // elements per row (= its y-list's length)
+inline constexpr Rgba kLabelBack{24, 26, 31, 215};      // behind the grid's title and the legend
+inline constexpr Rgba kActiveList{255, 255, 255, 110};  // under the list the stepper is writing
 inline constexpr Rgba kMaskCell{80, 220, 200, 70};
 inline constexpr Rgba kMaskCentre{80, 220, 200, 130};
 inline constexpr Rgba kYList{250, 170, 60};   // y-lists (rows) / first list kind

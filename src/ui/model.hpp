@@ -8,11 +8,13 @@
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/elements.hpp"
+#include "core/frame_trace.hpp"
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
 #include "io/report_json.hpp"
@@ -66,6 +68,7 @@ struct SimView {
   const Grid* grid = nullptr;
   const PairList* pairs = nullptr;
   const std::vector<render::TracedList>* lists = nullptr;  // only while the list overlay is on
+  std::shared_ptr<const FrameTrace> trace;  // this frame's traced detection, when the overlay or the stepper asked
   std::vector<AlgorithmStat> algorithm_stats;               // the chosen algorithm first
 
   bool check_ran = false;
@@ -120,6 +123,8 @@ struct UiState {
   std::int64_t current_violation = -1;  // index into SimView::violations of the one gone to
   std::array<bool, kInvariantCount> violation_filter{true, true, true, true};  // invariants listed
   bool follow_operation = false;  // the camera follows the stepper's current operation
+  // The lists overlay's filter; unset: Row past render::kRowFilterAbove elements, else All.
+  std::optional<render::ListFilter> list_filter;
   std::int64_t history_budget_mb = 256;  // the Timeline's memory budget, saved in the settings
   bool book_numbering = false;  // element ids and cell indices shown (and typed) from 1, as the book prints them
   std::optional<std::array<std::int32_t, 2>> hovered_cell;

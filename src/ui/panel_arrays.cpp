@@ -315,7 +315,7 @@ class ArraysPanel final : public Panel {
     s.book_numbering = c.state.book_numbering;
     s.update(c.sim, ImGui::GetIO().DeltaTime, ImGui::GetFrameCount());
     if (!s.has_capture()) {
-      ImGui::TextDisabled("nothing recorded: open the Stepper and pause");
+      ImGui::TextDisabled("%s", idle_message(s).c_str());
       return;
     }
     if (ImGui::Checkbox("book numbering (from 1)", &c.state.book_numbering)) s.book_numbering = c.state.book_numbering;

@@ -1,7 +1,9 @@
-// The Overlays panel: one checkbox per overlay, each also toggled by its key.
+// The Overlays panel: one checkbox per overlay, each also toggled by its key, and the lists filter.
 #include <imgui.h>
 
 #include <cstdio>
+#include <optional>
+#include <string>
 
 #include "ui/panels.hpp"
 
@@ -25,13 +27,20 @@ class OverlaysPanel final : public Panel {
     }
     ImGui::EndTable();
     if (c.state.overlays.lists) {
-      // The list colours (render/palette.hpp), so arrows can be read without the manual.
-      auto swatch = [](render::Rgba col, const char* text) {
-        ImGui::TextColored(ImVec4(col.r / 255.0f, col.g / 255.0f, col.b / 255.0f, 1.0f), "%s", text);
-      };
-      swatch(render::palette::kYList, "-> y-lists of rows (Y)");
-      swatch(render::palette::kXList, "-> x-lists, cells, leaves, runs");
-      swatch(render::palette::kXListBelow, "-> x-lists of row below (B[1])");
+      // Which lists are drawn; the scene's legend names the kinds this algorithm builds.
+      const auto n = c.sim.elements != nullptr ? c.sim.elements->size() : 0;
+      const char* automatic = n > render::kRowFilterAbove ? "auto (row: a large scene)" : "auto (all)";
+      const int current = c.state.list_filter ? 1 + static_cast<int>(*c.state.list_filter) : 0;
+      const char* names[] = {automatic, "all lists", "the selected element's", "the hovered or selected row"};
+      ImGui::SetNextItemWidth(-1);
+      if (ImGui::BeginCombo("##lists", (std::string("lists: ") + names[current]).c_str())) {
+        for (int i = 0; i < 4; ++i)
+          if (ImGui::Selectable(names[i], i == current))
+            c.state.list_filter = i == 0 ? std::nullopt : std::optional(static_cast<render::ListFilter>(i - 1));
+        ImGui::EndCombo();
+      }
+      if (c.sim.lists != nullptr && c.sim.lists->empty())
+        ImGui::TextDisabled("%s builds no lists", c.sim.algorithm.c_str());
     }
   }
 };

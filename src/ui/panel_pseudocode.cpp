@@ -26,7 +26,7 @@ class PseudocodePanel final : public Panel {
     s.book_numbering = c.state.book_numbering;
     s.update(c.sim, ImGui::GetIO().DeltaTime, ImGui::GetFrameCount());
     if (!s.has_capture()) {
-      ImGui::TextDisabled("nothing recorded: open the Stepper and pause");
+      ImGui::TextDisabled("%s", idle_message(s).c_str());
       return;
     }
     Stepper& st = s.stepper();

@@ -25,7 +25,8 @@ void open_stepper_panels(UiState& state);
 std::unique_ptr<Panel> make_stepper_panel(std::shared_ptr<StepperSession> session);
 std::unique_ptr<Panel> make_arrays_panel(std::shared_ptr<StepperSession> session);
 std::unique_ptr<Panel> make_pseudocode_panel(std::shared_ptr<StepperSession> session);
-// Draws the session's current event into the scene (used by the Stepper panel).
-void draw_stepper_scene(const StepperSession& session, render::DrawSink& sink);
+// Draws the session's current event into the scene (used by the Stepper panel); with `lists_drawn`
+// the lists overlay already draws the list being written, highlighted, so its chain is left out.
+void draw_stepper_scene(const StepperSession& session, render::DrawSink& sink, bool lists_drawn = false);
 
 }  // namespace nbscope::ui

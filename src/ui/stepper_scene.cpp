@@ -78,7 +78,7 @@ class SceneWriter {
 
 }  // namespace
 
-void draw_stepper_scene(const StepperSession& s, render::DrawSink& sink) {
+void draw_stepper_scene(const StepperSession& s, render::DrawSink& sink, bool lists_drawn) {
   const Stepper& st = s.stepper();
   const TraceEvent* e = st.current();
   if (e == nullptr) return;
@@ -90,14 +90,14 @@ void draw_stepper_scene(const StepperSession& s, render::DrawSink& sink) {
     case TraceOp::Clear: {
       const Rgba colour = SceneWriter::list_colour(e->label, v.heads_array, v.list, s);
       w.cell(cell, colour.with_alpha(35), colour);
-      w.list(v.heads_array, v.list, colour);
+      if (!lists_drawn) w.list(v.heads_array, v.list, colour);
       w.ring(e->element, palette::kSelection, 3.0f);
       break;
     }
     case TraceOp::VisitCell:
     case TraceOp::TestPair: {
       w.cell(cell, palette::kMaskCell, palette::kMaskCentre.with_alpha(255));
-      if (const auto l = s.list_of_cell(cell)) w.list(l->heads, l->list, SceneWriter::list_colour(l->kind, l->heads, l->list, s));
+      if (const auto l = s.list_of_cell(cell); l && !lists_drawn) w.list(l->heads, l->list, SceneWriter::list_colour(l->kind, l->heads, l->list, s));
       w.ring(e->element, palette::kSelection, 3.0f);
       if (e->op == TraceOp::TestPair && w.valid(e->other) && w.valid(e->element)) {
         const Rgba colour = e->contact ? palette::kConfirmedPair : kNoContact;

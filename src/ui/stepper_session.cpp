@@ -4,7 +4,6 @@
 #include <exception>
 #include <iterator>
 
-#include "core/detector.hpp"
 #include "core/error.hpp"
 
 namespace nbscope::ui {
@@ -36,11 +35,15 @@ void StepperSession::update(const SimView& sim, double dt_seconds, int ui_frame)
   // A configured step (headless --step K) shows whatever frame is on screen; otherwise only a
   // paused frame is recorded, so a running simulation does not pay for tracing every frame.
   const bool target_here = target_ && target_->frame == sim.frame;
-  const bool want = sim.paused || pending_step_.has_value() || target_here;
-  if (want && sim.elements != nullptr && !(key_ == key_of(sim))) capture(sim);
+  const bool fresh = sim.trace ? sim.trace->serial != held_serial_ : !(key_ == key_of(sim));
+  if (wants_trace(sim.frame, sim.paused) && sim.elements != nullptr && fresh) capture(sim);
   if (target_here && (key_ == key_of(sim))) apply_target(sim);
   if (captured_) stepper_.advance(dt_seconds);
   was_current_ = current_for(sim);
+}
+
+bool StepperSession::wants_trace(std::int64_t frame, bool paused) const {
+  return paused || capture_requested_ || pending_step_.has_value() || (target_ && target_->frame == frame);
 }
 
 void StepperSession::set_target(const PairTarget& target) {
@@ -63,15 +66,15 @@ void StepperSession::apply_target(const SimView& sim) {
     target_status_ = "stepper: " + (message_.empty() ? std::string("nothing recorded for frame ") + std::to_string(t.frame) : message_);
     return;
   }
-  const Elements& e = elements_;
-  if (t.pair.i < 0 || t.pair.j < 0 || t.pair.i >= e.size() || t.pair.j >= e.size() || !has_locate_grid_) {
+  const Elements& e = elements();
+  if (t.pair.i < 0 || t.pair.j < 0 || t.pair.i >= e.size() || t.pair.j >= e.size() || !has_trace_grid()) {
     target_status_ = "stepper: the pair is not among this frame's elements";
     return;
   }
   PairCells cells;
   for (int a = 0; a < e.dim; ++a) {
-    cells.i[static_cast<std::size_t>(a)] = locate_grid_.cell(e.axis(a)[t.pair.i], a);
-    cells.j[static_cast<std::size_t>(a)] = locate_grid_.cell(e.axis(a)[t.pair.j], a);
+    cells.i[static_cast<std::size_t>(a)] = trace_->grid.cell(e.axis(a)[t.pair.i], a);
+    cells.j[static_cast<std::size_t>(a)] = trace_->grid.cell(e.axis(a)[t.pair.j], a);
   }
   const PairLocation at = locate_pair(stepper_.events(), t.pair.i, t.pair.j, cells, e.dim);
   target_location_ = at;
@@ -129,14 +132,14 @@ bool StepperSession::seek_touching(BreakKind kind, std::int32_t element, const s
 std::optional<Eigen::Vector2d> StepperSession::focus_point() const {
   const TraceEvent* e = stepper_.current();
   if (e == nullptr) return std::nullopt;
-  if (e->element >= 0 && e->element < elements_.size()) {
-    if (e->op == TraceOp::TestPair && e->other >= 0 && e->other < elements_.size())
-      return Eigen::Vector2d(0.5 * (elements_.x[e->element] + elements_.x[e->other]), 0.5 * (elements_.y[e->element] + elements_.y[e->other]));
-    return Eigen::Vector2d(elements_.x[e->element], elements_.y[e->element]);
+  if (e->element >= 0 && e->element < elements().size()) {
+    if (e->op == TraceOp::TestPair && e->other >= 0 && e->other < elements().size())
+      return Eigen::Vector2d(0.5 * (elements().x[e->element] + elements().x[e->other]), 0.5 * (elements().y[e->element] + elements().y[e->other]));
+    return Eigen::Vector2d(elements().x[e->element], elements().y[e->element]);
   }
-  if (has_locate_grid_ && e->cell[0] >= 0 && e->cell[1] >= 0) {
-    const double d = locate_grid_.cell_size;
-    return Eigen::Vector2d(locate_grid_.origin[0] + d * (e->cell[0] + 0.5), locate_grid_.origin[1] + d * (e->cell[1] + 0.5));
+  if (has_trace_grid() && e->cell[0] >= 0 && e->cell[1] >= 0) {
+    const double d = trace_->grid.cell_size;
+    return Eigen::Vector2d(trace_->grid.origin[0] + d * (e->cell[0] + 0.5), trace_->grid.origin[1] + d * (e->cell[1] + 0.5));
   }
   return std::nullopt;
 }
@@ -147,74 +150,41 @@ void StepperSession::capture(const SimView& sim) {
     target_status_.clear();  // it described another frame
     target_location_.reset();
   }
+  if (!sim.trace && sim.elements != nullptr && !capture_requested_) {
+    capture_requested_ = true;  // the app makes the trace for the next frame (wants_trace)
+    return;
+  }
+  capture_requested_ = false;
   key_ = key_of(sim);
   captured_ = false;
   message_.clear();
   stepper_.clear();
-  pseudocode_.clear();
   element_valued_.clear();
   first_write_.clear();
   cell_pushes_.clear();
   tests_of_element_ = -1;
   tests_.clear();
-  has_grid_ = false;
-  has_locate_grid_ = false;
   algorithm_ = sim.algorithm;
   frame_ = sim.frame;
-  if (sim.elements == nullptr) {
-    message_ = "no scene loaded";
+  trace_ = sim.trace;
+  held_serial_ = trace_ ? trace_->serial : 0;
+  if (sim.elements == nullptr || !trace_) {
+    message_ = sim.elements == nullptr ? "no scene loaded" : "no traced detection of this frame";
+    trace_.reset();
     return;
   }
-  const Elements& e = *sim.elements;
-  if (e.size() > kMaxSteppedElements) {
-    message_ = std::to_string(e.size()) + " elements: too many to record every operation (limit " +
-               std::to_string(kMaxSteppedElements) + "); step through a smaller scene";
+  if (!trace_->refusal.empty()) {
+    message_ = trace_->refusal;
     return;
   }
   try {
-    auto detector = make_detector(sim.algorithm);
-    if (!detector->supports_dim(e.dim)) {
-      message_ = sim.algorithm + " does not handle " + std::to_string(e.dim) + "D elements";
-      return;
-    }
-    // Brute force records one test per pair: past a few million the recording alone takes gigabytes.
-    const double brute_tests = 0.5 * static_cast<double>(e.size()) * static_cast<double>(e.size() - 1);
-    if (sim.algorithm == "brute" && brute_tests > static_cast<double>(kMaxBruteTests)) {
-      message_ = "brute: " + std::to_string(e.size()) + " elements make " + std::to_string(static_cast<std::int64_t>(brute_tests)) +
-                 " pair tests, too many to record (limit " + std::to_string(kMaxBruteTests) +
-                 "); step through a smaller scene or a grid algorithm";
-      return;
-    }
-    DetectOptions options;
-    if (sim.grid != nullptr) {
-      // The frame's own grid, pinned, so the recorded run sees exactly the cells on screen.
-      const Grid& g = *sim.grid;
-      options.grid.cell_size = g.cell_size;
-      options.grid.origin = std::array<double, 3>{g.origin[0], g.origin[1], g.origin[2]};
-      options.grid.cells = std::array<std::int64_t, 3>{g.n[0], g.n[1], g.n[2]};
-    }
-    PairList pairs;
-    TraceLog log;
-    detector->detect_traced(e, options, pairs, log);
-    if (log.events().empty()) {
-      message_ = sim.algorithm + " records no operations to step through (no book arrays, no trace); choose nbs, screen, sort, tree or brute";
-      return;
-    }
-    stepper_.load(std::move(log));
-    if (const Grid* g = detector->last_grid()) {
-      grid_ = *g;
-      has_grid_ = true;
-    }
-    has_locate_grid_ = has_grid_ || sim.grid != nullptr;
-    if (has_locate_grid_) locate_grid_ = has_grid_ ? grid_ : *sim.grid;
-    const auto& lines = detector->pseudocode(e.dim);
-    pseudocode_.assign(lines.begin(), lines.end());
+    // The frame loop's own trace, shared: the lists overlay draws the same record.
+    stepper_.load(std::shared_ptr<const TraceLog>(trace_, &trace_->log));
   } catch (const Error& err) {
     stepper_.clear();
     message_ = err.what();
     return;
   }
-  elements_ = e;
   const auto& arrays = stepper_.trace().arrays();
   element_valued_.assign(arrays.size(), false);
   for (std::size_t a = 0; a < arrays.size(); ++a) {
@@ -381,6 +351,11 @@ std::string describe_event(const StepperSession& session, const TraceEvent& e) {
   }
   if (e.element >= 0) out += " for k=" + id(e.element);
   return out;
+}
+
+std::string idle_message(const StepperSession& session) {
+  if (!session.message().empty()) return session.message();
+  return "nothing recorded yet: pause (P) to record this frame's operations";
 }
 
 std::pair<std::int64_t, std::int64_t> window_range(std::int64_t length, std::int64_t focus, std::int64_t width) {

@@ -1,7 +1,7 @@
 // nbscope ui: what the Stepper, Arrays and Pseudocode panels share — the traced detection of one
-// paused frame (captured from the SimView), the core Stepper over it, the user's breakpoint and
-// element filter, and the book-style wording of events and array entries. No ImGui in here, so it
-// is unit-tested without a GL context.
+// paused frame (the frame loop's own trace, shared through the SimView), the core Stepper over it,
+// the user's breakpoint and element filter, and the book-style wording of events and array entries.
+// No ImGui in here, so it is unit-tested without a GL context.
 //
 // Index: StepperConfig | StepperSession (capture, per-frame update, shared view settings) |
 // describe_event / entry_name / window_range (text and layout helpers).
@@ -9,22 +9,19 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/elements.hpp"
+#include "core/frame_trace.hpp"
 #include "core/grid.hpp"
 #include "core/locate.hpp"
 #include "core/stepper.hpp"
 #include "ui/model.hpp"
 
 namespace nbscope::ui {
-
-// Most elements whose detection the stepper records: ~30 events of ~90 bytes each per element.
-inline constexpr std::int64_t kMaxSteppedElements = 50'000;
-// Most pair tests of brute force it records (one event each; brute keeps no arrays, only tests).
-inline constexpr std::int64_t kMaxBruteTests = 2'000'000;
 
 // How the stepper starts (headless `--step K`, or the window's defaults).
 struct StepperConfig {
@@ -37,11 +34,15 @@ class StepperSession {
  public:
   explicit StepperSession(StepperConfig config = {});
 
-  // Once per UI frame `ui_frame` (every stepper panel calls it; repeats are ignored): captures the
-  // frame in `sim` when it is paused (or a step was configured) and differs from the captured one,
+  // Once per UI frame `ui_frame` (every stepper panel calls it; repeats are ignored): takes the
+  // frame loop's trace in `sim` when the stepper wants one (wants_trace) and it is not the one held,
   // then advances playback by `dt_seconds`.
   void update(const SimView& sim, double dt_seconds, int ui_frame);
-  // Records the traced detection of the frame in `sim` now (also while running).
+  // True when the stepper would take frame `frame`'s trace: paused, a configured step (headless
+  // --step K), or a violation's pair to find on that frame. The app makes the trace only then (or
+  // for the lists overlay), so a running simulation does not pay for tracing every frame.
+  [[nodiscard]] bool wants_trace(std::int64_t frame, bool paused) const;
+  // Takes the traced detection in `sim` (its SimView::trace) now, also while running.
   void capture(const SimView& sim);
   // True when a detection is held and it is the frame `sim` shows (the scene overlay is valid).
   [[nodiscard]] bool current_for(const SimView& sim) const;
@@ -55,14 +56,16 @@ class StepperSession {
   // The cursor over the held detection, and the elements it was run on (a copy of that frame's).
   [[nodiscard]] Stepper& stepper() { return stepper_; }
   [[nodiscard]] const Stepper& stepper() const { return stepper_; }
-  [[nodiscard]] const Elements& elements() const { return elements_; }
+  [[nodiscard]] const Elements& elements() const { return trace_ ? trace_->elements : kNoElements; }
   // The captured detector's grid; nullptr for a detector without one.
-  [[nodiscard]] const Grid* grid() const { return has_grid_ ? &grid_ : nullptr; }
+  [[nodiscard]] const Grid* grid() const { return trace_ && trace_->detector_grid ? &trace_->grid : nullptr; }
+  // The held trace (shared with the lists overlay), or null.
+  [[nodiscard]] const std::shared_ptr<const FrameTrace>& frame_trace() const { return trace_; }
   // The algorithm and frame number of the held detection.
   [[nodiscard]] const std::string& algorithm() const { return algorithm_; }
   [[nodiscard]] std::int64_t frame() const { return frame_; }
   // The detector's pseudocode lines (TraceEvent::line indexes them).
-  [[nodiscard]] const std::vector<const char*>& pseudocode() const { return pseudocode_; }
+  [[nodiscard]] const std::vector<const char*>& pseudocode() const { return trace_ ? trace_->pseudocode : kNoLines; }
   // The list that holds cell `cell`'s elements at the current position: the target of the latest
   // push onto that cell so far (NBS: B[1] of the row below during row iy), or nullopt.
   struct ListRef {
@@ -133,13 +136,16 @@ class StepperSession {
   bool captured_ = false;
   Key key_;
   std::string message_;
+  bool has_trace_grid() const { return trace_ != nullptr; }
+  inline static const Elements kNoElements{};
+  inline static const std::vector<const char*> kNoLines{};
+
   Stepper stepper_;
-  Elements elements_;
-  Grid grid_;
-  bool has_grid_ = false;
+  std::shared_ptr<const FrameTrace> trace_;  // the frame loop's, shared
+  std::uint64_t held_serial_ = 0;            // the trace last taken (held or refused)
+  bool capture_requested_ = false;           // capture() asked while no trace was made: take the next
   std::string algorithm_;
   std::int64_t frame_ = -1;
-  std::vector<const char*> pseudocode_;
   std::vector<bool> element_valued_;
   std::vector<std::vector<std::uint32_t>> first_write_;  // per array and entry: first writing event (+1), 0 = never
   std::vector<std::pair<std::uint64_t, std::size_t>> cell_pushes_;  // (cell key, event), sorted
@@ -149,8 +155,6 @@ class StepperSession {
   std::optional<PairTarget> target_;
   std::string target_status_;
   std::optional<PairLocation> target_location_;
-  Grid locate_grid_;  // the captured detector's grid, or the frame's for detectors without one
-  bool has_locate_grid_ = false;
   int last_frame_count_ = -1;
   bool was_current_ = false;
 };
@@ -174,6 +178,8 @@ struct ElementEntries {
 [[nodiscard]] std::string describe_event(const StepperSession& session, const TraceEvent& e);
 // A value of `array` as shown: element ids shifted in book numbering, anything else as stored.
 [[nodiscard]] std::int64_t shown_value(const StepperSession& session, int array, std::int32_t value);
+// What a stepper panel says while nothing is held: why (the trace's refusal), or how to record.
+[[nodiscard]] std::string idle_message(const StepperSession& session);
 // The window [begin, end) of at most `width` entries of an array of `length` that keeps `focus`
 // (clamped into the array) in view, centred where possible.
 [[nodiscard]] std::pair<std::int64_t, std::int64_t> window_range(std::int64_t length, std::int64_t focus,

@@ -4,8 +4,11 @@
 #include <imgui.h>
 
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "core/detector.hpp"
+#include "core/frame_trace.hpp"
 #include "ui/host.hpp"
 #include "ui/model.hpp"
 
@@ -52,6 +55,25 @@ struct BookFrame {
     camera.set_viewport(1280, 720);
     camera.set({5, 5}, 40.0);
   }
+  // The view with this frame's trace, made as the frame loop makes it (the grid pinned to `grid`
+  // when sim.grid points at it) for the current algorithm, elements and frame; kept while those stay.
+  SimView& traced() {
+    const auto key = std::make_tuple(sim.algorithm, static_cast<const void*>(sim.elements), sim.frame, sim.grid != nullptr);
+    if (sim.elements != nullptr && (!sim.trace || key != trace_key_)) {
+      DetectOptions o;
+      if (sim.grid != nullptr) {
+        o.grid.cell_size = sim.grid->cell_size;
+        o.grid.origin = std::array<double, 3>{sim.grid->origin[0], sim.grid->origin[1], sim.grid->origin[2]};
+        o.grid.cells = std::array<std::int64_t, 3>{sim.grid->n[0], sim.grid->n[1], sim.grid->n[2]};
+      }
+      sim.trace = trace_frame(*make_detector(sim.algorithm), *sim.elements, o, sim.frame, sim.grid != nullptr ? *sim.grid : Grid{});
+      trace_key_ = key;
+    }
+    return sim;
+  }
+
+ private:
+  std::tuple<std::string, const void*, std::int64_t, bool> trace_key_;
 };
 
 // A DrawSink that keeps what it is asked to draw.
@@ -69,6 +91,7 @@ struct Recorder final : render::DrawSink {
 // Runs one UI frame of `host` over `f` and draws its scene overlay into `sink`.
 inline void run_frame(UiHost& host, BookFrame& f, Recorder* sink = nullptr) {
   f.requests = {};
+  f.traced();
   ImGui::NewFrame();
   UiContext ctx{f.sim, f.state, f.requests, f.camera};
   host.frame(ctx, true);

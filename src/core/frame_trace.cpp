@@ -1,0 +1,48 @@
+#include "core/frame_trace.hpp"
+
+#include <atomic>
+
+namespace nbscope {
+
+std::shared_ptr<const FrameTrace> trace_frame(Detector& detector, const Elements& elements, const DetectOptions& options,
+                                              std::int64_t frame, const Grid& frame_grid) {
+  static std::atomic<std::uint64_t> next_serial{1};
+  auto out = std::make_shared<FrameTrace>();
+  out->serial = next_serial++;
+  out->frame = frame;
+  out->algorithm = std::string(detector.name());
+  out->grid = frame_grid;
+  const std::string name = out->algorithm;
+  if (!detector.supports_dim(elements.dim)) {
+    out->refusal = name + " does not handle " + std::to_string(elements.dim) + "D elements";
+    return out;
+  }
+  if (elements.size() > kMaxTracedElements) {
+    out->refusal = std::to_string(elements.size()) + " elements: too many to record every operation (limit " +
+                   std::to_string(kMaxTracedElements) + "); step through a smaller scene";
+    return out;
+  }
+  // Brute force records one test per pair: past a few million the recording alone takes gigabytes.
+  const double brute_tests = 0.5 * static_cast<double>(elements.size()) * static_cast<double>(elements.size() - 1);
+  if (name == "brute" && brute_tests > static_cast<double>(kMaxTracedBruteTests)) {
+    out->refusal = "brute: " + std::to_string(elements.size()) + " elements make " +
+                   std::to_string(static_cast<std::int64_t>(brute_tests)) + " pair tests, too many to record (limit " +
+                   std::to_string(kMaxTracedBruteTests) + "); step through a smaller scene or a grid algorithm";
+    return out;
+  }
+  detector.detect_traced(elements, options, out->pairs, out->log);
+  if (out->log.events().empty()) {
+    out->refusal = name + " records no operations (it keeps no book arrays): choose nbs, screen, sort, tree or brute to see them";
+    return out;
+  }
+  if (const Grid* g = detector.last_grid()) {
+    out->grid = *g;
+    out->detector_grid = true;
+  }
+  const auto& lines = detector.pseudocode(elements.dim);
+  out->pseudocode.assign(lines.begin(), lines.end());
+  out->elements = elements;
+  return out;
+}
+
+}  // namespace nbscope

@@ -1,0 +1,268 @@
+// The grid overlay: occupancy shading (at scale: a heat map over the bodies and row bars), lines that
+// fade to major lines, the title and axis numbers (their bands reserved so no id sits among them),
+// and the legend that says what the shading and the lists mean.
+//
+// Index: heat colours | draw_grid | draw_legend.
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <string>
+
+#include "render/overlay_parts.hpp"
+
+namespace nbscope::render::detail {
+
+namespace {
+// Most cells the occupancy shading counts; beyond it cells are too small to read anyway.
+constexpr std::int64_t kMaxShadedCells = 400'000;
+// Minor lines fade out between these cell widths (px); below the first only major lines remain.
+constexpr double kMinorLinesFrom = 4.0, kMinorLinesFull = 12.0;
+// Major lines at least this far apart (px).
+constexpr double kMajorSpacingPx = 48.0;
+// Row bars (overview): the fullest row's bar is this long (px).
+constexpr double kRowBarPx = 40.0;
+// Gap between the grid's left edge and the row numbers: the y-lists' heads sit in it.
+constexpr double kHeadGapPx = 16.0;
+
+// The heat map's colour for t in [0, 1] (1 element .. the fullest cell in view).
+Rgba heat(float t) {
+  constexpr int kStops = static_cast<int>(std::size(palette::kHeat));
+  const float x = std::clamp(t, 0.0f, 1.0f) * float(kStops - 1);
+  const int i = std::min(kStops - 2, static_cast<int>(x));
+  return mix(palette::kHeat[i], palette::kHeat[i + 1], x - float(i));
+}
+Rgba shade(std::int32_t count) {
+  const float t = std::min(1.0f, float(count - 1) / float(palette::kCellShadeSaturation - 1));
+  return mix(palette::kCellShadeLow, palette::kCellShadeHigh, t);
+}
+// Cells between major lines: 5, 10, 20, 50, 100, ... so that they are kMajorSpacingPx apart.
+std::int64_t major_step(double cell_px) {
+  for (std::int64_t p = 1; p < (std::int64_t{1} << 40); p *= 10)
+    for (const std::int64_t f : {1, 2, 5})
+      if (f * p >= 5 && double(f * p) * cell_px >= kMajorSpacingPx) return f * p;
+  return std::int64_t{1} << 40;
+}
+}  // namespace
+
+GridCounts count_cells(const OverlayScene& s, const ViewFrame& v) {
+  GridCounts out;
+  if (s.grid == nullptr || s.elements == nullptr) return out;
+  const Grid& g = *s.grid;
+  const double d = g.cell_size;
+  const double x0 = g.origin[0], y0 = g.origin[1];
+  out.lo_x = static_cast<std::int64_t>(std::clamp(std::floor((v.view.min.x() - x0) / d), 0.0, double(g.n[0])));
+  const auto hi_x = static_cast<std::int64_t>(std::clamp(std::ceil((v.view.max.x() - x0) / d), 0.0, double(g.n[0])));
+  out.lo_y = static_cast<std::int64_t>(std::clamp(std::floor((v.view.min.y() - y0) / d), 0.0, double(g.n[1])));
+  const auto hi_y = static_cast<std::int64_t>(std::clamp(std::ceil((v.view.max.y() - y0) / d), 0.0, double(g.n[1])));
+  out.wx = hi_x - out.lo_x;
+  out.wy = hi_y - out.lo_y;
+  out.stats.heat_map = d * v.ppm < kHeatMapBelowPx;
+  if (out.wx <= 0 || out.wy <= 0 || out.wx * out.wy > kMaxShadedCells) return out;
+  out.cells.assign(static_cast<std::size_t>(out.wx * out.wy), 0);
+  out.rows.assign(static_cast<std::size_t>(out.wy), 0);
+  const Elements& e = *s.elements;
+  for (ElementId k = 0; k < static_cast<ElementId>(e.size()); ++k) {
+    const std::int64_t cx = g.cell(e.x[k], 0) - out.lo_x, cy = g.cell(e.y[k], 1) - out.lo_y;
+    if (cy < 0 || cy >= out.wy) continue;
+    ++out.rows[static_cast<std::size_t>(cy)];
+    if (cx >= 0 && cx < out.wx) ++out.cells[static_cast<std::size_t>(cy * out.wx + cx)];
+  }
+  out.stats.max_cell = *std::max_element(out.cells.begin(), out.cells.end());
+  out.stats.max_row = *std::max_element(out.rows.begin(), out.rows.end());
+  return out;
+}
+
+GridStats draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts& counts, LabelSpace& labels, DrawSink& sink) {
+  GridStats stats = counts.stats;
+  const Grid& g = *s.grid;
+  const WorldRect& view = v.view;
+  const WorldRect& free = v.free;
+  const double ppm = v.ppm;
+  const double d = g.cell_size;
+  const double cell_px = d * ppm;
+  const double x0 = g.origin[0], y0 = g.origin[1];
+  const double x1 = x0 + d * double(g.n[0]), y1 = y0 + d * double(g.n[1]);
+  // The window of cells in view.
+  const auto lo_x = static_cast<std::int64_t>(std::clamp(std::floor((view.min.x() - x0) / d), 0.0, double(g.n[0])));
+  const auto hi_x = static_cast<std::int64_t>(std::clamp(std::ceil((view.max.x() - x0) / d), 0.0, double(g.n[0])));
+  const auto lo_y = static_cast<std::int64_t>(std::clamp(std::floor((view.min.y() - y0) / d), 0.0, double(g.n[1])));
+  const auto hi_y = static_cast<std::int64_t>(std::clamp(std::ceil((view.max.y() - y0) / d), 0.0, double(g.n[1])));
+  const std::int64_t wx = hi_x - lo_x, wy = hi_y - lo_y;
+  stats.heat_map = cell_px < kHeatMapBelowPx;
+
+  // Occupancy: elements per cell of the window (a cell's x-list or cell list has that length), and
+  // per row (its y-list's length), shaded; at scale a heat map over the bodies instead.
+  if (!counts.cells.empty() && counts.lo_x == lo_x && counts.lo_y == lo_y && counts.wx == wx && counts.wy == wy) {
+    const std::vector<std::int32_t>& count = counts.cells;
+    const std::vector<std::int32_t>& row = counts.rows;
+    for (std::int64_t cy = 0; cy < wy; ++cy)
+      for (std::int64_t cx = 0; cx < wx; ++cx) {
+        const std::int32_t c = count[static_cast<std::size_t>(cy * wx + cx)];
+        if (c == 0) continue;
+        const double ax = x0 + d * double(lo_x + cx), ay = y0 + d * double(lo_y + cy);
+        if (stats.heat_map)
+          sink.rect(Layer::Overlay, v2(ax, ay), v2(ax + d, ay + d),
+                    heat(stats.max_cell > 1 ? float(c - 1) / float(stats.max_cell - 1) : 0.0f));
+        else
+          sink.rect(Layer::Cells, v2(ax, ay), v2(ax + d, ay + d), shade(c));
+      }
+    if (stats.heat_map && stats.max_row > 0) {
+      // Row bars right of the grid: elements per row, the fullest row kRowBarPx long.
+      for (std::int64_t cy = 0; cy < wy; ++cy) {
+        const std::int32_t c = row[static_cast<std::size_t>(cy)];
+        if (c == 0) continue;
+        const double ay = y0 + d * double(lo_y + cy);
+        const double len = kRowBarPx * double(c) / double(stats.max_row) / ppm;
+        sink.rect(Layer::Overlay, v2(x1 + 3.0 / ppm, ay), v2(x1 + 3.0 / ppm + len, ay + d), palette::kRowBar);
+      }
+    }
+  }
+  // Lines: minor lines fade out as cells shrink; major lines take over.
+  const double minor = std::clamp((cell_px - kMinorLinesFrom) / (kMinorLinesFull - kMinorLinesFrom), 0.0, 1.0);
+  const std::int64_t step = minor >= 1.0 ? 1 : major_step(cell_px);
+  const auto lines = [&](std::int64_t every, Rgba colour) {
+    for (std::int64_t ix = std::max<std::int64_t>(lo_x, 1); ix <= std::min(hi_x, g.n[0] - 1); ++ix) {
+      if (ix % every != 0 || (every == 1 && step > 1 && ix % step == 0)) continue;
+      const double x = x0 + d * double(ix);
+      sink.line(Layer::Cells, v2(x, std::max(y0, view.min.y())), v2(x, std::min(y1, view.max.y())), colour);
+    }
+    for (std::int64_t iy = std::max<std::int64_t>(lo_y, 1); iy <= std::min(hi_y, g.n[1] - 1); ++iy) {
+      if (iy % every != 0 || (every == 1 && step > 1 && iy % step == 0)) continue;
+      const double y = y0 + d * double(iy);
+      sink.line(Layer::Cells, v2(std::max(x0, view.min.x()), y), v2(std::min(x1, view.max.x()), y), colour);
+    }
+  };
+  if (minor > 0) lines(1, palette::kGridLine.with_alpha(static_cast<std::uint8_t>(palette::kGridLine.a * minor)));
+  if (step > 1) lines(step, palette::kGridMajor);
+  const Vec2 c00 = v2(x0, y0), c10 = v2(x1, y0), c11 = v2(x1, y1), c01 = v2(x0, y1);
+  sink.line(Layer::Cells, c00, c10, palette::kGridBorder);
+  sink.line(Layer::Cells, c10, c11, palette::kGridBorder);
+  sink.line(Layer::Cells, c11, c01, palette::kGridBorder);
+  sink.line(Layer::Cells, c01, c00, palette::kGridBorder);
+  if (!(free.max.x() > free.min.x() && free.max.y() > free.min.y())) return stats;
+  // A label wholly inside the free view and clear of those placed before it.
+  const auto put = [&](Vec2 at, const char* text) {
+    return label_inside(free, at, label_width(std::strlen(text)), kLinePx, ppm) && labels.text(at, text, palette::kTextDim, sink);
+  };
+  // The dimensions above the top-left corner, kept inside the free part of the view (placed first:
+  // nothing covers them), on a backdrop so that bodies above the grid never hide them.
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%lld x %lld cells, d = %.3g%s", static_cast<long long>(g.n[0]),
+                static_cast<long long>(g.n[1]), d, step > 1 ? (", lines every " + std::to_string(step)).c_str() : "");
+  const double title_w = label_width(std::strlen(buf));
+  const double title_x = std::clamp(x0, free.min.x() + 4.0 / ppm, std::max(free.min.x(), free.max.x() - title_w / ppm));
+  const double title_y = std::clamp(y1 + 12.0 / ppm, free.min.y() + 10.0 / ppm, free.max.y() - 10.0 / ppm);
+  const Vec2 title_at = v2(title_x + 0.5 * title_w / ppm, title_y);
+  if (put(title_at, buf)) {
+    const Vec2 half = v2(0.5 * title_w / ppm + 2.0 / ppm, 0.5 * kLinePx / ppm + 1.0 / ppm);
+    sink.rect(Layer::Top, title_at - half, title_at + half, palette::kLabelBack);
+  }
+  // Column and row numbers when cells are large enough: below and left of the grid (rows leave a
+  // gap for the y-lists' heads), or along the bottom and left edges of the free view when those
+  // edges are out of it (zoomed in). Their bands are then reserved: no id goes among them.
+  if (cell_px < 18.0) return stats;
+  const bool book = s.book_numbering;
+  const double col_y = std::clamp(y0 - 9.0 / ppm, free.min.y() + 8.0 / ppm, free.max.y() - 8.0 / ppm);
+  for (std::int64_t ix = lo_x; ix < hi_x; ++ix) {
+    const double cx = x0 + d * (double(ix) + 0.5);
+    if (cx < free.min.x() || cx > free.max.x()) continue;
+    std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(book ? ix + 1 : ix));
+    put(v2(cx, col_y), buf);
+  }
+  const double band = 0.5 * kLinePx / ppm + 1.0 / ppm;
+  labels.reserve_world(v2(std::max(x0, free.min.x()), col_y - band), v2(std::min(x1, free.max.x()), col_y + band));
+  double row_lo = x0;
+  for (std::int64_t iy = lo_y; iy < hi_y; ++iy) {
+    const double cy = y0 + d * (double(iy) + 0.5);
+    // Rows reading as one number with the column numbers beside them are left out.
+    if (cy < col_y + 15.0 / ppm || cy > free.max.y()) continue;
+    std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(book ? iy + 1 : iy));
+    const double half_w = 0.5 * label_width(std::strlen(buf)) / ppm;
+    const double row_x =
+        std::clamp(x0 - kHeadGapPx / ppm - half_w, free.min.x() + 3.0 / ppm + half_w, free.max.x() - half_w);
+    put(v2(row_x, cy), buf);
+    row_lo = std::min(row_lo, row_x - half_w);
+  }
+  labels.reserve_world(v2(row_lo, std::max(y0, col_y + band)), v2(x0, std::min(y1, free.max.y())));
+  return stats;
+}
+
+void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& stats, const ViewFrame& v,
+                 LabelSpace& labels, DrawSink& sink) {
+  // The lines, each a text and an optional swatch row; laid out bottom-up from the free corner.
+  struct Line {
+    std::string text;
+    Rgba colour = palette::kTextDim;
+    int swatches = 0;  // a colour ramp of this many steps before the text
+    bool heat = false;
+    bool arrow = false;  // an arrow of `colour` before the text
+  };
+  std::vector<Line> lines;
+  const bool grid = f.grid && s.grid != nullptr && s.grid->dim == 2;
+  if (grid && stats.heat_map) {
+    lines.push_back({"elements per cell (= its list length): 1 .. " + std::to_string(std::max(1, stats.max_cell)),
+                     palette::kTextDim, 5, true});
+    lines.push_back({"bars right of the grid: elements per row (its y-list), longest " + std::to_string(stats.max_row),
+                     palette::kTextDim, 0, false});
+  } else if (grid) {
+    lines.push_back({"cell shade: elements in the cell, 1 .. " + std::to_string(palette::kCellShadeSaturation) + "+",
+                     palette::kTextDim, palette::kCellShadeSaturation, false});
+  }
+  if (f.lists && s.lists != nullptr) {
+    std::set<std::string> kinds;
+    bool below = false;
+    for (const TracedList& l : *s.lists) {
+      if (l.secondary) below = true;
+      else kinds.insert(l.kind);
+    }
+    for (const std::string& k : kinds) {
+      const bool rows = k == "y-list" || k == "z-list";
+      lines.push_back({k + (rows ? " (arcs: right above, left below)" : ""), rows ? palette::kYList : palette::kXList, 0, false, true});
+    }
+    if (below) lines.push_back({"x-list of the row below (B[1])", palette::kXListBelow, 0, false, true});
+  }
+  for (const std::string& c : s.lists_caption) lines.push_back({c, palette::kText});
+  if (lines.empty()) return;
+
+  constexpr double kPad = 6.0, kSwatchPx = 12.0, kArrowPx = 18.0;
+  double width_px = 0;
+  for (const Line& l : lines) {
+    const double lead = l.swatches > 0 ? kSwatchPx * l.swatches + 4.0 : l.arrow ? kArrowPx + 4.0 : 0.0;
+    width_px = std::max(width_px, lead + label_width(l.text.size()));
+  }
+  const double line_px = kLinePx + 2.0;  // lines never touch
+  const double height_px = line_px * double(lines.size()) + 2 * kPad;
+  width_px += 2 * kPad;
+  // The free view's lower right corner, in pixels of the viewport.
+  const double right = (v.free.max.x() - v.view.min.x()) * v.ppm - 6.0;
+  // Above the column numbers when they run along the free view's bottom edge (zoomed in).
+  const bool columns_at_edge = grid && s.grid->cell_size * v.ppm >= 18.0 && s.grid->origin[1] - 9.0 / v.ppm <= v.free.min.y() + 8.0 / v.ppm;
+  const double bottom = (v.view.max.y() - v.free.min.y()) * v.ppm - 6.0 - (columns_at_edge ? kLinePx + 4.0 : 0.0);
+  const double left = right - width_px, top = bottom - height_px;
+  if (left < (v.free.min.x() - v.view.min.x()) * v.ppm || top < (v.view.max.y() - v.free.max.y()) * v.ppm) return;
+  const Vec2 lo = v.at_px(left, bottom), hi = v.at_px(right, top);
+  sink.rect(Layer::Top, lo, hi, palette::kLabelBack);
+  labels.reserve_world(lo, hi);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const Line& l = lines[i];
+    const double cy = top + kPad + line_px * (double(i) + 0.5);
+    double x = left + kPad;
+    for (int k = 0; k < l.swatches; ++k) {
+      const Rgba c = l.heat ? heat(float(k) / float(l.swatches - 1)) : shade(k + 1);
+      sink.rect(Layer::Top, v.at_px(x + 1, cy + 5), v.at_px(x + kSwatchPx - 1, cy - 5), c.with_alpha(255));
+      x += kSwatchPx;
+    }
+    if (l.swatches > 0) x += 4.0;
+    if (l.arrow) {
+      // Drawn as lines (arrows are the lists' own).
+      sink.line(Layer::Top, v.at_px(x, cy), v.at_px(x + kArrowPx, cy), l.colour, 2.0f);
+      sink.line(Layer::Top, v.at_px(x + kArrowPx - 5, cy - 4), v.at_px(x + kArrowPx, cy), l.colour, 2.0f);
+      sink.line(Layer::Top, v.at_px(x + kArrowPx - 5, cy + 4), v.at_px(x + kArrowPx, cy), l.colour, 2.0f);
+      x += kArrowPx + 4.0;
+    }
+    // The reserved box holds the text: it is drawn directly, not placed.
+    sink.text(v.at_px(x + 0.5 * label_width(l.text.size()), cy), l.text, l.colour);
+  }
+}
+
+}  // namespace nbscope::render::detail

@@ -1,0 +1,63 @@
+// nbscope render (private to the overlay files): small geometry helpers and the parts of
+// draw_scene that live in files of their own — the grid with its heat map and legend
+// (overlay_grid.cpp) and the singly connected lists (overlay_lists.cpp).
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "render/label_space.hpp"
+#include "render/overlays.hpp"
+
+namespace nbscope::render::detail {
+
+inline constexpr Rgba kNone{0, 0, 0, 0};
+
+inline Vec2 v2(double x, double y) { return {static_cast<float>(x), static_cast<float>(y)}; }
+inline Vec2 centre_of(const Elements& e, ElementId k) { return v2(e.x[k], e.y[k]); }
+
+// True when a circle (world) touches the view rectangle.
+inline bool in_view(const WorldRect& v, double x, double y, double r) {
+  return x + r >= v.min.x() && x - r <= v.max.x() && y + r >= v.min.y() && y - r <= v.max.y();
+}
+inline bool segment_in_view(const WorldRect& v, Vec2 a, Vec2 b) {
+  return std::max(a.x(), b.x()) >= v.min.x() && std::min(a.x(), b.x()) <= v.max.x() &&
+         std::max(a.y(), b.y()) >= v.min.y() && std::min(a.y(), b.y()) <= v.max.y();
+}
+
+// The camera's view, the part of it no panel covers, and the scale; world points from pixels.
+struct ViewFrame {
+  WorldRect view, free;
+  double ppm = 1;
+  // The world point at pixel (px, py) of the viewport (origin top left, y down).
+  [[nodiscard]] Vec2 at_px(double px, double py) const { return v2(view.min.x() + px / ppm, view.max.y() - py / ppm); }
+};
+
+// What the grid found that the legend reports: the fullest cell and row in view.
+struct GridStats {
+  bool heat_map = false;    // cells below kHeatMapBelowPx: the overview was drawn
+  std::int32_t max_cell = 0;
+  std::int32_t max_row = 0;
+};
+
+// Elements per cell of the cells in view (row-major from (lo_x, lo_y), wx x wy; empty when too
+// many to count) and per row of them, with their maxima.
+struct GridCounts {
+  GridStats stats;
+  std::int64_t lo_x = 0, lo_y = 0, wx = 0, wy = 0;
+  std::vector<std::int32_t> cells, rows;
+};
+GridCounts count_cells(const OverlayScene& s, const ViewFrame& v);
+
+// The grid: occupancy shading (a heat map over the bodies when cells are a few pixels wide), lines
+// (fading to major lines), the title and the axis numbers, whose bands are reserved in `labels`.
+GridStats draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts& counts, LabelSpace& labels, DrawSink& sink);
+// The lists the filter keeps, y-lists as arcs within their row's band, the stepper's list and pair
+// highlighted.
+void draw_lists(const OverlayScene& s, const OverlayFlags& f, const ViewFrame& v, DrawSink& sink);
+// The legend in the free view's lower right corner: the cell shading or heat map, the list kinds
+// drawn and the lists caption; its box is reserved in `labels`.
+void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& stats, const ViewFrame& v,
+                 LabelSpace& labels, DrawSink& sink);
+
+}  // namespace nbscope::render::detail
