@@ -307,3 +307,57 @@ TEST(Overlays, ListsMidTraceAreTheStepperArraysAtThatOperation) {
 
 }  // namespace
 }  // namespace nbscope::render
+
+namespace nbscope::render {
+namespace {
+
+// A y-list too long for arcs is a rail along its row: one arrow per link, left to right in list
+// order, at one height inside the row's band, and a leader from each slot to its element.
+TEST(Overlays, LongYListsAreARailInListOrderWithLeadersToTheirElements) {
+  const int n = 20;
+  Eigen::ArrayXd x(n), y = Eigen::ArrayXd::Constant(n, 0.5);
+  for (int k = 0; k < n; ++k) x[k] = 0.5 + double((k * 7) % n);  // list order unrelated to x
+  const Elements e = make_elements_2d(x, y, Eigen::ArrayXd::Constant(n, 0.4));
+  PairList pairs;
+  Grid grid;
+  const TraceLog log = trace_of("nbs", e, pairs, grid);
+  const std::vector<TracedList> lists = traced_lists(log, n);
+  Camera camera;
+  camera.set_viewport(1600, 300);
+  camera.fit({{-1, -1}, {21, 2}});
+  OverlayScene s;
+  s.elements = &e;
+  s.grid = &grid;
+  s.lists = &lists;
+  OverlayFlags f;
+  f.lists = true;
+  f.grid = false;
+  Recorder rec;
+  draw_scene(s, f, camera, rec);
+  std::vector<Recorder::Arrow> rail;
+  for (const auto& a : rec.arrows)
+    if (a.colour == palette::kYList) rail.push_back(a);
+  ASSERT_EQ(rail.size(), static_cast<std::size_t>(n)) << "the head's arrow and one per element";
+  const float lo = float(grid.origin[1]), hi = lo + float(grid.cell_size);
+  for (std::size_t i = 0; i < rail.size(); ++i) {
+    EXPECT_FLOAT_EQ(rail[i].from.y(), rail.front().from.y());
+    EXPECT_TRUE(rail[i].from.y() > lo && rail[i].from.y() < hi);
+    EXPECT_LT(rail[i].from.x(), rail[i].to.x()) << "the rail runs left to right";
+    if (i > 0) {
+      EXPECT_GT(rail[i].from.x(), rail[i - 1].from.x());
+    }
+  }
+  // Each element of the list has a leader from its slot (the arrow's tip) to its centre.
+  const auto y_list = std::find_if(lists.begin(), lists.end(), [](const TracedList& l) { return l.kind == "y-list"; });
+  ASSERT_NE(y_list, lists.end());
+  for (std::size_t i = 0; i < y_list->chain.size(); ++i) {
+    const Vec2 c(float(e.x[y_list->chain[i]]), float(e.y[y_list->chain[i]]));
+    const bool led = std::any_of(rec.segments.begin(), rec.segments.end(), [&](const Recorder::Arrow& l) {
+      return (l.to - c).norm() < 1e-4f && std::abs(l.from.x() - rail[i].to.x()) < 0.2f;
+    });
+    EXPECT_TRUE(led) << "element " << y_list->chain[i] << " (list position " << i << ") has no leader from its slot";
+  }
+}
+
+}  // namespace
+}  // namespace nbscope::render

@@ -366,7 +366,20 @@ void GlView::describe_lists(const FrameLoop& loop, const std::shared_ptr<const F
                             : trace && !trace->log.events().empty() && !stepping ? "it keeps no heads or next arrays, only its tests"
                                                                                  : "";
     caption.push_back("lists: " + loop.algorithm() + (stepping ? " has built none yet" : " builds none") + (why.empty() ? "" : ":"));
-    if (!why.empty()) caption.push_back("  " + why);
+    // The reason, wrapped to the legend's width.
+    std::string line;
+    std::size_t start = 0;
+    while (start < why.size()) {
+      const std::size_t space = std::min(why.find(' ', start), why.size());
+      const std::string word = why.substr(start, space - start);
+      if (!line.empty() && line.size() + 1 + word.size() > 52) {
+        caption.push_back("  " + line);
+        line.clear();
+      }
+      line += (line.empty() ? "" : " ") + word;
+      start = space + 1;
+    }
+    if (!line.empty()) caption.push_back("  " + line);
     return;
   }
   if (stepping) caption.push_back("lists at operation " + std::to_string(st.position()) + " of " + std::to_string(st.size()) + " (Stepper)");

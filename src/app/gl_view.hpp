@@ -80,6 +80,9 @@ class GlView {
   [[nodiscard]] ui::UiState& state() { return state_; }
   [[nodiscard]] render::Camera& camera() { return camera_; }
   [[nodiscard]] ui::UiHost& host() { return host_; }
+  // The stepper panels' session (its trace is the frame loop's) and the lists the overlay drew last.
+  [[nodiscard]] ui::StepperSession& stepper() { return *stepper_; }
+  [[nodiscard]] const std::vector<render::TracedList>& lists() const { return lists_; }
   // Where the last frame's time went (overlays, GL submit, panels, traced detection), in ms.
   struct Cost {
     double trace_ms = 0, overlay_ms = 0, render_ms = 0, ui_ms = 0;

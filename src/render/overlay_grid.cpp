@@ -190,45 +190,48 @@ GridStats draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts&
 void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& stats, const ViewFrame& v,
                  LabelSpace& labels, DrawSink& sink) {
   // The lines, each a text and an optional swatch row; laid out bottom-up from the free corner.
-  struct Line {
+  // One line: a colour ramp, then texts each behind an optional arrow of its colour.
+  struct Key {
     std::string text;
     Rgba colour = palette::kTextDim;
+    bool arrow = false;
+  };
+  struct Line {
+    std::vector<Key> keys;
     int swatches = 0;  // a colour ramp of this many steps before the text
     bool heat = false;
-    bool arrow = false;  // an arrow of `colour` before the text
   };
   std::vector<Line> lines;
   const bool grid = f.grid && s.grid != nullptr && s.grid->dim == 2;
   if (grid && stats.heat_map) {
-    lines.push_back({"elements per cell (= its list length): 1 .. " + std::to_string(std::max(1, stats.max_cell)),
-                     palette::kTextDim, 5, true});
-    lines.push_back({"bars right of the grid: elements per row (its y-list), longest " + std::to_string(stats.max_row),
-                     palette::kTextDim, 0, false});
+    lines.push_back({{{"elements per cell 1 .. " + std::to_string(std::max(1, stats.max_cell)) + " (its list's length)"}}, 5, true});
+    lines.push_back({{{"bars: elements per row (its y-list), up to " + std::to_string(stats.max_row)}}});
   } else if (grid) {
-    lines.push_back({"cell shade: elements in the cell, 1 .. " + std::to_string(palette::kCellShadeSaturation) + "+",
-                     palette::kTextDim, palette::kCellShadeSaturation, false});
+    lines.push_back({{{"elements per cell 1 .. " + std::to_string(palette::kCellShadeSaturation) + "+"}}, palette::kCellShadeSaturation});
   }
-  if (f.lists && s.lists != nullptr) {
+  if (f.lists && s.lists != nullptr && !s.lists->empty()) {
     std::set<std::string> kinds;
     bool below = false;
     for (const TracedList& l : *s.lists) {
       if (l.secondary) below = true;
       else kinds.insert(l.kind);
     }
-    for (const std::string& k : kinds) {
-      const bool rows = k == "y-list" || k == "z-list";
-      lines.push_back({k + (rows ? " (arcs: right above, left below)" : ""), rows ? palette::kYList : palette::kXList, 0, false, true});
-    }
-    if (below) lines.push_back({"x-list of the row below (B[1])", palette::kXListBelow, 0, false, true});
+    Line keys;
+    for (const std::string& k : kinds)
+      keys.keys.push_back({k, k == "y-list" || k == "z-list" ? palette::kYList : palette::kXList, true});
+    if (below) keys.keys.push_back({"row below (B[1])", palette::kXListBelow, true});
+    lines.push_back(std::move(keys));
   }
-  for (const std::string& c : s.lists_caption) lines.push_back({c, palette::kText});
+  for (const std::string& c : s.lists_caption) lines.push_back({{{c, palette::kText}}});
   if (lines.empty()) return;
 
-  constexpr double kPad = 6.0, kSwatchPx = 12.0, kArrowPx = 18.0;
+  constexpr double kPad = 6.0, kSwatchPx = 12.0, kArrowPx = 18.0, kGapPx = 10.0;
+  const auto key_px = [&](const Key& k) { return (k.arrow ? kArrowPx + 4.0 : 0.0) + label_width(k.text.size()); };
   double width_px = 0;
   for (const Line& l : lines) {
-    const double lead = l.swatches > 0 ? kSwatchPx * l.swatches + 4.0 : l.arrow ? kArrowPx + 4.0 : 0.0;
-    width_px = std::max(width_px, lead + label_width(l.text.size()));
+    double w = l.swatches > 0 ? kSwatchPx * l.swatches + 4.0 : 0.0;
+    for (const Key& k : l.keys) w += key_px(k) + (&k == &l.keys.front() ? 0.0 : kGapPx);
+    width_px = std::max(width_px, w);
   }
   const double line_px = kLinePx + 2.0;  // lines never touch
   const double height_px = line_px * double(lines.size()) + 2 * kPad;
@@ -253,15 +256,18 @@ void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& 
       x += kSwatchPx;
     }
     if (l.swatches > 0) x += 4.0;
-    if (l.arrow) {
-      // Drawn as lines (arrows are the lists' own).
-      sink.line(Layer::Top, v.at_px(x, cy), v.at_px(x + kArrowPx, cy), l.colour, 2.0f);
-      sink.line(Layer::Top, v.at_px(x + kArrowPx - 5, cy - 4), v.at_px(x + kArrowPx, cy), l.colour, 2.0f);
-      sink.line(Layer::Top, v.at_px(x + kArrowPx - 5, cy + 4), v.at_px(x + kArrowPx, cy), l.colour, 2.0f);
-      x += kArrowPx + 4.0;
+    for (const Key& k : l.keys) {
+      if (k.arrow) {
+        // Drawn as lines (arrows are the lists' own).
+        sink.line(Layer::Top, v.at_px(x, cy), v.at_px(x + kArrowPx, cy), k.colour, 2.0f);
+        sink.line(Layer::Top, v.at_px(x + kArrowPx - 5, cy - 4), v.at_px(x + kArrowPx, cy), k.colour, 2.0f);
+        sink.line(Layer::Top, v.at_px(x + kArrowPx - 5, cy + 4), v.at_px(x + kArrowPx, cy), k.colour, 2.0f);
+        x += kArrowPx + 4.0;
+      }
+      // The reserved box holds the text: it is drawn directly, not placed.
+      sink.text(v.at_px(x + 0.5 * label_width(k.text.size()), cy), k.text, k.colour);
+      x += label_width(k.text.size()) + kGapPx;
     }
-    // The reserved box holds the text: it is drawn directly, not placed.
-    sink.text(v.at_px(x + 0.5 * label_width(l.text.size()), cy), l.text, l.colour);
   }
 }
 

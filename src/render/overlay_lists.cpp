@@ -3,6 +3,7 @@
 // farther they reach), so each can be followed; cell lists are short arrows inside their cell. The
 // filter keeps all lists, the selected element's, or one row's; the stepper's list and pair stand out.
 #include <cmath>
+#include <cstdio>
 
 #include "render/overlay_parts.hpp"
 
@@ -44,6 +45,55 @@ Vec2 head_anchor(const TracedList& l, const Grid* grid, const Elements& e, const
   return v2(e.x[k] - off, e.y[k] + off);
 }
 
+// A y-list longer than this is drawn as a rail: its arcs would run together.
+constexpr std::size_t kMaxArcLinks = 12;
+
+// A long y-list as the book writes it, along its row's band: head -> slot -> slot -> ... -> end,
+// evenly spaced left to right in list order, each slot joined to its element by a thin leader
+// (bold for the selected element). The order reads off the rail; the leaders say where each is.
+void draw_rail(const OverlayScene& s, const TracedList& l, const ViewFrame& v, Rgba colour, float width, bool active,
+               LabelSpace& labels, DrawSink& sink) {
+  const Elements& e = *s.elements;
+  const Grid& g = *s.grid;
+  const double d = g.cell_size, ppm = v.ppm;
+  const double x0 = g.origin[0], x1 = g.origin[0] + d * double(g.n[0]);
+  const double y = g.origin[1] + d * (l.cell[1] + 0.14);
+  const Vec2 head = head_anchor(l, s.grid, e, v.free, ppm);
+  const Vec2 start = v2(head.x(), y);
+  sink.rect(Layer::Overlay, start - Vec2::Constant(float(3.0 / ppm)), start + Vec2::Constant(float(3.0 / ppm)), colour);
+  const double step = (x1 - x0) / double(l.chain.size());
+  Vec2 prev = start;
+  for (std::size_t i = 0; i < l.chain.size(); ++i) {
+    const ElementId k = l.chain[i];
+    const Vec2 slot = v2(x0 + step * (double(i) + 0.5), y);
+    const bool bold = k == s.selected;
+    const Vec2 gap = Vec2(float(std::min(3.0 / ppm, 0.3 * step)), 0.0f);
+    if (segment_in_view(v.view, prev, slot)) {
+      if (active) sink.line(Layer::Overlay, prev + gap, slot - gap, palette::kActiveList, 7.0f);
+      sink.arrow(Layer::Overlay, prev + gap, slot - gap, colour, width);
+    }
+    const Vec2 c = centre_of(e, k);
+    if (segment_in_view(v.view, slot, c))
+      sink.line(Layer::Overlay, slot, c, bold ? palette::kSelection : colour.with_alpha(static_cast<std::uint8_t>(colour.a / 3)),
+                bold ? 2.5f : 1.0f);
+    sink.circle(Layer::Overlay, slot, float(0.5 / ppm), colour, colour, 1.0f, bold ? 3.5f : 2.0f);
+    // The element's number under its slot when the slots are wide enough: the list reads as the
+    // book writes it (y_heads[iy] -> 69 -> 14 -> ... -> -1).
+    char id[16];
+    const int digits = std::snprintf(id, sizeof id, "%d", s.book_numbering ? k + 1 : k);
+    if (step * ppm >= label_width(static_cast<std::size_t>(digits)) + 2.0) {
+      const Vec2 at = slot - Vec2(0.0f, float((0.5 * kLinePx + 3.0) / ppm));
+      if (label_inside(v.free, at, label_width(static_cast<std::size_t>(digits)), kLinePx, ppm))
+        labels.text(at, id, bold ? palette::kSelection : colour, sink);
+    }
+    prev = slot;
+  }
+  // The end (-1): a bar after the last slot.
+  const Vec2 end = prev + Vec2(float(std::min(8.0 / ppm, 0.5 * step)), 0.0f);
+  sink.line(Layer::Overlay, prev, end, colour, width);
+  sink.line(Layer::Overlay, end - Vec2(0.0f, float(3.5 / ppm)), end + Vec2(0.0f, float(3.5 / ppm)), colour, width);
+}
+
 bool kept_by_filter(const OverlayScene& s, const TracedList& l) {
   switch (s.list_filter) {
     case ListFilter::All: return true;
@@ -56,7 +106,7 @@ bool kept_by_filter(const OverlayScene& s, const TracedList& l) {
 
 }  // namespace
 
-void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFrame& v, DrawSink& sink) {
+void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFrame& v, LabelSpace& labels, DrawSink& sink) {
   const Elements& e = *s.elements;
   const double ppm = v.ppm;
   const auto n = static_cast<ElementId>(e.size());
@@ -81,12 +131,16 @@ void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFram
     const bool arcs = s.grid != nullptr && row_list(l);
     const double d = s.grid != nullptr ? s.grid->cell_size : 0.0;
     const double band_lo = arcs ? s.grid->origin[1] + d * l.cell[1] : 0.0, band_hi = band_lo + d;
-    const double grid_width = s.grid != nullptr ? d * double(s.grid->n[0]) : 1.0;
+    // The list's widest step: arc heights spread over the band by reach relative to it.
+    double widest = 1e-9;
+    for (std::size_t m = 1; m < l.chain.size(); ++m)
+      widest = std::max(widest, std::abs(e.x[l.chain[m]] - e.x[l.chain[m - 1]]));
     // Lists of different kinds between the same two elements run side by side, a few pixels apart.
     const float side = static_cast<float>(-2.5 / ppm);
+    bool bold_link = false;  // the link being drawn touches the selected element
     const auto segment = [&](Vec2 a, Vec2 b, bool head) {
       if (!segment_in_view(v.view, a, b)) return;
-      if (is_active) sink.line(Layer::Overlay, a, b, palette::kActiveList, 7.0f);
+      if (is_active || bold_link) sink.line(Layer::Overlay, a, b, palette::kActiveList, bold_link ? 5.0f : 7.0f);
       if (head) sink.arrow(Layer::Overlay, a, b, colour, width);
       else sink.line(Layer::Overlay, a, b, colour, width);
     };
@@ -107,7 +161,7 @@ void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFram
       const double mid = 0.5 * (band_lo + band_hi);
       const double dx = std::abs(double(ab.x()));
       const double up = ab.x() >= 0 ? 1.0 : -1.0;
-      const double h = 0.45 * d * std::min(1.0, 0.06 + dx / grid_width);
+      const double h = 0.45 * d * std::clamp(std::sqrt(dx / widest), 0.08, 1.0);
       const Vec2 from = v2(a.x(), mid), to = v2(b.x(), mid);
       const auto at = [&](double t) { return Vec2(from + (to - from) * float(t) + Vec2(0.0f, float(up * h * 4.0 * t * (1.0 - t)))); };
       constexpr int kSteps = 14;
@@ -120,14 +174,21 @@ void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFram
       segment(prev, to, true);
       if (rb > 0) segment(to, b, false);  // the stem of the element reached
     };
+    if (arcs && l.chain.size() > kMaxArcLinks) {
+      draw_rail(s, l, v, colour, width, is_active, labels, sink);
+      continue;
+    }
     // The head: a small square, then an arrow to the first element.
     Vec2 prev = head_anchor(l, s.grid, e, v.free, ppm);
     float prev_r = 0;
     sink.rect(Layer::Overlay, prev - Vec2::Constant(float(3.0 / ppm)), prev + Vec2::Constant(float(3.0 / ppm)), colour);
+    ElementId prev_k = -1;
     for (const ElementId k : l.chain) {
       const Vec2 c = centre_of(e, k);
       const auto r = static_cast<float>(e.r[k]);
+      bold_link = s.selected >= 0 && (k == s.selected || prev_k == s.selected);
       link(prev, prev_r, c, r);
+      prev_k = k;
       prev = c;
       prev_r = r;
     }

@@ -52,9 +52,10 @@ GridCounts count_cells(const OverlayScene& s, const ViewFrame& v);
 // The grid: occupancy shading (a heat map over the bodies when cells are a few pixels wide), lines
 // (fading to major lines), the title and the axis numbers, whose bands are reserved in `labels`.
 GridStats draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts& counts, LabelSpace& labels, DrawSink& sink);
-// The lists the filter keeps, y-lists as arcs within their row's band, the stepper's list and pair
+// The lists the filter keeps — y-lists as arcs within their row's band, long ones as a rail of slots
+// in list order along it (numbered when there is room, in `labels`) — the stepper's list and pair
 // highlighted.
-void draw_lists(const OverlayScene& s, const OverlayFlags& f, const ViewFrame& v, DrawSink& sink);
+void draw_lists(const OverlayScene& s, const OverlayFlags& f, const ViewFrame& v, LabelSpace& labels, DrawSink& sink);
 // The legend in the free view's lower right corner: the cell shading or heat map, the list kinds
 // drawn and the lists caption; its box is reserved in `labels`.
 void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& stats, const ViewFrame& v,

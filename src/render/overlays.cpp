@@ -290,7 +290,7 @@ void draw_scene(const OverlayScene& s, const OverlayFlags& f, const Camera& came
     }
   }
   if (confirmed) draw_pair_list(e, s.checks->confirmed, view, ppm, palette::kConfirmedPair, 1.5f, Layer::Overlay, sink);
-  if (f.lists && s.lists != nullptr) draw_lists(s, f, v, sink);
+  if (f.lists && s.lists != nullptr) draw_lists(s, f, v, labels, sink);
   draw_selection(s, view, ppm, sink);
   if (f.checks && s.checks != nullptr) draw_violations(e, s.checks->violations, sink);
   if (s.focus_pair) draw_focus_pair(s, sink);
