@@ -391,7 +391,7 @@ void GlView::describe_lists(const FrameLoop& loop, const std::shared_ptr<const F
       break;
     case render::ListFilter::Row:
       caption.push_back(scene.focus_row ? "lists of row " + num(*scene.focus_row) + " (filter 'row': hover a row)"
-                                        : "lists filter 'row': hover a row or click an element");
+                                        : "all lists: hover a row or click an element for one row's");
       break;
   }
 }

@@ -99,7 +99,7 @@ bool kept_by_filter(const OverlayScene& s, const TracedList& l) {
     case ListFilter::All: return true;
     case ListFilter::Selected:
       return s.selected >= 0 && std::find(l.chain.begin(), l.chain.end(), s.selected) != l.chain.end();
-    case ListFilter::Row: return s.focus_row && row_of(l, s.grid, *s.elements) == *s.focus_row;
+    case ListFilter::Row: return !s.focus_row || row_of(l, s.grid, *s.elements) == *s.focus_row;  // no row yet: all
   }
   return true;
 }

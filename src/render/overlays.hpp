@@ -74,7 +74,7 @@ std::span<const OverlayInfo> overlay_infos();
 enum class ListFilter : std::uint8_t {
   All,       // every list
   Selected,  // the lists that hold the selected element
-  Row,       // the lists of the hovered row, else the stepper's row, else the selected element's row
+  Row,       // the lists of the hovered row, else the stepper's row, else the selected element's row (none: all)
 };
 // Settings and flag names of the filters, in enum order.
 inline constexpr const char* kListFilterNames[] = {"all", "selected", "row"};
