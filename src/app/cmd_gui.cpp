@@ -20,6 +20,7 @@
 #include "check/faults.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/plural.hpp"
 #include "render/gl_window.hpp"
 #include "ui/settings.hpp"
 
@@ -59,7 +60,7 @@ GuiOptions parse_gui_options(Args& args) {
   if (o.view.screenshot && !o.frames) throw Error("--screenshot: needs --frames N (how many frames to run first)");
   if (o.back > 0 && !o.frames) throw Error("--back: needs --frames N (the frames to go back through)");
   if (o.frames && o.back > *o.frames)
-    throw Error("--back: " + std::to_string(o.back) + " is more than the " + std::to_string(*o.frames) + " frames run");
+    throw Error("--back: " + std::to_string(o.back) + " is more than the " + plural(*o.frames, "frame") + " run");
   if (o.view.screenshot) check_output_path(*o.view.screenshot);
   if (o.view.screenshot && o.scene) check_outputs_distinct({{"--scene", *o.scene}}, {{"--screenshot", *o.view.screenshot}});
   return o;
@@ -86,7 +87,7 @@ int run_without_display(GuiOptions o, FrameLoop& loop) {
     o.view.screenshot = dir + "/nbscope-" + (loop.scene().name.empty() ? "scene" : loop.scene().name) + ".png";
   }
   const std::int64_t frames = o.frames.value_or(120);
-  std::fprintf(stderr, "nbscope: no display: rendering %lld frames headless instead\n", static_cast<long long>(frames));
+  std::fprintf(stderr, "nbscope: no display: rendering %s headless instead\n", plural(frames, "frame").c_str());
   auto view = make_headless_view(o.view, loop);
   bool failed = loop.report().checked && !loop.report().ok();
   for (std::int64_t i = 0; i < frames; ++i) {
@@ -330,9 +331,9 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       if (o.back > 0) {
         const double k = static_cast<double>(o.back);
         std::fprintf(stderr,
-                     "nbscope: window: went back %lld frames to frame %lld: %.2f ms a frame (the kept frame rebuilt, "
+                     "nbscope: window: went back %s to frame %lld: %.2f ms a frame (the kept frame rebuilt, "
                      "detected and checked again %.2f, render+panels %.2f)\n",
-                     static_cast<long long>(o.back), static_cast<long long>(loop.frame()), (sum_back_show + sum_back_view) / k,
+                     plural(o.back, "frame").c_str(), static_cast<long long>(loop.frame()), (sum_back_show + sum_back_view) / k,
                      sum_back_show / k, sum_back_view / k);
       }
       break;
