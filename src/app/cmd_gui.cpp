@@ -319,14 +319,19 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
     if (scripted && rendered >= scripted_frames + GlView::kSettleFrames - 1) {
       view.check_step();
       if (o.view.screenshot) write_png(*o.view.screenshot, view.screenshot());
-      // What a scripted run measured: the window's frame rate and where the time went.
+      // What a scripted run measured: the window's frame rate and where the time went. --frames N
+      // is N steps, as in headless; the picture of the start and the redraws while the layout
+      // settles are counted apart (the frame rate is over every frame drawn). A recording's frame
+      // 0 is one of its frames, as in headless replay.
       const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
       const double n = static_cast<double>(rendered + 1);
+      const std::int64_t counted = *o.frames + (loop.replaying() ? 1 : 0);
       std::fprintf(stderr,
-                   "nbscope: window: %lld frames (+%d redrawn while the layout settles) in %.2f s = %.1f FPS; ms a "
-                   "frame: physics %.2f, detection %.2f, check %.2f, render+panels %.2f%s%s\n",
-                   static_cast<long long>(scripted_frames + 1), GlView::kSettleFrames - 1, seconds, n / seconds,
-                   sum_physics / n, sum_detect / n, sum_check / n, sum_view / n, o.view.screenshot ? "; screenshot " : "",
+                   "nbscope: window: %s (+%lld drawn besides: the start and while the layout settles) in %.2f s = "
+                   "%.1f FPS; ms a frame: physics %.2f, detection %.2f, check %.2f, render+panels %.2f%s%s\n",
+                   plural(counted, "frame").c_str(), static_cast<long long>(rendered + 1 - counted - o.back), seconds,
+                   n / seconds, sum_physics / n, sum_detect / n, sum_check / n, sum_view / n,
+                   o.view.screenshot ? "; screenshot " : "",
                    o.view.screenshot ? o.view.screenshot->c_str() : "");
       if (o.back > 0) {
         const double k = static_cast<double>(o.back);
