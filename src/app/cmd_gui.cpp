@@ -247,8 +247,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   else if (settings != nullptr) view.state().history_budget_mb = settings->history_mb;
   loop.set_history_budget(static_cast<std::size_t>(view.state().history_budget_mb) << 20);
   view.on_scene_loaded(loop);
-  if (settings != nullptr && settings->camera && settings->last_scene == absolute_path(session.scene_path))
-    view.camera().set({(*settings->camera)[0], (*settings->camera)[1]}, (*settings->camera)[2]);
+  if (settings != nullptr) ui::restore_camera(*settings, absolute_path(session.scene_path), view.camera());
 
   bool failed = false;
   double owed_steps = 0;
@@ -357,8 +356,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
     settings->panels = view.state().panel_open;
     settings->last_scene = absolute_path(session.scene_path);  // the next start may be elsewhere
     settings->algorithm = loop.algorithm();
-    settings->camera = std::array<double, 3>{view.camera().centre().x(), view.camera().centre().y(),
-                                             view.camera().pixels_per_metre()};
+    settings->camera = ui::camera_to_save(view.camera());
     settings->speed = session.speed;
     settings->history_mb = view.state().history_budget_mb;
   }
