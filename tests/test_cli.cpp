@@ -123,7 +123,8 @@ const BadInput kBadInputs[] = {
     {"zero_radius", "1,2,0\n", "", "IN:1: r: radius must be > 0, got 0"},
     {"negative_radius", "1,2,-0.5\n", "", "IN:1: r: radius must be > 0, got -0.5"},
     {"unknown_algorithm", "1,2,1\n", "--algorithm quick", "unknown algorithm 'quick' (known: ALGOS)"},
-    {"unknown_flag", "1,2,1\n", "--fast", "--fast: unknown flag (see nbscope --help)"},
+    {"unknown_flag", "1,2,1\n", "--fast", "pairs: --fast is not an option of pairs (see nbscope --help)"},
+    {"option_of_another_command", "1,2,1\n", "--report=r.json", "pairs: --report is not an option of pairs (it is one of headless, replay)"},
     {"bad_repeat", "1,2,1\n", "--repeat 0", "--repeat: '0' is not a whole number from 1 to 1000000"},
     {"missing_value", "1,2,1\n", "--algorithm", "--algorithm: missing value"},
     {"repeated_flag", "1,2,1\n", "--repeat 2 --repeat=3", "--repeat: given more than once"},
@@ -171,6 +172,23 @@ TEST(Cli, BytesFromABadFileAreEscapedSoTheErrorStaysOnePrintableLine) {
   const auto r = run("pairs --input '" + dir + "/in.csv'");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "nbscope: error: " + dir + "/in.csv:1: y: '2\\x00x\\x0D\\xFF' is not a number\n");
+}
+
+// An option a command does not take is named, not its value (gui --report x.json was refused
+// as "x.json: unexpected argument").
+TEST(Cli, AnOptionOfAnotherCommandIsNamed) {
+#ifdef NBSCOPE_TEST_GUI
+  for (const char* args : {"gui --report x.json", "--report x.json", "gui --scene s.json --report=x.json"}) {
+    const auto r = run(args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_EQ(r.err, "nbscope: error: gui: --report is not an option of gui (it is one of headless, replay)\n") << args;
+  }
+#endif
+  auto r = run("replay --record out.nbsrec in.nbsrec");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "nbscope: error: replay: --record is not an option of replay (it is one of headless)\n");
+  r = run("dump --input in.csv --algorithm nbs --repeat 3");
+  EXPECT_EQ(r.err, "nbscope: error: dump: --repeat is not an option of dump (it is one of pairs)\n");
 }
 
 TEST(Cli, UnknownCommandExitsTwo) {

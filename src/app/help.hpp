@@ -75,7 +75,7 @@ usage:
       --screenshot, else 0: a run that never goes back keeps only summaries).
   nbscope replay FILE.nbsrec [--headless] [--frames N] [--algorithm NAME[,NAME...]|all]
                  [--report OUT.json] [--inject-fault NAME] [--brute-limit N] [--quiet]
-                 [--stop-at-violation] [--screenshot OUT.png --size WxH ...]
+                 [--stop-at-violation] [--screenshot OUT.png --size WxH --gl osmesa|egl|auto ...]
       Detects and checks recorded frames again (the first N with --frames), as headless does
       (--stop-at-violation too); a window plays them (P, O, R, the Timeline over every recorded
       frame, the Violations panel, the stepper on any frame) when there is a display and no
