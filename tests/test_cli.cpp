@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "support/run_cli.hpp"
@@ -172,6 +173,30 @@ TEST(Cli, BytesFromABadFileAreEscapedSoTheErrorStaysOnePrintableLine) {
   const auto r = run("pairs --input '" + dir + "/in.csv'");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "nbscope: error: " + dir + "/in.csv:1: y: '2\\x00x\\x0D\\xFF' is not a number\n");
+}
+
+// The window's keys (every one the host and the Stepper handle) in --help and in the README's key
+// list, as in the Help menu (test_stepper_ui.cpp checks the menu).
+TEST(Cli, HelpAndTheReadmeNameEveryKeyOfTheWindow) {
+  const auto one_line = [](const std::string& text) {  // line breaks and indents as single spaces
+    std::string out;
+    for (const char c : text) {
+      const bool space = std::isspace(static_cast<unsigned char>(c)) != 0;
+      if (space && !out.empty() && out.back() == ' ') continue;
+      out += space ? ' ' : c;
+    }
+    return out;
+  };
+  const std::string help = one_line(run("--help").out);
+  const std::string readme = testcli::read_text(std::string(NBSCOPE_SOURCE_DIR) + "/README.md");
+  const std::size_t keys_at = readme.find("Keys: P play/pause");
+  ASSERT_NE(keys_at, std::string::npos);
+  const std::string keys = one_line(readme.substr(keys_at, readme.find("\n\n", keys_at) - keys_at));
+  for (const char* key : {"P play", "O single step", "R restart", "Home", "1..9", "Esc", "J play backwards", "Shift+[", "->",
+                          "<-", "Space", "PageUp", "PageDown", "Shift: one phase", "Shift: on the selected cell"}) {
+    EXPECT_NE(help.find(key), std::string::npos) << key << " missing from --help";
+    EXPECT_NE(keys.find(key), std::string::npos) << key << " missing from the README's key list";
+  }
 }
 
 // An option a command does not take is named, not its value (gui --report x.json was refused

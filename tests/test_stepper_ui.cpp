@@ -182,6 +182,16 @@ using testui::press;
 using testui::release;
 using testui::run_frame;
 
+// The Help menu lists every key the host and the Stepper handle (the Stepper's were once missing
+// from --help; test_cli.cpp checks --help and the README).
+TEST(HelpMenu, NamesEveryKeyOfTheHostAndTheStepper) {
+  std::string text;
+  for (const char* line : help_lines()) text += std::string(line) + "\n";
+  for (const char* key : {"P play", "O single step", "R restart", "Home", "1..9", "Esc", "J play backwards", "Shift+[", "->",
+                          "<-", "Shift+->", "Space", "PageUp", "PageDown", "Shift+PageUp", ",", ".", "@overlays"})
+    EXPECT_NE(text.find(key), std::string::npos) << key;
+}
+
 TEST(StepperPanels, KeysStepPhaseAndPlayAndTheSceneShowsTheOperation) {
   ImGuiScope scope;
   UiHost host;

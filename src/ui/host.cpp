@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 
 #include "ui/panels.hpp"
 
@@ -15,6 +16,31 @@ constexpr float kGap = 6.0f;
 // Wheel notches to zoom factor: 1.2x per notch.
 constexpr double kZoomPerNotch = 1.2;
 }  // namespace
+
+std::span<const char* const> help_lines() {
+  static constexpr const char* kLines[] = {
+      "P play/pause   O single step (held: repeats)   R restart   Home: fit the scene",
+      "1..9 algorithm   Esc: clear the selection",
+      "",
+      "Timeline: , / . one frame back / forward (held: repeats; Shift: 10)   J play backwards",
+      "          P on a past frame plays on through the kept frames; Resume here re-simulates",
+      "Violations: [ previous   ] next   Shift+[ the first",
+      "",
+      "Stepper (a paused frame; View -> Stepper):",
+      "  -> / <-  one operation forward / back (held: repeats)",
+      "  Shift+-> / Shift+<-  the next / previous phase",
+      "  Space  play / pause the operations",
+      "  PageDown / PageUp  the operation after / before on the selected element",
+      "  Shift+PageDown / Shift+PageUp  the same on the selected cell",
+      "  (the go-to field: type an operation number, then Enter)",
+      "",
+      "@overlays",
+      "",
+      "left-click: select an element (or an empty cell); left-drag: pull a body (mouse joint,",
+      "            live frame only)   right-drag: pan   wheel: zoom about the cursor",
+  };
+  return kLines;
+}
 
 UiHost::UiHost() {
   add_panel(make_controls_panel());
@@ -62,20 +88,15 @@ void UiHost::draw_menu(UiContext& ctx) {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {
-    ImGui::TextUnformatted("P play/pause   O single step   R restart   Home: fit the scene");
-    ImGui::TextUnformatted("1..9 algorithm   Esc: clear the selection");
-    ImGui::Separator();
-    ImGui::TextUnformatted("Timeline: , / . one frame back / forward (Shift: 10)   J play backwards");
-    ImGui::TextUnformatted("          P on a past frame plays on through the kept frames; Resume here re-simulates");
-    ImGui::TextUnformatted("Violations: [ previous   ] next   Shift+[ the first");
-    ImGui::TextUnformatted("Stepper: <- / -> one operation (Shift: one phase)   Space play");
-    ImGui::TextUnformatted("         PageUp / PageDown the operation before / after on the selected element");
-    ImGui::TextUnformatted("         (Shift: on the selected cell)");
-    ImGui::Separator();
-    for (const render::OverlayInfo& o : render::overlay_infos()) ImGui::Text("%c  %s", o.key, o.help);
-    ImGui::Separator();
-    ImGui::TextUnformatted("left-click: select an element (or an empty cell); left-drag: pull a body (mouse joint,");
-    ImGui::TextUnformatted("            live frame only)   right-drag: pan   wheel: zoom about the cursor");
+    for (const char* line : help_lines()) {
+      if (*line == '\0') {
+        ImGui::Separator();
+      } else if (std::string_view(line) == "@overlays") {
+        for (const render::OverlayInfo& o : render::overlay_infos()) ImGui::Text("%c  %s", o.key, o.help);
+      } else {
+        ImGui::TextUnformatted(line);
+      }
+    }
     ImGui::EndMenu();
   }
   char where[160];
