@@ -199,11 +199,17 @@ class StepperPanel final : public Panel {
     char label[96];
     std::snprintf(label, sizeof label, "%llu / %llu  (%s, frame %lld)", static_cast<unsigned long long>(pos),
                   static_cast<unsigned long long>(hi), s.algorithm().c_str(), static_cast<long long>(s.frame()));
+    // A scrubber needs its grab: a thin, see-through one, so that the text over it stays readable.
     ImGui::SetNextItemWidth(-1);
+    ImGui::PushStyleVar(ImGuiStyleVar_GrabMinSize, 4.0f);
+    ImGui::PushStyleColor(ImGuiCol_SliderGrab, ImVec4(0.45f, 0.65f, 1.0f, 0.35f));
+    ImGui::PushStyleColor(ImGuiCol_SliderGrabActive, ImVec4(0.55f, 0.75f, 1.0f, 0.5f));
     if (ImGui::SliderScalar("##scrub", ImGuiDataType_U64, &pos, &lo, &hi, label)) {
       st.pause();
       st.seek(pos);
     }
+    ImGui::PopStyleColor(2);
+    ImGui::PopStyleVar();
   }
 
   void draw_phases(StepperSession& s) {
@@ -235,8 +241,9 @@ class StepperPanel final : public Panel {
     }
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1);
-    if (ImGui::SliderFloat("##speed", &speed, 0.5f, 5000.0f, "%.1f events/s", ImGuiSliderFlags_Logarithmic))
+    if (ImGui::DragFloat("##speed", &speed, 16.0f, 0.5f, 5000.0f, "%.1f events/s", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
       st.set_speed(speed);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("play speed, 0.5 to 5000 operations a second: drag sideways, or double-click and type");
   }
 
   void draw_breakpoint(StepperSession& s) {

@@ -104,8 +104,11 @@ class TimelinePanel final : public Panel {
       std::snprintf(mem, sizeof mem, "history %.1f / %.0f MB", static_cast<double>(s.history_bytes) / 1048576.0,
                     static_cast<double>(s.history_budget) / 1048576.0);
     }
+    // Right-aligned after the frame text, or on a line of its own when the dock is too narrow.
     const float w = ImGui::CalcTextSize(mem).x + 2 * ImGui::GetStyle().FramePadding.x;
-    ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowContentRegionMax().x - w));
+    const float after = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x + ImGui::GetStyle().ItemSpacing.x;
+    const float right = ImGui::GetWindowContentRegionMax().x - w;
+    if (after <= right) ImGui::SameLine(right);
     if (ImGui::SmallButton(mem) && !s.replaying) ImGui::OpenPopup("budget");
     if (!s.replaying) {
       tooltip(s.history_dropped > 0 ? "the oldest frames' states were dropped to stay within the budget; their summaries stay"
@@ -113,8 +116,8 @@ class TimelinePanel final : public Panel {
     }
     if (ImGui::BeginPopup("budget")) {
       int mb = static_cast<int>(c.state.history_budget_mb);
-      ImGui::SetNextItemWidth(160);
-      if (ImGui::SliderInt("MB kept", &mb, 16, 4096, "%d MB", ImGuiSliderFlags_Logarithmic)) {
+      ImGui::SetNextItemWidth(120);
+      if (ImGui::DragInt("kept (16 to 4096)", &mb, 13.0f, 16, 4096, "%d MB", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
         c.state.history_budget_mb = mb;
         c.requests.history_budget_mb = mb;
       }
