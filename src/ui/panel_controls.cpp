@@ -15,9 +15,9 @@ class ControlsPanel final : public Panel {
   void draw(UiContext& c) override {
     const SimView& s = c.sim;
     if (ImGui::Button(s.paused ? "Play (P)" : "Pause (P)", ImVec2(76, 0))) c.requests.toggle_pause = true;
-    ImGui::SameLine();
+    same_line_if_fits(button_width("Step (O)"), 4.0f);
     if (ImGui::Button("Step (O)")) c.requests.step_once = true;
-    ImGui::SameLine();
+    same_line_if_fits(button_width("Restart (R)"), 4.0f);
     if (ImGui::Button("Restart (R)")) c.requests.restart = true;
     ImGui::Text("frame %lld   t = %.3f s", static_cast<long long>(s.frame), s.sim_time);
     if (s.paused) {
