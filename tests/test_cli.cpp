@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "support/run_cli.hpp"
@@ -39,7 +40,7 @@ TEST(Cli, PairsOfTheBundledExampleToStdoutAndFile) {
   auto r = run("pairs --input '" + example() + "' --algorithm nbs");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out.rfind("i,j\n", 0), 0u);
-  EXPECT_NE(r.err.find("pairs"), std::string::npos);
+  EXPECT_NE(r.err.find("1 pair,"), std::string::npos);
   EXPECT_NE(r.err.find("detection"), std::string::npos);
   auto b = run("pairs --input '" + example() + "' --algorithm brute --output '" + dir + "/p.csv'");
   ASSERT_EQ(b.exit_code, 0) << b.err;
@@ -123,7 +124,8 @@ const BadInput kBadInputs[] = {
     {"zero_radius", "1,2,0\n", "", "IN:1: r: radius must be > 0, got 0"},
     {"negative_radius", "1,2,-0.5\n", "", "IN:1: r: radius must be > 0, got -0.5"},
     {"unknown_algorithm", "1,2,1\n", "--algorithm quick", "unknown algorithm 'quick' (known: ALGOS)"},
-    {"unknown_flag", "1,2,1\n", "--fast", "--fast: unknown flag (see nbscope --help)"},
+    {"unknown_flag", "1,2,1\n", "--fast", "pairs: --fast is not an option of pairs (see nbscope --help)"},
+    {"option_of_another_command", "1,2,1\n", "--report=r.json", "pairs: --report is not an option of pairs (it is one of headless, replay)"},
     {"bad_repeat", "1,2,1\n", "--repeat 0", "--repeat: '0' is not a whole number from 1 to 1000000"},
     {"missing_value", "1,2,1\n", "--algorithm", "--algorithm: missing value"},
     {"repeated_flag", "1,2,1\n", "--repeat 2 --repeat=3", "--repeat: given more than once"},
@@ -171,6 +173,47 @@ TEST(Cli, BytesFromABadFileAreEscapedSoTheErrorStaysOnePrintableLine) {
   const auto r = run("pairs --input '" + dir + "/in.csv'");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "nbscope: error: " + dir + "/in.csv:1: y: '2\\x00x\\x0D\\xFF' is not a number\n");
+}
+
+// The window's keys (every one the host and the Stepper handle) in --help and in the README's key
+// list, as in the Help menu (test_stepper_ui.cpp checks the menu).
+TEST(Cli, HelpAndTheReadmeNameEveryKeyOfTheWindow) {
+  const auto one_line = [](const std::string& text) {  // line breaks and indents as single spaces
+    std::string out;
+    for (const char c : text) {
+      const bool space = std::isspace(static_cast<unsigned char>(c)) != 0;
+      if (space && !out.empty() && out.back() == ' ') continue;
+      out += space ? ' ' : c;
+    }
+    return out;
+  };
+  const std::string help = one_line(run("--help").out);
+  const std::string readme = testcli::read_text(std::string(NBSCOPE_SOURCE_DIR) + "/README.md");
+  const std::size_t keys_at = readme.find("Keys: P play/pause");
+  ASSERT_NE(keys_at, std::string::npos);
+  const std::string keys = one_line(readme.substr(keys_at, readme.find("\n\n", keys_at) - keys_at));
+  for (const char* key : {"P play", "O single step", "R restart", "Home", "1..9", "Esc", "J play backwards", "Shift+[", "->",
+                          "<-", "Space", "PageUp", "PageDown", "Shift: one phase", "Shift: on the selected cell"}) {
+    EXPECT_NE(help.find(key), std::string::npos) << key << " missing from --help";
+    EXPECT_NE(keys.find(key), std::string::npos) << key << " missing from the README's key list";
+  }
+}
+
+// An option a command does not take is named, not its value (gui --report x.json was refused
+// as "x.json: unexpected argument").
+TEST(Cli, AnOptionOfAnotherCommandIsNamed) {
+#ifdef NBSCOPE_TEST_GUI
+  for (const char* args : {"gui --report x.json", "--report x.json", "gui --scene s.json --report=x.json"}) {
+    const auto r = run(args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_EQ(r.err, "nbscope: error: gui: --report is not an option of gui (it is one of headless, replay)\n") << args;
+  }
+#endif
+  auto r = run("replay --record out.nbsrec in.nbsrec");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "nbscope: error: replay: --record is not an option of replay (it is one of headless)\n");
+  r = run("dump --input in.csv --algorithm nbs --repeat 3");
+  EXPECT_EQ(r.err, "nbscope: error: dump: --repeat is not an option of dump (it is one of pairs)\n");
 }
 
 TEST(Cli, UnknownCommandExitsTwo) {

@@ -55,6 +55,7 @@ TEST(ElementsCsv, HeaderOnlyIsAValidEmptySet) {
 TEST(ElementsCsv, EveryBadRowNamesFileLineAndWhat) {
   EXPECT_EQ(error_of(""), "in.csv:1: empty file (expected rows of x,y,r or x,y,z,r)");
   EXPECT_EQ(error_of("1,2\n"), "in.csv:1: 2 columns; expected 3 (x,y,r) or 4 (x,y,z,r)");
+  EXPECT_EQ(error_of("1\n"), "in.csv:1: 1 column; expected 3 (x,y,r) or 4 (x,y,z,r)");
   EXPECT_EQ(error_of("1,2,3\n1,2,3,4,5\n"), "in.csv:2: 5 columns; expected 3 (x,y,r) or 4 (x,y,z,r)");
   EXPECT_EQ(error_of("x,y,r\n1,abc,1\n"), "in.csv:2: y: 'abc' is not a number");
   EXPECT_EQ(error_of("1,2,1\n\n1,nan,1\n"), "in.csv:3: y: 'nan' is not a finite number");

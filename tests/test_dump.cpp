@@ -278,7 +278,7 @@ const BadDump kBadDumps[] = {
     {"origin_2d_for_3d", "--input IN3 --algorithm nbs --origin 0,0", "--origin: '0,0' has 2 coordinates, the elements are 3D"},
     {"small_cell", "--algorithm screen --cell-size 0.5",
      "IN: cell size 0.5 is smaller than the largest diameter 1 (contacts could span more than one cell)"},
-    {"unknown_flag", "--algorithm nbs --verbose", "--verbose: unknown flag (see nbscope --help)"},
+    {"unknown_flag", "--algorithm nbs --verbose", "dump: --verbose is not an option of dump (see nbscope --help)"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Dump, DumpBadInput, ::testing::ValuesIn(kBadDumps), [](const auto& info) { return info.param.name; });

@@ -143,8 +143,9 @@ bool have(const char* program) {
 }
 
 // Renders `args` in the window under Xvfb and headless and expects the same picture: both draw the
-// last state until ImGui's layout has settled, however few frames were asked for.
-void expect_window_matches_headless(const std::string& name, const std::string& args) {
+// last state until ImGui's layout has settled, however few frames were asked for. `window_log`
+// receives what the window said on stderr.
+void expect_window_matches_headless(const std::string& name, const std::string& args, std::string* window_log = nullptr) {
   if (!have("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
   std::filesystem::create_directories(kOut);
   const std::string window_png = kOut + "/window_" + name + ".png", headless_png = kOut + "/window_" + name + "_headless.png";
@@ -154,6 +155,7 @@ void expect_window_matches_headless(const std::string& name, const std::string& 
                           " --screenshot '" + window_png + "' >'" + log + "' 2>&1";
   const int status = std::system(cmd.c_str());
   ASSERT_EQ(status, 0) << testcli::read_text(log);
+  if (window_log != nullptr) *window_log = testcli::read_text(log);
   const Image window = read_png(window_png);
   EXPECT_FALSE(is_uniform(window)) << "the window's screenshot is blank";
   const auto r = testcli::run("headless " + args + " --quiet --screenshot '" + headless_png + "'");
@@ -165,8 +167,12 @@ void expect_window_matches_headless(const std::string& name, const std::string& 
   EXPECT_LE(d.share(), kMaxDifferingShare) << name << ": " << d.differing << " pixels differ; see " << kOut;
 }
 
+// --frames 30 is 30 frames in the window as in headless (it once said 31: frame 0 counted too).
 TEST(Window, XvfbWindowFor30FramesMatchesTheHeadlessFrame) {
-  expect_window_matches_headless("default", absolute_paths("--scene assets/scenes/default.json --frames 30 --size 1280x720 --no-timings"));
+  std::string log;
+  expect_window_matches_headless("default", absolute_paths("--scene assets/scenes/default.json --frames 30 --size 1280x720 --no-timings"),
+                                 &log);
+  EXPECT_NE(log.find("nbscope: window: 30 frames ("), std::string::npos) << log;
 }
 
 // One frame and the stepper: the Arrays dock, Pseudocode and Stepper appear in the very frames

@@ -188,7 +188,8 @@ const BadRun kBadRuns[] = {
     {"unknown_fault", kGoodScene, "--inject-fault gremlins",
      "--inject-fault: unknown fault 'gremlins' (known: drop-mask-cell, off-by-one-cell, stale-positions, drop-pair, drop-box2d-contact)"},
     {"bad_brute_limit", kGoodScene, "--brute-limit x", "--brute-limit: 'x' is not a whole number from 0 to 1000000"},
-    {"unknown_flag", kGoodScene, "--fast", "--fast: unknown flag (see nbscope --help)"},
+    {"unknown_flag", kGoodScene, "--fast", "headless: --fast is not an option of headless (see nbscope --help)"},
+    {"option_of_another_command", kGoodScene, "--output x.csv", "headless: --output is not an option of headless (it is one of pairs)"},
     {"repeated_flag", kGoodScene, "--frames 4", "--frames: given more than once"},
     {"drawing_without_screenshot", kGoodScene, "--overlays grid",
      "--overlays: needs --screenshot (headless draws nothing without one)"},
@@ -196,6 +197,16 @@ const BadRun kBadRuns[] = {
 
 INSTANTIATE_TEST_SUITE_P(All, HeadlessBadInput, ::testing::ValuesIn(kBadRuns),
                          [](const ::testing::TestParamInfo<BadRun>& info) { return std::string(info.param.name); });
+
+// Counts agree in number: "1 violation in 1 frame", not "1 violations in 1 frames".
+TEST(Headless, TheSummaryCountsInTheSingularWhenThereIsOne) {
+  const std::string dir = scratch_dir("headless_singular");
+  write_text(dir + "/two.json", R"({"gravity": [0, 0], "bodies": [{"shape": "circle", "radius": 0.5, "position": [0, 0]},
+    {"shape": "circle", "radius": 0.5, "position": [0.9, 0]}]})");
+  const auto r = run("headless --scene '" + dir + "/two.json' --frames 1 --inject-fault drop-box2d-contact");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.out.find(", 1 frame, 2 elements: 1 violation in 1 frame (A-in-F 1), first in frame 1"), std::string::npos) << r.out;
+}
 
 TEST(Headless, AnUnwritableReportFailsBeforeAnyFrame) {
   const std::string dir = scratch_dir("headless_bad_report");

@@ -214,6 +214,33 @@ TEST(Settings, RoundTripAndMalformedFilesFallBackToDefaults) {
   EXPECT_TRUE(warning.empty());
 }
 
+// A camera left where the fit put it is not frozen into the settings: the next start fits the
+// scene again (and keeps refitting as panels open) instead of showing the last run's view until
+// Home. A camera the user panned or zoomed comes back as it was.
+TEST(Settings, AFittedCameraIsFittedAgainAndAMovedOneRestored) {
+  const render::WorldRect box{{0, 0}, {10, 10}};
+  render::Camera last;
+  last.set_viewport(1280, 720);
+  last.fit(box, 0.06, render::ScreenInsets{270, 300, 25, 120});  // the panels of the last run
+  Settings s;
+  s.last_scene = "/some/scene.json";
+  s.camera = camera_to_save(last);
+  EXPECT_FALSE(s.camera.has_value());
+  render::Camera next;
+  next.set_viewport(1280, 720);
+  next.fit(box, 0.06, render::ScreenInsets{270, 300, 0, 0});  // the start's fit, before the panels' first frame
+  EXPECT_FALSE(restore_camera(s, "/some/scene.json", next));
+  EXPECT_TRUE(next.at_home()) << "still fitted: the first frame refits it into the panels' space";
+
+  last.pan_pixels({40, -10});
+  s.camera = camera_to_save(last);
+  ASSERT_TRUE(s.camera.has_value());
+  EXPECT_FALSE(restore_camera(s, "/another/scene.json", next));
+  EXPECT_TRUE(restore_camera(s, "/some/scene.json", next));
+  EXPECT_EQ(next.centre(), last.centre());
+  EXPECT_EQ(next.pixels_per_metre(), last.pixels_per_metre());
+}
+
 TEST(Settings, PathFollowsXdgConfigHomeThenHome) {
   const char* old_xdg = std::getenv("XDG_CONFIG_HOME");
   const std::string keep_xdg = old_xdg != nullptr ? old_xdg : "";

@@ -4,7 +4,9 @@
 // recorded through a DrawSink: the element, the growing list, the mask cell, the tested pair.
 #include <gtest/gtest.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
+#include <optional>
 #include <string>
 
 #include "core/detector.hpp"
@@ -185,6 +187,51 @@ TEST(StepperSession, AConfiguredStepRecordsEvenWhileRunning) {
 using testui::press;
 using testui::release;
 using testui::run_frame;
+
+// The Help menu lists every key the host and the Stepper handle (the Stepper's were once missing
+// from --help; test_cli.cpp checks --help and the README).
+TEST(HelpMenu, NamesEveryKeyOfTheHostAndTheStepper) {
+  std::string text;
+  for (const char* line : help_lines()) text += std::string(line) + "\n";
+  for (const char* key : {"P play", "O single step", "R restart", "Home", "1..9", "Esc", "J play backwards", "Shift+[", "->",
+                          "<-", "Shift+->", "Space", "PageUp", "PageDown", "Shift+PageUp", ",", ".", "@overlays"})
+    EXPECT_NE(text.find(key), std::string::npos) << key;
+}
+
+// The top-left corner of the window titled `title` in the last frame.
+ImVec2 window_pos(const char* title) {
+  const ImGuiWindow* w = ImGui::FindWindowByName(title);
+  return w != nullptr ? w->Pos : ImVec2(-1, -1);
+}
+
+// At 1024x640 with the stepper's panels open the scene keeps about half of the window each way
+// (the Arrays dock and the columns once left it a sixth), and the Stepper and Pseudocode keep
+// their place when the algorithm changes (the Stepper once moved from y=85 to y=215).
+TEST(StepperPanels, LeaveTheSceneHalfTheWindowAndKeepTheirPlaceAcrossAlgorithms) {
+  ImGuiScope scope;
+  ImGui::GetIO().DisplaySize = ImVec2(1024, 640);
+  UiHost host;
+  auto session = add_stepper_panels(host, StepperConfig{std::size_t{20}, false});
+  BookFrame f;
+  f.camera.set_viewport(1024, 640);
+  open_stepper_panels(f.state);
+  std::optional<ImVec2> stepper, pseudocode;
+  for (const char* algorithm : {"screen", "nbs", "tree", "sort", "brute", "nbs"}) {
+    f.sim.algorithm = algorithm;
+    for (int i = 0; i < 4; ++i) run_frame(host, f);
+    ASSERT_TRUE(session->has_capture()) << algorithm << ": " << session->message();
+    const render::ScreenInsets in = host.insets(f.state);
+    EXPECT_LE(in.left + in.right, 0.52 * 1024) << algorithm;
+    EXPECT_LE(in.bottom, 0.5 * 640) << algorithm;
+    if (!stepper) {
+      stepper = window_pos(kStepperTitle);
+      pseudocode = window_pos(kPseudocodeTitle);
+    }
+    EXPECT_EQ(window_pos(kStepperTitle).y, stepper->y) << algorithm;
+    EXPECT_EQ(window_pos(kStepperTitle).x, stepper->x) << algorithm;
+    EXPECT_EQ(window_pos(kPseudocodeTitle).y, pseudocode->y) << algorithm;
+  }
+}
 
 TEST(StepperPanels, KeysStepPhaseAndPlayAndTheSceneShowsTheOperation) {
   ImGuiScope scope;

@@ -65,6 +65,7 @@ std::optional<double> Args::number(const std::string& name) {
 }
 
 std::optional<std::string> Args::positional() {
+  refuse_unknown_options();
   for (std::size_t i = 0; i < args_.size(); ++i) {
     if (!used_[i] && args_[i].rfind("--", 0) != 0) {
       used_[i] = true;
@@ -74,12 +75,51 @@ std::optional<std::string> Args::positional() {
   return std::nullopt;
 }
 
-void Args::finish() const {
+void Args::refuse_unknown_options() const {
   for (std::size_t i = 0; i < args_.size(); ++i) {
-    if (used_[i]) continue;
-    if (args_[i].rfind("-", 0) == 0) throw Error(args_[i] + ": unknown flag (see nbscope --help)");
-    throw Error(args_[i] + ": unexpected argument (see nbscope --help)");
+    if (used_[i] || args_[i].size() < 2 || args_[i][0] != '-') continue;
+    const std::string name = args_[i].substr(0, args_[i].find('='));  // --name=VALUE: the name alone
+    if (command_.empty()) throw Error(name + ": unknown option (see nbscope --help)");
+    const std::string others = commands_taking(name);
+    // Taken by this command only in another mode (replay --gl with a window): not here.
+    if ((", " + others + ", ").find(", " + command_ + ", ") != std::string::npos)
+      throw Error(command_ + ": " + name + " does not apply here (see nbscope --help)");
+    throw Error(command_ + ": " + name + " is not an option of " + command_ +
+                (others.empty() ? " (see nbscope --help)" : " (it is one of " + others + ")"));
   }
+}
+
+void Args::finish() const {
+  refuse_unknown_options();
+  for (std::size_t i = 0; i < args_.size(); ++i)
+    if (!used_[i]) throw Error(args_[i] + ": unexpected argument (see nbscope --help)");
+}
+
+// The rendering options gui, headless and replay share (app/view_options.cpp).
+#define NBSCOPE_VIEW_OPTIONS "--screenshot", "--size", "--overlays", "--panels", "--select", "--camera", \
+    "--no-timings", "--step", "--book-numbering", "--shader-dir"
+
+const std::vector<std::pair<const char*, std::vector<const char*>>>& command_options() {
+  static const std::vector<std::pair<const char*, std::vector<const char*>>> table = {
+      {"gui", {"--scene", "--algorithm", "--inject-fault", "--frames", "--history-mb", "--back", NBSCOPE_VIEW_OPTIONS}},
+      {"headless", {"--scene", "--frames", "--algorithm", "--report", "--inject-fault", "--brute-limit", "--quiet",
+                    "--record", "--stop-at-violation", "--rewind", "--history-mb", "--back", "--violation", "--gl",
+                    NBSCOPE_VIEW_OPTIONS}},
+      {"replay", {"--headless", "--frames", "--algorithm", "--report", "--inject-fault", "--brute-limit", "--quiet",
+                  "--stop-at-violation", "--gl", NBSCOPE_VIEW_OPTIONS}},
+      {"pairs", {"--input", "--algorithm", "--output", "--repeat", "--cell-size", "--origin", "--cells", "--max-pairs"}},
+      {"dump", {"--input", "--algorithm", "--cell-size", "--origin", "--cells", "--format"}},
+  };
+  return table;
+}
+#undef NBSCOPE_VIEW_OPTIONS
+
+std::string commands_taking(const std::string& option) {
+  std::string out;
+  for (const auto& [command, options] : command_options())
+    for (const char* o : options)
+      if (option == o) out += (out.empty() ? "" : ", ") + std::string(command);
+  return out;
 }
 
 void parse_size(const std::string& flag, const std::string& text, int& out_width, int& out_height) {

@@ -9,8 +9,9 @@ namespace nbscope {
 
 class Args {
  public:
-  // Wraps the arguments after the command name.
-  explicit Args(std::vector<std::string> args) : args_(std::move(args)), used_(args_.size(), false) {}
+  // Wraps the arguments after the command name; `command` names the command in errors.
+  explicit Args(std::vector<std::string> args, std::string command = {})
+      : args_(std::move(args)), used_(args_.size(), false), command_(std::move(command)) {}
 
   // True (and consumed) when `--name` is present.
   bool flag(const std::string& name);
@@ -20,17 +21,27 @@ class Args {
   std::optional<long long> integer(const std::string& name, long long min, long long max);
   // Like value(), parsed as a finite double.
   std::optional<double> number(const std::string& name);
-  // The next unconsumed argument not starting with "--", consumed.
+  // The next unconsumed argument not starting with "--", consumed. Taken after every option: an
+  // option nobody took is refused first (by its name, so that its value is not blamed instead).
   std::optional<std::string> positional();
-  // Error for the first argument nobody consumed ("unknown flag '--x'").
+  // Error for an option nobody consumed, named as such ("gui: --report is not an option of gui (it
+  // is one of headless, replay)"), else for the first argument nobody consumed.
   void finish() const;
+  // Error for the first option (an argument starting with "-") nobody consumed.
+  void refuse_unknown_options() const;
 
  private:
   void refuse_repeat(const std::string& name) const;
 
   std::vector<std::string> args_;
   std::vector<bool> used_;
+  std::string command_;
 };
+
+// The options each command takes ("gui", "headless", "replay", "pairs", "dump"), as --help lists
+// them; the commands of the ones that take `option` (without any "=VALUE"), comma-separated.
+const std::vector<std::pair<const char*, std::vector<const char*>>>& command_options();
+std::string commands_taking(const std::string& option);
 
 // "W" "x" "H" into width and height; Error names `flag` otherwise.
 void parse_size(const std::string& flag, const std::string& text, int& out_width, int& out_height);

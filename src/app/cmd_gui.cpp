@@ -20,6 +20,7 @@
 #include "check/faults.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/plural.hpp"
 #include "render/gl_window.hpp"
 #include "ui/settings.hpp"
 
@@ -59,7 +60,7 @@ GuiOptions parse_gui_options(Args& args) {
   if (o.view.screenshot && !o.frames) throw Error("--screenshot: needs --frames N (how many frames to run first)");
   if (o.back > 0 && !o.frames) throw Error("--back: needs --frames N (the frames to go back through)");
   if (o.frames && o.back > *o.frames)
-    throw Error("--back: " + std::to_string(o.back) + " is more than the " + std::to_string(*o.frames) + " frames run");
+    throw Error("--back: " + std::to_string(o.back) + " is more than the " + plural(*o.frames, "frame") + " run");
   if (o.view.screenshot) check_output_path(*o.view.screenshot);
   if (o.view.screenshot && o.scene) check_outputs_distinct({{"--scene", *o.scene}}, {{"--screenshot", *o.view.screenshot}});
   return o;
@@ -86,7 +87,7 @@ int run_without_display(GuiOptions o, FrameLoop& loop) {
     o.view.screenshot = dir + "/nbscope-" + (loop.scene().name.empty() ? "scene" : loop.scene().name) + ".png";
   }
   const std::int64_t frames = o.frames.value_or(120);
-  std::fprintf(stderr, "nbscope: no display: rendering %lld frames headless instead\n", static_cast<long long>(frames));
+  std::fprintf(stderr, "nbscope: no display: rendering %s headless instead\n", plural(frames, "frame").c_str());
   auto view = make_headless_view(o.view, loop);
   bool failed = loop.report().checked && !loop.report().ok();
   for (std::int64_t i = 0; i < frames; ++i) {
@@ -246,8 +247,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   else if (settings != nullptr) view.state().history_budget_mb = settings->history_mb;
   loop.set_history_budget(static_cast<std::size_t>(view.state().history_budget_mb) << 20);
   view.on_scene_loaded(loop);
-  if (settings != nullptr && settings->camera && settings->last_scene == absolute_path(session.scene_path))
-    view.camera().set({(*settings->camera)[0], (*settings->camera)[1]}, (*settings->camera)[2]);
+  if (settings != nullptr) ui::restore_camera(*settings, absolute_path(session.scene_path), view.camera());
 
   bool failed = false;
   double owed_steps = 0;
@@ -318,21 +318,26 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
     if (scripted && rendered >= scripted_frames + GlView::kSettleFrames - 1) {
       view.check_step();
       if (o.view.screenshot) write_png(*o.view.screenshot, view.screenshot());
-      // What a scripted run measured: the window's frame rate and where the time went.
+      // What a scripted run measured: the window's frame rate and where the time went. --frames N
+      // is N steps, as in headless; the picture of the start and the redraws while the layout
+      // settles are counted apart (the frame rate is over every frame drawn). A recording's frame
+      // 0 is one of its frames, as in headless replay.
       const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
       const double n = static_cast<double>(rendered + 1);
+      const std::int64_t counted = *o.frames + (loop.replaying() ? 1 : 0);
       std::fprintf(stderr,
-                   "nbscope: window: %lld frames (+%d redrawn while the layout settles) in %.2f s = %.1f FPS; ms a "
-                   "frame: physics %.2f, detection %.2f, check %.2f, render+panels %.2f%s%s\n",
-                   static_cast<long long>(scripted_frames + 1), GlView::kSettleFrames - 1, seconds, n / seconds,
-                   sum_physics / n, sum_detect / n, sum_check / n, sum_view / n, o.view.screenshot ? "; screenshot " : "",
+                   "nbscope: window: %s (+%lld drawn besides: the start and while the layout settles) in %.2f s = "
+                   "%.1f FPS; ms a frame: physics %.2f, detection %.2f, check %.2f, render+panels %.2f%s%s\n",
+                   plural(counted, "frame").c_str(), static_cast<long long>(rendered + 1 - counted - o.back), seconds,
+                   n / seconds, sum_physics / n, sum_detect / n, sum_check / n, sum_view / n,
+                   o.view.screenshot ? "; screenshot " : "",
                    o.view.screenshot ? o.view.screenshot->c_str() : "");
       if (o.back > 0) {
         const double k = static_cast<double>(o.back);
         std::fprintf(stderr,
-                     "nbscope: window: went back %lld frames to frame %lld: %.2f ms a frame (the kept frame rebuilt, "
+                     "nbscope: window: went back %s to frame %lld: %.2f ms a frame (the kept frame rebuilt, "
                      "detected and checked again %.2f, render+panels %.2f)\n",
-                     static_cast<long long>(o.back), static_cast<long long>(loop.frame()), (sum_back_show + sum_back_view) / k,
+                     plural(o.back, "frame").c_str(), static_cast<long long>(loop.frame()), (sum_back_show + sum_back_view) / k,
                      sum_back_show / k, sum_back_view / k);
       }
       break;
@@ -351,8 +356,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
     settings->panels = view.state().panel_open;
     settings->last_scene = absolute_path(session.scene_path);  // the next start may be elsewhere
     settings->algorithm = loop.algorithm();
-    settings->camera = std::array<double, 3>{view.camera().centre().x(), view.camera().centre().y(),
-                                             view.camera().pixels_per_metre()};
+    settings->camera = ui::camera_to_save(view.camera());
     settings->speed = session.speed;
     settings->history_mb = view.state().history_budget_mb;
   }

@@ -18,6 +18,7 @@
 #include "app/help.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/plural.hpp"
 #include "io/recording.hpp"
 
 namespace nbscope {
@@ -59,8 +60,8 @@ class Progress {
     const int filled = static_cast<int>(width * done / std::max<std::int64_t>(total_, 1));
     if (filled == last_ && done != total_) return;
     last_ = filled;
-    std::fprintf(stderr, "\r[%.*s%*s] %lld/%lld frames", filled, "========================================", width - filled, "",
-                 static_cast<long long>(done), static_cast<long long>(total_));
+    std::fprintf(stderr, "\r[%.*s%*s] %lld/%s", filled, "========================================", width - filled, "",
+                 static_cast<long long>(done), plural(total_, "frame").c_str());
     std::fflush(stderr);
   }
   void finish() {
@@ -111,14 +112,14 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
   const std::int64_t elements =
       frames > 0 ? report.runs.front().frames.back().counts.elements : loop.elements().size();
   std::string s = std::string(loop.replaying() ? "replay: " : "headless: ") + loop.scene().name + ", " + names + (o.fault == Fault::None ? "" : std::string(", fault ") + fault_name(o.fault)) +
-                  ", " + std::to_string(frames) + " frames, " + std::to_string(elements) + " elements: ";
+                  ", " + plural(static_cast<long long>(frames), "frame") + ", " + plural(elements, "element") + ": ";
   std::string failures;
   for (const AlgorithmRun& run : report.runs) {
     std::int64_t total = 0, bad_frames = 0, first = -1;
     const std::string broken = broken_text(run, total, bad_frames, first);
     if (total == 0) continue;
-    failures += (failures.empty() ? "" : "; ") + (report.runs.size() > 1 ? run.algorithm + ": " : std::string()) + std::to_string(total) +
-                " violations in " + std::to_string(bad_frames) + " frames (" + broken + "), first in frame " + std::to_string(first);
+    failures += (failures.empty() ? "" : "; ") + (report.runs.size() > 1 ? run.algorithm + ": " : std::string()) + plural(total, "violation") +
+                " in " + plural(bad_frames, "frame") + " (" + broken + "), first in frame " + std::to_string(first);
   }
   const std::string every = report.runs.size() > 1 ? " for every algorithm" : "";
   if (failures.empty() && loop.replaying()) {
@@ -169,7 +170,7 @@ std::vector<std::string> algorithms_of(const std::string& text, std::int64_t ele
     for (const DetectorInfo& d : detector_infos()) {
       if (!d.dim2) continue;
       if (d.name == "brute" && elements > brute_limit) {
-        note = "brute left out of 'all': " + std::to_string(elements) + " elements is past --brute-limit " + std::to_string(brute_limit);
+        note = "brute left out of 'all': " + plural(elements, "element") + " is past --brute-limit " + std::to_string(brute_limit);
         continue;
       }
       names.push_back(d.name);
@@ -212,7 +213,7 @@ bool nothing_to_check(const FrameLoop& loop) {
 void go_to_violation(FrameLoop& loop, std::int64_t n, HeadlessView* view) {
   const std::vector<Violation>& listed = loop.violation_log().listed();
   if (static_cast<std::size_t>(n) > listed.size())
-    throw Error("--violation: " + std::to_string(n) + " is past the run's " + std::to_string(listed.size()) + " listed violations");
+    throw Error("--violation: " + std::to_string(n) + " is past the run's " + plural(static_cast<long long>(listed.size()), "listed violation"));
   const Violation v = listed[static_cast<std::size_t>(n - 1)];
   if (!loop.can_show(v.frame))
     throw Error("--violation: its frame " + std::to_string(v.frame) + " is no longer kept (a larger --history-mb keeps more)");
@@ -292,7 +293,7 @@ HeadlessOptions parse_headless_options(Args& args) {
   if (o.rewind && o.record) throw Error("--rewind: --record writes frames as they run; record a straight run");
   if (o.rewind && o.stop_at_violation) throw Error("--rewind: and --stop-at-violation are two runs; give one");
   if (o.back > o.frames)
-    throw Error("--back: " + std::to_string(o.back) + " is more than the " + std::to_string(o.frames) + " frames run");
+    throw Error("--back: " + std::to_string(o.back) + " is more than the " + plural(o.frames, "frame") + " run");
   if (o.back > 0 && o.stop_at_violation) throw Error("--back: --stop-at-violation shows the violation's frame itself");
   if (o.violation > 0 && (o.stop_at_violation || o.back > 0))
     throw Error("--violation: goes to a violation's own frame; --back and --stop-at-violation choose another");
@@ -429,8 +430,8 @@ int run_headless_loop(const HeadlessOptions& o) {
   std::string summary = summary_of(o, loop, report);
   if (o.back > 0) {
     char buf[160];
-    std::snprintf(buf, sizeof buf, "; went back %lld frames to frame %lld: %.3f ms a frame (kept frame rebuilt, detected, checked)",
-                  static_cast<long long>(o.back), static_cast<long long>(loop.frame()), back_ms / static_cast<double>(o.back));
+    std::snprintf(buf, sizeof buf, "; went back %s to frame %lld: %.3f ms a frame (kept frame rebuilt, detected, checked)",
+                  plural(o.back, "frame").c_str(), static_cast<long long>(loop.frame()), back_ms / static_cast<double>(o.back));
     summary += buf;
   }
   std::printf("%s\n", summary.c_str());

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/csv.hpp"
+#include "io/plural.hpp"
 
 namespace nbscope {
 
@@ -48,13 +49,14 @@ int run_pairs(Args& args) {
     if (rep == 0) {
       first = pairs;  // kept only to compare the repeats with
     } else if (pairs != first) {
-      std::fprintf(stderr, "nbscope: repeat %lld of %s gave %zu pairs, the first gave %zu: detection is not repeatable\n",
-                   rep + 1, algorithm.c_str(), pairs.size(), first.size());
+      std::fprintf(stderr, "nbscope: repeat %lld of %s gave %s, the first gave %zu: detection is not repeatable\n",
+                   rep + 1, algorithm.c_str(), plural(static_cast<long long>(pairs.size()), "pair").c_str(), first.size());
       return 1;
     }
   }
-  std::fprintf(stderr, "nbscope: %s: %lld elements (%dD), %zu pairs, detection %.3f ms", algorithm.c_str(),
-               static_cast<long long>(elements.size()), elements.dim, pairs.size(), best * 1e3);
+  std::fprintf(stderr, "nbscope: %s: %s (%dD), %s, detection %.3f ms", algorithm.c_str(),
+               plural(static_cast<long long>(elements.size()), "element").c_str(), elements.dim,
+               plural(static_cast<long long>(pairs.size()), "pair").c_str(), best * 1e3);
   if (repeat > 1) std::fprintf(stderr, " (best of %lld, mean %.3f ms, all runs agree)", repeat, total / repeat * 1e3);
   std::fprintf(stderr, ", %zu bytes of own arrays\n", detector->own_bytes());
 

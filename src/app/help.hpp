@@ -13,10 +13,13 @@ usage:
       The window (default: the last scene and algorithm used, else assets/scenes/default.json
       and nbs; $NBSCOPE_DATA_DIR overrides where assets/ is found): Box2D bodies, the cell grid, the
       detector's lists, pairs and check results over them, ImGui panels. Keys: P play/pause,
-      O single step, R restart, Home fit, 1..9 algorithm, overlays B E G L M C K F I T H; the
-      Timeline: , and . one frame back/forward (Shift: 10), J play backwards; the Violations
-      panel: [ and ] previous/next, Shift+[ the first (see Help in the menu bar). Mouse: left
-      selects an element and drags its body, right-drag pans, wheel zooms. Every frame is kept
+      O single step, R restart, Home fit, 1..9 algorithm, Esc clear the selection, overlays
+      B E G L M C K F I T H; the Timeline: , and . one frame back/forward (Shift: 10), J play
+      backwards; the Violations panel: [ and ] previous/next, Shift+[ the first; the Stepper (a
+      paused frame): -> and <- one operation (Shift: one phase), Space play/pause, PageDown and
+      PageUp the operation after/before on the selected element (Shift: on the selected cell)
+      (see Help in the menu bar). Mouse: left selects an element and drags its body, right-drag
+      pans, wheel zooms. Every frame is kept
       for the Timeline within --history-mb N (default 256, saved with the settings; oldest frames
       dropped first). Settings persist in $XDG_CONFIG_HOME/nbscope/settings.json (~/.config/...).
       --frames N runs N frames, saves --screenshot and exits (no input, no settings: for tests
@@ -75,7 +78,7 @@ usage:
       --screenshot, else 0: a run that never goes back keeps only summaries).
   nbscope replay FILE.nbsrec [--headless] [--frames N] [--algorithm NAME[,NAME...]|all]
                  [--report OUT.json] [--inject-fault NAME] [--brute-limit N] [--quiet]
-                 [--stop-at-violation] [--screenshot OUT.png --size WxH ...]
+                 [--stop-at-violation] [--screenshot OUT.png --size WxH --gl osmesa|egl|auto ...]
       Detects and checks recorded frames again (the first N with --frames), as headless does
       (--stop-at-violation too); a window plays them (P, O, R, the Timeline over every recorded
       frame, the Violations panel, the stepper on any frame) when there is a display and no

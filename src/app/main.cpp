@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
                                           std::strcmp(argv[1], "--version") != 0);
   std::vector<std::string> rest(argv + (implicit_gui ? 1 : 2), argv + argc);
   const std::string command = implicit_gui ? "gui" : argv[1];
-  nbscope::Args args(rest);
+  nbscope::Args args(rest, command);
   try {
     nbscope::register_physics_detectors();  // "box2d" joins core's detectors
     return dispatch(command, rest, args);

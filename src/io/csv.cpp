@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_file.hpp"
+#include "io/plural.hpp"
 
 namespace nbscope {
 
@@ -70,7 +71,7 @@ double parse_finite_number(std::string_view f, const std::string& at, const char
 
 void parse_element_row(const std::vector<std::string_view>& fields, const std::string& at, std::array<double, 4>& out) {
   if (fields.size() != 3 && fields.size() != 4)
-    throw Error(at + std::to_string(fields.size()) + " columns; expected 3 (x,y,r) or 4 (x,y,z,r)");
+    throw Error(at + plural(static_cast<long long>(fields.size()), "column") + "; expected 3 (x,y,r) or 4 (x,y,z,r)");
   const char* const* names = fields.size() == 3 ? kColumnNames2 : kColumnNames3;
   for (std::size_t c = 0; c < fields.size(); ++c)
     if (fields[c].empty())
@@ -117,7 +118,7 @@ Elements parse_elements_csv(const std::string& text, const std::string& where) {
       for (std::string_view f : fields)
         if (!is_name(f)) throw Error(at + "header mixes names and numbers: '" + printable_line(f) + "'");
       if (fields.size() != 3 && fields.size() != 4)
-        throw Error(at + "header has " + std::to_string(fields.size()) + " columns; expected x,y,r or x,y,z,r");
+        throw Error(at + "header has " + plural(static_cast<long long>(fields.size()), "column") + "; expected x,y,r or x,y,z,r");
       e.dim = fields.size() == 3 ? 2 : 3;  // the header fixes the dimension, as a first row would
       header_line = line_no;
       seen_row_or_header = true;
@@ -125,11 +126,11 @@ Elements parse_elements_csv(const std::string& text, const std::string& where) {
     }
     seen_row_or_header = true;
     if (fields.size() != 3 && fields.size() != 4)
-      throw Error(at + std::to_string(fields.size()) + " columns; expected 3 (x,y,r) or 4 (x,y,z,r)");
+      throw Error(at + plural(static_cast<long long>(fields.size()), "column") + "; expected 3 (x,y,r) or 4 (x,y,z,r)");
     const int dim = fields.size() == 3 ? 2 : 3;
     if (e.dim == 0) e.dim = dim;
     if (dim != e.dim)
-      throw Error(at + std::to_string(fields.size()) + " columns, but " +
+      throw Error(at + plural(static_cast<long long>(fields.size()), "column") + ", but " +
                   (header_line != 0 && cols[0].empty() ? "the header on line " + std::to_string(header_line) + " has "
                                                        : std::string("the first row had ")) +
                   std::to_string(e.dim + 1));

@@ -13,6 +13,7 @@
 #include "io/atomic_file.hpp"
 #include "io/csv.hpp"
 #include "io/input_file.hpp"
+#include "io/plural.hpp"
 
 namespace nbscope {
 
@@ -142,7 +143,7 @@ Recording parse_recording(const std::string& text, const std::string& where, std
     if (in_header) throw Error(at + "an element row before the first 'frame NUMBER TIME' line");
     const std::vector<std::string_view> fields = split_fields(line);
     if (fields.size() == 4) throw Error(at + "4 columns (x,y,z,r): replay is 2D, rows are x,y,r");
-    if (fields.size() != 3) throw Error(at + std::to_string(fields.size()) + " columns; expected 3 (x,y,r)");
+    if (fields.size() != 3) throw Error(at + plural(static_cast<long long>(fields.size()), "column") + "; expected 3 (x,y,r)");
     if (static_cast<std::int64_t>(cols[0].size()) >= kMaxElements)
       throw Error(at + "more than " + std::to_string(kMaxElements) + " elements in one frame");
     std::array<double, 4> row{};

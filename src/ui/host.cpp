@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 
 #include "ui/panels.hpp"
 
@@ -12,9 +13,66 @@ namespace nbscope::ui {
 
 namespace {
 constexpr float kGap = 6.0f;
+// The columns together take at most this share of the display's width and the bottom dock this
+// share of the height below the menu bar, so that the scene keeps about half of each (the panels
+// wrap their rows or scroll); a column is never narrower than kMinColumnWidth.
+constexpr float kColumnsMaxShare = 0.52f;
+constexpr float kMinColumnWidth = 200.0f;
+constexpr float kDockMaxShare = 0.45f;
+
+// Narrows the columns (0: not shown) so that both with their gaps take at most kColumnsMaxShare
+// of `display_w`: the wider one gives way first, down to the other's width, then both alike.
+void cap_column_widths(float display_w, float& left, float& right) {
+  const int columns = (left > 0 ? 1 : 0) + (right > 0 ? 1 : 0);
+  if (columns == 0) return;
+  float excess = left + right - (kColumnsMaxShare * display_w - 2.0f * kGap * static_cast<float>(columns));
+  if (excess <= 0) return;
+  float& wide = left >= right ? left : right;
+  const float narrow = left >= right ? right : left;
+  const float first = std::min(excess, wide - std::max(narrow, kMinColumnWidth));
+  if (first > 0) {
+    wide -= first;
+    excess -= first;
+  }
+  for (float* w : {&left, &right})
+    if (*w > 0) *w = std::max(kMinColumnWidth, *w - excess / static_cast<float>(columns));
+}
 // Wheel notches to zoom factor: 1.2x per notch.
 constexpr double kZoomPerNotch = 1.2;
 }  // namespace
+
+void same_line_if_fits(float width, float spacing) {
+  if (spacing < 0) spacing = ImGui::GetStyle().ItemSpacing.x;
+  const float right = ImGui::GetItemRectMax().x + spacing + width;
+  if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine(0, spacing);
+}
+
+float button_width(const char* label) { return ImGui::CalcTextSize(label, nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x; }
+
+std::span<const char* const> help_lines() {
+  static constexpr const char* kLines[] = {
+      "P play/pause   O single step (held: repeats)   R restart   Home: fit the scene",
+      "1..9 algorithm   Esc: clear the selection",
+      "",
+      "Timeline: , / . one frame back / forward (held: repeats; Shift: 10)   J play backwards",
+      "          P on a past frame plays on through the kept frames; Resume here re-simulates",
+      "Violations: [ previous   ] next   Shift+[ the first",
+      "",
+      "Stepper (a paused frame; View -> Stepper):",
+      "  -> / <-  one operation forward / back (held: repeats)",
+      "  Shift+-> / Shift+<-  the next / previous phase",
+      "  Space  play / pause the operations",
+      "  PageDown / PageUp  the operation after / before on the selected element",
+      "  Shift+PageDown / Shift+PageUp  the same on the selected cell",
+      "  (the go-to field: type an operation number, then Enter)",
+      "",
+      "@overlays",
+      "",
+      "left-click: select an element (or an empty cell); left-drag: pull a body (mouse joint,",
+      "            live frame only)   right-drag: pan   wheel: zoom about the cursor",
+  };
+  return kLines;
+}
 
 UiHost::UiHost() {
   add_panel(make_controls_panel());
@@ -62,20 +120,15 @@ void UiHost::draw_menu(UiContext& ctx) {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {
-    ImGui::TextUnformatted("P play/pause   O single step   R restart   Home: fit the scene");
-    ImGui::TextUnformatted("1..9 algorithm   Esc: clear the selection");
-    ImGui::Separator();
-    ImGui::TextUnformatted("Timeline: , / . one frame back / forward (Shift: 10)   J play backwards");
-    ImGui::TextUnformatted("          P on a past frame plays on through the kept frames; Resume here re-simulates");
-    ImGui::TextUnformatted("Violations: [ previous   ] next   Shift+[ the first");
-    ImGui::TextUnformatted("Stepper: <- / -> one operation (Shift: one phase)   Space play");
-    ImGui::TextUnformatted("         PageUp / PageDown the operation before / after on the selected element");
-    ImGui::TextUnformatted("         (Shift: on the selected cell)");
-    ImGui::Separator();
-    for (const render::OverlayInfo& o : render::overlay_infos()) ImGui::Text("%c  %s", o.key, o.help);
-    ImGui::Separator();
-    ImGui::TextUnformatted("left-click: select an element (or an empty cell); left-drag: pull a body (mouse joint,");
-    ImGui::TextUnformatted("            live frame only)   right-drag: pan   wheel: zoom about the cursor");
+    for (const char* line : help_lines()) {
+      if (*line == '\0') {
+        ImGui::Separator();
+      } else if (std::string_view(line) == "@overlays") {
+        for (const render::OverlayInfo& o : render::overlay_infos()) ImGui::Text("%c  %s", o.key, o.help);
+      } else {
+        ImGui::TextUnformatted(line);
+      }
+    }
     ImGui::EndMenu();
   }
   char where[160];
@@ -123,7 +176,7 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float menu = ImGui::GetFrameHeight();
   const float top = menu + kGap;
-  // The columns are as wide as their widest open panel.
+  // The columns are as wide as their widest open panel, within half the display's width.
   std::vector<std::size_t> shown;
   float left_w = 0, right_w = 0;
   for (std::size_t i = 0; i < panels_.size(); ++i) {
@@ -133,13 +186,16 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
     if (p.place() == PanelPlace::Left) left_w = std::max(left_w, p.width());
     if (p.place() == PanelPlace::Right) right_w = std::max(right_w, p.width());
   }
+  cap_column_widths(display.x, left_w, right_w);
+  std::stable_sort(shown.begin(), shown.end(),
+                   [&](std::size_t a, std::size_t b) { return panels_[a]->column_order() < panels_[b]->column_order(); });
   fit_column(PanelPlace::Left, shown, display.y - top);
   fit_column(PanelPlace::Right, shown, display.y - top);
   // The bottom dock spans the space between the columns, under the scene, and leaves the scene at
-  // least 40% of the height below the menu.
+  // least 55% of the height below the menu (its panels scroll).
   const float dock_x0 = left_w > 0 ? left_w + 2 * kGap : kGap;
   const float dock_x1 = display.x - (right_w > 0 ? right_w + 2 * kGap : kGap);
-  const float dock_max_h = 0.6f * (display.y - top);
+  const float dock_max_h = kDockMaxShare * (display.y - top);
   float y_left = top, y_right = top, dock_y = display.y - kGap, dock_h = 0;
   covered_.assign(1, render::PixelRect{0, 0, display.x, menu});
   for (const std::size_t i : shown) {
@@ -168,6 +224,7 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
         ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0), ImVec2(w, FLT_MAX));
         ImGui::SetNextWindowCollapsed(slot.collapsed, ImGuiCond_Always);
         flags |= ImGuiWindowFlags_NoMove;
+        if (w < p.width()) flags |= ImGuiWindowFlags_HorizontalScrollbar;  // a narrowed column scrolls sideways
         break;
       }
     }

@@ -16,6 +16,11 @@
 
 namespace nbscope::ui {
 
+// The Help menu's text, one line each: "" is a separator, "@overlays" the overlay keys (from
+// render::overlay_infos()). Every key the host and the panels handle is here; --help and the
+// README's key list say the same (tests check the keys of all three).
+[[nodiscard]] std::span<const char* const> help_lines();
+
 class UiHost {
  public:
   // A host with the standard panels: Controls, Scenes, Algorithm, Overlays, Stats, Selection, Metrics,

@@ -11,6 +11,13 @@ namespace nbscope::ui {
 // bottom between the columns (under the scene), or floating over the scene.
 enum class PanelPlace { Left, Right, Bottom, Floating };
 
+// After an item: puts the next one, `width` pixels wide, on the same line (`spacing` after it; -1:
+// the style's) when it fits in the window, else leaves it on the next line (rows wrap in a
+// narrowed column instead of being cut).
+void same_line_if_fits(float width, float spacing = -1.0f);
+// The width of a button labelled `label`.
+float button_width(const char* label);
+
 class Panel {
  public:
   virtual ~Panel() = default;
@@ -23,6 +30,10 @@ class Panel {
   // When a column is taller than the display, the panels of lowest priority are collapsed to their
   // title bars first (a click on a title bar expands it again, and the host collapses another).
   [[nodiscard]] virtual int priority() const { return 0; }
+  // Order within a column, top to bottom (the bottom dock: bottom to top); equals keep the order
+  // the panels were added in. The stepper's panels come first in their column, so that neither
+  // moves when a panel above would change its height (with the algorithm, the selection, ...).
+  [[nodiscard]] virtual int column_order() const { return 100; }
   // False hides the window this frame even when open (e.g. Selection with nothing selected).
   [[nodiscard]] virtual bool visible(const UiContext&) const { return true; }
   // Draws the window's contents (the host has called Begin).

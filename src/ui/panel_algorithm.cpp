@@ -1,7 +1,9 @@
 // The Algorithm panel: the detector is switched live, between two frames (keys 1..9).
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include "ui/panels.hpp"
 
@@ -16,8 +18,15 @@ class AlgorithmPanel final : public Panel {
 
   void draw(UiContext& c) override {
     const SimView& s = c.sim;
-    // Three to a row, in columns as wide as the panel allows (a name never runs into the next).
-    if (!ImGui::BeginTable("algorithms", 3)) return;
+    // Three to a row, in columns as wide as the panel allows (a name never runs into the next);
+    // fewer when the column is narrowed.
+    float widest = 0;
+    for (std::size_t i = 0; i < s.algorithms.size(); ++i)
+      widest = std::max(widest, ImGui::CalcTextSize(("9 " + s.algorithms[i]).c_str()).x);
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float cell = widest + ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + 2 * style.CellPadding.x;
+    const int columns = std::clamp(static_cast<int>(ImGui::GetContentRegionAvail().x / cell), 1, 3);
+    if (!ImGui::BeginTable("algorithms", columns)) return;
     for (std::size_t i = 0; i < s.algorithms.size(); ++i) {
       const std::string& name = s.algorithms[i];
       char label[64];

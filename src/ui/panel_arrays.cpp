@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <string>
 
+#include "io/plural.hpp"
 #include "ui/stepper_panels.hpp"
 
 namespace nbscope::ui {
@@ -175,7 +176,7 @@ void draw_matrix_array(const StepperSession& s, const Marks& m, int array) {
   }
   ImGui::EndTable();
   if (r1 < a.shape[row_dim])
-    ImGui::TextColored(kIndex, "... %lld more rows", static_cast<long long>(a.shape[row_dim] - r1));
+    ImGui::TextColored(kIndex, "... %s more", plural(static_cast<long long>(a.shape[row_dim] - r1), "row").c_str());
 }
 
 // Where the filtered element is: its cell, the lists holding it now, the next entries after it and

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "io/plural.hpp"
 #include "ui/panels.hpp"
 
 namespace nbscope::ui {
@@ -35,7 +36,7 @@ class MetricsPanel final : public Panel {
     ImGui::Text("framebuffer %d x %d, %.2f px/m", s.width, s.height, c.camera.pixels_per_metre());
     if (s.render_stats != nullptr) {
       const render::RenderStats& r = *s.render_stats;
-      ImGui::Text("scene: %d draw calls, submit %s ms", r.draw_calls, format_ms(s, r.gpu_submit_ms).c_str());
+      ImGui::Text("scene: %s, submit %s ms", plural(r.draw_calls, "draw call").c_str(), format_ms(s, r.gpu_submit_ms).c_str());
       ImGui::Text("labels: %zu drawn, %zu dropped (limit %zu)", r.labels, r.labels_dropped, render::Renderer::kMaxLabels);
       if (ImGui::BeginTable("batches", 5, ImGuiTableFlags_BordersInnerH)) {
         for (const char* h : {"layer", "kind", "items", "vertices", "buffer"}) ImGui::TableSetupColumn(h);
@@ -55,12 +56,13 @@ class MetricsPanel final : public Panel {
         ImGui::EndTable();
       }
     }
-    ImGui::Text("ImGui: %d vertices, %d indices, %d draw lists", s.imgui_vertices, s.imgui_indices, s.imgui_lists);
-    ImGui::Text("trace: %zu events, %.1f KB", s.trace_events, double(s.trace_bytes) / 1024.0);
+    ImGui::Text("ImGui: %s, %s, %s", plural(s.imgui_vertices, "vertex", "vertices").c_str(),
+                plural(s.imgui_indices, "index", "indices").c_str(), plural(s.imgui_lists, "draw list").c_str());
+    ImGui::Text("trace: %s, %.1f KB", plural(static_cast<long long>(s.trace_events), "event").c_str(), double(s.trace_bytes) / 1024.0);
     if (s.timeline != nullptr) {
       std::size_t kept = 0;
       for (const FrameSummary& f : *s.timeline) kept += f.kept ? 1 : 0;
-      ImGui::Text("history: %zu frames, %zu kept, %.1f of %.0f MB", s.timeline->size(), kept,
+      ImGui::Text("history: %s, %zu kept, %.1f of %.0f MB", plural(static_cast<long long>(s.timeline->size()), "frame").c_str(), kept,
                   double(s.history_bytes) / 1048576.0, double(s.history_budget) / 1048576.0);
       ImGui::Text("violations: %zu listed (%.1f KB)", s.violations != nullptr ? s.violations->size() : std::size_t{0},
                   s.violations != nullptr ? double(s.violations->size() * sizeof(Violation)) / 1024.0 : 0.0);

@@ -20,6 +20,7 @@ class PseudocodePanel final : public Panel {
   [[nodiscard]] bool open_by_default() const override { return false; }
   [[nodiscard]] float width() const override { return 380.0f; }
   [[nodiscard]] int priority() const override { return 20; }
+  [[nodiscard]] int column_order() const override { return 1; }
 
   void draw(UiContext& c) override {
     StepperSession& s = *session_;

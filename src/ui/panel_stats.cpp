@@ -3,6 +3,7 @@
 
 #include <cstdio>
 
+#include "io/plural.hpp"
 #include "ui/panels.hpp"
 
 namespace nbscope::ui {
@@ -33,7 +34,7 @@ class StatsPanel final : public Panel {
   void draw(UiContext& c) override {
     const SimView& s = c.sim;
     const long long n = s.elements != nullptr ? static_cast<long long>(s.elements->size()) : 0;
-    ImGui::Text("N = %lld elements, %lld bodies", n, static_cast<long long>(s.bodies));
+    ImGui::Text("N = %s, %s", plural(n, "element").c_str(), plural(static_cast<long long>(s.bodies), "body", "bodies").c_str());
     if (s.grid != nullptr) {
       ImGui::Text("cells %lld x %lld = %lld, d = %.3g m", static_cast<long long>(s.grid->n[0]),
                   static_cast<long long>(s.grid->n[1]), static_cast<long long>(s.grid->cell_count()),
@@ -72,8 +73,8 @@ class StatsPanel final : public Panel {
       ImGui::TextDisabled("no Box2D: A in F, T in A, AABB in cells not checked");
       ImGui::PopTextWrapPos();
     } else {
-      ImGui::TextColored(ImVec4(1.0f, 0.3f, 0.3f, 1.0f), "check FAILED: %zu violation%s", s.violation_count,
-                         s.violation_count == 1 ? "" : "s");
+      ImGui::TextColored(ImVec4(1.0f, 0.3f, 0.3f, 1.0f), "check FAILED: %s",
+                         plural(static_cast<long long>(s.violation_count), "violation").c_str());
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.5f, 0.5f, 1.0f));
       for (const std::string& line : s.violation_lines) ImGui::TextWrapped("%s", line.c_str());
       ImGui::PopStyleColor();

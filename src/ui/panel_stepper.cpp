@@ -5,6 +5,7 @@
 // (an element, a cell, a list, the first pair of an element).
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -33,6 +34,7 @@ class StepperPanel final : public Panel {
   [[nodiscard]] bool open_by_default() const override { return false; }
   [[nodiscard]] float width() const override { return 290.0f; }
   [[nodiscard]] int priority() const override { return 30; }
+  [[nodiscard]] int column_order() const override { return 0; }
 
   void draw(UiContext& c) override {
     StepperSession& s = *session_;
@@ -60,11 +62,16 @@ class StepperPanel final : public Panel {
     draw_phases(s);
     draw_long_trace(c, s);
     ImGui::Separator();
+    // What the operation does, in a fixed height (scrolling when longer), so that the Stepper keeps
+    // its height from one operation, frame or algorithm to the next and the panels under it stay put.
+    ImGui::BeginChild("##operation", ImVec2(0, 3.0f * ImGui::GetTextLineHeightWithSpacing()), false);
     if (const TraceEvent* e = st.current()) {
       ImGui::TextWrapped("%s", describe_event(s, *e).c_str());
     } else {
       ImGui::TextDisabled("before the first operation");
     }
+    ImGui::EndChild();
+    // Shown only while a violation is being explained: then it may take the room it needs.
     if (!s.target_status().empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.55f, 0.55f, 1.0f));
       ImGui::TextWrapped("violation: %s", s.target_status().c_str());
@@ -121,8 +128,9 @@ class StepperPanel final : public Panel {
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("go to operation K (type, then Enter)");
     // A pair of arrows: the operation before / after on the selected element, or cell.
+    const float arrow = ImGui::GetFrameHeight();
     const auto arrows = [&](const char* label, bool cell, const char* tooltip) {
-      ImGui::SameLine();
+      same_line_if_fits(ImGui::CalcTextSize(label).x + 2 * (arrow + ImGui::GetStyle().ItemSpacing.x));
       ImGui::TextDisabled("%s", label);
       ImGui::PushID(label);
       ImGui::SameLine();
@@ -134,7 +142,7 @@ class StepperPanel final : public Panel {
     };
     arrows("elem", false, "the operation before/after on the selected element (PageUp/PageDown)");
     arrows("cell", true, "the operation before/after on the selected cell (Shift+PageUp/PageDown)");
-    ImGui::SameLine();
+    same_line_if_fits(arrow + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("follow").x);
     ImGui::Checkbox("follow", &c.state.follow_operation);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the camera follows the current operation");
   }
@@ -178,7 +186,10 @@ class StepperPanel final : public Panel {
   // the playback speed; the keys in a tooltip. Kept compact: the column shares the display's height.
   void draw_transport(StepperSession& s) {
     Stepper& st = s.stepper();
-    const ImVec2 b(30, 0);
+    // Six arrow buttons and Play share the width: 30 px each where there is room, else narrower.
+    const float spacing = ImGui::GetStyle().ItemSpacing.x;
+    const float play = button_width("Pause");
+    const ImVec2 b(std::clamp((ImGui::GetContentRegionAvail().x - play - 6 * spacing) / 6.0f, 22.0f, 30.0f), 0);
     if (ImGui::Button("|<", b)) st.seek(0);
     ImGui::SameLine();
     if (ImGui::Button("<<", b)) st.prev_phase();
@@ -199,11 +210,17 @@ class StepperPanel final : public Panel {
     char label[96];
     std::snprintf(label, sizeof label, "%llu / %llu  (%s, frame %lld)", static_cast<unsigned long long>(pos),
                   static_cast<unsigned long long>(hi), s.algorithm().c_str(), static_cast<long long>(s.frame()));
+    // A scrubber needs its grab: a thin, see-through one, so that the text over it stays readable.
     ImGui::SetNextItemWidth(-1);
+    ImGui::PushStyleVar(ImGuiStyleVar_GrabMinSize, 4.0f);
+    ImGui::PushStyleColor(ImGuiCol_SliderGrab, ImVec4(0.45f, 0.65f, 1.0f, 0.35f));
+    ImGui::PushStyleColor(ImGuiCol_SliderGrabActive, ImVec4(0.55f, 0.75f, 1.0f, 0.5f));
     if (ImGui::SliderScalar("##scrub", ImGuiDataType_U64, &pos, &lo, &hi, label)) {
       st.pause();
       st.seek(pos);
     }
+    ImGui::PopStyleColor(2);
+    ImGui::PopStyleVar();
   }
 
   void draw_phases(StepperSession& s) {
@@ -235,8 +252,9 @@ class StepperPanel final : public Panel {
     }
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1);
-    if (ImGui::SliderFloat("##speed", &speed, 0.5f, 5000.0f, "%.1f events/s", ImGuiSliderFlags_Logarithmic))
+    if (ImGui::DragFloat("##speed", &speed, 16.0f, 0.5f, 5000.0f, "%.1f events/s", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
       st.set_speed(speed);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("play speed, 0.5 to 5000 operations a second: drag sideways, or double-click and type");
   }
 
   void draw_breakpoint(StepperSession& s) {
@@ -252,7 +270,7 @@ class StepperPanel final : public Panel {
     switch (b.kind) {
       case BreakKind::Element:
       case BreakKind::FirstPairOf:
-        ImGui::SameLine();
+        same_line_if_fits(90);
         input_index("##element", b.element, book);
         break;
       case BreakKind::Cell: {
@@ -300,12 +318,12 @@ class StepperPanel final : public Panel {
       st.pause();
       s.status = st.run_back_to(b) ? "" : "no earlier event for this breakpoint";
     }
-    ImGui::SameLine();
+    same_line_if_fits(button_width("run to >>"));
     if (ImGui::Button("run to >>")) {
       st.pause();
       s.status = st.run_to(b) ? "" : "no later event for this breakpoint";
     }
-    ImGui::SameLine();
+    same_line_if_fits(ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("stop play").x);
     ImGui::Checkbox("stop play", &s.break_while_playing);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("playback stops at this breakpoint");
     st.set_play_breakpoint(s.break_while_playing ? std::optional<Breakpoint>(b) : std::nullopt);

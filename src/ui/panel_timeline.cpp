@@ -10,6 +10,7 @@
 #include <cfloat>
 #include <cstdio>
 
+#include "io/plural.hpp"
 #include "ui/panels.hpp"
 
 namespace nbscope::ui {
@@ -96,15 +97,18 @@ class TimelinePanel final : public Panel {
     // The memory the kept frames take, and the budget (a click opens the setting).
     char mem[96];
     if (s.replaying) {
-      std::snprintf(mem, sizeof mem, "%zu recorded frames", s.timeline->size());
+      std::snprintf(mem, sizeof mem, "%s", plural(static_cast<long long>(s.timeline->size()), "recorded frame").c_str());
     } else if (s.history_budget == 0) {
       std::snprintf(mem, sizeof mem, "no past frames kept (budget 0 MB)");
     } else {
       std::snprintf(mem, sizeof mem, "history %.1f / %.0f MB", static_cast<double>(s.history_bytes) / 1048576.0,
                     static_cast<double>(s.history_budget) / 1048576.0);
     }
+    // Right-aligned after the frame text, or on a line of its own when the dock is too narrow.
     const float w = ImGui::CalcTextSize(mem).x + 2 * ImGui::GetStyle().FramePadding.x;
-    ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowContentRegionMax().x - w));
+    const float after = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x + ImGui::GetStyle().ItemSpacing.x;
+    const float right = ImGui::GetWindowContentRegionMax().x - w;
+    if (after <= right) ImGui::SameLine(right);
     if (ImGui::SmallButton(mem) && !s.replaying) ImGui::OpenPopup("budget");
     if (!s.replaying) {
       tooltip(s.history_dropped > 0 ? "the oldest frames' states were dropped to stay within the budget; their summaries stay"
@@ -112,12 +116,12 @@ class TimelinePanel final : public Panel {
     }
     if (ImGui::BeginPopup("budget")) {
       int mb = static_cast<int>(c.state.history_budget_mb);
-      ImGui::SetNextItemWidth(160);
-      if (ImGui::SliderInt("MB kept", &mb, 16, 4096, "%d MB", ImGuiSliderFlags_Logarithmic)) {
+      ImGui::SetNextItemWidth(120);
+      if (ImGui::DragInt("kept (16 to 4096)", &mb, 13.0f, 16, 4096, "%d MB", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
         c.state.history_budget_mb = mb;
         c.requests.history_budget_mb = mb;
       }
-      ImGui::TextDisabled("%lld frames dropped so far", static_cast<long long>(s.history_dropped));
+      ImGui::TextDisabled("%s dropped so far", plural(static_cast<long long>(s.history_dropped), "frame").c_str());
       ImGui::EndPopup();
     }
   }
@@ -200,11 +204,11 @@ class TimelinePanel final : public Panel {
       const FrameSummary* near = nearest(frames, want);
       if (near != nullptr && hovered) {
         if (near->checked) {
-          ImGui::SetTooltip("frame %lld%s\nA = %lld pairs, detection %s ms\n%lld violations\n(light: kept frames; dark: "
+          ImGui::SetTooltip("frame %lld%s\nA = %s, detection %s ms\n%s\n(light: kept frames; dark: "
                             "dropped by the budget; white: shown; green: newest)",
                             static_cast<long long>(near->frame), near->kept ? "" : " (not kept: the budget dropped it)",
-                            static_cast<long long>(near->pairs),
-                            format_ms(s, near->detection_ms).c_str(), static_cast<long long>(near->violations));
+                            plural(static_cast<long long>(near->pairs), "pair").c_str(), format_ms(s, near->detection_ms).c_str(),
+                            plural(static_cast<long long>(near->violations), "violation").c_str());
         } else {
           ImGui::SetTooltip("frame %lld%s\nnot checked yet", static_cast<long long>(near->frame),
                             near->kept ? "" : " (not kept)");

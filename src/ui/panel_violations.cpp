@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <string>
 
+#include "io/plural.hpp"
 #include "ui/panels.hpp"
 
 namespace nbscope::ui {
@@ -29,9 +30,8 @@ class ViolationsPanel final : public Panel {
     const SimView& s = c.sim;
     const bool book = c.state.book_numbering;
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(kRed, "%lld violation%s in %lld frame%s", static_cast<long long>(s.violations_total),
-                       s.violations_total == 1 ? "" : "s", static_cast<long long>(s.violation_frames),
-                       s.violation_frames == 1 ? "" : "s");
+    ImGui::TextColored(kRed, "%s in %s", plural(s.violations_total, "violation").c_str(),
+                       plural(s.violation_frames, "frame").c_str());
     if (!s.fault_name.empty()) ImGui::TextDisabled("expected: the fault %s is injected", s.fault_name.c_str());
     ImGui::PopTextWrapPos();
 

@@ -59,6 +59,17 @@ Settings load_settings(const std::string& path, std::string& warning) {
   }
 }
 
+std::optional<std::array<double, 3>> camera_to_save(const render::Camera& camera) {
+  if (camera.at_home()) return std::nullopt;
+  return std::array<double, 3>{camera.centre().x(), camera.centre().y(), camera.pixels_per_metre()};
+}
+
+bool restore_camera(const Settings& s, const std::string& scene, render::Camera& camera) {
+  if (!s.camera || !s.last_scene || *s.last_scene != scene) return false;
+  camera.set({(*s.camera)[0], (*s.camera)[1]}, (*s.camera)[2]);
+  return true;
+}
+
 void save_settings(const std::string& path, const Settings& s) {
   if (path.empty()) throw Error("settings: no config directory (neither XDG_CONFIG_HOME nor HOME is set)");
   nlohmann::json j;

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "render/camera.hpp"
 #include "render/overlays.hpp"
 
 namespace nbscope::ui {
@@ -16,7 +17,9 @@ struct Settings {
   std::map<std::string, bool> panels;
   std::optional<std::string> last_scene;
   std::optional<std::string> algorithm;
-  std::optional<std::array<double, 3>> camera;  // centre x, y and pixels per metre, for last_scene
+  // Centre x, y and pixels per metre, for last_scene: only a camera the user panned or zoomed (a
+  // fitted one is fitted again at the next start, into the panels that start opens).
+  std::optional<std::array<double, 3>> camera;
   double speed = 1.0;
   std::int64_t history_mb = 256;  // the Timeline's memory budget for kept frames
 };
@@ -26,6 +29,12 @@ std::string settings_path();
 // Reads `path`. A missing file gives the defaults; an unreadable or malformed one gives the defaults
 // and a one-line `warning` ("<path>: ... (ignored)"), since a bad settings file must not stop the app.
 Settings load_settings(const std::string& path, std::string& warning);
+// The camera to save: none while it is where the last fit (or Home) put it, so that the next start
+// fits the scene and keeps refitting it as panels open and close; else its centre and scale.
+std::optional<std::array<double, 3>> camera_to_save(const render::Camera& camera);
+// Puts the saved camera back when it was saved for `scene` (absolute path), after the start's fit;
+// true when it did. A restored camera is the user's: the view stays there until Home.
+bool restore_camera(const Settings& s, const std::string& scene, render::Camera& camera);
 // Writes `s` to `path` atomically, creating its directory; Error("<path>: cannot write: ...").
 void save_settings(const std::string& path, const Settings& s);
 

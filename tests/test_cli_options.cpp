@@ -1,0 +1,80 @@
+// The option table behind "gui: --report is not an option of gui (it is one of headless, replay)"
+// agrees with --help: every option --help lists under a command is in that command's row, and
+// every option of a row is in --help under that command.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "app/cli.hpp"
+#include "app/help.hpp"
+#include "core/error.hpp"
+
+namespace nbscope {
+namespace {
+
+// The "--name" words of --help, by the command whose section they are in; the rendering flags'
+// section counts for gui, headless and replay.
+std::map<std::string, std::set<std::string>> options_in_help() {
+  std::map<std::string, std::set<std::string>> out;
+  std::istringstream in(kHelpText);
+  std::string line, section;
+  const std::regex option("--[a-z][a-z0-9-]*");
+  while (std::getline(in, line)) {
+    if (line.rfind("  nbscope ", 0) == 0) {
+      const std::string word = line.substr(10, line.find(' ', 10) - 10);
+      section = word.rfind("[gui]", 0) == 0 ? "gui" : word;
+    } else if (line.rfind("  rendering flags", 0) == 0) {
+      section = "rendering";
+    } else if (line.rfind("  ", 0) != 0) {
+      section.clear();
+    }
+    if (section.empty() || section == "algorithms" || section == "--help") continue;
+    for (std::sregex_iterator it(line.begin(), line.end(), option), end; it != end; ++it) {
+      if (section == "rendering") {
+        for (const char* c : {"gui", "headless", "replay"}) out[c].insert(it->str());
+      } else {
+        out[section].insert(it->str());
+      }
+    }
+  }
+  return out;
+}
+
+TEST(CliOptions, TheTableAgreesWithHelp) {
+  const auto help = options_in_help();
+  ASSERT_EQ(help.size(), command_options().size());
+  for (const auto& [command, options] : command_options()) {
+    ASSERT_TRUE(help.count(command)) << command;
+    std::set<std::string> table(options.begin(), options.end());
+    for (const std::string& o : help.at(command)) EXPECT_TRUE(table.count(o)) << command << " " << o << " in --help, not in the table";
+    for (const std::string& o : table) EXPECT_TRUE(help.at(command).count(o)) << command << " " << o << " in the table, not in --help";
+  }
+}
+
+std::string error_of(std::vector<std::string> args, const std::string& command, bool positional) {
+  Args a(std::move(args), command);
+  a.value("--scene");
+  try {
+    if (positional) a.positional();
+    a.finish();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// An option is named by its name, not blamed through its value (left over as a positional).
+TEST(CliOptions, AnOptionNotTakenIsNamed) {
+  EXPECT_EQ(error_of({"--report", "x.json"}, "gui", true), "gui: --report is not an option of gui (it is one of headless, replay)");
+  EXPECT_EQ(error_of({"--scene", "s.json", "--report=x.json"}, "gui", false),
+            "gui: --report is not an option of gui (it is one of headless, replay)");
+  EXPECT_EQ(error_of({"--fast", "yes"}, "pairs", false), "pairs: --fast is not an option of pairs (see nbscope --help)");
+  EXPECT_EQ(error_of({"--gl", "osmesa", "r.nbsrec"}, "replay", true), "replay: --gl does not apply here (see nbscope --help)");
+  EXPECT_EQ(error_of({"extra"}, "gui", false), "extra: unexpected argument (see nbscope --help)");
+}
+
+}  // namespace
+}  // namespace nbscope
