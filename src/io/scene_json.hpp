@@ -25,6 +25,8 @@
 #include <string>
 #include <vector>
 
+#include "core/grid.hpp"
+
 namespace nbscope {
 
 // Most bodies one scene may create (explicit bodies plus everything its generators make).
@@ -121,12 +123,10 @@ struct Scene {
   int velocity_iterations = 8;
   int position_iterations = 3;
   bool continuous = true;
-  std::optional<double> cell_size;
-  std::optional<Vec2> origin;
-  std::optional<std::array<std::int64_t, 2>> cells;
+  GridOptions grid;                  // cell_size, origin, cells keys (2D: origin z 0, cells nz 1)
   std::vector<BodySpec> bodies;
   std::vector<GeneratorSpec> generators;
-  std::string cell_size_where;       // "file:line: cell_size: " when cell_size is set, for later checks
+  std::string cell_size_where;       // "file:line: cell_size: " when grid.cell_size is set, for later checks
 
   // Bodies the scene creates in all: explicit ones plus every generator's count.
   [[nodiscard]] std::int64_t total_bodies() const;
