@@ -19,6 +19,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/recording.hpp"
+#include "io/report_json.hpp"
 
 namespace nbscope {
 

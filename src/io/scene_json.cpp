@@ -18,40 +18,6 @@
 
 namespace nbscope {
 
-const char* body_type_name(BodyType type) {
-  switch (type) {
-    case BodyType::Static: return "static";
-    case BodyType::Kinematic: return "kinematic";
-    case BodyType::Dynamic: return "dynamic";
-  }
-  return "?";
-}
-
-const char* shape_kind_name(ShapeKind kind) {
-  switch (kind) {
-    case ShapeKind::Circle: return "circle";
-    case ShapeKind::Box: return "box";
-    case ShapeKind::Polygon: return "polygon";
-  }
-  return "?";
-}
-
-const char* generator_kind_name(GeneratorKind kind) {
-  switch (kind) {
-    case GeneratorKind::Grid: return "grid";
-    case GeneratorKind::RandomBox: return "random_box";
-    case GeneratorKind::Pile: return "pile";
-    case GeneratorKind::Emitter: return "emitter";
-  }
-  return "?";
-}
-
-std::int64_t Scene::total_bodies() const {
-  std::int64_t n = static_cast<std::int64_t>(bodies.size());
-  for (const GeneratorSpec& g : generators) n += g.count;
-  return n;
-}
-
 namespace {
 
 using nlohmann::json;
