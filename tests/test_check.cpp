@@ -8,6 +8,7 @@
 #include "check/faults.hpp"
 #include "core/brute.hpp"
 #include "core/error.hpp"
+#include "io/scene_json.hpp"
 
 namespace nbscope {
 namespace {

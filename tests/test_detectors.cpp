@@ -165,6 +165,30 @@ TEST_P(EveryDetector, TracedRunFindsTheSamePairs) {
   }
 }
 
+// The registry's declarations are true: a detector that says it traces records events, one that
+// says it has lists pushes elements onto them (and one that says neither records neither), on a
+// small random scene with contacts; its declared dimensions are the ones it supports.
+TEST_P(EveryDetector, DeclaresWhatATracedRunRecords) {
+  const DetectorInfo& info = detector_info(GetParam());
+  auto detector = info.make();
+  EXPECT_EQ(info.dim2, detector->supports_dim(2));
+  EXPECT_EQ(info.dim3, detector->supports_dim(3));
+  for (int dim : {2, 3}) {
+    if (!detector->supports_dim(dim)) continue;
+    const Elements e = testdata::make_layout(Layout::Dense, 60, dim, 7);
+    PairList pairs;
+    TraceLog log;
+    detector->detect_traced(e, DetectOptions{}, pairs, log);
+    ASSERT_FALSE(pairs.empty()) << dim << "D: the scene should have contacts";
+    bool pushes = false;
+    for (const TraceEvent& ev : log.events()) pushes = pushes || ev.op == TraceOp::Push;
+    EXPECT_EQ(info.traces, !log.events().empty()) << dim << "D: declared traces = " << info.traces;
+    EXPECT_EQ(info.has_lists, pushes) << dim << "D: declared has_lists = " << info.has_lists;
+  }
+}
+
+TEST(Registry, UnknownNameIsAnError) { EXPECT_THROW(detector_info("no-such-algorithm"), Error); }
+
 TEST_P(EveryDetector, StopsAtThePairLimit) {
   auto detector = make_detector(GetParam());
   const int dim = detector->supports_dim(2) ? 2 : 3;

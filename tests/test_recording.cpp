@@ -57,10 +57,10 @@ Elements awkward_elements(std::uint64_t seed, int n) {
 TEST(Recording, WriterThenReaderGivesBitIdenticalFramesAndGrid) {
   const std::string dir = temp_dir("roundtrip");
   const std::string path = dir + "/run.nbsrec";
-  RecordingGrid grid;
+  GridOptions grid;
   grid.cell_size = 1.0 / 3.0 * 7;  // not a short decimal
-  grid.origin = std::array<double, 2>{-0.1, 1e-300};
-  grid.cells = std::array<std::int64_t, 2>{10, 12};
+  grid.origin = std::array<double, 3>{-0.1, 1e-300, 0};
+  grid.cells = std::array<std::int64_t, 3>{10, 12, 1};
   std::vector<Elements> frames;
   {
     RecordingWriter w(path, grid, "test\nsecond comment line");

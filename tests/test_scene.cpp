@@ -31,9 +31,9 @@ TEST(Scene, DefaultsOfAnEmptyScene) {
   EXPECT_EQ(s.velocity_iterations, 8);
   EXPECT_EQ(s.position_iterations, 3);
   EXPECT_TRUE(s.continuous);
-  EXPECT_FALSE(s.cell_size);
-  EXPECT_FALSE(s.origin);
-  EXPECT_FALSE(s.cells);
+  EXPECT_FALSE(s.grid.cell_size);
+  EXPECT_FALSE(s.grid.origin);
+  EXPECT_FALSE(s.grid.cells);
   EXPECT_TRUE(s.bodies.empty());
   EXPECT_EQ(s.total_bodies(), 0);
 }
@@ -66,9 +66,9 @@ TEST(Scene, EveryField) {
   EXPECT_EQ(s.name, "all");
   EXPECT_EQ(s.sub_steps, 4);
   EXPECT_FALSE(s.continuous);
-  EXPECT_EQ(*s.cell_size, 2.5);
-  EXPECT_EQ(s.origin->y, -2);
-  EXPECT_EQ((*s.cells)[1], 12);
+  EXPECT_EQ(*s.grid.cell_size, 2.5);
+  EXPECT_EQ((*s.grid.origin)[1], -2);
+  EXPECT_EQ((*s.grid.cells)[1], 12);
   ASSERT_EQ(s.bodies.size(), 4u);
   EXPECT_EQ(s.bodies[0].type, BodyType::Static);
   EXPECT_EQ(s.bodies[0].fixtures[0].kind, ShapeKind::Box);

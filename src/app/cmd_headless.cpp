@@ -20,6 +20,7 @@
 #include "io/atomic_file.hpp"
 #include "io/plural.hpp"
 #include "io/recording.hpp"
+#include "io/report_json.hpp"
 
 namespace nbscope {
 
@@ -370,12 +371,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   std::unique_ptr<RecordingWriter> recorder;
   std::optional<InterruptGuard> interrupts;
   if (o.record) {
-    const Scene& sc = loop.scene();
-    RecordingGrid grid;
-    grid.cell_size = sc.cell_size;
-    if (sc.origin) grid.origin = std::array<double, 2>{sc.origin->x, sc.origin->y};
-    grid.cells = sc.cells;
-    recorder = std::make_unique<RecordingWriter>(*o.record, grid, std::string("nbscope ") + kVersion + " headless --record: scene " + o.scene);
+    recorder = std::make_unique<RecordingWriter>(*o.record, loop.scene().grid, std::string("nbscope ") + kVersion + " headless --record: scene " + o.scene);
     g_interrupted = 0;
     interrupts.emplace();
     recorder->write_frame(loop.frame(), loop.time(), loop.elements());

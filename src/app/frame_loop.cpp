@@ -3,6 +3,7 @@
 //
 // Index: scene | recording | configuration | one frame | accessors | drag.
 #include "app/frame_loop_impl.hpp"
+#include "io/scene_json.hpp"
 
 namespace nbscope {
 

@@ -32,13 +32,13 @@
 
 #include "app/history.hpp"
 #include "check/faults.hpp"
+#include "check/report.hpp"
 #include "core/detector.hpp"
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
 #include "core/frame_trace.hpp"
 #include "io/recording.hpp"
-#include "io/report_json.hpp"
-#include "io/scene_json.hpp"
+#include "physics/scene.hpp"
 #include "physics/shapes.hpp"
 
 namespace nbscope {

@@ -225,20 +225,18 @@ struct FrameLoop::Impl {
 
   void build(const Scene& s) {
     DetectOptions opts;
-    if (s.cell_size) opts.grid.cell_size = *s.cell_size;
-    if (s.origin) opts.grid.origin = std::array<double, 3>{s.origin->x, s.origin->y, 0};
-    if (s.cells) opts.grid.cells = std::array<std::int64_t, 3>{(*s.cells)[0], (*s.cells)[1], 1};
+    opts.grid = s.grid;
     auto fresh = std::make_unique<PhysicsWorld>(s);
     // A pinned cell size must hold the largest element from the start and every element an
     // emitter will add (the grid would refuse it mid-run, far from the field to fix).
-    if (s.cell_size) {
+    if (s.grid.cell_size) {
       char d[64];
-      if (fresh->elements().size() > 0 && *s.cell_size < 2 * fresh->elements().max_radius()) {
+      if (fresh->elements().size() > 0 && *s.grid.cell_size < 2 * fresh->elements().max_radius()) {
         std::snprintf(d, sizeof d, "%.6g", 2 * fresh->elements().max_radius());
         throw Error(s.cell_size_where + "smaller than the largest element's diameter " + d);
       }
       std::string emitter;
-      if (const double r = fresh->largest_emitted_radius(emitter); *s.cell_size < 2 * r) {
+      if (const double r = fresh->largest_emitted_radius(emitter); *s.grid.cell_size < 2 * r) {
         std::snprintf(d, sizeof d, "%.6g", 2 * r);
         throw Error(s.cell_size_where + "smaller than the diameter " + d + " of the elements emitted by " +
                     emitter.substr(0, emitter.size() - 2));
@@ -311,15 +309,7 @@ struct FrameLoop::Impl {
     Scene s;
     s.path = rec->path;
     s.name = std::filesystem::path(rec->path).stem().string();
-    if (rec->grid.cell_size) opts.grid.cell_size = s.cell_size = *rec->grid.cell_size;
-    if (rec->grid.origin) {
-      s.origin = Vec2{(*rec->grid.origin)[0], (*rec->grid.origin)[1]};
-      opts.grid.origin = std::array<double, 3>{s.origin->x, s.origin->y, 0};
-    }
-    if (rec->grid.cells) {
-      s.cells = rec->grid.cells;
-      opts.grid.cells = std::array<std::int64_t, 3>{(*s.cells)[0], (*s.cells)[1], 1};
-    }
+    opts.grid = s.grid = rec->grid;
     // The recorded time per frame, for the panels (the recording's own times are shown per frame).
     const RecordedFrame& first = rec->frames.front();
     const RecordedFrame& last = rec->frames.back();

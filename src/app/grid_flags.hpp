@@ -1,6 +1,5 @@
 // nbscope app: the grid-pinning flags shared by `pairs` and `dump` (--cell-size, --origin, --cells).
 #pragma once
-#include <optional>
 #include <string>
 
 #include "app/cli.hpp"
@@ -8,15 +7,14 @@
 
 namespace nbscope {
 
-// The flags as given; checked against the elements' dimension once those are read.
+// The flags parsed into the grid they pin, with what is needed to check them against the elements'
+// dimension once those are read.
 struct GridFlags {
-  std::optional<double> cell_size;
-  std::optional<std::string> origin;
-  std::optional<std::string> cells;
-  double origin_values[3] = {0, 0, 0};
-  double cell_counts[3] = {1, 1, 1};
-  int origin_dim = 0;
-  int cells_dim = 0;
+  GridOptions grid;         // 2 values given: origin z 0, cells nz 1
+  std::string origin_text;  // --origin as given, for messages
+  std::string cells_text;   // --cells as given, for messages
+  int origin_dim = 0;       // how many values --origin gave (0: not given)
+  int cells_dim = 0;        // how many values --cells gave (0: not given)
 };
 
 // Takes --cell-size D, --origin X,Y[,Z] and --cells NX,NY[,NZ] from `args`; Error on malformed values.

@@ -15,7 +15,7 @@
 #include <optional>
 #include <vector>
 
-#include "io/report_json.hpp"
+#include "check/report.hpp"
 
 namespace nbscope {
 

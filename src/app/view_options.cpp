@@ -6,22 +6,10 @@
 
 #include "core/detector.hpp"
 #include "core/error.hpp"
-#include "core/trace.hpp"
 
 namespace nbscope {
 
 namespace {
-
-// True when `name`'s traced detection records operations: two touching circles are enough to see.
-bool records_operations(const std::string& name) {
-  Elements e;
-  e.push_back(0, 0, 0, 0.5);
-  e.push_back(0.6, 0, 0, 0.5);
-  PairList pairs;
-  TraceLog log;
-  make_detector(name)->detect_traced(e, DetectOptions{}, pairs, log);
-  return !log.events().empty();
-}
 
 // "X,Y,PPM": three finite numbers, the scale positive. (The generic point parser would name the
 // wrong format in its error.)
@@ -51,10 +39,10 @@ void check_step_algorithm(const ViewOptions& options, const std::string& algorit
   if (!options.step) return;
   if (algorithm == "all" || algorithm.find(',') != std::string::npos)
     throw Error("--step: steps through one algorithm's detection, but --algorithm " + algorithm + " names several: give one");
-  if (records_operations(algorithm)) return;
+  if (detector_info(algorithm).traces) return;
   std::string stepped;
   for (const DetectorInfo& d : detector_infos())
-    if (d.dim2 && d.name != algorithm && records_operations(d.name)) stepped += (stepped.empty() ? "" : ", ") + d.name;
+    if (d.dim2 && d.traces) stepped += (stepped.empty() ? "" : ", ") + d.name;
   throw Error("--step: " + algorithm + " records no operations to step through (no book arrays, no trace); step one of " +
               stepped);
 }

@@ -7,20 +7,29 @@
 
 namespace nbscope {
 
+namespace {
+// The detectors the reference policy names (DESIGN.md "Cross-checks"): each is chosen for what
+// it is, not for a capability another detector could share.
+constexpr std::string_view kBrute = "brute";  // the reference up to --brute-limit elements
+constexpr std::string_view kSort = "sort";    // the plainest cell method, above the limit
+constexpr std::string_view kNbs = "nbs";      // the reference of sort itself
+constexpr std::string_view kBox2d = "box2d";  // the last resort, physics' own
+}  // namespace
+
 FrameChecker::FrameChecker(CheckOptions options) : options_(options) {}
 FrameChecker::~FrameChecker() = default;
 
 std::string FrameChecker::reference_for(std::int64_t n, std::string_view algorithm) const {
-  if (algorithm != "brute" && n <= options_.brute_limit) return "brute";
+  if (algorithm != kBrute && n <= options_.brute_limit) return std::string(kBrute);
   // Above the limit: sort (the plainest cell method: sort by cell key, scan neighbour cells), or nbs
   // when sort is the one under test; box2d if the registry has no sort.
   static const bool have_sort = [] {
     for (const DetectorInfo& d : detector_infos())
-      if (d.name == "sort") return true;
+      if (d.name == kSort) return true;
     return false;
   }();
-  if (algorithm != "sort" && have_sort) return "sort";
-  return algorithm != "nbs" ? "nbs" : "box2d";
+  if (algorithm != kSort && have_sort) return std::string(kSort);
+  return std::string(algorithm != kNbs ? kNbs : kBox2d);
 }
 
 std::string FrameChecker::reference_policy() const {
@@ -40,7 +49,7 @@ Detector& FrameChecker::reference(const std::string& name) {
   for (const auto& d : references_)
     if (d->name() == name) return *d;
   // box2d is physics' own; make it directly so the check does not depend on registration order.
-  references_.push_back(name == "box2d" ? std::make_unique<Box2dDetector>() : make_detector(name));
+  references_.push_back(name == kBox2d ? std::make_unique<Box2dDetector>() : make_detector(name));
   return *references_.back();
 }
 

@@ -20,8 +20,8 @@
 #include <string_view>
 #include <vector>
 
+#include "check/report.hpp"
 #include "core/detector.hpp"
-#include "io/report_json.hpp"
 #include "physics/box2d_frame.hpp"
 
 namespace nbscope {

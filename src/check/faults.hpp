@@ -7,9 +7,9 @@
 #include <string_view>
 #include <vector>
 
+#include "check/report.hpp"
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
-#include "io/report_json.hpp"
 
 namespace nbscope {
 

@@ -31,10 +31,12 @@ std::string detector_names() {
   return s;
 }
 
-std::unique_ptr<Detector> make_detector(std::string_view name) {
+const DetectorInfo& detector_info(std::string_view name) {
   for (const DetectorInfo& d : registry())
-    if (d.name == name) return d.make();
+    if (d.name == name) return d;
   throw Error("unknown algorithm '" + std::string(name) + "' (known: " + detector_names() + ")");
 }
+
+std::unique_ptr<Detector> make_detector(std::string_view name) { return detector_info(name).make(); }
 
 }  // namespace nbscope

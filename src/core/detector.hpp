@@ -80,12 +80,21 @@ void DimensionalDetector<Self>::detect_traced(const Elements& elements, const De
   dispatch(elements, options, out_pairs, out_trace);
 }
 
-// What the registry knows of one algorithm.
+// What the registry knows of one algorithm: its name, and what it can do, so that callers ask
+// for a capability instead of comparing names. tests/test_detectors.cpp holds every entry to its
+// word by running it traced.
 struct DetectorInfo {
   std::string name;
   std::string summary;  // one line for `nbscope algorithms`
-  bool dim2 = true;
-  bool dim3 = false;
+  bool dim2 = true;     // handles 2D elements (Detector::supports_dim(2))
+  bool dim3 = false;    // handles 3D elements (Detector::supports_dim(3))
+  // detect_traced() records the book's operations (TraceLog events, never none on a scene with
+  // a contact), which the stepper walks and `--step` needs. False: it records nothing (box2d).
+  bool traces = false;
+  // It builds singly connected lists, heads + next arrays with elements pushed at the head
+  // (TraceOp::Push events), which the lists overlay draws as arrow chains. False for sort (runs
+  // of equal cell keys, no lists), brute and box2d (no arrays at all).
+  bool has_lists = false;
   std::function<std::unique_ptr<Detector>()> make;
 };
 
@@ -93,6 +102,9 @@ struct DetectorInfo {
 const std::vector<DetectorInfo>& detector_infos();
 // Adds an algorithm defined outside core (e.g. physics' "box2d"); a second add of a name is ignored.
 void register_detector(DetectorInfo info);
+// The registry entry called `name`; throws Error naming the known ones if there is none. The
+// reference holds until the next register_detector().
+const DetectorInfo& detector_info(std::string_view name);
 // Creates the detector called `name`; throws Error naming the known ones if there is none.
 std::unique_ptr<Detector> make_detector(std::string_view name);
 // "brute, nbs, ..." for messages.

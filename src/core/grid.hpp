@@ -14,6 +14,9 @@ namespace nbscope {
 inline constexpr std::int64_t kMaxCellsPerSide = std::int64_t{1} << 24;
 
 // How the grid is pinned. Unset fields are derived from the data each frame (DESIGN.md "Cells").
+// The one description of a pinned grid: detection options, scene files (Scene::grid), recordings
+// (Recording::grid) and the --cell-size/--origin/--cells flags all hold one. 2D grids read the
+// first two entries of `origin` and `cells`; by convention the third is 0 and 1 there.
 struct GridOptions {
   std::optional<double> cell_size;              // default: the largest diameter (the book's d)
   std::optional<std::array<double, 3>> origin;  // default: minimum corner of the centres' bounding box

@@ -238,8 +238,9 @@ json dump_json(const DumpSource& src) {
     bytes[a.name] = count * static_cast<std::int64_t>(sizeof(std::int32_t));
   }
   j["bytes"] = bytes;
-  if (log.arrays().empty() || src.grid == nullptr) return j;  // brute and the like: no lists
+  if (log.arrays().empty() || src.grid == nullptr) return j;  // no book arrays (brute, box2d): counts only
 
+  // Each algorithm has its own arrays, so its own keys (DESIGN.md "Command line", `dump`).
   if (src.algorithm == "screen") {
     dump_screen(log, j);
   } else if (src.algorithm == "tree") {

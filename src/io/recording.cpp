@@ -112,11 +112,11 @@ Recording parse_recording(const std::string& text, const std::string& where, std
         rec.grid.cell_size = d;
       } else if (key == "origin") {
         const auto f = two_fields(header_value(words, at, "origin X,Y"), at, "origin", "X,Y");
-        rec.grid.origin = std::array<double, 2>{parse_finite_number(f[0], at, "origin x"), parse_finite_number(f[1], at, "origin y")};
+        rec.grid.origin = std::array<double, 3>{parse_finite_number(f[0], at, "origin x"), parse_finite_number(f[1], at, "origin y"), 0};
       } else {
         const auto f = two_fields(header_value(words, at, "cells NX,NY"), at, "cells", "NX,NY");
-        rec.grid.cells = std::array<std::int64_t, 2>{parse_integer(f[0], at, "cells nx", 1, std::int64_t{1} << 24),
-                                                     parse_integer(f[1], at, "cells ny", 1, std::int64_t{1} << 24)};
+        rec.grid.cells = std::array<std::int64_t, 3>{parse_integer(f[0], at, "cells nx", 1, std::int64_t{1} << 24),
+                                                     parse_integer(f[1], at, "cells ny", 1, std::int64_t{1} << 24), 1};
       }
       continue;
     }
@@ -184,7 +184,7 @@ struct RecordingWriter::Impl {
   }
 };
 
-RecordingWriter::RecordingWriter(const std::string& path, const RecordingGrid& grid, const std::string& comment)
+RecordingWriter::RecordingWriter(const std::string& path, const GridOptions& grid, const std::string& comment)
     : impl_(std::make_unique<Impl>(path)) {
   std::string& b = impl_->buf;
   b = "nbsrec 1\n";

@@ -23,15 +23,9 @@
 #include <vector>
 
 #include "core/elements.hpp"
+#include "core/grid.hpp"
 
 namespace nbscope {
-
-// The grid a recording pins (all unset: derived from each frame's elements).
-struct RecordingGrid {
-  std::optional<double> cell_size;
-  std::optional<std::array<double, 2>> origin;
-  std::optional<std::array<std::int64_t, 2>> cells;
-};
 
 // One recorded frame.
 struct RecordedFrame {
@@ -43,7 +37,7 @@ struct RecordedFrame {
 // A whole recording as read.
 struct Recording {
   std::string path;  // as given
-  RecordingGrid grid;
+  GridOptions grid;  // the grid the header pins (2D: origin z 0, cells nz 1; unset: derived each frame)
   std::vector<RecordedFrame> frames;  // at least one
 };
 
@@ -63,8 +57,8 @@ Recording parse_recording(const std::string& text, const std::string& where,
 class RecordingWriter {
  public:
   // Creates the temporary and writes the "nbsrec 1" line, `comment` (one '#' line per line) and
-  // the header lines of `grid`. Error when the file cannot be created.
-  RecordingWriter(const std::string& path, const RecordingGrid& grid, const std::string& comment);
+  // the header lines of `grid` (its x and y: the format is 2D). Error when the file cannot be created.
+  RecordingWriter(const std::string& path, const GridOptions& grid, const std::string& comment);
   ~RecordingWriter();
   RecordingWriter(const RecordingWriter&) = delete;
   RecordingWriter& operator=(const RecordingWriter&) = delete;

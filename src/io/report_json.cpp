@@ -24,39 +24,6 @@
 
 namespace nbscope {
 
-const char* invariant_name(Invariant invariant) {
-  switch (invariant) {
-    case Invariant::AEqualsR: return "A==R";
-    case Invariant::AInF: return "A-in-F";
-    case Invariant::TInA: return "T-in-A";
-    case Invariant::AabbInCells: return "AABB-in-cells";
-  }
-  return "?";
-}
-
-const char* invariant_description(Invariant invariant) {
-  switch (invariant) {
-    case Invariant::AEqualsR: return "the algorithm's pairs A equal the reference's pairs R";
-    case Invariant::AInF:
-      return "every pair of A that Box2D would consider (its filters applied; with a polygon, the shapes' tight AABBs "
-             "overlapping) "
-             "is in Box2D's contact list F";
-    case Invariant::TInA: return "every pair of shapes touching at the current transforms (T) is in A";
-    case Invariant::AabbInCells:
-      return "every pair whose tight AABBs overlap (world.QueryAABB) lies in the same or neighbouring cells of the "
-             "detector's integerisation";
-  }
-  return "?";
-}
-
-bool needs_box2d(Invariant invariant) { return invariant != Invariant::AEqualsR; }
-
-std::int64_t FrameReport::violation_count() const {
-  std::int64_t n = 0;
-  for (const std::int64_t b : broken) n += b;
-  return n;
-}
-
 namespace {
 
 using nlohmann::json;
@@ -137,19 +104,6 @@ json run_json(const AlgorithmRun& run) {
 }
 
 }  // namespace
-
-bool AlgorithmRun::passed() const {
-  for (const FrameReport& f : frames)
-    if (!f.ok()) return false;
-  return true;
-}
-
-bool RunReport::passed() const {
-  if (rewind && rewind->diverged_at) return false;
-  for (const AlgorithmRun& r : runs)
-    if (!r.passed() || static_cast<std::int64_t>(r.frames.size()) != frames_requested) return false;
-  return !runs.empty();
-}
 
 std::string run_report_json(const RunReport& report) {
   json invariants = json::array();

@@ -18,40 +18,6 @@
 
 namespace nbscope {
 
-const char* body_type_name(BodyType type) {
-  switch (type) {
-    case BodyType::Static: return "static";
-    case BodyType::Kinematic: return "kinematic";
-    case BodyType::Dynamic: return "dynamic";
-  }
-  return "?";
-}
-
-const char* shape_kind_name(ShapeKind kind) {
-  switch (kind) {
-    case ShapeKind::Circle: return "circle";
-    case ShapeKind::Box: return "box";
-    case ShapeKind::Polygon: return "polygon";
-  }
-  return "?";
-}
-
-const char* generator_kind_name(GeneratorKind kind) {
-  switch (kind) {
-    case GeneratorKind::Grid: return "grid";
-    case GeneratorKind::RandomBox: return "random_box";
-    case GeneratorKind::Pile: return "pile";
-    case GeneratorKind::Emitter: return "emitter";
-  }
-  return "?";
-}
-
-std::int64_t Scene::total_bodies() const {
-  std::int64_t n = static_cast<std::int64_t>(bodies.size());
-  for (const GeneratorSpec& g : generators) n += g.count;
-  return n;
-}
-
 namespace {
 
 using nlohmann::json;
@@ -463,15 +429,18 @@ Scene read_scene(const LocatedJson& doc) {
   s.position_iterations = static_cast<int>(r.integer("position_iterations", 3, 1, 1000));
   if (r.has("continuous")) s.continuous = read_bool(doc, r.get("continuous"), r.at("continuous"));
   if (r.has_value("cell_size")) {
-    s.cell_size = read_positive(doc, r.get("cell_size"), r.at("cell_size"), 1e6);
+    s.grid.cell_size = read_positive(doc, r.get("cell_size"), r.at("cell_size"), 1e6);
     s.cell_size_where = doc.locate(r.at("cell_size"));
   }
-  if (r.has_value("origin")) s.origin = read_vec2(doc, r.get("origin"), r.at("origin"), kMaxSceneCoordinate);
+  if (r.has_value("origin")) {
+    const Vec2 origin = read_vec2(doc, r.get("origin"), r.at("origin"), kMaxSceneCoordinate);
+    s.grid.origin = std::array<double, 3>{origin.x, origin.y, 0};
+  }
   if (r.has_value("cells")) {
     const json& c = r.get("cells");
     if (!c.is_array() || c.size() != 2) doc.fail(r.at("cells"), "must be [nx, ny], got " + show(c));
-    s.cells = std::array<std::int64_t, 2>{read_integer(doc, c[0], LocatedJson::element(r.at("cells"), 0), 1, 1 << 24),
-                                          read_integer(doc, c[1], LocatedJson::element(r.at("cells"), 1), 1, 1 << 24)};
+    s.grid.cells = std::array<std::int64_t, 3>{read_integer(doc, c[0], LocatedJson::element(r.at("cells"), 0), 1, 1 << 24),
+                                               read_integer(doc, c[1], LocatedJson::element(r.at("cells"), 1), 1, 1 << 24), 1};
   }
 
   std::int64_t total = 0;

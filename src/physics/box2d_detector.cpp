@@ -92,8 +92,10 @@ void Box2dDetector::detect_traced(const Elements& elements, const DetectOptions&
 }
 
 void register_physics_detectors() {
-  register_detector({"box2d", "Box2D's b2DynamicTree queried with tight AABBs, then the exact circle test", true, false,
-                     [] { return std::make_unique<Box2dDetector>(); }});
+  register_detector({.name = "box2d",
+                     .summary = "Box2D's b2DynamicTree queried with tight AABBs, then the exact circle test",
+                     .dim2 = true, .dim3 = false, .traces = false, .has_lists = false,
+                     .make = [] { return std::make_unique<Box2dDetector>(); }});
 }
 
 }  // namespace nbscope

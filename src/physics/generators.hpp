@@ -1,11 +1,11 @@
-// nbscope physics: turning a scene's generators into bodies (io/scene_json.hpp documents each kind).
+// nbscope physics: turning a scene's generators into bodies (physics/scene.hpp documents each kind).
 // Everything random comes from a seeded generator of our own, so a scene makes the same bodies on
 // every machine and every run.
 #pragma once
 #include <cstdint>
 #include <vector>
 
-#include "io/scene_json.hpp"
+#include "physics/scene.hpp"
 
 namespace nbscope {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "core/elements.hpp"
-#include "io/scene_json.hpp"
+#include "physics/scene.hpp"
 
 namespace nbscope {
 

@@ -14,9 +14,9 @@
 
 #include "core/elements.hpp"
 #include "core/pairs.hpp"
-#include "io/scene_json.hpp"
 #include "physics/box2d_frame.hpp"
 #include "physics/generators.hpp"
+#include "physics/scene.hpp"
 #include "physics/shapes.hpp"
 
 namespace nbscope {

@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "check/report.hpp"
 #include "core/elements.hpp"
 #include "core/frame_trace.hpp"
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
-#include "io/report_json.hpp"
 #include "render/camera.hpp"
 #include "render/lists.hpp"
 #include "render/overlays.hpp"

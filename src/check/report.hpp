@@ -1,0 +1,181 @@
+// nbscope check: the cross-check's results, per frame and per run, as plain structs: the check
+// fills them, the frame loop keeps the current frame's, the GUI draws them and io/report_json
+// writes a headless run's as JSON. Plain data (no Box2D), so io may include it.
+//
+// Index: Invariant | CellIndex, Violation | FrameCounts, FrameTimings, FrameReport | FrameSummary |
+// AlgorithmRun, RunReport.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/pairs.hpp"
+
+namespace nbscope {
+
+// The four per-frame invariants of DESIGN.md "Cross-checks".
+enum class Invariant : std::uint8_t {
+  AEqualsR,     // "A==R": the algorithm's pairs equal the reference's
+  AInF,         // "A-in-F": the pairs of A in Box2D's scope are all in Box2D's contact list
+  TInA,         // "T-in-A": every pair of shapes touching now is in A
+  AabbInCells,  // "AABB-in-cells": every tight-AABB pair lies in neighbouring cells of the detector's grid
+};
+inline constexpr int kInvariantCount = 4;
+// Short name used in reports, summaries and test expectations ("A==R", "A-in-F", "T-in-A", "AABB-in-cells").
+inline const char* invariant_name(Invariant invariant) {
+  switch (invariant) {
+    case Invariant::AEqualsR: return "A==R";
+    case Invariant::AInF: return "A-in-F";
+    case Invariant::TInA: return "T-in-A";
+    case Invariant::AabbInCells: return "AABB-in-cells";
+  }
+  return "?";
+}
+
+// One sentence saying what the invariant checks.
+inline const char* invariant_description(Invariant invariant) {
+  switch (invariant) {
+    case Invariant::AEqualsR: return "the algorithm's pairs A equal the reference's pairs R";
+    case Invariant::AInF:
+      return "every pair of A that Box2D would consider (its filters applied; with a polygon, the shapes' tight AABBs "
+             "overlapping) "
+             "is in Box2D's contact list F";
+    case Invariant::TInA: return "every pair of shapes touching at the current transforms (T) is in A";
+    case Invariant::AabbInCells:
+      return "every pair whose tight AABBs overlap (world.QueryAABB) lies in the same or neighbouring cells of the "
+             "detector's integerisation";
+  }
+  return "?";
+}
+
+// An element's cell as the detector integerised it (book numbering is 1-based; these are 0-based).
+struct CellIndex {
+  std::int32_t ix = 0;
+  std::int32_t iy = 0;
+  friend bool operator==(const CellIndex&, const CellIndex&) = default;
+};
+
+// One broken invariant for one pair in one frame.
+struct Violation {
+  std::int64_t frame = 0;
+  Invariant invariant = Invariant::AEqualsR;
+  Pair pair;
+  CellIndex cell_i, cell_j;  // cells of pair.i and pair.j
+  const char* what = "";     // static text: "missing from A", "extra in A", "not in Box2D's contact list", ...
+};
+
+// Sizes of the frame's sets (see DESIGN.md "Cross-checks").
+struct FrameCounts {
+  std::int64_t elements = 0;
+  std::int64_t bodies = 0;
+  std::int64_t a = 0;           // the algorithm's pairs
+  std::int64_t r = 0;           // the reference's pairs
+  std::int64_t f = 0;           // Box2D's contact list
+  std::int64_t t = 0;           // shapes touching now
+  std::int64_t g = 0;           // tight-AABB pairs
+  std::int64_t a_in_scope = 0;  // pairs of A that A-in-F applies to
+  // Pairs of A left out of A-in-F, by reason (Box2D's filters, then shapes' AABBs apart).
+  std::int64_t same_body = 0, no_dynamic = 0, joint = 0, fixture_filter = 0, beyond_aabb = 0;
+  // Tight-AABB pairs left out of AABB-in-cells: Box2D's float AABBs touch, the elements' exact boxes do not.
+  std::int64_t aabb_float_rounding = 0;
+};
+
+// Wall-clock milliseconds of one frame's three stages.
+struct FrameTimings {
+  double physics_ms = 0;    // Box2D step(s), emitters, elements and AABBs at the new transforms
+  double detection_ms = 0;  // the chosen algorithm (and any injected fault)
+  double check_ms = 0;      // reference detection, Box2D's sets, the four invariants
+};
+
+// Most violations listed per frame; counts stay exact beyond it.
+inline constexpr std::size_t kMaxListedViolationsPerFrame = 200;
+
+// Everything the cross-check found in one frame.
+struct FrameReport {
+  std::int64_t frame = 0;
+  std::uint64_t hash = 0;        // hash_elements() of the frame's elements (core/elements.hpp)
+  bool checked = false;          // the invariants ran (off in the GUI when the user turns checks off)
+  bool box2d_stepped = false;    // A-in-F needs Box2D's contact list, which exists only after a step
+  bool box2d_checks = true;      // A-in-F, T-in-A, AABB-in-cells ran: false for recorded frames (no Box2D world)
+  std::string reference;         // detector that computed R ("brute", "nbs", "box2d")
+  FrameCounts counts;
+  FrameTimings timings;
+  std::array<std::int64_t, kInvariantCount> broken{};  // violations per invariant (exact)
+  std::vector<Violation> violations;                   // the first kMaxListedViolationsPerFrame
+
+  // Total violations of the frame.
+  [[nodiscard]] std::int64_t violation_count() const {
+    std::int64_t n = 0;
+    for (const std::int64_t b : broken) n += b;
+    return n;
+  }
+  // True when checked and nothing broke.
+  [[nodiscard]] bool ok() const { return checked && violation_count() == 0; }
+};
+
+// What the timeline shows of one frame of a run: kept for every frame, whether or not the frame
+// itself can still be shown (the history keeps frames within a memory budget, app/history.hpp).
+struct FrameSummary {
+  std::int64_t frame = 0;
+  double time = 0;
+  std::uint64_t hash = 0;        // hash_elements() of the frame's elements
+  bool kept = false;             // the frame can be shown again (re-detected, re-checked, resumed from)
+  bool checked = false;          // detected and checked (a recorded frame not visited yet: false)
+  std::int64_t elements = 0;
+  std::int64_t pairs = 0;        // |A| of the algorithm shown
+  std::int64_t violations = 0;   // all invariants together
+  float physics_ms = 0, detection_ms = 0, check_ms = 0;
+};
+
+// One algorithm's frames in a headless run.
+struct AlgorithmRun {
+  std::string algorithm;
+  std::vector<FrameReport> frames;   // frames 1..N in order
+
+  // True when every frame was checked and held.
+  [[nodiscard]] bool passed() const {
+    for (const FrameReport& f : frames)
+      if (!f.ok()) return false;
+    return true;
+  }
+};
+
+// A headless run (one or more algorithms on the same frames), for the JSON report.
+struct RunReport {
+  std::string scene_path;
+  std::string scene_name;
+  std::string fault;                 // "none" or the injected fault's name
+  std::string fault_description;
+  std::string reference_policy;      // how R was chosen, in words
+  std::string scope_note;            // which pairs A-in-F applies to, in words (Box2D's filters)
+  std::string note;                  // anything else the reader should know ("" for nothing)
+  std::string source = "scene";      // where the frames came from: "scene" (Box2D) or "recording" (.nbsrec)
+  std::int64_t frames_requested = 0;
+  std::vector<AlgorithmRun> runs;
+  // headless --rewind FROM:TO: the run went back from frame FROM to TO and simulated the frames
+  // after TO again; `diverged_at` is the first of them whose elements differed from the first pass.
+  struct Rewind {
+    std::int64_t from = 0, to = 0;
+    std::optional<std::int64_t> diverged_at;
+  };
+  std::optional<Rewind> rewind;
+  // headless --stop-at-violation: the frame the run stopped on (nullopt: no violation, every frame ran).
+  std::optional<std::int64_t> stopped_at;
+
+  // True when every run ran every requested frame and passed.
+  [[nodiscard]] bool passed() const {
+    if (rewind && rewind->diverged_at) return false;
+    for (const AlgorithmRun& r : runs)
+      if (!r.passed() || static_cast<std::int64_t>(r.frames.size()) != frames_requested) return false;
+    return !runs.empty();
+  }
+};
+
+// The invariants that need Box2D's world (A-in-F, T-in-A, AABB-in-cells), and why recorded frames skip them.
+[[nodiscard]] inline bool needs_box2d(Invariant invariant) { return invariant != Invariant::AEqualsR; }
+inline constexpr const char* kNoBox2dReason =
+    "recorded frames have no Box2D world: A-in-F, T-in-A and AABB-in-cells are not available (not passed: not checked)";
+
+}  // namespace nbscope
