@@ -362,9 +362,10 @@ void GlView::describe_lists(const FrameLoop& loop, const std::shared_ptr<const F
   if (!state_.overlays.lists) return;
   auto& caption = scene.lists_caption;
   if (!trace || lists_.empty()) {
+    const bool has_lists = detector_info(loop.algorithm()).has_lists;
     const std::string why = trace && !trace->refusal.empty() ? trace->refusal
-                            : trace && !trace->log.events().empty() && !stepping ? "it keeps no heads or next arrays, only its tests"
-                                                                                 : "";
+                            : !has_lists && !stepping ? "it keeps no heads or next arrays, only its tests"
+                                                      : "";
     caption.push_back("lists: " + loop.algorithm() + (stepping ? " has built none yet" : " builds none") + (why.empty() ? "" : ":"));
     // The reason, wrapped to the legend's width.
     std::string line;

@@ -32,7 +32,10 @@ std::shared_ptr<const FrameTrace> trace_frame(Detector& detector, const Elements
   }
   detector.detect_traced(elements, options, out->pairs, out->log);
   if (out->log.events().empty()) {
-    out->refusal = name + " records no operations (it keeps no book arrays): choose nbs, screen, sort, tree or brute to see them";
+    std::string tracing;
+    for (const DetectorInfo& d : detector_infos())
+      if (d.traces && (elements.dim == 3 ? d.dim3 : d.dim2)) tracing += (tracing.empty() ? "" : ", ") + d.name;
+    out->refusal = name + " records no operations (it keeps no book arrays): choose " + tracing + " to see them";
     return out;
   }
   if (const Grid* g = detector.last_grid()) {
