@@ -154,25 +154,24 @@ void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFram
         segment(a + ab * t0 + off, a + ab * t1 + off, true);
         return;
       }
-      // An arc diagram along the row's middle line: each element hangs on it by a stem, and each
-      // link is an arc over the line for a step to the right, under it for one to the left, its
-      // height in proportion to its reach across the grid, so that arcs of different reach nest
-      // instead of running together; it never leaves the row's band.
-      const double mid = 0.5 * (band_lo + band_hi);
+      // An arc inside the row's band: over the chord for a step to the right, under it for one to
+      // the left, taller the farther it reaches (relative to the list's widest step) so that arcs
+      // of different reach part; it never leaves the band.
       const double dx = std::abs(double(ab.x()));
       const double up = ab.x() >= 0 ? 1.0 : -1.0;
-      const double h = 0.45 * d * std::clamp(std::sqrt(dx / widest), 0.08, 1.0);
-      const Vec2 from = v2(a.x(), mid), to = v2(b.x(), mid);
-      const auto at = [&](double t) { return Vec2(from + (to - from) * float(t) + Vec2(0.0f, float(up * h * 4.0 * t * (1.0 - t)))); };
+      const double mid = 0.5 * (double(a.y()) + double(b.y()));
+      const double room = up > 0 ? band_hi - 0.04 * d - mid : mid - band_lo - 0.04 * d;
+      const double h = std::clamp(0.45 * d * std::sqrt(dx / widest), 0.0, std::max(0.0, room));
+      const auto at = [&](float t) { return Vec2(a + ab * t + Vec2(0.0f, float(up * h * 4.0 * t * (1.0 - t)))); };
       constexpr int kSteps = 14;
-      Vec2 prev = at(0.0);
-      for (int k = 1; k < kSteps; ++k) {
-        const Vec2 next = at(double(k) / kSteps);
+      const float tq = t1 - 0.15f * (t1 - t0);
+      Vec2 prev = at(t0);
+      for (int k = 1; k <= kSteps; ++k) {
+        const Vec2 next = at(t0 + (tq - t0) * float(k) / kSteps);
         segment(prev, next, false);
         prev = next;
       }
-      segment(prev, to, true);
-      if (rb > 0) segment(to, b, false);  // the stem of the element reached
+      segment(prev, at(t1), true);
     };
     if (arcs && l.chain.size() > kMaxArcLinks) {
       draw_rail(s, l, v, colour, width, is_active, labels, sink);

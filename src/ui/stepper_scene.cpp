@@ -19,15 +19,17 @@ const Rgba kNoContact{200, 200, 210, 230};
 
 class SceneWriter {
  public:
-  SceneWriter(const StepperSession& s, render::DrawSink& sink) : s_(s), sink_(sink), e_(s.elements()) {}
+  SceneWriter(const StepperSession& s, render::DrawSink& sink, bool ids_drawn)
+      : s_(s), sink_(sink), e_(s.elements()), ids_drawn_(ids_drawn) {}
 
   Vec2 centre(std::int32_t k) const { return {static_cast<float>(e_.x[k]), static_cast<float>(e_.y[k])}; }
   bool valid(std::int32_t k) const { return k >= 0 && k < e_.size(); }
 
-  // A ring around element k and its id beside it.
+  // A ring around element k and its id beside it (unless the scene already numbers every element).
   void ring(std::int32_t k, Rgba colour, float width_px) {
     if (!valid(k)) return;
     sink_.circle(Layer::Top, centre(k), static_cast<float>(e_.r[k]) * 1.15f, colour.with_alpha(40), colour, width_px, 7.0f);
+    if (ids_drawn_) return;
     const float r = static_cast<float>(e_.r[k]);
     sink_.text(centre(k) + Vec2(0, r * 1.6f), std::to_string(shown(k, s_.book_numbering)), colour);
   }
@@ -74,6 +76,7 @@ class SceneWriter {
   const StepperSession& s_;
   render::DrawSink& sink_;
   const Elements& e_;
+  bool ids_drawn_;
 };
 
 }  // namespace
@@ -82,7 +85,7 @@ void draw_stepper_scene(const StepperSession& s, render::DrawSink& sink, bool li
   const Stepper& st = s.stepper();
   const TraceEvent* e = st.current();
   if (e == nullptr) return;
-  SceneWriter w(s, sink);
+  SceneWriter w(s, sink, lists_drawn);  // the lists overlay numbers every element
   const LoopVars v = st.loop_vars();
   const std::int32_t cell[3] = {v.ix, v.iy, v.iz};
   switch (e->op) {
