@@ -216,6 +216,15 @@ TEST(Cli, AnOptionOfAnotherCommandIsNamed) {
   EXPECT_EQ(r.err, "nbscope: error: dump: --repeat is not an option of dump (it is one of pairs)\n");
 }
 
+TEST(Cli, AListsFilterNotKnownIsRefusedByName) {
+#ifndef NBSCOPE_TEST_GUI
+  GTEST_SKIP() << "rendering flags are refused as a whole without the GUI";
+#endif
+  const auto r = run("headless --scene " + std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/book-fig-3-15.json --frames 1 --lists rows --screenshot x.png");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "nbscope: error: --lists: 'rows' is not one of all, selected, row\n");
+}
+
 TEST(Cli, UnknownCommandExitsTwo) {
   auto r = run("frobnicate");
   EXPECT_EQ(r.exit_code, 2);

@@ -96,7 +96,7 @@ void Args::finish() const {
 }
 
 // The rendering options gui, headless and replay share (app/view_options.cpp).
-#define NBSCOPE_VIEW_OPTIONS "--screenshot", "--size", "--overlays", "--panels", "--select", "--camera", \
+#define NBSCOPE_VIEW_OPTIONS "--screenshot", "--size", "--overlays", "--panels", "--select", "--lists", "--camera", \
     "--no-timings", "--step", "--book-numbering", "--shader-dir"
 
 const std::vector<std::pair<const char*, std::vector<const char*>>>& command_options() {

@@ -96,6 +96,8 @@ usage:
                         metrics violations timeline stepper pseudocode arrays
       --select K        select element K as shown (its cell, lists and pairs highlighted, its trail
                         drawn): from 0, or from 1 with --book-numbering
+      --lists FILTER    the lists overlay draws all lists, the selected element's, or one row's
+                        (all | selected | row; default: row past 300 elements, else all)
       --camera X,Y,PPM  put (X, Y) in the middle of the view the panels leave free, at PPM pixels
                         per metre, instead of fitting the scene
       --no-timings      show "-" for wall-clock numbers (reproducible screenshots)
