@@ -261,14 +261,9 @@ namespace {
 // algorithm with lists, each list not yet cleared is exactly the chain the stepper's arrays hold at
 // that operation; before any push there are none; and at the end the lists are the finished ones.
 TEST(Overlays, ListsMidTraceAreTheStepperArraysAtThatOperation) {
-  const double x[] = {4.75, 4.90, 1.85, 4.60, 1.30, 4.50, 1.60, 5.20, 1.20};
-  const double y[] = {6.45, 6.50, 6.45, 6.80, 6.85, 5.55, 6.60, 5.40, 6.55};
-  Elements e;
-  for (int k = 0; k < 9; ++k) e.push_back(x[k], y[k], 0, 0.1);
+  const Elements e = testdata::book_nine();
   DetectOptions o;
-  o.grid.cell_size = 1.0;
-  o.grid.origin = std::array<double, 3>{0, 0, 0};
-  o.grid.cells = std::array<std::int64_t, 3>{10, 10, 1};
+  o.grid = testdata::book_grid();
   for (const char* algorithm : {"nbs", "screen", "tree"}) {
     PairList pairs;
     TraceLog log;

@@ -458,14 +458,9 @@ TEST(Stepper, NbsLoopVariablesWritesAndListsAgreeWithTheGrid) {
 
 TEST(Stepper, ScreenOnTheBooksNineElementsShowsFig320OnceMappedAndWhileTesting) {
   // Fig. 3.15's centres (assets/examples/nine.csv) on the book's 10x10 grid of unit cells.
-  const double x[] = {4.75, 4.90, 1.85, 4.60, 1.30, 4.50, 1.60, 5.20, 1.20};
-  const double y[] = {6.45, 6.50, 6.45, 6.80, 6.85, 5.55, 6.60, 5.40, 6.55};
-  Elements e;
-  for (int k = 0; k < 9; ++k) e.push_back(x[k], y[k], 0, 0.1);
+  const Elements e = testdata::book_nine();
   DetectOptions o;
-  o.grid.cell_size = 1;
-  o.grid.origin = std::array<double, 3>{0, 0, 0};
-  o.grid.cells = std::array<std::int64_t, 3>{10, 10, 1};
+  o.grid = testdata::book_grid();
   auto screen = make_detector("screen");
   PairList pairs;
   TraceLog log;

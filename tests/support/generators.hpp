@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/elements.hpp"
+#include "core/grid.hpp"
 #include "core/pairs.hpp"
 
 namespace nbscope::testdata {
@@ -30,6 +31,10 @@ const std::vector<Layout>& all_layouts();
 std::string layout_name(Layout layout);
 // N elements of `layout` in `dim` (2 or 3) dimensions, reproducible from `seed`.
 Elements make_layout(Layout layout, std::int64_t n, int dim, std::uint64_t seed);
+// The book's Fig. 3.15: nine elements of radius 0.1 (assets/examples/nine.csv, 0-based here).
+Elements book_nine();
+// Its grid as the book pins it: 10 x 10 unit cells from (0, 0).
+GridOptions book_grid();
 // The reference every detector is checked against: brute force, sorted by (i, j).
 PairList brute_pairs(const Elements& elements);
 

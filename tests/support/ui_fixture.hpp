@@ -9,6 +9,7 @@
 
 #include "core/detector.hpp"
 #include "core/frame_trace.hpp"
+#include "support/generators.hpp"
 #include "ui/host.hpp"
 #include "ui/model.hpp"
 
@@ -43,9 +44,7 @@ struct BookFrame {
   UiRequests requests;
   render::Camera camera;
   BookFrame() {
-    const double x[] = {4.75, 4.90, 1.85, 4.60, 1.30, 4.50, 1.60, 5.20, 1.20};
-    const double y[] = {6.45, 6.50, 6.45, 6.80, 6.85, 5.55, 6.60, 5.40, 6.55};
-    for (int k = 0; k < 9; ++k) elements.push_back(x[k], y[k], 0, 0.1);
+    elements = testdata::book_nine();
     grid.n[0] = grid.n[1] = 10;
     sim.scene_path = "book-fig-3-15.json";
     sim.elements = &elements;
