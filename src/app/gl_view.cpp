@@ -1,5 +1,5 @@
 // Index: scene files | spec parsing (--overlays, --panels) | GlView: set-up, scene load, per step,
-// lists, shapes, checks, frame.
+// shapes, checks, frame. The lists overlay's part is in gl_view_lists.cpp.
 #include "app/gl_view.hpp"
 
 #include <imgui.h>
@@ -308,93 +308,6 @@ bool GlView::stepper_open() const {
   for (const auto& p : host_.panels())
     if (std::string(p->title()) == ui::kStepperTitle) return ui::UiHost::is_open(*p, state_);
   return false;
-}
-
-void GlView::update_lists(const FrameLoop& loop, const std::shared_ptr<const FrameTrace>& trace) {
-  if (!state_.overlays.lists || !trace) {
-    lists_.clear();
-    lists_serial_ = 0;
-    return;
-  }
-  // Mid-trace, the lists as they stand at the stepper's operation; else the finished ones.
-  std::size_t upto = SIZE_MAX;
-  const Stepper& st = stepper_->stepper();
-  if (stepper_open() && stepper_->has_capture() && stepper_->frame_trace() == trace && st.position() < st.size())
-    upto = st.position();
-  if (lists_serial_ == trace->serial && lists_upto_ == upto) return;
-  const auto t0 = Clock::now();
-  lists_ = render::traced_lists(trace->log, static_cast<std::size_t>(loop.elements().size()), upto);
-  lists_serial_ = trace->serial;
-  lists_upto_ = upto;
-  cost_.trace_ms += ms_since(t0);
-}
-
-void GlView::describe_lists(const FrameLoop& loop, const std::shared_ptr<const FrameTrace>& trace,
-                            render::OverlayScene& scene) const {
-  const Elements& e = loop.elements();
-  const bool book = state_.book_numbering;
-  const auto num = [&](std::int64_t v) { return std::to_string(ui::shown(v, book)); };
-  scene.list_filter = state_.list_filter.value_or(e.size() > render::kRowFilterAbove ? render::ListFilter::Row
-                                                                                       : render::ListFilter::All);
-  // The stepper's current operation, when it holds this frame's trace and is not at its end.
-  const Stepper& st = stepper_->stepper();
-  const bool stepping = stepper_open() && stepper_->has_capture() && trace && stepper_->frame_trace() == trace &&
-                        st.position() < st.size();
-  std::optional<std::int32_t> stepper_row;
-  if (stepping && st.current() != nullptr) {
-    const TraceEvent& ev = *st.current();
-    if (ev.op == TraceOp::Push) scene.active_list = std::make_pair(ev.writes[1].array, ev.writes[1].index);
-    if (ev.op == TraceOp::Clear) scene.active_list = std::make_pair(ev.writes[0].array, ev.writes[0].index);
-    if (ev.op == TraceOp::VisitCell || ev.op == TraceOp::TestPair)
-      if (const auto l = stepper_->list_of_cell(ev.cell)) scene.active_list = std::make_pair(l->heads, l->list);
-    if (ev.op == TraceOp::TestPair && ev.element >= 0 && ev.other >= 0) {
-      scene.tested_pair = Pair{std::min(ev.element, ev.other), std::max(ev.element, ev.other)};
-      scene.tested_contact = ev.contact;
-    }
-    const LoopVars v = st.loop_vars();
-    if (v.phase_index >= 0 || v.iy >= 0) stepper_row = v.phase_index >= 0 ? v.phase_index : v.iy;
-  }
-  // The row whose lists the Row filter keeps (and whose row-below copies are drawn): hovered, else
-  // the stepper's, else the selected element's.
-  if (state_.hovered_cell) scene.focus_row = (*state_.hovered_cell)[1];
-  else if (stepper_row) scene.focus_row = stepper_row;
-  else if (state_.selected >= 0 && state_.selected < e.size()) scene.focus_row = loop.grid().cell(e.y[state_.selected], 1);
-  if (!state_.overlays.lists) return;
-  auto& caption = scene.lists_caption;
-  if (!trace || lists_.empty()) {
-    const bool has_lists = detector_info(loop.algorithm()).has_lists;
-    const std::string why = trace && !trace->refusal.empty() ? trace->refusal
-                            : !has_lists && !stepping ? "it keeps no heads or next arrays, only its tests"
-                                                      : "";
-    caption.push_back("lists: " + loop.algorithm() + (stepping ? " has built none yet" : " builds none") + (why.empty() ? "" : ":"));
-    // The reason, wrapped to the legend's width.
-    std::string line;
-    std::size_t start = 0;
-    while (start < why.size()) {
-      const std::size_t space = std::min(why.find(' ', start), why.size());
-      const std::string word = why.substr(start, space - start);
-      if (!line.empty() && line.size() + 1 + word.size() > 52) {
-        caption.push_back("  " + line);
-        line.clear();
-      }
-      line += (line.empty() ? "" : " ") + word;
-      start = space + 1;
-    }
-    if (!line.empty()) caption.push_back("  " + line);
-    return;
-  }
-  if (stepping) caption.push_back("lists at operation " + std::to_string(st.position()) + " of " + std::to_string(st.size()) + " (Stepper)");
-  switch (scene.list_filter) {
-    case render::ListFilter::All: break;
-    case render::ListFilter::Selected:
-      caption.push_back(scene.selected >= 0 ? "lists holding element " + num(scene.selected)
-                                            : "lists filter 'selected': click an element");
-      break;
-    case render::ListFilter::Row:
-      caption.push_back(scene.focus_row ? "lists of row " + num(*scene.focus_row) + " (filter 'row': hover a row)"
-                                        : "all lists: hover a row or click an element for one row's");
-      break;
-  }
 }
 
 void GlView::build_shapes(const FrameLoop& loop) {
