@@ -4,9 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <map>
-#include <regex>
 #include <set>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "app/cli.hpp"
 #include "app/help.hpp"
@@ -15,13 +16,28 @@
 namespace nbscope {
 namespace {
 
+// Every "--name" word of `line` (a letter after the dashes, then letters, digits and dashes). No
+// std::regex: GCC 12's -O1 sanitizer build warns inside it (maybe-uninitialized), and CI builds -Werror.
+std::vector<std::string> option_words(const std::string& line) {
+  std::vector<std::string> out;
+  const auto word_char = [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-'; };
+  for (std::size_t i = line.find("--"); i != std::string::npos; i = line.find("--", i)) {
+    std::size_t end = i + 2;
+    if (end < line.size() && line[end] >= 'a' && line[end] <= 'z') {
+      while (end < line.size() && word_char(line[end])) ++end;
+      out.push_back(line.substr(i, end - i));
+    }
+    i = end;
+  }
+  return out;
+}
+
 // The "--name" words of --help, by the command whose section they are in; the rendering flags'
 // section counts for gui, headless and replay.
 std::map<std::string, std::set<std::string>> options_in_help() {
   std::map<std::string, std::set<std::string>> out;
   std::istringstream in(kHelpText);
   std::string line, section;
-  const std::regex option("--[a-z][a-z0-9-]*");
   while (std::getline(in, line)) {
     if (line.rfind("  nbscope ", 0) == 0) {
       const std::string word = line.substr(10, line.find(' ', 10) - 10);
@@ -32,11 +48,11 @@ std::map<std::string, std::set<std::string>> options_in_help() {
       section.clear();
     }
     if (section.empty() || section == "algorithms" || section == "--help") continue;
-    for (std::sregex_iterator it(line.begin(), line.end(), option), end; it != end; ++it) {
+    for (const std::string& word : option_words(line)) {
       if (section == "rendering") {
-        for (const char* c : {"gui", "headless", "replay"}) out[c].insert(it->str());
+        for (const char* c : {"gui", "headless", "replay"}) out[c].insert(word);
       } else {
-        out[section].insert(it->str());
+        out[section].insert(word);
       }
     }
   }

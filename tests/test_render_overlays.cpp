@@ -36,8 +36,13 @@ struct Recorder final : DrawSink {
     segments.push_back({layer, a, b, c});
   }
   void arrow(Layer layer, Vec2 a, Vec2 b, Rgba c, float) override { arrows.push_back({layer, a, b, c}); }
-  void rect(Layer, Vec2, Vec2, Rgba) override { ++rects; }
+  void rect(Layer, Vec2, Vec2, Rgba c) override {
+    ++rects;
+    rect_colours.push_back(c);
+  }
   void text(Vec2, std::string_view t, Rgba) override { texts.emplace_back(t); }
+  std::vector<Rgba> rect_colours;
+  [[nodiscard]] long rects_of(Rgba c) const { return std::count(rect_colours.begin(), rect_colours.end(), c); }
 };
 
 TraceLog trace_of(const std::string& algorithm, const Elements& e, PairList& pairs, Grid& grid) {
@@ -220,6 +225,18 @@ TEST(Overlays, MaskCoversTheCellAndItsHalfMaskInsideTheGrid) {
   s.hovered_cell.reset();
   draw_scene(s, OverlayFlags{}, t.camera, without);
   EXPECT_EQ(with.rects - without.rects, 2);  // (2,0) and (1,0); the row below does not exist
+  EXPECT_EQ(without.rects_of(palette::kMaskCentre), 0);
+  // Nothing hovered (headless): the selected element's cell's mask, so --select shows it.
+  s.selected = 2;  // at x = 2.5: cell (2, 0) of the grid from (0.5, 0.5)
+  Recorder selected;
+  draw_scene(s, OverlayFlags{}, t.camera, selected);
+  EXPECT_EQ(selected.rects_of(palette::kMaskCentre), 1);
+  EXPECT_EQ(selected.rects_of(palette::kMaskCell), 1);
+  OverlayFlags no_mask;
+  no_mask.mask = false;
+  Recorder off;
+  draw_scene(s, no_mask, t.camera, off);
+  EXPECT_EQ(off.rects_of(palette::kMaskCentre), 0);
 }
 
 TEST(Overlays, ViolationsGetMarkersThatStayVisibleWhenZoomedOut) {
