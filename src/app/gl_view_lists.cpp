@@ -96,7 +96,8 @@ void GlView::describe_lists(const FrameLoop& loop, const std::shared_ptr<const F
       break;
     case render::ListFilter::Row:
       caption.push_back(scene.focus_row ? "lists of row " + num(*scene.focus_row) + " (filter 'row': hover a row)"
-                                        : "all lists: hover a row or click an element for one row's");
+                                        : e.size() <= render::kAllListsUpTo ? "all lists: hover a row or click an element for one row's"
+                                                                            : "lists: hover a row or click an element");
       break;
   }
 }

@@ -99,7 +99,9 @@ bool kept_by_filter(const OverlayScene& s, const TracedList& l) {
     case ListFilter::All: return true;
     case ListFilter::Selected:
       return s.selected >= 0 && std::find(l.chain.begin(), l.chain.end(), s.selected) != l.chain.end();
-    case ListFilter::Row: return !s.focus_row || row_of(l, s.grid, *s.elements) == *s.focus_row;  // no row yet: all
+    case ListFilter::Row:  // no row yet: all of a scene small enough to draw them all
+      if (!s.focus_row) return s.elements->size() <= kAllListsUpTo;
+      return row_of(l, s.grid, *s.elements) == *s.focus_row;
   }
   return true;
 }

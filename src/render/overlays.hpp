@@ -74,12 +74,15 @@ std::span<const OverlayInfo> overlay_infos();
 enum class ListFilter : std::uint8_t {
   All,       // every list
   Selected,  // the lists that hold the selected element
-  Row,       // the lists of the hovered row, else the stepper's row, else the selected element's row (none: all)
+  Row,       // the lists of the hovered row, else the stepper's row, else the selected element's row (none: see kAllListsUpTo)
 };
 // Settings and flag names of the filters, in enum order.
 inline constexpr const char* kListFilterNames[] = {"all", "selected", "row"};
 // Elements above which the filter defaults to Row: past it all lists together are a tangle.
 inline constexpr std::int64_t kRowFilterAbove = 300;
+// Row with no row hovered, stepped or selected draws every list up to this many elements, none
+// beyond (20,000 elements' lists cost more to draw than they show).
+inline constexpr std::int64_t kAllListsUpTo = 2000;
 // Cells narrower than this on screen (pixels) switch the grid to its overview: major lines and a
 // heat map of elements per cell, drawn over the bodies.
 inline constexpr double kHeatMapBelowPx = 6.0;
