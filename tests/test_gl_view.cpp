@@ -76,6 +76,18 @@ TEST(GlView, ADetectorWithoutATraceSaysSoInTheStepperPanels) {
   EXPECT_TRUE(rig.view->lists().empty());
 }
 
+// The Arrays panel alone (the Stepper closed) still gets the frame's trace.
+TEST(GlView, TheArraysPanelAloneHoldsTheTrace) {
+  ViewOptions o;
+  o.step = 5;
+  o.panels = "-stepper,-pseudocode,+arrays";
+  ViewRig rig(o, "book-fig-3-15.json");
+  rig.frames(2);
+  EXPECT_NO_THROW(rig.view->check_step());
+  EXPECT_TRUE(rig.view->stepper().has_capture()) << rig.view->stepper().message();
+  EXPECT_EQ(rig.view->stepper().frame_trace(), rig.loop.frame_trace());
+}
+
 TEST(GlView, ASelectionSurvivesARestartButNotAnotherScene) {
   ViewOptions o;
   o.select = 5;

@@ -180,3 +180,31 @@ TEST(FrameLoop, DraggingMovesABody) {
 
 }  // namespace
 }  // namespace nbscope
+
+namespace nbscope {
+namespace {
+
+// A detection that fails (screen's C would need more cells than it may allocate) is the trace's
+// reason, not an exception out of the window's frame: the stepper panels and the lists legend say it.
+TEST(FrameLoop, ATraceTheDetectorRefusesCarriesTheReason) {
+  FrameLoop loop;
+  loop.load_scene(parse_scene_json(R"({"gravity": [0, 0], "bodies": [
+      {"shape": "circle", "radius": 0.01, "position": [0, 0]},
+      {"shape": "circle", "radius": 0.01, "position": [90000, 90000]}]})",
+                                   "sparse.json"));
+  try {
+    loop.set_algorithm("screen");
+  } catch (const Error&) {
+    // the detector is switched; the frame's detection is what failed
+  }
+  ASSERT_EQ(loop.algorithm(), "screen");
+  std::shared_ptr<const FrameTrace> trace;
+  ASSERT_NO_THROW(trace = loop.frame_trace());
+  ASSERT_NE(trace, nullptr);
+  EXPECT_TRUE(trace->log.events().empty());
+  EXPECT_FALSE(trace->refusal.empty());
+  EXPECT_EQ(loop.frame_trace(), trace) << "a refusal is kept, not retried every UI frame";
+}
+
+}  // namespace
+}  // namespace nbscope

@@ -375,3 +375,23 @@ TEST(Overlays, LongYListsAreARailInListOrderWithLeadersToTheirElements) {
 
 }  // namespace
 }  // namespace nbscope::render
+
+namespace nbscope::render {
+namespace {
+
+// Only NBS's B[2][nx] has copies of the row below: screen's C[nx][ny] with nx == 2 has the same
+// shape, and its second column's lists are its own (drawn, not hidden as B[1] copies).
+TEST(Overlays, ScreenListsOfATwoColumnGridAreNotRowBelowCopies) {
+  const Elements e = make_elements_2d((Eigen::ArrayXd(4) << 0.5, 2.1, 0.5, 2.1).finished(),
+                                      (Eigen::ArrayXd(4) << 0.5, 0.5, 2.1, 2.1).finished(), Eigen::ArrayXd::Constant(4, 0.5));
+  PairList pairs;
+  Grid grid;
+  const TraceLog log = trace_of("screen", e, pairs, grid);
+  ASSERT_EQ(grid.n[0], 2);
+  const auto lists = traced_lists(log, 4);
+  ASSERT_EQ(lists.size(), 4u);
+  for (const TracedList& l : lists) EXPECT_FALSE(l.secondary) << l.heads_name << " slot " << l.slot;
+}
+
+}  // namespace
+}  // namespace nbscope::render

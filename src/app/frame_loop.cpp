@@ -153,7 +153,17 @@ const Detector& FrameLoop::detector() const { return *impl_->main.detector; }
 std::shared_ptr<const FrameTrace> FrameLoop::frame_trace() {
   Impl& m = *impl_;
   if (!m.loaded()) return nullptr;
-  if (!m.trace) m.trace = trace_frame(*m.main.detector, m.detector_input(), m.detect_options, m.frame_number(), grid());
+  if (!m.trace) {
+    try {
+      m.trace = trace_frame(*m.main.detector, m.detector_input(), m.detect_options, m.frame_number(), grid());
+    } catch (const Error& e) {
+      // The detection itself refused the frame (as step() would say): kept as the trace's reason, so
+      // the panels show it and it is not tried again every UI frame.
+      auto refused = std::make_shared<FrameTrace>(refused_trace(m.frame_number(), m.main.detector->name()));
+      refused->refusal = e.what();
+      m.trace = std::move(refused);
+    }
+  }
   return m.trace;
 }
 

@@ -310,6 +310,15 @@ bool GlView::stepper_open() const {
   return false;
 }
 
+bool GlView::stepper_panels_open() const {
+  for (const auto& p : host_.panels()) {
+    const std::string title = p->title();
+    if ((title == ui::kStepperTitle || title == ui::kArraysTitle || title == ui::kPseudocodeTitle) && ui::UiHost::is_open(*p, state_))
+      return true;
+  }
+  return false;
+}
+
 void GlView::build_shapes(const FrameLoop& loop) {
   loop.body_shapes(body_shapes_);
   shapes_.clear();
@@ -362,7 +371,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   // The one traced detection of this frame, made when the lists overlay or the stepper wants it.
   cost_.trace_ms = 0;
   auto t0 = Clock::now();
-  const bool stepper_wants = stepper_open() && stepper_->wants_trace(loop.frame(), session.paused);
+  const bool stepper_wants = stepper_panels_open() && stepper_->wants_trace(loop.frame(), session.paused);
   const std::shared_ptr<const FrameTrace> trace = state_.overlays.lists || stepper_wants ? loop.frame_trace() : nullptr;
   cost_.trace_ms = ms_since(t0);
   update_lists(loop, trace);

@@ -4,6 +4,7 @@
 //
 // Index: Session (what the surrounding loop knows) | GlView (scene load, per-step bookkeeping, frame).
 #pragma once
+#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
@@ -101,6 +102,8 @@ class GlView {
   // user moves the camera.
   void apply_focus();
   [[nodiscard]] bool stepper_open() const;
+  // Any of the Stepper, Arrays and Pseudocode panels is open: each shows the held trace.
+  [[nodiscard]] bool stepper_panels_open() const;
   void refit();
 
   render::GlContext& context_;
@@ -140,6 +143,7 @@ class GlView {
   std::vector<render::TracedList> lists_;
   std::uint64_t lists_serial_ = 0;   // the trace they were built from
   std::size_t lists_upto_ = 0;       // the events applied (SIZE_MAX: all)
+  std::chrono::steady_clock::time_point lists_built_at_;  // the last rebuild (throttled while playing)
   std::string loaded_scene_;         // the scene last loaded: a selection survives a restart, not a new scene
 
   // Trails and flashes, advanced per step.

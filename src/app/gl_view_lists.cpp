@@ -10,6 +10,9 @@ namespace nbscope {
 namespace {
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+// Traces longer than this are replayed for the lists at most every kReplayIntervalMs while playing.
+constexpr std::size_t kReplayEveryFrameUpTo = 200'000;
+constexpr double kReplayIntervalMs = 150;
 // The legend's lines are about this many characters wide: a longer reason wraps.
 constexpr std::size_t kCaptionChars = 52;
 }  // namespace
@@ -23,10 +26,16 @@ void GlView::update_lists(const FrameLoop& loop, const std::shared_ptr<const Fra
   // Mid-trace, the lists as they stand at the stepper's operation; else the finished ones.
   std::size_t upto = SIZE_MAX;
   const Stepper& st = stepper_->stepper();
-  if (stepper_open() && stepper_->has_capture() && stepper_->frame_trace() == trace && st.position() < st.size())
+  if (stepper_panels_open() && stepper_->has_capture() && stepper_->frame_trace() == trace && st.position() < st.size())
     upto = st.position();
   if (lists_serial_ == trace->serial && lists_upto_ == upto) return;
+  // Each rebuild replays the trace from its start: while the stepper plays through a long trace,
+  // at most a few rebuilds a second (the overlay catches up when playback stops).
+  if (lists_serial_ == trace->serial && st.playing() && trace->log.events().size() > kReplayEveryFrameUpTo &&
+      ms_since(lists_built_at_) < kReplayIntervalMs)
+    return;
   const auto t0 = Clock::now();
+  lists_built_at_ = t0;
   lists_ = render::traced_lists(trace->log, static_cast<std::size_t>(loop.elements().size()), upto);
   lists_serial_ = trace->serial;
   lists_upto_ = upto;
@@ -42,7 +51,7 @@ void GlView::describe_lists(const FrameLoop& loop, const std::shared_ptr<const F
                                                                                        : render::ListFilter::All);
   // The stepper's current operation, when it holds this frame's trace and is not at its end.
   const Stepper& st = stepper_->stepper();
-  const bool stepping = stepper_open() && stepper_->has_capture() && trace && stepper_->frame_trace() == trace &&
+  const bool stepping = stepper_panels_open() && stepper_->has_capture() && trace && stepper_->frame_trace() == trace &&
                         st.position() < st.size();
   std::optional<std::int32_t> stepper_row;
   if (stepping && st.current() != nullptr) {

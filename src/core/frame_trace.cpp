@@ -4,13 +4,18 @@
 
 namespace nbscope {
 
+FrameTrace refused_trace(std::int64_t frame, std::string_view algorithm) {
+  static std::atomic<std::uint64_t> next_serial{1};
+  FrameTrace out;
+  out.serial = next_serial++;
+  out.frame = frame;
+  out.algorithm = std::string(algorithm);
+  return out;
+}
+
 std::shared_ptr<const FrameTrace> trace_frame(Detector& detector, const Elements& elements, const DetectOptions& options,
                                               std::int64_t frame, const Grid& frame_grid) {
-  static std::atomic<std::uint64_t> next_serial{1};
-  auto out = std::make_shared<FrameTrace>();
-  out->serial = next_serial++;
-  out->frame = frame;
-  out->algorithm = std::string(detector.name());
+  auto out = std::make_shared<FrameTrace>(refused_trace(frame, detector.name()));
   out->grid = frame_grid;
   const std::string name = out->algorithm;
   if (!detector.supports_dim(elements.dim)) {

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/detector.hpp"
@@ -32,6 +33,9 @@ struct FrameTrace {
   std::vector<const char*> pseudocode;  // TraceEvent::line indexes it
   std::string refusal;             // why nothing was recorded, in words for the panels
 };
+
+// An empty trace of frame `frame` by `algorithm` with a fresh serial, for a caller to fill `refusal`.
+[[nodiscard]] FrameTrace refused_trace(std::int64_t frame, std::string_view algorithm);
 
 // Runs `detector` traced on `elements` (frame `frame`, whose grid is `frame_grid`) unless the
 // recording would not fit in memory or the detector records nothing; never throws for those: the

@@ -1,8 +1,10 @@
 // nbscope render: where labels go — the size of a label in ImGui's default font, and the label
-// space that keeps every label of a frame clear of the others and of the panels. The grid's title
-// and axis numbers are placed first and their bands reserved, then the legend, then element ids,
-// so an id never sits among the axis numbers or covers the title.
+// space that keeps every label of a frame clear of the others and of the panels. The legend's box
+// (its corner is fixed) is reserved first, then the grid's title and axis numbers are placed and
+// their bands reserved, then the lists' rail numbers, then element ids, so an id never sits among
+// the axis numbers or covers the title.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -73,7 +75,12 @@ class LabelSpace {
     });
     return hit;
   }
-  void insert(const Box& b) {
+  // Boxes are clipped to the viewport (a margin beyond it): a reserved band reaching far outside the
+  // view would otherwise fill buckets no label can reach.
+  void insert(Box b) {
+    const double w = (view_.max.x() - view_.min.x()) * ppm_, h = (view_.max.y() - view_.min.y()) * ppm_;
+    b = {std::max(b.x0, -kBucketPx), std::max(b.y0, -kBucketPx), std::min(b.x1, w + kBucketPx), std::min(b.y1, h + kBucketPx)};
+    if (!(b.x0 < b.x1 && b.y0 < b.y1)) return;
     for_buckets(b, [&](std::uint64_t k) { buckets_[k].push_back(boxes_.size()); });
     boxes_.push_back(b);
   }

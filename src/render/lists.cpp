@@ -89,7 +89,9 @@ std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_co
     std::copy(std::begin(o.cell), std::end(o.cell), std::begin(l.cell));
     const auto& shape = log.arrays()[static_cast<std::size_t>(heads)].shape;
     l.heads_shape = shape;
-    l.secondary = shape.size() == 2 && shape[0] == 2 && slot >= shape[1];
+    // NBS's B[2][nx]: its second half holds the copies of the row below (screen's C[nx][ny] has
+    // the same shape when nx == 2, hence the name).
+    l.secondary = l.heads_name == "B" && shape.size() == 2 && shape[0] == 2 && slot >= shape[1];
     const int next = next_of[static_cast<std::size_t>(heads)];
     if (next >= 0) l.next_name = log.arrays()[static_cast<std::size_t>(next)].name;
     l.chain = walk(state, heads, slot, next, element_count, l.cut);

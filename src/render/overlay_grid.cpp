@@ -150,8 +150,9 @@ GridStats draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts&
   std::snprintf(buf, sizeof buf, "%lld x %lld cells, d = %.3g%s", static_cast<long long>(g.n[0]),
                 static_cast<long long>(g.n[1]), d, step > 1 ? (", lines every " + std::to_string(step)).c_str() : "");
   const double title_w = label_width(std::strlen(buf));
-  const double title_x = std::clamp(x0, free.min.x() + 4.0 / ppm, std::max(free.min.x(), free.max.x() - title_w / ppm));
-  const double title_y = std::clamp(y1 + 12.0 / ppm, free.min.y() + 10.0 / ppm, free.max.y() - 10.0 / ppm);
+  // (std::clamp needs lo <= hi: a free view narrower than the title keeps its left edge.)
+  const double title_x = std::clamp(x0, free.min.x() + 4.0 / ppm, std::max(free.min.x() + 4.0 / ppm, free.max.x() - title_w / ppm));
+  const double title_y = std::clamp(y1 + 12.0 / ppm, free.min.y() + 10.0 / ppm, std::max(free.min.y() + 10.0 / ppm, free.max.y() - 10.0 / ppm));
   const Vec2 title_at = v2(title_x + 0.5 * title_w / ppm, title_y);
   if (put(title_at, buf)) {
     const Vec2 half = v2(0.5 * title_w / ppm + 2.0 / ppm, 0.5 * kLinePx / ppm + 1.0 / ppm);
@@ -162,7 +163,7 @@ GridStats draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts&
   // edges are out of it (zoomed in). Their bands are then reserved: no id goes among them.
   if (cell_px < 18.0) return stats;
   const bool book = s.book_numbering;
-  const double col_y = std::clamp(y0 - 9.0 / ppm, free.min.y() + 8.0 / ppm, free.max.y() - 8.0 / ppm);
+  const double col_y = std::clamp(y0 - 9.0 / ppm, free.min.y() + 8.0 / ppm, std::max(free.min.y() + 8.0 / ppm, free.max.y() - 8.0 / ppm));
   for (std::int64_t ix = lo_x; ix < hi_x; ++ix) {
     const double cx = x0 + d * (double(ix) + 0.5);
     if (cx < free.min.x() || cx > free.max.x()) continue;
@@ -178,12 +179,12 @@ GridStats draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts&
     if (cy < col_y + 15.0 / ppm || cy > free.max.y()) continue;
     std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(book ? iy + 1 : iy));
     const double half_w = 0.5 * label_width(std::strlen(buf)) / ppm;
-    const double row_x =
-        std::clamp(x0 - kHeadGapPx / ppm - half_w, free.min.x() + 3.0 / ppm + half_w, free.max.x() - half_w);
+    const double row_lo_x = free.min.x() + 3.0 / ppm + half_w;
+    const double row_x = std::clamp(x0 - kHeadGapPx / ppm - half_w, row_lo_x, std::max(row_lo_x, free.max.x() - half_w));
     put(v2(row_x, cy), buf);
     row_lo = std::min(row_lo, row_x - half_w);
   }
-  labels.reserve_world(v2(row_lo, std::max(y0, col_y + band)), v2(x0, std::min(y1, free.max.y())));
+  labels.reserve_world(v2(row_lo, std::max(y0, col_y + band)), v2(std::min(x0, free.max.x()), std::min(y1, free.max.y())));
   return stats;
 }
 
@@ -203,10 +204,10 @@ void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& 
   };
   std::vector<Line> lines;
   const bool grid = f.grid && s.grid != nullptr && s.grid->dim == 2;
-  if (grid && stats.heat_map) {
+  if (grid && stats.heat_map && stats.max_cell > 0) {
     lines.push_back({{{"elements per cell 1 .. " + std::to_string(std::max(1, stats.max_cell)) + " (its list's length)"}}, 5, true});
     lines.push_back({{{"bars: elements per row (its y-list), up to " + std::to_string(stats.max_row)}}});
-  } else if (grid) {
+  } else if (grid && !stats.heat_map) {
     lines.push_back({{{"elements per cell 1 .. " + std::to_string(palette::kCellShadeSaturation) + "+"}}, palette::kCellShadeSaturation});
   }
   if (f.lists && s.lists != nullptr && !s.lists->empty()) {

@@ -150,8 +150,8 @@ void StepperSession::capture(const SimView& sim) {
     target_status_.clear();  // it described another frame
     target_location_.reset();
   }
-  if (!sim.trace && sim.elements != nullptr && !capture_requested_) {
-    capture_requested_ = true;  // the app makes the trace for the next frame (wants_trace)
+  if (!sim.trace && sim.elements != nullptr) {
+    capture_requested_ = true;  // the app makes the trace for the next frame (wants_trace); the held one stays
     return;
   }
   capture_requested_ = false;
@@ -168,8 +168,8 @@ void StepperSession::capture(const SimView& sim) {
   frame_ = sim.frame;
   trace_ = sim.trace;
   held_serial_ = trace_ ? trace_->serial : 0;
-  if (sim.elements == nullptr || !trace_) {
-    message_ = sim.elements == nullptr ? "no scene loaded" : "no traced detection of this frame";
+  if (sim.elements == nullptr) {
+    message_ = "no scene loaded";
     trace_.reset();
     return;
   }
