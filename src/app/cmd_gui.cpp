@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "app/clock.hpp"
 #include "app/commands.hpp"
 #include "app/frame_loop.hpp"
 #include "app/gl_view.hpp"
@@ -28,7 +29,6 @@ namespace nbscope {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 // Ctrl+C / SIGTERM close the window like its close button, so the settings are still saved.
 volatile std::sig_atomic_t g_stop_requested = 0;
@@ -275,7 +275,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
         const auto t0 = Clock::now();
         step_back_for_flag(loop);
         view.on_frame_shown(loop);
-        sum_back_show += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+        sum_back_show += ms_since(t0);
       }
     } else if (loop.resuming()) {
       continue_resume(loop, view, session);
@@ -308,7 +308,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
     const auto view_start = Clock::now();
     const ui::UiRequests requests = view.frame(loop, session, !scripted, static_cast<float>(session.frame_ms / 1000.0));
     if (scripted) {
-      const double view_ms = std::chrono::duration<double, std::milli>(Clock::now() - view_start).count();
+      const double view_ms = ms_since(view_start);
       if (rendered > *o.frames && rendered <= scripted_frames) sum_back_view += view_ms;
       sum_view += view_ms;
       sum_physics += loop.timings().physics_ms;

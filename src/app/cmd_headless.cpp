@@ -11,6 +11,7 @@
 #include <map>
 #include <vector>
 
+#include "app/clock.hpp"
 #include "app/commands.hpp"
 #include "app/frame_loop.hpp"
 #include "app/headless.hpp"
@@ -412,9 +413,9 @@ int run_headless_loop(const HeadlessOptions& o) {
   // --back K: through the history, one kept frame at a time, each detected and checked again.
   double back_ms = 0;
   for (std::int64_t k = 0; k < o.back; ++k) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = Clock::now();
     step_back_for_flag(loop);
-    back_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    back_ms += ms_since(t0);
     if (view) view->on_rewound(loop);
   }
   if (o.violation > 0) go_to_violation(loop, o.violation, view.get());

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "app/clock.hpp"
 #include "app/frame_loop.hpp"
 #include "check/check.hpp"
 #include "core/error.hpp"
@@ -21,11 +22,6 @@
 #include "physics/world.hpp"
 
 namespace nbscope {
-
-// Milliseconds since t0.
-inline double ms_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // A detector of the registry that handles 2D; Error otherwise.
 inline std::unique_ptr<Detector> make_2d_detector(std::string_view name) {

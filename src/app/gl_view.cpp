@@ -2,10 +2,11 @@
 // shapes, checks, frame. The lists overlay's part is in gl_view_lists.cpp.
 #include "app/gl_view.hpp"
 
+#include "app/clock.hpp"
+
 #include <imgui.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <tuple>
@@ -19,9 +20,6 @@
 namespace nbscope {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 std::string data_dir() {
   const char* env = std::getenv("NBSCOPE_DATA_DIR");

@@ -1,15 +1,12 @@
 // The lists overlay's part of GlView: the lists rebuilt from the frame loop's one trace (as they
 // stand at the stepper's operation while it is mid-way), and what the overlay is told to highlight,
 // filter and say in the legend.
-#include <chrono>
-
+#include "app/clock.hpp"
 #include "app/gl_view.hpp"
 
 namespace nbscope {
 
 namespace {
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 // Traces longer than this are replayed for the lists at most every kReplayIntervalMs while playing.
 constexpr std::size_t kReplayEveryFrameUpTo = 200'000;
 constexpr double kReplayIntervalMs = 150;

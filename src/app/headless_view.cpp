@@ -1,6 +1,7 @@
 #include "app/headless_view.hpp"
 
-#include <chrono>
+#include "app/clock.hpp"
+
 #include <cstdio>
 
 #include "app/gl_view.hpp"
@@ -11,9 +12,6 @@
 namespace nbscope {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 class OsmesaView final : public HeadlessView {
  public:
