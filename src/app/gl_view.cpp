@@ -302,19 +302,16 @@ void GlView::apply_focus() {
   focus_->applied = std::make_pair(camera_.centre(), camera_.pixels_per_metre());
 }
 
-bool GlView::stepper_open() const {
+bool GlView::panel_open(std::string_view title) const {
   for (const auto& p : host_.panels())
-    if (std::string(p->title()) == ui::kStepperTitle) return ui::UiHost::is_open(*p, state_);
+    if (p->title() == title) return ui::UiHost::is_open(*p, state_);
   return false;
 }
 
+bool GlView::stepper_open() const { return panel_open(ui::kStepperTitle); }
+
 bool GlView::stepper_panels_open() const {
-  for (const auto& p : host_.panels()) {
-    const std::string title = p->title();
-    if ((title == ui::kStepperTitle || title == ui::kArraysTitle || title == ui::kPseudocodeTitle) && ui::UiHost::is_open(*p, state_))
-      return true;
-  }
-  return false;
+  return panel_open(ui::kStepperTitle) || panel_open(ui::kArraysTitle) || panel_open(ui::kPseudocodeTitle);
 }
 
 void GlView::build_shapes(const FrameLoop& loop) {

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "app/frame_loop.hpp"
@@ -101,6 +102,8 @@ class GlView {
   // Puts the camera on focus_ in the space the panels leave (again while they settle), until the
   // user moves the camera.
   void apply_focus();
+  // True when the panel titled `title` is open.
+  [[nodiscard]] bool panel_open(std::string_view title) const;
   [[nodiscard]] bool stepper_open() const;
   // Any of the Stepper, Arrays and Pseudocode panels is open: each shows the held trace.
   [[nodiscard]] bool stepper_panels_open() const;

@@ -71,6 +71,10 @@ std::vector<TracedList> sort_runs(const TraceLog& log, const State& state) {
 
 }  // namespace
 
+bool is_row_below(const TracedArray& heads, std::int64_t slot) {
+  return heads.name == "B" && heads.shape.size() == 2 && heads.shape[0] == 2 && slot >= heads.shape[1];
+}
+
 std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_count, std::size_t upto) {
   State state;
   for (const TracedArray& a : log.arrays()) state.push_back(a.initial);
@@ -87,11 +91,9 @@ std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_co
     l.slot = slot;
     l.phase_index = o.phase_index;
     std::copy(std::begin(o.cell), std::end(o.cell), std::begin(l.cell));
-    const auto& shape = log.arrays()[static_cast<std::size_t>(heads)].shape;
-    l.heads_shape = shape;
-    // NBS's B[2][nx]: its second half holds the copies of the row below (screen's C[nx][ny] has
-    // the same shape when nx == 2, hence the name).
-    l.secondary = l.heads_name == "B" && shape.size() == 2 && shape[0] == 2 && slot >= shape[1];
+    const TracedArray& array = log.arrays()[static_cast<std::size_t>(heads)];
+    l.heads_shape = array.shape;
+    l.secondary = is_row_below(array, slot);
     const int next = next_of[static_cast<std::size_t>(heads)];
     if (next >= 0) l.next_name = log.arrays()[static_cast<std::size_t>(next)].name;
     l.chain = walk(state, heads, slot, next, element_count, l.cut);

@@ -29,6 +29,10 @@ struct TracedList {
   bool cut = false;              // the walk stopped after N elements (the next array had a cycle)
 };
 
+// True when slot `slot` of heads array `heads` holds a copy of the row below: NBS's B[2][nx] keeps
+// them in its second half (screen's C[nx][ny] has that shape when nx == 2, hence the name).
+[[nodiscard]] bool is_row_below(const TracedArray& heads, std::int64_t slot);
+
 // Every list of the traced run in `log` over `element_count` elements, ordered by heads array,
 // build phase and slot, as they stand after the first `upto` events (the stepper's position): the
 // lists whose head was cleared before then as they were when cleared, the others from the arrays at

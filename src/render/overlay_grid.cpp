@@ -46,7 +46,7 @@ std::int64_t major_step(double cell_px) {
 
 GridCounts count_cells(const OverlayScene& s, const ViewFrame& v) {
   GridCounts out;
-  if (s.grid == nullptr || s.elements == nullptr) return out;
+  if (s.grid == nullptr) return out;
   const Grid& g = *s.grid;
   const double d = g.cell_size;
   const double x0 = g.origin[0], y0 = g.origin[1];
@@ -57,7 +57,7 @@ GridCounts count_cells(const OverlayScene& s, const ViewFrame& v) {
   out.wx = hi_x - out.lo_x;
   out.wy = hi_y - out.lo_y;
   out.stats.heat_map = d * v.ppm < kHeatMapBelowPx;
-  if (out.wx <= 0 || out.wy <= 0 || out.wx * out.wy > kMaxShadedCells) return out;
+  if (s.elements == nullptr || out.wx <= 0 || out.wy <= 0 || out.wx * out.wy > kMaxShadedCells) return out;
   out.cells.assign(static_cast<std::size_t>(out.wx * out.wy), 0);
   out.rows.assign(static_cast<std::size_t>(out.wy), 0);
   const Elements& e = *s.elements;
@@ -72,8 +72,8 @@ GridCounts count_cells(const OverlayScene& s, const ViewFrame& v) {
   return out;
 }
 
-GridStats draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts& counts, LabelSpace& labels, DrawSink& sink) {
-  GridStats stats = counts.stats;
+void draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts& counts, LabelSpace& labels, DrawSink& sink) {
+  const GridStats& stats = counts.stats;
   const Grid& g = *s.grid;
   const WorldRect& view = v.view;
   const WorldRect& free = v.free;
@@ -82,17 +82,13 @@ GridStats draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts&
   const double cell_px = d * ppm;
   const double x0 = g.origin[0], y0 = g.origin[1];
   const double x1 = x0 + d * double(g.n[0]), y1 = y0 + d * double(g.n[1]);
-  // The window of cells in view.
-  const auto lo_x = static_cast<std::int64_t>(std::clamp(std::floor((view.min.x() - x0) / d), 0.0, double(g.n[0])));
-  const auto hi_x = static_cast<std::int64_t>(std::clamp(std::ceil((view.max.x() - x0) / d), 0.0, double(g.n[0])));
-  const auto lo_y = static_cast<std::int64_t>(std::clamp(std::floor((view.min.y() - y0) / d), 0.0, double(g.n[1])));
-  const auto hi_y = static_cast<std::int64_t>(std::clamp(std::ceil((view.max.y() - y0) / d), 0.0, double(g.n[1])));
-  const std::int64_t wx = hi_x - lo_x, wy = hi_y - lo_y;
-  stats.heat_map = cell_px < kHeatMapBelowPx;
+  // The window of cells in view, as counted.
+  const std::int64_t lo_x = counts.lo_x, lo_y = counts.lo_y, wx = counts.wx, wy = counts.wy;
+  const std::int64_t hi_x = lo_x + wx, hi_y = lo_y + wy;
 
   // Occupancy: elements per cell of the window (a cell's x-list or cell list has that length), and
   // per row (its y-list's length), shaded; at scale a heat map over the bodies instead.
-  if (!counts.cells.empty() && counts.lo_x == lo_x && counts.lo_y == lo_y && counts.wx == wx && counts.wy == wy) {
+  if (!counts.cells.empty()) {
     const std::vector<std::int32_t>& count = counts.cells;
     const std::vector<std::int32_t>& row = counts.rows;
     for (std::int64_t cy = 0; cy < wy; ++cy)
@@ -139,7 +135,7 @@ GridStats draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts&
   sink.line(Layer::Cells, c10, c11, palette::kGridBorder);
   sink.line(Layer::Cells, c11, c01, palette::kGridBorder);
   sink.line(Layer::Cells, c01, c00, palette::kGridBorder);
-  if (!(free.max.x() > free.min.x() && free.max.y() > free.min.y())) return stats;
+  if (!(free.max.x() > free.min.x() && free.max.y() > free.min.y())) return;
   // A label wholly inside the free view and clear of those placed before it.
   const auto put = [&](Vec2 at, const char* text) {
     return label_inside(free, at, label_width(std::strlen(text)), kLinePx, ppm) && labels.text(at, text, palette::kTextDim, sink);
@@ -161,7 +157,7 @@ GridStats draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts&
   // Column and row numbers when cells are large enough: below and left of the grid (rows leave a
   // gap for the y-lists' heads), or along the bottom and left edges of the free view when those
   // edges are out of it (zoomed in). Their bands are then reserved: no id goes among them.
-  if (cell_px < 18.0) return stats;
+  if (cell_px < 18.0) return;
   const bool book = s.book_numbering;
   const double col_y = std::clamp(y0 - 9.0 / ppm, free.min.y() + 8.0 / ppm, std::max(free.min.y() + 8.0 / ppm, free.max.y() - 8.0 / ppm));
   for (std::int64_t ix = lo_x; ix < hi_x; ++ix) {
@@ -185,7 +181,6 @@ GridStats draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts&
     row_lo = std::min(row_lo, row_x - half_w);
   }
   labels.reserve_world(v2(row_lo, std::max(y0, col_y + band)), v2(std::min(x0, free.max.x()), std::min(y1, free.max.y())));
-  return stats;
 }
 
 void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& stats, const ViewFrame& v,

@@ -11,12 +11,6 @@ namespace nbscope::render::detail {
 
 namespace {
 
-Rgba list_colour(const TracedList& l) {
-  if (l.secondary) return palette::kXListBelow;
-  if (l.kind == "y-list" || l.kind == "z-list") return palette::kYList;
-  return palette::kXList;
-}
-
 // A row's list (NBS y-list): its pushes fix the row only.
 bool row_list(const TracedList& l) { return l.cell[0] < 0 && l.cell[1] >= 0 && l.cell[2] < 0; }
 
@@ -128,7 +122,7 @@ void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFram
     const bool selected = s.selected >= 0 && std::find(l.chain.begin(), l.chain.end(), s.selected) != l.chain.end();
     // With a selection (or a list being written), the other lists step back.
     const bool step_back = (s.selected >= 0 && !selected) || (active >= 0 && !is_active);
-    const Rgba colour = step_back ? list_colour(l).with_alpha(90) : list_colour(l);
+    const Rgba colour = step_back ? list_colour(l.kind, l.secondary).with_alpha(90) : list_colour(l.kind, l.secondary);
     const float width = is_active ? 3.0f : selected ? 2.5f : 1.5f;
     const bool arcs = s.grid != nullptr && row_list(l);
     const double d = s.grid != nullptr ? s.grid->cell_size : 0.0;
@@ -137,7 +131,7 @@ void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFram
     double widest = 1e-9;
     for (std::size_t m = 1; m < l.chain.size(); ++m)
       widest = std::max(widest, std::abs(e.x[l.chain[m]] - e.x[l.chain[m - 1]]));
-    // Lists of different kinds between the same two elements run side by side, a few pixels apart.
+    // Straight links run a few pixels beside the centre line, clear of the pair segments.
     const float side = static_cast<float>(-2.5 / ppm);
     bool bold_link = false;  // the link being drawn touches the selected element
     const auto segment = [&](Vec2 a, Vec2 b, bool head) {
@@ -213,3 +207,13 @@ void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFram
 }
 
 }  // namespace nbscope::render::detail
+
+namespace nbscope::render {
+
+Rgba list_colour(std::string_view kind, bool row_below) {
+  if (row_below) return palette::kXListBelow;
+  if (kind == "y-list" || kind == "z-list") return palette::kYList;
+  return palette::kXList;
+}
+
+}  // namespace nbscope::render

@@ -40,8 +40,8 @@ struct GridStats {
   std::int32_t max_row = 0;
 };
 
-// Elements per cell of the cells in view (row-major from (lo_x, lo_y), wx x wy; empty when too
-// many to count) and per row of them, with their maxima.
+// The window of cells in view (wx x wy from (lo_x, lo_y)), its elements per cell (row-major; empty
+// without elements or when too many to count) and per row, with their maxima.
 struct GridCounts {
   GridStats stats;
   std::int64_t lo_x = 0, lo_y = 0, wx = 0, wy = 0;
@@ -51,7 +51,7 @@ GridCounts count_cells(const OverlayScene& s, const ViewFrame& v);
 
 // The grid: occupancy shading (a heat map over the bodies when cells are a few pixels wide), lines
 // (fading to major lines), the title and the axis numbers, whose bands are reserved in `labels`.
-GridStats draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts& counts, LabelSpace& labels, DrawSink& sink);
+void draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts& counts, LabelSpace& labels, DrawSink& sink);
 // The lists the filter keeps — y-lists as arcs within their row's band, long ones as a rail of slots
 // in list order along it (numbered when there is room, in `labels`) — the stepper's list and pair
 // highlighted.

@@ -10,6 +10,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/elements.hpp"
@@ -115,6 +116,10 @@ struct OverlayScene {
   std::span<const PixelRect> covered;  // the panels' windows and the menu bar: no label is drawn under them
   bool book_numbering = false;  // element ids and cell indices drawn from 1, as the book prints them
 };
+
+// The colour of a list of kind `kind` ("y-list", "x-list", "cell list", ...), or of the row below's
+// copies (NBS's B[1]); the stepper's scene overlay uses the same.
+[[nodiscard]] Rgba list_colour(std::string_view kind, bool row_below);
 
 // Draws the scene and every overlay `flags` turns on, seen through `camera`.
 void draw_scene(const OverlayScene& scene, const OverlayFlags& flags, const Camera& camera, DrawSink& sink);

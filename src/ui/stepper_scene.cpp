@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <string>
 
+#include "render/lists.hpp"
+#include "render/overlays.hpp"
 #include "ui/stepper_panels.hpp"
 
 namespace nbscope::ui {
@@ -62,14 +64,11 @@ class SceneWriter {
     }
   }
 
+  // The lists overlay's colour of the list headed by slot `slot` of array `heads`.
   static Rgba list_colour(const char* kind, int heads, std::int64_t slot, const StepperSession& s) {
-    const std::string k = kind;
-    if (k == "y-list" || k == "z-list") return palette::kYList;
-    // NBS B[1]: the lists of the row below.
     const auto& arrays = s.stepper().trace().arrays();
-    if (heads >= 0 && arrays[heads].shape.size() == 2 && arrays[heads].name == "B" && slot >= arrays[heads].shape[1])
-      return palette::kXListBelow;
-    return palette::kXList;
+    const bool below = heads >= 0 && static_cast<std::size_t>(heads) < arrays.size() && render::is_row_below(arrays[heads], slot);
+    return render::list_colour(kind, below);
   }
 
  private:
