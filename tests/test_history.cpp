@@ -76,6 +76,12 @@ void expect_same(const FrameFacts& a, const FrameFacts& b, std::int64_t frame) {
   }
 }
 
+// Loads default.json into `loop` and steps it `frames` frames.
+void run_default(FrameLoop& loop, int frames) {
+  loop.load_scene_file(scene("default"));
+  for (int k = 0; k < frames; ++k) loop.step();
+}
+
 TEST(PackedPairs, RoundTripsSortedPairs) {
   PairList pairs = {{0, 1}, {0, 7}, {0, 300000}, {2, 3}, {2, 200}, {150, 151}, {150, 9000}, {70000, 70001}};
   PairList back;
@@ -204,8 +210,7 @@ TEST(History, ResumingReplaysDrags) {
   EXPECT_EQ(rewound.report().hash, straight.report().hash);
   // The drag mattered: without it frame 80 is another.
   FrameLoop undisturbed;
-  undisturbed.load_scene_file(scene("default"));
-  for (int k = 0; k < 80; ++k) undisturbed.step();
+  run_default(undisturbed, 80);
   EXPECT_NE(undisturbed.report().hash, straight.report().hash);
 }
 
@@ -240,8 +245,7 @@ TEST(History, ChecksSwitchedOffKeepTheRunsViolations) {
   FrameLoopOptions o;
   o.fault = Fault::DropPair;
   FrameLoop loop(o);
-  loop.load_scene_file(scene("default"));
-  for (int k = 0; k < 10; ++k) loop.step();
+  run_default(loop, 10);
   const std::int64_t total = loop.violation_log().total();
   ASSERT_GT(total, 0);
   loop.set_checks_enabled(false);
@@ -255,8 +259,7 @@ TEST(History, ChecksSwitchedOffKeepTheRunsViolations) {
 TEST(History, ThePastIsReadOnlyUntilResumed) {
   ASSERT_TRUE(kRegistered);
   FrameLoop loop;
-  loop.load_scene_file(scene("default"));
-  for (int k = 0; k < 20; ++k) loop.step();
+  run_default(loop, 20);
   loop.show_frame(5);
   const Elements& e = loop.elements();
   EXPECT_FALSE(loop.begin_drag(e.x[e.size() - 1], e.y[e.size() - 1]));  // resume first
@@ -272,8 +275,7 @@ TEST(History, ThePastIsReadOnlyUntilResumed) {
 TEST(History, TheBudgetDropsTheOldestStatesOnly) {
   ASSERT_TRUE(kRegistered);
   FrameLoop loop;
-  loop.load_scene_file(scene("default"));
-  for (int k = 0; k < 50; ++k) loop.step();
+  run_default(loop, 50);
   const std::size_t all = loop.history().bytes();
   loop.set_history_budget(all / 4);
   EXPECT_LE(loop.history().bytes(), all / 4 + 51 * sizeof(FrameSummary));
@@ -302,8 +304,7 @@ TEST(History, TheViolationLogFollowsTheRun) {
   FrameLoopOptions o;
   o.fault = Fault::DropPair;
   FrameLoop loop(o);
-  loop.load_scene_file(scene("default"));
-  for (int k = 0; k < 30; ++k) loop.step();
+  run_default(loop, 30);
   const ViolationLog& log = loop.violation_log();
   EXPECT_GT(log.total(), 0);
   EXPECT_EQ(log.total(), static_cast<std::int64_t>(log.listed().size()));
