@@ -8,6 +8,7 @@
 
 #include "bench_trace_off.hpp"
 #include "core/detector.hpp"
+#include "core/nbs.hpp"
 #include "support/generators.hpp"
 
 namespace nbscope {
@@ -23,6 +24,14 @@ const Elements& cached_layout(Layout layout, std::int64_t n, int dim) {
   return *slot;
 }
 
+// The counters of BM_Detect: ns_per_element, pairs, bytes_per_element (the detector's own arrays).
+void set_detect_counters(benchmark::State& state, std::int64_t n, std::size_t pairs, std::size_t bytes) {
+  state.counters["ns_per_element"] =
+      benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["pairs"] = static_cast<double>(pairs);
+  state.counters["bytes_per_element"] = static_cast<double>(bytes) / static_cast<double>(n);
+}
+
 void bm_detect(benchmark::State& state, std::string algorithm, Layout layout, std::int64_t n, int dim) {
   const Elements& e = cached_layout(layout, n, dim);
   auto detector = make_detector(algorithm);
@@ -32,10 +41,21 @@ void bm_detect(benchmark::State& state, std::string algorithm, Layout layout, st
     benchmark::DoNotOptimize(pairs.data());
     benchmark::ClobberMemory();
   }
-  state.counters["ns_per_element"] =
-      benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-  state.counters["pairs"] = static_cast<double>(pairs.size());
-  state.counters["bytes_per_element"] = static_cast<double>(detector->own_bytes()) / static_cast<double>(n);
+  set_detect_counters(state, n, pairs.size(), detector->own_bytes());
+}
+
+// The book's loops as written (NbsDetector::detect_book), beside BM_Detect/nbs (the fast path), so
+// that one run gives the ratio of the two on identical inputs.
+void bm_nbs_book(benchmark::State& state, Layout layout, std::int64_t n, int dim) {
+  const Elements& e = cached_layout(layout, n, dim);
+  NbsDetector detector;
+  PairList pairs;
+  for (auto _ : state) {
+    detector.detect_book(e, DetectOptions{}, pairs);
+    benchmark::DoNotOptimize(pairs.data());
+    benchmark::ClobberMemory();
+  }
+  set_detect_counters(state, n, pairs.size(), detector.book_bytes());
 }
 
 void register_detect_benchmarks() {
@@ -49,6 +69,11 @@ void register_detect_benchmarks() {
           const std::string name = "BM_Detect/" + info.name + (dim == 3 ? "3d" : "") + "/" +
                                    testdata::layout_name(layout) + "/" + std::to_string(n);
           benchmark::RegisterBenchmark(name.c_str(), bm_detect, info.name, layout, n, dim)->Unit(benchmark::kMillisecond);
+          if (info.name == "nbs") {
+            const std::string book = "BM_Detect/nbs_book" + std::string(dim == 3 ? "3d" : "") + "/" +
+                                     testdata::layout_name(layout) + "/" + std::to_string(n);
+            benchmark::RegisterBenchmark(book.c_str(), bm_nbs_book, layout, n, dim)->Unit(benchmark::kMillisecond);
+          }
         }
       }
     }

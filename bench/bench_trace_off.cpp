@@ -1,6 +1,6 @@
 // nbscope_bench: BM_TraceOff/<variant>/<layout>/<N> — does tracing cost anything when it is off?
 //
-// `nbs` is NbsDetector::detect(), the NullTrace instantiation of the traced template. `nbs_plain`
+// `nbs` is NbsDetector::detect_book(), the NullTrace instantiation of the traced template. `nbs_plain`
 // is the control: the same 2D loops (core/nbs.cpp) written with no trace hooks at all, as a
 // detector without a stepper would be. Equal times (within the noise of repetitions) show the
 // hooks compile away. The control is a deliberate copy; main() checks that it finds the same
@@ -95,7 +95,7 @@ void bm_trace_off(benchmark::State& state, bool plain, Layout layout, std::int64
     if (plain) {
       control.detect(e, pairs);
     } else {
-      nbs.detect(e, DetectOptions{}, pairs);
+      nbs.detect_book(e, DetectOptions{}, pairs);
     }
     benchmark::DoNotOptimize(pairs.data());
     benchmark::ClobberMemory();
@@ -123,7 +123,7 @@ bool trace_off_control_agrees() {
   for (Layout layout : testdata::all_layouts()) {
     const Elements e = testdata::make_layout(layout, 3'000, 2, 7);
     PairList a, b;
-    NbsDetector().detect(e, DetectOptions{}, a);
+    NbsDetector().detect_book(e, DetectOptions{}, a);
     PlainNbs().detect(e, b);
     sort_pairs(a);
     sort_pairs(b);

@@ -11,7 +11,7 @@ def main(path: str) -> None:
     print(f"{'benchmark':<48} {'ms/frame':>10} {'ns/elem':>9} {'B/elem':>8} {'pairs':>10}")
     for b in rows:
         ms = b["real_time"] if b.get("time_unit") == "ms" else b["real_time"] / 1e6
-        print(f"{b['name']:<48} {ms:>10.3f} {b.get('ns_per_element', 0):>9.1f} "
+        print(f"{b['name']:<48} {ms:>10.3f} {ns_per_element(b):>9.1f} "
               f"{b.get('bytes_per_element', 0):>8.1f} {int(b.get('pairs', 0)):>10}")
     # Tracing off vs no trace hooks at all, measured in this run: ~1.00 means it costs nothing.
     by_name = {b["name"]: b for b in rows}
@@ -21,6 +21,43 @@ def main(path: str) -> None:
             if plain:
                 print(f"trace off / no hooks, {name[len('BM_TraceOff/nbs/'):]}: "
                       f"{b['real_time'] / plain['real_time']:.3f}")
+    print_nbs_ratios(by_name)
+
+
+def ns_per_element(b: dict) -> float:
+    """The ns_per_element counter, which Google Benchmark stores as seconds per element (an inverted rate)."""
+    return b.get("ns_per_element", 0) * 1e9
+
+
+def ns(by_name: dict, name: str):
+    b = by_name.get(name)
+    return ns_per_element(b) if b else None
+
+
+def print_nbs_ratios(by_name: dict) -> None:
+    """The ratios issue 12 asks for, each from this one run (rows missing from a filtered run are skipped)."""
+    lines = []
+    for dim in ("", "3d"):
+        for layout in ("loose", "dense", "clustered"):
+            small, large = ns(by_name, f"BM_Detect/nbs{dim}/{layout}/10000"), ns(by_name, f"BM_Detect/nbs{dim}/{layout}/1000000")
+            if small and large:
+                lines.append(f"nbs{dim} {layout}: ns/elem at 1e6 / at 1e4 = {large / small:.2f}")
+            for n in ("10000", "100000", "1000000"):
+                fast, book = ns(by_name, f"BM_Detect/nbs{dim}/{layout}/{n}"), ns(by_name, f"BM_Detect/nbs_book{dim}/{layout}/{n}")
+                if fast and book:
+                    lines.append(f"nbs{dim} {layout}/{n}: book loops / fast path = {book / fast:.2f}")
+            if dim:
+                for n in ("10000", "100000", "1000000"):
+                    fast, sort = ns(by_name, f"BM_Detect/nbs3d/{layout}/{n}"), ns(by_name, f"BM_Detect/sort3d/{layout}/{n}")
+                    if fast and sort:
+                        lines.append(f"nbs3d {layout}/{n}: sort3d / nbs3d = {sort / fast:.2f}")
+    fast = ns(by_name, "BM_Detect/nbs/loose/100000")
+    for motion in ("small", "large"):
+        box2d = ns(by_name, f"BM_Box2DBroadphase/loose/100000/{motion}")
+        if fast and box2d:
+            lines.append(f"loose/100000: Box2D broadphase ({motion} motion) / nbs from scratch = {box2d / fast:.2f}")
+    for line in lines:
+        print(line)
 
 
 if __name__ == "__main__":

@@ -169,14 +169,14 @@ TEST(Memory, NbsIn3DIsNzPlusTwoNyPlusFiveNxPlusThreeN) {
     const Elements e = testdata::make_layout(layout, 900, 3, 4);
     sorted_detect(nbs, e);
     const Grid& g = *nbs.last_grid();
-    EXPECT_EQ(nbs.own_bytes(), sizeof(std::int32_t) * static_cast<std::size_t>(g.n[2] + 2 * g.n[1] + 5 * g.n[0] + 3 * 900))
+    EXPECT_EQ(nbs.book_bytes(), sizeof(std::int32_t) * static_cast<std::size_t>(g.n[2] + 2 * g.n[1] + 5 * g.n[0] + 3 * 900))
         << testdata::layout_name(layout);
   }
   // And back to 2D with the same instance: the 3D arrays no longer count.
   const Elements flat = testdata::make_layout(Layout::Dense, 500, 2, 4);
   sorted_detect(nbs, flat);
   const Grid& g = *nbs.last_grid();
-  EXPECT_EQ(nbs.own_bytes(), sizeof(std::int32_t) * static_cast<std::size_t>(g.n[1] + 2 * g.n[0] + 2 * 500));
+  EXPECT_EQ(nbs.book_bytes(), sizeof(std::int32_t) * static_cast<std::size_t>(g.n[1] + 2 * g.n[0] + 2 * 500));
 }
 
 TEST(Memory, TreeIsThreeIntegersPerNodePlusN) {

@@ -163,7 +163,7 @@ TEST(Book, NbsOnTheNineElements) {
   EXPECT_EQ(walk(state[0][7 - 1], state[1]), zero_based({9, 7, 5, 4, 3, 2, 1}));
   EXPECT_EQ(walk(state[0][6 - 1], state[1]), zero_based({8, 6}));
   EXPECT_EQ(std::count(state[0].begin(), state[0].end(), -1), 8);
-  EXPECT_EQ(nbs.own_bytes(), (10u + 2 * 10u + 2 * 9u) * sizeof(std::int32_t));
+  EXPECT_EQ(nbs.book_bytes(), (10u + 2 * 10u + 2 * 9u) * sizeof(std::int32_t));
 }
 
 // Eq. 3.54: the sorting algorithm needs M = 3N in 2D and 4N in 3D.

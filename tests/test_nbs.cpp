@@ -28,7 +28,7 @@ TEST(Nbs, MemoryIsNyPlusTwoNxPlusTwoNIntegers) {
     PairList p;
     nbs.detect(e, {}, p);
     const Grid& g = *nbs.last_grid();
-    EXPECT_EQ(nbs.own_bytes(), sizeof(std::int32_t) * static_cast<std::size_t>(g.n[1] + 2 * g.n[0] + 2 * e.size()))
+    EXPECT_EQ(nbs.book_bytes(), sizeof(std::int32_t) * static_cast<std::size_t>(g.n[1] + 2 * g.n[0] + 2 * e.size()))
         << testdata::layout_name(layout);
   }
 }

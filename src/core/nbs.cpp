@@ -44,10 +44,16 @@ const std::vector<const char*>& NbsDetector::pseudocode_2d() {
   return lines;
 }
 
-std::size_t NbsDetector::own_bytes() const {
+std::size_t NbsDetector::book_bytes() const {
   // 2D: ny + 2nx + 2N integers (book p.102); 3D: nz + 2ny + 5nx + 3N; for the last detection.
   return (y_heads_.size() + x_heads_.size() + y_next_.size() + x_next_.size() + z_heads_.size() + z_next_.size()) *
          sizeof(std::int32_t);
+}
+
+std::size_t NbsDetector::own_bytes() const {
+  std::size_t scratch = (order_.capacity() + list_end_.capacity()) * sizeof(std::int32_t);
+  for (const Buffer& b : buffers_) scratch += b.slots.capacity() * sizeof(Slot);
+  return book_bytes() + scratch;
 }
 
 void NbsDetector::prepare(std::int64_t n_elements) {
@@ -186,6 +192,11 @@ void NbsDetector::run_2d(const Elements& e, const DetectOptions& options, PairLi
 }
 
 void NbsDetector::detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) {
+  if (elements.dim == 3) return run_3d_fast(elements, options, out_pairs);
+  run_2d_fast(elements, options, out_pairs);
+}
+
+void NbsDetector::detect_book(const Elements& elements, const DetectOptions& options, PairList& out_pairs) {
   if (elements.dim == 3) return detect_3d(elements, options, out_pairs, nullptr);
   NullTrace none;
   run_2d(elements, options, out_pairs, none);

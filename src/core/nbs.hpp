@@ -11,6 +11,16 @@
 // non-empty row (iy,iz) the x-lists of the five rows the 3D contact mask reaches, (iy,iz),
 // (iy-1,iz), (iy-1,iz-1), (iy,iz-1), (iy+1,iz-1) (heads A[5][nx], next X[N]); then the mask's 13
 // neighbour cells and the own cell. Time O(N + nz), memory nz + 2ny + 5nx + 3N integers.
+//
+// Two paths compute the same arrays and the same pairs in the same order (tests/test_nbs_fast.cpp):
+// - detect_traced() and detect_book() run the book's loops as written (nbs.cpp, nbs3d.cpp): every
+//   list walk follows `next`, so with elements in random memory order each step is a cache miss;
+// - detect() runs the fast path (nbs_fast.cpp): the rows (3D: layers) are ordered by one counting
+//   sort instead of walking the y-lists (z-lists), each row's (layer's) elements are gathered once,
+//   with prefetching, into a contiguous buffer with their cells integerised once, the book's pushes
+//   and the contact mask run on that buffer in the book's order, and the buffer of the row (layer)
+//   below is reused for the next one. The next arrays get each element's last value once, when its
+//   buffer is retired. Extra memory: N integers and O(nx + ny) (3D: + nz), so still O(N).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -28,10 +38,27 @@ class NbsDetector final : public Detector {
 
   [[nodiscard]] std::string_view name() const override { return "nbs"; }
   [[nodiscard]] bool supports_dim(int dim) const override { return dim == 2 || dim == 3; }
+  // The fast path (see above): the book's arrays and pairs, faster.
   void detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) override;
   void detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs,
                      TraceLog& out_trace) override;
+  // The book's loops as written, untraced (what the trace compiles to when off; the reference of the fast path).
+  void detect_book(const Elements& elements, const DetectOptions& options, PairList& out_pairs);
+  // The book's arrays plus the fast path's scratch (order, row offsets, row buffers), in bytes.
   [[nodiscard]] std::size_t own_bytes() const override;
+  // The book's arrays alone: 2D ny + 2nx + 2N integers, 3D nz + 2ny + 5nx + 3N (pp.102, 123).
+  [[nodiscard]] std::size_t book_bytes() const;
+
+  // The book's arrays after the last detection (heads are all -1 again; next arrays hold their last values).
+  // 2D: y_heads[ny] and Y[N]; 3D: B[2][ny] (B[s][iy] at s*ny+iy) and Y[N].
+  [[nodiscard]] const std::vector<std::int32_t>& y_heads() const { return y_heads_; }
+  [[nodiscard]] const std::vector<std::int32_t>& y_next() const { return y_next_; }
+  // 2D: B[2][nx] (B[s][ix] at s*nx+ix) and X[N]; 3D: A[5][nx] and X[N].
+  [[nodiscard]] const std::vector<std::int32_t>& x_heads() const { return x_heads_; }
+  [[nodiscard]] const std::vector<std::int32_t>& x_next() const { return x_next_; }
+  // 3D: C[nz] and Z[N]; empty in 2D.
+  [[nodiscard]] const std::vector<std::int32_t>& z_heads() const { return z_heads_; }
+  [[nodiscard]] const std::vector<std::int32_t>& z_next() const { return z_next_; }
   [[nodiscard]] const Grid* last_grid() const override { return &grid_; }
   [[nodiscard]] const std::vector<const char*>& pseudocode(int dim) const override {
     return dim == 3 ? pseudocode_3d() : pseudocode_2d();
@@ -50,7 +77,33 @@ class NbsDetector final : public Detector {
   template <class Trace>
   void run_3d(const Elements& elements, const DetectOptions& options, PairList& out_pairs, Trace& trace);
 
+  // The fast path (nbs_fast.cpp).
+  void run_2d_fast(const Elements& elements, const DetectOptions& options, PairList& out_pairs);
+  void run_3d_fast(const Elements& elements, const DetectOptions& options, PairList& out_pairs);
+  // Counting sort of the elements by the cell stored in `cell_of` (0 <= cell < cells): order_ holds
+  // every list's elements contiguous and in list order (descending k, as pushing at the head
+  // leaves them); list c spans [c == 0 ? 0 : list_end_[c-1], list_end_[c]).
+  void order_by_list(const std::int32_t* cell_of, std::int64_t n_elements, std::int32_t cells);
+
+  // One row's (3D: layer's) elements, gathered for the fast path; indices into it are local.
+  struct Slot {
+    double x, y, z, r;
+    ElementId id;
+    std::int32_t ix, iy;
+    std::int32_t next;    // local next of the x-list (2D) or y-list (3D) it was pushed onto last
+    std::int32_t xnext;   // 3D: local next of the x-list it was pushed onto last
+    std::int32_t last_x;  // the book's X[id] as last written (global id, -1 ends)
+    std::int32_t last_y;  // 3D: the book's Y[id] as last written
+  };
+  struct Buffer {
+    std::int32_t list = -1;  // the row (layer) it holds, -1 for none
+    std::vector<Slot> slots;
+  };
+
   Grid grid_;
+  std::vector<std::int32_t> order_;     // fast path: N element ids grouped by row (layer), in list order
+  std::vector<std::int32_t> list_end_;  // fast path: end of each row's (layer's) run in order_
+  Buffer buffers_[2];                   // fast path: the row (layer) being processed and the one below
   std::vector<std::int32_t> y_heads_;  // 2D: ny heads of the row lists; 3D: B[2][ny] (B[s][iy] at s*ny+iy)
   std::vector<std::int32_t> y_next_;   // Y[N]
   std::vector<std::int32_t> x_heads_;  // 2D: B[2][nx] (B[s][ix] at s*nx+ix); 3D: A[5][nx] (A[r][ix] at r*nx+ix)

@@ -9,9 +9,24 @@
 
 namespace nbscope {
 
-void PairCollector::overflow() const {
-  throw Error("more than " + std::to_string(limit_) +
-              " contact pairs (the pair limit; too many elements overlap at one place)");
+void throw_pair_limit(std::size_t limit) {
+  throw Error("more than " + std::to_string(limit) + " contact pairs (the pair limit; too many elements overlap at one place)");
+}
+
+void PairCollector::overflow() const { throw_pair_limit(limit_); }
+
+void BranchFreePairs::grow(std::size_t kept) {
+  if (kept > limit_) {
+    out_.resize(limit_);
+    throw_pair_limit(limit_);
+  }
+  // Doubling, but never far past the limit: the tests beyond it only find that it is broken.
+  out_.resize(std::max(kept + 1, std::min(2 * out_.size(), limit_ + 1)));
+}
+
+void BranchFreePairs::finish(std::size_t kept) {
+  out_.resize(std::min(kept, limit_));
+  if (kept > limit_) throw_pair_limit(limit_);
 }
 
 void sort_pairs(PairList& pairs) { std::sort(pairs.begin(), pairs.end()); }

@@ -1,5 +1,6 @@
 // nbscope core: contact pairs, the contact test, and a bounded pair collector.
 #pragma once
+#include <algorithm>
 #include <compare>
 #include <cstdint>
 #include <vector>
@@ -48,6 +49,53 @@ class PairCollector {
   PairList& out_;
   std::size_t limit_;
 };
+
+// Throws the Error of a detection past its pair limit.
+[[noreturn]] void throw_pair_limit(std::size_t limit);
+
+// PairCollector for hot loops whose contact tests are unpredictable: the caller writes every pair
+// it tests at out[kept] and advances `kept` only on contact (offer_pair), so no branch depends on
+// the test and `kept` stays in a register; when kept reaches capacity(), it asks reserve() for room.
+class BranchFreePairs {
+ public:
+  // Collects into `out` (cleared), throwing Error once more than `limit` pairs are kept.
+  BranchFreePairs(PairList& out, std::size_t limit) : out_(out), limit_(limit) {
+    out_.clear();
+    out_.resize(std::max<std::size_t>(out_.capacity(), 1024));
+  }
+  BranchFreePairs(const BranchFreePairs&) = delete;
+  BranchFreePairs& operator=(const BranchFreePairs&) = delete;
+  // The array to write pairs into, and how many fit.
+  [[nodiscard]] Pair* data() { return out_.data(); }
+  [[nodiscard]] std::size_t capacity() const { return out_.size(); }
+  // Room for more pairs after the `kept` kept so far (throws past the limit); then data() and capacity() again.
+  void grow(std::size_t kept);
+  // Leaves exactly the `kept` pairs in `out`; throws past the limit.
+  void finish(std::size_t kept);
+
+ private:
+  PairList& out_;
+  std::size_t limit_;
+};
+
+// The place pairs are written to: out[kept], with room up to `capacity`.
+struct PairCursor {
+  Pair* out;
+  std::size_t kept;
+  std::size_t capacity;
+  BranchFreePairs* owner;
+};
+
+// Writes {a, b} in (min, max) order at the cursor and keeps it when `contact` (BranchFreePairs).
+inline void offer_pair(PairCursor& c, bool contact, ElementId a, ElementId b) {
+  if (c.kept == c.capacity) [[unlikely]] {
+    c.owner->grow(c.kept);
+    c.out = c.owner->data();
+    c.capacity = c.owner->capacity();
+  }
+  c.out[c.kept] = a < b ? Pair{a, b} : Pair{b, a};
+  c.kept += contact ? 1 : 0;
+}
 
 // A sorted pair list packed as variable-length deltas (the gap to the previous i, then the gap to the
 // previous j of the same i, or to i): 2-4 bytes a pair instead of 8, for what the frame history keeps.
