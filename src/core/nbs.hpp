@@ -94,10 +94,12 @@ class NbsDetector final : public Detector {
     std::int32_t xnext;   // 3D: local next of the x-list it was pushed onto last
     std::int32_t last_x;  // the book's X[id] as last written (global id, -1 ends)
     std::int32_t last_y;  // 3D: the book's Y[id] as last written
+    std::int32_t run;     // 3D: at the head of a row, the number of its elements (contiguous from it)
   };
   struct Buffer {
     std::int32_t list = -1;  // the row (layer) it holds, -1 for none
     std::vector<Slot> slots;
+    std::vector<Slot> regrouped;  // 3D: the layer's slots regrouped row by row, swapped into slots
   };
 
   Grid grid_;

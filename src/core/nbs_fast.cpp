@@ -278,47 +278,64 @@ void NbsDetector::run_3d_fast(const Elements& e, const DetectOptions& options, P
         s[i].last_y = h == -1 ? -1 : s[h].id;
         b0[s[i].iy] = static_cast<std::int32_t>(i);
       }
+      // Regroup the layer row by row, each row's elements contiguous in y-list order and the rows
+      // in the order the book processes them (when the walk of the z-list meets a row's head), so
+      // that the five walks of each y-list below are sequential reads, not pointer chasing.
+      cur->regrouped.resize(m);
+      Slot* const t = cur->regrouped.data();
+      std::size_t placed = 0;
+      for (std::size_t i = 0; i < m; ++i) {
+        const std::int32_t iy = s[i].iy;
+        if (b0[iy] != static_cast<std::int32_t>(i)) continue;
+        const auto head = static_cast<std::int32_t>(placed);
+        for (std::int32_t j = static_cast<std::int32_t>(i); j != -1; j = s[j].next) t[placed++] = s[j];
+        t[head].run = static_cast<std::int32_t>(placed) - head;
+        b0[iy] = head;
+      }
+      cur->slots.swap(cur->regrouped);
+      Slot* const c = cur->slots.data();
       Slot* const sb = below->slots.data();
 
       // One row (iy, iz): x-lists of the five rows the mask reaches, contacts, clearing.
       auto process_row = [&](std::int32_t iy) {
-        std::int32_t source[5];  // first local index of each row's y-list, -1 for none
-        Slot* from[5] = {s, s, sb, sb, sb};
-        source[0] = b0[iy];
-        source[1] = iy > 0 ? b0[iy - 1] : -1;
-        source[2] = has_below && iy > 0 ? b1[iy - 1] : -1;
-        source[3] = has_below ? b1[iy] : -1;
-        source[4] = has_below && iy + 1 < ny ? b1[iy + 1] : -1;
+        std::int32_t first[5];  // where each row's run starts, -1 for none
+        Slot* from[5] = {c, c, sb, sb, sb};
+        first[0] = b0[iy];
+        first[1] = iy > 0 ? b0[iy - 1] : -1;
+        first[2] = has_below && iy > 0 ? b1[iy - 1] : -1;
+        first[3] = has_below ? b1[iy] : -1;
+        first[4] = has_below && iy + 1 < ny ? b1[iy + 1] : -1;
+        std::int32_t last[5];
+        for (int r = 0; r < 5; ++r) last[r] = first[r] == -1 ? -1 : first[r] + from[r][first[r]].run;
         for (int r = 0; r < 5; ++r) {
           std::int32_t* const row = a + std::int64_t{r} * nx;
           Slot* const f = from[r];
-          for (std::int32_t j = source[r]; j != -1; j = f[j].next) {
+          for (std::int32_t j = first[r]; j < last[r]; ++j) {
             const std::int32_t h = row[f[j].ix];
             f[j].xnext = h;
             row[f[j].ix] = j;
           }
         }
-        for (std::int32_t j = source[0]; j != -1; j = s[j].next) s[j].last_x = s[j].xnext == -1 ? -1 : s[s[j].xnext].id;
-        for (std::int32_t j = source[0]; j != -1; j = s[j].next) {
-          const Slot& k = s[j];
+        for (std::int32_t j = first[0]; j < last[0]; ++j) c[j].last_x = c[j].xnext == -1 ? -1 : c[c[j].xnext].id;
+        for (std::int32_t j = first[0]; j < last[0]; ++j) {
+          const Slot& k = c[j];
           const std::int32_t left = k.ix > 0 ? a[k.ix - 1] : -1;
           const std::int32_t jx0 = std::max(k.ix - 1, 0), jx1 = std::min(k.ix + 1, nx - 1);
-          test_list(k, s, k.xnext);  // own cell: the elements after k
-          test_list(k, s, left);
+          test_list(k, c, k.xnext);  // own cell: the elements after k
+          test_list(k, c, left);
           for (int r = 1; r < 5; ++r) {
-            if (source[r] == -1) continue;
+            if (first[r] == -1) continue;
             const std::int32_t* const row = a + std::int64_t{r} * nx;
             for (std::int32_t jx = jx0; jx <= jx1; ++jx) test_list(k, from[r], row[jx]);
           }
         }
         for (int r = 0; r < 5; ++r) {
           std::int32_t* const row = a + std::int64_t{r} * nx;
-          for (std::int32_t j = source[r]; j != -1; j = from[r][j].next) row[from[r][j].ix] = -1;
+          for (std::int32_t j = first[r]; j < last[r]; ++j) row[from[r][j].ix] = -1;
         }
       };
-      // Each non-empty row once, when the walk of the z-list meets its head (the book's order).
-      for (std::size_t i = 0; i < m; ++i)
-        if (b0[s[i].iy] == static_cast<std::int32_t>(i)) process_row(s[i].iy);
+      // Each non-empty row once, in the book's order (which the regrouping kept).
+      for (std::size_t i = 0; i < m; i += static_cast<std::size_t>(c[i].run)) process_row(c[i].iy);
 
       if (has_below) retire(*below, b1);  // layer iz-1 takes no more pushes
       zh[iz] = -1;
