@@ -69,7 +69,8 @@ void ScalingJob::show(const ScalingResult& result, const ScalingPlan& plan, cons
   if (thread_.joinable()) thread_.join();
   std::lock_guard lock(mutex_);
   status_.running = false;
-  status_.done = status_.total = result.rows.size() + result.notes.size();
+  // A run made elsewhere fills the bar; rows read from a file ran nowhere.
+  status_.done = status_.total = source.empty() ? result.rows.size() + result.notes.size() : 0;
   status_.point.clear();
   status_.plan = plan;
   status_.result = result;

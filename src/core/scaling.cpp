@@ -35,9 +35,11 @@ bool measure(Detector& detector, const Elements& elements, const ScalingPlan& pl
     // Enough, or another run (about as long as the best) would go past the point's budget.
     if (spent >= plan.min_seconds || spent + best > plan.max_seconds) break;
   }
+  // To a thousandth: finer digits are noise, and the CSV stays readable.
+  const auto thousandths = [](double v) { return std::round(v * 1000.0) / 1000.0; };
   const double n = static_cast<double>(elements.size());
-  row.ns_per_element = best * 1e9 / n;
-  row.bytes_per_element = static_cast<double>(detector.own_bytes()) / n;
+  row.ns_per_element = thousandths(best * 1e9 / n);
+  row.bytes_per_element = thousandths(static_cast<double>(detector.own_bytes()) / n);
   row.pairs = static_cast<std::int64_t>(pairs.size());
   return true;
 }

@@ -33,8 +33,8 @@ struct ScalingRow {
   std::string algorithm;
   std::string layout;  // layout_name()
   std::int64_t n = 0;
-  double ns_per_element = 0;     // the best run's detection time / N
-  double bytes_per_element = 0;  // Detector::own_bytes() / N
+  double ns_per_element = 0;     // the best run's detection time / N, to a thousandth
+  double bytes_per_element = 0;  // Detector::own_bytes() / N, to a thousandth
   std::int64_t pairs = 0;
   int repeats = 0;  // timed runs of detect()
   friend bool operator==(const ScalingRow&, const ScalingRow&) = default;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 
 #include "core/error.hpp"
@@ -145,14 +146,15 @@ class ScalingPanel final : public Panel {
     if (s.running) {
       std::snprintf(overlay, sizeof overlay, "%zu/%zu %s", s.done, s.total, s.point.c_str());
     } else {
-      std::snprintf(overlay, sizeof overlay, "%s planned", plural(static_cast<long long>(scaling_point_count(plan)), "point").c_str());
+      std::snprintf(overlay, sizeof overlay, "Run: %s", plural(static_cast<long long>(scaling_point_count(plan)), "point").c_str());
     }
     ImGui::ProgressBar(s.total > 0 ? static_cast<float>(s.done) / static_cast<float>(s.total) : 0.0f, ImVec2(-1, 0), overlay);
     const std::string rows = plural(static_cast<long long>(s.result.rows.size()), "point");
     char seconds[32] = "-";
     if (!sim.hide_timings) std::snprintf(seconds, sizeof seconds, "%.1f s", s.seconds);
     if (!s.source.empty()) {
-      ImGui::TextDisabled("%s read from %s", rows.c_str(), s.source.c_str());
+      // The file's name only: the same picture wherever the file lives (golden screenshots).
+      ImGui::TextDisabled("%s read from %s", rows.c_str(), std::filesystem::path(s.source).filename().c_str());
     } else if (s.result.cancelled && !s.running) {
       ImGui::TextDisabled("cancelled: %s of %zu measured in %s", rows.c_str(), s.total, seconds);
     } else if (s.generation > 0) {

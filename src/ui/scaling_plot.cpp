@@ -42,6 +42,27 @@ void dashed_line(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 colour, float dash = 
   }
 }
 
+// A series' segment from a to b in the line style of layout marker `style`: solid, dashed,
+// dotted, dash-dotted, then solid again.
+void styled_line(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 colour, int style) {
+  static constexpr float kPatterns[][4] = {{1, 0, 0, 0}, {9, 4, 0, 0}, {2, 3, 0, 0}, {9, 3, 2, 3}};
+  const float* pattern = kPatterns[style % 4];
+  const float dx = b.x - a.x, dy = b.y - a.y;
+  const float length = std::sqrt(dx * dx + dy * dy);
+  if (pattern[1] == 0 || length <= 0) {
+    dl->AddLine(a, b, colour, 2.0f);
+    return;
+  }
+  float t = 0;
+  for (int k = 0; t < length; k = (k + 2) % 4) {
+    if (pattern[k] == 0) k = 0;
+    const float t1 = std::min(t + pattern[k], length);
+    dl->AddLine(ImVec2(a.x + dx * t / length, a.y + dy * t / length), ImVec2(a.x + dx * t1 / length, a.y + dy * t1 / length),
+                colour, 2.0f);
+    t = t1 + pattern[k + 1];
+  }
+}
+
 // The decades [lo, hi] (hi > lo) that hold every value of `values` (all > 0).
 void decade_range(const std::vector<double>& values, int& lo, int& hi) {
   const auto [mn, mx] = std::minmax_element(values.begin(), values.end());
@@ -92,7 +113,7 @@ void draw_scaling_plot(const char* title, ScalingQuantity quantity, const std::v
   const float width = std::max(ImGui::GetContentRegionAvail().x, 120.0f);
   ImGui::Dummy(ImVec2(width, height));
   const float font = ImGui::GetFontSize();
-  const float left = origin.x + font * 2.6f, right = origin.x + width - font * 4.6f;  // room for "O(N log N)"
+  const float left = origin.x + font * 2.6f, right = origin.x + width - ImGui::CalcTextSize("O(N log N) ").x;
   const float top = origin.y + 4.0f, bottom = origin.y + height - font * 1.4f;
   dl->AddRectFilled(ImVec2(left, top), ImVec2(right, bottom), kPlotBackground);
 
@@ -118,10 +139,16 @@ void draw_scaling_plot(const char* title, ScalingQuantity quantity, const std::v
   }
   for (auto& [key, points] : series)
     std::sort(points.begin(), points.end(), [](const ScalingRow* a, const ScalingRow* b) { return a->n < b->n; });
-  // The references start at the first series' first point: flat for O(N) per element, rising as
-  // log N for O(N log N). Their ends are part of the range.
-  const ScalingRow& anchor = *series[order.front()].front();
-  const double x0 = static_cast<double>(anchor.n), y0 = value_of(anchor, quantity);
+  // The references start at nbs's first point (else the lowest first point of a series): flat for
+  // O(N) per element, rising as log N for O(N log N). Their ends are part of the range.
+  const ScalingRow* anchor = series[order.front()].front();
+  for (const auto& key : order) {
+    const ScalingRow* first = series[key].front();
+    const bool anchor_is_nbs = anchor->algorithm == "nbs";
+    if ((key.first == "nbs" && !anchor_is_nbs) || (!anchor_is_nbs && value_of(*first, quantity) < value_of(*anchor, quantity)))
+      anchor = first;
+  }
+  const double x0 = static_cast<double>(anchor->n), y0 = value_of(*anchor, quantity);
   int x_lo = 0, x_hi = 0, y_lo = 0, y_hi = 0;
   decade_range(xs, x_lo, x_hi);
   const double x_end = std::pow(10.0, x_hi);
@@ -153,10 +180,9 @@ void draw_scaling_plot(const char* title, ScalingQuantity quantity, const std::v
     }
   }
   dl->AddRect(ImVec2(left, top), ImVec2(right, bottom), kAxis);
-  const char* x_label = "N";
-  dl->AddText(ImVec2(right + 4, bottom + 2), kAxis, x_label);
+  dl->AddText(ImVec2(right + ImGui::CalcTextSize("1e0 ").x * 0.5f + 6, bottom + 2), kAxis, "N");
 
-  dl->PushClipRect(ImVec2(left, top), ImVec2(right, bottom), true);
+  dl->PushClipRect(ImVec2(left - 6, top - 6), ImVec2(right + 6, bottom + 6), true);  // whole markers on the edges
   dashed_line(dl, ImVec2(sx(x0), sy(y0)), ImVec2(sx(x_end), sy(y0)), kReference);
   // O(N log N) / N rises as log N: a curve on log-log axes, drawn in short dashed pieces.
   ImVec2 previous(sx(x0), sy(y0));
@@ -173,8 +199,8 @@ void draw_scaling_plot(const char* title, ScalingQuantity quantity, const std::v
     const ImU32 colour = detector_colour(key.first);
     const int marker = layout_marker(key.second);
     for (std::size_t i = 0; i + 1 < points.size(); ++i)
-      dl->AddLine(ImVec2(sx(static_cast<double>(points[i]->n)), sy(value_of(*points[i], quantity))),
-                  ImVec2(sx(static_cast<double>(points[i + 1]->n)), sy(value_of(*points[i + 1], quantity))), colour, 2.0f);
+      styled_line(dl, ImVec2(sx(static_cast<double>(points[i]->n)), sy(value_of(*points[i], quantity))),
+                  ImVec2(sx(static_cast<double>(points[i + 1]->n)), sy(value_of(*points[i + 1], quantity))), colour, marker);
     for (const ScalingRow* p : points) {
       const float x = sx(static_cast<double>(p->n)), y = sy(value_of(*p, quantity));
       draw_layout_marker(x, y, 8.0f, marker, colour);
@@ -199,26 +225,28 @@ void draw_scaling_plot(const char* title, ScalingQuantity quantity, const std::v
 
 void draw_scaling_legend(const std::vector<std::string>& algorithms, const std::vector<std::string>& layouts) {
   const float font = ImGui::GetFontSize();
+  ImDrawList* dl = ImGui::GetWindowDrawList();
   bool first = true;
-  // One key: its symbol and label, on the same line as the one before when it fits.
-  const auto key = [&](const std::string& label, auto draw_symbol) {
-    const float w = font * 1.4f + ImGui::CalcTextSize(label.c_str()).x;
+  // One key: a symbol `symbol_w` wide (drawn from its left x and middle y), then the label, on the
+  // same line as the one before when it fits.
+  const auto key = [&](const std::string& label, float symbol_w, auto draw_symbol) {
+    const float w = symbol_w + 4 + ImGui::CalcTextSize(label.c_str()).x;
     if (!first) same_line_if_fits(w, font);
     first = false;
     const ImVec2 p = ImGui::GetCursorScreenPos();
     ImGui::Dummy(ImVec2(w, font));
-    draw_symbol(p.x + font * 0.5f, p.y + font * 0.5f);
-    ImGui::GetWindowDrawList()->AddText(ImVec2(p.x + font * 1.2f, p.y), ImGui::GetColorU32(ImGuiCol_Text), label.c_str());
+    draw_symbol(p.x, p.y + font * 0.5f);
+    dl->AddText(ImVec2(p.x + symbol_w + 4, p.y), ImGui::GetColorU32(ImGuiCol_Text), label.c_str());
   };
   for (const std::string& a : algorithms)
-    key(a, [&](float x, float y) {
-      ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(x - 5, y - 5), ImVec2(x + 5, y + 5), detector_colour(a));
-    });
+    key(a, 10, [&](float x, float y) { dl->AddRectFilled(ImVec2(x, y - 5), ImVec2(x + 10, y + 5), detector_colour(a)); });
+  const ImU32 grey = IM_COL32(220, 220, 220, 255);
   for (const std::string& l : layouts)
-    key(l, [&](float x, float y) { draw_layout_marker(x, y, 9.0f, layout_marker(l), IM_COL32(230, 230, 230, 255)); });
-  key("O(N), O(N log N)", [&](float x, float y) {
-    dashed_line(ImGui::GetWindowDrawList(), ImVec2(x - 7, y), ImVec2(x + 7, y), kReference, 3.0f);
-  });
+    key(l, 28, [&](float x, float y) {
+      styled_line(dl, ImVec2(x, y), ImVec2(x + 28, y), grey, layout_marker(l));
+      draw_layout_marker(x + 14, y, 9.0f, layout_marker(l), grey);
+    });
+  key("O(N), O(N log N)", 22, [&](float x, float y) { dashed_line(dl, ImVec2(x, y), ImVec2(x + 22, y), kReference, 3.0f); });
 }
 
 }  // namespace nbscope::ui
