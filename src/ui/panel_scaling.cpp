@@ -21,7 +21,7 @@ namespace {
 constexpr std::int64_t kSizes[] = {100, 1'000, 10'000, 100'000, 1'000'000, 10'000'000};
 constexpr const char* kSizeLabels[] = {"1e2", "1e3", "1e4", "1e5", "1e6", "1e7"};
 constexpr const char* kPerDecadeLabels[] = {"1", "2", "3", "4", "5"};
-constexpr std::size_t kNotesShown = 3;
+constexpr std::size_t kNotesShown = 20;  // in the tooltip
 
 // The index of the decade closest to n (from below).
 int size_index(std::int64_t n) {
@@ -50,7 +50,8 @@ class ScalingPanel final : public Panel {
     if (s.generation != seen_generation_) adopt(s);
     draw_choices(c.sim, s.running);
     draw_progress(c.sim, s);
-    const float plot_h = 150.0f;
+    // Both plots and the rest (~420 px) within the display; 150 px each at 720 px.
+    const float plot_h = std::clamp((ImGui::GetIO().DisplaySize.y - 420.0f) * 0.5f, 80.0f, 150.0f);
     draw_scaling_plot("ns per element (time of one detection / N)", ScalingQuantity::NsPerElement, s.result.rows, plot_h);
     draw_scaling_plot("bytes per element (the detector's own arrays / N)", ScalingQuantity::BytesPerElement, s.result.rows,
                       plot_h);
@@ -162,9 +163,17 @@ class ScalingPanel final : public Panel {
     } else {
       ImGui::TextDisabled("Choose detectors, layouts and N, then Run (in the background; Cancel stops it).");
     }
+    // The skipped points in one line (the panel keeps its height), each of them on hover.
     const auto& notes = s.result.notes;
-    for (std::size_t i = 0; i < notes.size() && i < kNotesShown; ++i) ImGui::TextDisabled("  %s", notes[i].c_str());
-    if (notes.size() > kNotesShown) ImGui::TextDisabled("  and %zu more skipped", notes.size() - kNotesShown);
+    if (notes.empty()) return;
+    const std::string line = notes.size() == 1 ? notes[0] : std::to_string(notes.size()) + " skipped: " + notes[0] + ", ...";
+    ImGui::TextDisabled("%s", line.c_str());
+    if (ImGui::IsItemHovered()) {
+      ImGui::BeginTooltip();
+      for (std::size_t i = 0; i < notes.size() && i < kNotesShown; ++i) ImGui::TextUnformatted(notes[i].c_str());
+      if (notes.size() > kNotesShown) ImGui::Text("and %zu more", notes.size() - kNotesShown);
+      ImGui::EndTooltip();
+    }
   }
 
   void draw_export(const ScalingStatus& s) {
