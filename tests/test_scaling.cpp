@@ -79,6 +79,21 @@ TEST(Scaling, OneRowPerDetectorLayoutAndSizeBruteSkippedAboveItsCap) {
   for (const std::string& note : result.notes) EXPECT_NE(note.find("brute"), std::string::npos) << note;
 }
 
+// A detector whose run at the next N would pass max_run_seconds (projected from its last run) is
+// skipped there and the note says why: here every run is "too long" after the first size.
+TEST(Scaling, APointThatWouldRunTooLongIsSkipped) {
+  ScalingPlan plan = quick_plan();
+  plan.algorithms = {"nbs"};
+  plan.layouts = {Layout::Loose};
+  plan.max_run_seconds = 1e-12;
+  const ScalingResult result = run_scaling(plan, nullptr, nullptr);
+  const auto sizes = scaling_sizes(plan.n_min, plan.n_max, plan.points_per_decade);
+  ASSERT_EQ(result.rows.size(), 1u);
+  EXPECT_EQ(result.rows[0].n, sizes.front());
+  ASSERT_EQ(result.notes.size(), sizes.size() - 1);
+  EXPECT_NE(result.notes[0].find("would take over"), std::string::npos) << result.notes[0];
+}
+
 TEST(Scaling, CancelStopsTheRun) {
   ScalingPlan plan = quick_plan();
   std::atomic<bool> cancel{false};

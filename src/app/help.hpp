@@ -53,9 +53,10 @@ usage:
       point's best of a few detect() runs (repeated for at least 0.05 s, at most 0.2 s). Prints
       a table (ns per element, bytes of the detector's own arrays per element, pairs, repeats)
       and writes it as CSV "algorithm,layout,n,ns_per_element,bytes_per_element,pairs,repeats",
-      one row per (detector, layout, N). brute is skipped above N = 10,000 (noted). A progress
-      bar on stderr when it is a terminal. The window's Scaling panel (View menu) runs the same
-      in the background and plots it; nbscope headless renders that panel (below).
+      one row per (detector, layout, N). brute is skipped above N = 10,000, and a detector whose
+      one run would take over 2 s at an N (its last time, scaled by N) is skipped there (noted).
+      A progress bar on stderr when it is a terminal. The window's Scaling panel (View menu) runs
+      the same in the background and plots it; nbscope headless renders that panel (below).
   nbscope headless --scene FILE [--frames N] [--algorithm NAME[,NAME...]|all] [--report OUT.json]
                    [--inject-fault NAME] [--brute-limit N] [--quiet] [--record OUT.nbsrec]
                    [--stop-at-violation | --rewind FROM:TO] [--back K | --violation N] [--history-mb N]

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 #include "core/detector.hpp"
@@ -126,6 +127,8 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
     if (progress) progress(p);
   };
   for (Layout layout : plan.layouts) {
+    // Per detector: its last measured N in this layout and the seconds of its best run there.
+    std::vector<std::pair<std::int64_t, double>> last(detectors.size(), {0, 0.0});
     for (std::int64_t n : sizes) {
       if (cancelled(cancel)) {
         result.cancelled = true;
@@ -139,6 +142,16 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
           report(point, nullptr, "skipped: brute force is capped at N <= " + std::to_string(plan.brute_max_n));
           continue;
         }
+        if (const auto [last_n, last_s] = last[a]; last_n > 0) {
+          const double projected = last_s * static_cast<double>(n) / static_cast<double>(last_n);
+          if (projected > plan.max_run_seconds) {
+            char why[200];
+            std::snprintf(why, sizeof why, "skipped: one run at N=%lld took %.2f s, so here it would take over %.2f s (limit %.2f s)",
+                          static_cast<long long>(last_n), last_s, projected, plan.max_run_seconds);
+            report(point, nullptr, why);
+            continue;
+          }
+        }
         ScalingRow row{name, layout_name(layout), n, 0, 0, 0, 0};
         try {
           if (!measure(*detectors[a], elements, plan, cancel, row)) {
@@ -149,6 +162,7 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
           report(point, nullptr, std::string("skipped: ") + e.what());
           continue;
         }
+        last[a] = {n, row.ns_per_element * static_cast<double>(n) * 1e-9};
         result.rows.push_back(row);
         report(point, &result.rows.back(), "");
         if (cancelled(cancel)) {

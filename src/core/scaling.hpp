@@ -14,7 +14,8 @@
 namespace nbscope {
 
 // What to run. Every point is time-bounded: repeats stop after `min_seconds`, and never start
-// when they would go past `max_seconds` (at least one timed run always happens).
+// when they would go past `max_seconds` (at least one timed run always happens); a point whose
+// one run would pass `max_run_seconds` is skipped.
 struct ScalingPlan {
   std::vector<std::string> algorithms = {"nbs", "sort"};
   std::vector<Layout> layouts = {Layout::Loose};
@@ -25,6 +26,10 @@ struct ScalingPlan {
   double min_seconds = 0.05;          // repeat a point until its runs took this long...
   double max_seconds = 0.2;           // ...but not past this
   int max_repeats = 200;
+  // A detector is skipped at an N where one run would take longer than this, judged from its last
+  // run at a smaller N of the same layout (time at least linear in N): no single point can stall
+  // the plan (box2d's tree at 1e6 takes a minute here).
+  double max_run_seconds = 2.0;
   std::uint64_t seed = 1;
 };
 
