@@ -189,7 +189,7 @@ const BadRun kBadRuns[] = {
      "--inject-fault: unknown fault 'gremlins' (known: drop-mask-cell, off-by-one-cell, stale-positions, drop-pair, drop-box2d-contact)"},
     {"bad_brute_limit", kGoodScene, "--brute-limit x", "--brute-limit: 'x' is not a whole number from 0 to 1000000"},
     {"unknown_flag", kGoodScene, "--fast", "headless: --fast is not an option of headless (see nbscope --help)"},
-    {"option_of_another_command", kGoodScene, "--output x.csv", "headless: --output is not an option of headless (it is one of pairs)"},
+    {"option_of_another_command", kGoodScene, "--output x.csv", "headless: --output is not an option of headless (it is one of pairs, scaling)"},
     {"repeated_flag", kGoodScene, "--frames 4", "--frames: given more than once"},
     {"drawing_without_screenshot", kGoodScene, "--overlays grid",
      "--overlays: needs --screenshot (headless draws nothing without one)"},

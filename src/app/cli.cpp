@@ -104,11 +104,12 @@ const std::vector<std::pair<const char*, std::vector<const char*>>>& command_opt
       {"gui", {"--scene", "--algorithm", "--inject-fault", "--frames", "--history-mb", "--back", NBSCOPE_VIEW_OPTIONS}},
       {"headless", {"--scene", "--frames", "--algorithm", "--report", "--inject-fault", "--brute-limit", "--quiet",
                     "--record", "--stop-at-violation", "--rewind", "--history-mb", "--back", "--violation", "--gl",
-                    NBSCOPE_VIEW_OPTIONS}},
+                    "--scaling", "--layout", "--n", "--points-per-decade", NBSCOPE_VIEW_OPTIONS}},
       {"replay", {"--headless", "--frames", "--algorithm", "--report", "--inject-fault", "--brute-limit", "--quiet",
                   "--stop-at-violation", "--gl", NBSCOPE_VIEW_OPTIONS}},
       {"pairs", {"--input", "--algorithm", "--output", "--repeat", "--cell-size", "--origin", "--cells", "--max-pairs"}},
       {"dump", {"--input", "--algorithm", "--cell-size", "--origin", "--cells", "--format"}},
+      {"scaling", {"--algorithm", "--layout", "--n", "--points-per-decade", "--output", "--quiet"}},
   };
   return table;
 }

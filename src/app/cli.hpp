@@ -38,7 +38,7 @@ class Args {
   std::string command_;
 };
 
-// The options each command takes ("gui", "headless", "replay", "pairs", "dump"), as --help lists
+// The options each command takes ("gui", "headless", "replay", "pairs", "dump", "scaling"), as --help lists
 // them; the commands of the ones that take `option` (without any "=VALUE"), comma-separated.
 const std::vector<std::pair<const char*, std::vector<const char*>>>& command_options();
 std::string commands_taking(const std::string& option);

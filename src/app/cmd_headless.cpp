@@ -17,6 +17,7 @@
 #include "app/headless.hpp"
 #include "app/headless_view.hpp"
 #include "app/help.hpp"
+#include "app/scaling_flags.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/plural.hpp"
@@ -286,8 +287,11 @@ HeadlessOptions parse_headless_options(Args& args) {
   if (const auto mb = args.integer("--history-mb", 0, 1'000'000)) o.history_mb = *mb;
   o.back = args.integer("--back", 1, 100'000'000).value_or(0);
   o.violation = args.integer("--violation", 1, 1'000'000'000).value_or(0);
+  o.scaling = args.value("--scaling");
+  if (o.scaling && *o.scaling == "run") o.scaling_plan = take_scaling_plan_flags(args, o.algorithm);
   args.finish();
   if (!scene) throw Error("headless: --scene FILE is required");
+  if (o.scaling) check_headless_scaling(*o.scaling, o.view);
   o.scene = *scene;
   if (o.rewind && o.rewind->from > o.frames)
     throw Error("--rewind: FROM " + std::to_string(o.rewind->from) + " is past the end of the run (--frames " +
@@ -318,7 +322,9 @@ int run_headless_loop(const HeadlessOptions& o) {
     if (o.report) outputs.push_back({"--report", *o.report});
     if (o.record) outputs.push_back({"--record", *o.record});
     if (o.view.screenshot) outputs.push_back({"--screenshot", *o.view.screenshot});
-    check_outputs_distinct({o.replay ? NamedPath{"recording", *o.replay} : NamedPath{"--scene", o.scene}}, outputs);
+    std::vector<NamedPath> inputs{o.replay ? NamedPath{"recording", *o.replay} : NamedPath{"--scene", o.scene}};
+    if (o.scaling && *o.scaling != "run") inputs.push_back({"--scaling", *o.scaling});
+    check_outputs_distinct(inputs, outputs);
   }
   check_step_algorithm(o.view, o.algorithm);  // before any frame runs
   check_stop_at_violation(o);
@@ -345,7 +351,9 @@ int run_headless_loop(const HeadlessOptions& o) {
     throw Error("--stop-at-violation: " + (o.replay ? *o.replay : o.scene) +
                 " has no elements in any frame (and nothing adds any): there is nothing to check");
   // The screenshot's context and shaders are set up first, so a bad --gl/--shader-dir/path fails at once.
-  std::unique_ptr<HeadlessView> view = o.view.screenshot ? make_headless_view(o.view, loop) : nullptr;
+  ViewOptions view_options = o.view;
+  if (o.scaling) view_options.scaling = scaling_to_show(*o.scaling, o.scaling_plan, !o.quiet && ::isatty(STDERR_FILENO) == 1);
+  std::unique_ptr<HeadlessView> view = o.view.screenshot ? make_headless_view(view_options, loop) : nullptr;
 
   RunReport report;
   report.source = o.replay ? "recording" : "scene";

@@ -18,6 +18,10 @@ int run_headless(Args& args);
 // recorded frames detected and checked again (app/cmd_replay.cpp, app/replay.hpp).
 int run_replay(Args& args);
 
+// `nbscope scaling [--algorithm A,B|all] [--layout L,M] [--n MIN..MAX] [--points-per-decade K]
+// [--output OUT.csv] [--quiet]`: ns and bytes per element against N (app/cmd_scaling.cpp).
+int run_scaling_command(Args& args);
+
 // `nbscope [gui] [--scene F] [--algorithm A] [--frames N --screenshot OUT.png] [--size WxH] ...`:
 // the window (app/cmd_gui.cpp); headless with a screenshot when there is no display.
 int run_gui(Args& args);

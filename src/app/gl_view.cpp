@@ -15,6 +15,7 @@
 #include "render/overlays.hpp"
 #include "render/shader.hpp"
 #include "ui/panels.hpp"
+#include "ui/scaling_panel.hpp"
 #include "ui/stepper_panels.hpp"
 
 namespace nbscope {
@@ -115,6 +116,11 @@ GlView::GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions
   step_option_ = options.step;
   state_.book_numbering = options.book_numbering;
   if (options.step) ui::open_stepper_panels(state_);
+  host_.add_panel(ui::make_scaling_panel(scaling_));
+  if (options.scaling) {
+    scaling_->show(options.scaling->result, options.scaling->plan, options.scaling->source, options.scaling->seconds);
+    state_.panel_open[ui::kScalingTitle] = true;
+  }
   std::vector<std::string> panel_names;
   for (const auto& p : host_.panels()) panel_names.push_back(lower(p->title()));
   apply_spec(
@@ -499,6 +505,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
 
   imgui_->new_frame(live_input, context_.width(), context_.height(), dt);
   host_.frame(ctx, live_input);
+  if (!panel_open(ui::kScalingTitle)) scaling_->cancel();  // a closed panel's run stops
   renderer_->emit_labels(ImGui::GetBackgroundDrawList());
   imgui_->render();
   cost_.ui_ms = ms_since(t0);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/frame_loop.hpp"
+#include "app/scaling_job.hpp"
 #include "app/view_options.hpp"
 #include "core/frame_trace.hpp"
 #include "io/png.hpp"
@@ -85,6 +86,8 @@ class GlView {
   // The stepper panels' session (its trace is the frame loop's) and the lists the overlay drew last.
   [[nodiscard]] ui::StepperSession& stepper() { return *stepper_; }
   [[nodiscard]] const std::vector<render::TracedList>& lists() const { return lists_; }
+  // The Scaling panel's background run (owned here; cancelled when the panel closes).
+  [[nodiscard]] ScalingJob& scaling() { return *scaling_; }
   // Where the last frame's time went (overlays, GL submit, panels, traced detection), in ms.
   struct Cost {
     double trace_ms = 0, overlay_ms = 0, render_ms = 0, ui_ms = 0;
@@ -120,6 +123,7 @@ class GlView {
   std::int64_t select_option_ = -1;                    // --select K as typed (book numbering: from 1)
   std::optional<std::int64_t> step_option_;            // --step K
   std::shared_ptr<ui::StepperSession> stepper_;
+  std::shared_ptr<ScalingJob> scaling_ = std::make_shared<ScalingJob>();
   // The last fit (load or Home): while the user leaves the camera there, it refits to the same box
   // when the panels change the free space.
   std::optional<render::WorldRect> fit_box_;

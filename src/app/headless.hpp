@@ -9,6 +9,7 @@
 #include "app/cli.hpp"
 #include "app/view_options.hpp"
 #include "check/faults.hpp"
+#include "core/scaling.hpp"
 
 namespace nbscope {
 
@@ -36,6 +37,8 @@ struct HeadlessOptions {
                                       // the Violations panel lists them) and show it as choosing it there does
   std::int64_t back = 0;              // --back K: after the frames, K frames back through the history
                                       // (each shown, detected and checked again); the screenshot shows it
+  std::optional<std::string> scaling;  // --scaling FILE.csv | run: the Scaling panel in the screenshot
+  ScalingPlan scaling_plan;            // --scaling run: --algorithm, --layout, --n, --points-per-decade
   std::optional<std::int64_t> history_mb;  // --history-mb N: memory for kept frames (default: 256 with
                                            // --rewind, --back, --violation or --screenshot, else none)
 };

@@ -45,9 +45,22 @@ usage:
       bounds and HEADs and next; sort: sorted cell keys and order; brute, box2d: counts only.
       --cells pins the number of cells per axis (the book's Fig. 3.15 is --cell-size 1
       --origin 0,0 --cells 10,10).
+  nbscope scaling [--algorithm NAME[,NAME...]|all] [--layout NAME[,NAME...]] [--n MIN..MAX]
+                  [--points-per-decade K] [--output OUT.csv] [--quiet]
+      Times every detector named (default all) on generated layouts (default loose; also dense,
+      clustered, touching, unequal_radii, far_away, on_line) at N from MIN to MAX (default
+      1000..1000000; 1e3-style powers too), K sizes a decade on a log scale (default 2): each
+      point's best of a few detect() runs (repeated for at least 0.05 s, at most 0.2 s). Prints
+      a table (ns per element, bytes of the detector's own arrays per element, pairs, repeats)
+      and writes it as CSV "algorithm,layout,n,ns_per_element,bytes_per_element,pairs,repeats",
+      one row per (detector, layout, N). brute is skipped above N = 10,000, and a detector whose
+      one run would take over 2 s at an N (its last time, scaled by N) is skipped there (noted).
+      A progress bar on stderr when it is a terminal. The window's Scaling panel (View menu) runs
+      the same in the background and plots it; nbscope headless renders that panel (below).
   nbscope headless --scene FILE [--frames N] [--algorithm NAME[,NAME...]|all] [--report OUT.json]
                    [--inject-fault NAME] [--brute-limit N] [--quiet] [--record OUT.nbsrec]
                    [--stop-at-violation | --rewind FROM:TO] [--back K | --violation N] [--history-mb N]
+                   [--scaling FILE.csv | --scaling run [--layout L] [--n MIN..MAX] [--points-per-decade K]]
       Runs N frames (default 600) of a scene (assets/scenes/*.json) with no window: Box2D steps,
       the algorithm (default nbs) detects, and every frame is checked: A==R (R: brute force up to
       --brute-limit elements, default 2000, then sort, or nbs when sort is tested; brute itself
@@ -76,6 +89,9 @@ usage:
       there does.
       --history-mb N memory for kept frames (default 256 with --rewind, --back, --violation or
       --screenshot, else 0: a run that never goes back keeps only summaries).
+      --scaling FILE.csv (with --screenshot) opens the Scaling panel on a CSV of nbscope scaling
+      (a bad row: exit 2 naming FILE:LINE); --scaling run measures first, as nbscope scaling does,
+      the detectors of --algorithm on --layout, --n and --points-per-decade.
   nbscope replay FILE.nbsrec [--headless] [--frames N] [--algorithm NAME[,NAME...]|all]
                  [--report OUT.json] [--inject-fault NAME] [--brute-limit N] [--quiet]
                  [--stop-at-violation] [--screenshot OUT.png --size WxH --gl osmesa|egl|auto ...]
@@ -93,7 +109,7 @@ usage:
       --overlays SPEC   comma list: all, none, NAME (only the names listed), +NAME, -NAME; names:
                         bodies elements grid lists mask pairs checks broadphase ids trails flash
       --panels SPEC     the same for panels: controls scenes algorithm overlays stats selection
-                        metrics violations timeline stepper pseudocode arrays
+                        metrics violations timeline stepper pseudocode arrays scaling
       --select K        select element K as shown (its cell, lists and pairs highlighted, its trail
                         drawn): from 0, or from 1 with --book-numbering
       --lists FILTER    the lists overlay draws all lists, the selected element's, or one row's

@@ -8,8 +8,17 @@
 #include <string>
 
 #include "app/cli.hpp"
+#include "core/scaling.hpp"
 
 namespace nbscope {
+
+// Rows the Scaling panel opens on (headless --scaling): read from a CSV or measured before the capture.
+struct ScalingShown {
+  ScalingResult result;
+  ScalingPlan plan;
+  std::string source;  // the CSV, or "" for a run
+  double seconds = 0;  // the run's wall time
+};
 
 struct ViewOptions {
   std::optional<std::string> screenshot;  // --screenshot OUT.png
@@ -25,6 +34,7 @@ struct ViewOptions {
   std::optional<std::int64_t> step;       // --step K: the stepper shows the state after K trace events
   bool book_numbering = false;            // --book-numbering: the stepper numbers from 1, as the book
   std::string lists;                      // --lists all|selected|row: the lists overlay's filter ("" = by size)
+  std::optional<ScalingShown> scaling;    // headless --scaling: the Scaling panel open on these rows
 };
 
 // Takes the rendering flags out of `args`; `headless` also accepts --gl. Error names a bad value.

@@ -1,0 +1,178 @@
+#include "core/scaling.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "core/detector.hpp"
+#include "core/error.hpp"
+
+namespace nbscope {
+
+namespace {
+
+bool cancelled(const std::atomic<bool>* cancel) { return cancel != nullptr && cancel->load(std::memory_order_relaxed); }
+
+std::string point_name(const std::string& algorithm, Layout layout, std::int64_t n) {
+  return algorithm + " " + layout_name(layout) + " N=" + std::to_string(n);
+}
+
+// Times detect() on `elements` within the plan's bounds; false when cancelled before a timed run.
+bool measure(Detector& detector, const Elements& elements, const ScalingPlan& plan, const std::atomic<bool>* cancel,
+             ScalingRow& row) {
+  DetectOptions options;
+  PairList pairs;
+  double best = HUGE_VAL, spent = 0;
+  while (row.repeats < plan.max_repeats) {
+    if (cancelled(cancel)) return row.repeats > 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    detector.detect(elements, options, pairs);
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    best = std::min(best, s);
+    spent += s;
+    ++row.repeats;
+    // Enough, or another run (about as long as the best) would go past the point's budget.
+    if (spent >= plan.min_seconds || spent + best > plan.max_seconds) break;
+  }
+  // To a thousandth: finer digits are noise, and the CSV stays readable.
+  const auto thousandths = [](double v) { return std::round(v * 1000.0) / 1000.0; };
+  const double n = static_cast<double>(elements.size());
+  row.ns_per_element = thousandths(best * 1e9 / n);
+  row.bytes_per_element = thousandths(static_cast<double>(detector.own_bytes()) / n);
+  row.pairs = static_cast<std::int64_t>(pairs.size());
+  return true;
+}
+
+}  // namespace
+
+const std::vector<Layout>& scaling_layouts() {
+  static const std::vector<Layout> layouts = {Layout::Loose,        Layout::Dense,    Layout::Clustered, Layout::Touching,
+                                              Layout::UnequalRadii, Layout::FarAway,  Layout::OnLine};
+  return layouts;
+}
+
+std::vector<std::int64_t> scaling_sizes(std::int64_t n_min, std::int64_t n_max, int points_per_decade) {
+  std::vector<std::int64_t> sizes;
+  if (n_min < 1 || n_max < n_min || points_per_decade < 1) return sizes;
+  const double first = std::log10(static_cast<double>(n_min));
+  const double last = std::log10(static_cast<double>(n_max));
+  for (int k = 0;; ++k) {
+    const double e = first + static_cast<double>(k) / points_per_decade;
+    if (e > last + 1e-9) break;
+    const auto n = std::clamp(static_cast<std::int64_t>(std::llround(std::pow(10.0, e))), n_min, n_max);
+    if (sizes.empty() || sizes.back() != n) sizes.push_back(n);
+  }
+  if (sizes.back() != n_max) sizes.push_back(n_max);
+  return sizes;
+}
+
+std::size_t scaling_point_count(const ScalingPlan& plan) {
+  return plan.algorithms.size() * plan.layouts.size() * scaling_sizes(plan.n_min, plan.n_max, plan.points_per_decade).size();
+}
+
+void check_scaling_plan(const ScalingPlan& plan) {
+  if (plan.algorithms.empty()) throw Error("scaling: no detector chosen");
+  if (plan.layouts.empty()) throw Error("scaling: no layout chosen");
+  for (Layout layout : plan.layouts)
+    if (std::find(scaling_layouts().begin(), scaling_layouts().end(), layout) == scaling_layouts().end())
+      throw Error("scaling: layout " + layout_name(layout) + " has N^2 contacts or is a rounding test; not a scaling layout");
+  for (const std::string& name : plan.algorithms)
+    if (!detector_info(name).dim2) throw Error("scaling: " + name + " does not handle 2D elements");
+  if (plan.n_min < 1 || plan.n_max < plan.n_min || plan.n_max > kMaxElements)
+    throw Error("scaling: N from " + std::to_string(plan.n_min) + " to " + std::to_string(plan.n_max) +
+                " is not a range from 1 to " + std::to_string(kMaxElements));
+  if (plan.points_per_decade < 1) throw Error("scaling: points per decade must be at least 1");
+}
+
+ScalingPlan plan_covering(const std::vector<ScalingRow>& rows) {
+  ScalingPlan plan;
+  plan.algorithms.clear();
+  plan.layouts.clear();
+  if (rows.empty()) return plan;
+  plan.n_min = plan.n_max = rows.front().n;
+  std::vector<std::int64_t> sizes;
+  for (const ScalingRow& r : rows) {
+    if (std::find(plan.algorithms.begin(), plan.algorithms.end(), r.algorithm) == plan.algorithms.end())
+      plan.algorithms.push_back(r.algorithm);
+    if (const auto layout = parse_layout(r.layout);
+        layout && std::find(plan.layouts.begin(), plan.layouts.end(), *layout) == plan.layouts.end())
+      plan.layouts.push_back(*layout);
+    plan.n_min = std::min(plan.n_min, r.n);
+    plan.n_max = std::max(plan.n_max, r.n);
+    if (std::find(sizes.begin(), sizes.end(), r.n) == sizes.end()) sizes.push_back(r.n);
+  }
+  const double decades = std::log10(static_cast<double>(plan.n_max) / static_cast<double>(plan.n_min));
+  plan.points_per_decade =
+      decades > 0 ? std::max(1, static_cast<int>(std::lround(static_cast<double>(sizes.size() - 1) / decades))) : 1;
+  return plan;
+}
+
+ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(const ScalingProgress&)>& progress,
+                          const std::atomic<bool>* cancel) {
+  check_scaling_plan(plan);
+  const std::vector<std::int64_t> sizes = scaling_sizes(plan.n_min, plan.n_max, plan.points_per_decade);
+  std::vector<std::unique_ptr<Detector>> detectors;
+  for (const std::string& name : plan.algorithms) detectors.push_back(make_detector(name));
+  ScalingResult result;
+  ScalingProgress p;
+  p.total = plan.algorithms.size() * plan.layouts.size() * sizes.size();
+  const auto report = [&](const std::string& point, const ScalingRow* row, const std::string& note) {
+    ++p.done;
+    p.point = point;
+    p.row = row;
+    p.note = note;
+    if (!note.empty()) result.notes.push_back(point + ": " + note);
+    if (progress) progress(p);
+  };
+  for (Layout layout : plan.layouts) {
+    // Per detector: its last measured N in this layout and the seconds of its best run there.
+    std::vector<std::pair<std::int64_t, double>> last(detectors.size(), {0, 0.0});
+    for (std::int64_t n : sizes) {
+      if (cancelled(cancel)) {
+        result.cancelled = true;
+        return result;
+      }
+      const Elements elements = make_layout(layout, n, 2, plan.seed);  // once for every detector
+      for (std::size_t a = 0; a < detectors.size(); ++a) {
+        const std::string& name = plan.algorithms[a];
+        const std::string point = point_name(name, layout, n);
+        if (name == "brute" && n > plan.brute_max_n) {
+          report(point, nullptr, "skipped: brute force is capped at N <= " + std::to_string(plan.brute_max_n));
+          continue;
+        }
+        if (const auto [last_n, last_s] = last[a]; last_n > 0) {
+          const double projected = last_s * static_cast<double>(n) / static_cast<double>(last_n);
+          if (projected > plan.max_run_seconds) {
+            char why[200];
+            std::snprintf(why, sizeof why, "skipped: one run at N=%lld took %.2f s, so here it would take over %.2f s (limit %.2f s)",
+                          static_cast<long long>(last_n), last_s, projected, plan.max_run_seconds);
+            report(point, nullptr, why);
+            continue;
+          }
+        }
+        ScalingRow row{name, layout_name(layout), n, 0, 0, 0, 0};
+        try {
+          if (!measure(*detectors[a], elements, plan, cancel, row)) {
+            result.cancelled = true;
+            return result;
+          }
+        } catch (const Error& e) {  // e.g. screen's array past its memory limit on a sparse world
+          report(point, nullptr, std::string("skipped: ") + e.what());
+          continue;
+        }
+        last[a] = {n, row.ns_per_element * static_cast<double>(n) * 1e-9};
+        result.rows.push_back(row);
+        report(point, &result.rows.back(), "");
+        if (cancelled(cancel)) {
+          result.cancelled = true;
+          return result;
+        }
+      }
+    }
+  }
+  return result;
+}
+
+}  // namespace nbscope

@@ -1,0 +1,221 @@
+// The Scaling panel: the plan's choices, Run/Cancel and progress, the two log-log plots, the
+// legend, the skipped points and Export CSV. The run itself is the app's (ScalingRunner).
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+#include "core/error.hpp"
+#include "io/plural.hpp"
+#include "io/scaling_csv.hpp"
+#include "ui/scaling_panel.hpp"
+#include "ui/scaling_plot.hpp"
+
+namespace nbscope::ui {
+
+namespace {
+
+// The choices of N: decades from 1e2 to 1e7.
+constexpr std::int64_t kSizes[] = {100, 1'000, 10'000, 100'000, 1'000'000, 10'000'000};
+constexpr const char* kSizeLabels[] = {"1e2", "1e3", "1e4", "1e5", "1e6", "1e7"};
+constexpr const char* kPerDecadeLabels[] = {"1", "2", "3", "4", "5"};
+constexpr std::size_t kNotesShown = 20;  // in the tooltip
+
+// The index of the decade closest to n (from below).
+int size_index(std::int64_t n) {
+  int best = 0;
+  for (int i = 0; i < static_cast<int>(std::size(kSizes)); ++i)
+    if (kSizes[i] <= n) best = i;
+  return best;
+}
+
+class ScalingPanel final : public Panel {
+ public:
+  explicit ScalingPanel(std::shared_ptr<ScalingRunner> runner) : runner_(std::move(runner)) {
+    std::snprintf(export_path_, sizeof export_path_, "%s", "scaling.csv");
+    for (const char* name : {"brute", "tree", "sort", "screen", "nbs"}) chosen_algorithms_[name] = true;
+    chosen_layouts_.assign(scaling_layouts().size(), false);
+    chosen_layouts_[0] = true;  // loose
+  }
+
+  [[nodiscard]] const char* title() const override { return kScalingTitle; }
+  [[nodiscard]] PanelPlace place() const override { return PanelPlace::Floating; }
+  [[nodiscard]] bool open_by_default() const override { return false; }
+  [[nodiscard]] float width() const override { return 640.0f; }
+
+  void draw(UiContext& c) override {
+    const ScalingStatus s = runner_->status();
+    if (s.generation != seen_generation_) adopt(s);
+    draw_choices(c.sim, s.running);
+    draw_progress(c.sim, s);
+    // Both plots and the rest (~420 px) within the display; 150 px each at 720 px.
+    const float plot_h = std::clamp((ImGui::GetIO().DisplaySize.y - 420.0f) * 0.5f, 80.0f, 150.0f);
+    draw_scaling_plot("ns per element (time of one detection / N)", ScalingQuantity::NsPerElement, s.result.rows, plot_h);
+    draw_scaling_plot("bytes per element (the detector's own arrays / N)", ScalingQuantity::BytesPerElement, s.result.rows,
+                      plot_h);
+    std::vector<std::string> algorithms, layouts;
+    for (const ScalingRow& r : s.result.rows) {
+      if (std::find(algorithms.begin(), algorithms.end(), r.algorithm) == algorithms.end()) algorithms.push_back(r.algorithm);
+      if (std::find(layouts.begin(), layouts.end(), r.layout) == layouts.end()) layouts.push_back(r.layout);
+    }
+    if (!s.result.rows.empty()) draw_scaling_legend(algorithms, layouts);
+    draw_export(s);
+  }
+
+ private:
+  // A new run or a loaded CSV: the choices show what its rows measure.
+  void adopt(const ScalingStatus& s) {
+    seen_generation_ = s.generation;
+    if (s.running || s.plan.algorithms.empty()) return;
+    for (auto& [name, on] : chosen_algorithms_) on = false;
+    for (const std::string& a : s.plan.algorithms) chosen_algorithms_[a] = true;
+    std::fill(chosen_layouts_.begin(), chosen_layouts_.end(), false);
+    for (Layout l : s.plan.layouts)
+      for (std::size_t i = 0; i < scaling_layouts().size(); ++i)
+        if (scaling_layouts()[i] == l) chosen_layouts_[i] = true;
+    n_min_ = size_index(s.plan.n_min);
+    n_max_ = std::max(n_min_, size_index(s.plan.n_max));
+    per_decade_ = std::clamp(s.plan.points_per_decade, 1, static_cast<int>(std::size(kPerDecadeLabels)));
+  }
+
+  void draw_choices(const SimView& sim, bool running) {
+    ImGui::BeginDisabled(running);
+    ImGui::TextUnformatted("Detectors:");
+    for (const std::string& name : sim.algorithms) {
+      bool& on = chosen_algorithms_[name];
+      const float w = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(name.c_str()).x;
+      same_line_if_fits(w);
+      ImGui::Checkbox(name.c_str(), &on);
+    }
+    ImGui::TextUnformatted("Layouts:  ");
+    for (std::size_t i = 0; i < scaling_layouts().size(); ++i) {
+      const std::string name = layout_name(scaling_layouts()[i]);
+      const float w = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(name.c_str()).x;
+      same_line_if_fits(w);
+      bool on = chosen_layouts_[i];
+      if (ImGui::Checkbox(name.c_str(), &on)) chosen_layouts_[i] = on;
+    }
+    ImGui::TextUnformatted("N from");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(70.0f);
+    ImGui::Combo("##nmin", &n_min_, kSizeLabels, static_cast<int>(std::size(kSizeLabels)));
+    ImGui::SameLine();
+    ImGui::TextUnformatted("to");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(70.0f);
+    ImGui::Combo("##nmax", &n_max_, kSizeLabels, static_cast<int>(std::size(kSizeLabels)));
+    n_max_ = std::max(n_max_, n_min_);
+    ImGui::SameLine();
+    ImGui::TextUnformatted("points a decade");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(50.0f);
+    int per_decade_index = per_decade_ - 1;
+    if (ImGui::Combo("##perdecade", &per_decade_index, kPerDecadeLabels, static_cast<int>(std::size(kPerDecadeLabels))))
+      per_decade_ = per_decade_index + 1;
+    ImGui::EndDisabled();
+  }
+
+  // The plan the choices make (detectors in the registry's order).
+  [[nodiscard]] ScalingPlan plan_of_choices(const SimView& sim) const {
+    ScalingPlan plan;
+    plan.algorithms.clear();
+    for (const std::string& name : sim.algorithms)
+      if (const auto it = chosen_algorithms_.find(name); it != chosen_algorithms_.end() && it->second) plan.algorithms.push_back(name);
+    plan.layouts.clear();
+    for (std::size_t i = 0; i < chosen_layouts_.size(); ++i)
+      if (chosen_layouts_[i]) plan.layouts.push_back(scaling_layouts()[i]);
+    plan.n_min = kSizes[n_min_];
+    plan.n_max = kSizes[n_max_];
+    plan.points_per_decade = per_decade_;
+    return plan;
+  }
+
+  void draw_progress(const SimView& sim, const ScalingStatus& s) {
+    const ScalingPlan plan = plan_of_choices(sim);
+    const bool can_run = !plan.algorithms.empty() && !plan.layouts.empty();
+    ImGui::BeginDisabled(s.running || !can_run);
+    if (ImGui::Button("Run")) runner_->start(plan);
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!s.running);
+    if (ImGui::Button("Cancel")) runner_->cancel();
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    char overlay[160];
+    if (s.running) {
+      std::snprintf(overlay, sizeof overlay, "%zu/%zu %s", s.done, s.total, s.point.c_str());
+    } else {
+      std::snprintf(overlay, sizeof overlay, "Run: %s", plural(static_cast<long long>(scaling_point_count(plan)), "point").c_str());
+    }
+    ImGui::ProgressBar(s.total > 0 ? static_cast<float>(s.done) / static_cast<float>(s.total) : 0.0f, ImVec2(-1, 0), overlay);
+    const std::string rows = plural(static_cast<long long>(s.result.rows.size()), "point");
+    char seconds[32] = "-";
+    if (!sim.hide_timings) std::snprintf(seconds, sizeof seconds, "%.1f s", s.seconds);
+    if (!s.source.empty()) {
+      // The file's name only: the same picture wherever the file lives (golden screenshots).
+      ImGui::TextDisabled("%s read from %s", rows.c_str(), std::filesystem::path(s.source).filename().c_str());
+    } else if (s.result.cancelled && !s.running) {
+      ImGui::TextDisabled("cancelled: %s of %zu measured in %s", rows.c_str(), s.total, seconds);
+    } else if (s.generation > 0) {
+      ImGui::TextDisabled("%s measured in %s (each: the best of a few runs, 0.05-0.2 s)", rows.c_str(), seconds);
+    } else {
+      ImGui::TextDisabled("Choose detectors, layouts and N, then Run (in the background; Cancel stops it).");
+    }
+    // The skipped points in one line (the panel keeps its height), each of them on hover.
+    const auto& notes = s.result.notes;
+    if (notes.empty()) return;
+    const std::string line = notes.size() == 1 ? notes[0] : std::to_string(notes.size()) + " skipped: " + notes[0] + ", ...";
+    ImGui::TextDisabled("%s", line.c_str());
+    if (ImGui::IsItemHovered()) {
+      ImGui::BeginTooltip();
+      for (std::size_t i = 0; i < notes.size() && i < kNotesShown; ++i) ImGui::TextUnformatted(notes[i].c_str());
+      if (notes.size() > kNotesShown) ImGui::Text("and %zu more", notes.size() - kNotesShown);
+      ImGui::EndTooltip();
+    }
+  }
+
+  void draw_export(const ScalingStatus& s) {
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - button_width("Export CSV") - ImGui::GetStyle().ItemSpacing.x);
+    ImGui::InputText("##export", export_path_, sizeof export_path_);
+    ImGui::SameLine();
+    ImGui::BeginDisabled(s.running || s.result.rows.empty());
+    if (ImGui::Button("Export CSV")) {
+      try {
+        write_scaling_csv(std::string(export_path_), s.result.rows);
+        export_message_ = "wrote " + plural(static_cast<long long>(s.result.rows.size()), "row") + " to " + export_path_;
+        export_failed_ = false;
+      } catch (const Error& e) {
+        export_message_ = e.what();
+        export_failed_ = true;
+      }
+    }
+    ImGui::EndDisabled();
+    if (!export_message_.empty()) {
+      if (export_failed_) {
+        ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", export_message_.c_str());
+      } else {
+        ImGui::TextDisabled("%s", export_message_.c_str());
+      }
+    }
+  }
+
+  std::shared_ptr<ScalingRunner> runner_;
+  std::uint64_t seen_generation_ = 0;
+  std::map<std::string, bool> chosen_algorithms_;
+  std::vector<bool> chosen_layouts_;
+  int n_min_ = 1, n_max_ = 3;  // 1e3 .. 1e5
+  int per_decade_ = 2;
+  char export_path_[512] = {};
+  std::string export_message_;
+  bool export_failed_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Panel> make_scaling_panel(std::shared_ptr<ScalingRunner> runner) {
+  return std::make_unique<ScalingPanel>(std::move(runner));
+}
+
+}  // namespace nbscope::ui

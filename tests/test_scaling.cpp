@@ -1,0 +1,187 @@
+// Scaling runs: the runner measures one row per (detector, layout, N), skips brute force above its
+// cap and says so, stops when cancelled; the sizes of a plan; the CSV written and read back, and
+// bad CSVs refused with their line. No assertion on a timing value: speed lives in the benchmarks.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <sstream>
+#include <tuple>
+
+#include "core/error.hpp"
+#include "core/scaling.hpp"
+#include "io/scaling_csv.hpp"
+#include "support/generators.hpp"
+
+namespace nbscope {
+namespace {
+
+// A plan that runs in milliseconds: tiny N, one timed run a point.
+ScalingPlan quick_plan() {
+  ScalingPlan plan;
+  plan.algorithms = {"brute", "nbs", "sort"};
+  plan.layouts = {Layout::Loose, Layout::Dense};
+  plan.n_min = 100;
+  plan.n_max = 1000;
+  plan.points_per_decade = 2;
+  plan.brute_max_n = 400;
+  plan.min_seconds = 0;
+  return plan;
+}
+
+TEST(Scaling, SizesSpanTheRangeOnALogScale) {
+  const auto sizes = scaling_sizes(1000, 1'000'000, 2);
+  ASSERT_EQ(sizes.size(), 7u);
+  EXPECT_EQ(sizes.front(), 1000);
+  EXPECT_EQ(sizes.back(), 1'000'000);
+  for (std::size_t i = 1; i < sizes.size(); ++i) EXPECT_GT(sizes[i], sizes[i - 1]);
+  EXPECT_EQ(scaling_sizes(1000, 4000, 1), (std::vector<std::int64_t>{1000, 4000}));  // the end is always in
+  EXPECT_EQ(scaling_sizes(500, 500, 3), (std::vector<std::int64_t>{500}));
+  EXPECT_TRUE(scaling_sizes(10, 5, 2).empty());
+}
+
+TEST(Scaling, OneRowPerDetectorLayoutAndSizeBruteSkippedAboveItsCap) {
+  const ScalingPlan plan = quick_plan();
+  std::size_t calls = 0, last_done = 0, total = 0;
+  const ScalingResult result = run_scaling(
+      plan,
+      [&](const ScalingProgress& p) {
+        ++calls;
+        EXPECT_EQ(p.done, last_done + 1);
+        last_done = p.done;
+        total = p.total;
+      },
+      nullptr);
+  const auto sizes = scaling_sizes(plan.n_min, plan.n_max, plan.points_per_decade);
+  EXPECT_EQ(total, scaling_point_count(plan));
+  EXPECT_EQ(calls, total);
+  EXPECT_FALSE(result.cancelled);
+  std::set<std::tuple<std::string, std::string, std::int64_t>> expected, got;
+  std::size_t skipped = 0;
+  for (const std::string& a : plan.algorithms)
+    for (Layout l : plan.layouts)
+      for (std::int64_t n : sizes) {
+        if (a == "brute" && n > plan.brute_max_n) {
+          ++skipped;
+          continue;
+        }
+        expected.emplace(a, layout_name(l), n);
+      }
+  for (const ScalingRow& r : result.rows) {
+    EXPECT_TRUE(got.emplace(r.algorithm, r.layout, r.n).second) << r.algorithm << " " << r.layout << " " << r.n << " twice";
+    EXPECT_GE(r.repeats, 1);
+    EXPECT_GT(r.ns_per_element, 0);
+    // The pairs are the layout's contacts, whichever detector found them.
+    EXPECT_EQ(r.pairs, static_cast<std::int64_t>(testdata::brute_pairs(make_layout(*parse_layout(r.layout), r.n, 2, plan.seed)).size()));
+  }
+  EXPECT_EQ(got, expected);
+  ASSERT_GT(skipped, 0u);
+  ASSERT_EQ(result.notes.size(), skipped);
+  for (const std::string& note : result.notes) EXPECT_NE(note.find("brute"), std::string::npos) << note;
+}
+
+// A detector whose run at the next N would pass max_run_seconds (projected from its last run) is
+// skipped there and the note says why: here every run is "too long" after the first size.
+TEST(Scaling, APointThatWouldRunTooLongIsSkipped) {
+  ScalingPlan plan = quick_plan();
+  plan.algorithms = {"nbs"};
+  plan.layouts = {Layout::Loose};
+  plan.max_run_seconds = 1e-12;
+  const ScalingResult result = run_scaling(plan, nullptr, nullptr);
+  const auto sizes = scaling_sizes(plan.n_min, plan.n_max, plan.points_per_decade);
+  ASSERT_EQ(result.rows.size(), 1u);
+  EXPECT_EQ(result.rows[0].n, sizes.front());
+  ASSERT_EQ(result.notes.size(), sizes.size() - 1);
+  EXPECT_NE(result.notes[0].find("would take over"), std::string::npos) << result.notes[0];
+}
+
+TEST(Scaling, CancelStopsTheRun) {
+  ScalingPlan plan = quick_plan();
+  std::atomic<bool> cancel{false};
+  std::size_t calls = 0;
+  const ScalingResult result = run_scaling(
+      plan,
+      [&](const ScalingProgress&) {
+        if (++calls == 2) cancel = true;
+      },
+      &cancel);
+  EXPECT_TRUE(result.cancelled);
+  EXPECT_EQ(calls, 2u);
+  EXPECT_LT(result.rows.size(), scaling_point_count(plan));
+
+  cancel = true;  // cancelled before it starts: nothing measured
+  const ScalingResult none = run_scaling(plan, nullptr, &cancel);
+  EXPECT_TRUE(none.cancelled);
+  EXPECT_TRUE(none.rows.empty());
+}
+
+TEST(Scaling, APlanThatCannotRunIsRefused) {
+  ScalingPlan plan = quick_plan();
+  plan.algorithms = {"nosuch"};
+  EXPECT_THROW(check_scaling_plan(plan), Error);
+  plan = quick_plan();
+  plan.layouts = {Layout::OnePoint};  // N^2/2 contacts
+  EXPECT_THROW(check_scaling_plan(plan), Error);
+  plan = quick_plan();
+  plan.layouts.clear();
+  EXPECT_THROW(run_scaling(plan, nullptr, nullptr), Error);
+}
+
+TEST(Scaling, PlanCoveringRowsNamesWhatTheyMeasure) {
+  const std::vector<ScalingRow> rows = {{"sort", "dense", 1000, 1, 1, 1, 1}, {"nbs", "dense", 10000, 1, 1, 1, 1},
+                                        {"sort", "loose", 100000, 1, 1, 1, 1}, {"nbs", "loose", 1000, 1, 1, 1, 1}};
+  const ScalingPlan plan = plan_covering(rows);
+  EXPECT_EQ(plan.algorithms, (std::vector<std::string>{"sort", "nbs"}));
+  EXPECT_EQ(plan.layouts, (std::vector<Layout>{Layout::Dense, Layout::Loose}));
+  EXPECT_EQ(plan.n_min, 1000);
+  EXPECT_EQ(plan.n_max, 100000);
+  EXPECT_EQ(plan.points_per_decade, 1);
+}
+
+TEST(ScalingCsv, RoundTrip) {
+  ScalingPlan plan = quick_plan();
+  const ScalingResult result = run_scaling(plan, nullptr, nullptr);
+  std::ostringstream out;
+  write_scaling_csv(out, result.rows);
+  EXPECT_EQ(out.str().substr(0, out.str().find('\n')), kScalingCsvHeader);
+  EXPECT_EQ(parse_scaling_csv(out.str(), "mem"), result.rows);  // every number exactly
+}
+
+// The message of parsing `text` as a scaling CSV called "s.csv" ("" when it parses).
+std::string error_of(const std::string& text) {
+  try {
+    parse_scaling_csv(text, "s.csv");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ScalingCsv, BadRowsAreRefusedWithTheirLine) {
+  const std::string h = std::string(kScalingCsvHeader) + "\n";
+  const std::string good = "nbs,loose,1000,20.5,8.4,90,10\n";
+  EXPECT_EQ(error_of("# made by hand\n" + h + good), "");
+  EXPECT_EQ(error_of("x,y,r\n1,2,3\n").rfind("s.csv:1: expected the header", 0), 0u) << error_of("x,y,r\n");
+  EXPECT_EQ(error_of(h).rfind("s.csv: no rows", 0), 0u);
+  EXPECT_EQ(error_of("").rfind("s.csv: no header", 0), 0u);
+  const std::pair<std::string, std::string> cases[] = {
+      {"nbs,loose,1000,20.5,8.4,90\n", "s.csv:3: 6 columns"},
+      {"nosuch,loose,1000,20.5,8.4,90,10\n", "s.csv:3: algorithm: 'nosuch'"},
+      {"nbs,fluffy,1000,20.5,8.4,90,10\n", "s.csv:3: layout: 'fluffy'"},
+      {"nbs,loose,0,20.5,8.4,90,10\n", "s.csv:3: n: 0 is less than 1"},
+      {"nbs,loose,1e3,20.5,8.4,90,10\n", "s.csv:3: n: '1e3' is not a whole number"},
+      {"nbs,loose,1000,-1,8.4,90,10\n", "s.csv:3: ns_per_element: -1 is negative"},
+      {"nbs,loose,1000,nan,8.4,90,10\n", "s.csv:3: ns_per_element: 'nan' is not a finite number"},
+      {"nbs,loose,1000,20.5,x,90,10\n", "s.csv:3: bytes_per_element: 'x' is not a number"},
+      {"nbs,loose,1000,20.5,8.4,-2,10\n", "s.csv:3: pairs: -2 is less than 0"},
+      {"nbs,loose,1000,20.5,8.4,90,0\n", "s.csv:3: repeats: 0 is less than 1"},
+  };
+  for (const auto& [row, message] : cases) {
+    const std::string e = error_of("\n" + h + row);
+    EXPECT_EQ(e.rfind(message, 0), 0u) << "got: " << e << "\nexpected: " << message;
+  }
+  const std::string twice = error_of(h + good + good);
+  EXPECT_EQ(twice.rfind("s.csv:3: nbs loose N=1000 is given twice", 0), 0u) << twice;
+}
+
+}  // namespace
+}  // namespace nbscope
