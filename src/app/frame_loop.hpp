@@ -21,7 +21,8 @@
 // Errors: load_scene_file() throws Error "file:line: field: what" and keeps the previous scene;
 // set_algorithm() throws Error for an unknown or 3D-only name and keeps the previous one; step()
 // and redetect() throw Error when detection refuses the frame (pair limit, a grid too large), with
-// the frame number in the message. The window should show these and stay open.
+// the frame number in the message; so does any call that adopts a step begun by begin_step()
+// (show_frame, the drags, a configuration change). The window should show these and stay open.
 #pragma once
 #include <array>
 #include <cstdint>
