@@ -128,6 +128,7 @@ struct FrameLoop::Impl {
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
 
+  // True while a step begun by FrameLoop::begin_step() has not been adopted.
   bool pending() const { return stepping.valid(); }
   // Returns once the worker is done with the world (the world then holds the next frame; the
   // accessors still show the current one). Anything that calls Box2D while a step is pending waits here.

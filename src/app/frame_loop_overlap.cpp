@@ -3,11 +3,13 @@
 // and everything else rather than their sum.
 //
 // Why it is safe: the worker touches only the PhysicsWorld (its b2World, bodies, elements, poses),
-// and between begin_step() and the adoption this thread calls nothing of it nor of Box2D (which
-// also keeps unsynchronised global counters): the accessors read ShownFrame, a copy taken before
-// the worker starts, and every other member the worker never sees (lanes, checker, history). Every
-// call that needs the world adopts the step first (settle) or waits for the worker. The future's
-// get()/wait() is the synchronisation point: the worker's writes happen-before its return.
+// and between begin_step() and the adoption this thread calls nothing of it, nor any Box2D code
+// that keeps global state (b2Distance's and the TOI's counters, b2Contact's registers; a new world
+// is built only after waiting): the accessors read ShownFrame, a copy taken before the worker
+// starts, and members the worker never sees (lanes, checker, history; the box2d detector's own
+// b2DynamicTree shares nothing). Every call that needs the world adopts the step first (settle) or
+// waits for the worker. The future's get()/wait() is the synchronisation point: the worker's
+// writes happen-before its return.
 //
 // Why it is the same frame: the worker runs the very PhysicsWorld::step() that step() runs, on the
 // same world in the same order (Box2D is deterministic), and the adoption then runs the same
