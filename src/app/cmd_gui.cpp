@@ -30,6 +30,13 @@ namespace nbscope {
 namespace {
 
 
+// A window with nothing moving sleeps until input, at most this long (then draws once anyway: a
+// tooltip's delay, a text cursor), instead of redrawing the same frame as fast as it can.
+constexpr double kIdleWaitSeconds = 0.25;
+// Frames drawn after input or anything moving before the window may sleep: ImGui settles hover
+// states, opened popups and auto-sized panels over a few frames.
+constexpr int kFramesBeforeSleep = 3;
+
 // Ctrl+C / SIGTERM close the window like its close button, so the settings are still saved.
 volatile std::sig_atomic_t g_stop_requested = 0;
 void request_stop(int) { g_stop_requested = 1; }
@@ -205,9 +212,23 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
       }
     }
   }
-  if (r.drag_begin) loop.begin_drag(r.drag_begin->x(), r.drag_begin->y());
-  if (r.drag_to) loop.drag_to(r.drag_to->x(), r.drag_to->y());
-  if (r.drag_end) loop.end_drag();
+  // (Drags adopt a step in flight first, which may throw as a step does.)
+  if (r.drag_begin) attempt([&] { loop.begin_drag(r.drag_begin->x(), r.drag_begin->y()); });
+  if (r.drag_to) attempt([&] { loop.drag_to(r.drag_to->x(), r.drag_to->y()); });
+  if (r.drag_end) attempt([&] { loop.end_drag(); });
+}
+
+// One step forwards (adopting the step begun last frame, if any); false, paused, when it failed.
+bool step_forwards(FrameLoop& loop, GlView& view, Session& session) {
+  try {
+    loop.step();
+  } catch (const Error& e) {
+    session.error = e.what();
+    session.paused = true;
+    return false;
+  }
+  view.after_step(loop);
+  return true;
 }
 
 // One slice of a resume in progress (the window stays responsive); when it arrives the simulation
@@ -253,6 +274,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   double owed_steps = 0;
   const auto started = Clock::now();
   double sum_physics = 0, sum_detect = 0, sum_check = 0, sum_view = 0;
+  bool any_overlapped = false;  // physics ran on the worker thread, beside the drawing
   double sum_back_show = 0, sum_back_view = 0;  // --back: showing a kept frame again, and drawing it
   const std::int64_t scripted_frames = o.frames.value_or(0) + o.back;
   auto last = Clock::now();
@@ -260,32 +282,57 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   int fps_frames = 0;
   std::signal(SIGINT, &request_stop);
   std::signal(SIGTERM, &request_stop);
+  // The UI frame's requests are applied at the top of the next one, once the step begun for it has
+  // been adopted: then no request finds a step in flight, and each acts on the frame it is shown on.
+  ui::UiRequests requests;
+  int frames_before_sleep = kFramesBeforeSleep;
   for (std::int64_t rendered = 0; !window.should_close() && g_stop_requested == 0; ++rendered) {
-    window.poll_events();
+    // Paused with nothing moving: wait for input rather than draw the same frame again.
+    const bool moving = scripted || !session.paused || loop.resuming() || loop.step_pending() || loop.dragging() ||
+                        view.animating() || !(requests == ui::UiRequests{});
+    if (moving) frames_before_sleep = kFramesBeforeSleep;
+    if (frames_before_sleep > 0) {
+      window.poll_events();
+      --frames_before_sleep;
+    } else if (window.wait_events(kIdleWaitSeconds)) {
+      frames_before_sleep = kFramesBeforeSleep;
+    }
     const auto now = Clock::now();
     session.frame_ms = std::chrono::duration<double, std::milli>(now - last).count();
     last = now;
     if (scripted) {
       // Frames 1..N each step once, then --back K goes back one kept frame a frame; then the last
-      // state is drawn until the layout has settled.
+      // state is drawn until the layout has settled. Frame k+1's physics runs while frame k is
+      // drawn (FrameLoop::begin_step), as when playing.
       if (rendered > 0 && rendered <= *o.frames) {
         loop.step();
         view.after_step(loop);
+        if (rendered < *o.frames) loop.begin_step();
       } else if (rendered > *o.frames && rendered <= scripted_frames) {
         const auto t0 = Clock::now();
         step_back_for_flag(loop);
         view.on_frame_shown(loop);
         sum_back_show += ms_since(t0);
       }
-    } else if (loop.resuming()) {
-      continue_resume(loop, view, session);
-    } else if (!session.paused) {
-      owed_steps += session.speed;
-      for (; owed_steps >= 1.0; owed_steps -= 1.0) {
-        try {
+    } else {
+      // The step begun last frame is this frame's first (its physics ran while that one was drawn).
+      const bool adopted = loop.step_pending();
+      if (adopted && !step_forwards(loop, view, session)) owed_steps = 0;
+      apply_requests(requests, loop, view, session);
+      if (loop.resuming()) {
+        continue_resume(loop, view, session);
+      } else if (!session.paused) {
+        owed_steps += session.speed - (adopted ? 1.0 : 0.0);
+        for (; owed_steps >= 1.0; owed_steps -= 1.0) {
           if (session.play_direction < 0) {
             // Backwards through the kept frames, until the oldest.
-            if (!loop.step_back()) {
+            bool back = false;
+            try {
+              back = loop.step_back();
+            } catch (const Error& e) {
+              session.error = e.what();
+            }
+            if (!back) {
               session.paused = true;
               owed_steps = 0;
               break;
@@ -293,25 +340,25 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
             view.on_frame_shown(loop);
             continue;
           }
-          loop.step();
-        } catch (const Error& e) {
-          session.error = e.what();
-          session.paused = true;
-          owed_steps = 0;
-          break;
+          if (!step_forwards(loop, view, session)) {
+            owed_steps = 0;
+            break;
+          }
         }
-        view.after_step(loop);
+        if (loop.at_end()) session.paused = true;  // a recording plays once; P or R starts it again
+        // The next frame's first step, begun now so that its physics runs while this frame is drawn.
+        if (!session.paused && session.play_direction > 0 && owed_steps + session.speed >= 1.0) loop.begin_step();
       }
-      if (loop.at_end()) session.paused = true;  // a recording plays once; P or R starts it again
     }
     failed = failed || (loop.report().checked && !loop.report().ok());
     const auto view_start = Clock::now();
-    const ui::UiRequests requests = view.frame(loop, session, !scripted, static_cast<float>(session.frame_ms / 1000.0));
+    requests = view.frame(loop, session, !scripted, static_cast<float>(session.frame_ms / 1000.0));
     if (scripted) {
       const double view_ms = ms_since(view_start);
       if (rendered > *o.frames && rendered <= scripted_frames) sum_back_view += view_ms;
       sum_view += view_ms;
       sum_physics += loop.timings().physics_ms;
+      any_overlapped = any_overlapped || loop.physics_overlapped();
       sum_detect += loop.timings().detection_ms;
       sum_check += loop.timings().check_ms;
     }
@@ -327,9 +374,9 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       const std::int64_t counted = *o.frames + (loop.replaying() ? 1 : 0);
       std::fprintf(stderr,
                    "nbscope: window: %s (+%lld drawn besides: the start and while the layout settles) in %.2f s = "
-                   "%.1f FPS; ms a frame: physics %.2f, detection %.2f, check %.2f, render+panels %.2f%s%s\n",
+                   "%.1f FPS; ms a frame: physics %.2f%s, detection %.2f, check %.2f, render+panels %.2f%s%s\n",
                    plural(counted, "frame").c_str(), static_cast<long long>(rendered + 1 - counted - o.back), seconds,
-                   n / seconds, sum_physics / n, sum_detect / n, sum_check / n, sum_view / n,
+                   n / seconds, sum_physics / n, any_overlapped ? " (overlapped)" : "", sum_detect / n, sum_check / n, sum_view / n,
                    o.view.screenshot ? "; screenshot " : "",
                    o.view.screenshot ? o.view.screenshot->c_str() : "");
       if (o.back > 0) {
@@ -342,7 +389,6 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       }
       break;
     }
-    if (!scripted) apply_requests(requests, loop, view, session);
     window.present();
     ++fps_frames;
     if (window.time() - fps_window_start >= 0.5) {

@@ -80,6 +80,7 @@ const std::vector<FrameReport>& FrameLoop::comparison_reports() const { return i
 
 void FrameLoop::step() {
   Impl& m = *impl_;
+  if (m.settle()) return;  // the frame begin_step() started
   if (m.resume_world) return;
   if (m.kept) {
     // A past frame: the next one is the run's own, kept (or the live one).
@@ -105,6 +106,7 @@ void FrameLoop::step() {
 }
 
 void FrameLoop::redetect() {
+  if (impl_->settle()) return;  // a step in flight is adopted, and so detected with what is set now
   if (impl_->loaded()) impl_->detect_and_check();
 }
 
@@ -119,9 +121,13 @@ const Elements& FrameLoop::elements() const {
 }
 const std::vector<ElementSource>& FrameLoop::element_sources() const {
   static const std::vector<ElementSource> kNone;
+  if (impl_->pending()) return impl_->shown.sources;
   return impl_->world ? impl_->world->sources() : kNone;
 }
-std::int64_t FrameLoop::body_count() const { return impl_->world ? impl_->box2d()->body_count() : 0; }
+std::int64_t FrameLoop::body_count() const {
+  if (impl_->pending()) return impl_->shown.bodies;
+  return impl_->world ? impl_->box2d()->body_count() : 0;
+}
 const PairList& FrameLoop::pairs() const { return impl_->main.pairs; }
 const Grid& FrameLoop::grid() const { return impl_->main.grid; }
 const std::vector<CellIndex>& FrameLoop::cells() const { return impl_->main.cells; }
@@ -133,7 +139,9 @@ const PairList& FrameLoop::tight_aabb_pairs() const { return impl_->options.chec
 
 void FrameLoop::body_shapes(std::vector<BodyShape>& out) const {
   out.clear();
-  if (impl_->world) {
+  if (impl_->pending()) {
+    out = impl_->shown.shapes;
+  } else if (impl_->world) {
     impl_->box2d()->shapes(out);
   } else if (impl_->recording) {
     // No bodies: each recorded element is drawn as a dynamic circle.
@@ -171,22 +179,28 @@ std::shared_ptr<const FrameTrace> FrameLoop::frame_trace() {
 
 bool FrameLoop::begin_drag(double x, double y) {
   Impl& m = *impl_;
+  m.settle();  // the drag acts on the newest frame
   if (!m.world || m.kept || m.resume_world) return false;
   m.inputs.push_back({Impl::DragInput::Kind::Begin, m.world->frame(), x, y});
   return m.world->begin_drag(x, y);
 }
 void FrameLoop::drag_to(double x, double y) {
   Impl& m = *impl_;
+  m.settle();
   if (!m.world || m.kept || m.resume_world || !m.world->dragging()) return;
   m.inputs.push_back({Impl::DragInput::Kind::To, m.world->frame(), x, y});
   m.world->drag_to(x, y);
 }
 void FrameLoop::end_drag() {
   Impl& m = *impl_;
+  m.settle();
   if (!m.world || m.kept || m.resume_world || !m.world->dragging()) return;
   m.inputs.push_back({Impl::DragInput::Kind::End, m.world->frame(), 0, 0});
   m.world->end_drag();
 }
-bool FrameLoop::dragging() const { return impl_->world && !impl_->kept && impl_->world->dragging(); }
+bool FrameLoop::dragging() const {
+  if (impl_->pending()) return impl_->shown.dragging;
+  return impl_->world && !impl_->kept && impl_->world->dragging();
+}
 
 }  // namespace nbscope

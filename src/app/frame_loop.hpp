@@ -3,6 +3,8 @@
 //   load_scene*() -> frame 0: elements at the initial poses, detected and checked (no Box2D step yet)
 //   step()        -> frame k+1: Box2D step (emitters first) -> elements -> detection with the chosen
 //                    algorithm (+ injected fault) -> cross-check (check/check.hpp)
+//   begin_step() / step() -> the same frame k+1, its Box2D step run on a worker thread while the
+//                    window draws frame k (frame_loop_overlap.cpp); headless keeps the plain step()
 //   load_recording*() / step() -> the same on recorded frames (io/recording.hpp) instead of a world:
 //                    no physics, and the check runs only A==R (there is no Box2D world to compare with)
 //   show_frame()  -> a kept past frame (app/history.hpp) made current: its elements, shapes and Box2D
@@ -19,7 +21,8 @@
 // Errors: load_scene_file() throws Error "file:line: field: what" and keeps the previous scene;
 // set_algorithm() throws Error for an unknown or 3D-only name and keeps the previous one; step()
 // and redetect() throw Error when detection refuses the frame (pair limit, a grid too large), with
-// the frame number in the message. The window should show these and stay open.
+// the frame number in the message; so does any call that adopts a step begun by begin_step()
+// (show_frame, the drags, a configuration change). The window should show these and stay open.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -115,6 +118,20 @@ class FrameLoop {
   void step();
   // Detects and checks the current frame again without stepping (e.g. while paused).
   void redetect();
+
+  // ---- advancing with the physics overlapped (the window) ----
+  // Starts the next frame's physics (Box2D's step) on a worker thread and returns at once, so that
+  // the caller can draw the current frame meanwhile; the next step() adopts it (waits for the
+  // worker, then detects and checks), giving exactly the frame a plain step() would have. Until
+  // then every accessor keeps describing the current frame (a snapshot of what the step changes),
+  // and every call that needs the world (configuration, history, resume, drags, loads) adopts the
+  // step first. Does nothing on a past frame, a recording, while resuming or with a step pending.
+  void begin_step();
+  // True between begin_step() and the call that adopts its frame.
+  [[nodiscard]] bool step_pending() const;
+  // True when the current frame's physics ran on the worker thread, beside the drawing of the
+  // frame before (its physics_ms is the worker's own time).
+  [[nodiscard]] bool physics_overlapped() const;
 
   // ---- history: every frame of the run (app/history.hpp) ----
   // The run's frames: a summary of each, and the kept states that show past ones again.

@@ -19,13 +19,13 @@ bool FrameLoop::showing_past() const { return impl_->kept != nullptr; }
 std::int64_t FrameLoop::newest_frame() const {
   const Impl& m = *impl_;
   if (m.recording) return m.recording->frames.back().number;
-  return m.world ? m.world->frame() : 0;
+  return m.world ? m.live_frame() : 0;
 }
 
 bool FrameLoop::can_show(std::int64_t frame) const {
   const Impl& m = *impl_;
   if (!m.loaded()) return false;
-  if (m.world && frame == m.world->frame()) return true;
+  if (m.world && frame == m.live_frame()) return true;
   const auto index = m.history.find(frame);
   return index && m.history.at(*index).kept && (m.recording || m.history.state(*index));
 }
@@ -33,6 +33,7 @@ bool FrameLoop::can_show(std::int64_t frame) const {
 void FrameLoop::show_frame(std::int64_t frame) {
   Impl& m = *impl_;
   if (!m.loaded()) return;
+  m.settle();  // the newest frame first, so that the run (and its history) is whole
   if (m.resume_world) throw Error("frame " + std::to_string(frame) + ": the simulation is being resumed; wait or cancel");
   if (!can_show(frame)) {
     const auto first = m.history.first_kept();
@@ -79,6 +80,7 @@ void FrameLoop::element_path(ElementId k, std::int64_t from, std::int64_t to, st
   out.clear();
   const Impl& m = *impl_;
   if (!m.loaded() || k < 0) return;
+  m.wait_for_worker();  // the world's geometry is read below
   // From the first summary at or after `from` (a trail is a few hundred frames of a long history).
   const auto& summaries = m.history.summaries();
   const auto first = std::lower_bound(summaries.begin(), summaries.end(), from,
@@ -94,8 +96,8 @@ void FrameLoop::element_path(ElementId k, std::int64_t from, std::int64_t to, st
       std::array<double, 2> p{};
       m.world->element_centre(*state, k, p[0], p[1]);
       out.push_back(p);
-    } else if (f.frame == m.world->frame()) {
-      out.push_back({m.world->elements().x[k], m.world->elements().y[k]});
+    } else if (f.frame == m.live_frame()) {
+      out.push_back({m.now().x[k], m.now().y[k]});
     }
   }
 }
@@ -104,6 +106,7 @@ void FrameLoop::element_path(ElementId k, std::int64_t from, std::int64_t to, st
 
 void FrameLoop::begin_resume() {
   Impl& m = *impl_;
+  m.settle();
   if (!m.world || !m.kept || m.resume_world) return;
   m.release_drag();
   m.resume_target = m.kept->frame();

@@ -2,13 +2,15 @@
 // implement the loop (frame_loop.cpp: frames, configuration, accessors; frame_loop_history.cpp:
 // showing kept frames and resuming). Not for anyone else: it includes Box2D.
 //
-// Index: helpers | Lane (one detector's view of a frame) | Impl (the frame source, the lanes, the
-// checker, the history, the resume in progress; detect_and_check and record_frame).
+// Index: helpers | Lane (one detector's view of a frame) | ShownFrame (the frame on screen while the
+// next one's physics runs) | Impl (the frame source, the lanes, the checker, the history, the resume
+// in progress, the step in flight; detect_and_check and record_frame).
 #pragma once
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -57,6 +59,20 @@ struct Lane {
   }
 };
 
+// What the accessors read of the current frame while a worker thread steps the world to the next
+// one (FrameLoop::begin_step): copies of everything PhysicsWorld::step changes that they would
+// otherwise read from the world. The rest of the frame (pairs, grid, cells, report, the check's
+// sets, the history) lives outside the world and stays as it is until the step is adopted.
+struct ShownFrame {
+  std::int64_t frame = 0;
+  double time = 0;
+  std::int64_t bodies = 0;
+  bool dragging = false;
+  Elements elements;
+  std::vector<ElementSource> sources;
+  std::vector<BodyShape> shapes;
+};
+
 struct FrameLoop::Impl {
   FrameLoopOptions options;
   Scene scene;
@@ -96,19 +112,54 @@ struct FrameLoop::Impl {
   std::optional<std::int64_t> divergence;
   std::shared_ptr<const FrameTrace> trace;  // this frame's traced detection, once asked for (frame_trace)
 
+  // ---- the step in flight (frame_loop_overlap.cpp) ----
+  // While `stepping` is valid a worker thread owns `world` (Box2D is not thread-safe, and keeps
+  // global counters): this thread calls no Box2D at all and reads the current frame from `shown`.
+  // Declared after `world`, so it is destroyed (waited for) first.
+  std::future<double> stepping;  // the worker's world->step(); its result: the step's own milliseconds
+  ShownFrame shown;
+  bool physics_overlapped = false;  // the current frame's physics ran on the worker
+
   explicit Impl(FrameLoopOptions o)
       : options(std::move(o)), main(options.algorithm), checker(CheckOptions{options.brute_limit}) {
     history.set_budget(options.history_budget);
   }
+  ~Impl() { wait_for_worker(); }
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
+
+  // True while a step begun by FrameLoop::begin_step() has not been adopted.
+  bool pending() const { return stepping.valid(); }
+  // Returns once the worker is done with the world (the world then holds the next frame; the
+  // accessors still show the current one). Anything that calls Box2D while a step is pending waits here.
+  void wait_for_worker() const {
+    if (stepping.valid()) stepping.wait();
+  }
+  // The step in flight made the current frame (detected and checked, as step() does); true if there
+  // was one. Throws Error as step() does.
+  bool settle();
+  // The step in flight forgotten, its world about to be replaced (a load or restart).
+  void discard_step();
 
   // ---- the frame source ----
   bool loaded() const { return world != nullptr || recording != nullptr; }
   // Box2D's side of the frame shown: a kept past frame or the live world (null when replaying).
   const Box2dFrame* box2d() const { return kept ? static_cast<const Box2dFrame*>(kept.get()) : world.get(); }
-  const Elements& now() const { return world ? box2d()->elements() : recording->frames[recorded].elements; }
-  std::int64_t frame_number() const { return world ? box2d()->frame() : recording->frames[recorded].number; }
-  double time_now() const { return world ? box2d()->time() : recording->frames[recorded].time; }
-  bool first_frame() const { return world ? box2d()->frame() == 0 : recorded == 0; }
+  const Elements& now() const {
+    if (pending()) return shown.elements;
+    return world ? box2d()->elements() : recording->frames[recorded].elements;
+  }
+  std::int64_t frame_number() const {
+    if (pending()) return shown.frame;
+    return world ? box2d()->frame() : recording->frames[recorded].number;
+  }
+  double time_now() const {
+    if (pending()) return shown.time;
+    return world ? box2d()->time() : recording->frames[recorded].time;
+  }
+  bool first_frame() const { return world ? frame_number() == 0 : recorded == 0; }
+  // The live world's frame: the newest of the run (the one shown while a step is pending).
+  std::int64_t live_frame() const { return pending() ? shown.frame : world->frame(); }
 
   const Elements& detector_input() const { return detected_on_world ? now() : detected_on; }
 
@@ -215,13 +266,17 @@ struct FrameLoop::Impl {
     return all;
   }
 
+  // The current frame's physics time, measured on this thread (settle() marks the worker's).
   void set_physics_ms(double ms) {
     for (Lane* lane : lanes()) lane->report.timings.physics_ms = ms;
+    physics_overlapped = false;
   }
 
   void build(const Scene& s) {
     DetectOptions opts;
     opts.grid = s.grid;
+    // No Box2D call beside the worker's; if the new scene is refused, the step in flight stays pending.
+    wait_for_worker();
     auto fresh = std::make_unique<PhysicsWorld>(s);
     // A pinned cell size must hold the largest element from the start and every element an
     // emitter will add (the grid would refuse it mid-run, far from the field to fix).
@@ -241,6 +296,7 @@ struct FrameLoop::Impl {
     Scene copy = s;
     scene = std::move(copy);
     kept.reset();  // it points into the old world
+    discard_step();
     world = std::move(fresh);
     recording.reset();
     detect_options = opts;
@@ -250,6 +306,7 @@ struct FrameLoop::Impl {
   // The frame source's first frame, detected and checked; a new run: the history starts again.
   void start() {
     for (Lane* lane : lanes()) lane->report = FrameReport{};
+    physics_overlapped = false;
     recorded = 0;
     kept.reset();
     resume_world.reset();
@@ -301,6 +358,7 @@ struct FrameLoop::Impl {
 
   // Replays `rec` instead of a world: its grid pins as a scene's would, its name the file's stem.
   void build(std::shared_ptr<const Recording> rec) {
+    discard_step();  // the world it steps goes
     DetectOptions opts;
     Scene s;
     s.path = rec->path;

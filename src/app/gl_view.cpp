@@ -316,6 +316,8 @@ bool GlView::panel_open(std::string_view title) const {
 
 bool GlView::stepper_open() const { return panel_open(ui::kStepperTitle); }
 
+bool GlView::animating() const { return stepper_->stepper().playing() && stepper_panels_open(); }
+
 bool GlView::stepper_panels_open() const {
   return panel_open(ui::kStepperTitle) || panel_open(ui::kArraysTitle) || panel_open(ui::kPseudocodeTitle);
 }
@@ -484,6 +486,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   sim.scene_insets = host_.insets(state_);
   sim.hide_timings = hide_timings_;
   sim.timings.physics_ms = report.timings.physics_ms;
+  sim.timings.physics_overlapped = loop.physics_overlapped();
   sim.timings.detect_ms = report.timings.detection_ms;
   sim.timings.check_ms = report.timings.check_ms;
   sim.timings.trace_ms = cost_.trace_ms;

@@ -64,6 +64,12 @@ void GlfwWindow::make_current() { glfwMakeContextCurrent(window_); }
 void GlfwWindow::present() { glfwSwapBuffers(window_); }
 bool GlfwWindow::should_close() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
 void GlfwWindow::poll_events() { glfwPollEvents(); }
+bool GlfwWindow::wait_events(double timeout_seconds) {
+  // GLFW does not say why it returned: an early return is taken for an event.
+  const double start = glfwGetTime();
+  glfwWaitEventsTimeout(timeout_seconds);
+  return glfwGetTime() - start < timeout_seconds;
+}
 void GlfwWindow::set_vsync(bool on) { glfwSwapInterval(on ? 1 : 0); }
 double GlfwWindow::time() const { return glfwGetTime(); }
 

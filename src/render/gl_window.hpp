@@ -29,6 +29,9 @@ class GlfwWindow final : public GlContext {
   [[nodiscard]] bool should_close() const;
   // Processes pending window events (input reaches ImGui through its GLFW callbacks).
   void poll_events();
+  // Sleeps until a window event arrives or `timeout_seconds` pass, then processes the events as
+  // poll_events() does; true when it woke before the timeout (input, most likely).
+  bool wait_events(double timeout_seconds);
   // Swap interval: 1 waits for vertical sync, 0 does not.
   void set_vsync(bool on);
   // Seconds since the window opened (GLFW's clock).

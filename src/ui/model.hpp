@@ -39,6 +39,7 @@ struct AlgorithmStat {
 // Where one frame's time went, in milliseconds.
 struct FrameTimings {
   double physics_ms = 0;
+  bool physics_overlapped = false;  // the physics ran on a worker thread while the frame before was drawn
   double detect_ms = 0;
   double check_ms = 0;
   double trace_ms = 0;    // the traced detection for the list overlay
@@ -158,6 +159,9 @@ struct UiRequests {
   std::optional<Eigen::Vector2d> drag_begin;
   std::optional<Eigen::Vector2d> drag_to;
   bool drag_end = false;
+
+  // Equal requests; a default-constructed UiRequests asks for nothing.
+  friend bool operator==(const UiRequests&, const UiRequests&) = default;
 };
 
 // Everything a panel gets each frame.

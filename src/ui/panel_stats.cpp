@@ -105,7 +105,9 @@ class StatsPanel final : public Panel {
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(name);
         ImGui::TableNextColumn();
-        ImGui::Text("%s ms", format_ms(s, ms).c_str());
+        // Physics stepped on a worker thread while the frame before was drawn: not in this frame's sum.
+        const bool overlapped = &ms == &rows[0].second && s.timings.physics_overlapped;
+        ImGui::Text("%s ms%s", format_ms(s, ms).c_str(), overlapped ? " (overlapped)" : "");
       }
       ImGui::EndTable();
     }

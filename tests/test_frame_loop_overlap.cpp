@@ -1,0 +1,289 @@
+// The overlapped step the window uses (FrameLoop::begin_step, then step() adopts it): every frame
+// equals the plain step()'s bit for bit (elements, shapes, pairs, every check set and report); while
+// the step is in flight the accessors keep showing the current frame; every call that needs the
+// world adopts the step first; drags, faults, history and loads behave as with plain steps.
+#include <gtest/gtest.h>
+
+#include <functional>
+
+#include "support/paths.hpp"
+#include "app/frame_loop.hpp"
+#include "core/error.hpp"
+#include "physics/box2d_detector.hpp"
+
+namespace nbscope {
+namespace {
+
+const bool kRegistered = (register_physics_detectors(), true);
+
+using testpaths::scene;
+
+// Everything a frame shows and checks.
+struct Facts {
+  std::int64_t frame = 0;
+  double time = 0;
+  std::uint64_t hash = 0;
+  Elements elements;
+  std::vector<BodyShape> shapes;
+  std::int64_t bodies = 0;
+  PairList pairs, reference, f, t, g;
+  std::vector<CellIndex> cells;
+  std::array<std::int64_t, kInvariantCount> broken{};
+  std::int64_t violations = 0;
+  bool checked = false;
+};
+
+Facts facts_of(const FrameLoop& loop) {
+  Facts x;
+  x.frame = loop.frame();
+  x.time = loop.time();
+  x.hash = loop.report().hash;
+  x.elements = loop.elements();
+  loop.body_shapes(x.shapes);
+  x.bodies = loop.body_count();
+  x.pairs = loop.pairs();
+  x.reference = loop.reference_pairs();
+  x.f = loop.box2d_pairs();
+  x.t = loop.touching_pairs();
+  x.g = loop.tight_aabb_pairs();
+  x.cells = loop.cells();
+  x.broken = loop.report().broken;
+  x.violations = loop.report().violation_count();
+  x.checked = loop.report().checked;
+  return x;
+}
+
+bool same_elements(const Elements& a, const Elements& b) {
+  return a.size() == b.size() && (a.x == b.x).all() && (a.y == b.y).all() && (a.r == b.r).all();
+}
+
+bool same_shapes(const std::vector<BodyShape>& a, const std::vector<BodyShape>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (a[k].centre.x != b[k].centre.x || a[k].centre.y != b[k].centre.y || a[k].angle != b[k].angle ||
+        a[k].vertex_count != b[k].vertex_count || a[k].element != b[k].element)
+      return false;
+    for (std::size_t v = 0; v < static_cast<std::size_t>(a[k].vertex_count); ++v)
+      if (a[k].vertices[v].x != b[k].vertices[v].x || a[k].vertices[v].y != b[k].vertices[v].y) return false;
+  }
+  return true;
+}
+
+void expect_same(const Facts& a, const Facts& b) {
+  SCOPED_TRACE("frame " + std::to_string(a.frame));
+  EXPECT_EQ(a.frame, b.frame);
+  EXPECT_EQ(a.time, b.time);
+  EXPECT_EQ(a.hash, b.hash);
+  EXPECT_TRUE(same_elements(a.elements, b.elements));
+  EXPECT_TRUE(same_shapes(a.shapes, b.shapes));
+  EXPECT_EQ(a.bodies, b.bodies);
+  EXPECT_EQ(a.pairs, b.pairs);
+  EXPECT_EQ(a.reference, b.reference);
+  EXPECT_EQ(a.f, b.f);
+  EXPECT_EQ(a.t, b.t);
+  EXPECT_EQ(a.g, b.g);
+  EXPECT_EQ(a.cells, b.cells);
+  EXPECT_EQ(a.broken, b.broken);
+  EXPECT_EQ(a.violations, b.violations);
+  EXPECT_EQ(a.checked, b.checked);
+}
+
+// Runs `frames` frames of `name` twice, with plain steps and overlapped ones, calling `on_frame`
+// on both loops at every frame (before the next step is begun), and compares every frame.
+void compare_runs(const std::string& name, int frames, FrameLoopOptions options,
+                  const std::function<void(FrameLoop&, int)>& on_frame = {}) {
+  SCOPED_TRACE(name);
+  FrameLoop plain(options), overlapped(options);
+  plain.load_scene_file(scene(name));
+  overlapped.load_scene_file(scene(name));
+  expect_same(facts_of(plain), facts_of(overlapped));
+  for (int k = 1; k <= frames; ++k) {
+    if (on_frame) {
+      on_frame(plain, k - 1);
+      on_frame(overlapped, k - 1);
+    }
+    plain.step();
+    overlapped.begin_step();
+    ASSERT_TRUE(overlapped.step_pending());
+    overlapped.step();
+    ASSERT_FALSE(overlapped.step_pending());
+    EXPECT_TRUE(overlapped.physics_overlapped());
+    EXPECT_FALSE(plain.physics_overlapped());
+    EXPECT_GE(overlapped.timings().physics_ms, 0);
+    expect_same(facts_of(plain), facts_of(overlapped));
+    if (::testing::Test::HasFailure()) return;
+  }
+  EXPECT_EQ(plain.history().size(), overlapped.history().size());
+  EXPECT_EQ(plain.violation_log().total(), overlapped.violation_log().total());
+}
+
+// Circles, boxes and polygons, emitters (default.json adds bodies as it runs), a pile.
+TEST(FrameLoopOverlap, OverlappedStepsGiveThePlainStepsFrames) {
+  ASSERT_TRUE(kRegistered);
+  for (const char* name : {"default", "mixed-sizes", "pile"}) compare_runs(name, 60, {});
+}
+
+TEST(FrameLoopOverlap, SameFramesWithEveryFaultAndAComparisonLane) {
+  for (const Fault fault : {Fault::StalePositions, Fault::DropPair, Fault::OffByOneCell, Fault::DropBox2dContact}) {
+    SCOPED_TRACE(fault_name(fault));
+    FrameLoopOptions options;
+    options.fault = fault;
+    compare_runs("default", 25, options, [](FrameLoop& loop, int k) {
+      if (k == 0) loop.set_comparison_algorithms({"screen", "box2d"});
+      if (k == 10) loop.set_checks_enabled(false);
+      if (k == 15) loop.set_checks_enabled(true);
+    });
+  }
+}
+
+// A drag made while the step is in flight acts on the newest frame, as it does between plain steps.
+TEST(FrameLoopOverlap, DragsGiveThePlainRunsFrames) {
+  FrameLoop plain, overlapped;
+  plain.load_scene_file(scene("default"));
+  overlapped.load_scene_file(scene("default"));
+  for (int k = 0; k < 20; ++k) {
+    plain.step();
+    overlapped.begin_step();
+    overlapped.step();
+  }
+  // A dynamic body to grab, at the newest frame.
+  std::vector<BodyShape> shapes;
+  plain.body_shapes(shapes);
+  const auto grabbed = std::find_if(shapes.begin(), shapes.end(),
+                                    [](const BodyShape& s) { return s.body_type == BodyType::Dynamic && s.form == ShapeForm::Circle; });
+  ASSERT_NE(grabbed, shapes.end());
+  const Vec2 at = grabbed->centre;
+  for (int k = 0; k < 30; ++k) {
+    overlapped.begin_step();
+    // Plain: the step, then the drag on the frame it made. Overlapped: the drag asked for while the
+    // step runs adopts it first, so it lands on the same frame.
+    plain.step();
+    if (k == 0) {
+      EXPECT_TRUE(plain.begin_drag(at.x, at.y));
+      EXPECT_TRUE(overlapped.begin_drag(at.x, at.y));
+    }
+    if (k > 0 && k < 20) {
+      plain.drag_to(at.x + 0.2 * k, at.y + 0.1 * k);
+      overlapped.drag_to(at.x + 0.2 * k, at.y + 0.1 * k);
+    }
+    if (k == 20) {
+      plain.end_drag();
+      overlapped.end_drag();
+    }
+    if (overlapped.step_pending()) overlapped.step();  // frames without a drag call
+    EXPECT_EQ(plain.dragging(), overlapped.dragging());
+    expect_same(facts_of(plain), facts_of(overlapped));
+    if (HasFailure()) return;
+  }
+}
+
+// Between begin_step() and the adoption every accessor shows the current frame, although the world
+// underneath is already being stepped to the next.
+TEST(FrameLoopOverlap, WhileTheStepRunsTheCurrentFrameIsShown) {
+  FrameLoop loop;
+  loop.load_scene_file(scene("default"));
+  for (int k = 0; k < 10; ++k) loop.step();
+  const Facts before = facts_of(loop);
+  const std::size_t kept = loop.history().size();
+  loop.begin_step();
+  ASSERT_TRUE(loop.step_pending());
+  expect_same(before, facts_of(loop));
+  EXPECT_EQ(loop.newest_frame(), 10);
+  EXPECT_TRUE(loop.can_show(10));
+  EXPECT_FALSE(loop.can_show(11));
+  EXPECT_EQ(loop.history().size(), kept);
+  EXPECT_EQ(loop.element_sources().size(), static_cast<std::size_t>(before.elements.size()));
+  EXPECT_FALSE(loop.dragging());
+  std::vector<std::array<double, 2>> path;
+  loop.element_path(0, 0, 10, path);
+  EXPECT_EQ(path.size(), 11u);
+  EXPECT_EQ(path.back()[0], before.elements.x[0]);
+  const auto trace = loop.frame_trace();
+  ASSERT_NE(trace, nullptr);
+  EXPECT_EQ(trace->frame, 10);
+  EXPECT_TRUE(same_elements(trace->elements, before.elements));
+  loop.begin_step();  // already pending: nothing more
+  EXPECT_EQ(loop.frame(), 10);
+  loop.step();
+  EXPECT_EQ(loop.frame(), 11);
+  EXPECT_EQ(loop.history().size(), kept + 1);
+  EXPECT_EQ(loop.newest_frame(), 11);
+}
+
+// Calls that need the world adopt the step first: the run stays whole and nothing is lost.
+TEST(FrameLoopOverlap, CallsThatNeedTheWorldAdoptTheStepFirst) {
+  FrameLoop plain, loop;
+  plain.load_scene_file(scene("default"));
+  loop.load_scene_file(scene("default"));
+  for (int k = 0; k < 10; ++k) {
+    plain.step();
+    loop.step();
+  }
+  // A new algorithm: the adopted frame is detected with it.
+  plain.step();
+  plain.set_algorithm("screen");
+  loop.begin_step();
+  loop.set_algorithm("screen");
+  EXPECT_FALSE(loop.step_pending());
+  expect_same(facts_of(plain), facts_of(loop));
+  EXPECT_TRUE(loop.physics_overlapped());
+  // A past frame: the newest is adopted into the history first.
+  loop.begin_step();
+  loop.show_frame(5);
+  EXPECT_EQ(loop.frame(), 5);
+  EXPECT_EQ(loop.newest_frame(), 12);
+  EXPECT_TRUE(loop.showing_past());
+  loop.begin_step();  // nothing on a past frame
+  EXPECT_FALSE(loop.step_pending());
+  loop.show_frame(12);
+  // Redetect, a fault, a restart, another scene, the destructor: none leaves a step behind.
+  loop.begin_step();
+  loop.redetect();
+  EXPECT_EQ(loop.frame(), 13);
+  loop.begin_step();
+  loop.set_fault(Fault::DropPair);
+  EXPECT_EQ(loop.frame(), 14);
+  loop.begin_step();
+  loop.restart();
+  EXPECT_FALSE(loop.step_pending());
+  EXPECT_EQ(loop.frame(), 0);
+  loop.begin_step();
+  loop.load_scene_file(scene("pile"));
+  EXPECT_EQ(loop.frame(), 0);
+  EXPECT_EQ(loop.scene().name, "pile");
+  loop.begin_step();
+  // A scene that is refused keeps the old one, and its step still pending.
+  EXPECT_THROW(loop.load_scene_file(scene("no-such-scene")), Error);
+  EXPECT_TRUE(loop.step_pending());
+  loop.step();
+  EXPECT_EQ(loop.frame(), 1);
+  loop.begin_step();  // destroyed with the step in flight
+}
+
+TEST(FrameLoopOverlap, RecordingsAndEmptyLoopsStepPlainly) {
+  FrameLoop empty;
+  empty.begin_step();
+  EXPECT_FALSE(empty.step_pending());
+  Recording rec;
+  rec.path = "two.nbsrec";
+  for (int k = 0; k < 2; ++k) {
+    RecordedFrame f;
+    f.number = k;
+    f.time = k * 0.1;
+    f.elements.resize(2);
+    f.elements.x << 0, 0.5 + 0.1 * k;
+    f.elements.y << 0, 0;
+    f.elements.r << 0.3, 0.3;
+    rec.frames.push_back(f);
+  }
+  FrameLoop loop;
+  loop.load_recording(rec);
+  loop.begin_step();
+  EXPECT_FALSE(loop.step_pending());
+  loop.step();
+  EXPECT_EQ(loop.frame(), 1);
+  EXPECT_FALSE(loop.physics_overlapped());
+}
+
+}  // namespace
+}  // namespace nbscope
