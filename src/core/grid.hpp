@@ -37,8 +37,9 @@ struct Grid {
   // Integerised coordinate Int((v - origin)/d) on axis a (eq. 3.76), clamped into [0, n[a]).
   // Clamping keeps neighbours neighbours (the map is monotone), so an origin pinned inside the
   // data still finds every contact.
+  // On [0, n) Int() is truncation, which needs no floor() (a library call on baseline x86-64).
   [[nodiscard]] std::int32_t cell(double v, int a) const {
-    const double c = std::floor((v - origin[a]) * inv_cell_size);
+    const double c = (v - origin[a]) * inv_cell_size;
     if (!(c >= 0)) return 0;  // also catches NaN
     if (c >= static_cast<double>(n[a])) return static_cast<std::int32_t>(n[a] - 1);
     return static_cast<std::int32_t>(c);

@@ -87,6 +87,7 @@ class NbsDetector final : public Detector {
 
   // One row's (3D: layer's) elements, gathered for the fast path; indices into it are local.
   struct Slot {
+    Slot() {}  // uninitialised: a buffer is resized for every row, and each field is written before it is read
     double x, y, z, r;
     ElementId id;
     std::int32_t ix, iy;
