@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "check/check.hpp"
+#include "check/faults.hpp"
 #include "core/cells.hpp"
 #include "core/detector.hpp"
 #include "io/scene_json.hpp"

@@ -228,12 +228,51 @@ void PhysicsWorld::element_centre(const WorldState& state, ElementId k, double& 
 // ---- F, G, T and the scope of A ⊆ F --------------------------------------------------------
 
 void PhysicsWorld::contact_pairs(PairList& out) const {
+  // The walk is a chain of cache misses: a contact's successor is known only once the contact is
+  // loaded. But the list keeps its order from one frame to the next (Box2D pushes new contacts at
+  // its head and unlinks destroyed ones), so the walk follows where it is in the last walk's order
+  // and fetches the contacts met there a little further on ahead of time. Where the order differs,
+  // prefetches are wasted and the result is the same.
+  constexpr std::size_t kAhead = 16;          // contacts fetched ahead
+  constexpr std::size_t kNear = 16, kFar = 256;  // how far the last order is searched for the contact met
+  constexpr std::size_t kMissesBeforeFar = 8;
+  // Addresses only: the last walk's contacts may be destroyed by now (prefetching them is harmless).
+  std::vector<std::uintptr_t>& last = contact_order_;
+  std::vector<std::uintptr_t>& now = contact_order_next_;
+  const std::size_t n = last.size();
+  now.clear();
   out.clear();
   out.reserve(static_cast<std::size_t>(world_->GetContactCount()));
-  for (const b2Contact* c = world_->GetContactList(); c != nullptr; c = c->GetNext()) {
-    const ElementId a = element_of(c->GetFixtureA()), b = element_of(c->GetFixtureB());
+  std::size_t k = 0, misses = 0;  // the walk is at last[k]
+  for (const b2Contact* contact = world_->GetContactList(); contact != nullptr; contact = contact->GetNext()) {
+    const auto c = reinterpret_cast<std::uintptr_t>(contact);
+    if (k < n && last[k] == c) {
+      ++k;
+      misses = 0;
+    } else {
+      // Contacts destroyed since the last walk are skipped; a new contact is not found.
+      const std::size_t reach = std::min(n - std::min(n, k), misses >= kMissesBeforeFar ? kFar : kNear);
+      std::size_t s = 1;
+      while (s < reach && last[k + s] != c) ++s;
+      if (s < reach) {
+        k += s + 1;
+        misses = 0;
+      } else {
+        misses = misses >= kMissesBeforeFar ? 0 : misses + 1;
+      }
+    }
+    if (k + kAhead < n) {
+      // What the walk reads of a contact (links, fixtures) lies in its first 112 bytes (b2Contact, 2.4.1).
+      const auto* next = reinterpret_cast<const char*>(last[k + kAhead]);
+      __builtin_prefetch(next);
+      __builtin_prefetch(next + 64);
+      __builtin_prefetch(next + 111);
+    }
+    now.push_back(c);
+    const ElementId a = element_of(contact->GetFixtureA()), b = element_of(contact->GetFixtureB());
     out.push_back(a < b ? Pair{a, b} : Pair{b, a});
   }
+  last.swap(now);
   contact_sorter_.sort(out, fixtures_.size());  // linear: a counting sort by i
 }
 
