@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <typeinfo>
 
 #include "core/error.hpp"
 
@@ -152,6 +153,9 @@ void PhysicsWorld::add_body(const BodySpec& spec) {
     const double radius = shape.radius;
     // Our own list keeps the element order (Box2D's fixture list is newest first).
     fixtures_.push_back(body->CreateFixture(&fd));
+    const b2Filter& filter = fixtures_.back()->GetFilterData();
+    default_filters_ = default_filters_ && filter.categoryBits == b2Filter{}.categoryBits &&
+                       filter.maskBits == b2Filter{}.maskBits && filter.groupIndex == b2Filter{}.groupIndex;
     circle_.push_back(s.kind == ShapeKind::Circle ? 1 : 0);
     local_centres_.push_back(centre);
     radii_.push_back(radius);
@@ -320,6 +324,9 @@ void PhysicsWorld::scope_at(const PairList& pairs, const std::vector<b2AABB>& aa
   why_not = {};
   out.reserve(pairs.size());
   b2ContactFilter* filter = world_->GetContactManager().m_contactFilter;
+  // Box2D's own filter (the class itself, not a subclass) passes every pair of fixtures with the
+  // default filter data (category 1, mask 0xFFFF, no group): then it need not be asked pair by pair.
+  if (filter != nullptr && typeid(*filter) == typeid(b2ContactFilter) && default_filters_) filter = nullptr;
   const bool joints = world_->GetJointCount() > 0;
   for (const Pair& p : pairs) {
     const auto i = static_cast<std::size_t>(p.i), j = static_cast<std::size_t>(p.j);

@@ -126,6 +126,7 @@ class PhysicsWorld final : public Box2dFrame {
   std::vector<ElementSource> sources_;
   std::vector<std::uint8_t> circle_;     // per fixture: a circle (else a polygon)
   std::vector<std::uint8_t> dynamic_;    // per body: a dynamic body (types never change here)
+  bool default_filters_ = true;          // every fixture has Box2D's default filter data
   mutable PairSorter contact_sorter_;    // scratch of contact_pairs()
   mutable std::vector<std::uintptr_t> contact_order_, contact_order_next_;  // contacts in the last walk's order
   mutable AabbPairFinder aabb_pairs_;    // scratch of ground_truth()
