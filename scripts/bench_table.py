@@ -15,7 +15,11 @@ def main(path: str) -> None:
     print(f"{'benchmark':<48} {'ms/frame':>10} {'ns/elem':>9} {'B/elem':>8} {'pairs':>10}")
     for b in rows:
         ms = b["real_time"] if b.get("time_unit") == "ms" else b["real_time"] / 1e6
-        print(f"{b['name']:<48} {ms:>10.3f} {b.get('ns_per_element', 0):>9.1f} "
+        # ns_per_element is an inverted rate (kIsIterationInvariantRate | kInvert): Google Benchmark
+        # writes it in seconds per element.
+        ns = b.get("ns_per_element", 0)
+        ns = ns * 1e9 if ns < 1e-3 else ns
+        print(f"{b['name']:<48} {ms:>10.3f} {ns:>9.1f} "
               f"{b.get('bytes_per_element', 0):>8.1f} {int(b.get('pairs', 0)):>10}")
         # BM_Check: the check's parts (ms of the last frame checked), on the line below.
         parts = [(k[:-3], b[k]) for k in CHECK_PARTS if k in b]
