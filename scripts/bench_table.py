@@ -1,7 +1,11 @@
 #!/usr/bin/env python3
-"""Prints nbscope_bench's JSON output as a table: time per element and bytes per element."""
+"""Prints nbscope_bench's JSON output as a table: time per element and bytes per element (and, under
+each BM_Check row, the check's time by part)."""
 import json
 import sys
+
+# BM_Check's counters, in the order of the check (bench/bench_check.cpp).
+CHECK_PARTS = ["R_ms", "F_ms", "G/T_ms", "A==R_ms", "A-in-F_ms", "T-in-A_ms", "AABB-in-cells_ms"]
 
 
 def main(path: str) -> None:
@@ -13,6 +17,10 @@ def main(path: str) -> None:
         ms = b["real_time"] if b.get("time_unit") == "ms" else b["real_time"] / 1e6
         print(f"{b['name']:<48} {ms:>10.3f} {ns_per_element(b):>9.1f} "
               f"{b.get('bytes_per_element', 0):>8.1f} {int(b.get('pairs', 0)):>10}")
+        # BM_Check: the check's parts (ms of the last frame checked), on the line below.
+        parts = [(k[:-3], b[k]) for k in CHECK_PARTS if k in b]
+        if parts:
+            print("    " + ", ".join(f"{name} {value:.3f}" for name, value in parts))
     # Tracing off vs no trace hooks at all, measured in this run: ~1.00 means it costs nothing.
     by_name = {b["name"]: b for b in rows}
     for name, b in by_name.items():

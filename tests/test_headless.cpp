@@ -46,8 +46,14 @@ TEST(Headless, DefaultScenePassesAndReportsEveryFrame) {
     EXPECT_EQ(f["pairs"]["A"], f["pairs"]["R"]);
     EXPECT_GT(f["pairs"]["T"].get<int>(), 0);
     EXPECT_GE(f["ms"]["physics"].get<double>(), 0);
+    // The check's time by part: the sets, then each invariant.
+    for (const char* part : {"R", "F", "G/T", "A==R", "A-in-F", "T-in-A", "AABB-in-cells"})
+      EXPECT_GE(f.at("check_ms_parts").at(part).get<double>(), 0) << frame << " " << part;
     EXPECT_EQ(f["reference"], "brute");
   }
+  EXPECT_GE(run0.at("check_ms_parts").at("G/T").at("mean").get<double>(), 0);
+  EXPECT_NE(r.out.find(", check "), std::string::npos);
+  EXPECT_NE(r.out.find("AABB-in-cells "), std::string::npos) << r.out;  // the summary's check split
   // The scene has compound bodies, statics touching statics and polygons: Box2D's filters are exercised.
   const json& last = run0["frames"].back();
   EXPECT_GT(last["left_out_of_A_in_F"]["same_body"].get<int>(), 0);

@@ -126,7 +126,7 @@ TEST(History, AKeptFrameIsTheLiveFrameAgain) {
   }
 }
 
-// The kept frame's own broadphase (a tree of its tight AABBs) finds G and T as the live world's does.
+// The kept frame finds G and T from its own poses (tight AABBs, shapes) as the live world does from its bodies.
 TEST(History, KeptGroundTruthEqualsTheWorldsQuery) {
   Scene s = read_scene_json(scene("mixed-sizes"));
   PhysicsWorld world(s);

@@ -161,7 +161,19 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
     check += mean_ms(run, &FrameTimings::check_ms);
   }
   std::snprintf(buf, sizeof buf, ", check %.3f", check);
-  return s + buf;
+  s += buf;
+  // The check by part (CheckTimings), each the sum of the algorithms' means: R, F, G/T, then each invariant.
+  for (int k = 0; k < CheckTimings::kParts; ++k) {
+    double ms = 0;
+    for (const AlgorithmRun& run : report.runs) {
+      double total = 0;
+      for (const FrameReport& f : run.frames) total += f.check_timings.part(k);
+      ms += run.frames.empty() ? 0 : total / static_cast<double>(run.frames.size());
+    }
+    std::snprintf(buf, sizeof buf, "%s%s %.3f", k == 0 ? " (" : ", ", CheckTimings::part_name(k), ms);
+    s += buf;
+  }
+  return s + ")";
 }
 
 // The detectors `--algorithm` names: one, a comma-separated list, or "all" (every 2D detector,

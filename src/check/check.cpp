@@ -1,6 +1,7 @@
 #include "check/check.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "physics/box2d_detector.hpp"
@@ -14,6 +15,31 @@ constexpr std::string_view kBrute = "brute";  // the reference up to --brute-lim
 constexpr std::string_view kSort = "sort";    // the plainest cell method, above the limit
 constexpr std::string_view kNbs = "nbs";      // the reference of sort itself
 constexpr std::string_view kBox2d = "box2d";  // the last resort, physics' own
+
+using Clock = std::chrono::steady_clock;
+
+// Milliseconds since `t`, and `t` moved to now: the parts of a check timed one after another.
+double lap(Clock::time_point& t) {
+  const Clock::time_point now = Clock::now();
+  const double ms = std::chrono::duration<double, std::milli>(now - t).count();
+  t = now;
+  return ms;
+}
+
+// Calls f(p) for each pair of `a` not in `b` (both sorted), in order: std::set_difference without
+// building the difference.
+template <class F>
+void for_each_missing(const PairList& a, const PairList& b, F&& f) {
+  auto j = b.begin();
+  for (auto i = a.begin(); i != a.end();) {
+    if (j == b.end() || *i < *j) {
+      f(*i++);
+    } else {
+      if (!(*j < *i)) ++i;
+      ++j;
+    }
+  }
+}
 }  // namespace
 
 FrameChecker::FrameChecker(CheckOptions options) : options_(options) {}
@@ -53,33 +79,45 @@ Detector& FrameChecker::reference(const std::string& name) {
   return *references_.back();
 }
 
-const PairList& FrameChecker::reference_of(const std::string& name) {
-  for (const FrameReference& r : frame_references_)
-    if (r.name == name) return r.pairs;
-  frame_references_.push_back({name, {}});
-  reference(name).detect(*elements_, detect_options_, frame_references_.back().pairs);
-  sort_pairs(frame_references_.back().pairs);
-  return frame_references_.back().pairs;
+std::size_t FrameChecker::reference_of(const std::string& name) {
+  for (std::size_t k = 0; k < frame_reference_count_; ++k)
+    if (frame_references_[k].name == name) return k;
+  // Last frames' entries are reused: their pair lists keep their capacity.
+  if (frame_reference_count_ == frame_references_.size()) frame_references_.emplace_back();
+  FrameReference& r = frame_references_[frame_reference_count_];
+  r.name = name;
+  reference(name).detect(*elements_, detect_options_, r.pairs);
+  sorter_.sort(r.pairs, static_cast<std::size_t>(elements_->size()));
+  return frame_reference_count_++;
+}
+
+const PairList& FrameChecker::reference_pairs() const {
+  static const PairList none;
+  return r_ == kNoReference ? none : frame_references_[r_].pairs;
+}
+
+void FrameChecker::start_frame(std::int64_t frame, const Elements& elements, const DetectOptions& options) {
+  elements_ = &elements;
+  frame_ = frame;
+  detect_options_ = options;
+  frame_reference_count_ = 0;
+  r_ = kNoReference;
+  shared_ = {};
 }
 
 void FrameChecker::begin_frame(const Box2dFrame& world, const DetectOptions& options) {
   world_ = &world;
-  elements_ = &world.elements();
-  frame_ = world.frame();
-  detect_options_ = options;
-  frame_references_.clear();
-  r_.clear();
+  start_frame(world.frame(), world.elements(), options);
+  Clock::time_point t = Clock::now();
   world.contact_pairs(f_);
+  shared_.f_ms = lap(t);
   world.ground_truth(g_, t_);
+  shared_.g_t_ms = lap(t);
 }
 
 void FrameChecker::begin_frame(const Elements& elements, std::int64_t frame, const DetectOptions& options) {
   world_ = nullptr;
-  elements_ = &elements;
-  frame_ = frame;
-  detect_options_ = options;
-  frame_references_.clear();
-  r_.clear();
+  start_frame(frame, elements, options);
   f_.clear();
   g_.clear();
   t_.clear();
@@ -100,6 +138,11 @@ void FrameChecker::check(const CheckInput& in, FrameReport& out) {
   out.counts = {};
   out.counts.elements = n;
   out.counts.bodies = world_ != nullptr ? world_->body_count() : 0;
+  out.check_timings = shared_;  // the shared sets count once, for the frame's first check
+  shared_ = {};
+  CheckTimings& ms = out.check_timings;
+  const auto invariant_ms = [&](Invariant inv) -> double& { return ms.invariant_ms[static_cast<std::size_t>(inv)]; };
+  Clock::time_point t = Clock::now();
 
   const auto cell_of = [&](ElementId k) {
     return k >= 0 && static_cast<std::size_t>(k) < cells.size() ? cells[static_cast<std::size_t>(k)] : CellIndex{-1, -1};
@@ -110,24 +153,38 @@ void FrameChecker::check(const CheckInput& in, FrameReport& out) {
       out.violations.push_back({frame, inv, p, cell_of(p.i), cell_of(p.j), what});
   };
 
-  // A itself must be well formed before any set algebra: 0 <= i < j < n, each pair once.
-  PairList a;
-  a.reserve(in.pairs->size());
-  for (const Pair& p : *in.pairs) {
-    if (p.i < 0 || p.j >= n || p.i >= p.j || (!a.empty() && !(a.back() < p))) {
-      report(Invariant::AEqualsR, p, "invalid pair in A (not 0 <= i < j < N, out of order or twice)");
-      continue;
+  // A itself must be well formed before any set algebra: 0 <= i < j < n, each pair once. A correct
+  // A is used as it is; otherwise the well-formed pairs are copied.
+  const auto valid = [n](const Pair& p, const Pair* before) {
+    return !(p.i < 0 || p.j >= n || p.i >= p.j || (before != nullptr && !(*before < p)));
+  };
+  const PairList* a_pairs = in.pairs;
+  for (std::size_t k = 0; k < in.pairs->size(); ++k) {
+    if (valid((*in.pairs)[k], k > 0 ? &(*in.pairs)[k - 1] : nullptr)) continue;
+    a_valid_.clear();
+    for (const Pair& p : *in.pairs) {
+      if (!valid(p, a_valid_.empty() ? nullptr : &a_valid_.back())) {
+        report(Invariant::AEqualsR, p, "invalid pair in A (not 0 <= i < j < N, out of order or twice)");
+        continue;
+      }
+      a_valid_.push_back(p);
     }
-    a.push_back(p);
+    a_pairs = &a_valid_;
+    break;
   }
+  const PairList& a = *a_pairs;
   out.counts.a = static_cast<std::int64_t>(a.size());
+  invariant_ms(Invariant::AEqualsR) += lap(t);
 
   // A == R.
   out.reference = reference_for(n, in.algorithm);
   r_ = reference_of(out.reference);
-  out.counts.r = static_cast<std::int64_t>(r_.size());
-  for (const Pair& p : pairs_missing_from(r_, a)) report(Invariant::AEqualsR, p, "missing from A (in R)");
-  for (const Pair& p : pairs_missing_from(a, r_)) report(Invariant::AEqualsR, p, "extra in A (not in R)");
+  const PairList& r = frame_references_[r_].pairs;
+  ms.r_ms += lap(t);
+  out.counts.r = static_cast<std::int64_t>(r.size());
+  for_each_missing(r, a, [&](const Pair& p) { report(Invariant::AEqualsR, p, "missing from A (in R)"); });
+  for_each_missing(a, r, [&](const Pair& p) { report(Invariant::AEqualsR, p, "extra in A (not in R)"); });
+  invariant_ms(Invariant::AEqualsR) += lap(t);
 
   if (world_ == nullptr) return;  // recorded frames: the rest needs Box2D's world
   const Box2dFrame& world = *world_;
@@ -151,12 +208,14 @@ void FrameChecker::check(const CheckInput& in, FrameReport& out) {
     f = &f_faulty_;
   }
   if (out.box2d_stepped)
-    for (const Pair& p : pairs_missing_from(scope_, *f)) report(Invariant::AInF, p, "not in Box2D's contact list");
+    for_each_missing(scope_, *f, [&](const Pair& p) { report(Invariant::AInF, p, "not in Box2D's contact list"); });
+  invariant_ms(Invariant::AInF) += lap(t);
 
   // T ⊆ A.
   out.counts.g = static_cast<std::int64_t>(g_.size());
   out.counts.t = static_cast<std::int64_t>(t_.size());
-  for (const Pair& p : pairs_missing_from(t_, a)) report(Invariant::TInA, p, "shapes touch but the pair is not in A");
+  for_each_missing(t_, a, [&](const Pair& p) { report(Invariant::TInA, p, "shapes touch but the pair is not in A"); });
+  invariant_ms(Invariant::TInA) += lap(t);
 
   // Tight-AABB pairs ⊆ cell-neighbour candidates.
   for (const Pair& p : g_) {
@@ -171,6 +230,7 @@ void FrameChecker::check(const CheckInput& in, FrameReport& out) {
       ++out.counts.aabb_float_rounding;
     }
   }
+  invariant_ms(Invariant::AabbInCells) += lap(t);
 }
 
 }  // namespace nbscope

@@ -2,7 +2,8 @@
 //
 // Sets: A = the chosen algorithm's pairs; R = the reference's (brute force up to
 // CheckOptions::brute_limit elements, above it and for brute itself another detector: sort, or nbs
-// when the algorithm is sort); F = Box2D's contact list; G = pairs whose tight AABBs overlap (world.QueryAABB);
+// when the algorithm is sort); F = Box2D's contact list; G = pairs whose tight AABBs overlap
+// (b2TestOverlap, inclusive: the set world.QueryAABB gives, found with physics/aabb_pairs.hpp's grid);
 // T ⊆ G = shapes touching now. Invariants, each violation with frame, pair, both cells:
 //   A==R           A equals R (missing and extra pairs both reported);
 //   A-in-F         the pairs of A in Box2D's scope are in F — Box2D's filters (same body, no dynamic
@@ -58,26 +59,29 @@ class FrameChecker {
   // A frame without a Box2D world (recorded frames): only A==R can be checked; check() marks the
   // report's box2d_checks false and leaves F, G and T empty. `elements` must outlive the frame's checks.
   void begin_frame(const Elements& elements, std::int64_t frame, const DetectOptions& options);
-  // Runs every invariant for one algorithm's pairs into `out` (counts, broken, violations; timings
-  // untouched). begin_frame() must have been called for this frame; several algorithms may be
-  // checked against one frame.
+  // Runs every invariant for one algorithm's pairs into `out` (counts, broken, violations, and
+  // check_timings: the first check() of a frame also gets begin_frame()'s sets; out.timings untouched).
+  // begin_frame() must have been called for this frame; several algorithms may be checked against one frame.
   void check(const CheckInput& in, FrameReport& out);
 
   // The sets of the frame, sorted: R (of the last check()), F, T, G.
-  [[nodiscard]] const PairList& reference_pairs() const { return r_; }
+  [[nodiscard]] const PairList& reference_pairs() const;
   [[nodiscard]] const PairList& box2d_pairs() const { return f_; }
   [[nodiscard]] const PairList& touching_pairs() const { return t_; }
   [[nodiscard]] const PairList& tight_aabb_pairs() const { return g_; }
 
  private:
   Detector& reference(const std::string& name);
-  // R of this frame from detector `name`, computed once per frame.
-  const PairList& reference_of(const std::string& name);
+  // Index in frame_references_ of R of this frame from detector `name`, computed once per frame.
+  std::size_t reference_of(const std::string& name);
+  // A new frame: no R yet; the shared sets' times go to the next check().
+  void start_frame(std::int64_t frame, const Elements& elements, const DetectOptions& options);
 
   struct FrameReference {
     std::string name;
     PairList pairs;
   };
+  static constexpr std::size_t kNoReference = static_cast<std::size_t>(-1);
 
   CheckOptions options_;
   const Box2dFrame* world_ = nullptr;                  // of the current frame; null for recorded frames
@@ -85,8 +89,12 @@ class FrameChecker {
   std::int64_t frame_ = 0;
   DetectOptions detect_options_;
   std::vector<std::unique_ptr<Detector>> references_;  // kept: box2d keeps its tree between frames
-  std::vector<FrameReference> frame_references_;       // R of this frame per reference used
-  PairList r_, f_, t_, g_, scope_, f_faulty_;
+  std::vector<FrameReference> frame_references_;       // R per reference; the first frame_reference_count_ are this frame's
+  std::size_t frame_reference_count_ = 0;
+  std::size_t r_ = kNoReference;                       // R of the last check(), in frame_references_
+  CheckTimings shared_;                                // F, G/T of begin_frame(), for the frame's first check()
+  PairSorter sorter_;
+  PairList f_, t_, g_, scope_, f_faulty_, a_valid_;
 };
 
 }  // namespace nbscope

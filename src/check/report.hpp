@@ -2,7 +2,7 @@
 // fills them, the frame loop keeps the current frame's, the GUI draws them and io/report_json
 // writes a headless run's as JSON. Plain data (no Box2D), so io may include it.
 //
-// Index: Invariant | CellIndex, Violation | FrameCounts, FrameTimings, FrameReport | FrameSummary |
+// Index: Invariant | CellIndex, Violation | FrameCounts, FrameTimings, CheckTimings, FrameReport | FrameSummary |
 // AlgorithmRun, RunReport.
 #pragma once
 #include <array>
@@ -44,7 +44,7 @@ inline const char* invariant_description(Invariant invariant) {
              "is in Box2D's contact list F";
     case Invariant::TInA: return "every pair of shapes touching at the current transforms (T) is in A";
     case Invariant::AabbInCells:
-      return "every pair whose tight AABBs overlap (world.QueryAABB) lies in the same or neighbouring cells of the "
+      return "every pair whose tight AABBs overlap (b2TestOverlap, inclusive) lies in the same or neighbouring cells of the "
              "detector's integerisation";
   }
   return "?";
@@ -89,6 +89,27 @@ struct FrameTimings {
   double check_ms = 0;      // reference detection, Box2D's sets, the four invariants
 };
 
+// Where one frame's check time (FrameTimings::check_ms) went, in milliseconds: the sets, then each
+// invariant. The sets every algorithm of a frame shares (F, G and T; R when two algorithms have the
+// same reference) count for the first algorithm checked, as check_ms does.
+struct CheckTimings {
+  double r_ms = 0;    // the reference detector's pairs R, sorted
+  double f_ms = 0;    // Box2D's contact list F, sorted
+  double g_t_ms = 0;  // the tight-AABB pairs G and the touching pairs T
+  std::array<double, kInvariantCount> invariant_ms{};  // each invariant's own work, indexed by Invariant
+
+  // The parts' names as reports show them, and their values, in one order: R, F, G/T, then the invariants.
+  static constexpr int kParts = 3 + kInvariantCount;
+  [[nodiscard]] static const char* part_name(int k) {
+    constexpr const char* sets[] = {"R", "F", "G/T"};
+    return k < 3 ? sets[k] : invariant_name(static_cast<Invariant>(k - 3));
+  }
+  [[nodiscard]] double part(int k) const {
+    const double sets[] = {r_ms, f_ms, g_t_ms};
+    return k < 3 ? sets[k] : invariant_ms[static_cast<std::size_t>(k - 3)];
+  }
+};
+
 // Most violations listed per frame; counts stay exact beyond it.
 inline constexpr std::size_t kMaxListedViolationsPerFrame = 200;
 
@@ -102,6 +123,7 @@ struct FrameReport {
   std::string reference;         // detector that computed R ("brute", "nbs", "box2d")
   FrameCounts counts;
   FrameTimings timings;
+  CheckTimings check_timings;                          // check_ms by part (zero when not checked)
   std::array<std::int64_t, kInvariantCount> broken{};  // violations per invariant (exact)
   std::vector<Violation> violations;                   // the first kMaxListedViolationsPerFrame
 

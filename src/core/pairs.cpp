@@ -31,6 +31,41 @@ void BranchFreePairs::finish(std::size_t kept) {
 
 void sort_pairs(PairList& pairs) { std::sort(pairs.begin(), pairs.end()); }
 
+void PairSorter::sort(PairList& pairs, std::size_t n) {
+  if (pairs.size() < 64) {
+    sort_pairs(pairs);
+    return;
+  }
+  for (const Pair& p : pairs) {
+    if (p.i < 0 || static_cast<std::size_t>(p.i) >= n) {
+      sort_pairs(pairs);
+      return;
+    }
+  }
+  start_.assign(n + 1, 0);
+  for (const Pair& p : pairs) ++start_[static_cast<std::size_t>(p.i) + 1];
+  for (std::size_t k = 0; k < n; ++k) start_[k + 1] += start_[k];
+  scratch_.resize(pairs.size());
+  for (const Pair& p : pairs) scratch_[start_[static_cast<std::size_t>(p.i)]++] = p;
+  // start_[i] is now the end of i's run (the start of i+1's).
+  std::uint32_t from = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto first = scratch_.begin() + from, last = scratch_.begin() + start_[i];
+    from = start_[i];
+    if (last - first > 32) {
+      std::sort(first, last);
+      continue;
+    }
+    for (auto it = first + (first != last ? 1 : 0); it < last; ++it) {
+      const Pair p = *it;
+      auto hole = it;
+      for (; hole > first && (hole - 1)->j > p.j; --hole) *hole = *(hole - 1);
+      *hole = p;
+    }
+  }
+  pairs.swap(scratch_);
+}
+
 namespace {
 void put_varint(std::vector<std::uint8_t>& out, std::uint32_t v) {
   while (v >= 0x80u) {

@@ -119,4 +119,17 @@ void sort_pairs(PairList& pairs);
 // Pairs in `a` and not in `b`; both must be sorted.
 PairList pairs_missing_from(const PairList& a, const PairList& b);
 
+// Sorts pairs into (i, j) order as sort_pairs() does, in time linear in pairs + elements: a counting
+// sort by i, then each i's few j in place. Keeps its buffers between calls (the check's sets of
+// every frame).
+class PairSorter {
+ public:
+  // Sorts `pairs` of elements 0..n-1 (any pair outside that range: falls back to sort_pairs()).
+  void sort(PairList& pairs, std::size_t n);
+
+ private:
+  std::vector<std::uint32_t> start_;
+  PairList scratch_;
+};
+
 }  // namespace nbscope

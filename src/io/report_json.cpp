@@ -7,9 +7,11 @@
 //   violations_total, runs [one per algorithm:
 //     {algorithm, passed, frames_run, violations {total, by_invariant, frames_with_violations, first_frame,
 //      listed}, references_used {name: frames}, timing_ms {physics|detection|check: {mean, max, total}},
+//      check_ms_parts {R|F|G/T|A==R|A-in-F|T-in-A|AABB-in-cells: {mean, max, total}} (check split by part),
 //      frames [{frame, hash (16 hex digits: hash_elements of the frame's elements), elements, bodies, reference, pairs {A, R, F, T, G, A_in_scope},
 //               left_out_of_A_in_F {same_body, no_dynamic, joint, fixture_filter, beyond_aabb},
 //               aabb_float_rounding, ms {physics, detection, check},
+//               check_ms_parts {R, F, G/T, A==R, A-in-F, T-in-A, AABB-in-cells},
 //               held {invariant: true | false | null (not checked)},
 //               violations [{invariant, pair [i, j], cells [[ix, iy], [ix, iy]], what}],
 //               violations_not_listed}]}].
@@ -27,6 +29,13 @@ namespace nbscope {
 namespace {
 
 using nlohmann::json;
+
+// The check's time by part (CheckTimings), one key per part.
+json check_parts_json(const CheckTimings& t) {
+  json parts = json::object();
+  for (int k = 0; k < CheckTimings::kParts; ++k) parts[CheckTimings::part_name(k)] = t.part(k);
+  return parts;
+}
 
 json frame_json(const FrameReport& f) {
   const FrameCounts& c = f.counts;
@@ -59,6 +68,7 @@ json frame_json(const FrameReport& f) {
             {"beyond_aabb", c.beyond_aabb}}},
           {"aabb_float_rounding", c.aabb_float_rounding},
           {"ms", {{"physics", f.timings.physics_ms}, {"detection", f.timings.detection_ms}, {"check", f.timings.check_ms}}},
+          {"check_ms_parts", check_parts_json(f.check_timings)},
           {"held", held},
           {"violations", violations},
           {"violations_not_listed", f.violation_count() - static_cast<std::int64_t>(f.violations.size())}};
@@ -72,6 +82,21 @@ json timing_json(const std::vector<FrameReport>& frames, double FrameTimings::*f
   }
   const double mean = frames.empty() ? 0 : total / static_cast<double>(frames.size());
   return {{"mean", mean}, {"max", max}, {"total", total}};
+}
+
+// Mean, max and total over the frames of each part of the check.
+json check_parts_timing_json(const std::vector<FrameReport>& frames) {
+  json parts = json::object();
+  for (int k = 0; k < CheckTimings::kParts; ++k) {
+    double total = 0, max = 0;
+    for (const FrameReport& f : frames) {
+      total += f.check_timings.part(k);
+      max = std::max(max, f.check_timings.part(k));
+    }
+    const double mean = frames.empty() ? 0 : total / static_cast<double>(frames.size());
+    parts[CheckTimings::part_name(k)] = {{"mean", mean}, {"max", max}, {"total", total}};
+  }
+  return parts;
 }
 
 json run_json(const AlgorithmRun& run) {
@@ -100,7 +125,8 @@ json run_json(const AlgorithmRun& run) {
           {"timing_ms",
            {{"physics", timing_json(run.frames, &FrameTimings::physics_ms)},
             {"detection", timing_json(run.frames, &FrameTimings::detection_ms)},
-            {"check", timing_json(run.frames, &FrameTimings::check_ms)}}}};
+            {"check", timing_json(run.frames, &FrameTimings::check_ms)}}},
+          {"check_ms_parts", check_parts_timing_json(run.frames)}};
 }
 
 }  // namespace

@@ -21,34 +21,8 @@ KeptWorldFrame::KeptWorldFrame(const PhysicsWorld& world, std::shared_ptr<const 
 }
 
 void KeptWorldFrame::ground_truth(PairList& tight_aabb_pairs, PairList& touching) const {
-  tight_aabb_pairs.clear();
-  touching.clear();
-  b2DynamicTree tree;
-  for (std::size_t i = 0; i < aabbs_.size(); ++i)
-    tree.CreateProxy(aabbs_[i], reinterpret_cast<void*>(static_cast<std::uintptr_t>(i)));
-  struct Query {
-    const KeptWorldFrame* self = nullptr;
-    const b2DynamicTree* tree = nullptr;
-    ElementId i = 0;
-    PairList* g = nullptr;
-    PairList* t = nullptr;
-    bool QueryCallback(std::int32_t proxy) {
-      const auto j = static_cast<ElementId>(reinterpret_cast<std::uintptr_t>(tree->GetUserData(proxy)));
-      const auto& boxes = self->aabbs_;
-      if (j <= i || !b2TestOverlap(boxes[static_cast<std::size_t>(i)], boxes[static_cast<std::size_t>(j)])) return true;
-      g->push_back({i, j});
-      if (self->world_.touching_at(i, j, self->poses_, self->elements_)) t->push_back({i, j});
-      return true;
-    }
-  } query{this, &tree, 0, &tight_aabb_pairs, &touching};
-  const auto by_j = [](const Pair& x, const Pair& y) { return x.j < y.j; };
-  for (std::size_t i = 0; i < aabbs_.size(); ++i) {
-    query.i = static_cast<ElementId>(i);
-    const std::size_t g0 = tight_aabb_pairs.size(), t0 = touching.size();
-    tree.Query(&query, aabbs_[i]);
-    std::sort(tight_aabb_pairs.begin() + static_cast<std::ptrdiff_t>(g0), tight_aabb_pairs.end(), by_j);
-    std::sort(touching.begin() + static_cast<std::ptrdiff_t>(t0), touching.end(), by_j);
-  }
+  aabb_pairs_.find(aabbs_.data(), aabbs_.size(), tight_aabb_pairs);
+  world_.touching_of(tight_aabb_pairs, poses_, elements_, touching);
 }
 
 void KeptWorldFrame::in_box2d_scope(const PairList& pairs, PairList& out, Box2dScope& why_not) const {

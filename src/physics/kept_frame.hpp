@@ -2,8 +2,8 @@
 // and the world's fixed geometry: the same elements, shapes, tight AABBs, F, G, T and scope of
 // A-in-F the live world had at that frame, bit for bit, without stepping anything.
 //
-// G and T come from a b2DynamicTree of the frame's tight AABBs (the live world asks its own
-// broadphase): both find every overlapping pair and keep exactly the tight-AABB overlaps.
+// G and T come from the same grid over the frame's tight AABBs as the live world's
+// (physics/aabb_pairs.hpp), and the same touching test.
 #pragma once
 #include <memory>
 #include <vector>
@@ -35,6 +35,7 @@ class KeptWorldFrame final : public Box2dFrame {
   std::vector<b2Transform> poses_;
   Elements elements_;
   std::vector<b2AABB> aabbs_;
+  mutable AabbPairFinder aabb_pairs_;  // scratch of ground_truth()
 };
 
 }  // namespace nbscope

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <typeinfo>
 
 #include "core/error.hpp"
 
@@ -136,6 +137,7 @@ void PhysicsWorld::add_body(const BodySpec& spec) {
   b2Body* body = world_->CreateBody(&def);
   const auto body_index = static_cast<std::int32_t>(bodies_.size());
   bodies_.push_back(body);
+  dynamic_.push_back(body->GetType() == b2_dynamicBody ? 1 : 0);
 
   for (std::size_t k = 0; k < spec.fixtures.size(); ++k) {
     const ShapeSpec& s = spec.fixtures[k];
@@ -151,6 +153,10 @@ void PhysicsWorld::add_body(const BodySpec& spec) {
     const double radius = shape.radius;
     // Our own list keeps the element order (Box2D's fixture list is newest first).
     fixtures_.push_back(body->CreateFixture(&fd));
+    const b2Filter& filter = fixtures_.back()->GetFilterData();
+    default_filters_ = default_filters_ && filter.categoryBits == b2Filter{}.categoryBits &&
+                       filter.maskBits == b2Filter{}.maskBits && filter.groupIndex == b2Filter{}.groupIndex;
+    circle_.push_back(s.kind == ShapeKind::Circle ? 1 : 0);
     local_centres_.push_back(centre);
     radii_.push_back(radius);
     sources_.push_back({body_index, static_cast<std::int32_t>(k)});
@@ -226,18 +232,52 @@ void PhysicsWorld::element_centre(const WorldState& state, ElementId k, double& 
 // ---- F, G, T and the scope of A ⊆ F --------------------------------------------------------
 
 void PhysicsWorld::contact_pairs(PairList& out) const {
-  // Sorted as 64-bit keys (i in the high half): integer compares, about twice as fast as Pairs.
-  std::vector<std::uint64_t>& keys = contact_keys_;
-  keys.clear();
-  for (const b2Contact* c = world_->GetContactList(); c != nullptr; c = c->GetNext()) {
-    const auto a = static_cast<std::uint32_t>(element_of(c->GetFixtureA()));
-    const auto b = static_cast<std::uint32_t>(element_of(c->GetFixtureB()));
-    keys.push_back(a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a));
+  // The walk is a chain of cache misses: a contact's successor is known only once the contact is
+  // loaded. But the list keeps its order from one frame to the next (Box2D pushes new contacts at
+  // its head and unlinks destroyed ones), so the walk follows where it is in the last walk's order
+  // and fetches the contacts met there a little further on ahead of time. Where the order differs,
+  // prefetches are wasted and the result is the same.
+  constexpr std::size_t kAhead = 16;          // contacts fetched ahead
+  constexpr std::size_t kNear = 16, kFar = 256;  // how far the last order is searched for the contact met
+  constexpr std::size_t kMissesBeforeFar = 8;
+  // Addresses only: the last walk's contacts may be destroyed by now (prefetching them is harmless).
+  std::vector<std::uintptr_t>& last = contact_order_;
+  std::vector<std::uintptr_t>& now = contact_order_next_;
+  const std::size_t n = last.size();
+  now.clear();
+  out.clear();
+  out.reserve(static_cast<std::size_t>(world_->GetContactCount()));
+  std::size_t k = 0, misses = 0;  // the walk is at last[k]
+  for (const b2Contact* contact = world_->GetContactList(); contact != nullptr; contact = contact->GetNext()) {
+    const auto c = reinterpret_cast<std::uintptr_t>(contact);
+    if (k < n && last[k] == c) {
+      ++k;
+      misses = 0;
+    } else {
+      // Contacts destroyed since the last walk are skipped; a new contact is not found.
+      const std::size_t reach = std::min(n - std::min(n, k), misses >= kMissesBeforeFar ? kFar : kNear);
+      std::size_t s = 1;
+      while (s < reach && last[k + s] != c) ++s;
+      if (s < reach) {
+        k += s + 1;
+        misses = 0;
+      } else {
+        misses = misses >= kMissesBeforeFar ? 0 : misses + 1;
+      }
+    }
+    if (k + kAhead < n) {
+      // What the walk reads of a contact (links, fixtures) lies in its first 112 bytes (b2Contact, 2.4.1).
+      const auto* next = reinterpret_cast<const char*>(last[k + kAhead]);
+      __builtin_prefetch(next);
+      __builtin_prefetch(next + 64);
+      __builtin_prefetch(next + 111);
+    }
+    now.push_back(c);
+    const ElementId a = element_of(contact->GetFixtureA()), b = element_of(contact->GetFixtureB());
+    out.push_back(a < b ? Pair{a, b} : Pair{b, a});
   }
-  std::sort(keys.begin(), keys.end());
-  out.resize(keys.size());
-  for (std::size_t k = 0; k < keys.size(); ++k)
-    out[k] = {static_cast<ElementId>(keys[k] >> 32), static_cast<ElementId>(keys[k] & 0xffffffffu)};
+  last.swap(now);
+  contact_sorter_.sort(out, fixtures_.size());  // linear: a counting sort by i
 }
 
 bool PhysicsWorld::tight_aabbs_overlap(ElementId a, ElementId b) const {
@@ -246,50 +286,32 @@ bool PhysicsWorld::tight_aabbs_overlap(ElementId a, ElementId b) const {
 
 bool PhysicsWorld::touching_at(ElementId a, ElementId b, const std::vector<b2Transform>& poses,
                                const Elements& elements) const {
-  const b2Fixture* fa = fixtures_[static_cast<std::size_t>(a)];
-  const b2Fixture* fb = fixtures_[static_cast<std::size_t>(b)];
-  if (fa->GetType() == b2Shape::e_circle && fb->GetType() == b2Shape::e_circle) {
-    // Same centres and radii as the elements (see world_point), and Box2D's circle rule.
+  const auto ia = static_cast<std::size_t>(a), ib = static_cast<std::size_t>(b);
+  if (circle_[ia] != 0 && circle_[ib] != 0) {
+    // Same centres and radii as the elements (see world_point; a circle's radius is its shape's
+    // m_radius), and Box2D's circle rule.
     const double dx = elements.x[a] - elements.x[b];
     const double dy = elements.y[a] - elements.y[b];
-    const double rr = static_cast<double>(fa->GetShape()->m_radius) + static_cast<double>(fb->GetShape()->m_radius);
+    const double rr = radii_[ia] + radii_[ib];
     return dx * dx + dy * dy <= rr * rr;
   }
+  const b2Fixture* fa = fixtures_[ia];
+  const b2Fixture* fb = fixtures_[ib];
   const b2Transform& xa = poses[static_cast<std::size_t>(sources_[static_cast<std::size_t>(a)].body)];
   const b2Transform& xb = poses[static_cast<std::size_t>(sources_[static_cast<std::size_t>(b)].body)];
   return b2TestOverlap(fa->GetShape(), 0, fb->GetShape(), 0, xa, xb);
 }
 
 void PhysicsWorld::ground_truth(PairList& tight_aabb_pairs, PairList& touching_pairs) const {
-  tight_aabb_pairs.clear();
-  touching_pairs.clear();
-  // world.QueryAABB reports every fixture whose fat AABB overlaps the query; the fat AABBs hold the
-  // tight ones, so no pair is missed, and the tight test below removes the extra ones.
-  struct Query final : b2QueryCallback {
-    const PhysicsWorld* self = nullptr;
-    ElementId i = 0;
-    PairList* g = nullptr;
-    PairList* t = nullptr;
-    bool ReportFixture(b2Fixture* fixture) override {
-      const ElementId j = element_of(fixture);
-      if (j <= i || !self->tight_aabbs_overlap(i, j)) return true;
-      g->push_back({i, j});
-      if (self->touching_at(i, j, self->poses_, self->elements_)) t->push_back({i, j});
-      return true;
-    }
-  } query;
-  query.self = this;
-  query.g = &tight_aabb_pairs;
-  query.t = &touching_pairs;
-  // Pairs come grouped by i in increasing order; sorting each group by j sorts the lists.
-  const auto by_j = [](const Pair& x, const Pair& y) { return x.j < y.j; };
-  for (std::size_t i = 0; i < fixtures_.size(); ++i) {
-    query.i = static_cast<ElementId>(i);
-    const std::size_t g0 = tight_aabb_pairs.size(), t0 = touching_pairs.size();
-    world_->QueryAABB(&query, aabbs_[i]);
-    std::sort(tight_aabb_pairs.begin() + static_cast<std::ptrdiff_t>(g0), tight_aabb_pairs.end(), by_j);
-    std::sort(touching_pairs.begin() + static_cast<std::ptrdiff_t>(t0), touching_pairs.end(), by_j);
-  }
+  aabb_pairs_.find(aabbs_.data(), aabbs_.size(), tight_aabb_pairs);
+  touching_of(tight_aabb_pairs, poses_, elements_, touching_pairs);
+}
+
+void PhysicsWorld::touching_of(const PairList& tight_aabb_pairs, const std::vector<b2Transform>& poses,
+                               const Elements& elements, PairList& out) const {
+  out.clear();
+  for (const Pair& p : tight_aabb_pairs)
+    if (touching_at(p.i, p.j, poses, elements)) out.push_back(p);
 }
 
 void PhysicsWorld::in_box2d_scope(const PairList& pairs, PairList& out, Box2dScope& why_not) const {
@@ -300,23 +322,30 @@ void PhysicsWorld::scope_at(const PairList& pairs, const std::vector<b2AABB>& aa
                             Box2dScope& why_not) const {
   out.clear();
   why_not = {};
+  out.reserve(pairs.size());
   b2ContactFilter* filter = world_->GetContactManager().m_contactFilter;
+  // Box2D's own filter (the class itself, not a subclass) passes every pair of fixtures with the
+  // default filter data (category 1, mask 0xFFFF, no group): then it need not be asked pair by pair.
+  if (filter != nullptr && typeid(*filter) == typeid(b2ContactFilter) && default_filters_) filter = nullptr;
+  const bool joints = world_->GetJointCount() > 0;
   for (const Pair& p : pairs) {
-    b2Fixture* fa = fixtures_[static_cast<std::size_t>(p.i)];
-    b2Fixture* fb = fixtures_[static_cast<std::size_t>(p.j)];
-    const b2Body* ba = fa->GetBody();
-    const b2Body* bb = fb->GetBody();
-    if (ba == bb) {
+    const auto i = static_cast<std::size_t>(p.i), j = static_cast<std::size_t>(p.j);
+    // Bodies by index (the same body <=> the same index): no pointer chasing for the common cases.
+    const auto body_a = static_cast<std::size_t>(sources_[i].body), body_b = static_cast<std::size_t>(sources_[j].body);
+    if (body_a == body_b) {
       ++why_not.same_body;
       continue;
     }
-    if (ba->GetType() != b2_dynamicBody && bb->GetType() != b2_dynamicBody) {
+    if (dynamic_[body_a] == 0 && dynamic_[body_b] == 0) {
       ++why_not.no_dynamic;
       continue;
     }
+    b2Fixture* fa = fixtures_[i];
+    b2Fixture* fb = fixtures_[j];
     bool joined = false;  // as b2Body::ShouldCollide (private in 2.4.1)
-    for (const b2JointEdge* je = bb->GetJointList(); je != nullptr; je = je->next)
-      if (je->other == ba && !je->joint->GetCollideConnected()) joined = true;
+    if (joints)
+      for (const b2JointEdge* je = bodies_[body_b]->GetJointList(); je != nullptr; je = je->next)
+        if (je->other == bodies_[body_a] && !je->joint->GetCollideConnected()) joined = true;
     if (joined) {
       ++why_not.joint;
       continue;
@@ -327,9 +356,8 @@ void PhysicsWorld::scope_at(const PairList& pairs, const std::vector<b2AABB>& aa
     }
     // A polygon's bounding circle reaches beyond its AABB, where Box2D never looks. Two circles'
     // bounding circles are the shapes: a real contact has overlapping AABBs, so it must be in F.
-    const bool both_circles =
-        fa->GetType() == b2Shape::e_circle && fb->GetType() == b2Shape::e_circle;
-    if (!both_circles && !b2TestOverlap(aabbs[static_cast<std::size_t>(p.i)], aabbs[static_cast<std::size_t>(p.j)])) {
+    const bool both_circles = circle_[i] != 0 && circle_[j] != 0;
+    if (!both_circles && !b2TestOverlap(aabbs[i], aabbs[j])) {
       ++why_not.beyond_aabb;
       continue;
     }

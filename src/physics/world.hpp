@@ -14,6 +14,7 @@
 
 #include "core/elements.hpp"
 #include "core/pairs.hpp"
+#include "physics/aabb_pairs.hpp"
 #include "physics/box2d_frame.hpp"
 #include "physics/generators.hpp"
 #include "physics/scene.hpp"
@@ -55,9 +56,10 @@ class PhysicsWorld final : public Box2dFrame {
   // as sorted element pairs. Empty before the first step (Box2D finds contacts inside Step).
   void contact_pairs(PairList& out) const override;
   // G: every pair of fixtures whose tight AABBs (shape->ComputeAABB at the current transforms)
-  // overlap, found with world.QueryAABB, no filters applied; and T ⊆ G: the pairs whose shapes
-  // touch now (circles: |c1-c2| <= r1+r2 in double as the elements; otherwise b2TestOverlap).
-  // Both sorted.
+  // overlap (b2TestOverlap, inclusive), no filters applied, found with a grid of its own over the
+  // tight AABBs (physics/aabb_pairs.hpp; the same set world.QueryAABB gives); and T ⊆ G: the pairs
+  // whose shapes touch now (circles: |c1-c2| <= r1+r2 in double as the elements; otherwise
+  // b2TestOverlap). Both sorted.
   void ground_truth(PairList& tight_aabb_pairs, PairList& touching) const override;
   // The pairs of `pairs` (sorted, i < j) that Box2D's contact list must hold: Box2D's filters
   // applied (same body, no dynamic body, joints, contact filter) and the shapes' tight AABBs
@@ -101,6 +103,9 @@ class PhysicsWorld final : public Box2dFrame {
   // True when fixtures a and b touch with their bodies at `poses` (the elements give circle centres).
   [[nodiscard]] bool touching_at(ElementId a, ElementId b, const std::vector<b2Transform>& poses,
                                  const Elements& elements) const;
+  // T: the pairs of `tight_aabb_pairs` (G, sorted) whose fixtures touch at `poses`, into `out`.
+  void touching_of(const PairList& tight_aabb_pairs, const std::vector<b2Transform>& poses, const Elements& elements,
+                   PairList& out) const;
   // in_box2d_scope() with the tight AABBs of some frame.
   void scope_at(const PairList& pairs, const std::vector<b2AABB>& aabbs, PairList& out, Box2dScope& why_not) const;
   // shapes() of the first `fixtures` fixtures with bodies at `poses`.
@@ -119,7 +124,12 @@ class PhysicsWorld final : public Box2dFrame {
   std::vector<b2AABB> aabbs_;            // tight AABBs at the current transforms
   std::vector<b2Transform> poses_;       // every body's transform, as of the last update_geometry()
   std::vector<ElementSource> sources_;
-  mutable std::vector<std::uint64_t> contact_keys_;  // scratch of contact_pairs()
+  std::vector<std::uint8_t> circle_;     // per fixture: a circle (else a polygon)
+  std::vector<std::uint8_t> dynamic_;    // per body: a dynamic body (types never change here)
+  bool default_filters_ = true;          // every fixture has Box2D's default filter data
+  mutable PairSorter contact_sorter_;    // scratch of contact_pairs()
+  mutable std::vector<std::uintptr_t> contact_order_, contact_order_next_;  // contacts in the last walk's order
+  mutable AabbPairFinder aabb_pairs_;    // scratch of ground_truth()
   Elements elements_;
   std::int64_t frame_ = 0;
   double time_ = 0;
