@@ -201,5 +201,48 @@ TEST(FrameChecker, ReferenceIsBruteForceUpToTheLimitThenAnotherDetector) {
   EXPECT_NE(c.reference_policy().find("100"), std::string::npos);
 }
 
+// ---- R beside F, G and T ------------------------------------------------------------------
+
+// A world large enough for begin_frame() to compute R on a second thread; its reports must be
+// those of the plain order (R computed by check()), also when A is wrong.
+TEST(CheckerParallelReference, GivesTheReportsOfThePlainOrderAndCatchesADroppedPair) {
+  PhysicsWorld world(parse_scene_json(R"({"gravity": [0, -10], "generators": [
+      {"kind": "random_box", "count": 6000, "seed": 3, "min": [0, 0], "max": [60, 60], "radius": [0.3, 0.5],
+       "body": {"type": "dynamic", "shape": "circle"}}]})",
+                                      "many.json"));
+  world.step();
+  ASSERT_GE(world.elements().size(), FrameChecker::kParallelReferenceFrom);
+  const Grid grid = make_grid(world.elements(), GridOptions{});
+  std::vector<CellIndex> cells;
+  integerise_cells(world.elements(), grid, cells);
+  PairList good;
+  BruteDetector().detect(world.elements(), DetectOptions{}, good);
+  sort_pairs(good);
+  PairList dropped = good;
+  std::vector<CellIndex> dropped_cells = cells;
+  apply_output_fault(Fault::DropPair, grid, dropped_cells, dropped);
+  ASSERT_EQ(dropped.size() + 1, good.size());
+
+  for (const PairList* a : {&good, &dropped}) {
+    FrameReport plain, parallel;
+    CheckInput in;
+    in.algorithm = "nbs";
+    in.pairs = a;
+    in.cells = &cells;
+    FrameChecker one, two;
+    one.begin_frame(world, DetectOptions{});
+    one.check(in, plain);
+    two.begin_frame(world, DetectOptions{}, "nbs");
+    two.check(in, parallel);
+    EXPECT_EQ(parallel.reference, "sort");
+    EXPECT_EQ(parallel.counts.r, plain.counts.r);
+    EXPECT_EQ(parallel.broken, plain.broken);
+    EXPECT_EQ(parallel.violations.size(), plain.violations.size());
+    EXPECT_EQ(two.reference_pairs(), one.reference_pairs());
+    const bool wrong = a == &dropped;
+    EXPECT_EQ(parallel.broken[static_cast<std::size_t>(Invariant::AEqualsR)], wrong ? 1 : 0);
+  }
+}
+
 }  // namespace
 }  // namespace nbscope

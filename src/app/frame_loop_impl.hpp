@@ -200,7 +200,7 @@ struct FrameLoop::Impl {
     } else {
       // The first lane's check time includes the sets every lane shares (F, G, T).
       auto t0 = std::chrono::steady_clock::now();
-      if (world) checker.begin_frame(*box2d(), detect_options);
+      if (world) checker.begin_frame(*box2d(), detect_options, main.detector->name());  // R beside F, G, T
       else checker.begin_frame(now, frame_number(), detect_options);
       for (Lane* lane : lanes()) {
         CheckInput in;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
 
 #include "physics/box2d_detector.hpp"
 
@@ -79,16 +80,31 @@ Detector& FrameChecker::reference(const std::string& name) {
   return *references_.back();
 }
 
+std::size_t FrameChecker::claim_reference(const std::string& name) {
+  // Last frames' entries are reused: their pair lists keep their capacity.
+  if (frame_reference_count_ == frame_references_.size()) frame_references_.emplace_back();
+  frame_references_[frame_reference_count_].name = name;
+  reference(name);  // made here, not on the thread that computes it
+  return frame_reference_count_++;
+}
+
+void FrameChecker::compute_reference(std::size_t index) {
+  FrameReference& r = frame_references_[index];
+  reference(r.name).detect(*elements_, detect_options_, r.pairs);
+  sorter_.sort(r.pairs, static_cast<std::size_t>(elements_->size()));
+}
+
 std::size_t FrameChecker::reference_of(const std::string& name) {
   for (std::size_t k = 0; k < frame_reference_count_; ++k)
     if (frame_references_[k].name == name) return k;
-  // Last frames' entries are reused: their pair lists keep their capacity.
-  if (frame_reference_count_ == frame_references_.size()) frame_references_.emplace_back();
-  FrameReference& r = frame_references_[frame_reference_count_];
-  r.name = name;
-  reference(name).detect(*elements_, detect_options_, r.pairs);
-  sorter_.sort(r.pairs, static_cast<std::size_t>(elements_->size()));
-  return frame_reference_count_++;
+  const std::size_t index = claim_reference(name);
+  try {
+    compute_reference(index);
+  } catch (...) {
+    --frame_reference_count_;  // not computed: a later check() tries again, or reports the same error
+    throw;
+  }
+  return index;
 }
 
 const PairList& FrameChecker::reference_pairs() const {
@@ -105,14 +121,37 @@ void FrameChecker::start_frame(std::int64_t frame, const Elements& elements, con
   shared_ = {};
 }
 
-void FrameChecker::begin_frame(const Box2dFrame& world, const DetectOptions& options) {
+void FrameChecker::begin_frame(const Box2dFrame& world, const DetectOptions& options, std::string_view algorithm) {
   world_ = &world;
   start_frame(world.frame(), world.elements(), options);
+  // R on a second thread while this one walks Box2D's world for F, G and T: they share nothing
+  // but the (unchanging) elements, and the thread is joined before this returns.
+  std::future<double> r_ms;
+  if (!algorithm.empty() && elements_->size() >= kParallelReferenceFrom) {
+    const std::size_t index = claim_reference(reference_for(elements_->size(), algorithm));
+    r_ms = std::async(std::launch::async, [this, index] {
+      Clock::time_point t = Clock::now();
+      compute_reference(index);
+      return lap(t);
+    });
+  }
   Clock::time_point t = Clock::now();
-  world.contact_pairs(f_);
-  shared_.f_ms = lap(t);
-  world.ground_truth(g_, t_);
-  shared_.g_t_ms = lap(t);
+  try {
+    world.contact_pairs(f_);
+    shared_.f_ms = lap(t);
+    world.ground_truth(g_, t_);
+    shared_.g_t_ms = lap(t);
+  } catch (...) {
+    if (r_ms.valid()) r_ms.wait();  // never leave the thread writing into this checker
+    throw;
+  }
+  if (r_ms.valid()) {
+    try {
+      shared_.r_ms = r_ms.get();
+    } catch (...) {
+      frame_reference_count_ = 0;  // R was not computed: check() computes it again, and reports the error there
+    }
+  }
 }
 
 void FrameChecker::begin_frame(const Elements& elements, std::int64_t frame, const DetectOptions& options) {

@@ -55,7 +55,12 @@ class FrameChecker {
   // Computes what does not depend on the algorithm under test, once per frame: F, G and T (R is
   // computed by the first check() that needs it, and shared by later ones of the frame). `world` is
   // the live world or a kept past frame (physics/kept_frame.hpp); it must outlive the frame's checks.
-  void begin_frame(const Box2dFrame& world, const DetectOptions& options);
+  // With `algorithm` (the one the frame's first check() will test), R is computed at the same time
+  // as F, G and T, on a second thread (for frames of at least kParallelReferenceFrom elements),
+  // so that the check costs about the longer of the two instead of their sum.
+  void begin_frame(const Box2dFrame& world, const DetectOptions& options, std::string_view algorithm = {});
+  // Frames from this many elements compute R beside F, G and T (below it a thread costs more than it saves).
+  static constexpr std::int64_t kParallelReferenceFrom = 5000;
   // A frame without a Box2D world (recorded frames): only A==R can be checked; check() marks the
   // report's box2d_checks false and leaves F, G and T empty. `elements` must outlive the frame's checks.
   void begin_frame(const Elements& elements, std::int64_t frame, const DetectOptions& options);
@@ -74,6 +79,10 @@ class FrameChecker {
   Detector& reference(const std::string& name);
   // Index in frame_references_ of R of this frame from detector `name`, computed once per frame.
   std::size_t reference_of(const std::string& name);
+  // Claims the slot of R from detector `name` for this frame, uncomputed; returns its index.
+  std::size_t claim_reference(const std::string& name);
+  // Computes the claimed R in slot `index`: detection, then sorting.
+  void compute_reference(std::size_t index);
   // A new frame: no R yet; the shared sets' times go to the next check().
   void start_frame(std::int64_t frame, const Elements& elements, const DetectOptions& options);
 
