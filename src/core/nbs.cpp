@@ -52,7 +52,8 @@ std::size_t NbsDetector::book_bytes() const {
 
 std::size_t NbsDetector::own_bytes() const {
   std::size_t scratch = (order_.capacity() + list_end_.capacity()) * sizeof(std::int32_t);
-  for (const Buffer& b : buffers_) scratch += (b.slots.capacity() + b.regrouped.capacity()) * sizeof(Slot);
+  scratch += spare_.capacity() * sizeof(Slot);
+  for (const Buffer& b : buffers_) scratch += b.slots.capacity() * sizeof(Slot);
   return book_bytes() + scratch;
 }
 

@@ -100,13 +100,13 @@ class NbsDetector final : public Detector {
   struct Buffer {
     std::int32_t list = -1;  // the row (layer) it holds, -1 for none
     std::vector<Slot> slots;
-    std::vector<Slot> regrouped;  // 3D: the layer's slots regrouped row by row, swapped into slots
   };
 
   Grid grid_;
   std::vector<std::int32_t> order_;     // fast path: N element ids grouped by row (layer), in list order
   std::vector<std::int32_t> list_end_;  // fast path: end of each row's (layer's) run in order_
   Buffer buffers_[2];                   // fast path: the row (layer) being processed and the one below
+  std::vector<Slot> spare_;             // fast path, 3D: a layer regrouped row by row, then swapped into its buffer
   std::vector<std::int32_t> y_heads_;  // 2D: ny heads of the row lists; 3D: B[2][ny] (B[s][iy] at s*ny+iy)
   std::vector<std::int32_t> y_next_;   // Y[N]
   std::vector<std::int32_t> x_heads_;  // 2D: B[2][nx] (B[s][ix] at s*nx+ix); 3D: A[5][nx] (A[r][ix] at r*nx+ix)

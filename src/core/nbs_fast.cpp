@@ -281,8 +281,8 @@ void NbsDetector::run_3d_fast(const Elements& e, const DetectOptions& options, P
       // Regroup the layer row by row, each row's elements contiguous in y-list order and the rows
       // in the order the book processes them (when the walk of the z-list meets a row's head), so
       // that the five walks of each y-list below are sequential reads, not pointer chasing.
-      cur->regrouped.resize(m);
-      Slot* const t = cur->regrouped.data();
+      spare_.resize(m);
+      Slot* const t = spare_.data();
       std::size_t placed = 0;
       for (std::size_t i = 0; i < m; ++i) {
         const std::int32_t iy = s[i].iy;
@@ -292,7 +292,7 @@ void NbsDetector::run_3d_fast(const Elements& e, const DetectOptions& options, P
         t[head].run = static_cast<std::int32_t>(placed) - head;
         b0[iy] = head;
       }
-      cur->slots.swap(cur->regrouped);
+      cur->slots.swap(spare_);  // the ungrouped slots are the next layer's spare
       Slot* const c = cur->slots.data();
       Slot* const sb = below->slots.data();
 
