@@ -6,6 +6,7 @@
 
 #include <functional>
 
+#include "support/frame_facts.hpp"
 #include "support/paths.hpp"
 #include "app/frame_loop.hpp"
 #include "core/error.hpp"
@@ -18,75 +19,10 @@ const bool kRegistered = (register_physics_detectors(), true);
 
 using testpaths::scene;
 
-// Everything a frame shows and checks.
-struct Facts {
-  std::int64_t frame = 0;
-  double time = 0;
-  std::uint64_t hash = 0;
-  Elements elements;
-  std::vector<BodyShape> shapes;
-  std::int64_t bodies = 0;
-  PairList pairs, reference, f, t, g;
-  std::vector<CellIndex> cells;
-  std::array<std::int64_t, kInvariantCount> broken{};
-  std::int64_t violations = 0;
-  bool checked = false;
-};
-
-Facts facts_of(const FrameLoop& loop) {
-  Facts x;
-  x.frame = loop.frame();
-  x.time = loop.time();
-  x.hash = loop.report().hash;
-  x.elements = loop.elements();
-  loop.body_shapes(x.shapes);
-  x.bodies = loop.body_count();
-  x.pairs = loop.pairs();
-  x.reference = loop.reference_pairs();
-  x.f = loop.box2d_pairs();
-  x.t = loop.touching_pairs();
-  x.g = loop.tight_aabb_pairs();
-  x.cells = loop.cells();
-  x.broken = loop.report().broken;
-  x.violations = loop.report().violation_count();
-  x.checked = loop.report().checked;
-  return x;
-}
-
-bool same_elements(const Elements& a, const Elements& b) {
-  return a.size() == b.size() && (a.x == b.x).all() && (a.y == b.y).all() && (a.r == b.r).all();
-}
-
-bool same_shapes(const std::vector<BodyShape>& a, const std::vector<BodyShape>& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    if (a[k].centre.x != b[k].centre.x || a[k].centre.y != b[k].centre.y || a[k].angle != b[k].angle ||
-        a[k].vertex_count != b[k].vertex_count || a[k].element != b[k].element)
-      return false;
-    for (std::size_t v = 0; v < static_cast<std::size_t>(a[k].vertex_count); ++v)
-      if (a[k].vertices[v].x != b[k].vertices[v].x || a[k].vertices[v].y != b[k].vertices[v].y) return false;
-  }
-  return true;
-}
-
-void expect_same(const Facts& a, const Facts& b) {
-  SCOPED_TRACE("frame " + std::to_string(a.frame));
-  EXPECT_EQ(a.frame, b.frame);
-  EXPECT_EQ(a.time, b.time);
-  EXPECT_EQ(a.hash, b.hash);
-  EXPECT_TRUE(same_elements(a.elements, b.elements));
-  EXPECT_TRUE(same_shapes(a.shapes, b.shapes));
-  EXPECT_EQ(a.bodies, b.bodies);
-  EXPECT_EQ(a.pairs, b.pairs);
-  EXPECT_EQ(a.reference, b.reference);
-  EXPECT_EQ(a.f, b.f);
-  EXPECT_EQ(a.t, b.t);
-  EXPECT_EQ(a.g, b.g);
-  EXPECT_EQ(a.cells, b.cells);
-  EXPECT_EQ(a.broken, b.broken);
-  EXPECT_EQ(a.violations, b.violations);
-  EXPECT_EQ(a.checked, b.checked);
-}
+using testframes::expect_same_frame;
+using testframes::facts_of;
+using testframes::same_elements;
+using Facts = testframes::FrameFacts;
 
 // Runs `frames` frames of `name` twice, with plain steps and overlapped ones, calling `on_frame`
 // on both loops at every frame (before the next step is begun), and compares every frame.
@@ -96,7 +32,7 @@ void compare_runs(const std::string& name, int frames, FrameLoopOptions options,
   FrameLoop plain(options), overlapped(options);
   plain.load_scene_file(scene(name));
   overlapped.load_scene_file(scene(name));
-  expect_same(facts_of(plain), facts_of(overlapped));
+  expect_same_frame(facts_of(plain), facts_of(overlapped));
   for (int k = 1; k <= frames; ++k) {
     if (on_frame) {
       on_frame(plain, k - 1);
@@ -110,7 +46,7 @@ void compare_runs(const std::string& name, int frames, FrameLoopOptions options,
     EXPECT_TRUE(overlapped.physics_overlapped());
     EXPECT_FALSE(plain.physics_overlapped());
     EXPECT_GE(overlapped.timings().physics_ms, 0);
-    expect_same(facts_of(plain), facts_of(overlapped));
+    expect_same_frame(facts_of(plain), facts_of(overlapped));
     if (::testing::Test::HasFailure()) return;
   }
   EXPECT_EQ(plain.history().size(), overlapped.history().size());
@@ -172,7 +108,7 @@ TEST(FrameLoopOverlap, DragsGiveThePlainRunsFrames) {
     }
     if (overlapped.step_pending()) overlapped.step();  // frames without a drag call
     EXPECT_EQ(plain.dragging(), overlapped.dragging());
-    expect_same(facts_of(plain), facts_of(overlapped));
+    expect_same_frame(facts_of(plain), facts_of(overlapped));
     if (HasFailure()) return;
   }
 }
@@ -187,7 +123,7 @@ TEST(FrameLoopOverlap, WhileTheStepRunsTheCurrentFrameIsShown) {
   const std::size_t kept = loop.history().size();
   loop.begin_step();
   ASSERT_TRUE(loop.step_pending());
-  expect_same(before, facts_of(loop));
+  expect_same_frame(before, facts_of(loop));
   EXPECT_EQ(loop.newest_frame(), 10);
   EXPECT_TRUE(loop.can_show(10));
   EXPECT_FALSE(loop.can_show(11));
@@ -225,7 +161,7 @@ TEST(FrameLoopOverlap, CallsThatNeedTheWorldAdoptTheStepFirst) {
   loop.begin_step();
   loop.set_algorithm("screen");
   EXPECT_FALSE(loop.step_pending());
-  expect_same(facts_of(plain), facts_of(loop));
+  expect_same_frame(facts_of(plain), facts_of(loop));
   EXPECT_TRUE(loop.physics_overlapped());
   // A past frame: the newest is adopted into the history first.
   loop.begin_step();

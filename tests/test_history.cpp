@@ -5,6 +5,7 @@
 
 #include <map>
 
+#include "support/frame_facts.hpp"
 #include "support/paths.hpp"
 #include "app/frame_loop.hpp"
 #include "app/history.hpp"
@@ -21,60 +22,9 @@ const bool kRegistered = (register_physics_detectors(), true);
 
 using testpaths::scene;
 
-// Everything a frame shows and checks, to compare a live frame with the same frame shown again.
-struct FrameFacts {
-  std::uint64_t hash = 0;
-  Elements elements;
-  PairList pairs, reference, f, t, g;
-  std::vector<CellIndex> cells;
-  std::array<std::int64_t, kInvariantCount> broken{};
-  FrameCounts counts;
-  std::vector<BodyShape> shapes;
-};
-
-FrameFacts facts_of(const FrameLoop& loop) {
-  FrameFacts f;
-  f.hash = loop.report().hash;
-  f.elements = loop.elements();
-  f.pairs = loop.pairs();
-  f.reference = loop.reference_pairs();
-  f.f = loop.box2d_pairs();
-  f.t = loop.touching_pairs();
-  f.g = loop.tight_aabb_pairs();
-  f.cells = loop.cells();
-  f.broken = loop.report().broken;
-  f.counts = loop.report().counts;
-  loop.body_shapes(f.shapes);
-  return f;
-}
-
-void expect_same(const FrameFacts& a, const FrameFacts& b, std::int64_t frame) {
-  SCOPED_TRACE("frame " + std::to_string(frame));
-  EXPECT_EQ(a.hash, b.hash);
-  ASSERT_EQ(a.elements.size(), b.elements.size());
-  EXPECT_TRUE((a.elements.x == b.elements.x).all() && (a.elements.y == b.elements.y).all() &&
-              (a.elements.r == b.elements.r).all());
-  EXPECT_EQ(a.pairs, b.pairs);
-  EXPECT_EQ(a.reference, b.reference);
-  EXPECT_EQ(a.f, b.f);
-  EXPECT_EQ(a.t, b.t);
-  EXPECT_EQ(a.g, b.g);
-  EXPECT_EQ(a.cells, b.cells);
-  EXPECT_EQ(a.broken, b.broken);
-  EXPECT_EQ(a.counts.a_in_scope, b.counts.a_in_scope);
-  EXPECT_EQ(a.counts.beyond_aabb, b.counts.beyond_aabb);
-  EXPECT_EQ(a.counts.no_dynamic, b.counts.no_dynamic);
-  ASSERT_EQ(a.shapes.size(), b.shapes.size());
-  for (std::size_t k = 0; k < a.shapes.size(); ++k) {
-    EXPECT_EQ(a.shapes[k].centre.x, b.shapes[k].centre.x);
-    EXPECT_EQ(a.shapes[k].centre.y, b.shapes[k].centre.y);
-    EXPECT_EQ(a.shapes[k].vertex_count, b.shapes[k].vertex_count);
-    for (int v = 0; v < a.shapes[k].vertex_count; ++v) {
-      EXPECT_EQ(a.shapes[k].vertices[static_cast<std::size_t>(v)].x, b.shapes[k].vertices[static_cast<std::size_t>(v)].x);
-      EXPECT_EQ(a.shapes[k].vertices[static_cast<std::size_t>(v)].y, b.shapes[k].vertices[static_cast<std::size_t>(v)].y);
-    }
-  }
-}
+using testframes::expect_same_frame;
+using testframes::facts_of;
+using testframes::FrameFacts;
 
 // Loads default.json into `loop` and steps it `frames` frames.
 void run_default(FrameLoop& loop, int frames) {
@@ -121,7 +71,7 @@ TEST(History, AKeptFrameIsTheLiveFrameAgain) {
       loop.show_frame(k);
       EXPECT_EQ(loop.frame(), k);
       EXPECT_EQ(loop.showing_past(), k != 60);
-      expect_same(live[k], facts_of(loop), k);
+      expect_same_frame(live[k], facts_of(loop));
     }
   }
 }

@@ -84,6 +84,15 @@ class NbsDetector final : public Detector {
   // every list's elements contiguous and in list order (descending k, as pushing at the head
   // leaves them); list c spans [c == 0 ? 0 : list_end_[c-1], list_end_[c]).
   void order_by_list(const std::int32_t* cell_of, std::int64_t n_elements, std::int32_t cells);
+  // The book's first lists along `axis` (2D: y-lists, 3D: z-lists): next[k] = heads[c]; heads[c] = k
+  // for every k, each element's cell kept in `cell_scratch`; then order_by_list on them.
+  void push_and_order(const Elements& elements, int axis, std::int32_t* heads, std::int32_t* next,
+                      std::int32_t* cell_scratch);
+  struct Slot;
+  // Copies the coordinates of order_[first, first + count) into `out`, with ix (3D: and iy)
+  // integerised once, prefetching the elements further on.
+  template <int D>
+  void gather(const Elements& elements, std::size_t first, std::size_t count, Slot* out) const;
 
   // One row's (3D: layer's) elements, gathered for the fast path; indices into it are local.
   struct Slot {

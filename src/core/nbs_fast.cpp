@@ -44,6 +44,48 @@ void NbsDetector::order_by_list(const std::int32_t* cell_of, std::int64_t n_elem
   for (std::int64_t k = n_elements - 1; k >= 0; --k) order[end[cell_of[k]]++] = static_cast<std::int32_t>(k);
 }
 
+void NbsDetector::push_and_order(const Elements& e, int axis, std::int32_t* heads, std::int32_t* next,
+                                 std::int32_t* cell_scratch) {
+  const std::int64_t n = e.size();
+  const double* const v = e.axis(axis).data();
+  for (std::int64_t k = 0; k < n; ++k) {
+    const std::int32_t c = grid_.cell(v[k], axis);
+    next[k] = heads[c];
+    heads[c] = static_cast<std::int32_t>(k);
+    cell_scratch[k] = c;
+  }
+  order_by_list(cell_scratch, n, static_cast<std::int32_t>(grid_.n[axis]));
+}
+
+template <int D>
+void NbsDetector::gather(const Elements& e, std::size_t first, std::size_t count, Slot* out) const {
+  const auto n = static_cast<std::size_t>(e.size());
+  const std::int32_t* const order = order_.data();
+  const double* const px = e.x.data();
+  const double* const py = e.y.data();
+  const double* const pz = D == 3 ? e.z.data() : nullptr;
+  const double* const pr = e.r.data();
+  for (std::size_t i = 0; i < count; ++i) {
+    if (const std::size_t ahead = first + i + kPrefetchAhead; ahead < n) {
+      prefetch_read(px + order[ahead]);
+      prefetch_read(py + order[ahead]);
+      if constexpr (D == 3) prefetch_read(pz + order[ahead]);
+      prefetch_read(pr + order[ahead]);
+    }
+    const std::int32_t k = order[first + i];
+    Slot& slot = out[i];
+    slot.x = px[k];
+    slot.y = py[k];
+    slot.r = pr[k];
+    slot.id = k;
+    slot.ix = grid_.cell(px[k], 0);
+    if constexpr (D == 3) {
+      slot.z = pz[k];
+      slot.iy = grid_.cell(py[k], 1);
+    }
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // 2D: rows of cells. Per non-empty row iy: gather it, push its elements onto B[0] (in y-list
 // order; B[1] holds the row below's), test the mask in y-list order, retire the row below.
@@ -54,16 +96,11 @@ void NbsDetector::run_2d_fast(const Elements& e, const DetectOptions& options, P
   prepare(e.size());
   BranchFreePairs pairs(out_pairs, options.max_pairs);
 
-  const std::int64_t n = e.size();
   const auto nx = static_cast<std::int32_t>(grid_.n[0]);
   const auto ny = static_cast<std::int32_t>(grid_.n[1]);
-  const Grid& g = grid_;
   std::int32_t* const yh = y_heads_.data();
   std::int32_t* const yn = y_next_.data();
   std::int32_t* const xn = x_next_.data();
-  const double* const px = e.x.data();
-  const double* const py = e.y.data();
-  const double* const pr = e.r.data();
   // B[0] (row iy's x-list heads) and B[1] (row iy-1's). Row iy-1's lists, rebuilt in B[1] by the
   // book, are the very lists it had in B[0]: its heads are kept and the two halves swap roles.
   std::int32_t* b0 = x_heads_.data();
@@ -96,14 +133,7 @@ void NbsDetector::run_2d_fast(const Elements& e, const DetectOptions& options, P
   try {
     // 1. The book's y-lists (Y[k] = y_heads[iy]; y_heads[iy] = k), each element's row kept in X
     // for the counting sort (X is written again before anyone reads it).
-    for (std::int64_t k = 0; k < n; ++k) {
-      const std::int32_t iy = g.cell(py[k], 1);
-      yn[k] = yh[iy];
-      yh[iy] = static_cast<std::int32_t>(k);
-      xn[k] = iy;
-    }
-    order_by_list(xn, n, ny);
-    const std::int32_t* const order = order_.data();
+    push_and_order(e, 1, yh, yn, xn);
     const std::int32_t* const row_end = list_end_.data();
 
     Buffer* cur = &buffers_[0];
@@ -123,20 +153,7 @@ void NbsDetector::run_2d_fast(const Elements& e, const DetectOptions& options, P
       cur->slots.resize(m);
       cur->list = iy;
       Slot* const s = cur->slots.data();
-      for (std::size_t i = 0; i < m; ++i) {
-        const std::size_t ahead = static_cast<std::size_t>(first) + i + kPrefetchAhead;
-        if (ahead < static_cast<std::size_t>(n)) {
-          prefetch_read(px + order[ahead]);
-          prefetch_read(py + order[ahead]);
-          prefetch_read(pr + order[ahead]);
-        }
-        const std::int32_t k = order[static_cast<std::size_t>(first) + i];
-        s[i].x = px[k];
-        s[i].y = py[k];
-        s[i].r = pr[k];
-        s[i].id = k;
-        s[i].ix = g.cell(px[k], 0);
-      }
+      gather<2>(e, static_cast<std::size_t>(first), m, s);
       // x-lists of row iy: X[k] = B[0][ix]; B[0][ix] = k.
       for (std::size_t i = 0; i < m; ++i) {
         const std::int32_t h = b0[s[i].ix];
@@ -179,11 +196,9 @@ void NbsDetector::run_3d_fast(const Elements& e, const DetectOptions& options, P
   prepare_3d(e.size());
   BranchFreePairs pairs(out_pairs, options.max_pairs);
 
-  const std::int64_t n = e.size();
   const auto nx = static_cast<std::int32_t>(grid_.n[0]);
   const auto ny = static_cast<std::int32_t>(grid_.n[1]);
   const auto nz = static_cast<std::int32_t>(grid_.n[2]);
-  const Grid& g = grid_;
   std::int32_t* const zh = z_heads_.data();
   std::int32_t* const zn = z_next_.data();
   // B[0] (layer iz's y-list heads) and B[1] (layer iz-1's): as in 2D, the lists the book rebuilds
@@ -193,10 +208,6 @@ void NbsDetector::run_3d_fast(const Elements& e, const DetectOptions& options, P
   std::int32_t* const yn = y_next_.data();
   std::int32_t* const a = x_heads_.data();
   std::int32_t* const xn = x_next_.data();
-  const double* const px = e.x.data();
-  const double* const py = e.y.data();
-  const double* const pz = e.z.data();
-  const double* const pr = e.r.data();
 
   // Writes the X and Y values of a buffer's elements, clears its y-list heads in `heads`, empties it.
   auto retire = [&](Buffer& b, std::int32_t* heads) {
@@ -228,14 +239,7 @@ void NbsDetector::run_3d_fast(const Elements& e, const DetectOptions& options, P
 
   try {
     // 1. The book's z-lists, each element's layer kept in X for the counting sort.
-    for (std::int64_t k = 0; k < n; ++k) {
-      const std::int32_t iz = g.cell(pz[k], 2);
-      zn[k] = zh[iz];
-      zh[iz] = static_cast<std::int32_t>(k);
-      xn[k] = iz;
-    }
-    order_by_list(xn, n, nz);
-    const std::int32_t* const order = order_.data();
+    push_and_order(e, 2, zh, zn, xn);
     const std::int32_t* const layer_end = list_end_.data();
 
     Buffer* cur = &buffers_[0];
@@ -254,23 +258,7 @@ void NbsDetector::run_3d_fast(const Elements& e, const DetectOptions& options, P
       cur->slots.resize(m);
       cur->list = iz;
       Slot* const s = cur->slots.data();
-      for (std::size_t i = 0; i < m; ++i) {
-        const std::size_t ahead = static_cast<std::size_t>(first) + i + kPrefetchAhead;
-        if (ahead < static_cast<std::size_t>(n)) {
-          prefetch_read(px + order[ahead]);
-          prefetch_read(py + order[ahead]);
-          prefetch_read(pz + order[ahead]);
-          prefetch_read(pr + order[ahead]);
-        }
-        const std::int32_t k = order[static_cast<std::size_t>(first) + i];
-        s[i].x = px[k];
-        s[i].y = py[k];
-        s[i].z = pz[k];
-        s[i].r = pr[k];
-        s[i].id = k;
-        s[i].ix = g.cell(px[k], 0);
-        s[i].iy = g.cell(py[k], 1);
-      }
+      gather<3>(e, static_cast<std::size_t>(first), m, s);
       // y-lists of layer iz: Y[k] = B[0][iy]; B[0][iy] = k.
       for (std::size_t i = 0; i < m; ++i) {
         const std::int32_t h = b0[s[i].iy];
