@@ -94,6 +94,20 @@ TEST(Scaling, APointThatWouldRunTooLongIsSkipped) {
   EXPECT_NE(result.notes[0].find("would take over"), std::string::npos) << result.notes[0];
 }
 
+// A plan that starts above the pilot size projects even its first point, from one run at 10,000
+// (box2d at 1e6 would otherwise run for a minute before anything could stop it).
+TEST(Scaling, AFirstPointPastThePilotSizeIsProjectedToo) {
+  ScalingPlan plan = quick_plan();
+  plan.algorithms = {"nbs"};
+  plan.layouts = {Layout::Loose};
+  plan.n_min = plan.n_max = 200'000;
+  plan.max_run_seconds = 1e-12;
+  const ScalingResult result = run_scaling(plan, nullptr, nullptr);
+  EXPECT_TRUE(result.rows.empty());
+  ASSERT_EQ(result.notes.size(), 1u);
+  EXPECT_NE(result.notes[0].find("one run at N=10000"), std::string::npos) << result.notes[0];
+}
+
 TEST(Scaling, CancelStopsTheRun) {
   ScalingPlan plan = quick_plan();
   std::atomic<bool> cancel{false};

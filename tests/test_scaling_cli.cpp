@@ -107,7 +107,7 @@ TEST(ScalingCli, HeadlessRefusesABadCsvByItsLine) {
   EXPECT_EQ(r.err, "nbscope: error: --scaling: needs --screenshot (headless draws nothing without one)\n");
   r = run("headless " + scene + "--scaling '" + dir + "/bad.csv' --layout dense --screenshot '" + dir + "/s.png'");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err, "nbscope: error: headless: --layout does not apply here (see nbscope --help)\n");
+  EXPECT_EQ(r.err, "nbscope: error: --layout: only with --scaling run\n");
 }
 
 TEST(ScalingCli, HeadlessRunsAPlanBeforeTheScreenshot) {

@@ -1,5 +1,6 @@
 #include "app/cli.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -154,6 +155,21 @@ int parse_point(const std::string& flag, const std::string& text, double out[3])
   }
   if (count < 2) throw Error(flag + ": '" + text + "' is not X,Y or X,Y,Z");
   return count;
+}
+
+std::vector<std::string> split_names(const std::string& flag, const std::string& text) {
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', start);
+    const std::string name = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (name.empty()) throw Error(flag + ": empty name in '" + text + "'");
+    if (std::find(names.begin(), names.end(), name) != names.end()) throw Error(flag + ": '" + name + "' named twice");
+    names.push_back(name);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return names;
 }
 
 }  // namespace nbscope

@@ -38,6 +38,9 @@ class Args {
   std::string command_;
 };
 
+// The names of a comma-separated list ("nbs,sort"); Error naming `flag` for an empty or repeated name.
+std::vector<std::string> split_names(const std::string& flag, const std::string& text);
+
 // The options each command takes ("gui", "headless", "replay", "pairs", "dump", "scaling"), as --help lists
 // them; the commands of the ones that take `option` (without any "=VALUE"), comma-separated.
 const std::vector<std::pair<const char*, std::vector<const char*>>>& command_options();

@@ -193,18 +193,7 @@ std::vector<std::string> algorithms_of(const std::string& text, std::int64_t ele
     if (const auto nbs = std::find(names.begin(), names.end(), "nbs"); nbs != names.end()) std::rotate(names.begin(), nbs, nbs + 1);
     return names;
   }
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = text.find(',', start);
-    const std::string name = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    if (name.empty()) throw Error("--algorithm: empty name in '" + text + "'");
-    for (const std::string& n : names)
-      if (n == name) throw Error("--algorithm: '" + name + "' named twice");
-    names.push_back(name);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return names;
+  return split_names("--algorithm", text);
 }
 
 // True when no frame of the loaded scene or recording can have a pair: no elements now, and no
@@ -300,7 +289,12 @@ HeadlessOptions parse_headless_options(Args& args) {
   o.back = args.integer("--back", 1, 100'000'000).value_or(0);
   o.violation = args.integer("--violation", 1, 1'000'000'000).value_or(0);
   o.scaling = args.value("--scaling");
-  if (o.scaling && *o.scaling == "run") o.scaling_plan = take_scaling_plan_flags(args, o.algorithm);
+  if (o.scaling && *o.scaling == "run") {
+    o.scaling_plan = take_scaling_plan_flags(args, o.algorithm);
+  } else {
+    for (const char* flag : {"--layout", "--n", "--points-per-decade"})
+      if (args.value(flag)) throw Error(std::string(flag) + ": only with --scaling run");
+  }
   args.finish();
   if (!scene) throw Error("headless: --scene FILE is required");
   if (o.scaling) check_headless_scaling(*o.scaling, o.view);

@@ -316,7 +316,9 @@ bool GlView::panel_open(std::string_view title) const {
 
 bool GlView::stepper_open() const { return panel_open(ui::kStepperTitle); }
 
-bool GlView::animating() const { return stepper_->stepper().playing() && stepper_panels_open(); }
+bool GlView::animating() const {
+  return (stepper_->stepper().playing() && stepper_panels_open()) || scaling_->running();  // a Scaling run fills its plots
+}
 
 bool GlView::stepper_panels_open() const {
   return panel_open(ui::kStepperTitle) || panel_open(ui::kArraysTitle) || panel_open(ui::kPseudocodeTitle);

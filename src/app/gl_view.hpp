@@ -77,8 +77,8 @@ class GlView {
   // Draws one frame (scene, overlays, panels) into the current framebuffer and returns what the
   // user asked for. `live_input` lets keys and mouse act (the window, not scripted runs).
   ui::UiRequests frame(FrameLoop& loop, const Session& session, bool live_input, float dt);
-  // True while the view changes without input (the stepper playing through a frame's operations),
-  // so the window must keep drawing even when paused.
+  // True while the view changes without input (the stepper playing through a frame's operations, a
+  // Scaling run filling its plots), so the window must keep drawing even when paused.
   [[nodiscard]] bool animating() const;
   // The framebuffer as an image (after frame(), before presenting).
   [[nodiscard]] Image screenshot() const { return context_.read_pixels(); }

@@ -17,22 +17,6 @@ namespace nbscope {
 
 namespace {
 
-// The comma-separated names of `text`; Error names `flag` for an empty or repeated one.
-std::vector<std::string> split_names(const std::string& flag, const std::string& text) {
-  std::vector<std::string> names;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = text.find(',', start);
-    const std::string name = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    if (name.empty()) throw Error(flag + ": empty name in '" + text + "'");
-    if (std::find(names.begin(), names.end(), name) != names.end()) throw Error(flag + ": '" + name + "' named twice");
-    names.push_back(name);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return names;
-}
-
 // A whole number ("4000") or a power of ten ("1e5"); nullopt otherwise.
 std::optional<std::int64_t> parse_size_value(std::string_view text) {
   double v = 0;

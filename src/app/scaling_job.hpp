@@ -26,6 +26,8 @@ class ScalingJob final : public ui::ScalingRunner {
   [[nodiscard]] ui::ScalingStatus status() const override;
   // Shows finished rows (headless --scaling), read from `source` ("" for a run made elsewhere).
   void show(const ScalingResult& result, const ScalingPlan& plan, const std::string& source, double seconds);
+  // True while a plan runs (cheap: the window asks every frame whether it may sleep).
+  [[nodiscard]] bool running() const { return !finished_.load(); }
   // Waits for the run going on, if any, to finish (tests; the window never waits).
   void wait();
 

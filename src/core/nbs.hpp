@@ -96,7 +96,9 @@ class NbsDetector final : public Detector {
 
   // One row's (3D: layer's) elements, gathered for the fast path; indices into it are local.
   struct Slot {
-    Slot() {}  // uninitialised: a buffer is resized for every row, and each field is written before it is read
+    // Not zeroed (a buffer is resized for every row); the fields a 3D regrouping copies before they
+    // are written get a value, so no copy reads an indeterminate one.
+    Slot() : xnext(-1), last_x(-1), run(0) {}
     double x, y, z, r;
     ElementId id;
     std::int32_t ix, iy;

@@ -19,6 +19,9 @@ std::string point_name(const std::string& algorithm, Layout layout, std::int64_t
   return algorithm + " " + layout_name(layout) + " N=" + std::to_string(n);
 }
 
+// The size a detector's time is first measured at when a plan starts above it (for the projection).
+constexpr std::int64_t kPilotN = 10'000;
+
 // Times detect() on `elements` within the plan's bounds; false when cancelled before a timed run.
 bool measure(Detector& detector, const Elements& elements, const ScalingPlan& plan, const std::atomic<bool>* cancel,
              ScalingRow& row) {
@@ -141,6 +144,19 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
         if (name == "brute" && n > plan.brute_max_n) {
           report(point, nullptr, "skipped: brute force is capped at N <= " + std::to_string(plan.brute_max_n));
           continue;
+        }
+        if (last[a].first == 0 && n > kPilotN) {
+          // A first point past the pilot size: one timed run at the pilot size, so that even the
+          // first point is projected (box2d at 1e6 would otherwise run for a minute, uncancellable).
+          try {
+            const Elements pilot = make_layout(layout, kPilotN, 2, plan.seed);
+            PairList pairs;
+            const auto t0 = std::chrono::steady_clock::now();
+            detectors[a]->detect(pilot, DetectOptions{}, pairs);
+            last[a] = {kPilotN, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
+          } catch (const Error&) {
+            // the point itself reports what is wrong
+          }
         }
         if (const auto [last_n, last_s] = last[a]; last_n > 0) {
           const double projected = last_s * static_cast<double>(n) / static_cast<double>(last_n);

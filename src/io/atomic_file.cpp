@@ -37,7 +37,8 @@ void write_in_place(const std::string& path, const std::function<void(std::ostre
 
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& fill) {
   if (path.empty()) throw Error("output path is empty");
-  if (std::filesystem::is_directory(path)) throw Error(path + ": cannot write: it is a directory");
+  std::error_code ec;  // a name too long, a directory not searchable: the open below says what is wrong
+  if (std::filesystem::is_directory(path, ec)) throw Error(path + ": cannot write: it is a directory");
   if (is_special_file(path)) return write_in_place(path, fill);
   const std::string tmp = temp_name_for(path);
   try {

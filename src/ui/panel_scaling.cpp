@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <map>
 
@@ -186,7 +187,7 @@ class ScalingPanel final : public Panel {
         write_scaling_csv(std::string(export_path_), s.result.rows);
         export_message_ = "wrote " + plural(static_cast<long long>(s.result.rows.size()), "row") + " to " + export_path_;
         export_failed_ = false;
-      } catch (const Error& e) {
+      } catch (const std::exception& e) {  // Error, or the file system's own (never out of the window's frame)
         export_message_ = e.what();
         export_failed_ = true;
       }
