@@ -1,5 +1,6 @@
 // Index: scene files | spec parsing (--overlays, --panels) | GlView: set-up, scene load, per step,
-// shapes, checks, frame. The lists overlay's part is in gl_view_lists.cpp.
+// frame. The lists overlay's part is in gl_view_lists.cpp; the bodies and check sets drawn, in
+// gl_view_scene.cpp.
 #include "app/gl_view.hpp"
 
 #include "app/clock.hpp"
@@ -322,49 +323,6 @@ bool GlView::animating() const {
 
 bool GlView::stepper_panels_open() const {
   return panel_open(ui::kStepperTitle) || panel_open(ui::kArraysTitle) || panel_open(ui::kPseudocodeTitle);
-}
-
-void GlView::build_shapes(const FrameLoop& loop) {
-  loop.body_shapes(body_shapes_);
-  shapes_.clear();
-  shape_points_.clear();
-  for (const BodyShape& b : body_shapes_) {
-    render::ShapeDraw d;
-    d.motion = b.body_type == BodyType::Static      ? render::Motion::Static
-               : b.body_type == BodyType::Kinematic ? render::Motion::Kinematic
-                                                    : render::Motion::Dynamic;
-    d.is_circle = b.form == ShapeForm::Circle;
-    d.centre = render::Vec2(static_cast<float>(b.centre.x), static_cast<float>(b.centre.y));
-    d.radius = static_cast<float>(b.radius);
-    d.angle = static_cast<float>(b.angle);
-    d.element = b.element;
-    if (!d.is_circle) {
-      d.first = static_cast<std::uint32_t>(shape_points_.size());
-      d.count = static_cast<std::uint32_t>(b.vertex_count);
-      for (int v = 0; v < b.vertex_count; ++v)
-        shape_points_.emplace_back(static_cast<float>(b.vertices[static_cast<std::size_t>(v)].x),
-                                   static_cast<float>(b.vertices[static_cast<std::size_t>(v)].y));
-    }
-    shapes_.push_back(d);
-  }
-}
-
-void GlView::build_checks(const FrameLoop& loop) {
-  checks_.confirmed.clear();
-  checks_.broadphase_only.clear();
-  checks_.violations.clear();
-  const FrameReport& r = loop.report();
-  if (!r.checked) return;
-  const PairList& a = loop.pairs();
-  if (state_.overlays.checks) {
-    const PairList& t = loop.touching_pairs();
-    std::set_intersection(a.begin(), a.end(), t.begin(), t.end(), std::back_inserter(checks_.confirmed));
-    for (const Violation& v : r.violations) checks_.violations.push_back(v.pair);
-  }
-  if (state_.overlays.broadphase) {
-    const PairList& f = loop.box2d_pairs();
-    std::set_difference(f.begin(), f.end(), a.begin(), a.end(), std::back_inserter(checks_.broadphase_only));
-  }
 }
 
 ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_input, float dt) {
