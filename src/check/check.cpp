@@ -27,20 +27,6 @@ double lap(Clock::time_point& t) {
   return ms;
 }
 
-// Calls f(p) for each pair of `a` not in `b` (both sorted), in order: std::set_difference without
-// building the difference.
-template <class F>
-void for_each_missing(const PairList& a, const PairList& b, F&& f) {
-  auto j = b.begin();
-  for (auto i = a.begin(); i != a.end();) {
-    if (j == b.end() || *i < *j) {
-      f(*i++);
-    } else {
-      if (!(*j < *i)) ++i;
-      ++j;
-    }
-  }
-}
 }  // namespace
 
 FrameChecker::FrameChecker(CheckOptions options) : options_(options) {}

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cassert>
-#include <iterator>
 #include <string>
 
 #include "core/error.hpp"
@@ -50,18 +49,8 @@ void PairSorter::sort(PairList& pairs, std::size_t n) {
   // start_[i] is now the end of i's run (the start of i+1's).
   std::uint32_t from = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const auto first = scratch_.begin() + from, last = scratch_.begin() + start_[i];
+    sort_run_by_j(scratch_.begin() + from, scratch_.begin() + start_[i]);
     from = start_[i];
-    if (last - first > 32) {
-      std::sort(first, last);
-      continue;
-    }
-    for (auto it = first + (first != last ? 1 : 0); it < last; ++it) {
-      const Pair p = *it;
-      auto hole = it;
-      for (; hole > first && (hole - 1)->j > p.j; --hole) *hole = *(hole - 1);
-      *hole = p;
-    }
   }
   pairs.swap(scratch_);
 }
@@ -116,8 +105,21 @@ void PackedPairs::unpack(PairList& out) const {
 
 PairList pairs_missing_from(const PairList& a, const PairList& b) {
   PairList out;
-  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
+  for_each_missing(a, b, [&](const Pair& p) { out.push_back(p); });
   return out;
+}
+
+void sort_run_by_j(PairList::iterator first, PairList::iterator last) {
+  if (last - first > 32) {
+    std::sort(first, last);
+    return;
+  }
+  for (auto it = first + (first != last ? 1 : 0); it < last; ++it) {
+    const Pair p = *it;
+    auto hole = it;
+    for (; hole > first && (hole - 1)->j > p.j; --hole) *hole = *(hole - 1);
+    *hole = p;
+  }
 }
 
 }  // namespace nbscope

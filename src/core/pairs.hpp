@@ -116,6 +116,21 @@ class PackedPairs {
 
 // Sorts pairs into (i, j) order; detectors emit them in their own order.
 void sort_pairs(PairList& pairs);
+// Sorts [first, last), pairs of one i, by j: insertion for the usual handful, std::sort beyond.
+void sort_run_by_j(PairList::iterator first, PairList::iterator last);
+// Calls f(p) for every pair p in `a` and not in `b`, in order; both must be sorted. No list is built.
+template <class F>
+void for_each_missing(const PairList& a, const PairList& b, F&& f) {
+  auto j = b.begin();
+  for (auto i = a.begin(); i != a.end();) {
+    if (j == b.end() || *i < *j) {
+      f(*i++);
+    } else {
+      if (!(*j < *i)) ++i;
+      ++j;
+    }
+  }
+}
 // Pairs in `a` and not in `b`; both must be sorted.
 PairList pairs_missing_from(const PairList& a, const PairList& b);
 

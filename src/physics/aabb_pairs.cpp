@@ -27,21 +27,6 @@ struct Axis {
   }
 };
 
-// Sorts out[from..) by j (the pairs of one i: a handful).
-void sort_group(PairList& out, std::size_t from) {
-  const auto first = out.begin() + static_cast<std::ptrdiff_t>(from);
-  if (out.end() - first > 32) {
-    std::sort(first, out.end());
-    return;
-  }
-  for (auto it = first + (first != out.end() ? 1 : 0); it < out.end(); ++it) {
-    const Pair p = *it;
-    auto hole = it;
-    for (; hole > first && (hole - 1)->j > p.j; --hole) *hole = *(hole - 1);
-    *hole = p;
-  }
-}
-
 }  // namespace
 
 void AabbPairFinder::find(const b2AABB* boxes, std::size_t n, PairList& out) {
@@ -147,7 +132,7 @@ void AabbPairFinder::find(const b2AABB* boxes, std::size_t n, PairList& out) {
     }
     for (auto it = std::upper_bound(wide_ids_.begin(), wide_ids_.end(), id); it != wide_ids_.end(); ++it)
       if (b2TestOverlap(bi, boxes[static_cast<std::size_t>(*it)])) out.push_back({id, *it});
-    sort_group(out, group);
+    sort_run_by_j(out.begin() + static_cast<std::ptrdiff_t>(group), out.end());
   }
 }
 
