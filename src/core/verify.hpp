@@ -1,0 +1,126 @@
+// nbscope core: checking someone else's arrays against what the book requires (`nbscope verify
+// --arrays`). The user's heads and next arrays, read by io/arrays_json.hpp into plain families of
+// lists, are walked once each — O(N + heads) in all, so a cycle or an index out of range is found,
+// never followed — and every element is held to one list, the list of its own cell.
+//
+// Index: UserList, ListFamily, SortArrays, UserArrays (what was given) | ProblemKind, Problem,
+// WalkedList, ArraysVerdict (what was found) | verify_arrays | names in the book's terms.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/elements.hpp"
+#include "core/grid.hpp"
+
+namespace nbscope::verify {
+
+// A next-array entry the file does not give (NBS rows list X only for their own elements).
+inline constexpr std::int32_t kNotGiven = std::numeric_limits<std::int32_t>::min();
+
+// One list: where its head sits and the cell its elements must lie in.
+struct UserList {
+  std::int64_t slot = 0;                  // flat index into the family's heads (its name: heads_name[...])
+  std::int32_t head = -1;                 // the first element, -1 for an empty list
+  std::array<std::int32_t, 3> cell{-1, -1, -1};  // the cell its elements lie in; -1: an axis it does not fix
+  std::string where;                      // JSON path of the head value, for messages ("$.rows[2].x_heads[0][1]")
+};
+
+// One family of lists sharing a next array: C + E (screen), HEAD + E (tree), y_heads + Y (nbs), the
+// x-lists of one NBS row (x_heads + X), ...
+struct ListFamily {
+  std::string heads_name;                 // as the book and the dump name it: "C", "HEAD", "y_heads", "x_heads", "z_heads"
+  std::string next_name;                  // "E", "Y", "X", "Z"
+  std::vector<std::int64_t> heads_shape;  // to name a slot by its indices: C[ix][iy]
+  std::vector<UserList> lists;            // in the file's order (the walk's and the report's order)
+  std::vector<std::int32_t> next;         // indexed by element (N entries); kNotGiven where the file gives none
+  std::vector<std::string> next_where;    // JSON path of next[k] when it is not "<next_path>[k]" (sparse lists); else empty
+  std::string next_path;                  // JSON path of the dense next array ("$.next"), for messages
+  // Which elements must be on these lists: those whose cell matches `scope` on every axis it fixes
+  // (-1: any), e.g. the elements of row iy for that row's x-lists; all elements when nothing is fixed.
+  std::array<std::int32_t, 3> scope{-1, -1, -1};
+  std::string scope_name;                 // "row 3", "layer 2", "row 3 of layer 2" (0-based; printed with base), or ""
+  // The book's order within a list (--exact): true when ids rise from the head (NBS 2D x-lists are
+  // pushed while walking a y-list that runs from the highest id down), false when they fall (pushed
+  // at the head in element order).
+  bool ascending = false;
+};
+
+// The sort algorithm's arrays: no lists, a permutation and each element's integerised cell.
+struct SortArrays {
+  std::vector<std::array<std::int32_t, 3>> keys;      // keys[p]: the cell of sorted position p
+  std::vector<std::int32_t> order;                    // order[p]: the element at sorted position p
+  std::array<std::vector<std::int32_t>, 3> cell_of;   // ix, iy (iz): each element's integerised coordinate
+};
+
+// Everything the file gave, indices already shifted to 0-based.
+struct UserArrays {
+  std::string algorithm;     // screen, nbs, tree, sort
+  int dim = 2;
+  int base = 0;              // the file's numbering (0 or 1): messages use it
+  std::vector<ListFamily> families;  // in the file's order
+  std::optional<SortArrays> sort;
+};
+
+// ---- what was found ----
+
+enum class ProblemKind : std::uint8_t {
+  OutOfRange,  // an index that names no element (nor -1), or a slot outside the grid
+  Cycle,       // a list that comes back to one of its own elements
+  TwoLists,    // an element reached a second time: on two lists, or twice in a permutation
+  NotListed,   // an element on no list of its family (dropped)
+  WrongList,   // an element on the list of another cell (or another row)
+  NotGiven,    // a list runs into an element whose next entry the file does not give
+  WrongOrder,  // --exact: a list not in the book's order (or sort ties not by element id)
+  WrongCell,   // sort: an element's ix/iy/key not its cell, or keys not sorted
+};
+// "out of range", "cycle", ... for reports and tests.
+const char* problem_kind_name(ProblemKind kind);
+
+// One problem, in the book's terms, with what to draw in red.
+struct Problem {
+  ProblemKind kind = ProblemKind::OutOfRange;
+  std::string text;                       // e.g. "E[7] = 5, but element 5 lies in cell (2,7) and element 7 in cell (3,7)"
+  std::string where;                      // JSON path of the value at fault
+  std::vector<ElementId> elements;        // the elements at fault (misplaced, dropped, repeated)
+  // The wrong link: from element `first` (-1: from the list's head) to element `second`.
+  std::optional<std::pair<ElementId, ElementId>> link;
+  int family = -1;                        // index into UserArrays::families, or -1 (sort)
+  int list = -1;                          // index into that family's lists, or -1
+};
+
+// One list as its links were followed, for drawing: the elements reached, head first.
+struct WalkedList {
+  int family = 0;
+  int list = 0;
+  std::vector<ElementId> chain;
+  bool cut = false;  // the walk stopped at a problem (cycle, out of range, an element seen before)
+};
+
+struct ArraysVerdict {
+  std::vector<Problem> problems;  // the first kMaxKeptProblems, in the order found
+  std::int64_t problem_count = 0; // all of them
+  std::int64_t other_order_lists = 0;  // lists right but not in the book's order (counted without --exact)
+  std::vector<WalkedList> lists;  // every non-empty list walked
+};
+// Problems kept with their text; beyond, only counted (a file with a million wrong entries).
+inline constexpr std::size_t kMaxKeptProblems = 10'000;
+
+// Holds `user` to the book: every index in range, every list ends, every element of a family on
+// exactly one of its lists and that list the one of its own cell under `grid` (an element within
+// rounding of a cell boundary may be on either side's list), sort's permutation and keys; with
+// `exact`, also the book's order in every list. O(N + heads + entries given).
+ArraysVerdict verify_arrays(const Elements& elements, const Grid& grid, const UserArrays& user, bool exact);
+
+// ---- names in the book's terms (base 0 or 1 added to every index) ----
+
+// "C[4][6]" for slot 46 of a 10x10 family, "y_heads[3]", "HEAD[7]".
+std::string slot_name(const ListFamily& family, std::int64_t slot, int base);
+// "(4,6)" or "(4,6,2)": a cell, printed with `base`.
+std::string cell_name(const std::array<std::int32_t, 3>& cell, int dim, int base);
+
+}  // namespace nbscope::verify
