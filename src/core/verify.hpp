@@ -19,8 +19,8 @@
 
 namespace nbscope::verify {
 
-// A next-array entry the file does not give (NBS rows list X only for their own elements).
-inline constexpr std::int32_t kNotGiven = std::numeric_limits<std::int32_t>::min();
+// An index the file gives as 0 where it counts from 1 ("base": 1): neither an element nor -1.
+inline constexpr std::int32_t kZeroInBase1 = std::numeric_limits<std::int32_t>::min();
 
 // One list: where its head sits and the cell its elements must lie in.
 struct UserList {
@@ -37,13 +37,14 @@ struct ListFamily {
   std::string next_name;                  // "E", "Y", "X", "Z"
   std::vector<std::int64_t> heads_shape;  // to name a slot by its indices: C[ix][iy]
   std::vector<UserList> lists;            // in the file's order (the walk's and the report's order)
-  std::vector<std::int32_t> next;         // indexed by element (N entries); kNotGiven where the file gives none
-  std::vector<std::string> next_where;    // JSON path of next[k] when it is not "<next_path>[k]" (sparse lists); else empty
-  std::string next_path;                  // JSON path of the dense next array ("$.next"), for messages
+  // The next array: dense (N entries, `next[k]`), or sparse as the file gives an NBS row's
+  // ([k, next[k]] pairs, k possibly out of range); one of the two is empty.
+  std::vector<std::int32_t> next;
+  std::vector<std::array<std::int32_t, 2>> next_pairs;
+  std::string next_path;                  // JSON path of the next array ("$.next", "$.rows[2].x_next"), for messages
   // Which elements must be on these lists: those whose cell matches `scope` on every axis it fixes
   // (-1: any), e.g. the elements of row iy for that row's x-lists; all elements when nothing is fixed.
   std::array<std::int32_t, 3> scope{-1, -1, -1};
-  std::string scope_name;                 // "row 3", "layer 2", "row 3 of layer 2" (0-based; printed with base), or ""
   // The book's order within a list (--exact): true when ids rise from the head (NBS 2D x-lists are
   // pushed while walking a y-list that runs from the highest id down), false when they fall (pushed
   // at the head in element order).
@@ -122,5 +123,9 @@ ArraysVerdict verify_arrays(const Elements& elements, const Grid& grid, const Us
 std::string slot_name(const ListFamily& family, std::int64_t slot, int base);
 // "(4,6)" or "(4,6,2)": a cell, printed with `base`.
 std::string cell_name(const std::array<std::int32_t, 3>& cell, int dim, int base);
+// "row 3: ", "layer 2: ", "row 3 of layer 2: " for a family with a scope, else "".
+std::string scope_prefix(const ListFamily& family, int base);
+// An index as the file wrote it: "-1", kZeroInBase1 as "0", else value + base.
+std::string file_index(std::int64_t value, int base);
 
 }  // namespace nbscope::verify
