@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <span>
 
 namespace nbscope::verify {
 
@@ -205,16 +206,16 @@ class Checker {
     if (f.next_pairs.empty()) return;
     for (std::size_t p = 0; p < f.next_pairs.size(); ++p) {
       const auto [k, v] = f.next_pairs[p];
-      const std::string where = f.next_path + "[" + std::to_string(p) + "][0]";
+      const auto where = [&] { return f.next_path + "[" + std::to_string(p) + "][0]"; };
       if (!in_range(k)) {
         add({ProblemKind::OutOfRange, pre + "[" + value(k) + ", " + value(v) + "] gives " + f.next_name + "[" + value(k) +
-             "], but " + range_text(), where, {}, {}, fi, -1});
+             "], but " + range_text(), where(), {}, {}, fi, -1});
         continue;
       }
       const auto i = static_cast<std::size_t>(k);
       if (next_[i] != kUnset) {
         add({ProblemKind::TwoLists, pre + f.next_name + "[" + el(k) + "] is given twice (" + f.next_path + "[" +
-             std::to_string(entry_[i]) + "] and [" + std::to_string(p) + "])", where, {k}, {}, fi, -1});
+             std::to_string(entry_[i]) + "] and [" + std::to_string(p) + "])", where(), {k}, {}, fi, -1});
         continue;
       }
       next_[i] = v;
@@ -248,30 +249,30 @@ class Checker {
     const UserList& l = f.lists[static_cast<std::size_t>(li)];
     WalkedList walked{fi, li, {}, false};
     std::vector<ElementId>& chain = walked.chain;
-    const std::string head = pre + slot_name(f, l.slot, user_.base);
+    const std::string head = pre + slot_name(f, l.slot, user_.base);  // once per list, not per element
     ElementId prev = -1;
     std::int32_t k = l.head;
     bool ordered = true;
     while (k != -1) {
-      // The entry that led here: the head, or next[prev].
-      const std::string from = prev == -1 ? head : pre + f.next_name + "[" + el(prev) + "]";
-      const std::string where = prev == -1 ? l.where : next_path(f, prev);
+      // The entry that led here, the head or next[prev], named only when a problem needs it.
+      const auto from_text = [&] { return prev == -1 ? head : pre + f.next_name + "[" + el(prev) + "]"; };
+      const auto where_text = [&] { return prev == -1 ? l.where : next_path(f, prev); };
       if (!in_range(k)) {
-        add({ProblemKind::OutOfRange, from + " = " + value(k) + ", but " + range_text(), where, {}, {}, fi, li});
+        add({ProblemKind::OutOfRange, from_text() + " = " + value(k) + ", but " + range_text(), where_text(), {}, {}, fi, li});
         walked.cut = true;
         break;
       }
       const auto i = static_cast<std::size_t>(k);
       if (owner_[i] == li) {
         add({ProblemKind::Cycle, pre + path_text(f, l, chain, k) + ": a cycle (" + f.next_name + "[" + el(prev) + "] = " +
-             el(k) + " leads back)", where, {k}, std::pair{prev, k}, fi, li});
+             el(k) + " leads back)", where_text(), {k}, std::pair{prev, k}, fi, li});
         walked.cut = true;
         break;
       }
       if (owner_[i] != -1) {
         const UserList& other = f.lists[static_cast<std::size_t>(owner_[i])];
-        add({ProblemKind::TwoLists, from + " = " + el(k) + ", but element " + el(k) + " is already on " +
-             slot_name(f, other.slot, user_.base) + "'s list (an element is on one list only)", where, {k}, std::pair{prev, k}, fi, li});
+        add({ProblemKind::TwoLists, from_text() + " = " + el(k) + ", but element " + el(k) + " is already on " +
+             slot_name(f, other.slot, user_.base) + "'s list (an element is on one list only)", where_text(), {k}, std::pair{prev, k}, fi, li});
         walked.cut = true;
         break;
       }
@@ -279,20 +280,20 @@ class Checker {
       touched_.push_back(k);
       chain.push_back(k);
       if (!cells_.fits(k, l.cell) || !cells_.fits(k, f.scope)) {
-        std::string text = from + " = " + el(k) + ", but element " + el(k) + " lies in " + place(k, f, l.cell);
+        std::string text = from_text() + " = " + el(k) + ", but element " + el(k) + " lies in " + place(k, f, l.cell);
         if (prev == -1) {
           text += ", not in " + place_of_list(f, l);
         } else {
           text += " and element " + el(prev) + " in " + place(prev, f, l.cell);
         }
-        add({ProblemKind::WrongList, text, where, {k}, std::pair{prev, k}, fi, li});
+        add({ProblemKind::WrongList, text, where_text(), {k}, std::pair{prev, k}, fi, li});
       }
       if (prev != -1 && ordered && (f.ascending ? k < prev : k > prev)) {
         ordered = false;
         if (exact_) {
           add({ProblemKind::WrongOrder, head + " -> ... -> " + el(prev) + " -> " + el(k) + ": " + el(k) + " follows " + el(prev) +
                ", but in the book's order ids " + (f.ascending ? "rise" : "fall") + " along " + order_reason(f),
-               where, {k}, std::pair{prev, k}, fi, li});
+               where_text(), {k}, std::pair{prev, k}, fi, li});
         } else {
           ++out_.other_order_lists;
         }
@@ -340,10 +341,9 @@ class Checker {
     std::array<bool, 3> fixes{false, false, false};
     for (const UserList& l : f.lists)
       for (int a = 0; a < 3; ++a) fixes[a] = fixes[a] || l.cell[a] >= 0;
-    const bool scoped = f.scope[0] >= 0 || f.scope[1] >= 0 || f.scope[2] >= 0;
-    for (ElementId k = 0; k < n_; ++k) {
+    for (ElementId k : members(f.scope)) {
       if (owner_[static_cast<std::size_t>(k)] != -1) continue;
-      if (scoped ? !cells_.surely_in(k, f.scope) : false) continue;
+      if (!cells_.surely_in(k, f.scope)) continue;
       std::array<std::int32_t, 3> key = cells_.cell(k);
       for (int a = 0; a < 3; ++a)
         if (!fixes[a]) key[a] = -1;
@@ -359,6 +359,38 @@ class Checker {
       }
       add({ProblemKind::NotListed, text, f.next_path, {k}, {}, fi, it == list_of_cell.end() ? -1 : it->second});
     }
+  }
+
+  // The elements whose cell matches `scope` on every axis it fixes: all, or one bucket of an
+  // index by row/layer built once (a family per NBS row must not cost N each).
+  std::span<const ElementId> members(const std::array<std::int32_t, 3>& scope) {
+    if (all_.empty() && n_ > 0) {
+      all_.resize(static_cast<std::size_t>(n_));
+      for (ElementId k = 0; k < n_; ++k) all_[static_cast<std::size_t>(k)] = k;
+    }
+    const int mode = (scope[0] >= 0 ? 1 : 0) | (scope[1] >= 0 ? 2 : 0) | (scope[2] >= 0 ? 4 : 0);
+    if (mode == 0) return all_;
+    Index& index = index_[mode];
+    const auto key_of = [&](const std::array<std::int32_t, 3>& c) {
+      std::array<std::int32_t, 3> k{-1, -1, -1};
+      for (int a = 0; a < 3; ++a)
+        if (mode & (1 << a)) k[a] = c[a];
+      return k;
+    };
+    if (index.ids.empty() && n_ > 0) {
+      index.ids = all_;
+      index.keys.resize(static_cast<std::size_t>(n_));
+      for (ElementId k = 0; k < n_; ++k) index.keys[static_cast<std::size_t>(k)] = key_of(cells_.cell(k));
+      std::stable_sort(index.ids.begin(), index.ids.end(), [&](ElementId a, ElementId b) {
+        return index.keys[static_cast<std::size_t>(a)] < index.keys[static_cast<std::size_t>(b)];
+      });
+      std::vector<std::array<std::int32_t, 3>> sorted(index.ids.size());
+      for (std::size_t i = 0; i < sorted.size(); ++i) sorted[i] = index.keys[static_cast<std::size_t>(index.ids[i])];
+      index.keys = std::move(sorted);
+    }
+    const auto [lo, hi] = std::equal_range(index.keys.begin(), index.keys.end(), key_of(scope));
+    return std::span<const ElementId>(index.ids).subspan(static_cast<std::size_t>(lo - index.keys.begin()),
+                                                          static_cast<std::size_t>(hi - lo));
   }
 
   // ---- sort ----
@@ -434,6 +466,12 @@ class Checker {
   std::vector<std::int32_t> next_;   // a sparse family's next entries, kUnset elsewhere
   std::vector<std::int32_t> entry_;  // where in next_pairs each was given
   std::vector<ElementId> touched_;   // elements whose owner_ to reset
+  struct Index {
+    std::vector<ElementId> ids;                       // element ids by key
+    std::vector<std::array<std::int32_t, 3>> keys;    // their keys, sorted
+  };
+  std::vector<ElementId> all_;
+  Index index_[8];                   // by the axes a scope fixes (bit a: axis a)
   std::vector<bool> cut_;            // per list of the family: its walk stopped at a problem
   ArraysVerdict out_;
 };
