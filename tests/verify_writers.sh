@@ -6,8 +6,7 @@
 #                    `nbscope dump` (tests/compare_arrays.py); the bug build must differ from the
 #                    dump in exactly the entries its bug touches.
 #            verify: `nbscope verify` must pass the writer's arrays (exit 0) and fail the bug
-#                    build's (exit 1), naming the entry the bug wrote. Exits 77 (skipped) while
-#                    this nbscope has no verify command.
+#                    build's (exit 1), naming the entry the bug wrote.
 #     WHAT   c (screen, docs/verify/write_arrays.c), fortran (nbs y-lists, write_arrays.F90),
 #            examples (assets/examples/nine_*_bug*.json; no compiler)
 # Everything it writes goes to OUT_DIR.
@@ -55,11 +54,6 @@ build_and_run() {
   "$out/$name" >"$out/$name.json" || fail "$name exited $?"
 }
 
-# Only this exact refusal skips: once the command exists, any other failure fails the test.
-if [ "$stage" = verify ] && [[ "$("$nbscope" verify 2>&1 || true)" == *"verify: unknown command"* ]]; then
-  echo "SKIP: this nbscope has no verify command yet"
-  exit 77
-fi
 
 case $what in
   c)
