@@ -175,7 +175,18 @@ TEST_F(CheckerTest, MalformedPairsAreFlaggedNotTrusted) {
   const FrameReport r = run(PairList{{0, 1}, {0, 1}, {0, 4}, {1, 2}, {2, 2}, {3, 99}}, cells_);
   EXPECT_EQ(r.broken[static_cast<int>(Invariant::AEqualsR)], 3);
   EXPECT_EQ(r.counts.a, 3);
-  for (const Violation& v : r.violations) EXPECT_STREQ(v.what, "invalid pair in A (not 0 <= i < j < N, out of order or twice)");
+  // Each is named for what is wrong with it, so that a user's planted bug reads as that bug.
+  ASSERT_EQ(r.violations.size(), 3u);
+  EXPECT_EQ(r.violations[0].pair, (Pair{0, 1}));
+  EXPECT_STREQ(r.violations[0].what, "given twice in A");
+  EXPECT_EQ(r.violations[1].pair, (Pair{2, 2}));
+  EXPECT_STREQ(r.violations[1].what, "an element paired with itself in A");
+  EXPECT_EQ(r.violations[2].pair, (Pair{3, 99}));
+  EXPECT_STREQ(r.violations[2].what, "not an element of this frame (i or j outside 0..N-1)");
+  const FrameReport unsorted = run(PairList{{1, 2}, {0, 1}}, cells_);
+  ASSERT_FALSE(unsorted.violations.empty());
+  EXPECT_EQ(unsorted.violations[0].pair, (Pair{0, 1}));
+  EXPECT_STREQ(unsorted.violations[0].what, "out of order in A (not i < j, or not sorted)");
 }
 
 TEST_F(CheckerTest, SeveralAlgorithmsShareOneFrame) {

@@ -174,5 +174,110 @@ TEST(Recording, BadInputIsNamedByLine) {
   }
 }
 
+// ---- pairs blocks: the simulation's own contact pairs of each frame -------------------------------
+
+TEST(RecordingPairs, BlocksAreReadAsGivenAndZeroBased) {
+  const Recording rec = parse_recording(
+      "nbsrec 1\nframe 0 0\n0,0,1\n1,0,1\n2,0,1\npairs\n0,1\n2,1   # either order\n1,1\n0,1\n"
+      "frame 1 0.1\n0,0,1\npairs\nframe 2 0.2\n0,0,1\n5,0,1\npairs # no contact\n",
+      "p.nbsrec");
+  ASSERT_TRUE(rec.has_pairs);
+  EXPECT_EQ(rec.pair_base, 0);
+  ASSERT_EQ(rec.frames.size(), 3u);
+  EXPECT_EQ(rec.frames[0].elements.size(), 3);
+  // Kept exactly as written: the order within a pair, i == j and a repeat are for the check to report.
+  EXPECT_EQ(rec.frames[0].pairs, (PairList{{0, 1}, {2, 1}, {1, 1}, {0, 1}}));
+  EXPECT_TRUE(rec.frames[1].pairs.empty()) << "an empty block is a frame without contacts";
+  EXPECT_TRUE(rec.frames[2].pairs.empty());
+  EXPECT_EQ(rec.frames[2].elements.size(), 2) << "rows before the block are the frame's elements";
+}
+
+TEST(RecordingPairs, BaseOneNumbersFromOne) {
+  const Recording rec = parse_recording("nbsrec 1\nbase 1\nframe 4 0\n0,0,1\n1,0,1\n2,0,1\npairs\n1,2\n3,2\n", "f.nbsrec");
+  ASSERT_TRUE(rec.has_pairs);
+  EXPECT_EQ(rec.pair_base, 1);
+  EXPECT_EQ(rec.frames[0].pairs, (PairList{{0, 1}, {2, 1}}));
+  EXPECT_EQ(parse_recording("nbsrec 1\nbase 0\nframe 0 0\n0,0,1\npairs\n0,0\n", "z").frames[0].pairs, (PairList{{0, 0}}));
+}
+
+TEST(RecordingPairs, NoBlocksMeansNoPairs) {
+  const Recording rec = parse_recording("nbsrec 1\nbase 1\nframe 0 0\n0,0,1\n1,0,1\nframe 1 0\n0,0,1\n", "n.nbsrec");
+  EXPECT_FALSE(rec.has_pairs);
+  for (const RecordedFrame& f : rec.frames) EXPECT_TRUE(f.pairs.empty());
+}
+
+TEST(RecordingPairs, FramesLimitStopsBeforeAFrameThatWouldBreakAllOrNone) {
+  const std::string text = "nbsrec 1\nframe 0 0\n0,0,1\npairs\nframe 1 0\n0,0,1\npairs\nframe 2 0\n0,0,1\n";
+  EXPECT_EQ(parse_recording(text, "m", 2).frames.size(), 2u) << "frame 2, not read, is not held against the rest";
+  EXPECT_THROW(parse_recording(text, "m"), Error);
+}
+
+TEST(RecordingPairs, WriterRoundTripsPairsAndRefusesWhatTheReaderWould) {
+  const std::string dir = temp_dir("pairs");
+  const std::string path = dir + "/p.nbsrec";
+  const Elements e = awkward_elements(5, 4);
+  const PairList given{{3, 0}, {1, 1}, {0, 3}, {2, 3}};
+  const PairList none;
+  {
+    RecordingWriter w(path, {}, "pairs");
+    w.write_frame(0, 0, e, &given);
+    w.write_frame(1, 0.5, e, &none);
+    EXPECT_THROW(w.write_frame(2, 1, e), Error) << "a frame without pairs after one with";
+    const PairList out_of_range{{0, 4}};
+    EXPECT_THROW(w.write_frame(2, 1, e, &out_of_range), Error);
+    w.commit();
+  }
+  const Recording rec = read_recording(path);
+  ASSERT_TRUE(rec.has_pairs);
+  ASSERT_EQ(rec.frames.size(), 2u);
+  EXPECT_EQ(rec.frames[0].pairs, given);
+  EXPECT_TRUE(rec.frames[1].pairs.empty());
+  {
+    RecordingWriter w(dir + "/q.nbsrec", {}, "");
+    w.write_frame(0, 0, e);
+    EXPECT_THROW(w.write_frame(1, 0, e, &given), Error) << "pairs after a frame without";
+  }
+  fs::remove_all(dir);
+}
+
+TEST(RecordingPairs, BadPairsInputIsNamedByLine) {
+  const std::string nine = "0,0,1\n1,0,1\n2,0,1\n3,0,1\n4,0,1\n5,0,1\n6,0,1\n7,0,1\n8,0,1\n";
+  const std::string two = "nbsrec 1\nframe 0 0\n0,0,1\n1,0,1\n";  // a frame of two elements, rows on lines 3-4
+  struct Case {
+    std::string text, expected;
+  };
+  const Case cases[] = {
+      {"nbsrec 1\npairs\nframe 0 0\n", "bad.nbsrec:2: a 'pairs' line before the first 'frame NUMBER TIME' line"},
+      {two + "pairs\n0,1\npairs\n", "bad.nbsrec:7: a second 'pairs' line in frame 0 (one pairs block a frame)"},
+      {two + "pairs 1\n", "bad.nbsrec:5: expected 'pairs' alone on its line, got 'pairs 1'"},
+      {two + "pairs\n0,1\n2,0,1\n", "bad.nbsrec:7: an element row after frame 0's 'pairs' line (a frame's element rows come before its pairs)"},
+      {two + "pairs\n1\n", "bad.nbsrec:6: pair row '1': expected i,j (two integers)"},
+      {two + "pairs\n0,1,\n", "bad.nbsrec:6: an element row after frame 0's 'pairs' line"},
+      {two + "pairs\n0,x\n", "bad.nbsrec:6: pair row '0,x': 'x' is not an integer"},
+      {two + "pairs\n1.0,0\n", "bad.nbsrec:6: pair row '1.0,0': '1.0' is not an integer"},
+      {two + "pairs\n,1\n", "bad.nbsrec:6: pair row ',1': '' is not an integer"},
+      {two + "pairs\n0,2\n", "bad.nbsrec:6: pair 0,2: frame 0 has 2 elements (0..1)"},
+      {two + "pairs\n-1,0\n", "bad.nbsrec:6: pair -1,0: frame 0 has 2 elements (0..1)"},
+      {two + "pairs\n0,99999999999999999999\n", "bad.nbsrec:6: pair 0,99999999999999999999: frame 0 has 2 elements (0..1)"},
+      {"nbsrec 1\nframe 0 0\npairs\n0,0\n", "bad.nbsrec:4: pair 0,0: frame 0 has 0 elements"},
+      {"nbsrec 1\nbase 1\nframe 4 0\n" + nine + "pairs\n3,12\n", "bad.nbsrec:14: pair 3,12: frame 4 has 9 elements (1..9)"},
+      {"nbsrec 1\nbase 1\nframe 4 0\n" + nine + "pairs\n0,1\n", "bad.nbsrec:14: pair 0,1: frame 4 has 9 elements (1..9)"},
+      {"nbsrec 1\nbase 2\n", "bad.nbsrec:2: base: '2': pairs number elements from 0 ('base 0', the default) or 1 ('base 1')"},
+      {"nbsrec 1\nbase\n", "bad.nbsrec:2: base: expected 'base 0|1'"},
+      {two + "base 1\n", "bad.nbsrec:5: base: header lines come before the first frame"},
+      {two + "1,0\n", "bad.nbsrec:5: 2 columns; expected 3 (x,y,r) (a pair i,j? pairs come after the frame's 'pairs' line)"},
+      // All or none, named at the frame line that breaks it.
+      {two + "pairs\n0,1\nframe 1 0\nframe 3 0\n0,0,1\npairs\n",
+       "bad.nbsrec:7: frame 1 has no pairs block, but frame 0 has one: give every frame its pairs, or none"},
+      {two + "pairs\n0,1\nframe 1 0\npairs\nframe 3 0\n0,0,1\n",
+       "bad.nbsrec:9: frame 3 has no pairs block, but frame 0 has one: give every frame its pairs, or none"},
+      {two + "frame 2 0\n0,0,1\npairs\n", "bad.nbsrec:5: frame 2 has a pairs block, but frame 0 has none: give every frame its pairs, or none"},
+  };
+  for (const Case& c : cases) {
+    const std::string message = error_of(c.text);
+    EXPECT_EQ(message.rfind(c.expected, 0), 0u) << "input:\n" << c.text << "\ngot: " << message << "\nexpected: " << c.expected;
+  }
+}
+
 }  // namespace
 }  // namespace nbscope

@@ -64,5 +64,94 @@ TEST(ReplayFrameLoop, ASceneReplacesTheRecording) {
   EXPECT_FALSE(loop.at_end());
 }
 
+// ---- `recorded`: the recording's own pairs (app/recorded_pairs.hpp) ------------------------------
+
+// Frames 3, 4, 9 of three_frames() with their contact pairs; frame 4's are wrong (a pair of elements
+// that do not touch, and element 1 paired with itself).
+Recording three_frames_with_pairs() {
+  return parse_recording(
+      "nbsrec 1\nframe 3 0.5\n0,0,1\n1.5,0,1\n5,5,1\npairs\n1,0\nframe 4 0.75\n0,0,1\n3,0,1\npairs\n0,1\n1,1\n"
+      "frame 9 0.75\n0,0,1\n0.5,0,1\n1,0,1\npairs\n0,1\n0,2\n1,2\n",
+      "three.nbsrec");
+}
+
+TEST(ReplayFrameLoopRecorded, ChecksEachFramesOwnPairsAndGoesBackToTheBadOne) {
+  FrameLoopOptions o;
+  o.algorithm = "recorded";
+  FrameLoop loop(o);
+  loop.load_recording(three_frames_with_pairs());
+  EXPECT_TRUE(loop.carries_pairs());
+  EXPECT_EQ(loop.pairs(), (PairList{{0, 1}})) << "1,0 normalised";
+  EXPECT_TRUE(loop.report().ok());
+  loop.step();
+  EXPECT_EQ(loop.frame(), 4);
+  EXPECT_FALSE(loop.report().ok());
+  ASSERT_EQ(loop.report().violations.size(), 2u);
+  loop.step();
+  EXPECT_EQ(loop.frame(), 9);
+  EXPECT_TRUE(loop.report().ok());
+  // Go to the violation (as the Violations panel does): frame 4 and its own pairs again.
+  ASSERT_EQ(loop.violation_log().listed().size(), 2u);
+  const Violation v = loop.violation_log().listed().front();
+  EXPECT_EQ(v.frame, 4);
+  loop.show_frame(v.frame);
+  EXPECT_EQ(loop.frame(), 4);
+  EXPECT_EQ(loop.pairs(), (PairList{{0, 1}, {1, 1}}));
+  ASSERT_EQ(loop.report().violations.size(), 2u);
+  EXPECT_STREQ(loop.report().violations[0].what, "an element paired with itself in the recorded pairs");
+  EXPECT_EQ(loop.report().violations[0].pair, (Pair{1, 1}));
+  EXPECT_STREQ(loop.report().violations[1].what, "in the recorded pairs but not in contact (not in R)");
+  EXPECT_EQ(loop.report().violations[1].pair, (Pair{0, 1}));
+  // Nothing to step through or draw as lists: said, not broken.
+  const auto trace = loop.frame_trace();
+  ASSERT_NE(trace, nullptr);
+  EXPECT_TRUE(trace->log.events().empty());
+  EXPECT_NE(trace->refusal.find("read from the file, not detected here"), std::string::npos) << trace->refusal;
+}
+
+TEST(ReplayFrameLoopRecorded, IsRefusedWhereThereAreNoPairsAndTheOldStateStays) {
+  FrameLoop loop;
+  loop.load_recording(three_frames());  // no pairs blocks
+  EXPECT_FALSE(loop.carries_pairs());
+  EXPECT_THROW(loop.set_algorithm("recorded"), Error);
+  EXPECT_EQ(loop.algorithm(), "nbs");
+  EXPECT_THROW(loop.set_comparison_algorithms({"recorded"}), Error);
+  EXPECT_TRUE(loop.comparison_algorithms().empty());
+
+  loop.load_recording(three_frames_with_pairs());
+  loop.set_algorithm("recorded");
+  EXPECT_THROW(loop.load_recording(three_frames()), Error) << "the recording without pairs is refused";
+  EXPECT_TRUE(loop.carries_pairs()) << "the old recording stays";
+  EXPECT_THROW(loop.load_scene_file(std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/book-fig-3-15.json"), Error);
+  EXPECT_TRUE(loop.replaying()) << "a scene has no pairs for recorded";
+
+  FrameLoopOptions o;
+  o.algorithm = "recorded";
+  FrameLoop scene_loop(o);
+  EXPECT_THROW(scene_loop.load_scene_file(std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/book-fig-3-15.json"), Error);
+  EXPECT_FALSE(scene_loop.has_scene());
+}
+
+TEST(ReplayFrameLoopRecorded, OnlyTheFaultThatActsOnThePairsIsTaken) {
+  FrameLoopOptions o;
+  o.algorithm = "recorded";
+  FrameLoop loop(o);
+  loop.load_recording(three_frames_with_pairs());
+  for (const Fault f : {Fault::StalePositions, Fault::DropMaskCell, Fault::OffByOneCell, Fault::DropBox2dContact}) {
+    EXPECT_THROW(loop.set_fault(f), Error) << fault_name(f);
+    EXPECT_EQ(loop.fault(), Fault::None);
+  }
+  loop.set_fault(Fault::DropPair);
+  EXPECT_TRUE(loop.pairs().empty()) << "frame 3's only pair dropped";
+  EXPECT_FALSE(loop.report().ok());
+  loop.set_fault(Fault::None);
+  loop.set_algorithm("nbs");
+  loop.set_fault(Fault::StalePositions);  // a detector takes it
+  EXPECT_THROW(loop.set_algorithm("recorded"), Error);
+  EXPECT_EQ(loop.algorithm(), "nbs");
+  o.fault = Fault::OffByOneCell;
+  EXPECT_THROW(FrameLoop{o}, Error);
+}
+
 }  // namespace
 }  // namespace nbscope

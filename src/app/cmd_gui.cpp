@@ -16,6 +16,7 @@
 #include "app/gl_view.hpp"
 #include "app/headless.hpp"
 #include "app/headless_view.hpp"
+#include "app/recorded_pairs.hpp"
 #include "app/replay.hpp"
 #include "app/view_options.hpp"
 #include "check/faults.hpp"
@@ -422,11 +423,15 @@ int run_replay_window(const HeadlessOptions& o) {
   loop_options.brute_limit = o.brute_limit;
   FrameLoop loop(loop_options);
   loop.load_recording_file(*o.replay, o.frames);
+  // No --algorithm: a recording that carries the user's pairs opens on them (headless does the same).
+  if (o.algorithm_from_recording && loop.carries_pairs()) loop.set_algorithm(kRecordedAlgorithm);
   check_step_algorithm(o.view, loop.algorithm());
   GuiOptions g;
-  g.algorithm = o.algorithm;
+  g.algorithm = loop.algorithm();
   g.fault = o.fault;
   g.view = o.view;
+  // Ids shown as the recording's own pairs count them (Book numbering in the View menu turns it off).
+  g.view.book_numbering = g.view.book_numbering || (loop.carries_pairs() && loop.pair_base() == 1);
   // With a screenshot: play to the last recorded frame, save it, exit (scripted, as gui --frames).
   if (o.view.screenshot) g.frames = loop.recorded_frames() - 1;
   Session session;

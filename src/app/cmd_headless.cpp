@@ -17,6 +17,7 @@
 #include "app/headless.hpp"
 #include "app/headless_view.hpp"
 #include "app/help.hpp"
+#include "app/recorded_pairs.hpp"
 #include "app/scaling_flags.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -95,6 +96,19 @@ std::string broken_text(const AlgorithmRun& run, std::int64_t& total, std::int64
   return s;
 }
 
+// ": A==R (2, 11) given twice in the recorded pairs" for the first violation `run` lists; a
+// recording whose pairs count from 1 also gets the pair as its file numbers it.
+std::string first_violation_text(const AlgorithmRun& run, int pair_base) {
+  for (const FrameReport& f : run.frames) {
+    if (f.violations.empty()) continue;
+    const Violation& v = f.violations.front();
+    std::string pair = std::to_string(v.pair.i) + ", " + std::to_string(v.pair.j);
+    if (pair_base != 0) pair += "; the file's " + std::to_string(v.pair.i + pair_base) + "," + std::to_string(v.pair.j + pair_base);
+    return std::string(": ") + invariant_name(v.invariant) + " (" + pair + ") " + v.what;
+  }
+  return "";
+}
+
 double mean_ms(const AlgorithmRun& run, double FrameTimings::*field) {
   double total = 0;
   for (const FrameReport& f : run.frames) total += f.timings.*field;
@@ -122,7 +136,8 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
     const std::string broken = broken_text(run, total, bad_frames, first);
     if (total == 0) continue;
     failures += (failures.empty() ? "" : "; ") + (report.runs.size() > 1 ? run.algorithm + ": " : std::string()) + plural(total, "violation") +
-                " in " + plural(bad_frames, "frame") + " (" + broken + "), first in frame " + std::to_string(first);
+                " in " + plural(bad_frames, "frame") + " (" + broken + "), first in frame " + std::to_string(first) +
+                first_violation_text(run, loop.carries_pairs() ? loop.pair_base() : 0);
   }
   const std::string every = report.runs.size() > 1 ? " for every algorithm" : "";
   if (failures.empty() && loop.replaying()) {
@@ -178,8 +193,9 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
 
 // The detectors `--algorithm` names: one, a comma-separated list, or "all" (every 2D detector,
 // nbs first as the one shown and summarised first; brute only while brute force is the reference
-// anyway). Sets `note` when brute is left out.
-std::vector<std::string> algorithms_of(const std::string& text, std::int64_t elements, std::int64_t brute_limit, std::string& note) {
+// anyway; last `recorded` when `with_recorded`, a recording carrying pairs). Sets `note` when brute is left out.
+std::vector<std::string> algorithms_of(const std::string& text, std::int64_t elements, std::int64_t brute_limit, std::string& note,
+                                       bool with_recorded) {
   std::vector<std::string> names;
   if (text == "all") {
     for (const DetectorInfo& d : detector_infos()) {
@@ -191,6 +207,7 @@ std::vector<std::string> algorithms_of(const std::string& text, std::int64_t ele
       names.push_back(d.name);
     }
     if (const auto nbs = std::find(names.begin(), names.end(), "nbs"); nbs != names.end()) std::rotate(names.begin(), nbs, nbs + 1);
+    if (with_recorded) names.emplace_back(kRecordedAlgorithm);
     return names;
   }
   return split_names("--algorithm", text);
@@ -297,6 +314,9 @@ HeadlessOptions parse_headless_options(Args& args) {
   }
   args.finish();
   if (!scene) throw Error("headless: --scene FILE is required");
+  for (const std::string& name : split_names("--algorithm", o.algorithm))
+    if (name == kRecordedAlgorithm)
+      throw Error("--algorithm recorded: the pairs a recording carries (nbscope replay FILE.nbsrec); a scene has none");
   if (o.scaling) check_headless_scaling(*o.scaling, o.view);
   o.scene = *scene;
   if (o.rewind && o.rewind->from > o.frames)
@@ -335,7 +355,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   check_step_algorithm(o.view, o.algorithm);  // before any frame runs
   check_stop_at_violation(o);
   std::string note;
-  std::vector<std::string> names = algorithms_of(o.algorithm, 0, o.brute_limit, note);
+  std::vector<std::string> names = algorithms_of(o.algorithm, 0, o.brute_limit, note, false);
   FrameLoopOptions lo;
   lo.algorithm = o.algorithm == "all" ? "nbs" : names.front();
   lo.fault = o.fault;
@@ -345,19 +365,30 @@ int run_headless_loop(const HeadlessOptions& o) {
   const bool keep = o.rewind || o.view.screenshot || o.back > 0 || o.violation > 0;
   lo.history_budget = static_cast<std::size_t>(o.history_mb.value_or(keep ? 256 : 0)) << 20;
   FrameLoop loop(lo);  // an unknown algorithm fails here, before the scene is read
-  for (const std::string& name : names) make_detector(name);
+  for (const std::string& name : names)
+    if (name != kRecordedAlgorithm) make_detector(name);
   if (o.replay) loop.load_recording_file(*o.replay, o.frames);
   else loop.load_scene_file(o.scene);
   if (o.algorithm == "all") {
-    names = algorithms_of(o.algorithm, loop.elements().size(), o.brute_limit, note);
+    names = algorithms_of(o.algorithm, loop.elements().size(), o.brute_limit, note, loop.carries_pairs());
+    loop.set_algorithm(names.front());
+  } else if (o.algorithm_from_recording && loop.carries_pairs()) {
+    // No --algorithm: a recording that carries the user's pairs is replayed to check them.
+    names = {std::string(kRecordedAlgorithm)};
+    check_step_algorithm(o.view, names.front());
     loop.set_algorithm(names.front());
   }
+  if (loop.carries_pairs() && loop.pair_base() != 0)
+    note += (note.empty() ? "" : "; ") + std::string("element ids are 0-based rows here; the recording numbers its pairs from ") +
+            std::to_string(loop.pair_base());
   loop.set_comparison_algorithms(std::vector<std::string>(names.begin() + 1, names.end()));
   if (o.stop_at_violation && nothing_to_check(loop))
     throw Error("--stop-at-violation: " + (o.replay ? *o.replay : o.scene) +
                 " has no elements in any frame (and nothing adds any): there is nothing to check");
   // The screenshot's context and shaders are set up first, so a bad --gl/--shader-dir/path fails at once.
   ViewOptions view_options = o.view;
+  // Ids drawn as the recording's own pairs count them (the window does the same).
+  view_options.book_numbering = view_options.book_numbering || (loop.carries_pairs() && loop.pair_base() == 1);
   if (o.scaling) view_options.scaling = scaling_to_show(*o.scaling, o.scaling_plan, !o.quiet && ::isatty(STDERR_FILENO) == 1);
   std::unique_ptr<HeadlessView> view = o.view.screenshot ? make_headless_view(view_options, loop) : nullptr;
 

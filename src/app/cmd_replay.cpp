@@ -14,7 +14,9 @@ int run_replay(Args& args) {
   HeadlessOptions o;
   const bool headless = args.flag("--headless");
   o.frames = args.integer("--frames", 1, std::numeric_limits<std::int64_t>::max()).value_or(std::numeric_limits<std::int64_t>::max());
-  o.algorithm = args.value("--algorithm").value_or(o.algorithm);
+  const auto algorithm = args.value("--algorithm");
+  o.algorithm = algorithm.value_or(o.algorithm);
+  o.algorithm_from_recording = !algorithm;  // recorded when the file carries pairs, else nbs
   o.report = args.value("--report");
   if (const auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);
   o.brute_limit = args.integer("--brute-limit", 0, 1'000'000).value_or(o.brute_limit);

@@ -38,12 +38,19 @@ bool FrameLoop::replaying() const { return impl_->recording != nullptr; }
 std::int64_t FrameLoop::recorded_frames() const {
   return impl_->recording ? static_cast<std::int64_t>(impl_->recording->frames.size()) : 0;
 }
+bool FrameLoop::carries_pairs() const { return impl_->recording && impl_->recording->has_pairs; }
+int FrameLoop::pair_base() const { return impl_->recording ? impl_->recording->pair_base : 0; }
 bool FrameLoop::at_end() const { return impl_->recording && impl_->recorded + 1 >= impl_->recording->frames.size(); }
 
 // ---- configuration -------------------------------------------------------------------------
 
 void FrameLoop::set_algorithm(std::string_view name) {
   Lane fresh(name);
+  if (fresh.recorded_pairs) {
+    // Refused here, not on the next frame: the old algorithm stays.
+    check_recorded_fault(impl_->options.fault);
+    if (impl_->loaded()) Impl::check_recorded_source(true, impl_->recording.get(), impl_->scene.path);
+  }
   fresh.report = impl_->main.report;
   impl_->main = std::move(fresh);
   impl_->options.algorithm = std::string(name);
@@ -52,6 +59,7 @@ void FrameLoop::set_algorithm(std::string_view name) {
 const std::string& FrameLoop::algorithm() const { return impl_->options.algorithm; }
 
 void FrameLoop::set_fault(Fault fault) {
+  if (impl_->has_recorded_lane()) check_recorded_fault(fault);
   impl_->options.fault = fault;
   redetect();
 }
@@ -67,7 +75,13 @@ std::string FrameLoop::scope_note() { return FrameChecker::scope_note(); }
 
 void FrameLoop::set_comparison_algorithms(const std::vector<std::string>& names) {
   std::vector<Lane> lanes;
-  for (const std::string& name : names) lanes.emplace_back(name);
+  for (const std::string& name : names) {
+    lanes.emplace_back(name);
+    if (lanes.back().recorded_pairs) {
+      check_recorded_fault(impl_->options.fault);
+      if (impl_->loaded()) Impl::check_recorded_source(true, impl_->recording.get(), impl_->scene.path);
+    }
+  }
   impl_->others = std::move(lanes);
   impl_->other_names = names;
   impl_->other_reports.clear();
@@ -161,6 +175,12 @@ const Detector& FrameLoop::detector() const { return *impl_->main.detector; }
 std::shared_ptr<const FrameTrace> FrameLoop::frame_trace() {
   Impl& m = *impl_;
   if (!m.loaded()) return nullptr;
+  if (!m.trace && m.main.recorded_pairs) {
+    // Read, not detected: nothing to step through, said in the panels' words.
+    auto none = std::make_shared<FrameTrace>(refused_trace(m.frame_number(), m.main.detector->name()));
+    none->refusal = recorded_trace_refusal();
+    m.trace = std::move(none);
+  }
   if (!m.trace) {
     try {
       m.trace = trace_frame(*m.main.detector, m.detector_input(), m.detect_options, m.frame_number(), grid());

@@ -19,7 +19,9 @@
 // Box2D: render and ui include this header only.
 //
 // Errors: load_scene_file() throws Error "file:line: field: what" and keeps the previous scene;
-// set_algorithm() throws Error for an unknown or 3D-only name and keeps the previous one; step()
+// set_algorithm() throws Error for an unknown or 3D-only name and keeps the previous one; `recorded`
+// (the recording's own pairs) is refused with a scene, a recording without pairs, and the faults
+// that act on detection's input (app/recorded_pairs.hpp: check_recorded_fault), wherever it comes in; step()
 // and redetect() throw Error when detection refuses the frame (pair limit, a grid too large), with
 // the frame number in the message; so does any call that adopts a step begun by begin_step()
 // (show_frame, the drags, a configuration change). The window should show these and stay open.
@@ -47,7 +49,7 @@
 namespace nbscope {
 
 struct FrameLoopOptions {
-  std::string algorithm = "nbs";  // registry name (core/detector.hpp)
+  std::string algorithm = "nbs";  // registry name (core/detector.hpp), or "recorded" (app/recorded_pairs.hpp)
   Fault fault = Fault::None;
   bool checks = true;             // run the cross-check every frame
   std::int64_t brute_limit = 2000;  // R is brute force up to this many elements (CheckOptions)
@@ -88,11 +90,18 @@ class FrameLoop {
   [[nodiscard]] bool replaying() const;
   // The number of recorded frames (0 for a scene).
   [[nodiscard]] std::int64_t recorded_frames() const;
+  // True when the recording's frames carry the user's contact pairs (a `pairs` block each), which
+  // the algorithm `recorded` (app/recorded_pairs.hpp) returns; false for a scene.
+  [[nodiscard]] bool carries_pairs() const;
+  // The recording's `base`: its pairs number elements from 0 or 1 (0 for a scene). Element ids
+  // here stay 0-based rows either way.
+  [[nodiscard]] int pair_base() const;
   // True on a recording's last frame, where step() does nothing (always false for a scene).
   [[nodiscard]] bool at_end() const;
 
   // ---- configuration (each takes effect at once: the current frame is detected and checked again) ----
-  // Switches the detector; throws Error (old one kept) for an unknown or 3D-only name.
+  // Switches the detector; throws Error (old one kept) for an unknown or 3D-only name, or `recorded`
+  // where it has no pairs or the fault cannot act on them.
   void set_algorithm(std::string_view name);
   [[nodiscard]] const std::string& algorithm() const;
   void set_fault(Fault fault);

@@ -18,6 +18,7 @@
 
 #include "app/clock.hpp"
 #include "app/frame_loop.hpp"
+#include "app/recorded_pairs.hpp"
 #include "check/check.hpp"
 #include "core/error.hpp"
 #include "physics/kept_frame.hpp"
@@ -25,22 +26,18 @@
 
 namespace nbscope {
 
-// A detector of the registry that handles 2D; Error otherwise.
-inline std::unique_ptr<Detector> make_2d_detector(std::string_view name) {
-  auto d = make_detector(name);
-  if (!d->supports_dim(2)) throw Error("algorithm '" + std::string(name) + "' does not handle 2D scenes");
-  return d;
-}
-
 struct Lane {
   std::string name;
   std::unique_ptr<Detector> detector;
+  RecordedPairsDetector* recorded_pairs = nullptr;  // `detector` when it is the recording's own pairs (fed each frame)
   PairList pairs;
   Grid grid;
   std::vector<CellIndex> cells;
   FrameReport report;
 
-  explicit Lane(std::string_view algorithm) : name(algorithm), detector(make_2d_detector(algorithm)) {}
+  explicit Lane(std::string_view algorithm) : name(algorithm), detector(make_lane_detector(algorithm)) {
+    if (algorithm == kRecordedAlgorithm) recorded_pairs = static_cast<RecordedPairsDetector*>(detector.get());
+  }
 
   // Detection on `input` with the output side of `fault`; timed into report.timings.detection_ms.
   void detect(const Elements& input, const DetectOptions& options, Fault fault, const std::string& where) {
@@ -122,6 +119,7 @@ struct FrameLoop::Impl {
 
   explicit Impl(FrameLoopOptions o)
       : options(std::move(o)), main(options.algorithm), checker(CheckOptions{options.brute_limit}) {
+    if (main.recorded_pairs) check_recorded_fault(options.fault);
     history.set_budget(options.history_budget);
   }
   ~Impl() { wait_for_worker(); }
@@ -184,6 +182,8 @@ struct FrameLoop::Impl {
     const std::string where = scene.path + ": frame " + std::to_string(frame_number()) + ": ";
     const Elements& input = detector_input();
     trace.reset();  // made again on request, for this frame and detector
+    for (Lane* lane : lanes())
+      if (lane->recorded_pairs) lane->recorded_pairs->set_frame(recording ? &recording->frames[recorded] : nullptr);
     main.detect(input, detect_options, options.fault, where);
     for (Lane& lane : others) lane.detect(input, detect_options, options.fault, where);
 
@@ -208,6 +208,7 @@ struct FrameLoop::Impl {
         in.pairs = &lane->pairs;
         in.cells = &lane->cells;
         in.drop_box2d_contact = options.fault == Fault::DropBox2dContact;
+        in.recorded = lane->recorded_pairs != nullptr;
         checker.check(in, lane->report);
         if (lane == &main) main_reference = checker.reference_pairs();
         lane->report.timings.check_ms = ms_since(t0);
@@ -260,6 +261,21 @@ struct FrameLoop::Impl {
     if (r.checked) violations.set_frame(r);
   }
 
+  // True when a lane checks the recording's own pairs.
+  bool has_recorded_lane() const {
+    return main.recorded_pairs || std::any_of(others.begin(), others.end(), [](const Lane& l) { return l.recorded_pairs != nullptr; });
+  }
+  // Error unless `rec` (null: a scene) gives pairs to check for a `recorded` lane (`wanted`).
+  static void check_recorded_source(bool wanted, const Recording* rec, const std::string& path) {
+    if (!wanted) return;
+    if (rec == nullptr)
+      throw Error(std::string(kRecordedAlgorithm) + ": the pairs a recording carries (nbscope replay FILE.nbsrec); the scene " + path +
+                  " has none: choose a detector, e.g. nbs");
+    if (!rec->has_pairs)
+      throw Error(std::string(kRecordedAlgorithm) + ": " + rec->path +
+                  " carries no pairs (no frame has a 'pairs' block): choose a detector, e.g. --algorithm nbs");
+  }
+
   std::vector<Lane*> lanes() {
     std::vector<Lane*> all{&main};
     for (Lane& lane : others) all.push_back(&lane);
@@ -273,6 +289,7 @@ struct FrameLoop::Impl {
   }
 
   void build(const Scene& s) {
+    check_recorded_source(has_recorded_lane(), nullptr, s.path);
     DetectOptions opts;
     opts.grid = s.grid;
     // No Box2D call beside the worker's; if the new scene is refused, the step in flight stays pending.
@@ -358,6 +375,7 @@ struct FrameLoop::Impl {
 
   // Replays `rec` instead of a world: its grid pins as a scene's would, its name the file's stem.
   void build(std::shared_ptr<const Recording> rec) {
+    check_recorded_source(has_recorded_lane(), rec.get(), rec->path);
     discard_step();  // the world it steps goes
     DetectOptions opts;
     Scene s;

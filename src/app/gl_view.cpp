@@ -4,6 +4,7 @@
 #include "app/gl_view.hpp"
 
 #include "app/clock.hpp"
+#include "app/recorded_pairs.hpp"
 
 #include <imgui.h>
 
@@ -384,7 +385,9 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   sim.scene_name = loop.scene().name;
   sim.scene_files = session.scene_files;
   for (const DetectorInfo& d : detector_infos())
-    if (d.dim2) sim.algorithms.push_back(d.name);
+    if (d.dim2) sim.detectors.push_back(d.name);
+  sim.algorithms = sim.detectors;
+  if (loop.carries_pairs()) sim.algorithms.emplace_back(kRecordedAlgorithm);  // the recording's own pairs, last
   sim.algorithm = loop.algorithm();
   sim.error = session.error;
   sim.paused = session.paused;

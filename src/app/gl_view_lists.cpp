@@ -2,6 +2,7 @@
 // stand at the stepper's operation while it is mid-way), and what the overlay is told to highlight,
 // filter and say in the legend.
 #include "app/clock.hpp"
+#include "app/recorded_pairs.hpp"
 #include "app/gl_view.hpp"
 
 namespace nbscope {
@@ -72,7 +73,7 @@ void GlView::describe_lists(const FrameLoop& loop, const std::shared_ptr<const F
   if (!state_.overlays.lists) return;
   auto& caption = scene.lists_caption;
   if (!trace || lists_.empty()) {
-    const bool has_lists = detector_info(loop.algorithm()).has_lists;
+    const bool has_lists = algorithm_info(loop.algorithm()).has_lists;
     const std::string why = trace && !trace->refusal.empty() ? trace->refusal
                             : !has_lists && !stepping ? "it keeps no heads or next arrays, only its tests"
                                                       : "";

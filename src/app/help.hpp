@@ -111,11 +111,17 @@ usage:
       frame, the Violations panel, the stepper on any frame) when there is a display and no
       --headless. No Box2D world: only
       A==R is checked; A-in-F, T-in-A, AABB-in-cells are reported as not checked, and the faults
-      are drop-pair, drop-mask-cell, off-by-one-cell, stale-positions. The format (text):
+      are drop-pair, drop-mask-cell, off-by-one-cell, stale-positions. When the frames carry your
+      simulation's pairs, --algorithm recorded checks them (the default then; nbs,recorded
+      compares; all adds recorded last): a missing, extra, repeated or i == j pair fails (exit 1),
+      named with its frame; of the faults only drop-pair acts on them. The format (text):
         nbsrec 1                 first line; '#' comments and blank lines anywhere
         cell_size D | origin X,Y | cells NX,NY    optional, before the first frame: pin the grid
+        base 1                   optional, before the first frame: pairs count elements from 1
         frame NUMBER TIME        NUMBER increasing, TIME (seconds) non-decreasing
         x,y,r                    one element a line, as ELEMENTS.csv (2D only)
+        pairs                    optional, after the rows: then one contact pair a line, i,j
+                                 (every frame has a pairs block, or none)
   rendering flags (gui, headless and replay):
       --overlays SPEC   comma list: all, none, NAME (only the names listed), +NAME, -NAME; names:
                         bodies elements grid lists mask pairs checks broadphase ids trails flash

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "app/recorded_pairs.hpp"
 #include "core/detector.hpp"
 #include "core/error.hpp"
 
@@ -39,7 +40,7 @@ void check_step_algorithm(const ViewOptions& options, const std::string& algorit
   if (!options.step) return;
   if (algorithm == "all" || algorithm.find(',') != std::string::npos)
     throw Error("--step: steps through one algorithm's detection, but --algorithm " + algorithm + " names several: give one");
-  if (detector_info(algorithm).traces) return;
+  if (algorithm_info(algorithm).traces) return;
   std::string stepped;
   for (const DetectorInfo& d : detector_infos())
     if (d.dim2 && d.traces) stepped += (stepped.empty() ? "" : ", ") + d.name;

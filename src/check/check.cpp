@@ -178,18 +178,30 @@ void FrameChecker::check(const CheckInput& in, FrameReport& out) {
       out.violations.push_back({frame, inv, p, cell_of(p.i), cell_of(p.j), what});
   };
 
-  // A itself must be well formed before any set algebra: 0 <= i < j < n, each pair once. A correct
-  // A is used as it is; otherwise the well-formed pairs are copied.
-  const auto valid = [n](const Pair& p, const Pair* before) {
-    return !(p.i < 0 || p.j >= n || p.i >= p.j || (before != nullptr && !(*before < p)));
+  // A itself must be well formed before any set algebra: 0 <= i < j < n, each pair once, sorted. A
+  // correct A is used as it is; otherwise the well-formed pairs are copied and each other one is
+  // reported for what is wrong with it (a recording's own pairs are the user's: their words say so).
+  const auto fault_of = [n](const Pair& p, const Pair* before) -> int {
+    if (p.i < 0 || p.j < 0 || p.i >= n || p.j >= n) return 1;
+    if (p.i == p.j) return 2;
+    if (p.i > p.j) return 3;
+    if (before != nullptr && !(*before < p)) return *before == p ? 4 : 3;
+    return 0;
   };
+  static constexpr const char* kDetectorWhat[] = {"", "not an element of this frame (i or j outside 0..N-1)",
+                                                  "an element paired with itself in A", "out of order in A (not i < j, or not sorted)",
+                                                  "given twice in A"};
+  static constexpr const char* kRecordedWhat[] = {"", "not an element of this frame (i or j outside 0..N-1)",
+                                                  "an element paired with itself in the recorded pairs",
+                                                  "out of order in the recorded pairs (not sorted)", "given twice in the recorded pairs"};
+  const char* const* what_of = in.recorded ? kRecordedWhat : kDetectorWhat;
   const PairList* a_pairs = in.pairs;
   for (std::size_t k = 0; k < in.pairs->size(); ++k) {
-    if (valid((*in.pairs)[k], k > 0 ? &(*in.pairs)[k - 1] : nullptr)) continue;
+    if (fault_of((*in.pairs)[k], k > 0 ? &(*in.pairs)[k - 1] : nullptr) == 0) continue;
     a_valid_.clear();
     for (const Pair& p : *in.pairs) {
-      if (!valid(p, a_valid_.empty() ? nullptr : &a_valid_.back())) {
-        report(Invariant::AEqualsR, p, "invalid pair in A (not 0 <= i < j < N, out of order or twice)");
+      if (const int fault = fault_of(p, a_valid_.empty() ? nullptr : &a_valid_.back()); fault != 0) {
+        report(Invariant::AEqualsR, p, what_of[fault]);
         continue;
       }
       a_valid_.push_back(p);
@@ -207,8 +219,10 @@ void FrameChecker::check(const CheckInput& in, FrameReport& out) {
   const PairList& r = frame_references_[r_].pairs;
   ms.r_ms += lap(t);
   out.counts.r = static_cast<std::int64_t>(r.size());
-  for_each_missing(r, a, [&](const Pair& p) { report(Invariant::AEqualsR, p, "missing from A (in R)"); });
-  for_each_missing(a, r, [&](const Pair& p) { report(Invariant::AEqualsR, p, "extra in A (not in R)"); });
+  const char* missing = in.recorded ? "in contact (in R) but missing from the recorded pairs" : "missing from A (in R)";
+  const char* extra = in.recorded ? "in the recorded pairs but not in contact (not in R)" : "extra in A (not in R)";
+  for_each_missing(r, a, [&](const Pair& p) { report(Invariant::AEqualsR, p, missing); });
+  for_each_missing(a, r, [&](const Pair& p) { report(Invariant::AEqualsR, p, extra); });
   invariant_ms(Invariant::AEqualsR) += lap(t);
 
   if (world_ == nullptr) return;  // recorded frames: the rest needs Box2D's world

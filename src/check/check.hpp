@@ -38,6 +38,7 @@ struct CheckInput {
   const PairList* pairs = nullptr;              // A, sorted
   const std::vector<CellIndex>* cells = nullptr;  // the detector's cell of every element
   bool drop_box2d_contact = false;              // the drop-box2d-contact fault (check/faults.hpp)
+  bool recorded = false;  // A is a recording's own pairs, not a detector's: violations of A say so in their words
 };
 
 class FrameChecker {

@@ -72,6 +72,48 @@ void finish_frame(RecordedFrame& frame, std::vector<double> (&cols)[3]) {
   for (auto& c : cols) c.clear();
 }
 
+// What the parser knows of the frame being read, for its pairs block.
+struct FrameState {
+  std::size_t line = 0;       // of its `frame` line: messages about the whole frame name it
+  bool has_pairs = false;     // its `pairs` line was seen: every data row after it is a pair
+};
+
+// "frame 3 has no pairs block, but frame 0 has one: ..." when `frame` disagrees with the first
+// frame (every frame has a pairs block, or none); `first_has` is the first frame's.
+void check_all_or_none(const Recording& rec, const FrameState& state, bool first_has, const std::string& where) {
+  if (rec.frames.size() < 2 || state.has_pairs == first_has) return;
+  const std::string at = where + ":" + std::to_string(state.line) + ": ";
+  const std::string number = std::to_string(rec.frames.back().number), first = std::to_string(rec.frames.front().number);
+  throw Error(at + "frame " + number + (state.has_pairs ? " has a pairs block, but frame " + first + " has none"
+                                                        : " has no pairs block, but frame " + first + " has one") +
+              ": give every frame its pairs, or none");
+}
+
+// One row `i,j` of frame `frame`'s pairs block, 0-based, into its pairs; Error (at) for anything
+// but two integers naming elements of the frame (`n` of them, numbered from `base`).
+void parse_pair_row(std::string_view line, const std::string& at, int base, std::int64_t n, RecordedFrame& frame) {
+  const std::vector<std::string_view> f = split_fields(line);
+  if (f.size() == 3 || f.size() == 4)
+    throw Error(at + "an element row after frame " + std::to_string(frame.number) +
+                "'s 'pairs' line (a frame's element rows come before its pairs)");
+  if (f.size() != 2) throw Error(at + "pair row '" + std::string(line) + "': expected i,j (two integers)");
+  const std::string text = std::string(f[0]) + "," + std::string(f[1]);
+  std::int64_t ij[2] = {0, 0};
+  for (int k = 0; k < 2; ++k) {
+    const std::string_view v = f[static_cast<std::size_t>(k)];
+    const auto [ptr, ec] = std::from_chars(v.data(), v.data() + v.size(), ij[k]);
+    if (v.empty() || ec == std::errc::invalid_argument || ptr != v.data() + v.size())
+      throw Error(at + "pair row '" + text + "': '" + std::string(v) + "' is not an integer");
+    // Too large for 64 bits is out of range like any other index the frame does not have.
+    if (ec == std::errc::result_out_of_range || ij[k] < base || ij[k] >= n + base)
+      throw Error(at + "pair " + text + ": frame " + std::to_string(frame.number) + " has " + plural(n, "element") +
+                  (n == 0 ? "" : " (" + std::to_string(base) + ".." + std::to_string(n - 1 + base) + ")"));
+  }
+  if (frame.pairs.size() >= kDefaultMaxPairs)
+    throw Error(at + "more than " + std::to_string(kDefaultMaxPairs) + " pairs in one frame");
+  frame.pairs.push_back({static_cast<ElementId>(ij[0] - base), static_cast<ElementId>(ij[1] - base)});
+}
+
 }  // namespace
 
 // ---- parse_recording ------------------------------------------------------------------------
@@ -83,6 +125,13 @@ Recording parse_recording(const std::string& text, const std::string& where, std
     throw Error(where + ":1: empty file (expected 'nbsrec 1', then frames)");
   bool seen_version = false;
   std::vector<double> cols[3];
+  FrameState state;  // of rec.frames.back()
+  // The frame being read is complete: its elements into place, its pairs block held to the first frame's.
+  const auto end_frame = [&] {
+    finish_frame(rec.frames.back(), cols);
+    if (rec.frames.size() == 1) rec.has_pairs = state.has_pairs;
+    check_all_or_none(rec, state, rec.has_pairs, where);
+  };
   std::size_t line_no = 0;
   std::size_t pos = 0;
   while (pos < text.size()) {
@@ -104,7 +153,7 @@ Recording parse_recording(const std::string& text, const std::string& where, std
       continue;
     }
     const bool in_header = rec.frames.empty();
-    if (key == "cell_size" || key == "origin" || key == "cells") {
+    if (key == "cell_size" || key == "origin" || key == "cells" || key == "base") {
       if (!in_header) throw Error(at + std::string(key) + ": header lines come before the first frame");
       if (key == "cell_size") {
         const double d = parse_finite_number(header_value(words, at, "cell_size D"), at, "cell_size");
@@ -113,10 +162,15 @@ Recording parse_recording(const std::string& text, const std::string& where, std
       } else if (key == "origin") {
         const auto f = two_fields(header_value(words, at, "origin X,Y"), at, "origin", "X,Y");
         rec.grid.origin = std::array<double, 3>{parse_finite_number(f[0], at, "origin x"), parse_finite_number(f[1], at, "origin y"), 0};
-      } else {
+      } else if (key == "cells") {
         const auto f = two_fields(header_value(words, at, "cells NX,NY"), at, "cells", "NX,NY");
         rec.grid.cells = std::array<std::int64_t, 3>{parse_integer(f[0], at, "cells nx", 1, std::int64_t{1} << 24),
                                                      parse_integer(f[1], at, "cells ny", 1, std::int64_t{1} << 24), 1};
+      } else {
+        const std::string_view b = header_value(words, at, "base 0|1");
+        if (b != "0" && b != "1")
+          throw Error(at + "base: '" + std::string(b) + "': pairs number elements from 0 ('base 0', the default) or 1 ('base 1')");
+        rec.pair_base = b == "1" ? 1 : 0;
       }
       continue;
     }
@@ -132,17 +186,33 @@ Recording parse_recording(const std::string& text, const std::string& where, std
         if (time < last.time)
           throw Error(at + "frame " + std::to_string(number) + ": time " + shortest(time) + " is before frame " +
                       std::to_string(last.number) + "'s " + shortest(last.time) + ": times must not decrease");
-        finish_frame(rec.frames.back(), cols);
+        end_frame();
         if (static_cast<std::int64_t>(rec.frames.size()) >= max_frames) return rec;
       }
-      rec.frames.push_back({number, time, {}});
+      rec.frames.push_back({number, time, {}, {}});
+      state = FrameState{line_no, false};
+      continue;
+    }
+    if (key == "pairs") {
+      if (words.size() != 1) throw Error(at + "expected 'pairs' alone on its line, got '" + std::string(line) + "'");
+      if (in_header) throw Error(at + "a 'pairs' line before the first 'frame NUMBER TIME' line");
+      if (state.has_pairs)
+        throw Error(at + "a second 'pairs' line in frame " + std::to_string(rec.frames.back().number) + " (one pairs block a frame)");
+      state.has_pairs = true;
+      // A block where the first frame has none is refused here, before its rows are read.
+      if (rec.frames.size() > 1) check_all_or_none(rec, state, rec.has_pairs, where);
       continue;
     }
     if (std::isalpha(static_cast<unsigned char>(key.front())) && line.find(',') == std::string_view::npos)
-      throw Error(at + "unknown line '" + std::string(line) + "' (expected frame, cell_size, origin, cells or a row x,y,r)");
+      throw Error(at + "unknown line '" + std::string(line) + "' (expected frame, pairs, cell_size, origin, cells, base or a row x,y,r)");
     if (in_header) throw Error(at + "an element row before the first 'frame NUMBER TIME' line");
+    if (state.has_pairs) {
+      parse_pair_row(line, at, rec.pair_base, static_cast<std::int64_t>(cols[0].size()), rec.frames.back());
+      continue;
+    }
     const std::vector<std::string_view> fields = split_fields(line);
     if (fields.size() == 4) throw Error(at + "4 columns (x,y,z,r): replay is 2D, rows are x,y,r");
+    if (fields.size() == 2) throw Error(at + "2 columns; expected 3 (x,y,r) (a pair i,j? pairs come after the frame's 'pairs' line)");
     if (fields.size() != 3) throw Error(at + plural(static_cast<long long>(fields.size()), "column") + "; expected 3 (x,y,r)");
     if (static_cast<std::int64_t>(cols[0].size()) >= kMaxElements)
       throw Error(at + "more than " + std::to_string(kMaxElements) + " elements in one frame");
@@ -156,7 +226,7 @@ Recording parse_recording(const std::string& text, const std::string& where, std
   if (!seen_version) throw Error(where + ":" + std::to_string(line_no) + ": only comments (expected 'nbsrec 1', then frames)");
   if (rec.frames.empty())
     throw Error(where + ":" + std::to_string(line_no) + ": no frames (expected 'frame NUMBER TIME' lines with x,y,r rows)");
-  finish_frame(rec.frames.back(), cols);
+  end_frame();
   return rec;
 }
 
@@ -171,6 +241,8 @@ Recording read_recording(const std::string& path, std::int64_t max_frames) {
 struct RecordingWriter::Impl {
   AtomicFileWriter file;
   std::string buf;
+  std::int64_t frames = 0;
+  bool with_pairs = false;  // of the first frame: every later one must match (all or none)
   explicit Impl(const std::string& path) : file(path) {}
 
   void append(double v) {
@@ -212,13 +284,23 @@ RecordingWriter::RecordingWriter(const std::string& path, const GridOptions& gri
 
 RecordingWriter::~RecordingWriter() = default;
 
-void RecordingWriter::write_frame(std::int64_t number, double time, const Elements& e) {
+void RecordingWriter::write_frame(std::int64_t number, double time, const Elements& e, const PairList* pairs) {
   if (e.dim != 2) throw Error("--record: the elements are 3D; a recording holds 2D frames only");
+  // What the reader would refuse is refused here, so that a written recording always reads back.
+  if (impl_->frames > 0 && (pairs != nullptr) != impl_->with_pairs)
+    throw Error("recording: frame " + std::to_string(number) + (pairs != nullptr ? " has pairs, but the first frame had none" : " has no pairs, but the first frame had some") +
+                ": give every frame its pairs, or none");
+  if (pairs != nullptr)
+    for (const Pair& p : *pairs)
+      if (p.i < 0 || p.j < 0 || p.i >= e.size() || p.j >= e.size())
+        throw Error("recording: pair " + std::to_string(p.i) + "," + std::to_string(p.j) + " of frame " + std::to_string(number) + ": the frame has " +
+                    plural(static_cast<long long>(e.size()), "element"));
+  if (impl_->frames++ == 0) impl_->with_pairs = pairs != nullptr;
   std::string& b = impl_->buf;
   b += "frame " + std::to_string(number) + " ";
   impl_->append(time);
   b += "\n";
-  b.reserve(b.size() + static_cast<std::size_t>(e.size()) * 40);
+  b.reserve(b.size() + static_cast<std::size_t>(e.size()) * 40 + (pairs != nullptr ? pairs->size() * 16 + 6 : 0));
   for (Eigen::Index k = 0; k < e.size(); ++k) {
     impl_->append(e.x[k]);
     b += ",";
@@ -226,6 +308,10 @@ void RecordingWriter::write_frame(std::int64_t number, double time, const Elemen
     b += ",";
     impl_->append(e.r[k]);
     b += "\n";
+  }
+  if (pairs != nullptr) {
+    b += "pairs\n";
+    for (const Pair& p : *pairs) b += std::to_string(p.i) + "," + std::to_string(p.j) + "\n";
   }
   impl_->flush();
 }

@@ -10,7 +10,11 @@
 //   x,y,r                    and the simulated time in seconds, finite and non-decreasing;
 //   ...                      then one element a line, as ELEMENTS.csv rows (2D only: x,y,r)
 //   frame 1 0.0166667        a frame may have no elements; element counts may change
+//   pairs                    optional, after a frame's rows: the simulation's own contact pairs of
+//   1,2                      the frame, `i,j` a line, until the next frame (every frame has a block, or none)
 //
+// `base 1` (a header line) numbers the pairs' elements from 1 (Fortran codes); the default is 0.
+// Pairs are kept as given (either order, i == j, twice): those are the user's bugs the check finds.
 // Numbers are written shortest-round-trip (std::to_chars), so a replay sees bit-identical doubles.
 // Index: Recording | reading | writing.
 #pragma once
@@ -24,6 +28,7 @@
 
 #include "core/elements.hpp"
 #include "core/grid.hpp"
+#include "core/pairs.hpp"
 
 namespace nbscope {
 
@@ -32,6 +37,7 @@ struct RecordedFrame {
   std::int64_t number = 0;
   double time = 0;
   Elements elements;
+  PairList pairs;  // the `pairs` block: 0-based, as given (order within a pair, i == j, repeats kept)
 };
 
 // A whole recording as read.
@@ -39,6 +45,8 @@ struct Recording {
   std::string path;  // as given
   GridOptions grid;  // the grid the header pins (2D: origin z 0, cells nz 1; unset: derived each frame)
   std::vector<RecordedFrame> frames;  // at least one
+  bool has_pairs = false;  // every frame has a `pairs` block (the reader refuses some without)
+  int pair_base = 0;       // `base`: the file numbers its pairs' elements from 0 or 1
 };
 
 // Reads and validates a .nbsrec file, at most `max_frames` frames (the rest is not read). Throws
@@ -46,7 +54,10 @@ struct Recording {
 // "nbsrec 1" line or another version, an unknown line, a header line after the first frame, a bad
 // cell_size/origin/cells value, a frame number that does not increase, a time that decreases, a row
 // before the first frame, a bad row (as ELEMENTS.csv: column count, non-number, NaN/Inf, r <= 0), a
-// 4-column row ("replay is 2D"), an element wider than the pinned cell_size, or no frames at all.
+// 4-column row ("replay is 2D"), an element wider than the pinned cell_size, no frames at all; a `base`
+// other than 0 or 1 or after the first frame; a `pairs` line before the first frame or twice in a
+// frame, an element row after it, a pair row that is not two integers or names an element the frame
+// does not have; a frame without a pairs block when another has one.
 Recording read_recording(const std::string& path, std::int64_t max_frames = std::numeric_limits<std::int64_t>::max());
 // Same from memory; `where` names it in messages.
 Recording parse_recording(const std::string& text, const std::string& where,
@@ -63,8 +74,10 @@ class RecordingWriter {
   RecordingWriter(const RecordingWriter&) = delete;
   RecordingWriter& operator=(const RecordingWriter&) = delete;
 
-  // Appends one frame; Error for 3D elements (the format is 2D).
-  void write_frame(std::int64_t number, double time, const Elements& elements);
+  // Appends one frame, with a `pairs` block of `pairs` (0-based, written as given) when not null;
+  // Error for 3D elements (the format is 2D), a pair naming an element the frame does not have, or
+  // pairs given for some frames and not others (the reader would refuse the file).
+  void write_frame(std::int64_t number, double time, const Elements& elements, const PairList* pairs = nullptr);
   // Renames the finished file into place; Error when anything could not be written.
   void commit();
 

@@ -54,7 +54,8 @@ struct SimView {
   std::string scene_path;
   std::string scene_name;
   std::vector<std::string> scene_files;  // every scene in assets/scenes
-  std::vector<std::string> algorithms;
+  std::vector<std::string> algorithms;  // what the picker offers: the detectors, and `recorded` for a recording with pairs
+  std::vector<std::string> detectors;   // the registry's 2D detectors (what the Scaling panel can time)
   std::string algorithm;
   std::string error;  // the last failed request (bad scene file, ...), shown in red
 

@@ -84,7 +84,7 @@ class ScalingPanel final : public Panel {
   void draw_choices(const SimView& sim, bool running) {
     ImGui::BeginDisabled(running);
     ImGui::TextUnformatted("Detectors:");
-    for (const std::string& name : sim.algorithms) {
+    for (const std::string& name : sim.detectors) {
       bool& on = chosen_algorithms_[name];
       const float w = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(name.c_str()).x;
       same_line_if_fits(w);
@@ -122,7 +122,7 @@ class ScalingPanel final : public Panel {
   [[nodiscard]] ScalingPlan plan_of_choices(const SimView& sim) const {
     ScalingPlan plan;
     plan.algorithms.clear();
-    for (const std::string& name : sim.algorithms)
+    for (const std::string& name : sim.detectors)
       if (const auto it = chosen_algorithms_.find(name); it != chosen_algorithms_.end() && it->second) plan.algorithms.push_back(name);
     plan.layouts.clear();
     for (std::size_t i = 0; i < chosen_layouts_.size(); ++i)

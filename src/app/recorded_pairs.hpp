@@ -1,0 +1,58 @@
+// nbscope app: `recorded`, the contact pairs a recording carries (a frame's `pairs` block,
+// io/recording.hpp) as an algorithm beside the detectors, so that `nbscope replay` checks a
+// simulation's own pairs with A==R exactly as it checks nbscope's, and the window's picker,
+// Timeline and Violations panel work on them.
+//
+// Not in core's registry: it is no contact-detection algorithm (`pairs`, `dump`, `scaling`, the
+// benchmarks and scenes have nothing for it) and its make() would need the recording. The frame
+// loop makes it by name (make_lane_detector) and tells it which frame is current (set_frame).
+#pragma once
+#include <memory>
+#include <string_view>
+
+#include "check/faults.hpp"
+#include "core/detector.hpp"
+#include "io/recording.hpp"
+
+namespace nbscope {
+
+// The name `--algorithm`, the picker and reports use.
+inline constexpr std::string_view kRecordedAlgorithm = "recorded";
+
+// Returns the pairs of the recorded frame it is given: normalised to i < j (i == j and repeats are
+// kept, for the check to report as the user's bugs); the lane sorts them as it sorts any detector's.
+class RecordedPairsDetector final : public Detector {
+ public:
+  // "recorded".
+  [[nodiscard]] std::string_view name() const override { return kRecordedAlgorithm; }
+  // A recording is 2D.
+  [[nodiscard]] bool supports_dim(int dim) const override { return dim == 2; }
+  // The frame whose pairs the next detect() returns (it must outlive that call); null: none.
+  void set_frame(const RecordedFrame* frame) { frame_ = frame; }
+  // The current frame's pairs (the elements are not looked at); Error without a frame that has a
+  // pairs block, or past options.max_pairs.
+  void detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) override;
+  // As detect(); nothing is recorded (no book operations: the pairs were read, not detected).
+  void detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs, TraceLog& out_trace) override;
+  // No arrays of its own.
+  [[nodiscard]] std::size_t own_bytes() const override { return 0; }
+
+ private:
+  const RecordedFrame* frame_ = nullptr;
+};
+
+// What `recorded` can do, in the registry's terms: 2D, no trace, no lists (as box2d).
+[[nodiscard]] const DetectorInfo& recorded_info();
+// recorded_info() for "recorded", else the registry's entry (Error for an unknown name).
+[[nodiscard]] const DetectorInfo& algorithm_info(std::string_view name);
+// A lane's detector: RecordedPairsDetector for "recorded", else the registry's, which must handle
+// 2D; Error for an unknown or 3D-only name.
+[[nodiscard]] std::unique_ptr<Detector> make_lane_detector(std::string_view name);
+// Error when `fault` cannot act on recorded pairs: the faults that emulate a detector's bug in its
+// input or cells (stale-positions, drop-mask-cell, off-by-one-cell) and Box2D's (drop-box2d-contact).
+// None and drop-pair, which drops one of the pairs themselves, pass.
+void check_recorded_fault(Fault fault);
+// Why the stepper and the lists overlay have nothing to show for `recorded`, in words.
+[[nodiscard]] const char* recorded_trace_refusal();
+
+}  // namespace nbscope
