@@ -22,6 +22,10 @@ int run_replay(Args& args);
 // [--output OUT.csv] [--quiet]`: ns and bytes per element against N (app/cmd_scaling.cpp).
 int run_scaling_command(Args& args);
 
+// `nbscope verify --input F (--pairs F | --arrays F [--algorithm A] [--exact]) [--base 1] [grid flags]
+// [--screenshot OUT.png]`: someone else's pairs or arrays checked (app/cmd_verify.cpp).
+int run_verify(Args& args);
+
 // `nbscope [gui] [--scene F] [--algorithm A] [--frames N --screenshot OUT.png] [--size WxH] ...`:
 // the window (app/cmd_gui.cpp); headless with a screenshot when there is no display.
 int run_gui(Args& args);

@@ -45,6 +45,17 @@ usage:
       bounds and HEADs and next; sort: sorted cell keys and order; brute, box2d: counts only.
       --cells pins the number of cells per axis (the book's Fig. 3.15 is --cell-size 1
       --origin 0,0 --cells 10,10).
+  nbscope verify --input ELEMENTS.csv --pairs PAIRS.csv [--base 1] [--brute-limit N] [grid flags]
+      Your contact pairs (one a line, i,j in either order) against brute force (sort above
+      --brute-limit, default 2000): a summary line, then every missing, extra, duplicated,
+      i == j and out-of-range pair with both elements' cells and distance - radii.
+  nbscope verify --input ELEMENTS.csv --arrays ARRAYS.json [--algorithm screen|nbs|tree|sort]
+                 [--base 1] [--exact] [grid flags] [--screenshot OUT.png [--size WxH]]
+      Your heads and next arrays, in the schema dump writes ("base": 1 for 1-based), against
+      the book: every list ends (a cycle or a bad index is found, never followed), every
+      element on one list, the list of its own cell; --exact also the book's order. The first
+      problem in the book's terms (E[7] = 5, but element 5 lies in cell (2,7) ...), then the
+      count. --screenshot draws your lists with the wrong links red. Exit 0 right, 1 wrong.
   nbscope scaling [--algorithm NAME[,NAME...]|all] [--layout NAME[,NAME...]] [--n MIN..MAX]
                   [--points-per-decade K] [--output OUT.csv] [--quiet]
       Times every detector named (default all) on generated layouts (default loose; also dense,

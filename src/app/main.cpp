@@ -43,6 +43,7 @@ int dispatch(const std::string& command, const std::vector<std::string>& rest, n
   if (command == "headless") return nbscope::run_headless(args);
   if (command == "gui") return nbscope::run_gui(args);
   if (command == "replay") return nbscope::run_replay(args);
+  if (command == "verify") return nbscope::run_verify(args);
   if (command == "scaling") return nbscope::run_scaling_command(args);
   throw nbscope::Error(command + ": unknown command (see nbscope --help)");
 }

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "app/cli.hpp"
 #include "app/grid_flags.hpp"
 #include "core/elements.hpp"
 #include "core/grid.hpp"
@@ -29,6 +30,10 @@ struct VerifyArraysRun {
   verify::UserArrays user;
   verify::ArraysVerdict verdict;
 };
+
+// Takes --input, --arrays, --algorithm, --base, --exact and the grid flags from `args` (gui and
+// verify share them); Error on a malformed value. Empty paths when the flag is absent.
+VerifyArraysInputs take_verify_inputs(Args& args);
 
 // Reads both files and checks the arrays. Throws Error (exit 2) on bad input: either file, a JSON of
 // another schema, wrong array lengths, another dimension, a grid that does not fit the elements.

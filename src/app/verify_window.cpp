@@ -7,7 +7,6 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "app/verify_flags.hpp"
 #include "app/verify_view_impl.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -67,7 +66,12 @@ int run_verify_window(const VerifyArraysRun& run, const ViewOptions& view) {
 }
 
 int run_verify_gui(Args& args) {
-  const VerifyArraysInputs inputs = take_verify_flags(args);
+  const VerifyArraysInputs inputs = take_verify_inputs(args);
+  if (inputs.elements_path.empty())
+    throw Error("--input: missing: gui --arrays draws the arrays on these elements (ELEMENTS.csv, x,y,r a line)");
+  if (inputs.arrays_path.empty())
+    throw Error("--arrays: missing: gui --input draws someone's own heads and next arrays on its elements (ARRAYS.json, "
+                "the schema nbscope dump writes)");
   ViewOptions view;
   if (auto n = args.integer("--frames", 0, 100'000'000)) view.frames = *n;
   parse_view_options(args, false, view);

@@ -16,6 +16,7 @@
 
 #include "core/elements.hpp"
 #include "core/grid.hpp"
+#include "core/pairs.hpp"
 
 namespace nbscope::verify {
 
@@ -116,6 +117,31 @@ inline constexpr std::size_t kMaxKeptProblems = 10'000;
 // rounding of a cell boundary may be on either side's list), sort's permutation and keys; with
 // `exact`, also the book's order in every list. O(N + heads + entries given).
 ArraysVerdict verify_arrays(const Elements& elements, const Grid& grid, const UserArrays& user, bool exact);
+
+// ---- pairs (`nbscope verify --pairs`) ----
+
+// One pair as the user's file gives it: indices already shifted to 0-based, either order, and the
+// file's line for messages.
+struct GivenPair {
+  std::int64_t i = 0, j = 0;
+  std::int64_t line = 0;
+};
+
+// The user's pairs held against the reference: each class in the order of the file (missing: by i, j).
+struct PairsVerdict {
+  PairList missing;                               // in R, not given
+  std::vector<GivenPair> extra;                   // given, not in R
+  std::vector<std::pair<GivenPair, std::int64_t>> duplicates;  // given again; the line of its first
+  std::vector<GivenPair> self;                    // i == j
+  std::vector<GivenPair> out_of_range;            // an index that names no element
+  std::int64_t right = 0;                         // distinct given pairs that are in R
+  [[nodiscard]] bool ok() const {
+    return missing.empty() && extra.empty() && duplicates.empty() && self.empty() && out_of_range.empty();
+  }
+};
+
+// Compares `given` (as read) with the sorted reference pairs `reference` of `n` elements. O(P log P).
+PairsVerdict compare_pairs(std::int64_t n, const std::vector<GivenPair>& given, const PairList& reference);
 
 // ---- names in the book's terms (base 0 or 1 added to every index) ----
 

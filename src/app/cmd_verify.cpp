@@ -1,0 +1,174 @@
+// `nbscope verify`: someone else's contact detection checked — their pairs against the reference
+// (--pairs), or their heads and next arrays against the book (--arrays). Exit 0 right, 1 wrong, 2 bad input.
+//
+// Index: flags | --pairs (summary, then every wrong pair with both cells and distance - radii) |
+// --arrays (the first problem in the book's terms, more, the count) | run_verify.
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "app/commands.hpp"
+#include "app/view_options.hpp"
+#include "app/verify_run.hpp"
+#include "core/detector.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/csv.hpp"
+#include "io/given_pairs.hpp"
+#include "io/plural.hpp"
+#ifdef NBSCOPE_VERIFY_VIEW
+#include "app/verify_view.hpp"
+#endif
+
+namespace nbscope {
+
+namespace {
+
+// Problems printed with their text after the first; the rest are counted.
+constexpr std::size_t kProblemsShown = 20;
+
+void print_line(const std::string& s) {
+  std::fwrite(s.data(), 1, s.size(), stdout);
+  std::fputc('\n', stdout);
+}
+
+// ---- --pairs ----
+
+struct PairsReport {
+  const Elements& e;
+  const Grid& grid;
+  int base;
+  [[nodiscard]] std::string id(std::int64_t k) const { return std::to_string(k + base); }
+  [[nodiscard]] std::string cell(std::int64_t k) const {
+    const auto i = static_cast<ElementId>(k);
+    std::array<std::int32_t, 3> c{grid.cell(e.x[i], 0), grid.cell(e.y[i], 1), e.dim == 3 ? grid.cell(e.z[i], 2) : -1};
+    return verify::cell_name(c, e.dim, base);
+  }
+  // "cells (4,6) and (4,5), distance - radii = -0.0123 (overlap)"
+  [[nodiscard]] std::string facts(std::int64_t i, std::int64_t j) const {
+    const auto a = static_cast<ElementId>(i), b = static_cast<ElementId>(j);
+    double d2 = (e.x[a] - e.x[b]) * (e.x[a] - e.x[b]) + (e.y[a] - e.y[b]) * (e.y[a] - e.y[b]);
+    if (e.dim == 3) d2 += (e.z[a] - e.z[b]) * (e.z[a] - e.z[b]);
+    const double gap = std::sqrt(d2) - (e.r[a] + e.r[b]);
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.6g", gap);
+    return "cells " + cell(i) + " and " + cell(j) + ", distance - radii = " + buf + (gap <= 0 ? " (in contact)" : " (apart)");
+  }
+};
+
+int verify_pairs(const std::string& input, const std::string& pairs_path, const GridFlags& flags, int base,
+                 std::int64_t brute_limit) {
+  const Elements e = read_elements_csv(input);
+  const std::vector<verify::GivenPair> given = read_given_pairs_csv(pairs_path, base);
+  DetectOptions options;
+  options.grid = grid_options_for(flags, e.dim);
+  const std::string reference = e.size() <= brute_limit ? "brute" : "sort";
+  PairList r;
+  auto detector = make_detector(reference);
+  Grid grid;
+  try {
+    detector->detect(e, options, r);
+    grid = make_grid(e, options.grid);
+  } catch (const Error& err) {
+    throw Error(input + ": " + err.what());
+  }
+  sort_pairs(r);
+  const verify::PairsVerdict v = verify::compare_pairs(e.size(), given, r);
+  const PairsReport p{e, grid, base};
+
+  std::string summary = "nbscope verify: " + pairs_path + ": " + plural(static_cast<long long>(given.size()), "pair") +
+                        " given for " + plural(static_cast<long long>(e.size()), "element") + ", the reference (" + reference +
+                        ") finds " + std::to_string(r.size()) + ": " + std::to_string(v.right) + " right, " +
+                        std::to_string(v.missing.size()) + " missing, " + std::to_string(v.extra.size()) + " extra, " +
+                        std::to_string(v.duplicates.size()) + " duplicated, " + std::to_string(v.self.size()) +
+                        " with itself, " + std::to_string(v.out_of_range.size()) + " out of range";
+  print_line(summary + (v.ok() ? ": right" : ": WRONG"));
+  for (const Pair& m : v.missing) print_line("missing " + p.id(m.i) + "," + p.id(m.j) + ": " + p.facts(m.i, m.j));
+  for (const verify::GivenPair& x : v.extra)
+    print_line("extra " + p.id(x.i) + "," + p.id(x.j) + " (line " + std::to_string(x.line) + "): " + p.facts(x.i, x.j));
+  for (const auto& [d, first] : v.duplicates)
+    print_line("duplicated " + p.id(d.i) + "," + p.id(d.j) + " (line " + std::to_string(d.line) + ", first on line " +
+               std::to_string(first) + ")");
+  for (const verify::GivenPair& s : v.self)
+    print_line("with itself " + p.id(s.i) + "," + p.id(s.j) + " (line " + std::to_string(s.line) + "): i == j is no pair");
+  for (const verify::GivenPair& o : v.out_of_range) {
+    std::string hint = e.size() == 0 ? "there are no elements"
+                                     : "elements are " + p.id(0) + ".." + p.id(e.size() - 1);
+    if (base == 0 && (o.i == e.size() || o.j == e.size())) hint += "; numbered from 1? use --base 1";
+    print_line("out of range " + p.id(o.i) + "," + p.id(o.j) + " (line " + std::to_string(o.line) + "): " + hint);
+  }
+  std::fflush(stdout);
+  return v.ok() ? 0 : 1;
+}
+
+// ---- --arrays ----
+
+int report_arrays(const VerifyArraysInputs& in, const VerifyArraysRun& run) {
+  const verify::ArraysVerdict& v = run.verdict;
+  const std::string what = "the " + run.user.algorithm + " arrays of " + plural(static_cast<long long>(run.elements.size()), "element");
+  if (v.problem_count == 0) {
+    std::string s = "nbscope verify: " + in.arrays_path + ": " + what + " are right: every list ends, every element is on one list, " +
+                    "the list of its own cell";
+    if (in.exact) s += ", every list in the book's order";
+    if (v.other_order_lists > 0)
+      s += " (" + plural(v.other_order_lists, run.user.algorithm == "sort" ? "tie" : "list") +
+           " in another order than the book's; --exact holds them to it)";
+    print_line(s);
+    std::fflush(stdout);
+    return 0;
+  }
+  const verify::Problem& first = v.problems.front();
+  print_line("nbscope verify: " + in.arrays_path + ": " + first.where + ": " + first.text);
+  for (std::size_t i = 1; i < v.problems.size() && i <= kProblemsShown; ++i)
+    print_line("  " + v.problems[i].where + ": " + v.problems[i].text);
+  const std::int64_t shown = static_cast<std::int64_t>(std::min(v.problems.size(), kProblemsShown + 1));
+  if (v.problem_count > shown) print_line("  ... and " + std::to_string(v.problem_count - shown) + " more");
+  // The count by kind, in the order of ProblemKind.
+  std::int64_t by_kind[8] = {};
+  for (const verify::Problem& p : v.problems) ++by_kind[static_cast<int>(p.kind)];
+  std::string kinds;
+  for (int k = 0; k < 8; ++k)
+    if (by_kind[k] > 0)
+      kinds += (kinds.empty() ? "" : ", ") + std::to_string(by_kind[k]) + " " + verify::problem_kind_name(static_cast<verify::ProblemKind>(k));
+  print_line("nbscope verify: " + plural(v.problem_count, "problem") + " in " + what + " (" + kinds +
+             (v.problem_count > static_cast<std::int64_t>(v.problems.size()) ? ", of the first " + std::to_string(v.problems.size()) : "") +
+             "): WRONG");
+  std::fflush(stdout);
+  return 1;
+}
+
+}  // namespace
+
+int run_verify(Args& args) {
+  VerifyArraysInputs in = take_verify_inputs(args);
+  const auto pairs = args.value("--pairs");
+  const std::int64_t brute_limit = args.integer("--brute-limit", 0, 1'000'000).value_or(2000);
+  ViewOptions view;
+  parse_view_options(args, true, view);
+  args.finish();
+  if (in.elements_path.empty()) throw Error("verify: --input ELEMENTS.csv is required");
+  if (pairs.has_value() == !in.arrays_path.empty())
+    throw Error("verify: give --pairs PAIRS.csv (your contact pairs) or --arrays ARRAYS.json (your heads and next arrays)");
+  if (view.screenshot) {
+    check_output_path(*view.screenshot);  // before any work: an unwritable path fails first
+    check_outputs_distinct({{"--input", in.elements_path}, {"--arrays", in.arrays_path}}, {{"--screenshot", *view.screenshot}});
+  }
+  if (pairs) {
+    if (in.algorithm) throw Error("--algorithm: only with --arrays (--pairs are checked against brute force, or sort above --brute-limit)");
+    if (in.exact) throw Error("--exact: only with --arrays");
+    if (view.screenshot) throw Error("--screenshot: only with --arrays (it draws your lists)");
+    return verify_pairs(in.elements_path, *pairs, in.grid_flags, in.base.value_or(0), brute_limit);
+  }
+  const VerifyArraysRun run = run_verify_arrays(in);
+  const int status = report_arrays(in, run);
+  if (view.screenshot) {
+#ifdef NBSCOPE_VERIFY_VIEW
+    print_line(write_verify_screenshot(run, view));
+#else
+    throw Error("--screenshot: this nbscope was built without the window (NBSCOPE_GUI=OFF)");
+#endif
+  }
+  return status;
+}
+
+}  // namespace nbscope

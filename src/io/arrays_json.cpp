@@ -1,0 +1,396 @@
+// Index: Reader (typed access with JSON paths) | header keys | one builder per algorithm (screen,
+// nbs 2D, nbs 3D, tree, sort) | ArraysJson::arrays | read/parse.
+#include "io/arrays_json.hpp"
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "core/error.hpp"
+#include "io/input_file.hpp"
+
+namespace nbscope {
+
+namespace {
+
+using json = nlohmann::json;
+using verify::ListFamily;
+using verify::UserList;
+
+std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+std::string key(const std::string& path, const char* name) { return path + "." + name; }
+
+// Typed access to the document; every failure names the file and the value's JSON path.
+class Reader {
+ public:
+  Reader(const std::string& where, int base, std::int64_t n) : where_(where), base_(base), n_(n) {}
+
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const { throw Error(where_ + ": " + path + ": " + what); }
+
+  const json& member(const json& object, const std::string& path, const char* name, const char* meaning) const {
+    const auto it = object.find(name);
+    if (it == object.end()) fail(path, std::string("no \"") + name + "\" key (" + meaning + ")");
+    return *it;
+  }
+  const json& array(const json& v, const std::string& path, std::optional<std::int64_t> length = {}, const char* of = "") const {
+    if (!v.is_array()) fail(path, std::string(type(v)) + ", but an array is expected");
+    if (length && static_cast<std::int64_t>(v.size()) != *length)
+      fail(path, std::to_string(v.size()) + " entries, but " + of + " is " + std::to_string(*length));
+    return v;
+  }
+  std::int64_t integer(const json& v, const std::string& path) const {
+    if (v.is_array()) fail(path, "an array, but a number is expected (arrays of another dimension?)");
+    if (!v.is_number_integer()) fail(path, std::string(type(v)) + ", but a whole number is expected");
+    const std::int64_t i = v.is_number_unsigned() && v.get<std::uint64_t>() > std::uint64_t{INT64_MAX} ? INT64_MAX : v.get<std::int64_t>();
+    if (i < std::numeric_limits<std::int32_t>::min() + 2 || i > std::numeric_limits<std::int32_t>::max())
+      fail(path, std::to_string(i) + " is not a 32-bit index (the book's arrays are int32)");
+    return i;
+  }
+  // An element index (or -1) as the file writes it, shifted to 0-based.
+  std::int32_t element(const json& v, const std::string& path) const {
+    const std::int64_t i = integer(v, path);
+    if (i == -1) return -1;
+    if (base_ == 1 && i == 0) return verify::kZeroInBase1;
+    return static_cast<std::int32_t>(i - base_);
+  }
+  // A cell index on an axis of `n` cells, shifted to 0-based; outside the grid is bad input (a slot, not a value).
+  std::int32_t cell(const json& v, const std::string& path, std::int64_t n, const char* axis) const {
+    const std::int64_t i = integer(v, path) - base_;
+    if (i < 0 || i >= n)
+      fail(path, std::to_string(i + base_) + " is not a" + (axis[0] == 'i' ? "n " : " ") + axis + " of the grid (" +
+           std::to_string(base_) + ".." + std::to_string(n - 1 + base_) + ")");
+    return static_cast<std::int32_t>(i);
+  }
+  // A dense next array of N entries.
+  std::vector<std::int32_t> next_array(const json& v, const std::string& path) const {
+    array(v, path, n_, "N, the number of elements,");
+    std::vector<std::int32_t> out(v.size());
+    for (std::size_t k = 0; k < v.size(); ++k) out[k] = element(v[k], at(path, k));
+    return out;
+  }
+  // Sparse [slot, head] or [k, next] pairs.
+  const json& pair(const json& v, const std::string& path) const {
+    if (!v.is_array() || v.size() != 2) fail(path, "not a pair [index, value]");
+    return v;
+  }
+  int base() const { return base_; }
+  std::int64_t n() const { return n_; }
+
+ private:
+  static const char* type(const json& v) {
+    if (v.is_object()) return "an object";
+    if (v.is_array()) return "an array";
+    if (v.is_string()) return "a string";
+    if (v.is_boolean()) return "a boolean";
+    if (v.is_null()) return "null";
+    return "a fraction";
+  }
+  std::string where_;
+  int base_;
+  std::int64_t n_;
+};
+
+// ---- screen: heads [ix][iy]([iz]) = C, next = E ----
+void build_screen(const Reader& r, const json& doc, const Grid& g, verify::UserArrays& out) {
+  ListFamily f;
+  f.heads_name = "C";
+  f.next_name = "E";
+  f.next_path = "$.next";
+  const int dim = g.dim;
+  for (int a = 0; a < dim; ++a) f.heads_shape.push_back(g.n[a]);
+  const json& heads = r.member(doc, "$", "heads", "the screen array C[nx][ny] of list heads");
+  const char* axes[3] = {"nx", "ny", "nz"};
+  // Walk the nest axis by axis, checking each level's length.
+  struct Level {
+    const json* v;
+    std::string path;
+    std::array<std::int32_t, 3> cell;
+  };
+  std::vector<Level> level{{&heads, "$.heads", {-1, -1, -1}}};
+  for (int a = 0; a < dim; ++a) {
+    std::vector<Level> deeper;
+    for (const Level& l : level) {
+      r.array(*l.v, l.path, g.n[a], axes[a]);
+      for (std::size_t i = 0; i < l.v->size(); ++i) {
+        Level d{&(*l.v)[i], at(l.path, i), l.cell};
+        d.cell[a] = static_cast<std::int32_t>(i);
+        if (a + 1 < dim) {
+          deeper.push_back(std::move(d));
+          continue;
+        }
+        const std::int32_t head = r.element(*d.v, d.path);
+        if (head == -1) continue;
+        UserList list;
+        list.slot = g.flat(d.cell[0], d.cell[1], dim == 3 ? d.cell[2] : 0);
+        list.head = head;
+        list.cell = d.cell;
+        list.where = d.path;
+        f.lists.push_back(std::move(list));
+      }
+    }
+    level = std::move(deeper);
+  }
+  f.next = r.next_array(r.member(doc, "$", "next", "E, the next array"), "$.next");
+  out.families.push_back(std::move(f));
+}
+
+// A family of lists whose heads are given as [slot, head] pairs (NBS rows, 3D layers): the slot is
+// the cell index on `axis` (of `n` cells); the next array as [k, next[k]] pairs.
+ListFamily sparse_family(const Reader& r, const json& object, const std::string& path, const char* heads_key,
+                         const char* next_key, const char* heads_name, const char* next_name, int axis, std::int64_t n) {
+  ListFamily f;
+  f.heads_name = heads_name;
+  f.next_name = next_name;
+  f.heads_shape = {n};
+  const std::string hp = key(path, heads_key);
+  const json& heads = r.array(r.member(object, path, heads_key, "[index, head] of each non-empty list"), hp);
+  for (std::size_t i = 0; i < heads.size(); ++i) {
+    const std::string p = at(hp, i);
+    const json& h = r.pair(heads[i], p);
+    UserList list;
+    list.cell[axis] = r.cell(h[0], at(p, 0), n, axis == 0 ? "ix" : axis == 1 ? "iy" : "iz");
+    list.slot = list.cell[axis];
+    list.head = r.element(h[1], at(p, 1));
+    list.where = at(p, 1);
+    if (list.head != -1) f.lists.push_back(std::move(list));
+  }
+  f.next_path = key(path, next_key);
+  const json& next = r.array(r.member(object, path, next_key, "[k, next[k]] of each element on the lists"), f.next_path);
+  f.next_pairs.reserve(next.size());
+  for (std::size_t i = 0; i < next.size(); ++i) {
+    const std::string p = at(f.next_path, i);
+    const json& e = r.pair(next[i], p);
+    f.next_pairs.push_back({r.element(e[0], at(p, 0)), r.element(e[1], at(p, 1))});
+  }
+  return f;
+}
+
+// The x-lists of `rows` (2D: of the whole grid; 3D: of layer iz), one family per row.
+void build_rows(const Reader& r, const json& object, const std::string& path, const Grid& g, std::int32_t iz,
+                bool ascending, verify::UserArrays& out) {
+  const auto it = object.find("rows");
+  if (it == object.end()) return;  // rows are optional: the y-lists alone can be checked
+  const std::string rp = key(path, "rows");
+  r.array(*it, rp);
+  for (std::size_t i = 0; i < it->size(); ++i) {
+    const std::string p = at(rp, i);
+    const json& row = (*it)[i];
+    if (!row.is_object()) r.fail(p, "not an object {iy, x_heads, x_next}");
+    const std::int32_t iy = r.cell(r.member(row, p, "iy", "the row"), key(p, "iy"), g.n[1], "row");
+    ListFamily f = sparse_family(r, row, p, "x_heads", "x_next", "x_heads", "X", 0, g.n[0]);
+    f.scope = {-1, iy, iz};
+    f.ascending = ascending;
+    out.families.push_back(std::move(f));
+  }
+}
+
+// ---- nbs 2D: y_heads, y_next, rows ----
+void build_nbs_2d(const Reader& r, const json& doc, const Grid& g, verify::UserArrays& out) {
+  ListFamily y;
+  y.heads_name = "y_heads";
+  y.next_name = "Y";
+  y.heads_shape = {g.n[1]};
+  const json& heads = r.array(r.member(doc, "$", "y_heads", "the heads of the y-lists, one per row"), "$.y_heads", g.n[1], "ny");
+  for (std::size_t iy = 0; iy < heads.size(); ++iy) {
+    UserList l;
+    l.slot = static_cast<std::int64_t>(iy);
+    l.head = r.element(heads[iy], at("$.y_heads", iy));
+    l.cell = {-1, static_cast<std::int32_t>(iy), -1};
+    l.where = at("$.y_heads", iy);
+    if (l.head != -1) y.lists.push_back(std::move(l));
+  }
+  y.next_path = "$.y_next";
+  y.next = r.next_array(r.member(doc, "$", "y_next", "Y, the next array of the y-lists"), "$.y_next");
+  out.families.push_back(std::move(y));
+  build_rows(r, doc, "$", g, -1, true, out);  // x-lists: pushed walking a y-list from its highest id down
+}
+
+// ---- nbs 3D: z_heads, z_next, layers [{iz, y_heads, y_next, rows}] ----
+void build_nbs_3d(const Reader& r, const json& doc, const Grid& g, verify::UserArrays& out) {
+  ListFamily z;
+  z.heads_name = "z_heads";
+  z.next_name = "Z";
+  z.heads_shape = {g.n[2]};
+  const json& heads = r.array(r.member(doc, "$", "z_heads", "the heads of the z-lists, one per layer"), "$.z_heads", g.n[2], "nz");
+  for (std::size_t iz = 0; iz < heads.size(); ++iz) {
+    UserList l;
+    l.slot = static_cast<std::int64_t>(iz);
+    l.head = r.element(heads[iz], at("$.z_heads", iz));
+    l.cell = {-1, -1, static_cast<std::int32_t>(iz)};
+    l.where = at("$.z_heads", iz);
+    if (l.head != -1) z.lists.push_back(std::move(l));
+  }
+  z.next_path = "$.z_next";
+  z.next = r.next_array(r.member(doc, "$", "z_next", "Z, the next array of the z-lists"), "$.z_next");
+  out.families.push_back(std::move(z));
+  const auto it = doc.find("layers");
+  if (it == doc.end()) return;
+  r.array(*it, "$.layers");
+  for (std::size_t i = 0; i < it->size(); ++i) {
+    const std::string p = at("$.layers", i);
+    const json& layer = (*it)[i];
+    if (!layer.is_object()) r.fail(p, "not an object {iz, y_heads, y_next, rows}");
+    const std::int32_t iz = r.cell(r.member(layer, p, "iz", "the layer"), key(p, "iz"), g.n[2], "layer");
+    ListFamily y = sparse_family(r, layer, p, "y_heads", "y_next", "y_heads", "Y", 1, g.n[1]);
+    y.scope = {-1, -1, iz};
+    y.ascending = true;  // pushed walking a z-list from its highest id down
+    out.families.push_back(std::move(y));
+    build_rows(r, layer, p, g, iz, false, out);  // pushed walking a y-list that rises
+  }
+}
+
+// ---- tree: leaves [{node, cell, head}], next = E ----
+void build_tree(const Reader& r, const json& doc, const Grid& g, verify::UserArrays& out) {
+  ListFamily f;
+  f.heads_name = "HEAD";
+  f.next_name = "E";
+  const json& leaves = r.array(r.member(doc, "$", "leaves", "every leaf with its node, cell and HEAD"), "$.leaves");
+  std::int64_t nodes = 0;
+  if (const auto it = doc.find("nodes"); it != doc.end()) nodes = r.integer(*it, "$.nodes");
+  const char* axes[3] = {"ix", "iy", "iz"};
+  for (std::size_t i = 0; i < leaves.size(); ++i) {
+    const std::string p = at("$.leaves", i);
+    const json& leaf = leaves[i];
+    if (!leaf.is_object()) r.fail(p, "not an object {node, cell, head}");
+    UserList l;
+    l.slot = r.integer(r.member(leaf, p, "node", "its index in HEAD"), key(p, "node")) - r.base();
+    if (l.slot < 0) r.fail(key(p, "node"), "not a node index (from " + std::to_string(r.base()) + ")");
+    nodes = std::max(nodes, l.slot + 1);
+    const json& cell = r.array(r.member(leaf, p, "cell", "[ix, iy(, iz)]"), key(p, "cell"), g.dim, "dim");
+    for (int a = 0; a < g.dim; ++a) l.cell[a] = r.cell(cell[static_cast<std::size_t>(a)], at(key(p, "cell"), static_cast<std::size_t>(a)), g.n[a], axes[a]);
+    l.head = r.element(r.member(leaf, p, "head", "its HEAD"), key(p, "head"));
+    l.where = key(p, "head");
+    if (l.head != -1) f.lists.push_back(std::move(l));
+  }
+  f.heads_shape = {std::max<std::int64_t>(nodes, 1)};
+  f.next_path = "$.next";
+  f.next = r.next_array(r.member(doc, "$", "next", "E, the next array"), "$.next");
+  out.families.push_back(std::move(f));
+}
+
+// ---- sort: keys, order, ix, iy (iz) ----
+void build_sort(const Reader& r, const json& doc, const Grid& g, verify::UserArrays& out) {
+  verify::SortArrays s;
+  const char* names[3] = {"ix", "iy", "iz"};
+  const auto cell_value = [&](const json& v, const std::string& p) {
+    const std::int64_t i = r.integer(v, p) - r.base();
+    return static_cast<std::int32_t>(std::clamp<std::int64_t>(i, -2, std::numeric_limits<std::int32_t>::max()));
+  };
+  const json& keys = r.array(r.member(doc, "$", "keys", "the cell of each sorted position"), "$.keys", r.n(), "N");
+  for (std::size_t p = 0; p < keys.size(); ++p) {
+    const json& k = r.array(keys[p], at("$.keys", p), g.dim, "dim");
+    std::array<std::int32_t, 3> cell{-1, -1, -1};
+    for (int a = 0; a < g.dim; ++a) cell[a] = cell_value(k[static_cast<std::size_t>(a)], at(at("$.keys", p), static_cast<std::size_t>(a)));
+    s.keys.push_back(cell);
+  }
+  const json& order = r.array(r.member(doc, "$", "order", "the element at each sorted position"), "$.order", r.n(), "N");
+  for (std::size_t p = 0; p < order.size(); ++p) s.order.push_back(r.element(order[p], at("$.order", p)));
+  for (int a = 0; a < g.dim; ++a) {
+    const std::string p = std::string("$.") + names[a];
+    const json& v = r.array(r.member(doc, "$", names[a], "each element's integerised coordinate"), p, r.n(), "N");
+    for (std::size_t k = 0; k < v.size(); ++k) s.cell_of[a].push_back(cell_value(v[k], at(p, k)));
+  }
+  out.sort = std::move(s);
+}
+
+std::int64_t positive(const Reader& r, const json& doc, const char* name) {
+  const std::int64_t v = r.integer(doc[name], std::string("$.") + name);
+  if (v < 1) r.fail(std::string("$.") + name, std::to_string(v) + " cells: at least 1 is needed");
+  return v;
+}
+
+}  // namespace
+
+verify::UserArrays ArraysJson::arrays(const std::string& name, const Grid& g, std::int64_t n, int base_used) const {
+  const Reader r(path, base_used, n);
+  verify::UserArrays out;
+  out.algorithm = name;
+  out.dim = g.dim;
+  out.base = base_used;
+  if (name == "screen") {
+    build_screen(r, doc, g, out);
+  } else if (name == "nbs" && g.dim == 3) {
+    build_nbs_3d(r, doc, g, out);
+  } else if (name == "nbs") {
+    build_nbs_2d(r, doc, g, out);
+  } else if (name == "tree") {
+    build_tree(r, doc, g, out);
+  } else if (name == "sort") {
+    build_sort(r, doc, g, out);
+  } else {
+    throw Error("--algorithm: verify checks the arrays of screen, nbs, tree and sort ('" + name + "' keeps no book arrays)");
+  }
+  return out;
+}
+
+ArraysJson parse_arrays_json(const std::string& text, const std::string& where) {
+  ArraysJson a;
+  a.path = where;
+  try {
+    a.doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." -> "where:3: JSON syntax error: ..."
+    std::string what = e.what();
+    std::string line;
+    if (const auto l = what.find("line "); l != std::string::npos) line = what.substr(l + 5, what.find(',', l) - l - 5);
+    if (const auto c = what.find(": ", what.find("column ")); c != std::string::npos) what = what.substr(c + 2);
+    throw Error(where + (line.empty() ? "" : ":" + line) + ": JSON syntax error: " + what);
+  }
+  const Reader r(where, 0, 0);
+  if (!a.doc.is_object())
+    r.fail("$", "not an object: ARRAYS.json is the object `nbscope dump` writes ({\"algorithm\": ..., \"heads\": ...})");
+  if (a.doc.contains("bodies") || a.doc.contains("frames"))
+    r.fail("$", "a scene or a report, not arrays: ARRAYS.json is the object `nbscope dump` writes");
+  if (const auto it = a.doc.find("algorithm"); it != a.doc.end()) {
+    if (!it->is_string()) r.fail("$.algorithm", "not a string");
+    a.algorithm = it->get<std::string>();
+  }
+  if (a.doc.contains("dim")) {
+    const std::int64_t d = r.integer(a.doc["dim"], "$.dim");
+    if (d != 2 && d != 3) r.fail("$.dim", std::to_string(d) + ", but 2 or 3 is expected");
+    a.dim = static_cast<int>(d);
+  }
+  if (a.doc.contains("base")) {
+    const std::int64_t b = r.integer(a.doc["base"], "$.base");
+    if (b != 0 && b != 1) r.fail("$.base", std::to_string(b) + ", but 0 (C, C++) or 1 (the book, Fortran) is expected");
+    a.base = static_cast<int>(b);
+  }
+  if (a.doc.contains("elements")) {
+    a.elements = r.integer(a.doc["elements"], "$.elements");
+    if (*a.elements < 0) r.fail("$.elements", "a negative number of elements");
+  }
+  if (a.doc.contains("cell_size")) {
+    const json& d = a.doc["cell_size"];
+    if (!d.is_number() || !std::isfinite(d.get<double>()) || d.get<double>() <= 0)
+      r.fail("$.cell_size", "not a positive finite number");
+    a.grid.cell_size = d.get<double>();
+  }
+  const int dim = a.dim.value_or(2);
+  if (a.doc.contains("origin")) {
+    const json& o = a.doc["origin"];
+    if (!o.is_array() || (o.size() != 2 && o.size() != 3)) r.fail("$.origin", "not [x, y] or [x, y, z]");
+    std::array<double, 3> origin{0, 0, 0};
+    for (std::size_t i = 0; i < o.size(); ++i) {
+      if (!o[i].is_number() || !std::isfinite(o[i].get<double>())) r.fail(at("$.origin", i), "not a finite number");
+      origin[i] = o[i].get<double>();
+    }
+    if (a.dim && static_cast<int>(o.size()) != dim)
+      r.fail("$.origin", std::to_string(o.size()) + " coordinates, but \"dim\" is " + std::to_string(dim));
+    a.grid.origin = origin;
+  }
+  const bool nx = a.doc.contains("nx"), ny = a.doc.contains("ny"), nz = a.doc.contains("nz");
+  if (nx || ny || nz) {
+    if (!nx || !ny) r.fail(nx ? "$.ny" : "$.nx", "missing: nx and ny (nz in 3D) pin the grid together");
+    std::array<std::int64_t, 3> cells{positive(r, a.doc, "nx"), positive(r, a.doc, "ny"), nz ? positive(r, a.doc, "nz") : 1};
+    a.grid.cells = cells;
+    a.has_cells = true;
+  }
+  return a;
+}
+
+ArraysJson read_arrays_json(const std::string& path) {
+  return parse_arrays_json(read_input_file(path, "arrays file", kMaxArraysBytes), path);
+}
+
+}  // namespace nbscope

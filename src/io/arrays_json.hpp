@@ -1,0 +1,50 @@
+// nbscope io: ARRAYS.json in — a user's heads and next arrays in the schema `nbscope dump` writes
+// (io/dump_json.hpp, README "Arrays as JSON"), read for `nbscope verify --arrays`.
+//
+// Read in two steps, because the shape of the heads arrays depends on the grid, and the grid may
+// come from the flags, from the file's own keys or from the elements: read_arrays_json() parses the
+// document and its header keys; ArraysJson::arrays() then builds the families of lists for a grid
+// and N elements, refusing wrong shapes. Every error names the file and the JSON path of the bad
+// value: "arrays.json: $.rows[2].x_heads[0]: ...". Keys a dump has but verify does not need (pairs,
+// own_bytes, bytes, leaves' bounds) are ignored.
+#pragma once
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "core/grid.hpp"
+#include "core/verify.hpp"
+
+namespace nbscope {
+
+// Largest ARRAYS.json read (a 1e6-element NBS dump with every row is about 60 MB).
+inline constexpr std::size_t kMaxArraysBytes = std::size_t{1} << 30;
+
+class ArraysJson {
+ public:
+  std::string path;                      // as given
+  std::optional<std::string> algorithm;  // "algorithm"
+  std::optional<int> dim;                // "dim": 2 or 3
+  std::optional<int> base;               // "base": 0 or 1 (absent: 0)
+  std::optional<std::int64_t> elements;  // "elements": N
+  GridOptions grid;                      // "cell_size", "origin", "nx", "ny", "nz" where given
+  bool has_cells = false;                // all of nx, ny (nz in 3D) given
+
+  // The families of lists (or sort's arrays) of `algorithm` for `grid` and `n` elements, indices
+  // shifted by `base` to 0-based. Throws Error("<path>: <json path>: what") on a missing key, a
+  // wrong type, an array of the wrong length (heads not nx x ny, next not N), another dimension,
+  // a cell or row outside the grid, a number that is not an int32.
+  [[nodiscard]] verify::UserArrays arrays(const std::string& algorithm, const Grid& grid, std::int64_t n, int base) const;
+
+  nlohmann::json doc;
+};
+
+// Parses `path` and checks its header keys' types and values (algorithm one of screen, nbs, tree,
+// sort; dim 2 or 3; base 0 or 1; elements >= 0; cell_size > 0; origin `dim` numbers; nx, ny, nz >= 1).
+// Throws Error("<path>:<line>: JSON syntax error ...") or Error("<path>: <json path>: what").
+ArraysJson read_arrays_json(const std::string& path);
+// The same from memory; `where` names it.
+ArraysJson parse_arrays_json(const std::string& text, const std::string& where);
+
+}  // namespace nbscope

@@ -1,0 +1,69 @@
+// Reading PAIRS.csv as a user's code wrote it (io/given_pairs.hpp).
+#include "io/given_pairs.hpp"
+
+#include <charconv>
+
+#include "core/error.hpp"
+#include "io/csv.hpp"
+#include "io/input_file.hpp"
+
+namespace nbscope {
+
+namespace {
+
+// The fields of `line` split at commas and white space.
+std::vector<std::string_view> fields_of(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ',' || line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && line[i] != ',' && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+    if (i > start) out.push_back(line.substr(start, i - start));
+  }
+  return out;
+}
+
+bool whole(std::string_view f, std::int64_t& out) {
+  if (!f.empty() && f[0] == '+') f.remove_prefix(1);
+  const auto [p, ec] = std::from_chars(f.data(), f.data() + f.size(), out);
+  return ec == std::errc() && p == f.data() + f.size();
+}
+
+}  // namespace
+
+std::vector<verify::GivenPair> parse_given_pairs_csv(const std::string& text, const std::string& where, int base) {
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw Error(where + ": empty file (a header `i,j` alone is no pairs)");
+  std::vector<verify::GivenPair> out;
+  std::int64_t line_no = 0;
+  bool first_row = true;
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    const std::size_t end = std::min(text.find('\n', pos), text.size());
+    const std::string_view line = strip_comment(std::string_view(text).substr(pos, end - pos));
+    pos = end + 1;
+    ++line_no;
+    if (line.empty()) continue;
+    const auto fields = fields_of(line);
+    std::int64_t i = 0, j = 0;
+    const bool numbers = fields.size() == 2 && whole(fields[0], i) && whole(fields[1], j);
+    if (first_row && !numbers && fields.size() == 2 && !whole(fields[0], i)) {
+      first_row = false;  // a header line such as `i,j`
+      continue;
+    }
+    first_row = false;
+    const std::string at = where + ":" + std::to_string(line_no) + ": ";
+    if (fields.size() != 2) throw Error(at + std::to_string(fields.size()) + " fields, but a pair is two element indices `i,j`");
+    if (!numbers) throw Error(at + "'" + std::string(line) + "' is not two whole numbers `i,j`");
+    if (i < INT32_MIN || i > INT32_MAX || j < INT32_MIN || j > INT32_MAX)
+      throw Error(at + "an index beyond 32 bits (element ids are int32)");
+    out.push_back({i - base, j - base, line_no});
+  }
+  return out;
+}
+
+std::vector<verify::GivenPair> read_given_pairs_csv(const std::string& path, int base) {
+  return parse_given_pairs_csv(read_input_file(path, "pairs file", kMaxElementsBytes), path, base);
+}
+
+}  // namespace nbscope

@@ -1,0 +1,431 @@
+// `nbscope verify`'s checks (core/verify.hpp) and readers (io/arrays_json.hpp, io/given_pairs.hpp):
+// nbscope's own arrays, as `nbscope dump` writes them, pass on every layout, algorithm and
+// dimension; each planted bug is found and named by the entry it was planted in.
+//
+// Index: helpers (dump, plant, check) | own arrays pass | planted bugs: screen, nbs 2D, nbs 3D, tree,
+// sort | base 1 | a million-element cycle | pairs | readers' bad input.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "core/detector.hpp"
+#include "core/error.hpp"
+#include "core/verify.hpp"
+#include "io/arrays_json.hpp"
+#include "io/dump_json.hpp"
+#include "io/given_pairs.hpp"
+#include "support/generators.hpp"
+
+namespace nbscope {
+namespace {
+
+using nlohmann::json;
+using verify::ProblemKind;
+
+// nbscope's own arrays of `e` as `nbscope dump` writes them (the grid keys pin it, as a user's would).
+json own_dump(const Elements& e, const std::string& algorithm, const GridOptions& grid = {}) {
+  auto d = make_detector(algorithm);
+  DetectOptions options;
+  options.grid = grid;
+  TraceLog trace;
+  trace.set_keep_tests(false);
+  PairList pairs;
+  d->detect_traced(e, options, pairs, trace);
+  DumpSource s;
+  s.algorithm = algorithm;
+  s.elements = &e;
+  s.grid = d->last_grid();
+  s.trace = &trace;
+  s.own_bytes = d->own_bytes();
+  s.pairs = pairs.size();
+  return json::parse(format_dump(dump_json(s)));
+}
+
+struct Checked {
+  verify::ArraysVerdict verdict;
+  [[nodiscard]] const verify::Problem& first() const { return verdict.problems.at(0); }
+  [[nodiscard]] bool has(ProblemKind kind, const std::string& text) const {
+    for (const auto& p : verdict.problems)
+      if (p.kind == kind && p.text.find(text) != std::string::npos) return true;
+    return false;
+  }
+  [[nodiscard]] std::string all() const {
+    std::string s;
+    for (const auto& p : verdict.problems) s += std::string(verify::problem_kind_name(p.kind)) + ": " + p.text + "\n";
+    return s;
+  }
+};
+
+// The arrays in `doc` read back as a user's file and held to the book on the grid the file pins.
+Checked check(const Elements& e, const json& doc, bool exact = false) {
+  const ArraysJson file = parse_arrays_json(doc.dump(), "arrays.json");
+  GridOptions g = file.grid;
+  const Grid grid = make_grid(e, g);
+  const verify::UserArrays user = file.arrays(*file.algorithm, grid, e.size(), file.base.value_or(0));
+  return Checked{verify::verify_arrays(e, grid, user, exact)};
+}
+
+// ---- own arrays pass ----
+
+TEST(VerifyArrays, OwnArraysPassOnEveryLayoutAlgorithmAndDimension) {
+  for (int dim : {2, 3}) {
+    for (const Layout layout : testdata::all_layouts()) {
+      for (std::int64_t n : {0, 1, 2, 17, 250}) {
+        const Elements e = make_layout(layout, n, dim, 7 + static_cast<std::uint64_t>(n));
+        for (const char* a : {"screen", "nbs", "tree", "sort"}) {
+          SCOPED_TRACE(std::string(a) + " " + std::to_string(dim) + "D " + layout_name(layout) + " n=" + std::to_string(n));
+          const Checked c = check(e, own_dump(e, a), true);
+          EXPECT_EQ(c.verdict.problem_count, 0) << c.all();
+          EXPECT_EQ(c.verdict.other_order_lists, 0);
+        }
+      }
+    }
+  }
+}
+
+TEST(VerifyArrays, BookNineOnItsGridPassesAndWalksEveryList) {
+  const Elements e = testdata::book_nine();
+  const Checked c = check(e, own_dump(e, "screen", testdata::book_grid()), true);
+  EXPECT_EQ(c.verdict.problem_count, 0) << c.all();
+  std::size_t reached = 0;
+  for (const auto& l : c.verdict.lists) reached += l.chain.size();
+  EXPECT_EQ(c.verdict.lists.size(), 4u);  // Fig. 3.20: four non-empty cells
+  EXPECT_EQ(reached, 9u);
+}
+
+// ---- planted bugs: screen (Fig. 3.20, 0-based: C[4][6] -> 3 -> 1 -> 0, C[4][5] -> 5, C[5][5] -> 7, C[1][6] -> 8 -> 6 -> 4 -> 2) ----
+
+class ScreenBugs : public ::testing::Test {
+ protected:
+  Elements e = testdata::book_nine();
+  json d = own_dump(e, "screen", testdata::book_grid());
+};
+
+TEST_F(ScreenBugs, AWrongHeadIsNamedWithBothCells) {
+  d["heads"][4][5] = 3;  // element 3 (cell (4,6)) made the head of C[4][5], whose 5 it hides
+  d["next"][3] = 5;
+  d["heads"][4][6] = 1;
+  const Checked c = check(e, d);
+  EXPECT_EQ(c.first().kind, ProblemKind::WrongList);
+  EXPECT_EQ(c.first().text, "C[4][5] = 3, but element 3 lies in cell (4,6), not in cell (4,5)");
+  EXPECT_EQ(c.first().where, "$.heads[4][5]");
+  EXPECT_EQ(c.first().link, (std::pair<ElementId, ElementId>{-1, 3}));
+  EXPECT_EQ(c.verdict.problem_count, 1);
+}
+
+TEST_F(ScreenBugs, AnElementInTheNeighbouringCellsListIsNamedByTheLinkToIt) {
+  d["next"][5] = 7;  // C[4][5] -> 5 -> 7, and 7 (cell (5,5)) taken off its own list
+  d["heads"][5][5] = -1;
+  const Checked c = check(e, d);
+  EXPECT_EQ(c.first().text, "E[5] = 7, but element 7 lies in cell (5,5) and element 5 in cell (4,5)");
+  EXPECT_EQ(c.first().where, "$.next[5]");
+  EXPECT_EQ(c.first().link, (std::pair<ElementId, ElementId>{5, 7}));
+}
+
+TEST_F(ScreenBugs, ADroppedElementIsNamedWithTheListThatMissesIt) {
+  d["next"][6] = 2;  // C[1][6] -> 8 -> 6 -> 2: 4 skipped
+  const Checked c = check(e, d);
+  EXPECT_EQ(c.first().kind, ProblemKind::NotListed);
+  EXPECT_EQ(c.first().text, "element 4 is on no list, but lies in cell (1,6): C[1][6] misses it");
+  EXPECT_EQ(c.first().elements, std::vector<ElementId>{4});
+  EXPECT_EQ(c.verdict.problem_count, 1);
+}
+
+TEST_F(ScreenBugs, ADuplicatedElementIsNamedWhereItIsReachedAgain) {
+  d["next"][7] = 0;  // C[5][5] -> 7 -> 0, but 0 is on C[4][6]'s list already
+  const Checked c = check(e, d);
+  EXPECT_TRUE(c.has(ProblemKind::TwoLists, "E[7] = 0, but element 0 is already on C[4][6]'s list")) << c.all();
+}
+
+TEST_F(ScreenBugs, ACycleIsFoundNotFollowed) {
+  d["next"][1] = 3;  // C[4][6] -> 3 -> 1 -> 3
+  const Checked c = check(e, d);
+  EXPECT_EQ(c.first().kind, ProblemKind::Cycle);
+  EXPECT_EQ(c.first().text, "C[4][6] -> 3 -> 1 -> 3: a cycle (E[1] = 3 leads back)");
+  EXPECT_EQ(c.first().where, "$.next[1]");
+  EXPECT_EQ(c.verdict.problem_count, 1);  // 0, behind the cycle, is not reported dropped as well
+}
+
+TEST_F(ScreenBugs, AnIndexOutOfRangeIsNamed) {
+  d["next"][8] = 9;  // nine elements: 0..8
+  const Checked c = check(e, d);
+  EXPECT_EQ(c.first().kind, ProblemKind::OutOfRange);
+  EXPECT_EQ(c.first().text, "E[8] = 9, but elements are 0..8, and -1 ends a list");
+  d["next"][8] = 6;
+  d["next"][3] = -7;  // a negative index other than -1
+  EXPECT_TRUE(check(e, d).has(ProblemKind::OutOfRange, "E[3] = -7"));
+}
+
+TEST_F(ScreenBugs, AnotherValidOrderPassesAndFailsOnlyWithExact) {
+  d["heads"][4][6] = 0;  // C[4][6] -> 0 -> 1 -> 3: the same elements, ids rising
+  d["next"][0] = 1;
+  d["next"][1] = 3;
+  d["next"][3] = -1;
+  const Checked loose = check(e, d, false);
+  EXPECT_EQ(loose.verdict.problem_count, 0) << loose.all();
+  EXPECT_EQ(loose.verdict.other_order_lists, 1);
+  const Checked exact = check(e, d, true);
+  EXPECT_EQ(exact.first().kind, ProblemKind::WrongOrder);
+  EXPECT_NE(exact.first().text.find("C[4][6] -> ... -> 0 -> 1: 1 follows 0"), std::string::npos) << exact.first().text;
+}
+
+// ---- nbs 2D ----
+
+class NbsBugs : public ::testing::Test {
+ protected:
+  Elements e = testdata::book_nine();
+  json d = own_dump(e, "nbs", testdata::book_grid());
+  // Row iy's object in "rows".
+  json& row(int iy) {
+    for (json& r : d["rows"])
+      if (r["iy"] == iy) return r;
+    throw Error("no row");
+  }
+};
+
+TEST_F(NbsBugs, AYListCycleIsNamedAsTheBookWouldDrawIt) {
+  d["y_next"][4] = 8;  // y_heads[6] -> 8 -> 6 -> 4 -> 8
+  const Checked c = check(e, d);
+  EXPECT_EQ(c.first().kind, ProblemKind::Cycle);
+  EXPECT_EQ(c.first().text, "y_heads[6] -> 8 -> 6 -> 4 -> 8: a cycle (Y[4] = 8 leads back)");
+}
+
+TEST_F(NbsBugs, AnElementOnTheWrongRowsYListIsNamed) {
+  // 5 (row 5) pushed on row 6's y-list instead: y_heads[5] -> 7, y_heads[6] -> 8 -> ... -> 5
+  d["y_next"][7] = -1;
+  d["y_next"][0] = 5;
+  d["y_next"][5] = -1;
+  const Checked c = check(e, d);
+  EXPECT_TRUE(c.has(ProblemKind::WrongList, "Y[0] = 5, but element 5 lies in row 5 and element 0 in row 6")) << c.all();
+}
+
+TEST_F(NbsBugs, AnXListOfARowHoldingAnotherCellsElementIsNamedWithTheRow) {
+  json& r = row(6);  // x_heads [[1, 2], [4, 0]]: move 2 (column 1) onto column 4's list
+  r["x_heads"] = json::array({json::array({1, 4}), json::array({4, 2})});
+  for (json& p : r["x_next"])
+    if (p[0] == 2) p[1] = 0;
+  const Checked c = check(e, d);
+  EXPECT_EQ(c.first().kind, ProblemKind::WrongList);
+  EXPECT_EQ(c.first().text, "row 6: x_heads[4] = 2, but element 2 lies in cell (1,6), not in cell (4,6)");
+}
+
+TEST_F(NbsBugs, AnXListRunningIntoAnElementWithoutAnEntryIsNamed) {
+  json& r = row(6);
+  json kept = json::array();
+  for (json& p : r["x_next"])
+    if (p[0] != 1) kept.push_back(p);  // X[1] not given
+  r["x_next"] = kept;
+  const Checked c = check(e, d);
+  EXPECT_EQ(c.first().kind, ProblemKind::NotGiven);
+  EXPECT_NE(c.first().text.find("X[1] is not given in $.rows[1].x_next"), std::string::npos) << c.first().text;
+}
+
+TEST_F(NbsBugs, XListsInAnotherOrderFailOnlyWithExact) {
+  json& r = row(6);  // x_heads[4] -> 0 -> 1 -> 3 (the book: ascending) reversed
+  r["x_heads"] = json::array({json::array({1, 2}), json::array({4, 3})});
+  r["x_next"] = json::array({json::array({2, 4}), json::array({4, 6}), json::array({6, 8}), json::array({8, -1}),
+                             json::array({3, 1}), json::array({1, 0}), json::array({0, -1})});
+  EXPECT_EQ(check(e, d, false).verdict.problem_count, 0) << check(e, d, false).all();
+  EXPECT_TRUE(check(e, d, true).has(ProblemKind::WrongOrder, "row 6: x_heads[4] -> ... -> 3 -> 1"));
+}
+
+// ---- nbs 3D, tree, sort ----
+
+TEST(VerifyArrays3d, AZListCycleAndAWrongLayerYListAreNamed) {
+  const Elements e = make_layout(Layout::Loose, 60, 3, 3);
+  json d = own_dump(e, "nbs");
+  // A cycle: the last element of the first non-empty z-list pointed back at its head.
+  for (std::size_t iz = 0; iz < d["z_heads"].size(); ++iz) {
+    const int head = d["z_heads"][iz];
+    if (head == -1) continue;
+    int k = head;
+    while (d["z_next"][k] != -1) k = d["z_next"][k];
+    if (k == head) continue;  // a list of one: try the next
+    d["z_next"][k] = head;
+    const Checked c = check(e, d);
+    EXPECT_EQ(c.first().kind, ProblemKind::Cycle);
+    EXPECT_NE(c.first().text.find("z_heads[" + std::to_string(iz) + "] -> " + std::to_string(head)), std::string::npos);
+    EXPECT_NE(c.first().text.find("(Z[" + std::to_string(k) + "] = " + std::to_string(head) + " leads back)"), std::string::npos);
+    return;
+  }
+  FAIL() << "no z-list of two elements";
+}
+
+TEST(VerifyArraysTree, AnElementOnAnotherLeafsListIsNamed) {
+  const Elements e = testdata::book_nine();
+  json d = own_dump(e, "tree", testdata::book_grid());
+  // Swap the heads of two leaves: every element then sits on another cell's list.
+  json& leaves = d["leaves"];
+  ASSERT_GE(leaves.size(), 2u);
+  std::swap(leaves[0]["head"], leaves[1]["head"]);
+  const Checked c = check(e, d);
+  EXPECT_EQ(c.first().kind, ProblemKind::WrongList);
+  EXPECT_EQ(c.first().where, "$.leaves[0].head");
+  EXPECT_NE(c.first().text.find("HEAD[" + std::to_string(leaves[0]["node"].get<int>()) + "] = "), std::string::npos);
+}
+
+TEST(VerifyArraysSort, AWrongCellARepeatedElementAndUnsortedKeysAreNamed) {
+  const Elements e = testdata::book_nine();
+  const json good = own_dump(e, "sort", testdata::book_grid());
+  json d = good;
+  d["iy"][4] = 5;  // element 4 lies in row 6
+  EXPECT_EQ(check(e, d).first().text, "iy[4] = 5, but element 4 lies in cell (1,6)");
+  d = good;
+  d["order"][1] = d["order"][0];
+  const Checked c = check(e, d);
+  EXPECT_TRUE(c.has(ProblemKind::TwoLists, "order[1] = " + std::to_string(good["order"][0].get<int>()))) << c.all();
+  EXPECT_TRUE(c.has(ProblemKind::NotListed, "element " + std::to_string(good["order"][1].get<int>()) + " is not in order"));
+  d = good;
+  std::swap(d["keys"][0], d["keys"][8]);
+  std::swap(d["order"][0], d["order"][8]);
+  EXPECT_TRUE(check(e, d).has(ProblemKind::WrongCell, "not sorted (ix first)"));
+  d = good;  // ties out of id order: C[1][6]'s four at positions 0..3
+  std::swap(d["order"][0], d["order"][1]);
+  EXPECT_EQ(check(e, d, false).verdict.problem_count, 0);
+  EXPECT_TRUE(check(e, d, true).has(ProblemKind::WrongOrder, "the book's ties go by element id"));
+}
+
+// ---- base 1: the book's numbering ----
+
+TEST(VerifyArraysBase1, TheBooksArraysReadAsPrintedAndProblemsNamedAsTheBookDoes) {
+  // Fig. 3.20 as the book prints it (1-based, -1 the end): C[5][7] = 4, C[5][6] = 6, C[6][6] = 8, C[2][7] = 9,
+  // E = -1 1 -1 2 3 -1 5 -1 7.
+  const Elements e = testdata::book_nine();
+  json d = {{"algorithm", "screen"}, {"base", 1}, {"cell_size", 1}, {"origin", {0, 0}}, {"nx", 10}, {"ny", 10}};
+  json heads = json::array();
+  for (int ix = 1; ix <= 10; ++ix) {
+    json col = json::array();
+    for (int iy = 1; iy <= 10; ++iy) col.push_back(-1);
+    heads.push_back(col);
+  }
+  heads[4][6] = 4;
+  heads[4][5] = 6;
+  heads[5][5] = 8;
+  heads[1][6] = 9;
+  d["heads"] = heads;
+  d["next"] = {-1, 1, -1, 2, 3, -1, 5, -1, 7};
+  EXPECT_EQ(check(e, d, true).verdict.problem_count, 0) << check(e, d).all();
+  d["next"][7] = 5;  // E[8] = 5 (book numbering): 5 is on C[2][7]'s list already
+  const Checked c = check(e, d);
+  EXPECT_EQ(c.first().text, "E[8] = 5, but element 5 is already on C[2][7]'s list (an element is on one list only)");
+  d["next"][7] = 0;  // 0 is no element when counting from 1
+  EXPECT_EQ(check(e, d).first().text, "E[8] = 0, but elements are 1..9, and -1 ends a list");
+}
+
+// ---- a million elements on one list that closes on itself ----
+
+TEST(VerifyArraysScale, AMillionElementCycleIsFoundInOneWalk) {
+  const std::int64_t n = 1'000'000;
+  Elements e;
+  e.resize(n);
+  for (std::int64_t k = 0; k < n; ++k) {
+    e.x[k] = static_cast<double>(k % 1000);
+    e.y[k] = 0.5;
+    e.r[k] = 0.5;
+  }
+  GridOptions g;
+  g.cell_size = 1000;
+  g.origin = std::array<double, 3>{0, 0, 0};
+  const Grid grid = make_grid(e, g);
+  verify::UserArrays u;
+  u.algorithm = "nbs";
+  verify::ListFamily f;
+  f.heads_name = "y_heads";
+  f.next_name = "Y";
+  f.heads_shape = {grid.n[1]};
+  f.lists.push_back({0, static_cast<std::int32_t>(n - 1), {-1, 0, -1}, "$.y_heads[0]"});
+  f.next.resize(static_cast<std::size_t>(n));
+  for (std::int64_t k = 1; k < n; ++k) f.next[static_cast<std::size_t>(k)] = static_cast<std::int32_t>(k - 1);
+  f.next[0] = static_cast<std::int32_t>(n - 1);  // the last link closes the list on its head
+  f.next_path = "$.y_next";
+  u.families.push_back(std::move(f));
+  const verify::ArraysVerdict v = verify::verify_arrays(e, grid, u, true);
+  ASSERT_EQ(v.problem_count, 1);
+  EXPECT_EQ(v.problems[0].kind, ProblemKind::Cycle);
+  EXPECT_EQ(v.problems[0].text, "y_heads[0] -> 999999 -> 999998 -> 999997 -> ... (999994 more) -> 2 -> 1 -> 0 -> 999999: a cycle "
+                                "(Y[0] = 999999 leads back)");
+}
+
+// ---- pairs ----
+
+TEST(VerifyPairs, MissingExtraDuplicatedSelfAndOutOfRangeAreEachNamedWithTheirLine) {
+  const PairList reference{{0, 1}, {2, 5}, {3, 4}};
+  const std::vector<verify::GivenPair> given{{1, 0, 2}, {5, 2, 3}, {0, 7, 4}, {2, 5, 5}, {4, 4, 6}, {3, 9, 7}, {0, 7, 8}};
+  const verify::PairsVerdict v = verify::compare_pairs(9, given, reference);
+  EXPECT_EQ(v.missing, (PairList{{3, 4}}));
+  ASSERT_EQ(v.extra.size(), 1u);
+  EXPECT_EQ(v.extra[0].line, 4);  // 0,7 first given on line 4
+  ASSERT_EQ(v.duplicates.size(), 2u);
+  EXPECT_EQ(v.duplicates[0].first.line, 5);  // 2,5 again (given 5,2 on line 3)
+  EXPECT_EQ(v.duplicates[0].second, 3);
+  EXPECT_EQ(v.duplicates[1].second, 4);
+  ASSERT_EQ(v.self.size(), 1u);
+  EXPECT_EQ(v.self[0].line, 6);
+  ASSERT_EQ(v.out_of_range.size(), 1u);
+  EXPECT_EQ(v.out_of_range[0].j, 9);
+  EXPECT_EQ(v.right, 2);
+  EXPECT_FALSE(v.ok());
+  EXPECT_TRUE(verify::compare_pairs(9, {{1, 0, 1}, {5, 2, 2}, {3, 4, 3}}, reference).ok());
+}
+
+TEST(VerifyPairs, TheReaderTakesEitherOrderBase1WhiteSpaceAndAHeader) {
+  const auto p = parse_given_pairs_csv("i,j\n# a comment\n2,1\n\n3 4\n  5\t6 \n", "p.csv", 1);
+  ASSERT_EQ(p.size(), 3u);
+  EXPECT_EQ(p[0].i, 1);
+  EXPECT_EQ(p[0].j, 0);
+  EXPECT_EQ(p[0].line, 3);
+  EXPECT_EQ(p[2].j, 5);
+  try {
+    parse_given_pairs_csv("i,j\n1,2\n1,x\n", "p.csv", 0);
+    FAIL();
+  } catch (const Error& err) {
+    EXPECT_STREQ(err.what(), "p.csv:3: '1,x' is not two whole numbers `i,j`");
+  }
+  EXPECT_THROW(parse_given_pairs_csv("1,2,3\n", "p.csv", 0), Error);
+  EXPECT_THROW(parse_given_pairs_csv("\n \n", "p.csv", 0), Error);
+}
+
+// ---- the arrays reader's bad input: the JSON path of the bad value ----
+
+std::string arrays_error(const json& doc, const Elements& e) {
+  try {
+    check(e, doc);
+  } catch (const Error& err) {
+    return err.what();
+  }
+  return "(no error)";
+}
+
+TEST(VerifyArraysInput, WrongLengthsAndDimensionsAndTypesNameTheirPath) {
+  const Elements e = testdata::book_nine();
+  const json good = own_dump(e, "screen", testdata::book_grid());
+  json d = good;
+  d["heads"][3].erase(0);
+  EXPECT_EQ(arrays_error(d, e), "arrays.json: $.heads[3]: 9 entries, but ny is 10");
+  d = good;
+  d["next"].push_back(-1);
+  EXPECT_EQ(arrays_error(d, e), "arrays.json: $.next: 10 entries, but N, the number of elements, is 9");
+  d = good;
+  d["heads"][2][2] = json::array({-1, -1});  // a 3D screen array for 2D elements
+  EXPECT_EQ(arrays_error(d, e), "arrays.json: $.heads[2][2]: an array, but a number is expected (arrays of another dimension?)");
+  d = good;
+  d["next"][0] = 1.5;
+  EXPECT_EQ(arrays_error(d, e), "arrays.json: $.next[0]: a fraction, but a whole number is expected");
+  d = good;
+  d.erase("heads");
+  EXPECT_EQ(arrays_error(d, e), "arrays.json: $: no \"heads\" key (the screen array C[nx][ny] of list heads)");
+  json nbs = own_dump(e, "nbs", testdata::book_grid());
+  nbs["rows"][0]["iy"] = 10;
+  EXPECT_EQ(arrays_error(nbs, e), "arrays.json: $.rows[0].iy: 10 is not a row of the grid (0..9)");
+  EXPECT_THROW(parse_arrays_json("{\"bodies\": []}", "scene.json"), Error);
+  EXPECT_THROW(parse_arrays_json("[1, 2]", "a.json"), Error);
+  try {
+    parse_arrays_json("{\n\"heads\": [1,\n", "a.json");
+    FAIL();
+  } catch (const Error& err) {
+    EXPECT_EQ(std::string(err.what()).rfind("a.json:3: JSON syntax error", 0), 0u) << err.what();
+  }
+}
+
+}  // namespace
+}  // namespace nbscope
