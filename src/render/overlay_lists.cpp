@@ -276,10 +276,11 @@ void draw_head_labels(const OverlayScene& s, const ViewFrame& v, LabelSpace& lab
     const auto at = [&](double dx_px, double dy_px) { return Vec2(anchor + v2(dx_px / ppm, dy_px / ppm)); };
     std::vector<Vec2> tries;
     if (s.grid != nullptr && row_list(l)) {
-      tries = {at(-(kRowNumbersPx + 0.5 * w), 0.0), at(0.5 * w - 3.0, 0.5 * h + kGapPx), at(0.5 * w - 3.0, -(0.5 * h + kGapPx))};
+      // Left of the row numbers; else under the square (a row's arcs to the right run above its middle).
+      tries = {at(-(kRowNumbersPx + 0.5 * w), 0.0), at(0.5 * w - 3.0, -(0.5 * h + kGapPx)), at(0.5 * w - 3.0, 0.5 * h + kGapPx)};
     } else if (s.grid != nullptr && l.cell[0] >= 0 && l.cell[1] >= 0) {
-      // In the cell's corner: right of the square, else under it.
-      tries = {at(kGapPx + 0.5 * w, 0.0), at(0.5 * w - 3.0, -(0.5 * h + kGapPx)), at(-(kGapPx + 0.5 * w), 0.0)};
+      // Above the square, along the cell's top edge (its arrow runs down into the cell), else beside it.
+      tries = {at(0.5 * w - 3.0, 0.5 * h + 4.0), at(kGapPx + 0.5 * w, 0.0), at(-(kGapPx + 0.5 * w), 0.0)};
     } else {
       tries = {at(-(kGapPx + 0.5 * w), 0.0), at(0.0, 0.5 * h + kGapPx), at(kGapPx + 0.5 * w, 0.0)};
     }
