@@ -26,8 +26,8 @@ namespace {
 constexpr double kZoomPerNotch = 1.2;
 // Pixels the mouse may move with the button down and still click (select) rather than pan.
 constexpr float kClickSlopPx = 4.0f;
-// Caption lines are at most this many characters (the legend's width).
-constexpr std::size_t kCaptionChars = 72;
+// Caption lines: as wide as the free view allows (ImGui's font: 7 px a character), within these.
+constexpr std::size_t kMinCaptionChars = 40, kMaxCaptionChars = 110;
 
 render::Vec2 v2(double x, double y) { return {static_cast<float>(x), static_cast<float>(y)}; }
 }  // namespace
@@ -179,7 +179,9 @@ void VerifyView::apply_focus() {
 void VerifyView::select_problem(int index) {
   const auto& problems = run_.verdict.problems;
   state_.selected_problem = index >= 0 && static_cast<std::size_t>(index) < problems.size() ? index : -1;
-  marks_ = render::verify_marks(run_.verdict, state_.selected_problem, kCaptionChars);
+  const double free_px = context_.width() - panel_insets().left - panel_insets().right - 80.0;
+  const auto chars = static_cast<std::size_t>(std::max(0.0, free_px / render::kCharPx));
+  marks_ = render::verify_marks(run_.verdict, state_.selected_problem, std::clamp(chars, kMinCaptionChars, kMaxCaptionChars));
 }
 
 std::vector<ElementId> VerifyView::problem_elements(int index) const {

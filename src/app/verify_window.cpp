@@ -96,9 +96,8 @@ int run_verify_gui(Args& args) {
     const std::string dir = tmp != nullptr && *tmp != '\0' ? tmp : "/tmp";
     view.screenshot = dir + "/nbscope-verify-" + std::filesystem::path(inputs.arrays_path).stem().string() + ".png";
   }
-  std::fprintf(stderr, "nbscope: no display: rendering the arrays check headless instead\n");
   const std::string summary = write_verify_screenshot(run, view);
-  std::fprintf(stderr, "nbscope: %s\n", summary.c_str());
+  std::fprintf(stderr, "nbscope: no display: rendered the arrays check headless instead\nnbscope: %s\n", summary.c_str());
   std::printf("screenshot: %s\n", std::filesystem::absolute(*view.screenshot).c_str());
   return run.verdict.problem_count > 0 ? 1 : 0;
 }
