@@ -26,6 +26,16 @@ usage:
       under xvfb-run); --back K then goes K frames back through the history first, each drawn,
       and says how long a frame took. Without a display it renders --frames N (default 120)
       headless into --screenshot (default $TMPDIR/nbscope-SCENE.png) and prints the path.
+  nbscope gui --input ELEMENTS.csv --arrays ARRAYS.json [--algorithm NAME] [--base 1] [--exact]
+              [grid flags] [--frames N --screenshot OUT.png] [--overlays SPEC] [--panels SPEC] [--select K]
+      Your heads and next arrays, checked as verify --arrays checks them, in the window: your
+      lists as arrow chains with their heads named (C[5][7]), every problem in red (the wrong
+      link, the elements at fault ringed, a cut list's end), the first problem selected and its
+      text in the legend. Problems panel: a click selects one and puts the camera on it ([ and ]
+      the previous/next); Lists panel: a click goes to the list; the hovered element's lists and
+      problems in a tooltip. Numbered as the file counts (--base 1: from 1). Panels: overlays,
+      problems, lists. Exit 0 right, 1 wrong. Without a display it renders headless into
+      --screenshot (default $TMPDIR/nbscope-verify-ARRAYS.png) and prints the path.
   nbscope pairs --input ELEMENTS.csv [--algorithm NAME] [--output PAIRS.csv] [--repeat K]
                 [--cell-size D] [--origin X,Y[,Z]] [--cells NX,NY[,NZ]] [--max-pairs M]
       Contact pairs of the elements (rows x,y,r or x,y,z,r) as CSV "i,j" (0-based, i < j, sorted),
