@@ -107,7 +107,9 @@ TEST(VerifyGui, BadFlagsAreOneLineAndExitTwo) {
   expect_one_line_error(shell(dir, gui + kArgs + " --screenshot x.png"), "--screenshot: needs --frames N");
   expect_one_line_error(shell(dir, gui + kArgs + " --panels problems,nonsense"), "--panels: 'nonsense' is not one of all, none, overlays, problems, lists");
   expect_one_line_error(shell(dir, gui + kArgs + " --select 10"), "--select: element 10 does not exist");
-  expect_one_line_error(shell(dir, gui + kArgs + " --book-numbering"), "--book-numbering: gui --arrays numbers as the arrays file does");
+  expect_one_line_error(shell(dir, gui + "--input " + kNine + " --arrays '" + kSource + "/assets/examples/nine_screen_bug.json' --book-numbering"),
+                        "--book-numbering: the arrays are drawn numbered as their file counts, from 0 here");
+  expect_one_line_error(shell(dir, nbscope() + " verify " + kArgs + " --step 3 --screenshot x.png"), "--step: does not apply to a verify run");
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
 }
 

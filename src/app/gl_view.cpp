@@ -1,9 +1,10 @@
-// Index: scene files | spec parsing (--overlays, --panels) | GlView: set-up, scene load, per step,
-// frame. The lists overlay's part is in gl_view_lists.cpp; the bodies and check sets drawn, in
-// gl_view_scene.cpp.
+// Index: scene files | GlView: set-up, scene load, per step, frame. The --overlays and --panels
+// specs are parsed in view_spec.hpp; the lists overlay's part is in gl_view_lists.cpp; the bodies
+// and check sets drawn, in gl_view_scene.cpp.
 #include "app/gl_view.hpp"
 
 #include "app/clock.hpp"
+#include "app/view_spec.hpp"
 
 #include <imgui.h>
 
@@ -15,7 +16,6 @@
 #include "core/error.hpp"
 #include "render/overlays.hpp"
 #include "render/shader.hpp"
-#include "app/view_spec.hpp"
 #include "ui/panels.hpp"
 #include "ui/scaling_panel.hpp"
 #include "ui/stepper_panels.hpp"

@@ -36,6 +36,10 @@ render::Vec2 v2(double x, double y) { return {static_cast<float>(x), static_cast
 
 VerifyView::VerifyView(render::GlContext& context, GLFWwindow* window, const VerifyArraysRun& run, const ViewOptions& options)
     : run_(run), context_(context), book_(run.user.base == 1) {
+  // The arrays are given whole (nothing to step), and numbered as their file counts.
+  if (options.step) throw Error("--step: does not apply to a verify run (the arrays are given whole, no operations to step)");
+  if (options.book_numbering && !book_)
+    throw Error("--book-numbering: the arrays are drawn numbered as their file counts, from 0 here (--base 1, or its \"base\" key, numbers from 1)");
   renderer_ = std::make_unique<render::Renderer>(render::resolve_shader_dir(options.shader_dir));
   imgui_ = std::make_unique<render::ImGuiLayer>(window);
   camera_.set_viewport(context.width(), context.height());

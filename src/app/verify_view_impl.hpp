@@ -29,7 +29,8 @@ class VerifyView {
   static constexpr int kSettleFrames = 5;
 
   // Loads the shaders (Error when missing), applies --overlays, --panels, --select, --lists and
-  // --camera (Error for an unknown name or element), selects the first problem and fits the camera.
+  // --camera (Error for an unknown name or element; --step, and --book-numbering on a file counting
+  // from 0, are refused), selects the first problem and fits the camera.
   // `context` must be current; `window` is null off-screen. `run` must outlive the view.
   VerifyView(render::GlContext& context, GLFWwindow* window, const VerifyArraysRun& run, const ViewOptions& options);
   ~VerifyView();

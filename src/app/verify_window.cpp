@@ -79,9 +79,6 @@ int run_verify_gui(Args& args) {
   for (const char* flag : {"--scene", "--inject-fault", "--history-mb", "--back"})
     if (args.has(flag))
       throw Error(std::string(flag) + ": does not apply to gui --arrays (it draws the arrays on --input's elements, no scene runs)");
-  if (view.step) throw Error("--step: does not apply to gui --arrays (the arrays are given whole, there are no operations to step)");
-  if (view.book_numbering)
-    throw Error("--book-numbering: gui --arrays numbers as the arrays file does (--base 1, or its \"base\" key)");
   if (auto p = args.positional()) throw Error(*p + ": unexpected argument");
   args.finish();
   if (view.screenshot && !view.frames) throw Error("--screenshot: needs --frames N (how many frames to draw first)");
