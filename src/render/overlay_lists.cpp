@@ -273,12 +273,17 @@ void draw_head_labels(const OverlayScene& s, const ViewFrame& v, LabelSpace& lab
     if (l.head_label.empty() || !drawn(s, l, false)) continue;
     const Vec2 anchor = head_anchor(l, s.grid, *s.elements, v.free, ppm);
     const double w = label_width(l.head_label.size()), h = kLinePx;
+    // Only where there is room: a row's band at least a line high, a cell as wide as its name, a
+    // list without a cell (a tree leaf) where its first element is large enough for its id.
+    const bool row = s.grid != nullptr && row_list(l), cell = s.grid != nullptr && l.cell[0] >= 0 && l.cell[1] >= 0;
+    const double cell_px = s.grid != nullptr ? s.grid->cell_size * ppm : 0.0;
+    if (row ? cell_px < h + 1.0 : cell ? cell_px < w + 6.0 : s.elements->r[l.chain.front()] * ppm < 7.0) continue;
     const auto at = [&](double dx_px, double dy_px) { return Vec2(anchor + v2(dx_px / ppm, dy_px / ppm)); };
     std::vector<Vec2> tries;
-    if (s.grid != nullptr && row_list(l)) {
+    if (row) {
       // Left of the row numbers; else under the square (a row's arcs to the right run above its middle).
       tries = {at(-(kRowNumbersPx + 0.5 * w), 0.0), at(0.5 * w - 3.0, -(0.5 * h + kGapPx)), at(0.5 * w - 3.0, 0.5 * h + kGapPx)};
-    } else if (s.grid != nullptr && l.cell[0] >= 0 && l.cell[1] >= 0) {
+    } else if (cell) {
       // Above the square, along the cell's top edge (its arrow runs down into the cell), else beside it.
       tries = {at(0.5 * w - 3.0, 0.5 * h + 4.0), at(kGapPx + 0.5 * w, 0.0), at(-(kGapPx + 0.5 * w), 0.0)};
     } else {

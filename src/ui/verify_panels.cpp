@@ -145,7 +145,8 @@ std::string list_line(const verify::UserArrays& user, const verify::WalkedList& 
   for (std::size_t i = 0; i < walked.chain.size() && i < max_ids; ++i)
     out += " " + std::string(i == 0 ? "" : "-> ") + std::to_string(walked.chain[i] + base);
   if (walked.chain.size() > max_ids) out += " -> ...";
-  out += walked.cut ? " -> (cut)" : " -> -1";
+  // A walk cut at once (the head names an element seen before) has no arrow to follow.
+  out += walked.cut ? (walked.chain.empty() ? " (cut)" : " -> (cut)") : (walked.chain.empty() ? " -1" : " -> -1");
   return out;
 }
 

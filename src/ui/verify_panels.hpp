@@ -61,7 +61,7 @@ struct VerifyPanelsLayout {
 // The insets the open panels take (before their first frame, and after it: the column is fixed).
 [[nodiscard]] render::ScreenInsets verify_panel_insets(const VerifyUiState& state);
 // One list as the book writes it, ids shown with `base`: "C[5][7]: 4 -> 2 -> 1 -> -1" (at most
-// `max_ids` ids, then "..."); a cut list ends in "-> (cut)".
+// `max_ids` ids, then "..."); a cut list ends in "-> (cut)" (a walk cut at once: "C[5][7]: (cut)").
 [[nodiscard]] std::string list_line(const verify::UserArrays& user, const verify::WalkedList& walked,
                                     const render::TracedList& drawn, int base, std::size_t max_ids = 12);
 // Draws the open panels (between ImGui::NewFrame and ImGui::Render) on a display of `width` x `height`.
