@@ -41,9 +41,10 @@ std::int64_t row_of(const TracedList& l, const Grid* g, const Elements& e) {
   return g != nullptr ? g->cell(e.y[l.chain.front()], 1) : -1;
 }
 
-// A verify problem's wrong link along a chain: red, over a white band when it is the selected problem.
+// A verify problem's wrong link along a chain: red, over a white band when it is the selected problem
+// (a layer below: within a layer lines come after the arrows' heads and would cover them).
 void draw_wrong_link(const OverlayScene& s, int problem, Vec2 a, Vec2 b, bool head, DrawSink& sink) {
-  if (s.verify != nullptr && problem == s.verify->selected) sink.line(Layer::Overlay, a, b, palette::kSelection, 8.0f);
+  if (s.verify != nullptr && problem == s.verify->selected) sink.line(Layer::Bodies, a, b, palette::kSelection, 8.0f);
   if (head) sink.arrow(Layer::Overlay, a, b, palette::kViolation, 3.0f);
   else sink.line(Layer::Overlay, a, b, palette::kViolation, 3.0f);
 }

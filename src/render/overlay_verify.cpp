@@ -69,7 +69,7 @@ void draw_verify(const OverlayScene& s, const ViewFrame& v, const std::vector<bo
                   kMinRingPx + 5.0f);
     }
     if (!drawn_along_chain(static_cast<std::size_t>(m.selected)))
-      if (const auto ends = link_ends(p)) sink.line(Layer::Top, (*ends)[0], (*ends)[1], palette::kSelection, 8.0f);
+      if (const auto ends = link_ends(p)) sink.line(Layer::Overlay, (*ends)[0], (*ends)[1], palette::kSelection, 8.0f);
   }
   // Every problem: its wrong link (unless the lists drew it along the chain) and its elements in red.
   for (std::size_t i = 0; i < m.problems.size(); ++i) {
