@@ -34,6 +34,12 @@ std::optional<std::string> Args::value(const std::string& name) {
   return std::nullopt;
 }
 
+bool Args::has(const std::string& name) const {
+  for (std::size_t i = 0; i < args_.size(); ++i)
+    if (!used_[i] && (args_[i] == name || args_[i].rfind(name + "=", 0) == 0)) return true;
+  return false;
+}
+
 bool Args::flag(const std::string& name) {
   for (std::size_t i = 0; i < args_.size(); ++i) {
     if (!used_[i] && args_[i] == name) {
@@ -102,7 +108,8 @@ void Args::finish() const {
 
 const std::vector<std::pair<const char*, std::vector<const char*>>>& command_options() {
   static const std::vector<std::pair<const char*, std::vector<const char*>>> table = {
-      {"gui", {"--scene", "--algorithm", "--inject-fault", "--frames", "--history-mb", "--back", NBSCOPE_VIEW_OPTIONS}},
+      {"gui", {"--scene", "--algorithm", "--inject-fault", "--frames", "--history-mb", "--back", "--input", "--arrays",
+               "--cell-size", "--origin", "--cells", "--base", "--exact", NBSCOPE_VIEW_OPTIONS}},
       {"headless", {"--scene", "--frames", "--algorithm", "--report", "--inject-fault", "--brute-limit", "--quiet",
                     "--record", "--stop-at-violation", "--rewind", "--history-mb", "--back", "--violation", "--gl",
                     "--scaling", "--layout", "--n", "--points-per-decade", NBSCOPE_VIEW_OPTIONS}},

@@ -17,6 +17,8 @@ class Args {
   bool flag(const std::string& name);
   // The value of `--name VALUE` or `--name=VALUE`; Error when the value is missing.
   std::optional<std::string> value(const std::string& name);
+  // True when `--name` or `--name=VALUE` is among the arguments not yet taken; takes nothing.
+  [[nodiscard]] bool has(const std::string& name) const;
   // Like value(), parsed as an integer in [min, max]; Error names the flag otherwise.
   std::optional<long long> integer(const std::string& name, long long min, long long max);
   // Like value(), parsed as a finite double.

@@ -18,6 +18,7 @@
 #include "app/headless_view.hpp"
 #include "app/recorded_pairs.hpp"
 #include "app/replay.hpp"
+#include "app/verify_view.hpp"
 #include "app/view_options.hpp"
 #include "check/faults.hpp"
 #include "core/error.hpp"
@@ -443,6 +444,8 @@ int run_replay_window(const HeadlessOptions& o) {
 // ---- run_gui ----------------------------------------------------------------------------------
 
 int run_gui(Args& args) {
+  // Someone's own arrays on their elements (--input, --arrays): the verify window (verify_window.cpp).
+  if (args.has("--input") || args.has("--arrays")) return run_verify_gui(args);
   const GuiOptions o = parse_gui_options(args);
   const bool scripted = o.frames.has_value();
   // Settings only for interactive sessions: scripted runs must give the same picture everywhere.

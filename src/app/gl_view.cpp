@@ -1,10 +1,11 @@
-// Index: scene files | spec parsing (--overlays, --panels) | GlView: set-up, scene load, per step,
-// frame. The lists overlay's part is in gl_view_lists.cpp; the bodies and check sets drawn, in
-// gl_view_scene.cpp.
+// Index: scene files | GlView: set-up, scene load, per step, frame. The --overlays and --panels
+// specs are parsed in view_spec.hpp; the lists overlay's part is in gl_view_lists.cpp; the bodies
+// and check sets drawn, in gl_view_scene.cpp.
 #include "app/gl_view.hpp"
 
 #include "app/clock.hpp"
 #include "app/recorded_pairs.hpp"
+#include "app/view_spec.hpp"
 
 #include <imgui.h>
 
@@ -38,44 +39,6 @@ constexpr double kLegendReservePx = 44.0;
 render::ScreenInsets with_legend(render::ScreenInsets insets) {
   insets.bottom += kLegendReservePx;
   return insets;
-}
-
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-// A spec is a comma list: "all", "none", "name" (from none: only the names listed), "+name", "-name".
-template <class SetAll, class Set>
-void apply_spec(const std::string& flag, const std::string& spec, const std::vector<std::string>& names,
-                SetAll set_all, Set set) {
-  if (spec.empty()) return;
-  bool first = true;
-  std::size_t start = 0;
-  while (start <= spec.size()) {
-    const std::size_t comma = std::min(spec.find(',', start), spec.size());
-    std::string token = lower(spec.substr(start, comma - start));
-    start = comma + 1;
-    if (token.empty()) continue;
-    if (token == "all" || token == "none") {
-      set_all(token == "all");
-    } else {
-      bool on = true;
-      if (token[0] == '+' || token[0] == '-') {
-        on = token[0] == '+';
-        token.erase(0, 1);
-      } else if (first) {
-        set_all(false);
-      }
-      if (std::find(names.begin(), names.end(), token) == names.end()) {
-        std::string known;
-        for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
-        throw Error(flag + ": '" + token + "' is not one of all, none, " + known);
-      }
-      set(token, on);
-    }
-    first = false;
-  }
 }
 
 }  // namespace

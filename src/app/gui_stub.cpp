@@ -3,6 +3,7 @@
 #include "app/commands.hpp"
 #include "app/headless_view.hpp"
 #include "app/replay.hpp"
+#include "app/verify_view.hpp"
 #include "core/error.hpp"
 
 namespace nbscope {
@@ -14,6 +15,16 @@ std::unique_ptr<HeadlessView> make_headless_view(const ViewOptions&, const Frame
 bool replay_window_available() { return false; }
 
 int run_replay_window(const HeadlessOptions&) { throw Error("replay: this nbscope was built without the window (NBSCOPE_GUI=OFF)"); }
+
+std::string write_verify_screenshot(const VerifyArraysRun&, const ViewOptions&) {
+  throw Error("--screenshot: this nbscope was built without rendering (NBSCOPE_GUI=OFF)");
+}
+
+int run_verify_window(const VerifyArraysRun&, const ViewOptions&) {
+  throw Error("gui: this nbscope was built without the window (NBSCOPE_GUI=OFF)");
+}
+
+int run_verify_gui(Args&) { throw Error("gui: this nbscope was built without the window (NBSCOPE_GUI=OFF)"); }
 
 int run_gui(Args&) { throw Error("gui: this nbscope was built without the window (NBSCOPE_GUI=OFF)"); }
 

@@ -26,6 +26,17 @@ usage:
       under xvfb-run); --back K then goes K frames back through the history first, each drawn,
       and says how long a frame took. Without a display it renders --frames N (default 120)
       headless into --screenshot (default $TMPDIR/nbscope-SCENE.png) and prints the path.
+  nbscope gui --input ELEMENTS.csv --arrays ARRAYS.json [--algorithm NAME] [--base 1] [--exact]
+              [--cell-size D] [--origin X,Y] [--cells NX,NY] [--frames N --screenshot OUT.png]
+              [--overlays SPEC] [--panels SPEC] [--select K]
+      Your heads and next arrays, checked as verify --arrays checks them, in the window: your
+      lists as arrow chains with their heads named (C[5][7]), every problem in red (the wrong
+      link, the elements at fault ringed, a cut list's end), the first problem selected and its
+      text in the legend. Problems panel: a click selects one and puts the camera on it ([ and ]
+      the previous/next); Lists panel: a click goes to the list; the hovered element's lists and
+      problems in a tooltip. Numbered as the file counts (--base 1: from 1). Panels: overlays,
+      problems, lists. Exit 0 right, 1 wrong. Without a display it renders headless into
+      --screenshot (default $TMPDIR/nbscope-verify-ARRAYS.png) and prints the path.
   nbscope pairs --input ELEMENTS.csv [--algorithm NAME] [--output PAIRS.csv] [--repeat K]
                 [--cell-size D] [--origin X,Y[,Z]] [--cells NX,NY[,NZ]] [--max-pairs M]
       Contact pairs of the elements (rows x,y,r or x,y,z,r) as CSV "i,j" (0-based, i < j, sorted),
@@ -45,17 +56,22 @@ usage:
       bounds and HEADs and next; sort: sorted cell keys and order; brute, box2d: counts only.
       --cells pins the number of cells per axis (the book's Fig. 3.15 is --cell-size 1
       --origin 0,0 --cells 10,10).
-  nbscope verify --input ELEMENTS.csv --pairs PAIRS.csv [--base 1] [--brute-limit N] [grid flags]
+  nbscope verify --input ELEMENTS.csv --pairs PAIRS.csv [--base 1] [--brute-limit N]
+                 [--cell-size D] [--origin X,Y[,Z]] [--cells NX,NY[,NZ]]
       Your contact pairs (one a line, i,j in either order) against brute force (sort above
       --brute-limit, default 2000): a summary line, then every missing, extra, duplicated,
       i == j and out-of-range pair with both elements' cells and distance - radii.
   nbscope verify --input ELEMENTS.csv --arrays ARRAYS.json [--algorithm screen|nbs|tree|sort]
-                 [--base 1] [--exact] [grid flags] [--screenshot OUT.png [--size WxH]]
+                 [--base 1] [--exact] [--cell-size D] [--origin X,Y[,Z]] [--cells NX,NY[,NZ]]
+                 [--screenshot OUT.png [--size WxH] [--overlays SPEC] [--panels SPEC] [--select K]
+                 [--lists F] [--camera X,Y,PPM] [--no-timings] [--shader-dir DIR] [--book-numbering]]
       Your heads and next arrays, in the schema dump writes ("base": 1 for 1-based), against
       the book: every list ends (a cycle or a bad index is found, never followed), every
       element on one list, the list of its own cell; --exact also the book's order. The first
       problem in the book's terms (E[7] = 5, but element 5 lies in cell (2,7) ...), then the
-      count. --screenshot draws your lists with the wrong links red. Exit 0 right, 1 wrong.
+      count. --screenshot draws your lists with the wrong links red, as gui --arrays shows them
+      (its rendering flags as below; numbered as the file counts, so --book-numbering only with
+      --base 1; --step does not apply). Exit 0 right, 1 wrong.
   nbscope scaling [--algorithm NAME[,NAME...]|all] [--layout NAME[,NAME...]] [--n MIN..MAX]
                   [--points-per-decade K] [--output OUT.csv] [--quiet]
       Times every detector named (default all) on generated layouts (default loose; also dense,

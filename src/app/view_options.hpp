@@ -35,6 +35,7 @@ struct ViewOptions {
   bool book_numbering = false;            // --book-numbering: the stepper numbers from 1, as the book
   std::string lists;                      // --lists all|selected|row: the lists overlay's filter ("" = by size)
   std::optional<ScalingShown> scaling;    // headless --scaling: the Scaling panel open on these rows
+  std::optional<std::int64_t> frames;     // gui --frames N of a scripted window (set by the command, not parse_view_options)
 };
 
 // Takes the rendering flags out of `args`; `headless` also accepts --gl. Error names a bad value.

@@ -27,6 +27,7 @@ struct TracedList {
   bool secondary = false;        // a copy built for a neighbour row (NBS B[1]: x-lists of row iy-1)
   std::vector<ElementId> chain;  // head first, in the order of the next array
   bool cut = false;              // the walk stopped after N elements (the next array had a cycle)
+  std::string head_label;        // drawn beside the head when given, as the book names it ("C[5][7]"; verify's lists)
 };
 
 // True when slot `slot` of heads array `heads` holds a copy of the row below: NBS's B[2][nx] keeps

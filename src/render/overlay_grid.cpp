@@ -219,6 +219,12 @@ void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& 
     lines.push_back(std::move(keys));
   }
   for (const std::string& c : s.lists_caption) lines.push_back({{{c, palette::kText}}});
+  if (s.verify != nullptr) {
+    // Someone's arrays checked: what the red means, then the selected problem's text (or the all-clear).
+    if (!s.verify->ok) lines.push_back({{{"wrong link", palette::kViolation, true}, {"red rings: elements at fault", palette::kViolationText}}});
+    for (const std::string& c : s.verify->caption)
+      lines.push_back({{{c, s.verify->ok ? palette::kConfirmedPair : palette::kViolationText}}});
+  }
   if (lines.empty()) return;
 
   constexpr double kPad = 6.0, kSwatchPx = 12.0, kArrowPx = 18.0, kGapPx = 10.0;

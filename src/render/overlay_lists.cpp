@@ -10,17 +10,9 @@
 namespace nbscope::render::detail {
 
 namespace {
-
 // A row's list (NBS y-list): its pushes fix the row only.
 bool row_list(const TracedList& l) { return l.cell[0] < 0 && l.cell[1] >= 0 && l.cell[2] < 0; }
-
-// The row a list belongs to: its cell's, the row it was built for (B[1] copies), else its head
-// element's (tree leaves, which carry no cell).
-std::int64_t row_of(const TracedList& l, const Grid* g, const Elements& e) {
-  if (l.secondary) return l.phase_index;
-  if (l.cell[1] >= 0) return l.cell[1];
-  return g != nullptr ? g->cell(e.y[l.chain.front()], 1) : -1;
-}
+}  // namespace
 
 // Where a list's head is drawn: a row's left of the grid, in the gap before the row numbers (right
 // of the row numbers at the view's left edge when the grid's is out of it); a cell's in a corner of the cell (top left for a
@@ -39,14 +31,50 @@ Vec2 head_anchor(const TracedList& l, const Grid* grid, const Elements& e, const
   return v2(e.x[k] - off, e.y[k] + off);
 }
 
+namespace {
+
+// The row a list belongs to: its cell's, the row it was built for (B[1] copies), else its head
+// element's (tree leaves, which carry no cell).
+std::int64_t row_of(const TracedList& l, const Grid* g, const Elements& e) {
+  if (l.secondary) return l.phase_index;
+  if (l.cell[1] >= 0) return l.cell[1];
+  return g != nullptr ? g->cell(e.y[l.chain.front()], 1) : -1;
+}
+
+// A verify problem's wrong link along a chain: red, over a white band when it is the selected problem
+// (a layer below: within a layer lines come after the arrows' heads and would cover them).
+void draw_wrong_link(const OverlayScene& s, int problem, Vec2 a, Vec2 b, bool head, DrawSink& sink) {
+  if (s.verify != nullptr && problem == s.verify->selected) sink.line(Layer::Bodies, a, b, palette::kSelection, 8.0f);
+  if (head) sink.arrow(Layer::Overlay, a, b, palette::kViolation, 3.0f);
+  else sink.line(Layer::Overlay, a, b, palette::kViolation, 3.0f);
+}
+
+// A list's end from `from` to `to`: a bar across it (-1), or, where the walk was cut (a cycle, an
+// index out of range, an element seen before), the stub in red with a cross: the list never ends.
+void draw_end(Vec2 from, Vec2 to, bool cut, Rgba colour, float width, double ppm, DrawSink& sink) {
+  const Vec2 dir = (to - from).normalized();
+  if (cut) {
+    const float c = float(4.0 / ppm);
+    sink.line(Layer::Overlay, from, to, palette::kViolation, 2.5f);
+    sink.line(Layer::Top, to - Vec2(c, c), to + Vec2(c, c), palette::kViolation, 2.5f);
+    sink.line(Layer::Top, to - Vec2(c, -c), to + Vec2(c, -c), palette::kViolation, 2.5f);
+    return;
+  }
+  const Vec2 bar = Vec2(-dir.y(), dir.x()) * float(3.5 / ppm);
+  sink.line(Layer::Overlay, from, to, colour, width);
+  sink.line(Layer::Overlay, to - bar, to + bar, colour, width);
+}
+
 // A y-list longer than this is drawn as a rail: its arcs would run together.
 constexpr std::size_t kMaxArcLinks = 12;
 
 // A long y-list as the book writes it, along its row's band: head -> slot -> slot -> ... -> end,
 // evenly spaced left to right in list order, each slot joined to its element by a thin leader
 // (bold for the selected element). The order reads off the rail; the leaders say where each is.
+// `wrong(from, to)` names the problem whose wrong link that is (-1: none; from -1: the head).
+template <class WrongLink>
 void draw_rail(const OverlayScene& s, const TracedList& l, const ViewFrame& v, Rgba colour, float width, bool active,
-               LabelSpace& labels, DrawSink& sink) {
+               const WrongLink& wrong, LabelSpace& labels, DrawSink& sink) {
   const Elements& e = *s.elements;
   const Grid& g = *s.grid;
   const double d = g.cell_size, ppm = v.ppm;
@@ -63,8 +91,10 @@ void draw_rail(const OverlayScene& s, const TracedList& l, const ViewFrame& v, R
     const bool bold = k == s.selected;
     const Vec2 gap = Vec2(float(std::min(3.0 / ppm, 0.3 * step)), 0.0f);
     if (segment_in_view(v.view, prev, slot)) {
+      const int bad = wrong(i == 0 ? ElementId{-1} : l.chain[i - 1], k);
       if (active) sink.line(Layer::Overlay, prev + gap, slot - gap, palette::kActiveList, 7.0f);
-      sink.arrow(Layer::Overlay, prev + gap, slot - gap, colour, width);
+      if (bad >= 0) draw_wrong_link(s, bad, prev + gap, slot - gap, true, sink);
+      else sink.arrow(Layer::Overlay, prev + gap, slot - gap, colour, width);
     }
     const Vec2 c = centre_of(e, k);
     if (segment_in_view(v.view, slot, c))
@@ -82,10 +112,9 @@ void draw_rail(const OverlayScene& s, const TracedList& l, const ViewFrame& v, R
     }
     prev = slot;
   }
-  // The end (-1): a bar after the last slot.
+  // The end (-1): a bar after the last slot (a red cross where the walk was cut).
   const Vec2 end = prev + Vec2(float(std::min(8.0 / ppm, 0.5 * step)), 0.0f);
-  sink.line(Layer::Overlay, prev, end, colour, width);
-  sink.line(Layer::Overlay, end - Vec2(0.0f, float(3.5 / ppm)), end + Vec2(0.0f, float(3.5 / ppm)), colour, width);
+  draw_end(prev, end, l.cut, colour, width, ppm, sink);
 }
 
 bool kept_by_filter(const OverlayScene& s, const TracedList& l) {
@@ -100,9 +129,19 @@ bool kept_by_filter(const OverlayScene& s, const TracedList& l) {
   return true;
 }
 
+// True when the overlay draws list `l` (`active`: the one the stepper is writing).
+bool drawn(const OverlayScene& s, const TracedList& l, bool active) {
+  const auto n = static_cast<ElementId>(s.elements->size());
+  if (l.chain.empty()) return false;
+  if (std::any_of(l.chain.begin(), l.chain.end(), [n](ElementId k) { return k < 0 || k >= n; })) return false;
+  if (!active && l.secondary && (!s.focus_row || l.phase_index != *s.focus_row)) return false;
+  return active || kept_by_filter(s, l);
+}
+
 }  // namespace
 
-void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFrame& v, LabelSpace& labels, DrawSink& sink) {
+void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFrame& v, LabelSpace& labels, DrawSink& sink,
+                std::vector<bool>* marked_links) {
   const Elements& e = *s.elements;
   const double ppm = v.ppm;
   const auto n = static_cast<ElementId>(e.size());
@@ -112,19 +151,38 @@ void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFram
   if (s.active_list)
     for (std::size_t i = 0; i < lists.size(); ++i)
       if (lists[i].heads_array == s.active_list->first && lists[i].slot == s.active_list->second) active = static_cast<std::ptrdiff_t>(i);
+  // A verify run's wrong links, by the list they leave: drawn in red where the chain takes them.
+  std::vector<std::vector<int>> marks_of(s.verify != nullptr ? lists.size() : 0);
+  if (s.verify != nullptr) {
+    for (std::size_t p = 0; p < s.verify->problems.size(); ++p) {
+      const ProblemMark& m = s.verify->problems[p];
+      if (m.link && m.list >= 0 && static_cast<std::size_t>(m.list) < lists.size())
+        marks_of[static_cast<std::size_t>(m.list)].push_back(static_cast<int>(p));
+    }
+    if (marked_links != nullptr) marked_links->assign(s.verify->problems.size(), false);
+  }
   for (std::size_t i = 0; i < lists.size(); ++i) {
     const TracedList& l = lists[i];
     const bool is_active = static_cast<std::ptrdiff_t>(i) == active;
-    if (l.chain.empty()) continue;
-    if (std::any_of(l.chain.begin(), l.chain.end(), [n](ElementId k) { return k < 0 || k >= n; })) continue;
-    if (!is_active && l.secondary && (!s.focus_row || l.phase_index != *s.focus_row)) continue;
-    if (!is_active && !kept_by_filter(s, l)) continue;
+    if (!drawn(s, l, is_active)) continue;
     const bool selected = s.selected >= 0 && std::find(l.chain.begin(), l.chain.end(), s.selected) != l.chain.end();
     // With a selection (or a list being written), the other lists step back.
     const bool step_back = (s.selected >= 0 && !selected) || (active >= 0 && !is_active);
     const Rgba colour = step_back ? list_colour(l.kind, l.secondary).with_alpha(90) : list_colour(l.kind, l.secondary);
     const float width = is_active ? 3.0f : selected ? 2.5f : 1.5f;
     const bool arcs = s.grid != nullptr && row_list(l);
+    // The problem whose wrong link is from -> to on this list (from -1: its head), or -1.
+    const auto wrong = [&](ElementId from, ElementId to) {
+      if (marks_of.empty()) return -1;
+      for (const int p : marks_of[i]) {
+        const auto& link = *s.verify->problems[static_cast<std::size_t>(p)].link;
+        if (link.first != from || link.second != to) continue;
+        if (marked_links != nullptr) (*marked_links)[static_cast<std::size_t>(p)] = true;
+        return p;
+      }
+      return -1;
+    };
+    int wrong_here = -1;  // the problem whose wrong link is being drawn
     const double d = s.grid != nullptr ? s.grid->cell_size : 0.0;
     const double band_lo = arcs ? s.grid->origin[1] + d * l.cell[1] : 0.0, band_hi = band_lo + d;
     // The list's widest step: arc heights spread over the band by reach relative to it.
@@ -136,6 +194,10 @@ void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFram
     bool bold_link = false;  // the link being drawn touches the selected element
     const auto segment = [&](Vec2 a, Vec2 b, bool head) {
       if (!segment_in_view(v.view, a, b)) return;
+      if (wrong_here >= 0) {
+        draw_wrong_link(s, wrong_here, a, b, head, sink);
+        return;
+      }
       if (is_active || bold_link) sink.line(Layer::Overlay, a, b, palette::kActiveList, bold_link ? 5.0f : 7.0f);
       if (head) sink.arrow(Layer::Overlay, a, b, colour, width);
       else sink.line(Layer::Overlay, a, b, colour, width);
@@ -170,7 +232,7 @@ void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFram
       segment(prev, at(t1), true);
     };
     if (arcs && l.chain.size() > kMaxArcLinks) {
-      draw_rail(s, l, v, colour, width, is_active, labels, sink);
+      draw_rail(s, l, v, colour, width, is_active, wrong, labels, sink);
       continue;
     }
     // The head: a small square, then an arrow to the first element.
@@ -182,6 +244,7 @@ void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFram
       const Vec2 c = centre_of(e, k);
       const auto r = static_cast<float>(e.r[k]);
       bold_link = s.selected >= 0 && (k == s.selected || prev_k == s.selected);
+      wrong_here = wrong(prev_k, k);
       link(prev, prev_r, c, r);
       prev_k = k;
       prev = c;
@@ -191,11 +254,7 @@ void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFram
     const Vec2 stub_dir = Vec2(0.6f, -0.8f);
     const Vec2 stub_from = prev + stub_dir * (0.45f * prev_r);
     const Vec2 stub_to = prev + stub_dir * (0.45f * prev_r + float(9.0 / ppm));
-    if (segment_in_view(v.view, stub_from, stub_to)) {
-      const Vec2 bar = Vec2(-stub_dir.y(), stub_dir.x()) * float(3.5 / ppm);
-      sink.line(Layer::Overlay, stub_from, stub_to, colour.with_alpha(200), width);
-      sink.line(Layer::Overlay, stub_to - bar, stub_to + bar, colour.with_alpha(200), width);
-    }
+    if (segment_in_view(v.view, stub_from, stub_to)) draw_end(stub_from, stub_to, l.cut, colour.with_alpha(200), width, ppm, sink);
   }
   // The pair the stepper is testing, coloured by the test's result.
   if (s.tested_pair) {
@@ -203,6 +262,36 @@ void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFram
     if (p.i >= 0 && p.j >= 0 && p.i < n && p.j < n)
       sink.line(Layer::Top, centre_of(e, p.i), centre_of(e, p.j), s.tested_contact ? palette::kConfirmedPair : palette::kTextDim,
                 s.tested_contact ? 4.0f : 2.5f);
+  }
+}
+
+void draw_head_labels(const OverlayScene& s, const ViewFrame& v, LabelSpace& labels, DrawSink& sink) {
+  const double ppm = v.ppm;
+  constexpr double kGapPx = 5.0;
+  // Left of the row numbers, which sit kHeadGapPx (16 px) left of the grid, two digits wide or so.
+  constexpr double kRowNumbersPx = 36.0;
+  for (const TracedList& l : *s.lists) {
+    if (l.head_label.empty() || !drawn(s, l, false)) continue;
+    const Vec2 anchor = head_anchor(l, s.grid, *s.elements, v.free, ppm);
+    const double w = label_width(l.head_label.size()), h = kLinePx;
+    // Only where there is room: a row's band at least a line high, a cell as wide as its name, a
+    // list without a cell (a tree leaf) where its first element is large enough for its id.
+    const bool row = s.grid != nullptr && row_list(l), cell = s.grid != nullptr && l.cell[0] >= 0 && l.cell[1] >= 0;
+    const double cell_px = s.grid != nullptr ? s.grid->cell_size * ppm : 0.0;
+    if (row ? cell_px < h + 1.0 : cell ? cell_px < w + 6.0 : s.elements->r[l.chain.front()] * ppm < 7.0) continue;
+    const auto at = [&](double dx_px, double dy_px) { return Vec2(anchor + v2(dx_px / ppm, dy_px / ppm)); };
+    std::vector<Vec2> tries;
+    if (row) {
+      // Left of the row numbers; else under the square (a row's arcs to the right run above its middle).
+      tries = {at(-(kRowNumbersPx + 0.5 * w), 0.0), at(0.5 * w - 3.0, -(0.5 * h + kGapPx)), at(0.5 * w - 3.0, 0.5 * h + kGapPx)};
+    } else if (cell) {
+      // Above the square, along the cell's top edge (its arrow runs down into the cell), else beside it.
+      tries = {at(0.5 * w - 3.0, 0.5 * h + 4.0), at(kGapPx + 0.5 * w, 0.0), at(-(kGapPx + 0.5 * w), 0.0)};
+    } else {
+      tries = {at(-(kGapPx + 0.5 * w), 0.0), at(0.0, 0.5 * h + kGapPx), at(kGapPx + 0.5 * w, 0.0)};
+    }
+    for (const Vec2& t : tries)
+      if (label_inside(v.free, t, w, h, ppm) && labels.text(t, l.head_label.c_str(), list_colour(l.kind, l.secondary), sink)) break;
   }
 }
 

@@ -1,6 +1,7 @@
 // nbscope render (private to the overlay files): small geometry helpers and the parts of
 // draw_scene that live in files of their own — the grid with its heat map and legend
-// (overlay_grid.cpp) and the singly connected lists (overlay_lists.cpp).
+// (overlay_grid.cpp), the singly connected lists (overlay_lists.cpp) and a verify run's red marks
+// (overlay_verify.cpp).
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -55,7 +56,19 @@ void draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts& coun
 // The lists the filter keeps — y-lists as arcs within their row's band, long ones as a rail of slots
 // in list order along it (numbered when there is room, in `labels`) — the stepper's list and pair
 // highlighted.
-void draw_lists(const OverlayScene& s, const OverlayFlags& f, const ViewFrame& v, LabelSpace& labels, DrawSink& sink);
+// A verify run's wrong links that lie along a drawn chain are drawn there, in red; `marked_links`
+// (when given) gets true for each such problem.
+void draw_lists(const OverlayScene& s, const OverlayFlags& f, const ViewFrame& v, LabelSpace& labels, DrawSink& sink,
+                std::vector<bool>* marked_links = nullptr);
+// A verify run's marks (s.verify): the wrong links the lists did not draw (straight red arrows,
+// from the list's head when the link leaves it), every problem's elements ringed in red, and the
+// selected problem's elements, cells and link highlighted like a selection.
+void draw_verify(const OverlayScene& s, const ViewFrame& v, const std::vector<bool>& marked_links, DrawSink& sink);
+// The heads' names of the lists drawn (TracedList::head_label: a verify run's "C[5][7]"), beside their
+// squares and clear of every label placed before (call after the ids: those matter more).
+void draw_head_labels(const OverlayScene& s, const ViewFrame& v, LabelSpace& labels, DrawSink& sink);
+// Where a list's head is drawn (its square; the lists overlay's arrows start there).
+Vec2 head_anchor(const TracedList& l, const Grid* grid, const Elements& e, const WorldRect& free, double ppm);
 // The legend in the free view's lower right corner: the cell shading or heat map, the list kinds
 // drawn and the lists caption; its box is reserved in `labels`.
 void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& stats, const ViewFrame& v,

@@ -89,7 +89,7 @@ void draw_bodies(const OverlayScene& s, const WorldRect& view, double ppm, DrawS
       if (!in_view(view, b.centre.x(), b.centre.y(), b.radius)) continue;
       sink.circle(Layer::Bodies, b.centre, b.radius, fill, outline, 1.0f);
       // A spoke shows the rotation, once it is long enough to see (a software rasterizer pays per primitive).
-      if (b.radius * ppm < kMinDetailPx) continue;
+      if (!b.spoke || b.radius * ppm < kMinDetailPx) continue;
       const Vec2 tip = b.centre + b.radius * Vec2(std::cos(b.angle), std::sin(b.angle));
       sink.line(Layer::Bodies, b.centre, tip, outline.with_alpha(150), 1.0f);
     } else if (b.count >= 3 && b.first + b.count <= s.shape_points.size()) {
@@ -290,11 +290,14 @@ void draw_scene(const OverlayScene& s, const OverlayFlags& f, const Camera& came
     }
   }
   if (confirmed) draw_pair_list(e, s.checks->confirmed, view, ppm, palette::kConfirmedPair, 1.5f, Layer::Overlay, sink);
-  if (f.lists && s.lists != nullptr) draw_lists(s, f, v, labels, sink);
+  std::vector<bool> marked_links;  // the problems whose wrong link the lists drew (in red, along their chain)
+  if (f.lists && s.lists != nullptr) draw_lists(s, f, v, labels, sink, &marked_links);
+  if (s.verify != nullptr) draw_verify(s, v, marked_links, sink);
   draw_selection(s, view, ppm, sink);
   if (f.checks && s.checks != nullptr) draw_violations(e, s.checks->violations, sink);
   if (s.focus_pair) draw_focus_pair(s, sink);
   if (f.ids || f.lists) draw_ids(e, view, ppm, s.selected, s.book_numbering, labels, sink);
+  if (f.lists && s.lists != nullptr) draw_head_labels(s, v, labels, sink);
   if (s.drag) sink.line(Layer::Top, (*s.drag)[0], (*s.drag)[1], palette::kDragLine, 1.5f);
 }
 

@@ -4,7 +4,8 @@
 // results, the selection, trails and cell-change flashes. No GL here: a recorder sees the same calls.
 //
 // Index: ShapeDraw (bodies) | CheckDraw | OverlayFlags (+ keys) | ListFilter | OverlayScene | draw_scene.
-// The grid, its heat map and the legend are drawn in overlay_grid.cpp, the lists in overlay_lists.cpp.
+// The grid, its heat map and the legend are drawn in overlay_grid.cpp, the lists in overlay_lists.cpp,
+// a verify run's red marks in overlay_verify.cpp.
 #pragma once
 #include <array>
 #include <optional>
@@ -20,6 +21,7 @@
 #include "render/draw_sink.hpp"
 #include "render/label_space.hpp"
 #include "render/lists.hpp"
+#include "render/verify_overlay.hpp"
 
 namespace nbscope::render {
 
@@ -37,6 +39,7 @@ struct ShapeDraw {
   std::uint32_t first = 0;
   std::uint32_t count = 0;
   ElementId element = -1;  // its bounding circle's element id
+  bool spoke = true;       // a circle's rotation drawn as a spoke (false: a plain element, no body behind it)
 };
 
 // The frame's check results, as pairs of element ids (i < j).
@@ -115,6 +118,9 @@ struct OverlayScene {
   ScreenInsets insets;         // pixels at the view's edges covered by panels: the grid's numbers and list heads keep clear
   std::span<const PixelRect> covered;  // the panels' windows and the menu bar: no label is drawn under them
   bool book_numbering = false;  // element ids and cell indices drawn from 1, as the book prints them
+  // Someone's own arrays checked (nbscope verify --arrays): `lists` are theirs, these are the
+  // problems found, drawn in red over them (wrong links, elements ringed, cut lists' ends).
+  const VerifyMarks* verify = nullptr;
 };
 
 // The colour of a list of kind `kind` ("y-list", "x-list", "cell list", ...), or of the row below's

@@ -45,6 +45,7 @@ inline constexpr Rgba kPair{250, 230, 90, 220};
 inline constexpr Rgba kConfirmedPair{90, 220, 120, 230};
 inline constexpr Rgba kBroadphaseOnly{150, 150, 160, 110};
 inline constexpr Rgba kViolation{255, 50, 50};
+inline constexpr Rgba kViolationText{255, 120, 115};  // red text on the dark background (a problem's words)
 inline constexpr Rgba kSelection{255, 255, 255};
 inline constexpr Rgba kSelectionCell{255, 255, 255, 45};
 inline constexpr Rgba kTrail{255, 140, 200, 200};

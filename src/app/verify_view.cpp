@@ -1,0 +1,374 @@
+// The verify view: one GL frame of a `verify --arrays` run (scene, red marks, panels), shared by the
+// screenshot and the window; the window's input (pan, zoom, select, keys) and its tooltip.
+//
+// Index: VerifyView (set-up, camera, problems, frame, input) | write_verify_screenshot.
+// The window loop and `gui --arrays` are in verify_window.cpp.
+#include "app/verify_view_impl.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+#include "app/clock.hpp"
+#include "app/view_spec.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/plural.hpp"
+#include "render/shader.hpp"
+
+namespace nbscope {
+
+namespace {
+// Mouse wheel: zoom per notch.
+constexpr double kZoomPerNotch = 1.2;
+// Pixels the mouse may move with the button down and still click (select) rather than pan.
+constexpr float kClickSlopPx = 4.0f;
+// Caption lines: as wide as the free view allows (ImGui's font: 7 px a character), within these.
+constexpr std::size_t kMinCaptionChars = 40, kMaxCaptionChars = 110;
+
+render::Vec2 v2(double x, double y) { return {static_cast<float>(x), static_cast<float>(y)}; }
+}  // namespace
+
+// ---- set-up -----------------------------------------------------------------------------------
+
+VerifyView::VerifyView(render::GlContext& context, GLFWwindow* window, const VerifyArraysRun& run, const ViewOptions& options)
+    : run_(run), context_(context), book_(run.user.base == 1) {
+  // The arrays are given whole (nothing to step), and numbered as their file counts.
+  if (options.step) throw Error("--step: does not apply to a verify run (the arrays are given whole, no operations to step)");
+  if (options.book_numbering && !book_)
+    throw Error("--book-numbering: the arrays are drawn numbered as their file counts, from 0 here (--base 1, or its \"base\" key, numbers from 1)");
+  renderer_ = std::make_unique<render::Renderer>(render::resolve_shader_dir(options.shader_dir));
+  imgui_ = std::make_unique<render::ImGuiLayer>(window);
+  camera_.set_viewport(context.width(), context.height());
+  // The elements as plain discs (no bodies behind them), the grid, the lists and the ids.
+  render::OverlayFlags& f = state_.overlays;
+  f = render::OverlayFlags{};
+  f.bodies = f.grid = f.lists = f.ids = true;
+  f.elements = f.mask = f.pairs = f.checks = f.broadphase = f.trails = f.flash = false;
+  std::vector<std::string> overlay_names;
+  for (const auto& o : render::overlay_infos()) overlay_names.emplace_back(o.name);
+  apply_spec(
+      "--overlays", options.overlays, overlay_names,
+      [&](bool on) {
+        for (const auto& o : render::overlay_infos()) f.*o.flag = on;
+      },
+      [&](const std::string& name, bool on) {
+        for (const auto& o : render::overlay_infos())
+          if (name == o.name) f.*o.flag = on;
+      });
+  std::vector<std::string> panel_names;
+  for (const char* t : ui::kVerifyPanelTitles) panel_names.push_back(lower(t));
+  apply_spec(
+      "--panels", options.panels, panel_names,
+      [&](bool on) {
+        for (const char* t : ui::kVerifyPanelTitles) state_.panel_open[t] = on;
+      },
+      [&](const std::string& name, bool on) {
+        for (const char* t : ui::kVerifyPanelTitles)
+          if (name == lower(t)) state_.panel_open[t] = on;
+      });
+  const Elements& e = run.elements;
+  if (options.select >= 0) {
+    // --select K as shown: from 1 when the file counts from 1.
+    const std::int64_t k = book_ ? options.select - 1 : options.select;
+    if (k < 0 || k >= e.size())
+      throw Error("--select: element " + std::to_string(options.select) + " does not exist (the elements are numbered " +
+                  std::to_string(book_ ? 1 : 0) + ".." + std::to_string(e.size() - (book_ ? 0 : 1)) + ")");
+    state_.selected_element = static_cast<ElementId>(k);
+  }
+  for (std::size_t i = 0; i < std::size(render::kListFilterNames); ++i)
+    if (options.lists == render::kListFilterNames[i]) list_filter_ = static_cast<render::ListFilter>(i);
+  fixed_camera_ = options.camera;
+
+  lists_ = render::user_lists(run.user, run.verdict, run.user.base);
+  for (std::size_t i = 0; i < lists_.size(); ++i)
+    for (const ElementId k : lists_[i].chain) on_lists_.emplace_back(k, static_cast<int>(i));
+  std::sort(on_lists_.begin(), on_lists_.end());
+  shapes_.reserve(static_cast<std::size_t>(e.size()));
+  for (ElementId k = 0; k < static_cast<ElementId>(e.size()); ++k) {
+    render::ShapeDraw d;
+    d.centre = v2(e.x[k], e.y[k]);
+    d.radius = static_cast<float>(e.r[k]);
+    d.element = k;
+    d.spoke = false;
+    shapes_.push_back(d);
+  }
+  model_.user = &run.user;
+  model_.verdict = &run.verdict;
+  model_.lists = &lists_;
+  model_.base = run.user.base;
+  model_.source = run.user.algorithm + " arrays, " + plural(e.size(), "element") + (book_ ? ", numbered from 1" : "");
+  select_problem(run.verdict.problems.empty() ? -1 : 0);
+  fit();
+}
+
+VerifyView::~VerifyView() {
+  // ImGui's GL objects go before the renderer's, both while the context is still current.
+  imgui_.reset();
+  renderer_.reset();
+}
+
+// ---- camera -----------------------------------------------------------------------------------
+
+render::ScreenInsets VerifyView::panel_insets() const {
+  return panels_seen_ ? layout_.insets : ui::verify_panel_insets(state_);
+}
+
+render::ScreenInsets VerifyView::fit_insets() const {
+  render::ScreenInsets in = panel_insets();
+  // Room under the scene for the legend: its lines (the cell shading, the list kinds, the red's key
+  // and the caption) 15 px each.
+  in.bottom += 15.0 * static_cast<double>(marks_.caption.size() + 3) + 16.0;
+  return in;
+}
+
+void VerifyView::fit() {
+  camera_.set_viewport(context_.width(), context_.height());
+  fitted_insets_ = fit_insets();
+  focus_.reset();
+  if (fixed_camera_) {
+    camera_.look_at({(*fixed_camera_)[0], (*fixed_camera_)[1]}, (*fixed_camera_)[2], fitted_insets_);
+    return;
+  }
+  const Elements& e = run_.elements;
+  render::WorldRect box{{0, 0}, {1, 1}};
+  if (e.size() > 0) {
+    // The elements and half a cell around them: neighbour cells and the heads stay in view.
+    const double d = run_.grid.dim == 2 ? run_.grid.cell_size : 0.0;
+    box.min = Eigen::Vector2d((e.x - e.r).minCoeff(), (e.y - e.r).minCoeff()).array() - 0.5 * d;
+    box.max = Eigen::Vector2d((e.x + e.r).maxCoeff(), (e.y + e.r).maxCoeff()).array() + 0.5 * d;
+  }
+  camera_.fit(box, 0.06, fitted_insets_);
+}
+
+void VerifyView::focus_on(std::vector<ElementId> ks) {
+  const Elements& e = run_.elements;
+  ks.erase(std::remove_if(ks.begin(), ks.end(), [&](ElementId k) { return k < 0 || k >= e.size(); }), ks.end());
+  if (ks.empty()) return;
+  Eigen::Vector2d lo(e.x[ks[0]], e.y[ks[0]]), hi = lo;
+  double r = 0;
+  for (const ElementId k : ks) {
+    lo = lo.cwiseMin(Eigen::Vector2d(e.x[k], e.y[k]));
+    hi = hi.cwiseMax(Eigen::Vector2d(e.x[k], e.y[k]));
+    r = std::max(r, e.r[k]);
+  }
+  // Its cells and their neighbours in view: at least two cells across.
+  const double cell = run_.grid.dim == 2 ? run_.grid.cell_size : 0.0;
+  focus_ = Focus{0.5 * (lo + hi), std::max((hi - lo).norm() + 2 * r, 2 * cell), std::nullopt};
+  apply_focus();
+}
+
+void VerifyView::apply_focus() {
+  if (!focus_) return;
+  // The user panned or zoomed since: the camera is theirs again.
+  if (focus_->applied && !(focus_->applied->first == camera_.centre() && focus_->applied->second == camera_.pixels_per_metre())) {
+    focus_.reset();
+    return;
+  }
+  const render::ScreenInsets in = fit_insets();
+  const double free_px = std::max(100.0, std::min(context_.width() - in.left - in.right, context_.height() - in.top - in.bottom));
+  double ppm = camera_.pixels_per_metre();
+  if (focus_->span * ppm < free_px / 4) ppm = free_px / 4 / focus_->span;
+  if (focus_->span * ppm > free_px / 1.5) ppm = free_px / 1.5 / focus_->span;
+  camera_.set(camera_.centre(), ppm);
+  camera_.centre_on(focus_->centre, in);
+  focus_->applied = std::make_pair(camera_.centre(), camera_.pixels_per_metre());
+}
+
+// ---- problems ---------------------------------------------------------------------------------
+
+void VerifyView::select_problem(int index) {
+  const auto& problems = run_.verdict.problems;
+  state_.selected_problem = index >= 0 && static_cast<std::size_t>(index) < problems.size() ? index : -1;
+  const double free_px = context_.width() - panel_insets().left - panel_insets().right - 80.0;
+  const auto chars = static_cast<std::size_t>(std::max(0.0, free_px / render::kCharPx));
+  marks_ = render::verify_marks(run_.verdict, state_.selected_problem, std::clamp(chars, kMinCaptionChars, kMaxCaptionChars));
+}
+
+std::vector<ElementId> VerifyView::problem_elements(int index) const {
+  const verify::Problem& p = run_.verdict.problems[static_cast<std::size_t>(index)];
+  std::vector<ElementId> ks = p.elements;
+  if (p.link) {
+    ks.push_back(p.link->first);
+    ks.push_back(p.link->second);
+    // A link from a head: the list's first element stands for it.
+    const int l = marks_.problems[static_cast<std::size_t>(index)].list;
+    if (p.link->first < 0 && l >= 0 && !lists_[static_cast<std::size_t>(l)].chain.empty())
+      ks.push_back(lists_[static_cast<std::size_t>(l)].chain.front());
+  }
+  return ks;
+}
+
+void VerifyView::go_to_problem(int index) {
+  select_problem(index);
+  state_.scroll_to_problem = true;
+  if (state_.selected_problem >= 0) focus_on(problem_elements(state_.selected_problem));
+}
+
+void VerifyView::step_problem(int delta) {
+  const int n = static_cast<int>(run_.verdict.problems.size());
+  if (n == 0) return;
+  const int at = state_.selected_problem < 0 ? (delta > 0 ? -1 : n) : state_.selected_problem;
+  go_to_problem(std::clamp(at + delta, 0, n - 1));
+}
+
+// ---- frame ------------------------------------------------------------------------------------
+
+void VerifyView::frame(bool live_input, float dt) {
+  const auto t0 = Clock::now();
+  camera_.set_viewport(context_.width(), context_.height());
+  const Elements& e = run_.elements;
+  render::OverlayScene scene;
+  scene.elements = &e;
+  scene.grid = &run_.grid;
+  scene.shapes = shapes_;
+  scene.lists = &lists_;
+  scene.selected = state_.selected_element;
+  scene.hovered_cell = hovered_cell_;
+  scene.list_filter = list_filter_.value_or(e.size() > render::kRowFilterAbove ? render::ListFilter::Row : render::ListFilter::All);
+  // The row the Row filter keeps: hovered, else the selected problem's, else the selected element's.
+  if (hovered_cell_) scene.focus_row = (*hovered_cell_)[1];
+  else if (state_.selected_problem >= 0) {
+    for (const ElementId k : problem_elements(state_.selected_problem))
+      if (k >= 0 && k < e.size()) {
+        scene.focus_row = run_.grid.cell(e.y[k], 1);
+        break;
+      }
+  } else if (state_.selected_element >= 0) {
+    scene.focus_row = run_.grid.cell(e.y[state_.selected_element], 1);
+  }
+  scene.insets = panel_insets();
+  scene.covered = layout_.covered;
+  scene.book_numbering = book_;
+  scene.verify = &marks_;
+  renderer_->begin_frame(camera_);
+  render::draw_scene(scene, state_.overlays, camera_, *renderer_);
+  renderer_->draw(render::palette::kBackground);
+
+  imgui_->new_frame(live_input, context_.width(), context_.height(), dt);
+  ui::VerifyUiRequests requests;
+  layout_ = ui::draw_verify_panels(model_, state_, requests, static_cast<float>(context_.width()),
+                                   static_cast<float>(context_.height()));
+  panels_seen_ = true;
+  if (live_input) handle_input(requests);
+  renderer_->emit_labels(ImGui::GetBackgroundDrawList());
+  imgui_->render();
+  frame_ms_ = ms_since(t0);
+
+  if (requests.go_to_problem) go_to_problem(*requests.go_to_problem);
+  if (requests.go_to_list && static_cast<std::size_t>(*requests.go_to_list) < lists_.size())
+    focus_on(lists_[static_cast<std::size_t>(*requests.go_to_list)].chain);
+  if (requests.camera_home) {
+    fit();
+  } else if (focus_) {
+    apply_focus();
+  } else if (camera_.at_home() && !(fit_insets() == fitted_insets_)) {
+    fit();  // the panels took another share of the display while the camera was where the fit put it
+  }
+}
+
+// ---- input ------------------------------------------------------------------------------------
+
+void VerifyView::handle_input(ui::VerifyUiRequests& requests) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (!io.WantCaptureKeyboard && !io.KeyCtrl && !io.KeyAlt && !io.KeySuper) {
+    const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
+    for (const char key : {'B', 'G', 'L', 'I', 'E'})
+      for (const render::OverlayInfo& o : render::overlay_infos())
+        if (o.key == key && pressed(key)) state_.overlays.*o.flag = !(state_.overlays.*o.flag);
+    if (ImGui::IsKeyPressed('[', true)) step_problem(-1);
+    if (ImGui::IsKeyPressed(']', true)) step_problem(+1);
+    if (pressed(ImGui::GetKeyIndex(ImGuiKey_Home))) requests.camera_home = true;
+    if (pressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) state_.selected_element = -1;
+  }
+  const bool mouse_valid = io.MousePos.x > -1e30f && io.MousePos.y > -1e30f;
+  if (io.WantCaptureMouse || !mouse_valid) {
+    hovered_cell_.reset();
+    return;
+  }
+  const Eigen::Vector2d mouse(io.MousePos.x, io.MousePos.y);
+  const Eigen::Vector2d world = camera_.to_world(mouse);
+  hovered_cell_ = run_.grid.dim == 2 ? render::cell_at(run_.grid, world) : std::nullopt;
+  if (io.MouseWheel != 0.0f) camera_.zoom_at(mouse, std::pow(kZoomPerNotch, static_cast<double>(io.MouseWheel)));
+  // Either button drags the view; a left click that did not drag selects the element under it.
+  for (int b = 0; b < 2; ++b)
+    if (io.MouseDown[b] && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) &&
+        (b == 1 || ImGui::IsMouseDragging(0, kClickSlopPx)))
+      camera_.pan_pixels({io.MouseDelta.x, io.MouseDelta.y});
+  if (ImGui::IsMouseReleased(0) && io.MouseDragMaxDistanceSqr[0] <= kClickSlopPx * kClickSlopPx) {
+    state_.selected_element = render::element_at(run_.elements, world);
+    // An element at fault selects its (first) problem too.
+    if (state_.selected_element >= 0)
+      for (std::size_t i = 0; i < run_.verdict.problems.size(); ++i) {
+        const auto ks = problem_elements(static_cast<int>(i));
+        if (std::find(ks.begin(), ks.end(), state_.selected_element) != ks.end()) {
+          select_problem(static_cast<int>(i));
+          state_.scroll_to_problem = true;
+          break;
+        }
+      }
+  }
+  draw_tooltip(render::element_at(run_.elements, world));
+}
+
+void VerifyView::draw_tooltip(ElementId k) const {
+  if (k < 0) return;
+  const Elements& e = run_.elements;
+  const int base = run_.user.base;
+  ImGui::BeginTooltip();
+  const std::array<std::int32_t, 3> cell{static_cast<std::int32_t>(run_.grid.cell(e.x[k], 0)),
+                                         static_cast<std::int32_t>(run_.grid.cell(e.y[k], 1)), -1};
+  ImGui::Text("element %lld at (%.4g, %.4g), r %.3g, in cell %s", static_cast<long long>(k + base), e.x[k], e.y[k], e.r[k],
+              verify::cell_name(cell, 2, base).c_str());
+  const auto range = std::equal_range(on_lists_.begin(), on_lists_.end(), std::make_pair(k, -1),
+                                      [](const auto& a, const auto& b) { return a.first < b.first; });
+  if (range.first == range.second) ImGui::TextColored(ImVec4(1.0f, 0.47f, 0.45f, 1.0f), "on no list");
+  for (auto it = range.first; it != range.second; ++it) {
+    const auto l = static_cast<std::size_t>(it->second);
+    ImGui::TextUnformatted(ui::list_line(run_.user, run_.verdict.lists[l], lists_[l], base, 16).c_str());
+  }
+  int shown = 0;
+  for (std::size_t i = 0; i < run_.verdict.problems.size() && shown < 4; ++i) {
+    const auto ks = problem_elements(static_cast<int>(i));
+    if (std::find(ks.begin(), ks.end(), k) == ks.end()) continue;
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 36.0f);
+    ImGui::TextColored(ImVec4(1.0f, 0.47f, 0.45f, 1.0f), "%zu. %s", i + 1, run_.verdict.problems[i].text.c_str());
+    ImGui::PopTextWrapPos();
+    ++shown;
+  }
+  ImGui::EndTooltip();
+}
+
+// ---- write_verify_screenshot ------------------------------------------------------------------
+
+std::string write_verify_screenshot(const VerifyArraysRun& run, const ViewOptions& view) {
+  if (!view.screenshot) throw Error("internal: write_verify_screenshot without a screenshot path");
+  check_output_path(*view.screenshot);
+  const auto context = render::make_offscreen_context(view.width, view.height, view.gl);
+  VerifyView v(*context, nullptr, run, view);
+  // The settled layout (panels sized, the camera refitted to the space they leave), as the window's.
+  double ms = 0;
+  for (int i = 0; i < VerifyView::kSettleFrames; ++i) {
+    v.frame(false, 1.0f / 60.0f);
+    ms += v.frame_ms();
+  }
+  const Image image = context->read_pixels();
+  write_png(*view.screenshot, image);
+  const auto problems = run.verdict.problem_count;
+  char line[512];
+  std::snprintf(line, sizeof line, "screenshot %s (%dx%d, %s): %s on %s, %s%s", view.screenshot->c_str(), image.width,
+                image.height, context->kind(), plural(static_cast<long long>(run.verdict.lists.size()), "list").c_str(),
+                plural(run.elements.size(), "element").c_str(), plural(problems, "problem").c_str(),
+                problems > 0 ? " (the first selected)" : "");
+  std::string out = line;
+  if (!view.no_timings) {
+    std::snprintf(line, sizeof line, "; %.1f ms a frame", ms / VerifyView::kSettleFrames);
+    out += line;
+  }
+  return out;
+}
+
+}  // namespace nbscope

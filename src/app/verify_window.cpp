@@ -1,0 +1,102 @@
+// The verify window (`nbscope gui --input E.csv --arrays A.json`): the verify view in a GLFW window,
+// drawn again only on input (nothing moves); scripted with --frames N (N frames, the settling ones,
+// the screenshot, exit) so it can be tested under xvfb-run. Without a display, the same picture
+// headless, and where it went.
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "app/verify_view_impl.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "render/gl_window.hpp"
+
+namespace nbscope {
+
+namespace {
+
+// Idle: wait for input at most this long, then draw once anyway (a tooltip's delay).
+constexpr double kIdleWaitSeconds = 0.25;
+// Frames drawn after input before the window may sleep: ImGui settles hover states over a few.
+constexpr int kFramesBeforeSleep = 3;
+
+// Ctrl+C / SIGTERM close the window like its close button.
+volatile std::sig_atomic_t g_stop_requested = 0;
+void request_stop(int) { g_stop_requested = 1; }
+
+bool have_display() {
+  const char* x = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (x != nullptr && *x != '\0') || (wayland != nullptr && *wayland != '\0');
+}
+
+}  // namespace
+
+int run_verify_window(const VerifyArraysRun& run, const ViewOptions& view) {
+  const std::string title = "nbscope - " + run.user.algorithm + " arrays, " + std::to_string(run.verdict.problem_count) + " problems";
+  render::GlfwWindow window(view.width, view.height, title);
+  const bool scripted = view.frames.has_value();
+  window.set_vsync(!scripted);
+  VerifyView v(window, window.handle(), run, view);
+  std::signal(SIGINT, &request_stop);
+  std::signal(SIGTERM, &request_stop);
+  const std::int64_t last = scripted ? *view.frames + VerifyView::kSettleFrames - 1 : -1;
+  int frames_before_sleep = kFramesBeforeSleep;
+  double previous = window.time();
+  for (std::int64_t rendered = 0; !window.should_close() && g_stop_requested == 0; ++rendered) {
+    if (scripted || frames_before_sleep > 0) {
+      window.poll_events();
+      --frames_before_sleep;
+    } else if (window.wait_events(kIdleWaitSeconds)) {
+      frames_before_sleep = kFramesBeforeSleep;
+    }
+    const double now = window.time();
+    v.frame(!scripted, static_cast<float>(scripted ? 1.0 / 60.0 : std::max(1e-4, now - previous)));
+    previous = now;
+    if (scripted && rendered >= last) {
+      if (view.screenshot) write_png(*view.screenshot, window.read_pixels());
+      std::fprintf(stderr, "nbscope: window: %lld frames drawn%s%s\n", static_cast<long long>(rendered + 1),
+                   view.screenshot ? "; screenshot " : "", view.screenshot ? view.screenshot->c_str() : "");
+      break;
+    }
+    window.present();
+  }
+  return run.verdict.problem_count > 0 ? 1 : 0;
+}
+
+int run_verify_gui(Args& args) {
+  const VerifyArraysInputs inputs = take_verify_inputs(args);
+  if (inputs.elements_path.empty())
+    throw Error("--input: missing: gui --arrays draws the arrays on these elements (ELEMENTS.csv, x,y,r a line)");
+  if (inputs.arrays_path.empty())
+    throw Error("--arrays: missing: gui --input draws someone's own heads and next arrays on its elements (ARRAYS.json, "
+                "the schema nbscope dump writes)");
+  ViewOptions view;
+  if (auto n = args.integer("--frames", 0, 100'000'000)) view.frames = *n;
+  parse_view_options(args, false, view);
+  // The window's simulation flags mean nothing here: the arrays are drawn on --input's elements.
+  for (const char* flag : {"--scene", "--inject-fault", "--history-mb", "--back"})
+    if (args.has(flag))
+      throw Error(std::string(flag) + ": does not apply to gui --arrays (it draws the arrays on --input's elements, no scene runs)");
+  if (auto p = args.positional()) throw Error(*p + ": unexpected argument");
+  args.finish();
+  if (view.screenshot && !view.frames) throw Error("--screenshot: needs --frames N (how many frames to draw first)");
+  if (view.screenshot) {
+    check_output_path(*view.screenshot);
+    check_outputs_distinct({{"--input", inputs.elements_path}, {"--arrays", inputs.arrays_path}}, {{"--screenshot", *view.screenshot}});
+  }
+  const VerifyArraysRun run = run_verify_arrays(inputs);
+  if (have_display()) return run_verify_window(run, view);
+  if (!view.screenshot) {
+    const char* tmp = std::getenv("TMPDIR");
+    const std::string dir = tmp != nullptr && *tmp != '\0' ? tmp : "/tmp";
+    view.screenshot = dir + "/nbscope-verify-" + std::filesystem::path(inputs.arrays_path).stem().string() + ".png";
+  }
+  const std::string summary = write_verify_screenshot(run, view);
+  std::fprintf(stderr, "nbscope: no display: rendered the arrays check headless instead\nnbscope: %s\n", summary.c_str());
+  std::printf("screenshot: %s\n", std::filesystem::absolute(*view.screenshot).c_str());
+  return run.verdict.problem_count > 0 ? 1 : 0;
+}
+
+}  // namespace nbscope
