@@ -150,6 +150,9 @@ int run_verify(Args& args) {
   if (pairs.has_value() == !in.arrays_path.empty())
     throw Error("verify: give --pairs PAIRS.csv (your contact pairs) or --arrays ARRAYS.json (your heads and next arrays)");
   if (view.screenshot) {
+#ifndef NBSCOPE_VERIFY_VIEW
+    throw Error("--screenshot: this nbscope was built without the window (NBSCOPE_GUI=OFF)");  // before any work
+#endif
     check_output_path(*view.screenshot);  // before any work: an unwritable path fails first
     check_outputs_distinct({{"--input", in.elements_path}, {"--arrays", in.arrays_path}}, {{"--screenshot", *view.screenshot}});
   }
@@ -161,13 +164,9 @@ int run_verify(Args& args) {
   }
   const VerifyArraysRun run = run_verify_arrays(in);
   const int status = report_arrays(in, run);
-  if (view.screenshot) {
 #ifdef NBSCOPE_VERIFY_VIEW
-    print_line(write_verify_screenshot(run, view));
-#else
-    throw Error("--screenshot: this nbscope was built without the window (NBSCOPE_GUI=OFF)");
+  if (view.screenshot) print_line(write_verify_screenshot(run, view));
 #endif
-  }
   return status;
 }
 
