@@ -6,6 +6,7 @@
 // sort | base 1 | a million-element cycle | pairs | readers' bad input.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <nlohmann/json.hpp>
 
 #include "core/detector.hpp"
@@ -283,6 +284,102 @@ TEST(VerifyArraysSort, AWrongCellARepeatedElementAndUnsortedKeysAreNamed) {
   std::swap(d["order"][0], d["order"][1]);
   EXPECT_EQ(check(e, d, false).verdict.problem_count, 0);
   EXPECT_TRUE(check(e, d, true).has(ProblemKind::WrongOrder, "the book's ties go by element id"));
+}
+
+// ---- every planted bug in every list-based algorithm's arrays, 2D and 3D ----
+
+// The parsed arrays of nbscope's own run, and a list of at least two elements to plant bugs in.
+struct Planting {
+  Elements e;
+  Grid grid;
+  verify::UserArrays user;
+  int family = -1, list = -1;
+  std::vector<ElementId> chain;  // that list's elements, head first
+};
+
+Planting planting(const std::string& algorithm, int dim) {
+  Planting p;
+  p.e = make_layout(Layout::Dense, 300, dim, 11);
+  const ArraysJson file = parse_arrays_json(own_dump(p.e, algorithm).dump(), "arrays.json");
+  p.grid = make_grid(p.e, file.grid);
+  p.user = file.arrays(algorithm, p.grid, p.e.size(), 0);
+  for (std::size_t f = 0; f < p.user.families.size() && p.family < 0; ++f) {
+    const verify::ListFamily& fam = p.user.families[f];
+    if (!fam.next_pairs.empty()) continue;  // a dense next array, to plant by index
+    for (std::size_t l = 0; l < fam.lists.size(); ++l) {
+      std::vector<ElementId> chain;
+      for (std::int32_t k = fam.lists[l].head; k != -1; k = fam.next[static_cast<std::size_t>(k)]) chain.push_back(k);
+      if (chain.size() >= 3) {
+        p.family = static_cast<int>(f);
+        p.list = static_cast<int>(l);
+        p.chain = chain;
+        break;
+      }
+    }
+  }
+  return p;
+}
+
+TEST(VerifyArraysPlanted, EveryBugInEveryListAlgorithmIsNamedByTheEntryPlanted) {
+  for (const char* algorithm : {"screen", "nbs", "tree"}) {
+    for (int dim : {2, 3}) {
+      SCOPED_TRACE(std::string(algorithm) + " " + std::to_string(dim) + "D");
+      const Planting base = planting(algorithm, dim);
+      ASSERT_GE(base.family, 0) << "no list of three elements";
+      const auto fi = static_cast<std::size_t>(base.family);
+      const auto li = static_cast<std::size_t>(base.list);
+      const verify::ListFamily& fam = base.user.families[fi];
+      const std::string head = verify::slot_name(fam, fam.lists[li].slot, 0);
+      const auto next_of = [&](ElementId k) { return fam.next_name + "[" + std::to_string(k) + "]"; };
+      const ElementId a = base.chain[0], b = base.chain[1], c = base.chain[2], last = base.chain.back();
+      const auto run = [&](const std::function<void(verify::ListFamily&)>& plant, bool exact = false) {
+        verify::UserArrays u = base.user;
+        plant(u.families[fi]);
+        const Checked checked{verify::verify_arrays(base.e, base.grid, u, exact)};
+        EXPECT_GT(checked.verdict.problem_count, 0);
+        return checked;
+      };
+      // Another list's element at this list's head: wrong list, named by the head.
+      ElementId stranger = -1;
+      for (std::size_t l = 0; l < fam.lists.size() && stranger < 0; ++l)
+        if (l != li && fam.lists[l].cell != fam.lists[li].cell) stranger = fam.lists[l].head;
+      ASSERT_GE(stranger, 0);
+      Checked r = run([&](verify::ListFamily& f) { f.lists[li].head = stranger; });
+      // (Reached already when its own list comes first in the file: then "already on", named by the head too.)
+      EXPECT_TRUE(r.has(ProblemKind::WrongList, head + " = " + std::to_string(stranger) + ", but element ") ||
+                  r.has(ProblemKind::TwoLists, head + " = " + std::to_string(stranger) + ", but element "))
+          << r.all();
+      // The head's successor skipped: dropped, named with the list that misses it.
+      r = run([&](verify::ListFamily& f) { f.next[static_cast<std::size_t>(a)] = c; });
+      EXPECT_TRUE(r.has(ProblemKind::NotListed, "element " + std::to_string(b) + " is on no list")) << r.all();
+      // The list's last element linked on to another list's head: that element reached twice.
+      r = run([&](verify::ListFamily& f) { f.next[static_cast<std::size_t>(last)] = stranger; });
+      EXPECT_TRUE(r.has(ProblemKind::WrongList, next_of(last) + " = " + std::to_string(stranger)) ||
+                  r.has(ProblemKind::TwoLists, next_of(last) + " = " + std::to_string(stranger)) ||
+                  r.has(ProblemKind::TwoLists, "= " + std::to_string(stranger) + ", but element " + std::to_string(stranger) + " is already on"))
+          << r.all();
+      // The last element linked back to the head: a cycle, named by the link that closes it.
+      r = run([&](verify::ListFamily& f) { f.next[static_cast<std::size_t>(last)] = a; });
+      EXPECT_TRUE(r.has(ProblemKind::Cycle, "(" + next_of(last) + " = " + std::to_string(a) + " leads back)")) << r.all();
+      // An index past the last element.
+      const auto n = static_cast<std::int32_t>(base.e.size());
+      r = run([&](verify::ListFamily& f) { f.next[static_cast<std::size_t>(b)] = n; });
+      EXPECT_TRUE(r.has(ProblemKind::OutOfRange, next_of(b) + " = " + std::to_string(n) + ", but elements are 0..")) << r.all();
+      // The first two swapped: right, but not the book's order (only --exact says so).
+      const auto swap_two = [&](verify::ListFamily& f) {
+        f.lists[li].head = b;
+        f.next[static_cast<std::size_t>(b)] = a;
+        f.next[static_cast<std::size_t>(a)] = c;
+      };
+      verify::UserArrays swapped = base.user;
+      swap_two(swapped.families[fi]);
+      const verify::ArraysVerdict loose = verify::verify_arrays(base.e, base.grid, swapped, false);
+      EXPECT_EQ(loose.problem_count, 0);
+      EXPECT_EQ(loose.other_order_lists, 1);
+      r = run(swap_two, true);
+      EXPECT_TRUE(r.has(ProblemKind::WrongOrder, head + " -> ... -> " + std::to_string(b) + " -> " + std::to_string(a))) << r.all();
+    }
+  }
 }
 
 // ---- base 1: the book's numbering ----
