@@ -14,6 +14,7 @@
 #include "core/sort.hpp"
 #include "core/tree.hpp"
 #include "io/csv.hpp"
+#include "support/paths.hpp"
 
 namespace nbscope {
 namespace {
@@ -66,7 +67,6 @@ TEST(Book, Fig3_13To3_14PushingElementOneOntoTheList) {
   EXPECT_EQ(state[0][0], 9 - 1);
 }
 
-std::string nine_csv() { return std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/nine.csv"; }
 
 // The book's grid of Fig. 3.15: cells of size 1 from (0, 0), 10 x 10 of them.
 DetectOptions book_grid() {
@@ -79,7 +79,7 @@ DetectOptions book_grid() {
 
 // Fig. 3.15: the cell (1-based) of each of the nine elements, read off the figure.
 TEST(Book, Fig3_15TheNineElementsLieInTheBooksCells) {
-  const Elements e = read_elements_csv(nine_csv());
+  const Elements e = read_elements_csv(testpaths::nine_csv());
   ASSERT_EQ(e.size(), 9);
   NbsDetector nbs;
   PairList p;
@@ -95,7 +95,7 @@ TEST(Book, Fig3_15TheNineElementsLieInTheBooksCells) {
 // Fig. 3.20 and eq. 3.31: C[5][7] = 4, C[5][6] = 6, C[6][6] = 8, C[2][7] = 9 and
 // E = -1 1 -1 2 3 -1 5 -1 7 (1-based); 96 of the 100 cells empty.
 TEST(Book, Fig3_20ScreenArrayAndNextArrayOfTheNineElements) {
-  const Elements e = read_elements_csv(nine_csv());
+  const Elements e = read_elements_csv(testpaths::nine_csv());
   ScreenDetector screen;
   PairList p;
   TraceLog log;
@@ -130,7 +130,7 @@ TEST(Book, Fig3_20ScreenArrayAndNextArrayOfTheNineElements) {
 // The binary tree of the same nine elements: its leaves are the four occupied cells, and the leaf
 // of cell (2,7) holds the list 9 -> 7 -> 5 -> 3 of Fig. 3.12.
 TEST(Book, Fig3_12TheTreesLeavesHoldTheSameLists) {
-  const Elements e = read_elements_csv(nine_csv());
+  const Elements e = read_elements_csv(testpaths::nine_csv());
   TreeDetector tree;
   PairList p;
   TraceLog log;
@@ -154,7 +154,7 @@ TEST(Book, Fig3_12TheTreesLeavesHoldTheSameLists) {
 
 // nbs on the nine elements: y-lists of rows 6 and 7 (1-based) and memory ny + 2nx + 2N.
 TEST(Book, NbsOnTheNineElements) {
-  const Elements e = read_elements_csv(nine_csv());
+  const Elements e = read_elements_csv(testpaths::nine_csv());
   NbsDetector nbs;
   PairList p;
   TraceLog log;
@@ -168,7 +168,7 @@ TEST(Book, NbsOnTheNineElements) {
 
 // Eq. 3.54: the sorting algorithm needs M = 3N in 2D and 4N in 3D.
 TEST(Book, Eq3_54SortingNeedsThreeNIn2DAndFourNIn3D) {
-  const Elements e = read_elements_csv(nine_csv());
+  const Elements e = read_elements_csv(testpaths::nine_csv());
   SortDetector sort;
   PairList p;
   sort.detect(e, book_grid(), p);

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <filesystem>
 
+#include "support/paths.hpp"
 #include "support/run_cli.hpp"
 
 namespace nbscope {
@@ -15,7 +16,6 @@ using testcli::run;
 using testcli::scratch_dir;
 using testcli::write_text;
 
-std::string example() { return std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/nine.csv"; }
 
 TEST(Cli, HelpVersionAndAlgorithms) {
   auto help = run("--help");
@@ -37,12 +37,12 @@ TEST(Cli, HelpVersionAndAlgorithms) {
 
 TEST(Cli, PairsOfTheBundledExampleToStdoutAndFile) {
   const std::string dir = scratch_dir("pairs_example");
-  auto r = run("pairs --input '" + example() + "' --algorithm nbs");
+  auto r = run("pairs --input '" + testpaths::nine_csv() + "' --algorithm nbs");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out.rfind("i,j\n", 0), 0u);
   EXPECT_NE(r.err.find("1 pair,"), std::string::npos);
   EXPECT_NE(r.err.find("detection"), std::string::npos);
-  auto b = run("pairs --input '" + example() + "' --algorithm brute --output '" + dir + "/p.csv'");
+  auto b = run("pairs --input '" + testpaths::nine_csv() + "' --algorithm brute --output '" + dir + "/p.csv'");
   ASSERT_EQ(b.exit_code, 0) << b.err;
   EXPECT_EQ(read_text(dir + "/p.csv"), r.out);
 }
@@ -59,18 +59,18 @@ TEST(Cli, EmptyAndSingleElementSetsHaveNoPairs) {
 }
 
 TEST(Cli, RepeatAgreesWithItself) {
-  auto r = run("pairs --input '" + example() + "' --repeat 5 --output /dev/null");
+  auto r = run("pairs --input '" + testpaths::nine_csv() + "' --repeat 5 --output /dev/null");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("all runs agree"), std::string::npos) << r.err;
 }
 
 TEST(Cli, ADeviceAsOutputIsWrittenInPlaceNotReplaced) {
   // A temporary renamed over /dev/null would turn the device into a plain file (as root).
-  auto r = run("pairs --input '" + example() + "' --output /dev/null");
+  auto r = run("pairs --input '" + testpaths::nine_csv() + "' --output /dev/null");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
   if (std::filesystem::is_character_file("/dev/full")) {
-    r = run("pairs --input '" + example() + "' --output /dev/full");
+    r = run("pairs --input '" + testpaths::nine_csv() + "' --output /dev/full");
     EXPECT_EQ(r.exit_code, 2);
     // The summary line of the detection, then the one error line.
     EXPECT_NE(r.err.find("\nnbscope: error: /dev/full: cannot write: "), std::string::npos) << r.err;

@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 
+#include "support/paths.hpp"
 #include "support/run_cli.hpp"
 
 namespace nbscope {
@@ -22,7 +23,6 @@ using testcli::run;
 using testcli::scratch_dir;
 using testcli::write_text;
 
-std::string nine() { return std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/nine.csv"; }
 
 json dump(const std::string& args) {
   const auto r = run("dump " + args);
@@ -82,7 +82,7 @@ std::vector<int> walk_pairs(int head, const json& pairs) {
 
 // Fig. 3.20: C[5][7] = 4, C[5][6] = 6, C[6][6] = 8, C[2][7] = 9 and E = -1 1 -1 2 3 -1 5 -1 7 (1-based).
 TEST(Dump, ScreenGivesFig3_20OnTheBooksTenByTenGrid) {
-  const json d = dump("--input '" + nine() + "' --algorithm screen --cell-size 1 --origin 0,0 --cells 10,10");
+  const json d = dump("--input '" + testpaths::nine_csv() + "' --algorithm screen --cell-size 1 --origin 0,0 --cells 10,10");
   EXPECT_EQ(d["algorithm"], "screen");
   EXPECT_EQ(d["nx"], 10);
   EXPECT_EQ(d["ny"], 10);
@@ -108,7 +108,7 @@ TEST(Dump, ScreenGivesFig3_20OnTheBooksTenByTenGrid) {
 }
 
 TEST(Dump, WithoutPinnedCellsTheGridJustCoversTheCentres) {
-  const json d = dump("--input '" + nine() + "' --algorithm screen --cell-size 1 --origin 0,0");
+  const json d = dump("--input '" + testpaths::nine_csv() + "' --algorithm screen --cell-size 1 --origin 0,0");
   EXPECT_EQ(d["nx"], 6);  // Int(5.2) + 1
   EXPECT_EQ(d["ny"], 7);  // Int(6.85) + 1
   EXPECT_EQ(d["heads"][1][6], 8);

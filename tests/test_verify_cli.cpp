@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "support/paths.hpp"
 #include "support/run_cli.hpp"
 
 namespace nbscope {
@@ -17,12 +18,11 @@ using testcli::run;
 using testcli::scratch_dir;
 using testcli::write_text;
 
-std::string nine() { return std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/nine.csv"; }
 const std::string kBookGrid = " --cell-size 1 --origin 0,0 --cells 10,10";
 
 // `nbscope dump` of the nine elements on the book's grid, as JSON.
 json nine_dump(const std::string& algorithm) {
-  const auto r = run("dump --input " + nine() + " --algorithm " + algorithm + kBookGrid);
+  const auto r = run("dump --input " + testpaths::nine_csv() + " --algorithm " + algorithm + kBookGrid);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   return json::parse(r.out);
 }
@@ -31,7 +31,7 @@ json nine_dump(const std::string& algorithm) {
 testcli::Result verify_arrays(const std::string& test, const json& doc, const std::string& flags = "") {
   const std::string path = scratch_dir(test) + "/arrays.json";
   write_text(path, doc.dump(1));
-  return run("verify --input " + nine() + " --arrays " + path + flags);
+  return run("verify --input " + testpaths::nine_csv() + " --arrays " + path + flags);
 }
 
 // ---- --pairs ----
@@ -39,7 +39,7 @@ testcli::Result verify_arrays(const std::string& test, const json& doc, const st
 TEST(VerifyCli, PairsRightExitZeroWithOneSummaryLine) {
   const std::string dir = scratch_dir("verify_pairs_right");
   write_text(dir + "/p.csv", "i,j\n1,0\n");  // the nine's one contact, given j,i
-  const auto r = run("verify --input " + nine() + " --pairs " + dir + "/p.csv");
+  const auto r = run("verify --input " + testpaths::nine_csv() + " --pairs " + dir + "/p.csv");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out, "nbscope verify: " + dir + "/p.csv: 1 pair given for 9 elements, the reference (brute) finds 1: 1 right, "
                    "0 missing, 0 extra, 0 duplicated, 0 with itself, 0 out of range: right\n");
@@ -49,7 +49,7 @@ TEST(VerifyCli, PairsWrongNameEachPairWithItsLineCellsAndGap) {
   const std::string dir = scratch_dir("verify_pairs_wrong");
   // Book numbering: the one contact is 1,2; given instead 2,4 (apart), 3,3, 1,10, and 2,4 twice.
   write_text(dir + "/p.csv", "2 4\n3 3\n1 10\n4,2\n");
-  const auto r = run("verify --input " + nine() + " --pairs " + dir + "/p.csv --base 1" + kBookGrid);
+  const auto r = run("verify --input " + testpaths::nine_csv() + " --pairs " + dir + "/p.csv --base 1" + kBookGrid);
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.out.find(": WRONG\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\nmissing 1,2: cells (5,7) and (5,7), distance - radii = -0.0418861 (in contact)\n"), std::string::npos) << r.out;
@@ -143,8 +143,8 @@ TEST(VerifyCli, BadInputNamesTheFileAndTheJsonPath) {
   const std::vector<Case> cases{
       {"length", wrong_length, "", ": $.heads[3]: 9 entries, but ny is 10"},
       {"nested", nested, "", ": $.heads[2][2]: an array, but a number is expected (arrays of another dimension?)"},
-      {"dim", dim, "", ": $.dim: 3D arrays, but " + nine() + " holds 2D elements"},
-      {"count", count, "", ": $.elements: 10, but " + nine() + " has 9 elements"},
+      {"dim", dim, "", ": $.dim: 3D arrays, but " + testpaths::nine_csv() + " holds 2D elements"},
+      {"count", count, "", ": $.elements: 10, but " + testpaths::nine_csv() + " has 9 elements"},
       {"cellsize", grid, "", ": the grid does not fit the elements: "},
       {"outside", small, "", ": the grid does not hold the elements: element 0 has x = 4.75, outside the 4 cells"},
       {"scene", json{{"name", "x"}, {"bodies", json::array()}}, "", ": $: a scene or a report, not arrays"},
@@ -161,8 +161,8 @@ TEST(VerifyCli, BadInputNamesTheFileAndTheJsonPath) {
       EXPECT_NE(r.err.find("arrays.json" + c.message), std::string::npos) << c.name << ": " << r.err;
     }
   }
-  EXPECT_EQ(run("verify --input " + nine()).exit_code, 2);
-  EXPECT_EQ(run("verify --input " + nine() + " --pairs a --arrays b").exit_code, 2);
+  EXPECT_EQ(run("verify --input " + testpaths::nine_csv()).exit_code, 2);
+  EXPECT_EQ(run("verify --input " + testpaths::nine_csv() + " --pairs a --arrays b").exit_code, 2);
 }
 
 }  // namespace

@@ -5,7 +5,6 @@
 //
 // Index: options | headless fallback | applying the panels' requests | the window loop | run_gui.
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -20,6 +19,7 @@
 #include "app/replay.hpp"
 #include "app/verify_view.hpp"
 #include "app/view_options.hpp"
+#include "app/window_pacing.hpp"
 #include "check/faults.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -31,17 +31,6 @@ namespace nbscope {
 
 namespace {
 
-
-// A window with nothing moving sleeps until input, at most this long (then draws once anyway: a
-// tooltip's delay, a text cursor), instead of redrawing the same frame as fast as it can.
-constexpr double kIdleWaitSeconds = 0.25;
-// Frames drawn after input or anything moving before the window may sleep: ImGui settles hover
-// states, opened popups and auto-sized panels over a few frames.
-constexpr int kFramesBeforeSleep = 3;
-
-// Ctrl+C / SIGTERM close the window like its close button, so the settings are still saved.
-volatile std::sig_atomic_t g_stop_requested = 0;
-void request_stop(int) { g_stop_requested = 1; }
 
 // ---- options ----------------------------------------------------------------------------------
 
@@ -81,20 +70,10 @@ std::string absolute_path(const std::string& path) {
   return ec ? path : p.lexically_normal().string();
 }
 
-bool have_display() {
-  const char* x = std::getenv("DISPLAY");
-  const char* wayland = std::getenv("WAYLAND_DISPLAY");
-  return (x != nullptr && *x != '\0') || (wayland != nullptr && *wayland != '\0');
-}
-
 // ---- headless fallback ------------------------------------------------------------------------
 
 int run_without_display(GuiOptions o, FrameLoop& loop) {
-  if (!o.view.screenshot) {
-    const char* tmp = std::getenv("TMPDIR");
-    const std::string dir = tmp != nullptr && *tmp != '\0' ? tmp : "/tmp";
-    o.view.screenshot = dir + "/nbscope-" + (loop.scene().name.empty() ? "scene" : loop.scene().name) + ".png";
-  }
+  if (!o.view.screenshot) o.view.screenshot = fallback_screenshot_path(loop.scene().name.empty() ? "scene" : loop.scene().name);
   const std::int64_t frames = o.frames.value_or(120);
   std::fprintf(stderr, "nbscope: no display: rendering %s headless instead\n", plural(frames, "frame").c_str());
   auto view = make_headless_view(o.view, loop);
@@ -282,23 +261,15 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   auto last = Clock::now();
   double fps_window_start = window.time();
   int fps_frames = 0;
-  std::signal(SIGINT, &request_stop);
-  std::signal(SIGTERM, &request_stop);
+  install_stop_handlers();
   // The UI frame's requests are applied at the top of the next one, once the step begun for it has
   // been adopted: then no request finds a step in flight, and each acts on the frame it is shown on.
   ui::UiRequests requests;
-  int frames_before_sleep = kFramesBeforeSleep;
-  for (std::int64_t rendered = 0; !window.should_close() && g_stop_requested == 0; ++rendered) {
+  IdlePacer pacer;
+  for (std::int64_t rendered = 0; !window.should_close() && !stop_requested(); ++rendered) {
     // Paused with nothing moving: wait for input rather than draw the same frame again.
-    const bool moving = scripted || !session.paused || loop.resuming() || loop.step_pending() || loop.dragging() ||
-                        view.animating() || !(requests == ui::UiRequests{});
-    if (moving) frames_before_sleep = kFramesBeforeSleep;
-    if (frames_before_sleep > 0) {
-      window.poll_events();
-      --frames_before_sleep;
-    } else if (window.wait_events(kIdleWaitSeconds)) {
-      frames_before_sleep = kFramesBeforeSleep;
-    }
+    pacer.pace(window, scripted || !session.paused || loop.resuming() || loop.step_pending() || loop.dragging() ||
+                           view.animating() || !(requests == ui::UiRequests{}));
     const auto now = Clock::now();
     session.frame_ms = std::chrono::duration<double, std::milli>(now - last).count();
     last = now;

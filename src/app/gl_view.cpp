@@ -65,17 +65,7 @@ GlView::GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions
   hide_timings_ = options.no_timings;
   camera_.set_viewport(context.width(), context.height());
 
-  std::vector<std::string> overlay_names;
-  for (const auto& o : render::overlay_infos()) overlay_names.emplace_back(o.name);
-  apply_spec(
-      "--overlays", options.overlays, overlay_names,
-      [&](bool on) {
-        for (const auto& o : render::overlay_infos()) state_.overlays.*o.flag = on;
-      },
-      [&](const std::string& name, bool on) {
-        for (const auto& o : render::overlay_infos())
-          if (name == o.name) state_.overlays.*o.flag = on;
-      });
+  apply_overlay_spec(options.overlays, state_.overlays);
   stepper_ = ui::add_stepper_panels(
       host_, ui::StepperConfig{options.step ? std::optional<std::size_t>(*options.step) : std::nullopt, options.book_numbering});
   step_option_ = options.step;

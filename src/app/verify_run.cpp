@@ -56,7 +56,7 @@ void check_inside(const Elements& e, const Grid& g, const std::string& where) {
     const Eigen::ArrayXd& v = e.axis(a);
     for (std::int64_t k = 0; k < e.size(); ++k) {
       const double c = (v[k] - g.origin[a]) / g.cell_size;
-      const double eps = 1e-9 * std::max(1.0, std::fabs(c));
+      const double eps = verify::kBoundaryTolerance * std::max(1.0, std::fabs(c));
       if (c >= -eps && c < static_cast<double>(g.n[a]) + eps) continue;
       throw Error(where + ": the grid does not hold the elements: element " + std::to_string(k) + " has " + axis[a] + " = " +
                   number_text(v[k]) + ", outside the " + std::to_string(g.n[a]) + " cells of " + number_text(g.cell_size) +

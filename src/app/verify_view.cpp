@@ -48,17 +48,7 @@ VerifyView::VerifyView(render::GlContext& context, GLFWwindow* window, const Ver
   f = render::OverlayFlags{};
   f.bodies = f.grid = f.lists = f.ids = true;
   f.elements = f.mask = f.pairs = f.checks = f.broadphase = f.trails = f.flash = false;
-  std::vector<std::string> overlay_names;
-  for (const auto& o : render::overlay_infos()) overlay_names.emplace_back(o.name);
-  apply_spec(
-      "--overlays", options.overlays, overlay_names,
-      [&](bool on) {
-        for (const auto& o : render::overlay_infos()) f.*o.flag = on;
-      },
-      [&](const std::string& name, bool on) {
-        for (const auto& o : render::overlay_infos())
-          if (name == o.name) f.*o.flag = on;
-      });
+  apply_overlay_spec(options.overlays, f);
   std::vector<std::string> panel_names;
   for (const char* t : ui::kVerifyPanelTitles) panel_names.push_back(lower(t));
   apply_spec(

@@ -2,36 +2,17 @@
 // drawn again only on input (nothing moves); scripted with --frames N (N frames, the settling ones,
 // the screenshot, exit) so it can be tested under xvfb-run. Without a display, the same picture
 // headless, and where it went.
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
 #include "app/verify_view_impl.hpp"
+#include "app/window_pacing.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "render/gl_window.hpp"
 
 namespace nbscope {
-
-namespace {
-
-// Idle: wait for input at most this long, then draw once anyway (a tooltip's delay).
-constexpr double kIdleWaitSeconds = 0.25;
-// Frames drawn after input before the window may sleep: ImGui settles hover states over a few.
-constexpr int kFramesBeforeSleep = 3;
-
-// Ctrl+C / SIGTERM close the window like its close button.
-volatile std::sig_atomic_t g_stop_requested = 0;
-void request_stop(int) { g_stop_requested = 1; }
-
-bool have_display() {
-  const char* x = std::getenv("DISPLAY");
-  const char* wayland = std::getenv("WAYLAND_DISPLAY");
-  return (x != nullptr && *x != '\0') || (wayland != nullptr && *wayland != '\0');
-}
-
-}  // namespace
 
 int run_verify_window(const VerifyArraysRun& run, const ViewOptions& view) {
   const std::string title = "nbscope - " + run.user.algorithm + " arrays, " + std::to_string(run.verdict.problem_count) + " problems";
@@ -39,18 +20,12 @@ int run_verify_window(const VerifyArraysRun& run, const ViewOptions& view) {
   const bool scripted = view.frames.has_value();
   window.set_vsync(!scripted);
   VerifyView v(window, window.handle(), run, view);
-  std::signal(SIGINT, &request_stop);
-  std::signal(SIGTERM, &request_stop);
+  install_stop_handlers();
   const std::int64_t last = scripted ? *view.frames + VerifyView::kSettleFrames - 1 : -1;
-  int frames_before_sleep = kFramesBeforeSleep;
+  IdlePacer pacer;
   double previous = window.time();
-  for (std::int64_t rendered = 0; !window.should_close() && g_stop_requested == 0; ++rendered) {
-    if (scripted || frames_before_sleep > 0) {
-      window.poll_events();
-      --frames_before_sleep;
-    } else if (window.wait_events(kIdleWaitSeconds)) {
-      frames_before_sleep = kFramesBeforeSleep;
-    }
+  for (std::int64_t rendered = 0; !window.should_close() && !stop_requested(); ++rendered) {
+    pacer.pace(window, scripted);
     const double now = window.time();
     v.frame(!scripted, static_cast<float>(scripted ? 1.0 / 60.0 : std::max(1e-4, now - previous)));
     previous = now;
@@ -88,11 +63,7 @@ int run_verify_gui(Args& args) {
   }
   const VerifyArraysRun run = run_verify_arrays(inputs);
   if (have_display()) return run_verify_window(run, view);
-  if (!view.screenshot) {
-    const char* tmp = std::getenv("TMPDIR");
-    const std::string dir = tmp != nullptr && *tmp != '\0' ? tmp : "/tmp";
-    view.screenshot = dir + "/nbscope-verify-" + std::filesystem::path(inputs.arrays_path).stem().string() + ".png";
-  }
+  if (!view.screenshot) view.screenshot = fallback_screenshot_path("verify-" + std::filesystem::path(inputs.arrays_path).stem().string());
   const std::string summary = write_verify_screenshot(run, view);
   std::fprintf(stderr, "nbscope: no display: rendered the arrays check headless instead\nnbscope: %s\n", summary.c_str());
   std::printf("screenshot: %s\n", std::filesystem::absolute(*view.screenshot).c_str());

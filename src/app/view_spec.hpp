@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "render/overlays.hpp"
 
 namespace nbscope {
 
@@ -48,6 +49,21 @@ void apply_spec(const std::string& flag, const std::string& spec, const std::vec
     }
     first = false;
   }
+}
+
+// `--overlays SPEC` applied to `flags` (the names of render::overlay_infos()).
+inline void apply_overlay_spec(const std::string& spec, render::OverlayFlags& flags) {
+  std::vector<std::string> names;
+  for (const auto& o : render::overlay_infos()) names.emplace_back(o.name);
+  apply_spec(
+      "--overlays", spec, names,
+      [&](bool on) {
+        for (const auto& o : render::overlay_infos()) flags.*o.flag = on;
+      },
+      [&](const std::string& name, bool on) {
+        for (const auto& o : render::overlay_infos())
+          if (name == o.name) flags.*o.flag = on;
+      });
 }
 
 }  // namespace nbscope

@@ -73,7 +73,7 @@ class ElementCells {
         const auto i = static_cast<std::size_t>(k);
         at_[a][i] = g.cell(v[k], a);
         const double c = (v[k] - g.origin[a]) / g.cell_size;
-        const double eps = 1e-9 * std::max(1.0, std::fabs(c));
+        const double eps = kBoundaryTolerance * std::max(1.0, std::fabs(c));
         lo_[a][i] = std::min(at_[a][i], clamp(std::floor(c - eps), g.n[a]));
         hi_[a][i] = std::max(at_[a][i], clamp(std::floor(c + eps), g.n[a]));
       }
@@ -249,13 +249,13 @@ class Checker {
     const UserList& l = f.lists[static_cast<std::size_t>(li)];
     WalkedList walked{fi, li, {}, false};
     std::vector<ElementId>& chain = walked.chain;
-    const std::string head = pre + slot_name(f, l.slot, user_.base);  // once per list, not per element
+    const auto head = [&] { return pre + slot_name(f, l.slot, user_.base); };  // named only for a message
     ElementId prev = -1;
     std::int32_t k = l.head;
     bool ordered = true;
     while (k != -1) {
       // The entry that led here, the head or next[prev], named only when a problem needs it.
-      const auto from_text = [&] { return prev == -1 ? head : pre + f.next_name + "[" + el(prev) + "]"; };
+      const auto from_text = [&] { return prev == -1 ? head() : pre + f.next_name + "[" + el(prev) + "]"; };
       const auto where_text = [&] { return prev == -1 ? l.where : next_path(f, prev); };
       if (!in_range(k)) {
         add({ProblemKind::OutOfRange, from_text() + " = " + value(k) + ", but " + range_text(), where_text(), {}, {}, fi, li});
@@ -291,7 +291,7 @@ class Checker {
       if (prev != -1 && ordered && (f.ascending ? k < prev : k > prev)) {
         ordered = false;
         if (exact_) {
-          add({ProblemKind::WrongOrder, head + " -> ... -> " + el(prev) + " -> " + el(k) + ": " + el(k) + " follows " + el(prev) +
+          add({ProblemKind::WrongOrder, head() + " -> ... -> " + el(prev) + " -> " + el(k) + ": " + el(k) + " follows " + el(prev) +
                ", but in the book's order ids " + (f.ascending ? "rise" : "fall") + " along " + order_reason(f),
                where_text(), {k}, std::pair{prev, k}, fi, li});
         } else {

@@ -112,6 +112,10 @@ struct ArraysVerdict {
 // Problems kept with their text; beyond, only counted (a file with a million wrong entries).
 inline constexpr std::size_t kMaxKeptProblems = 10'000;
 
+// How close (in cells, relative to the coordinate's cell index) a centre may lie to a cell
+// boundary and still be taken on either side: the user's code may round the other way there.
+inline constexpr double kBoundaryTolerance = 1e-9;
+
 // Holds `user` to the book: every index in range, every list ends, every element of a family on
 // exactly one of its lists and that list the one of its own cell under `grid` (an element within
 // rounding of a cell boundary may be on either side's list), sort's permutation and keys; with

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "core/error.hpp"
@@ -19,6 +20,17 @@ using verify::ListFamily;
 using verify::UserList;
 
 std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+// A JSON path as text, or as a function that writes it: the loops over every entry pass functions,
+// so a path is only written when a message needs it.
+template <class Path>
+std::string text_of(const Path& path) {
+  if constexpr (std::is_invocable_v<const Path&>) {
+    return path();
+  } else {
+    return std::string(path);
+  }
+}
 std::string key(const std::string& path, const char* name) { return path + "." + name; }
 
 // Typed access to the document; every failure names the file and the value's JSON path.
@@ -33,32 +45,36 @@ class Reader {
     if (it == object.end()) fail(path, std::string("no \"") + name + "\" key (" + meaning + ")");
     return *it;
   }
-  const json& array(const json& v, const std::string& path, std::optional<std::int64_t> length = {}, const char* of = "") const {
-    if (!v.is_array()) fail(path, std::string(type(v)) + ", but an array is expected");
+  template <class Path>
+  const json& array(const json& v, const Path& path, std::optional<std::int64_t> length = {}, const char* of = "") const {
+    if (!v.is_array()) fail(text_of(path), std::string(type(v)) + ", but an array is expected");
     if (length && static_cast<std::int64_t>(v.size()) != *length)
-      fail(path, std::to_string(v.size()) + " entries, but " + of + " is " + std::to_string(*length));
+      fail(text_of(path), std::to_string(v.size()) + " entries, but " + of + " is " + std::to_string(*length));
     return v;
   }
-  std::int64_t integer(const json& v, const std::string& path) const {
-    if (v.is_array()) fail(path, "an array, but a number is expected (arrays of another dimension?)");
-    if (!v.is_number_integer()) fail(path, std::string(type(v)) + ", but a whole number is expected");
+  template <class Path>
+  std::int64_t integer(const json& v, const Path& path) const {
+    if (v.is_array()) fail(text_of(path), "an array, but a number is expected (arrays of another dimension?)");
+    if (!v.is_number_integer()) fail(text_of(path), std::string(type(v)) + ", but a whole number is expected");
     const std::int64_t i = v.is_number_unsigned() && v.get<std::uint64_t>() > std::uint64_t{INT64_MAX} ? INT64_MAX : v.get<std::int64_t>();
     if (i < std::numeric_limits<std::int32_t>::min() + 2 || i > std::numeric_limits<std::int32_t>::max())
-      fail(path, std::to_string(i) + " is not a 32-bit index (the book's arrays are int32)");
+      fail(text_of(path), std::to_string(i) + " is not a 32-bit index (the book's arrays are int32)");
     return i;
   }
   // An element index (or -1) as the file writes it, shifted to 0-based.
-  std::int32_t element(const json& v, const std::string& path) const {
+  template <class Path>
+  std::int32_t element(const json& v, const Path& path) const {
     const std::int64_t i = integer(v, path);
     if (i == -1) return -1;
     if (base_ == 1 && i == 0) return verify::kZeroInBase1;
     return static_cast<std::int32_t>(i - base_);
   }
   // A cell index on an axis of `n` cells, shifted to 0-based; outside the grid is bad input (a slot, not a value).
-  std::int32_t cell(const json& v, const std::string& path, std::int64_t n, const char* axis) const {
+  template <class Path>
+  std::int32_t cell(const json& v, const Path& path, std::int64_t n, const char* axis) const {
     const std::int64_t i = integer(v, path) - base_;
     if (i < 0 || i >= n)
-      fail(path, std::to_string(i + base_) + " is not a" + (axis[0] == 'i' ? "n " : " ") + axis + " of the grid (" +
+      fail(text_of(path), std::to_string(i + base_) + " is not a" + (axis[0] == 'i' ? "n " : " ") + axis + " of the grid (" +
            std::to_string(base_) + ".." + std::to_string(n - 1 + base_) + ")");
     return static_cast<std::int32_t>(i);
   }
@@ -66,12 +82,13 @@ class Reader {
   std::vector<std::int32_t> next_array(const json& v, const std::string& path) const {
     array(v, path, n_, "N, the number of elements,");
     std::vector<std::int32_t> out(v.size());
-    for (std::size_t k = 0; k < v.size(); ++k) out[k] = element(v[k], at(path, k));
+    for (std::size_t k = 0; k < v.size(); ++k) out[k] = element(v[k], [&] { return at(path, k); });
     return out;
   }
   // Sparse [slot, head] or [k, next] pairs.
-  const json& pair(const json& v, const std::string& path) const {
-    if (!v.is_array() || v.size() != 2) fail(path, "not a pair [index, value]");
+  template <class Path>
+  const json& pair(const json& v, const Path& path) const {
+    if (!v.is_array() || v.size() != 2) fail(text_of(path), "not a pair [index, value]");
     return v;
   }
   int base() const { return base_; }
@@ -104,28 +121,33 @@ void build_screen(const Reader& r, const json& doc, const Grid& g, verify::UserA
   // Walk the nest axis by axis, checking each level's length.
   struct Level {
     const json* v;
-    std::string path;
-    std::array<std::int32_t, 3> cell;
+    std::array<std::int32_t, 3> cell;  // the indices so far (-1 below this level)
   };
-  std::vector<Level> level{{&heads, "$.heads", {-1, -1, -1}}};
+  const auto path_of = [](const std::array<std::int32_t, 3>& cell) {
+    std::string p = "$.heads";
+    for (std::int32_t i : cell)
+      if (i >= 0) p = at(p, static_cast<std::size_t>(i));
+    return p;
+  };
+  std::vector<Level> level{{&heads, {-1, -1, -1}}};
   for (int a = 0; a < dim; ++a) {
     std::vector<Level> deeper;
     for (const Level& l : level) {
-      r.array(*l.v, l.path, g.n[a], axes[a]);
+      r.array(*l.v, [&] { return path_of(l.cell); }, g.n[a], axes[a]);
       for (std::size_t i = 0; i < l.v->size(); ++i) {
-        Level d{&(*l.v)[i], at(l.path, i), l.cell};
+        Level d{&(*l.v)[i], l.cell};
         d.cell[a] = static_cast<std::int32_t>(i);
         if (a + 1 < dim) {
-          deeper.push_back(std::move(d));
+          deeper.push_back(d);
           continue;
         }
-        const std::int32_t head = r.element(*d.v, d.path);
+        const std::int32_t head = r.element(*d.v, [&] { return path_of(d.cell); });
         if (head == -1) continue;
         UserList list;
         list.slot = g.flat(d.cell[0], d.cell[1], dim == 3 ? d.cell[2] : 0);
         list.head = head;
         list.cell = d.cell;
-        list.where = d.path;
+        list.where = path_of(d.cell);
         f.lists.push_back(std::move(list));
       }
     }
@@ -146,22 +168,23 @@ ListFamily sparse_family(const Reader& r, const json& object, const std::string&
   const std::string hp = key(path, heads_key);
   const json& heads = r.array(r.member(object, path, heads_key, "[index, head] of each non-empty list"), hp);
   for (std::size_t i = 0; i < heads.size(); ++i) {
-    const std::string p = at(hp, i);
-    const json& h = r.pair(heads[i], p);
+    const auto p = [&](std::size_t j) { return at(at(hp, i), j); };
+    const json& h = r.pair(heads[i], [&] { return at(hp, i); });
     UserList list;
-    list.cell[axis] = r.cell(h[0], at(p, 0), n, axis == 0 ? "ix" : axis == 1 ? "iy" : "iz");
+    list.cell[axis] = r.cell(h[0], [&] { return p(0); }, n, axis == 0 ? "ix" : axis == 1 ? "iy" : "iz");
     list.slot = list.cell[axis];
-    list.head = r.element(h[1], at(p, 1));
-    list.where = at(p, 1);
-    if (list.head != -1) f.lists.push_back(std::move(list));
+    list.head = r.element(h[1], [&] { return p(1); });
+    if (list.head == -1) continue;
+    list.where = p(1);
+    f.lists.push_back(std::move(list));
   }
   f.next_path = key(path, next_key);
   const json& next = r.array(r.member(object, path, next_key, "[k, next[k]] of each element on the lists"), f.next_path);
   f.next_pairs.reserve(next.size());
   for (std::size_t i = 0; i < next.size(); ++i) {
-    const std::string p = at(f.next_path, i);
-    const json& e = r.pair(next[i], p);
-    f.next_pairs.push_back({r.element(e[0], at(p, 0)), r.element(e[1], at(p, 1))});
+    const auto p = [&](std::size_t j) { return at(at(f.next_path, i), j); };
+    const json& e = r.pair(next[i], [&] { return at(f.next_path, i); });
+    f.next_pairs.push_back({r.element(e[0], [&] { return p(0); }), r.element(e[1], [&] { return p(1); })});
   }
   return f;
 }
@@ -185,45 +208,41 @@ void build_rows(const Reader& r, const json& object, const std::string& path, co
   }
 }
 
+// The lists of one axis over the whole grid, their heads one per cell index (nbs: y-lists per row in
+// 2D, z-lists per layer in 3D): "y_heads"/"y_next" or "z_heads"/"z_next".
+ListFamily axis_lists(const Reader& r, const json& doc, const Grid& g, int axis) {
+  const bool y = axis == 1;
+  ListFamily f;
+  f.heads_name = y ? "y_heads" : "z_heads";
+  f.next_name = y ? "Y" : "Z";
+  f.heads_shape = {g.n[axis]};
+  const std::string hp = "$." + f.heads_name;
+  const json& heads = r.array(r.member(doc, "$", f.heads_name.c_str(), y ? "the heads of the y-lists, one per row" : "the heads of the z-lists, one per layer"),
+                              hp, g.n[axis], y ? "ny" : "nz");
+  for (std::size_t i = 0; i < heads.size(); ++i) {
+    UserList l;
+    l.slot = static_cast<std::int64_t>(i);
+    l.head = r.element(heads[i], [&] { return at(hp, i); });
+    if (l.head == -1) continue;
+    l.cell[axis] = static_cast<std::int32_t>(i);
+    l.where = at(hp, i);
+    f.lists.push_back(std::move(l));
+  }
+  f.next_path = y ? "$.y_next" : "$.z_next";
+  f.next = r.next_array(r.member(doc, "$", y ? "y_next" : "z_next", y ? "Y, the next array of the y-lists" : "Z, the next array of the z-lists"),
+                        f.next_path);
+  return f;
+}
+
 // ---- nbs 2D: y_heads, y_next, rows ----
 void build_nbs_2d(const Reader& r, const json& doc, const Grid& g, verify::UserArrays& out) {
-  ListFamily y;
-  y.heads_name = "y_heads";
-  y.next_name = "Y";
-  y.heads_shape = {g.n[1]};
-  const json& heads = r.array(r.member(doc, "$", "y_heads", "the heads of the y-lists, one per row"), "$.y_heads", g.n[1], "ny");
-  for (std::size_t iy = 0; iy < heads.size(); ++iy) {
-    UserList l;
-    l.slot = static_cast<std::int64_t>(iy);
-    l.head = r.element(heads[iy], at("$.y_heads", iy));
-    l.cell = {-1, static_cast<std::int32_t>(iy), -1};
-    l.where = at("$.y_heads", iy);
-    if (l.head != -1) y.lists.push_back(std::move(l));
-  }
-  y.next_path = "$.y_next";
-  y.next = r.next_array(r.member(doc, "$", "y_next", "Y, the next array of the y-lists"), "$.y_next");
-  out.families.push_back(std::move(y));
+  out.families.push_back(axis_lists(r, doc, g, 1));
   build_rows(r, doc, "$", g, -1, true, out);  // x-lists: pushed walking a y-list from its highest id down
 }
 
 // ---- nbs 3D: z_heads, z_next, layers [{iz, y_heads, y_next, rows}] ----
 void build_nbs_3d(const Reader& r, const json& doc, const Grid& g, verify::UserArrays& out) {
-  ListFamily z;
-  z.heads_name = "z_heads";
-  z.next_name = "Z";
-  z.heads_shape = {g.n[2]};
-  const json& heads = r.array(r.member(doc, "$", "z_heads", "the heads of the z-lists, one per layer"), "$.z_heads", g.n[2], "nz");
-  for (std::size_t iz = 0; iz < heads.size(); ++iz) {
-    UserList l;
-    l.slot = static_cast<std::int64_t>(iz);
-    l.head = r.element(heads[iz], at("$.z_heads", iz));
-    l.cell = {-1, -1, static_cast<std::int32_t>(iz)};
-    l.where = at("$.z_heads", iz);
-    if (l.head != -1) z.lists.push_back(std::move(l));
-  }
-  z.next_path = "$.z_next";
-  z.next = r.next_array(r.member(doc, "$", "z_next", "Z, the next array of the z-lists"), "$.z_next");
-  out.families.push_back(std::move(z));
+  out.families.push_back(axis_lists(r, doc, g, 2));
   const auto it = doc.find("layers");
   if (it == doc.end()) return;
   r.array(*it, "$.layers");
@@ -273,23 +292,26 @@ void build_tree(const Reader& r, const json& doc, const Grid& g, verify::UserArr
 void build_sort(const Reader& r, const json& doc, const Grid& g, verify::UserArrays& out) {
   verify::SortArrays s;
   const char* names[3] = {"ix", "iy", "iz"};
-  const auto cell_value = [&](const json& v, const std::string& p) {
+  const auto cell_value = [&](const json& v, const auto& p) {
     const std::int64_t i = r.integer(v, p) - r.base();
     return static_cast<std::int32_t>(std::clamp<std::int64_t>(i, -2, std::numeric_limits<std::int32_t>::max()));
   };
   const json& keys = r.array(r.member(doc, "$", "keys", "the cell of each sorted position"), "$.keys", r.n(), "N");
   for (std::size_t p = 0; p < keys.size(); ++p) {
-    const json& k = r.array(keys[p], at("$.keys", p), g.dim, "dim");
+    const json& k = r.array(keys[p], [&] { return at("$.keys", p); }, g.dim, "dim");
     std::array<std::int32_t, 3> cell{-1, -1, -1};
-    for (int a = 0; a < g.dim; ++a) cell[a] = cell_value(k[static_cast<std::size_t>(a)], at(at("$.keys", p), static_cast<std::size_t>(a)));
+    for (int a = 0; a < g.dim; ++a) {
+      const auto i = static_cast<std::size_t>(a);
+      cell[a] = cell_value(k[i], [&] { return at(at("$.keys", p), i); });
+    }
     s.keys.push_back(cell);
   }
   const json& order = r.array(r.member(doc, "$", "order", "the element at each sorted position"), "$.order", r.n(), "N");
-  for (std::size_t p = 0; p < order.size(); ++p) s.order.push_back(r.element(order[p], at("$.order", p)));
+  for (std::size_t p = 0; p < order.size(); ++p) s.order.push_back(r.element(order[p], [&] { return at("$.order", p); }));
   for (int a = 0; a < g.dim; ++a) {
     const std::string p = std::string("$.") + names[a];
     const json& v = r.array(r.member(doc, "$", names[a], "each element's integerised coordinate"), p, r.n(), "N");
-    for (std::size_t k = 0; k < v.size(); ++k) s.cell_of[a].push_back(cell_value(v[k], at(p, k)));
+    for (std::size_t k = 0; k < v.size(); ++k) s.cell_of[a].push_back(cell_value(v[k], [&] { return at(p, k); }));
   }
   out.sort = std::move(s);
 }

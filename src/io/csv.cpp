@@ -57,6 +57,19 @@ std::string_view strip_comment(std::string_view line) {
   return trim(line);
 }
 
+std::vector<std::string_view> split_words(std::string_view line, bool commas_too) {
+  const auto separator = [&](char c) { return std::isspace(static_cast<unsigned char>(c)) || (commas_too && c == ','); };
+  std::vector<std::string_view> out;
+  std::size_t k = 0;
+  while (k < line.size()) {
+    while (k < line.size() && separator(line[k])) ++k;
+    const std::size_t start = k;
+    while (k < line.size() && !separator(line[k])) ++k;
+    if (k > start) out.push_back(line.substr(start, k - start));
+  }
+  return out;
+}
+
 std::vector<std::string_view> split_fields(std::string_view line) { return split_commas(line); }
 
 double parse_finite_number(std::string_view f, const std::string& at, const char* name) {

@@ -27,6 +27,8 @@ Elements parse_elements_csv(const std::string& text, const std::string& where);
 std::string_view strip_comment(std::string_view line);
 // The comma-separated fields of `line`, each trimmed.
 std::vector<std::string_view> split_fields(std::string_view line);
+// The words of `line` between runs of white space (and of commas, with `commas_too`).
+std::vector<std::string_view> split_words(std::string_view line, bool commas_too = false);
 // A finite double from `field`; Error(at + name + ": '...' is not a (finite) number") otherwise.
 double parse_finite_number(std::string_view field, const std::string& at, const char* name);
 // One element row of 3 (x,y,r) or 4 (x,y,z,r) fields into `out` (x, y, [z,] r); Error(at + what) for

@@ -11,19 +11,6 @@ namespace nbscope {
 
 namespace {
 
-// The fields of `line` split at commas and white space.
-std::vector<std::string_view> fields_of(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ',' || line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-    const std::size_t start = i;
-    while (i < line.size() && line[i] != ',' && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
-    if (i > start) out.push_back(line.substr(start, i - start));
-  }
-  return out;
-}
-
 bool whole(std::string_view f, std::int64_t& out) {
   if (!f.empty() && f[0] == '+') f.remove_prefix(1);
   const auto [p, ec] = std::from_chars(f.data(), f.data() + f.size(), out);
@@ -44,7 +31,7 @@ std::vector<verify::GivenPair> parse_given_pairs_csv(const std::string& text, co
     pos = end + 1;
     ++line_no;
     if (line.empty()) continue;
-    const auto fields = fields_of(line);
+    const auto fields = split_words(line, true);
     std::int64_t i = 0, j = 0;
     const bool numbers = fields.size() == 2 && whole(fields[0], i) && whole(fields[1], j);
     if (first_row && !numbers && fields.size() == 2 && !whole(fields[0], i)) {

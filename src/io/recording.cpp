@@ -19,19 +19,6 @@ namespace nbscope {
 
 namespace {
 
-// Splits `line` at white space.
-std::vector<std::string_view> words_of(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t k = 0;
-  while (k < line.size()) {
-    while (k < line.size() && std::isspace(static_cast<unsigned char>(line[k]))) ++k;
-    const std::size_t start = k;
-    while (k < line.size() && !std::isspace(static_cast<unsigned char>(line[k]))) ++k;
-    if (k > start) out.push_back(line.substr(start, k - start));
-  }
-  return out;
-}
-
 // An integer in [min, max] from `f`; Error(at + name + ...) otherwise.
 std::int64_t parse_integer(std::string_view f, const std::string& at, const char* name, std::int64_t min, std::int64_t max) {
   std::int64_t v = 0;
@@ -142,7 +129,7 @@ Recording parse_recording(const std::string& text, const std::string& where, std
     ++line_no;
     if (line.empty()) continue;
     const std::string at = where + ":" + std::to_string(line_no) + ": ";
-    const std::vector<std::string_view> words = words_of(line);
+    const std::vector<std::string_view> words = split_words(line);
     const std::string_view key = words.front();
     if (!seen_version) {
       if (key != "nbsrec")
