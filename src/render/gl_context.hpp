@@ -1,5 +1,6 @@
-// nbscope render: where GL draws. Two implementations: an OSMesa off-screen buffer (headless, no X
-// server, no GPU) and a GLFW window. Neither header pulls in GL, so callers choose freely.
+// nbscope render: where GL draws. Three implementations: off-screen through OSMesa or EGL
+// (headless, no X server, no GPU; gl_offscreen.hpp) and a GLFW window. No header pulls in GL, so
+// callers choose freely.
 #pragma once
 #include <memory>
 #include <string>
@@ -11,7 +12,7 @@ namespace nbscope::render {
 class GlContext {
  public:
   virtual ~GlContext() = default;
-  // "osmesa" or "window".
+  // "osmesa", "egl" or "window".
   [[nodiscard]] virtual const char* kind() const = 0;
   // Framebuffer size in pixels.
   [[nodiscard]] virtual int width() const = 0;
@@ -27,8 +28,9 @@ class GlContext {
   [[nodiscard]] std::string describe() const;
 };
 
-// An off-screen context of width x height. `backend` is "osmesa", "egl" or "auto" (OSMesa here);
-// Error("--gl egl: not built ...") for EGL, Error("osmesa: ...") when OSMesa fails.
+// An off-screen context of width x height, current and drawing into its width x height buffer.
+// `backend` is "osmesa", "egl" or "auto" (OSMesa when libOSMesa.so.8 loads at run time, else EGL);
+// Error("--gl <backend>: ...") when it is unknown, not built, not installed or fails.
 std::unique_ptr<GlContext> make_offscreen_context(int width, int height, const std::string& backend);
 
 // Waits until GL has finished every command (through glad, never libGL).

@@ -3,6 +3,7 @@
 
 #include "core/error.hpp"
 #include "render/gl.hpp"
+#include "render/gl_offscreen.hpp"
 
 namespace nbscope::render {
 
@@ -18,6 +19,10 @@ void load_gl(GlProcLoader loader, const char* where) {
   if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 33)
     throw Error(std::string(where) + ": OpenGL 3.3 core is required, the context offers " +
                 std::to_string(GLAD_VERSION_MAJOR(version)) + "." + std::to_string(GLAD_VERSION_MINOR(version)));
+}
+
+void reload_gl_if_other(GlProcLoader loader, const char* where) {
+  if (loader != g_loader) load_gl(loader, where);
 }
 
 void check_gl(const char* where) {
