@@ -1,4 +1,4 @@
-// The renderer under OSMesa: primitives land on the pixels the camera maths says they should,
+// The renderer under OSMesa (and EGL): primitives land on the pixels the camera maths says they should,
 // the camera keeps its promises, bad shader directories are refused, PNG files round-trip.
 #include <gtest/gtest.h>
 #include <imgui.h>
@@ -83,9 +83,8 @@ TEST(Camera, PanMovesTheWorldWithTheMouseAndHomeRestoresTheFit) {
   EXPECT_TRUE(c.centre().isApprox(Eigen::Vector2d(5, 3), 1e-12));
 }
 
-TEST(Renderer, PrimitivesLandWhereTheCameraPutsThem) {
-  Gl& g = gl();
-  Renderer& r = g.renderer;
+// Draws a rect, circles and a line through `r` into `context` and checks their pixels.
+void expect_primitives_where_the_camera_puts_them(GlContext& context, Renderer& r, const std::string& name) {
   const Camera cam = test_camera();
   const Rgba fill{200, 40, 40}, outline{40, 200, 40}, line{30, 60, 250}, cell{250, 250, 0};
   r.begin_frame(cam);
@@ -94,8 +93,8 @@ TEST(Renderer, PrimitivesLandWhereTheCameraPutsThem) {
   r.line(Layer::Overlay, {6, -8}, {14, -8}, line, 3.0f);             // y = 180, x 220..300
   r.circle(Layer::Top, {-14, -8}, 0.01f, fill, Rgba{0, 0, 0, 0}, 0.0f, 6.0f);  // tiny, but 6 px on screen
   r.draw(palette::kBackground);
-  const Image img = g.context->read_pixels();
-  save_for_inspection(img, "primitives");
+  const Image img = context.read_pixels();
+  save_for_inspection(img, name);
 
   EXPECT_TRUE(same_rgb(img.at(160, 100), fill)) << rgb(img.at(160, 100));
   EXPECT_TRUE(same_rgb(img.at(160 + 38, 100), outline)) << rgb(img.at(198, 100));  // inside the 3 px band
@@ -111,6 +110,26 @@ TEST(Renderer, PrimitivesLandWhereTheCameraPutsThem) {
 
   // One draw call per non-empty kind and layer: rects, circles (2 layers), lines.
   EXPECT_EQ(r.stats().draw_calls, 4);
+}
+
+TEST(Renderer, PrimitivesLandWhereTheCameraPutsThem) {
+  Gl& g = gl();
+  expect_primitives_where_the_camera_puts_them(*g.context, g.renderer, "primitives");
+}
+
+// The same pixels through EGL, whose surfaceless context draws into an FBO of its own: its
+// viewport, colour format and row order must match OSMesa's buffer.
+TEST(Renderer, PrimitivesLandWhereTheCameraPutsThemUnderEgl) {
+  {
+    const std::unique_ptr<GlContext> context = make_offscreen_context(kW, kH, "egl");
+    EXPECT_STREQ(context->kind(), "egl");
+    EXPECT_EQ(context->width(), kW);
+    EXPECT_EQ(context->height(), kH);
+    Renderer renderer{resolve_shader_dir(NBSCOPE_SHADER_DIR)};
+    expect_primitives_where_the_camera_puts_them(*context, renderer, "primitives_egl");
+  }
+  // Back to this file's OSMesa context (and its GL functions) for the tests that follow.
+  gl().context->make_current();
 }
 
 TEST(Renderer, ArrowsAndPolygonsFillTheirInsides) {
@@ -174,9 +193,10 @@ TEST(Renderer, MissingShaderDirectoryIsRefusedWithItsName) {
   testing::internal::GetCapturedStderr();
 }
 
-TEST(Offscreen, EglIsNotBuiltAndUnknownBackendsAreRefused) {
-  EXPECT_THROW(make_offscreen_context(64, 64, "egl"), Error);
+TEST(Offscreen, UnknownBackendsAndSizesAreRefused) {
   EXPECT_THROW(make_offscreen_context(64, 64, "vulkan"), Error);
+  EXPECT_THROW(make_offscreen_context(0, 64, "egl"), Error);
+  EXPECT_THROW(make_offscreen_context(64, 9000, "osmesa"), Error);
 }
 
 TEST(Png, RoundTripCompareAndAtomicFailure) {
