@@ -118,7 +118,7 @@ const std::vector<std::pair<const char*, std::vector<const char*>>>& command_opt
       {"pairs", {"--input", "--algorithm", "--output", "--repeat", "--cell-size", "--origin", "--cells", "--max-pairs"}},
       {"dump", {"--input", "--algorithm", "--cell-size", "--origin", "--cells", "--format"}},
       {"verify", {"--input", "--pairs", "--arrays", "--algorithm", "--base", "--exact", "--cell-size", "--origin", "--cells",
-                  "--brute-limit", NBSCOPE_VIEW_OPTIONS}},
+                  "--brute-limit", "--gl", NBSCOPE_VIEW_OPTIONS}},
       {"scaling", {"--algorithm", "--layout", "--n", "--points-per-decade", "--output", "--quiet"}},
   };
   return table;

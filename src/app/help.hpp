@@ -64,7 +64,8 @@ usage:
   nbscope verify --input ELEMENTS.csv --arrays ARRAYS.json [--algorithm screen|nbs|tree|sort]
                  [--base 1] [--exact] [--cell-size D] [--origin X,Y[,Z]] [--cells NX,NY[,NZ]]
                  [--screenshot OUT.png [--size WxH] [--overlays SPEC] [--panels SPEC] [--select K]
-                 [--lists F] [--camera X,Y,PPM] [--no-timings] [--shader-dir DIR] [--book-numbering]]
+                 [--lists F] [--camera X,Y,PPM] [--no-timings] [--shader-dir DIR] [--book-numbering]
+                 [--gl osmesa|egl|auto]]
       Your heads and next arrays, in the schema dump writes ("base": 1 for 1-based), against
       the book: every list ends (a cycle or a bad index is found, never followed), every
       element on one list, the list of its own cell; --exact also the book's order. The first
@@ -101,7 +102,8 @@ usage:
       drop-box2d-contact breaks the detection (or Box2D's side) on purpose, to see the checks
       catch it.
       --screenshot OUT.png [--size WxH] [--gl osmesa|egl|auto] renders the last frame exactly as the
-      window shows it (scene, overlays, panels) off-screen with OSMesa (egl: not built here).
+      window shows it (scene, overlays, panels) off-screen, no display needed: with OSMesa or EGL
+      (surfaceless); auto (default) takes OSMesa when libOSMesa.so.8 is there, else EGL.
       --record OUT.nbsrec writes every frame's elements (frame 0 too) and the scene's pinned grid.
       --stop-at-violation stops on the first frame with a violation and (with --screenshot) shows
       it as the window's Violations panel does: the pair selected, the camera on it, the stepper
