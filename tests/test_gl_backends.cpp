@@ -68,6 +68,7 @@ TEST(GlBackends, AutoTakesOsmesaWhenItsLibraryLoadsElseEgl) {
 // other (they are the same llvmpipe here); with one overlay off they are not, so the comparison
 // can fail.
 TEST(GlBackends, BothBackendsDrawTheSamePicture) {
+  ::setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);  // llvmpipe under both, even where EGL finds a GPU
   const std::string scene = "headless --scene '" + kSource +
                             "/assets/scenes/mixed-sizes.json' --frames 15 --overlays all --select 7 --panels all "
                             "--size 1280x720 --no-timings --quiet";
