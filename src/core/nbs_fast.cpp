@@ -35,9 +35,6 @@ inline void prefetch_read(const void* p) { __builtin_prefetch(p, 0, 3); }
 inline void prefetch_ahead(const void* p) { __builtin_prefetch(p, 0, 2); }
 inline void prefetch_write(const void* p) { __builtin_prefetch(p, 1, 3); }
 
-// The 3D contact mask's rows (dy, dz) whose x-lists row (iy, iz) reads; A[r] holds row r's heads.
-constexpr std::int32_t kRowDy[5] = {0, -1, -1, 0, 1};
-
 }  // namespace
 
 void NbsDetector::order_by_list(const std::int32_t* cell_of, std::int64_t n_elements, std::int32_t cells) {
