@@ -1,5 +1,5 @@
 // Hostile files through the binary: /dev/zero as every kind of input, 80 KB and 1 MB of nested
-// brackets as a scene, a 20 MB numeric field, a .nbsrec header given twice — each exits 2 with one
+// brackets as a scene, 20 MB and 2 MB numeric fields, a .nbsrec header given twice — each exits 2 with one
 // short line naming the file. Time and memory are not measured here (see README "Bad input").
 #include <gtest/gtest.h>
 
@@ -54,7 +54,7 @@ TEST(HostileCli, NestedBracketsAreRefusedAtTheDepthLimit) {
   }
 }
 
-TEST(HostileCli, ATwentyMegabyteNumericFieldIsQuotedShort) {
+TEST(HostileCli, HugeNumericFieldsAreQuotedShort) {
   const std::string dir = scratch_dir("hostile_big_field");
   const std::string csv = dir + "/big.csv";
   write_text(csv, "x,y,r\n" + std::string(20'000'000, '1') + ",0,1\n");
@@ -62,7 +62,7 @@ TEST(HostileCli, ATwentyMegabyteNumericFieldIsQuotedShort) {
                  csv + ":2: a line longer than 64 KiB, the limit for an elements file (its lines are short rows; is this the right file?)",
                  "pairs big.csv");
   const std::string scene = dir + "/big.json";
-  write_text(scene, "{\"gravity\": [0, " + std::string(20'000'000, '1') + "]}");
+  write_text(scene, "{\"gravity\": [0, " + std::string(2'000'000, '1') + "]}");  // 2 MB: the JSON lexer reads it all
   expect_refused(run("headless --scene " + scene + " --frames 1"),
                  scene + ":1: gravity: JSON syntax error: number out of range '" + std::string(37, '1') + "...' (not a finite double)",
                  "headless big.json");

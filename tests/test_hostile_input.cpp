@@ -278,20 +278,21 @@ TEST(HostileScene, AKeyAtTheLimitIsReadOneByteLongerIsRefused) {
 }
 
 TEST(HostileScene, HugeValuesAreQuotedAsShortExcerpts) {
-  // A 20 MB number: out of range, quoted short.
-  const std::string number = scene_error("{\"gravity\": [0,\n" + std::string(20'000'000, '1') + "]}");
+  // Sizes are kept small enough for the sanitizer runs; the 20 MB and 50 MB cases are measured by hand.
+  // A 2 MB number: out of range, quoted short.
+  const std::string number = scene_error("{\"gravity\": [0,\n" + std::string(2'000'000, '1') + "]}");
   EXPECT_EQ(number, "s.json:2: gravity: JSON syntax error: number out of range '" + std::string(37, '1') + "...' (not a finite double)");
-  // 1e6 elements where 2 are expected.
+  // 1e5 elements where 2 are expected.
   std::string many = "{\"gravity\": [0";
-  for (int i = 0; i < 1'000'000; ++i) many += ",0";
+  for (int i = 0; i < 100'000; ++i) many += ",0";
   std::string shown = "[";
   for (int i = 0; i < 18; ++i) shown += "0,";
   EXPECT_EQ(scene_error(many + "]}"), "s.json:1: gravity: must be an array of two numbers [a, b], got an array " + shown + "...");
-  // A 50 MB string where a number is expected, and a 50 MB name.
-  const std::string big(50'000'000, 'a');
+  // A 5 MB string where a number is expected, and a 5 MB name.
+  const std::string big(5'000'000, 'a');
   EXPECT_EQ(scene_error("{\"time_step\": \"" + big + "\"}"),
             "s.json:1: time_step: must be a number, got a string \"" + std::string(36, 'a') + "...");
-  EXPECT_EQ(scene_error("{\"name\": \"" + big + "\"}"), "s.json:1: name: a name of 50000000 bytes \"" + std::string(37, 'a') + "...\"; at most 200");
+  EXPECT_EQ(scene_error("{\"name\": \"" + big + "\"}"), "s.json:1: name: a name of 5000000 bytes \"" + std::string(37, 'a') + "...\"; at most 200");
   EXPECT_EQ(parse_scene_json("{\"name\": \"" + std::string(200, 'n') + "\"}", "s.json").name, std::string(200, 'n'));
   // A string with a control byte at its end: nlohmann quotes the whole string as its last token.
   const std::string token = scene_error("{\"gravity\": [0, \"" + std::string(100'000, 'x') + "\x01\"]}");
@@ -343,7 +344,7 @@ TEST(HostileArrays, NestingKeysAndNumbersAreBounded) {
   EXPECT_EQ(arrays_error(nested(500'000)), "a.json:1: arrays and objects nested deeper than 64 levels, the limit for arrays files");
   EXPECT_EQ(arrays_error("{\"" + std::string(kMaxJsonKeyBytes + 1, 'k') + "\": 1}").rfind("a.json:1: a key of 257 bytes", 0), 0u);
   // An out-of-range number was an internal error quoting all of it.
-  EXPECT_EQ(arrays_error("{\"elements\": " + std::string(20'000'000, '9') + "}"),
+  EXPECT_EQ(arrays_error("{\"elements\": " + std::string(2'000'000, '9') + "}"),
             "a.json: JSON syntax error: number out of range '" + std::string(37, '9') + "...' (not a finite double)");
   const std::string token = arrays_error("{\"next\": [0,\n\"" + std::string(100'000, 'z') + "\x01\"]}");
   EXPECT_EQ(token.rfind("a.json:2: JSON syntax error: syntax error while parsing value - invalid string: control character", 0), 0u) << token.substr(0, 300);
