@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "io/excerpt.hpp"
 #include "io/input_file.hpp"
+#include "io/json_limits.hpp"
 
 namespace nbscope {
 
@@ -349,15 +351,16 @@ verify::UserArrays ArraysJson::arrays(const std::string& name, const Grid& g, st
 ArraysJson parse_arrays_json(const std::string& text, const std::string& where) {
   ArraysJson a;
   a.path = where;
+  check_json_limits(text, where, "arrays file", kMaxArraysJsonValues);  // before the tree: deep nesting costs a scan
   try {
     a.doc = json::parse(text);
-  } catch (const json::parse_error& e) {
-    // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." -> "where:3: JSON syntax error: ..."
-    std::string what = e.what();
+  } catch (const json::exception& e) {
+    // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." -> "where:3: JSON syntax error: ...";
+    // an out-of-range number (406) is an out_of_range exception without a line.
+    const std::string what = e.what();
     std::string line;
-    if (const auto l = what.find("line "); l != std::string::npos) line = what.substr(l + 5, what.find(',', l) - l - 5);
-    if (const auto c = what.find(": ", what.find("column ")); c != std::string::npos) what = what.substr(c + 2);
-    throw Error(where + (line.empty() ? "" : ":" + line) + ": JSON syntax error: " + what);
+    if (const auto l = what.find("at line "); l != std::string::npos) line = what.substr(l + 8, what.find(',', l) - l - 8);
+    throw Error(where + (line.empty() ? "" : ":" + line) + ": JSON syntax error: " + json_error_text(what));
   }
   const Reader r(where, 0, 0);
   if (!a.doc.is_object())
@@ -367,6 +370,8 @@ ArraysJson parse_arrays_json(const std::string& text, const std::string& where) 
   if (const auto it = a.doc.find("algorithm"); it != a.doc.end()) {
     if (!it->is_string()) r.fail("$.algorithm", "not a string");
     a.algorithm = it->get<std::string>();
+    // Quoted in later messages and window titles: a name, not a document.
+    if (a.algorithm->size() > 64) r.fail("$.algorithm", "\"" + excerpt(*a.algorithm) + "\" is not an algorithm's name");
   }
   if (a.doc.contains("dim")) {
     const std::int64_t d = r.integer(a.doc["dim"], "$.dim");

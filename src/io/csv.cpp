@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/excerpt.hpp"
 #include "io/input_file.hpp"
 #include "io/plural.hpp"
 
@@ -72,13 +73,22 @@ std::vector<std::string_view> split_words(std::string_view line, bool commas_too
 
 std::vector<std::string_view> split_fields(std::string_view line) { return split_commas(line); }
 
+void check_line_length(std::string_view line, const std::string& where, std::size_t line_no) {
+  if (line.size() > kMaxLineBytes)
+    throw Error(where + ":" + std::to_string(line_no) + ": a line of " + std::to_string(line.size()) + " bytes '" + excerpt(line) +
+                "'; lines are at most " + std::to_string(kMaxLineBytes) + " bytes");
+}
+
 double parse_finite_number(std::string_view f, const std::string& at, const char* name) {
+  if (f.size() > kMaxNumberBytes)
+    throw Error(at + name + ": '" + excerpt(f) + "' (" + std::to_string(f.size()) + " characters) is not a number of at most " +
+                std::to_string(kMaxNumberBytes) + " characters");
   double v = 0;
   const auto [ptr, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
   if (f.empty() || ec == std::errc::invalid_argument || ptr != f.data() + f.size())
-    throw Error(at + name + ": '" + printable_line(f) + "' is not a number");
+    throw Error(at + name + ": '" + excerpt(f) + "' is not a number");
   if (ec == std::errc::result_out_of_range || !std::isfinite(v))
-    throw Error(at + name + ": '" + printable_line(f) + "' is not a finite number");
+    throw Error(at + name + ": '" + excerpt(f) + "' is not a finite number");
   return v;
 }
 
@@ -120,6 +130,7 @@ Elements parse_elements_csv(const std::string& text, const std::string& where) {
     std::string_view line(text.data() + pos, end - pos);
     pos = end + 1;
     ++line_no;
+    check_line_length(line, where, line_no);
     line = strip_comment(line);
     if (line.empty()) {
       if (end == text.size()) break;
@@ -129,7 +140,7 @@ Elements parse_elements_csv(const std::string& text, const std::string& where) {
     const std::vector<std::string_view> fields = split_commas(line);
     if (!seen_row_or_header && is_name(fields.front())) {
       for (std::string_view f : fields)
-        if (!is_name(f)) throw Error(at + "header mixes names and numbers: '" + printable_line(f) + "'");
+        if (!is_name(f)) throw Error(at + "header mixes names and numbers: '" + excerpt(f) + "'");
       if (fields.size() != 3 && fields.size() != 4)
         throw Error(at + "header has " + plural(static_cast<long long>(fields.size()), "column") + "; expected x,y,r or x,y,z,r");
       e.dim = fields.size() == 3 ? 2 : 3;  // the header fixes the dimension, as a first row would
@@ -169,7 +180,7 @@ Elements parse_elements_csv(const std::string& text, const std::string& where) {
 }
 
 Elements read_elements_csv(const std::string& path) {
-  return parse_elements_csv(read_input_file(path, "elements file", kMaxElementsBytes), path);
+  return parse_elements_csv(read_input_file(path, "elements file", kMaxElementsBytes, kMaxLineBytes), path);
 }
 
 void write_pairs_csv(std::ostream& out, const PairList& sorted_pairs) {

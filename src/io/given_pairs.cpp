@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "io/csv.hpp"
+#include "io/excerpt.hpp"
 #include "io/input_file.hpp"
 
 namespace nbscope {
@@ -19,7 +20,7 @@ bool whole(std::string_view f, std::int64_t& out) {
 
 }  // namespace
 
-std::vector<verify::GivenPair> parse_given_pairs_csv(const std::string& text, const std::string& where, int base) {
+std::vector<verify::GivenPair> parse_given_pairs_csv(const std::string& text, const std::string& where, int base, std::size_t max_pairs) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw Error(where + ": empty file (a header `i,j` alone is no pairs)");
   std::vector<verify::GivenPair> out;
   std::int64_t line_no = 0;
@@ -27,9 +28,11 @@ std::vector<verify::GivenPair> parse_given_pairs_csv(const std::string& text, co
   std::size_t pos = 0;
   while (pos <= text.size()) {
     const std::size_t end = std::min(text.find('\n', pos), text.size());
-    const std::string_view line = strip_comment(std::string_view(text).substr(pos, end - pos));
+    const std::string_view raw = std::string_view(text).substr(pos, end - pos);
     pos = end + 1;
     ++line_no;
+    check_line_length(raw, where, static_cast<std::size_t>(line_no));
+    const std::string_view line = strip_comment(raw);
     if (line.empty()) continue;
     const auto fields = split_words(line, true);
     std::int64_t i = 0, j = 0;
@@ -41,16 +44,18 @@ std::vector<verify::GivenPair> parse_given_pairs_csv(const std::string& text, co
     first_row = false;
     const std::string at = where + ":" + std::to_string(line_no) + ": ";
     if (fields.size() != 2) throw Error(at + std::to_string(fields.size()) + " fields, but a pair is two element indices `i,j`");
-    if (!numbers) throw Error(at + "'" + std::string(line) + "' is not two whole numbers `i,j`");
+    if (!numbers) throw Error(at + "'" + excerpt(line) + "' is not two whole numbers `i,j`");
     if (i < INT32_MIN || i > INT32_MAX || j < INT32_MIN || j > INT32_MAX)
       throw Error(at + "an index beyond 32 bits (element ids are int32)");
+    // 24 bytes a pair: the limit keeps a 2 GB file of "0,1" lines from taking 12 GB.
+    if (out.size() >= max_pairs) throw Error(at + "more than " + std::to_string(max_pairs) + " pairs, the limit for a pairs file");
     out.push_back({i - base, j - base, line_no});
   }
   return out;
 }
 
 std::vector<verify::GivenPair> read_given_pairs_csv(const std::string& path, int base) {
-  return parse_given_pairs_csv(read_input_file(path, "pairs file", kMaxElementsBytes), path, base);
+  return parse_given_pairs_csv(read_input_file(path, "pairs file", kMaxElementsBytes, kMaxLineBytes), path, base);
 }
 
 }  // namespace nbscope

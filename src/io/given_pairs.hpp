@@ -4,16 +4,19 @@
 #include <string>
 #include <vector>
 
+#include "core/pairs.hpp"
 #include "core/verify.hpp"
 
 namespace nbscope {
 
 // Reads one pair a line, `i,j` (commas or white space between the two), 0- or 1-based (`base`,
 // shifted to 0-based on reading); an optional header line (`i,j`); `#` comments and blank lines.
-// Throws Error("<path>:<line>: what") on a line that is not two whole numbers, and on an unreadable
-// or empty file.
+// Throws Error("<path>:<line>: what") on a line that is not two whole numbers, on more than
+// kDefaultMaxPairs pairs, a line longer than kMaxLineBytes, a NUL byte, and on an unreadable or
+// empty file.
 std::vector<verify::GivenPair> read_given_pairs_csv(const std::string& path, int base);
-// The same from memory; `where` names it in messages.
-std::vector<verify::GivenPair> parse_given_pairs_csv(const std::string& text, const std::string& where, int base);
+// The same from memory; `where` names it in messages; more than `max_pairs` pairs is an error.
+std::vector<verify::GivenPair> parse_given_pairs_csv(const std::string& text, const std::string& where, int base,
+                                                     std::size_t max_pairs = kDefaultMaxPairs);
 
 }  // namespace nbscope

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/csv.hpp"
+#include "io/excerpt.hpp"
 #include "io/input_file.hpp"
 #include "io/plural.hpp"
 
@@ -19,27 +20,35 @@ namespace nbscope {
 
 namespace {
 
+// The header lines, each allowed once ("nbsrec" first).
+constexpr std::array<std::string_view, 5> kHeaderKeys = {"nbsrec", "cell_size", "origin", "cells", "base"};
+std::size_t header_index(std::string_view key) {
+  std::size_t h = 0;
+  while (h < kHeaderKeys.size() && kHeaderKeys[h] != key) ++h;
+  return h;
+}
+
 // An integer in [min, max] from `f`; Error(at + name + ...) otherwise.
 std::int64_t parse_integer(std::string_view f, const std::string& at, const char* name, std::int64_t min, std::int64_t max) {
   std::int64_t v = 0;
   const auto [ptr, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
   if (f.empty() || ec != std::errc() || ptr != f.data() + f.size())
-    throw Error(at + name + ": '" + std::string(f) + "' is not an integer");
+    throw Error(at + name + ": '" + excerpt(f) + "' is not an integer");
   if (v < min || v > max)
-    throw Error(at + name + ": " + std::string(f) + " is out of range [" + std::to_string(min) + ", " + std::to_string(max) + "]");
+    throw Error(at + name + ": " + excerpt(f) + " is out of range [" + std::to_string(min) + ", " + std::to_string(max) + "]");
   return v;
 }
 
 // The single value of a header line "key VALUE"; Error when it has none or more than one.
 std::string_view header_value(const std::vector<std::string_view>& words, const std::string& at, const char* form) {
-  if (words.size() != 2) throw Error(at + std::string(words.front()) + ": expected '" + form + "'");
+  if (words.size() != 2) throw Error(at + excerpt(words.front()) + ": expected '" + form + "'");
   return words[1];
 }
 
 // "A,B" into two fields; Error otherwise.
 std::vector<std::string_view> two_fields(std::string_view value, const std::string& at, const char* key, const char* form) {
   std::vector<std::string_view> f = split_fields(value);
-  if (f.size() != 2) throw Error(at + key + ": '" + std::string(value) + "' is not " + form);
+  if (f.size() != 2) throw Error(at + key + ": '" + excerpt(value) + "' is not " + form);
   return f;
 }
 
@@ -83,14 +92,14 @@ void parse_pair_row(std::string_view line, const std::string& at, int base, std:
   if (f.size() == 3 || f.size() == 4)
     throw Error(at + "an element row after frame " + std::to_string(frame.number) +
                 "'s 'pairs' line (a frame's element rows come before its pairs)");
-  if (f.size() != 2) throw Error(at + "pair row '" + std::string(line) + "': expected i,j (two integers)");
-  const std::string text = std::string(f[0]) + "," + std::string(f[1]);
+  if (f.size() != 2) throw Error(at + "pair row '" + excerpt(line) + "': expected i,j (two integers)");
+  const std::string text = excerpt(f[0]) + "," + excerpt(f[1]);
   std::int64_t ij[2] = {0, 0};
   for (int k = 0; k < 2; ++k) {
     const std::string_view v = f[static_cast<std::size_t>(k)];
     const auto [ptr, ec] = std::from_chars(v.data(), v.data() + v.size(), ij[k]);
     if (v.empty() || ec == std::errc::invalid_argument || ptr != v.data() + v.size())
-      throw Error(at + "pair row '" + text + "': '" + std::string(v) + "' is not an integer");
+      throw Error(at + "pair row '" + text + "': '" + excerpt(v) + "' is not an integer");
     // Too large for 64 bits is out of range like any other index the frame does not have.
     if (ec == std::errc::result_out_of_range || ij[k] < base || ij[k] >= n + base)
       throw Error(at + "pair " + text + ": frame " + std::to_string(frame.number) + " has " + plural(n, "element") +
@@ -105,7 +114,7 @@ void parse_pair_row(std::string_view line, const std::string& at, int base, std:
 
 // ---- parse_recording ------------------------------------------------------------------------
 
-Recording parse_recording(const std::string& text, const std::string& where, std::int64_t max_frames) {
+Recording parse_recording(const std::string& text, const std::string& where, std::int64_t max_frames, std::size_t frame_limit) {
   Recording rec;
   rec.path = where;
   if (text.find_first_not_of(" \t\r\n") == std::string::npos)
@@ -119,32 +128,40 @@ Recording parse_recording(const std::string& text, const std::string& where, std
     if (rec.frames.size() == 1) rec.has_pairs = state.has_pairs;
     check_all_or_none(rec, state, rec.has_pairs, where);
   };
+  std::size_t first_line[kHeaderKeys.size()] = {};  // of each header key, 0 until seen ("nbsrec": the version line)
   std::size_t line_no = 0;
   std::size_t pos = 0;
   while (pos < text.size()) {
     std::size_t end = text.find('\n', pos);
     if (end == std::string::npos) end = text.size();
-    const std::string_view line = strip_comment(std::string_view(text.data() + pos, end - pos));
+    const std::string_view raw(text.data() + pos, end - pos);
     pos = end + 1;
     ++line_no;
+    check_line_length(raw, where, line_no);
+    const std::string_view line = strip_comment(raw);
     if (line.empty()) continue;
     const std::string at = where + ":" + std::to_string(line_no) + ": ";
     const std::vector<std::string_view> words = split_words(line);
     const std::string_view key = words.front();
     if (!seen_version) {
       if (key != "nbsrec")
-        throw Error(at + "expected 'nbsrec 1' as the first line (an nbscope recording), got '" + std::string(line) + "'");
+        throw Error(at + "expected 'nbsrec 1' as the first line (an nbscope recording), got '" + excerpt(line) + "'");
       if (words.size() != 2 || words[1] != "1")
-        throw Error(at + "'" + std::string(line) + "': this nbscope reads version 1 ('nbsrec 1') only");
+        throw Error(at + "'" + excerpt(line) + "': this nbscope reads version 1 ('nbsrec 1') only");
       seen_version = true;
+      first_line[0] = line_no;
       continue;
     }
     const bool in_header = rec.frames.empty();
-    if (key == "cell_size" || key == "origin" || key == "cells" || key == "base") {
+    if (const std::size_t h = header_index(key); h < kHeaderKeys.size()) {
+      // One value per key: a second line would silently win over the first.
+      if (first_line[h] != 0)
+        throw Error(at + std::string(key) + " given twice (first on line " + std::to_string(first_line[h]) + ")");
+      first_line[h] = line_no;
       if (!in_header) throw Error(at + std::string(key) + ": header lines come before the first frame");
       if (key == "cell_size") {
         const double d = parse_finite_number(header_value(words, at, "cell_size D"), at, "cell_size");
-        if (!(d > 0)) throw Error(at + "cell_size: must be > 0, got " + std::string(words[1]));
+        if (!(d > 0)) throw Error(at + "cell_size: must be > 0, got " + excerpt(words[1]));
         rec.grid.cell_size = d;
       } else if (key == "origin") {
         const auto f = two_fields(header_value(words, at, "origin X,Y"), at, "origin", "X,Y");
@@ -156,13 +173,13 @@ Recording parse_recording(const std::string& text, const std::string& where, std
       } else {
         const std::string_view b = header_value(words, at, "base 0|1");
         if (b != "0" && b != "1")
-          throw Error(at + "base: '" + std::string(b) + "': pairs number elements from 0 ('base 0', the default) or 1 ('base 1')");
+          throw Error(at + "base: '" + excerpt(b) + "': pairs number elements from 0 ('base 0', the default) or 1 ('base 1')");
         rec.pair_base = b == "1" ? 1 : 0;
       }
       continue;
     }
     if (key == "frame") {
-      if (words.size() != 3) throw Error(at + "expected 'frame NUMBER TIME', got '" + std::string(line) + "'");
+      if (words.size() != 3) throw Error(at + "expected 'frame NUMBER TIME', got '" + excerpt(line) + "'");
       const std::int64_t number = parse_integer(words[1], at, "frame number", 0, std::numeric_limits<std::int64_t>::max());
       const double time = parse_finite_number(words[2], at, "frame time");
       if (!rec.frames.empty()) {
@@ -176,12 +193,15 @@ Recording parse_recording(const std::string& text, const std::string& where, std
         end_frame();
         if (static_cast<std::int64_t>(rec.frames.size()) >= max_frames) return rec;
       }
+      // ~110 bytes a frame from a 10-byte line: millions of empty frames must not take the machine.
+      if (rec.frames.size() >= frame_limit)
+        throw Error(at + "more than " + std::to_string(frame_limit) + " frames, the limit for a recording (replay --frames N reads the first N)");
       rec.frames.push_back({number, time, {}, {}});
       state = FrameState{line_no, false};
       continue;
     }
     if (key == "pairs") {
-      if (words.size() != 1) throw Error(at + "expected 'pairs' alone on its line, got '" + std::string(line) + "'");
+      if (words.size() != 1) throw Error(at + "expected 'pairs' alone on its line, got '" + excerpt(line) + "'");
       if (in_header) throw Error(at + "a 'pairs' line before the first 'frame NUMBER TIME' line");
       if (state.has_pairs)
         throw Error(at + "a second 'pairs' line in frame " + std::to_string(rec.frames.back().number) + " (one pairs block a frame)");
@@ -191,7 +211,7 @@ Recording parse_recording(const std::string& text, const std::string& where, std
       continue;
     }
     if (std::isalpha(static_cast<unsigned char>(key.front())) && line.find(',') == std::string_view::npos)
-      throw Error(at + "unknown line '" + std::string(line) + "' (expected frame, pairs, cell_size, origin, cells, base or a row x,y,r)");
+      throw Error(at + "unknown line '" + excerpt(line) + "' (expected frame, pairs, cell_size, origin, cells, base or a row x,y,r)");
     if (in_header) throw Error(at + "an element row before the first 'frame NUMBER TIME' line");
     if (state.has_pairs) {
       parse_pair_row(line, at, rec.pair_base, static_cast<std::int64_t>(cols[0].size()), rec.frames.back());
@@ -220,7 +240,7 @@ Recording parse_recording(const std::string& text, const std::string& where, std
 // ---- read_recording -------------------------------------------------------------------------
 
 Recording read_recording(const std::string& path, std::int64_t max_frames) {
-  return parse_recording(read_input_file(path, "recording", kMaxRecordingBytes), path, max_frames);
+  return parse_recording(read_input_file(path, "recording", kMaxRecordingBytes, kMaxLineBytes), path, max_frames);
 }
 
 // ---- RecordingWriter ------------------------------------------------------------------------

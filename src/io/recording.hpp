@@ -32,6 +32,10 @@
 
 namespace nbscope {
 
+// Most frames read from one recording (about 1 GB of frame records before any element); `replay
+// --frames N` reads only the first N, so a longer recording can be replayed in parts.
+inline constexpr std::size_t kMaxRecordedFrames = 10'000'000;
+
 // One recorded frame.
 struct RecordedFrame {
   std::int64_t number = 0;
@@ -50,18 +54,22 @@ struct Recording {
 };
 
 // Reads and validates a .nbsrec file, at most `max_frames` frames (the rest is not read). Throws
-// Error("<path>:<line>: <what>") on anything wrong: an unreadable or empty file, a missing
-// "nbsrec 1" line or another version, an unknown line, a header line after the first frame, a bad
-// cell_size/origin/cells value, a frame number that does not increase, a time that decreases, a row
-// before the first frame, a bad row (as ELEMENTS.csv: column count, non-number, NaN/Inf, r <= 0), a
-// 4-column row ("replay is 2D"), an element wider than the pinned cell_size, no frames at all; a `base`
-// other than 0 or 1 or after the first frame; a `pairs` line before the first frame or twice in a
-// frame, an element row after it, a pair row that is not two integers or names an element the frame
-// does not have; a frame without a pairs block when another has one.
+// Error("<path>:<line>: <what>") on anything wrong: an unreadable or empty file, a missing "nbsrec 1"
+// line or another version, an unknown line, a header line after the first frame or given twice
+// ("cell_size given twice (first on line 2)"), a NUL byte, a line longer than kMaxLineBytes
+// (io/input_file.hpp), a bad cell_size/origin/cells value, a frame number that does not increase, a
+// time that decreases, a row before the first frame, a bad row (as ELEMENTS.csv: column count,
+// non-number, NaN/Inf, r <= 0), a 4-column row ("replay is 2D"), an element wider than the pinned
+// cell_size, no frames at all; a `base` other than 0 or 1 or after the first frame; a `pairs` line
+// before the first frame or twice in a frame, an element row after it, a pair row that is not two
+// integers or names an element the frame does not have; a frame without a pairs block when another has
+// one.
 Recording read_recording(const std::string& path, std::int64_t max_frames = std::numeric_limits<std::int64_t>::max());
-// Same from memory; `where` names it in messages.
+// Same from memory; `where` names it in messages. More than `frame_limit` frames (before
+// `max_frames` stops the read) is an error: "more than N frames, the limit for a recording".
 Recording parse_recording(const std::string& text, const std::string& where,
-                          std::int64_t max_frames = std::numeric_limits<std::int64_t>::max());
+                          std::int64_t max_frames = std::numeric_limits<std::int64_t>::max(),
+                          std::size_t frame_limit = kMaxRecordedFrames);
 
 // Streams frames to `path` through a temporary file (io/atomic_file.hpp): the file appears only at
 // commit(); destroyed before that (an error, an interruption) it leaves nothing behind.

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/csv.hpp"
+#include "io/excerpt.hpp"
 #include "io/input_file.hpp"
 
 namespace nbscope {
@@ -31,7 +32,7 @@ std::int64_t parse_count(std::string_view f, const std::string& at, const char* 
   std::int64_t v = 0;
   const auto [ptr, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
   if (f.empty() || ec != std::errc() || ptr != f.data() + f.size())
-    throw Error(at + name + ": '" + printable_line(f) + "' is not a whole number");
+    throw Error(at + name + ": '" + excerpt(f) + "' is not a whole number");
   if (v < min) throw Error(at + name + ": " + std::to_string(v) + " is less than " + std::to_string(min));
   return v;
 }
@@ -39,7 +40,7 @@ std::int64_t parse_count(std::string_view f, const std::string& at, const char* 
 // A finite number >= 0.
 double parse_amount(std::string_view f, const std::string& at, const char* name) {
   const double v = parse_finite_number(f, at, name);
-  if (v < 0) throw Error(at + name + ": " + std::string(f) + " is negative");
+  if (v < 0) throw Error(at + name + ": " + excerpt(f) + " is negative");
   return v;
 }
 
@@ -63,6 +64,7 @@ std::vector<ScalingRow> parse_scaling_csv(const std::string& text, const std::st
   std::string raw;
   bool header = false;
   for (long long line = 1; std::getline(in, raw); ++line) {
+    check_line_length(raw, where, static_cast<std::size_t>(line));
     const std::string_view content = strip_comment(raw);
     if (content.empty()) continue;
     const std::string at = where + ":" + std::to_string(line) + ": ";
@@ -79,8 +81,8 @@ std::vector<ScalingRow> parse_scaling_csv(const std::string& text, const std::st
     r.algorithm = std::string(f[0]);
     bool known = false;
     for (const DetectorInfo& d : detector_infos()) known = known || d.name == r.algorithm;
-    if (!known) throw Error(at + "algorithm: '" + printable_line(f[0]) + "' is not one of " + detector_names());
-    if (!parse_layout(f[1])) throw Error(at + "layout: '" + printable_line(f[1]) + "' is not one of " + layout_names());
+    if (!known) throw Error(at + "algorithm: '" + excerpt(f[0]) + "' is not one of " + detector_names());
+    if (!parse_layout(f[1])) throw Error(at + "layout: '" + excerpt(f[1]) + "' is not one of " + layout_names());
     r.layout = std::string(f[1]);
     r.n = parse_count(f[2], at, "n", 1);
     if (r.n > kMaxElements) throw Error(at + "n: " + std::to_string(r.n) + " is more than " + std::to_string(kMaxElements));
@@ -98,7 +100,7 @@ std::vector<ScalingRow> parse_scaling_csv(const std::string& text, const std::st
 }
 
 std::vector<ScalingRow> read_scaling_csv(const std::string& path) {
-  return parse_scaling_csv(read_input_file(path, "scaling CSV", kMaxScalingCsvBytes), path);
+  return parse_scaling_csv(read_input_file(path, "scaling CSV", kMaxScalingCsvBytes, kMaxLineBytes), path);
 }
 
 }  // namespace nbscope

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "io/excerpt.hpp"
 #include "io/input_file.hpp"
 #include "io/scene_json_source.hpp"
 
@@ -23,10 +24,38 @@ namespace {
 using nlohmann::json;
 using Path = std::string;
 
+// Longest scene name (the "name" key).
+constexpr std::size_t kMaxSceneNameBytes = 200;
+
+// Appends `v` as JSON to `out`, stopping once `out` is longer than `limit`: a 1e6-element array or
+// a 50 MB string costs what is shown, not its whole dump.
+void dump_short(const json& v, std::string& out, std::size_t limit) {
+  if (out.size() > limit) return;
+  if (v.is_array() || v.is_object()) {
+    out += v.is_array() ? '[' : '{';
+    bool first = true;
+    for (auto it = v.begin(); it != v.end() && out.size() <= limit; ++it, first = false) {
+      if (!first) out += ',';
+      if (v.is_object()) {
+        dump_short(json(it.key()), out, limit);
+        out += ':';
+      }
+      dump_short(*it, out, limit);
+    }
+    out += v.is_array() ? ']' : '}';
+  } else if (v.is_string()) {
+    // A cut may split a UTF-8 character: replace it rather than throw.
+    out += json(v.get_ref<const std::string&>().substr(0, limit)).dump(-1, ' ', false, json::error_handler_t::replace);
+  } else {
+    out += v.dump();
+  }
+}
+
+// `v` as a short excerpt for a message.
 std::string show(const json& v) {
-  std::string s = v.dump();
-  if (s.size() > 40) s = s.substr(0, 37) + "...";
-  return s;
+  std::string s;
+  dump_short(v, s, kExcerptBytes);
+  return s.size() > kExcerptBytes ? excerpt(s) : s;
 }
 
 std::string type_of(const json& v) {
@@ -419,7 +448,13 @@ Scene read_scene(const LocatedJson& doc) {
   Scene s;
   s.path = doc.where();
   s.name = std::filesystem::path(doc.where()).stem().string();
-  if (r.has("name")) s.name = read_string(doc, r.get("name"), r.at("name"));
+  if (r.has("name")) {
+    s.name = read_string(doc, r.get("name"), r.at("name"));
+    // The name goes into window titles, reports and file names: a line of text, not a document.
+    if (s.name.size() > kMaxSceneNameBytes)
+      doc.fail(r.at("name"), "a name of " + std::to_string(s.name.size()) + " bytes \"" + excerpt(s.name) + "\"; at most " +
+                                 std::to_string(kMaxSceneNameBytes));
+  }
   r.allow({"description"});
   s.gravity = r.vec2("gravity", s.gravity, 1e4);
   s.time_step = r.number_in("time_step", s.time_step, 1e-6, 1, "from 1e-6 to 1 second");

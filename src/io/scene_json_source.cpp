@@ -5,12 +5,18 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "io/excerpt.hpp"
+#include "io/json_limits.hpp"
 
 namespace nbscope {
 
 namespace {
 
 using nlohmann::json;
+
+// Longest field path recorded (and quoted in a message): far beyond any path a scene's fields
+// have ("generators[12].body.fixtures[3].vertices[7][1]").
+constexpr std::size_t kMaxPathBytes = 200;
 
 // Reads the text like `const char*` and publishes how many bytes the lexer has consumed so far,
 // which tells the SAX handler where the token it is being handed ends.
@@ -44,7 +50,9 @@ struct CountingIterator {
 
 // Builds the tree and the line map; see the header. Lines come from byte offsets: when a key or a
 // container start is reported the lexer has consumed exactly that token, when a number is reported
-// it has consumed one more byte (the one that ended the number).
+// it has consumed one more byte (the one that ended the number). A key or array element on its
+// container's line is not recorded: line_of() finds the container's line for it, so a 1e6-element
+// array on one line costs no map entries.
 class LocatingSax {
  public:
   LocatingSax(const std::string& text, const std::size_t& consumed, LocatedJson& out)
@@ -63,7 +71,7 @@ class LocatingSax {
 
   bool start_object(std::size_t) {
     json* node = add_node(json::object(), token_line(0));
-    stack_.push_back({node, current_path_});
+    stack_.push_back({node, current_path_, current_recorded_, current_line_});
     return true;
   }
   bool end_object() {
@@ -72,7 +80,7 @@ class LocatingSax {
   }
   bool start_array(std::size_t) {
     json* node = add_node(json::array(), token_line(0));
-    stack_.push_back({node, current_path_});
+    stack_.push_back({node, current_path_, current_recorded_, current_line_});
     return true;
   }
   bool end_array() {
@@ -82,46 +90,29 @@ class LocatingSax {
 
   bool key(std::string& k) {
     const Level& parent = stack_.back();
-    const std::string path = LocatedJson::member(parent.path, k);
+    const std::string path = child_path(parent, LocatedJson::member(parent.path, k));
     const int line = token_line(0);
     if (parent.node->contains(k)) {
-      error_ = out_.where_ + ":" + std::to_string(line) + ": " + path + ": given twice (first on line " +
-               std::to_string(out_.line_of(path)) + ")";
+      error_ = out_.where_ + ":" + std::to_string(line) + ": " + excerpt(path.empty() ? k : path, kMaxPathBytes) + ": given twice" +
+               (path.empty() ? "" : " (first on line " + std::to_string(out_.line_of(path)) + ")");
       return false;
     }
     pending_key_ = k;
-    out_.lines_[path] = line;
+    // A key with '.' or '[' is always recorded: line_of() could not strip it off to find the parent.
+    if (!path.empty() && (line != parent.line || k.find_first_of(".[") != std::string::npos)) out_.lines_[path] = line;
+    current_line_ = line;
     return true;
   }
 
   bool parse_error(std::size_t position, const std::string& last_token, const nlohmann::detail::exception& ex) {
     // The field being read: the pending key's, else the container's.
     std::string field = stack_.empty() ? "" : stack_.back().path;
-    if (!stack_.empty() && stack_.back().node->is_object() && !pending_key_.empty())
+    if (!stack_.empty() && stack_.back().recorded && stack_.back().node->is_object() && !pending_key_.empty())
       field = LocatedJson::member(field, pending_key_);
-    std::string what = ex.what();
-    // "[json.exception.parse_error.101] parse error at line 3, column 5: syntax error while ..." -> the tail.
-    if (const auto col = what.find("column "); col != std::string::npos) {
-      if (const auto colon = what.find(": ", col); colon != std::string::npos) what = what.substr(colon + 2);
-    } else if (const auto bracket = what.find("] "); bracket != std::string::npos) {
-      what = what.substr(bracket + 2);
-    }
-    // nlohmann's "last read" holds everything since the previous token, escapes included
-    // ("0,<U+000A> N"); keep only the offending token ("N").
-    // A suffix such as "; expected end of input" follows the token's closing quote: keep it.
-    if (const auto lr = what.find("; last read: '"); lr != std::string::npos) {
-      const std::size_t begin = lr + 14;
-      std::size_t end = what.find("'; ", begin);
-      if (end == std::string::npos) end = what.size() - (what.back() == '\'' ? 1 : 0);
-      std::string token = what.substr(begin, end - begin);
-      const std::string rest = end + 1 < what.size() ? what.substr(end + 1) : "";
-      const auto cut = token.find_last_of(" \t,:[{>");
-      if (cut != std::string::npos && cut + 1 < token.size()) token = token.substr(cut + 1);
-      what = what.substr(0, lr) + "; last read: '" + token + "'" + rest;
-    }
-    if (ex.id == 406) what = "number out of range '" + last_token + "' (not a finite double)";
+    const std::string what =
+        ex.id == 406 ? "number out of range '" + excerpt(last_token) + "' (not a finite double)" : json_error_text(ex.what());
     const int line = line_at(position == 0 ? 0 : position - 1);
-    error_ = out_.where_ + ":" + std::to_string(line) + ": " + (field.empty() ? "" : field + ": ") +
+    error_ = out_.where_ + ":" + std::to_string(line) + ": " + (field.empty() ? "" : excerpt(field, kMaxPathBytes) + ": ") +
              "JSON syntax error: " + what;
     return false;
   }
@@ -132,6 +123,8 @@ class LocatingSax {
   struct Level {
     json* node;
     std::string path;
+    bool recorded;  // false: its path is too long to record ("" then), and so are its children's
+    int line;       // where it starts (its line_of(), recorded or not)
   };
 
   // Line (1-based) of the byte at `offset` (0-based); past the end counts as the last byte.
@@ -151,6 +144,15 @@ class LocatingSax {
     return line_at(last);
   }
 
+  // `path`, the path of a child of `parent`, or "" (not recorded: its line is its nearest recorded
+  // ancestor's) when the parent is not recorded or the path is longer than kMaxPathBytes. Without
+  // this cap every value would carry its whole path, and long keys nested deep would cost
+  // depth x key length per value.
+  [[nodiscard]] static std::string child_path(const Level& parent, std::string path) {
+    if (!parent.recorded || path.size() > kMaxPathBytes) return {};
+    return path;
+  }
+
   bool add(json value, int line) {
     add_node(std::move(value), line);
     return true;
@@ -163,16 +165,21 @@ class LocatingSax {
       out_.root_ = std::move(value);
       node = &out_.root_;
       current_path_.clear();
+      current_recorded_ = true;
+      current_line_ = line;
       out_.lines_[current_path_] = line;
     } else if (Level& parent = stack_.back(); parent.node->is_object()) {
-      current_path_ = LocatedJson::member(parent.path, pending_key_);
+      current_path_ = child_path(parent, LocatedJson::member(parent.path, pending_key_));
+      current_recorded_ = !current_path_.empty();
       node = &((*parent.node)[pending_key_] = std::move(value));
       pending_key_.clear();
     } else {
-      current_path_ = LocatedJson::element(parent.path, parent.node->size());
+      current_path_ = child_path(parent, LocatedJson::element(parent.path, parent.node->size()));
+      current_recorded_ = !current_path_.empty();
       parent.node->push_back(std::move(value));
       node = &parent.node->back();
-      out_.lines_[current_path_] = line;
+      current_line_ = line;
+      if (!current_path_.empty() && line != parent.line) out_.lines_[current_path_] = line;
     }
     return node;
   }
@@ -184,10 +191,13 @@ class LocatingSax {
   std::vector<Level> stack_;
   std::string pending_key_;
   std::string current_path_;
+  bool current_recorded_ = true;
+  int current_line_ = 1;  // of the value being added (an object member's: its key's)
   std::string error_;
 };
 
 LocatedJson::LocatedJson(const std::string& text, const std::string& where) : where_(where) {
+  check_json_limits(text, where, "scene file", kMaxSceneJsonValues);  // before any tree: deep nesting costs a scan, not paths
   std::size_t consumed = 0;
   LocatingSax sax(text, consumed, *this);
   const CountingIterator first{text.data(), text.data(), &consumed};
@@ -207,7 +217,7 @@ int LocatedJson::line_of(const std::string& path) const {
 }
 
 std::string LocatedJson::locate(const std::string& path) const {
-  return where_ + ":" + std::to_string(line_of(path)) + ": " + (path.empty() ? "" : path + ": ");
+  return where_ + ":" + std::to_string(line_of(path)) + ": " + (path.empty() ? "" : excerpt(path, kMaxPathBytes) + ": ");
 }
 
 void LocatedJson::fail(const std::string& path, const std::string& what) const { throw Error(locate(path) + what); }

@@ -3,6 +3,10 @@
 // syntax errors, so the tree is built by a SAX handler that reads the text through an iterator
 // counting the bytes consumed, and records the line where each key, array element and container
 // starts. Field paths are written as a user reads them: "bodies[3].radius", "gravity[1]".
+// Bounded work on hostile text: nesting deeper than kMaxJsonDepth and keys longer than
+// kMaxJsonKeyBytes (io/json_limits.hpp) are refused by a scan before any tree is built, paths
+// longer than 200 bytes are not recorded (their lines are their nearest recorded ancestor's), and
+// messages quote tokens and paths as short excerpts (io/excerpt.hpp).
 #pragma once
 #include <nlohmann/json.hpp>
 #include <string>
@@ -14,7 +18,8 @@ namespace nbscope {
 class LocatedJson {
  public:
   // Parses `text` (comments allowed); `where` names it in messages. Throws Error
-  // "<where>:<line>: <field>: JSON syntax error: ..." on malformed text and on a key given twice.
+  // "<where>:<line>: <field>: JSON syntax error: ..." on malformed text and on a key given twice,
+  // and "<where>:<line>: ..." on nesting or a key beyond the limits of io/json_limits.hpp.
   LocatedJson(const std::string& text, const std::string& where);
 
   [[nodiscard]] const nlohmann::json& root() const { return root_; }
