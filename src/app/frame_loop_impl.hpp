@@ -133,10 +133,10 @@ struct FrameLoop::Impl {
     FrameWatch& watch;
     ~Unwatch() { watch.disarm(); }
   };
-  // The current frame's detection and check: the note describes them.
+  // The current frame's detection and check: the note describes them (when the frame was stepped).
   void watch_detection() {
     const std::string what = "detection (" + main.name + ") and the check of " + grouped(now().size()) + " elements";
-    watch.arm(frame_number(), [what] { return what; });
+    watch.next_phase(frame_number(), [what] { return what; });
   }
 
   explicit Impl(FrameLoopOptions o)

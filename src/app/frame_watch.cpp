@@ -46,6 +46,11 @@ void FrameWatch::arm(std::int64_t frame, Describe describe) {
   wake_.notify_all();
 }
 
+void FrameWatch::next_phase(std::int64_t frame, Describe describe) {
+  const std::lock_guard lock(mutex_);
+  if (armed_ && frame_ == frame) describe_ = std::move(describe);
+}
+
 void FrameWatch::disarm() {
   const std::lock_guard lock(mutex_);
   armed_ = false;

@@ -1,7 +1,8 @@
 // nbscope app: the slow-frame note. A frame (Box2D's step, detection, the check) that runs longer
 // than a few seconds says so once per run on stderr, terminal or not, while it still runs:
 //   nbscope: note: frame 1 has run for 5.0 s so far (Box2D step: 2,000 bodies, about 1,234,567 contacts)
-// so that a run that seems to hang says what it is doing. A watcher thread waits for the deadline;
+// so that a run that seems to hang says what it is doing. Frames made by a step are watched (the
+// step, then their detection and check); frame 0 and frames detected again are not. A watcher thread waits for the deadline;
 // arming and disarming cost a mutex and a notify.
 //
 // The threshold is 5 s; the environment variable NBSCOPE_SLOW_FRAME_SECONDS sets another (tests).
@@ -28,6 +29,9 @@ class FrameWatch {
 
   // Frame `frame` starts (or moves to another phase): the note, if due, describes it with `describe`.
   void arm(std::int64_t frame, Describe describe);
+  // The frame being watched moves to another phase (no effect when `frame` is not being watched:
+  // frames detected again, not stepped, e.g. on load or a change of algorithm, are not watched).
+  void next_phase(std::int64_t frame, Describe describe);
   // The frame is done.
   void disarm();
   // A new run: the note may be printed again.
