@@ -108,10 +108,10 @@ void Args::finish() const {
 
 const std::vector<std::pair<const char*, std::vector<const char*>>>& command_options() {
   static const std::vector<std::pair<const char*, std::vector<const char*>>> table = {
-      {"gui", {"--scene", "--algorithm", "--inject-fault", "--frames", "--history-mb", "--back", "--input", "--arrays",
+      {"gui", {"--scene", "--algorithm", "--inject-fault", "--frames", "--history-mb", "--max-contacts", "--back", "--input", "--arrays",
                "--cell-size", "--origin", "--cells", "--base", "--exact", NBSCOPE_VIEW_OPTIONS}},
       {"headless", {"--scene", "--frames", "--algorithm", "--report", "--inject-fault", "--brute-limit", "--quiet",
-                    "--record", "--stop-at-violation", "--rewind", "--history-mb", "--back", "--violation", "--gl",
+                    "--record", "--stop-at-violation", "--rewind", "--history-mb", "--max-contacts", "--back", "--violation", "--gl",
                     "--scaling", "--layout", "--n", "--points-per-decade", NBSCOPE_VIEW_OPTIONS}},
       {"replay", {"--headless", "--frames", "--algorithm", "--report", "--inject-fault", "--brute-limit", "--quiet",
                   "--stop-at-violation", "--gl", NBSCOPE_VIEW_OPTIONS}},

@@ -40,6 +40,7 @@ struct GuiOptions {
   Fault fault = Fault::None;
   std::optional<std::int64_t> frames;
   std::optional<std::int64_t> history_mb;  // --history-mb N: memory for kept frames (else the settings' 256)
+  std::optional<std::int64_t> max_contacts;  // --max-contacts N: Box2D contacts a frame may create
   std::int64_t back = 0;  // --back K (scripted): after the frames, K frames back through the history, each drawn
   ViewOptions view;
 };
@@ -51,6 +52,7 @@ GuiOptions parse_gui_options(Args& args) {
   if (auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);
   if (auto n = args.integer("--frames", 0, 100'000'000)) o.frames = *n;
   if (auto mb = args.integer("--history-mb", 0, 1'000'000)) o.history_mb = *mb;
+  if (auto n = args.integer("--max-contacts", 0, kMaxMaxContacts)) o.max_contacts = *n;
   o.back = args.integer("--back", 1, 100'000'000).value_or(0);
   parse_view_options(args, false, o.view);
   if (auto p = args.positional()) throw Error(*p + ": unexpected argument (the scene goes after --scene)");
@@ -258,6 +260,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   bool any_overlapped = false;  // physics ran on the worker thread, beside the drawing
   double sum_back_show = 0, sum_back_view = 0;  // --back: showing a kept frame again, and drawing it
   const std::int64_t scripted_frames = o.frames.value_or(0) + o.back;
+  std::string world_error;  // a scripted run's step that failed (the world stopped)
   auto last = Clock::now();
   double fps_window_start = window.time();
   int fps_frames = 0;
@@ -277,10 +280,20 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       // Frames 1..N each step once, then --back K goes back one kept frame a frame; then the last
       // state is drawn until the layout has settled. Frame k+1's physics runs while frame k is
       // drawn (FrameLoop::begin_step), as when playing.
-      if (rendered > 0 && rendered <= *o.frames) {
-        loop.step();
-        view.after_step(loop);
-        if (rendered < *o.frames) loop.begin_step();
+      if (!world_error.empty()) {
+        // Stopped: the last good frame is drawn with the message until the layout settles.
+      } else if (rendered > 0 && rendered <= *o.frames) {
+        // A world that stops is shown as the interactive window shows it (message, paused); the
+        // screenshot is still taken, then the error ends the run (exit 2).
+        try {
+          loop.step();
+          view.after_step(loop);
+          if (rendered < *o.frames) loop.begin_step();
+        } catch (const Error& e) {
+          world_error = e.what();
+          session.error = world_error;
+          session.paused = true;
+        }
       } else if (rendered > *o.frames && rendered <= scripted_frames) {
         const auto t0 = Clock::now();
         step_back_for_flag(loop);
@@ -379,6 +392,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
     settings->speed = session.speed;
     settings->history_mb = view.state().history_budget_mb;
   }
+  if (!world_error.empty()) throw Error(world_error);
   return failed ? 1 : 0;
 }
 
@@ -431,6 +445,7 @@ int run_gui(Args& args) {
   FrameLoopOptions loop_options;
   loop_options.fault = o.fault;
   loop_options.history_budget = static_cast<std::size_t>(o.history_mb.value_or(settings ? settings->history_mb : 256)) << 20;
+  loop_options.max_contacts = o.max_contacts;
   if (o.algorithm) loop_options.algorithm = *o.algorithm;
   else if (settings && settings->algorithm) loop_options.algorithm = *settings->algorithm;
   FrameLoop loop(loop_options);

@@ -303,6 +303,7 @@ HeadlessOptions parse_headless_options(Args& args) {
   o.stop_at_violation = args.flag("--stop-at-violation");
   if (const auto r = args.value("--rewind")) o.rewind = parse_rewind(*r);
   if (const auto mb = args.integer("--history-mb", 0, 1'000'000)) o.history_mb = *mb;
+  if (const auto n = args.integer("--max-contacts", 0, kMaxMaxContacts)) o.max_contacts = *n;
   o.back = args.integer("--back", 1, 100'000'000).value_or(0);
   o.violation = args.integer("--violation", 1, 1'000'000'000).value_or(0);
   o.scaling = args.value("--scaling");
@@ -360,6 +361,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   lo.algorithm = o.algorithm == "all" ? "nbs" : names.front();
   lo.fault = o.fault;
   lo.brute_limit = o.brute_limit;
+  lo.max_contacts = o.max_contacts;
   // Past frames are kept when the run goes back to one, or draws the Timeline as the window would
   // (the window's default budget), or the user asks for a budget; else none.
   const bool keep = o.rewind || o.view.screenshot || o.back > 0 || o.violation > 0;

@@ -113,6 +113,8 @@ void FrameLoop::step() {
   if (!m.world) return;
   m.stale = m.world->elements();
   m.stale_for = m.world->frame() + 1;
+  const Impl::Unwatch unwatch{m.watch};
+  m.watch_physics();
   const auto t0 = std::chrono::steady_clock::now();
   m.world->step();
   m.set_physics_ms(ms_since(t0));

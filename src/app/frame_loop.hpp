@@ -56,6 +56,8 @@ struct FrameLoopOptions {
   // Bytes of past world states the history keeps (FrameHistory::kDefaultBudget in the window); 0
   // keeps none (headless runs that never go back), summaries are kept either way.
   std::size_t history_budget = FrameHistory::kDefaultBudget;
+  // Box2D contacts a frame may create, over the scene's "max_contacts" (--max-contacts).
+  std::optional<std::int64_t> max_contacts;
 };
 
 class FrameLoop {

@@ -18,6 +18,7 @@
 
 #include "app/clock.hpp"
 #include "app/frame_loop.hpp"
+#include "app/frame_watch.hpp"
 #include "app/recorded_pairs.hpp"
 #include "check/check.hpp"
 #include "core/error.hpp"
@@ -117,6 +118,27 @@ struct FrameLoop::Impl {
   ShownFrame shown;
   bool physics_overlapped = false;  // the current frame's physics ran on the worker
 
+  // The slow-frame note (app/frame_watch.hpp). Declared last: its thread, which may read the world's
+  // counters, is joined before anything else goes.
+  FrameWatch watch;
+  // The frame world->step() is making: the note describes Box2D's step.
+  void watch_physics() {
+    const PhysicsWorld* w = world.get();
+    watch.arm(w->frame() + 1, [w] {
+      return "Box2D step: " + grouped(w->bodies_now()) + " bodies, about " + grouped(w->estimated_contacts()) + " contacts";
+    });
+  }
+  // Disarms the note when a frame is done, returned or thrown.
+  struct Unwatch {
+    FrameWatch& watch;
+    ~Unwatch() { watch.disarm(); }
+  };
+  // The current frame's detection and check: the note describes them (when the frame was stepped).
+  void watch_detection() {
+    const std::string what = "detection (" + main.name + ") and the check of " + grouped(now().size()) + " elements";
+    watch.next_phase(frame_number(), [what] { return what; });
+  }
+
   explicit Impl(FrameLoopOptions o)
       : options(std::move(o)), main(options.algorithm), checker(CheckOptions{options.brute_limit}) {
     if (main.recorded_pairs) check_recorded_fault(options.fault);
@@ -179,6 +201,8 @@ struct FrameLoop::Impl {
       detected_on.y.head(old_n) = stale.y.head(old_n);
       detected_on_world = false;
     }
+    watch_detection();
+    const Unwatch unwatch{watch};
     const std::string where = scene.path + ": frame " + std::to_string(frame_number()) + ": ";
     const Elements& input = detector_input();
     trace.reset();  // made again on request, for this frame and detector
@@ -294,7 +318,9 @@ struct FrameLoop::Impl {
     opts.grid = s.grid;
     // No Box2D call beside the worker's; if the new scene is refused, the step in flight stays pending.
     wait_for_worker();
-    auto fresh = std::make_unique<PhysicsWorld>(s);
+    Scene copy = s;
+    if (options.max_contacts) copy.max_contacts = *options.max_contacts;  // the flag over the scene's key
+    auto fresh = std::make_unique<PhysicsWorld>(copy);
     // A pinned cell size must hold the largest element from the start and every element an
     // emitter will add (the grid would refuse it mid-run, far from the field to fix).
     if (s.grid.cell_size) {
@@ -310,8 +336,9 @@ struct FrameLoop::Impl {
                     emitter.substr(0, emitter.size() - 2));
       }
     }
-    Scene copy = s;
     scene = std::move(copy);
+    watch.disarm();  // its note describes the old world
+    watch.reset();   // a new run
     kept.reset();  // it points into the old world
     discard_step();
     world = std::move(fresh);

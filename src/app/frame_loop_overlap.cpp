@@ -35,6 +35,7 @@ void FrameLoop::begin_step() {
   // As step() does: the stale-positions fault detects the next frame on this one's positions.
   m.stale = world.elements();
   m.stale_for = world.frame() + 1;
+  m.watch_physics();  // settle() moves the note on to the detection, and ends it
   try {
     m.stepping = std::async(std::launch::async, [&world] {
       const auto t0 = Clock::now();
@@ -43,6 +44,7 @@ void FrameLoop::begin_step() {
     });
   } catch (const std::system_error&) {
     // No thread to be had: nothing is pending, and the next step() steps here as it always did.
+    m.watch.disarm();
   }
 }
 
@@ -51,6 +53,7 @@ bool FrameLoop::physics_overlapped() const { return impl_->physics_overlapped; }
 
 bool FrameLoop::Impl::settle() {
   if (!pending()) return false;
+  const Unwatch unwatch{watch};
   const double physics_ms = stepping.get();  // rethrows the step's Error; the future is spent either way
   set_physics_ms(physics_ms);
   physics_overlapped = true;

@@ -43,6 +43,7 @@ struct HeadlessOptions {
   ScalingPlan scaling_plan;            // --scaling run: --algorithm, --layout, --n, --points-per-decade
   std::optional<std::int64_t> history_mb;  // --history-mb N: memory for kept frames (default: 256 with
                                            // --rewind, --back, --violation or --screenshot, else none)
+  std::optional<std::int64_t> max_contacts;  // --max-contacts N: Box2D contacts a frame may create
 };
 
 // Error when --stop-at-violation is combined with what it cannot show (several algorithms, --step).

@@ -10,6 +10,7 @@ inline constexpr const char* kHelpText = R"(nbscope - a visual debugger for grid
 usage:
   nbscope [gui] [--scene FILE] [--algorithm NAME] [--inject-fault NAME] [--size WxH] [--history-mb N]
                 [--frames N [--back K] --screenshot OUT.png] [--overlays SPEC] [--panels SPEC] [--select K]
+                [--max-contacts N]
       The window (default: the last scene and algorithm used, else assets/scenes/default.json
       and nbs; $NBSCOPE_DATA_DIR overrides where assets/ is found): Box2D bodies, the cell grid, the
       detector's lists, pairs and check results over them, ImGui panels. Keys: P play/pause,
@@ -26,6 +27,9 @@ usage:
       under xvfb-run); --back K then goes K frames back through the history first, each drawn,
       and says how long a frame took. Without a display it renders --frames N (default 120)
       headless into --screenshot (default $TMPDIR/nbscope-SCENE.png) and prints the path.
+      A world that stops (too many contacts, a body not finite or leaving the world: see
+      headless --max-contacts) shows its message in the Scenes panel and pauses; with --frames
+      the screenshot shows it and the exit code is 2.
   nbscope gui --input ELEMENTS.csv --arrays ARRAYS.json [--algorithm NAME] [--base 1] [--exact]
               [--cell-size D] [--origin X,Y] [--cells NX,NY] [--frames N --screenshot OUT.png]
               [--overlays SPEC] [--panels SPEC] [--select K]
@@ -88,6 +92,7 @@ usage:
   nbscope headless --scene FILE [--frames N] [--algorithm NAME[,NAME...]|all] [--report OUT.json]
                    [--inject-fault NAME] [--brute-limit N] [--quiet] [--record OUT.nbsrec]
                    [--stop-at-violation | --rewind FROM:TO] [--back K | --violation N] [--history-mb N]
+                   [--max-contacts N]
                    [--scaling FILE.csv | --scaling run [--layout L] [--n MIN..MAX] [--points-per-decade K]]
       Runs N frames (default 600) of a scene (assets/scenes/*.json) with no window: Box2D steps,
       the algorithm (default nbs) detects, and every frame is checked: A==R (R: brute force up to
@@ -118,6 +123,11 @@ usage:
       there does.
       --history-mb N memory for kept frames (default 256 with --rewind, --back, --violation or
       --screenshot, else 0: a run that never goes back keeps only summaries).
+      --max-contacts N the Box2D contacts a frame may create (default 1,000,000, ~1.7 GB; the
+      scene's "max_contacts" sets it too): before every step the pairs of fat AABBs are counted
+      and a world past it stops with exit 2 naming the count. A frame running over 5 s says so
+      once on stderr. A body that is not finite after a step, or beyond +-1e6 m, stops the run
+      with exit 2 naming the body and the frame.
       --scaling FILE.csv (with --screenshot) opens the Scaling panel on a CSV of nbscope scaling
       (a bad row: exit 2 naming FILE:LINE); --scaling run measures first, as nbscope scaling does,
       the detectors of --algorithm on --layout, --n and --points-per-decade.

@@ -51,7 +51,7 @@ int run_verify_gui(Args& args) {
   if (auto n = args.integer("--frames", 0, 100'000'000)) view.frames = *n;
   parse_view_options(args, false, view);
   // The window's simulation flags mean nothing here: the arrays are drawn on --input's elements.
-  for (const char* flag : {"--scene", "--inject-fault", "--history-mb", "--back"})
+  for (const char* flag : {"--scene", "--inject-fault", "--history-mb", "--max-contacts", "--back"})
     if (args.has(flag))
       throw Error(std::string(flag) + ": does not apply to gui --arrays (it draws the arrays on --input's elements, no scene runs)");
   if (auto p = args.positional()) throw Error(*p + ": unexpected argument");

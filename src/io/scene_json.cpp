@@ -463,6 +463,7 @@ Scene read_scene(const LocatedJson& doc) {
   s.velocity_iterations = static_cast<int>(r.integer("velocity_iterations", 8, 1, 1000));
   s.position_iterations = static_cast<int>(r.integer("position_iterations", 3, 1, 1000));
   if (r.has("continuous")) s.continuous = read_bool(doc, r.get("continuous"), r.at("continuous"));
+  s.max_contacts = r.integer("max_contacts", kDefaultMaxContacts, 0, kMaxMaxContacts);
   if (r.has_value("cell_size")) {
     s.grid.cell_size = read_positive(doc, r.get("cell_size"), r.at("cell_size"), 1e6);
     s.cell_size_where = doc.locate(r.at("cell_size"));

@@ -1,5 +1,6 @@
 #include "physics/box2d_detector.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -43,11 +44,35 @@ void Box2dDetector::fit_proxies(std::int64_t n) {
     tree_.DestroyProxy(proxies_.back());
     proxies_.pop_back();
   }
-  while (proxies_.size() < want) {
-    const std::size_t k = proxies_.size();
+  const std::size_t had = proxies_.size();
+  proxies_.resize(want, -1);
+  for (const std::int32_t k : order_) {
+    const auto i = static_cast<std::size_t>(k);
     // Element ids travel as the proxy's user data.
-    proxies_.push_back(tree_.CreateProxy(boxes_[k], reinterpret_cast<void*>(static_cast<std::uintptr_t>(k))));
+    if (i >= had) proxies_[i] = tree_.CreateProxy(boxes_[i], reinterpret_cast<void*>(static_cast<std::uintptr_t>(i)));
   }
+}
+
+void Box2dDetector::sort_by_morton(const Elements& e) {
+  const std::int64_t n = e.size();
+  keys_.resize(static_cast<std::size_t>(n));
+  const Bounds b = e.centre_bounds();
+  const double sx = b.max[0] > b.min[0] ? 65535.0 / (b.max[0] - b.min[0]) : 0.0;
+  const double sy = b.max[1] > b.min[1] ? 65535.0 / (b.max[1] - b.min[1]) : 0.0;
+  // 16 bits a coordinate, interleaved: x in the even bits, y in the odd ones.
+  const auto spread = [](std::uint64_t v) {
+    v = (v | (v << 8)) & 0x00FF00FFull;
+    v = (v | (v << 4)) & 0x0F0F0F0Full;
+    v = (v | (v << 2)) & 0x33333333ull;
+    return (v | (v << 1)) & 0x55555555ull;
+  };
+  for (std::int64_t k = 0; k < n; ++k) {
+    const auto qx = static_cast<std::uint64_t>((e.x[k] - b.min[0]) * sx), qy = static_cast<std::uint64_t>((e.y[k] - b.min[1]) * sy);
+    keys_[static_cast<std::size_t>(k)] = ((spread(qx) | (spread(qy) << 1)) << 32) | static_cast<std::uint64_t>(k);
+  }
+  std::sort(keys_.begin(), keys_.end());
+  order_.resize(keys_.size());
+  for (std::size_t k = 0; k < keys_.size(); ++k) order_[k] = static_cast<std::int32_t>(keys_[k] & 0xFFFFFFFFull);
 }
 
 void Box2dDetector::detect(const Elements& e, const DetectOptions& options, PairList& out_pairs) {
@@ -63,9 +88,11 @@ void Box2dDetector::detect(const Elements& e, const DetectOptions& options, Pair
     box.upperBound.Set(float_up(x + r), float_up(y + r));
   }
   const std::size_t kept = std::min(proxies_.size(), static_cast<std::size_t>(n));
+  sort_by_morton(e);
   fit_proxies(n);
   // Move the proxies that existed before; Box2D re-inserts only those that left their fat AABB.
-  for (std::size_t k = 0; k < kept; ++k) tree_.MoveProxy(proxies_[k], boxes_[k], b2Vec2(0, 0));
+  for (const std::int32_t k : order_)
+    if (static_cast<std::size_t>(k) < kept) tree_.MoveProxy(proxies_[static_cast<std::size_t>(k)], boxes_[static_cast<std::size_t>(k)], b2Vec2(0, 0));
 
   PairCollector pairs(out_pairs, options.max_pairs);
   struct Query {
@@ -79,7 +106,7 @@ void Box2dDetector::detect(const Elements& e, const DetectOptions& options, Pair
       return true;
     }
   } query{&tree_, &e, &pairs, 0};
-  for (std::int64_t k = 0; k < n; ++k) {
+  for (const std::int32_t k : order_) {
     query.i = static_cast<ElementId>(k);
     tree_.Query(&query, boxes_[static_cast<std::size_t>(k)]);
   }

@@ -21,6 +21,15 @@ inline constexpr std::int64_t kMaxSceneBodies = 1'000'000;
 inline constexpr double kMaxSceneCoordinate = 100'000;
 // Largest shape size (radius, half extent, vertex distance) a scene may ask for, in metres.
 inline constexpr double kMaxShapeSize = 10'000;
+// Most Box2D contacts a frame may create (the scene's "max_contacts", the --max-contacts flag):
+// physics/world_limits.hpp estimates them before Box2D steps. Measured at ~1.7 kB each (peak
+// memory over contacts, circles in a box), 1M contacts take ~1.7 GB.
+inline constexpr std::int64_t kDefaultMaxContacts = 1'000'000;
+// Largest max_contacts a scene or the flag may set (hundreds of GB of contacts: beyond any machine).
+inline constexpr std::int64_t kMaxMaxContacts = 1'000'000'000;
+// A body farther than this from the origin (either coordinate, metres) has left any sensible
+// world: Box2D's float positions there are 0.0625 m apart, a tenth of a typical body.
+inline constexpr double kMaxWorldCoordinate = 1'000'000;
 // Smallest box half extent / polygon edge: Box2D welds polygon points closer than its linear slop.
 inline constexpr double kMinPolygonFeature = 0.005;
 
@@ -133,6 +142,7 @@ struct Scene {
   int velocity_iterations = 8;
   int position_iterations = 3;
   bool continuous = true;
+  std::int64_t max_contacts = kDefaultMaxContacts;  // Box2D contacts a frame may create
   GridOptions grid;                  // cell_size, origin, cells keys (2D: origin z 0, cells nz 1)
   std::vector<BodySpec> bodies;
   std::vector<GeneratorSpec> generators;

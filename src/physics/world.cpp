@@ -101,12 +101,26 @@ PhysicsWorld::PhysicsWorld(const Scene& scene) : scene_(scene) {
   b2BodyDef ground_def;
   ground_ = world_->CreateBody(&ground_def);
   elements_.dim = 2;
+  max_contacts_ = scene_.max_contacts;
   const std::vector<BodySpec> initial = initial_bodies(scene_);
   bodies_.reserve(initial.size());
-  for (const BodySpec& b : initial) add_body(b);
-  for (const GeneratorSpec& g : scene_.generators)
-    if (g.kind == GeneratorKind::Emitter) emitters_.emplace_back(g);
+  // initial_bodies() lists the scene's bodies, then each generator's (but emitters') in file order.
+  std::vector<BodyOrigin> origins;
+  origins.reserve(initial.size());
+  for (std::size_t i = 0; i < scene_.bodies.size(); ++i) origins.push_back({-1, static_cast<std::int64_t>(i)});
+  for (std::size_t g = 0; g < scene_.generators.size(); ++g)
+    if (scene_.generators[g].kind != GeneratorKind::Emitter)
+      for (std::int64_t k = 0; k < scene_.generators[g].count; ++k) origins.push_back({static_cast<std::int32_t>(g), k});
+  for (std::size_t b = 0; b < initial.size(); ++b) add_body(initial[b], b < origins.size() ? origins[b] : BodyOrigin{-2, 0});
+  for (std::size_t g = 0; g < scene_.generators.size(); ++g)
+    if (scene_.generators[g].kind == GeneratorKind::Emitter) {
+      emitters_.emplace_back(scene_.generators[g]);
+      emitter_generators_.push_back(static_cast<std::int32_t>(g));
+    }
   update_geometry();
+  // Refused here rather than at the first step: frame 0's detection and check would otherwise
+  // spend seconds and gigabytes on the same overlaps first.
+  check_contact_estimate();
 }
 
 PhysicsWorld::~PhysicsWorld() = default;
@@ -126,7 +140,7 @@ double PhysicsWorld::largest_emitted_radius(std::string& out_where) const {
   return largest;
 }
 
-void PhysicsWorld::add_body(const BodySpec& spec) {
+void PhysicsWorld::add_body(const BodySpec& spec, BodyOrigin origin) {
   b2BodyDef def;
   def.type = to_b2(spec.type);
   def.position = to_b2(spec.position);
@@ -137,6 +151,8 @@ void PhysicsWorld::add_body(const BodySpec& spec) {
   b2Body* body = world_->CreateBody(&def);
   const auto body_index = static_cast<std::int32_t>(bodies_.size());
   bodies_.push_back(body);
+  origins_.push_back(origin);
+  bodies_now_.store(static_cast<std::int64_t>(bodies_.size()), std::memory_order_relaxed);
   dynamic_.push_back(body->GetType() == b2_dynamicBody ? 1 : 0);
 
   for (std::size_t k = 0; k < spec.fixtures.size(); ++k) {
@@ -166,12 +182,24 @@ void PhysicsWorld::add_body(const BodySpec& spec) {
 // ---- stepping and geometry -----------------------------------------------------------------
 
 void PhysicsWorld::step() {
-  pending_.clear();
-  for (Emitter& e : emitters_) e.emit_until(time_, pending_);
-  for (const BodySpec& b : pending_) add_body(b);
+  if (!broken_.empty()) throw Error(broken_);
+  for (std::size_t e = 0; e < emitters_.size(); ++e) {
+    pending_.clear();
+    emitters_[e].emit_until(time_, pending_);
+    const std::int64_t first = emitters_[e].emitted() - static_cast<std::int64_t>(pending_.size());
+    for (std::size_t k = 0; k < pending_.size(); ++k)
+      add_body(pending_[k], {emitter_generators_[e], first + static_cast<std::int64_t>(k)});
+    estimate_due_ = estimate_due_ || !pending_.empty();
+  }
+  // Until update_geometry() the frame's elements, AABBs and poses stay the last frame's, so that a
+  // refused step leaves that frame whole (shapes() and the check read only its fixtures).
+  check_contact_estimate();
   const float dt = static_cast<float>(scene_.time_step / scene_.sub_steps);
-  for (int k = 0; k < scene_.sub_steps; ++k)
+  for (int k = 0; k < scene_.sub_steps; ++k) {
     world_->Step(dt, scene_.velocity_iterations, scene_.position_iterations);
+    check_contact_count(k);
+  }
+  check_bodies();
   ++frame_;
   time_ += scene_.time_step;
   update_geometry();
@@ -203,7 +231,7 @@ void PhysicsWorld::geometry_at(const std::vector<b2Transform>& poses, std::size_
 void PhysicsWorld::capture(WorldState& out, const PairList* contacts) const {
   out.frame = frame_;
   out.time = time_;
-  out.fixtures = static_cast<std::int32_t>(fixtures_.size());
+  out.fixtures = static_cast<std::int32_t>(aabbs_.size());
   out.poses.resize(poses_.size());
   for (std::size_t b = 0; b < poses_.size(); ++b) {
     const b2Transform& xf = poses_[b];
@@ -274,6 +302,8 @@ void PhysicsWorld::contact_pairs(PairList& out) const {
     }
     now.push_back(c);
     const ElementId a = element_of(contact->GetFixtureA()), b = element_of(contact->GetFixtureB());
+    // Fixtures added by a step that was then refused are not elements of the frame shown.
+    if (static_cast<std::size_t>(std::max(a, b)) >= aabbs_.size()) continue;
     out.push_back(a < b ? Pair{a, b} : Pair{b, a});
   }
   last.swap(now);
@@ -367,7 +397,7 @@ void PhysicsWorld::scope_at(const PairList& pairs, const std::vector<b2AABB>& aa
 
 // ---- shapes --------------------------------------------------------------------------------
 
-void PhysicsWorld::shapes(std::vector<BodyShape>& out) const { shapes_at(poses_, fixtures_.size(), out); }
+void PhysicsWorld::shapes(std::vector<BodyShape>& out) const { shapes_at(poses_, aabbs_.size(), out); }
 
 void PhysicsWorld::shapes_at(const std::vector<b2Transform>& poses, std::size_t n, std::vector<BodyShape>& out) const {
   out.clear();

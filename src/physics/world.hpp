@@ -8,8 +8,10 @@
 #pragma once
 #include <box2d/box2d.h>
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/elements.hpp"
@@ -19,6 +21,7 @@
 #include "physics/generators.hpp"
 #include "physics/scene.hpp"
 #include "physics/shapes.hpp"
+#include "physics/world_limits.hpp"
 
 namespace nbscope {
 
@@ -39,7 +42,27 @@ class PhysicsWorld final : public Box2dFrame {
 
   // One frame: emitters add the bodies due, then sub_steps Box2D steps of time_step/sub_steps;
   // then the elements and tight AABBs are recomputed at the new transforms.
+  // Throws Error "path: frame K: ..." (physics/world_limits.hpp), leaving the last frame as it was
+  // (elements, shapes, contacts) and every later step() refusing with the same message:
+  //   before Box2D steps, when the contacts it would create are estimated past max_contacts (the
+  //   scene's, or set_max_contacts), and after any sub-step that made more than that;
+  //   after the step, when a body's position, angle or velocity is not finite, or a body is beyond
+  //   kMaxWorldCoordinate.
   void step();
+  // Overrides the scene's max_contacts (the --max-contacts flag).
+  void set_max_contacts(std::int64_t limit) { max_contacts_ = limit; }
+  [[nodiscard]] std::int64_t max_contacts() const { return max_contacts_; }
+  // The contacts the last estimate counted (before the last step, or 0), and Box2D's contact count
+  // now. Both safe to read from another thread while step() runs (the slow-frame note).
+  [[nodiscard]] std::int64_t estimated_contacts() const { return estimated_contacts_.load(std::memory_order_relaxed); }
+  [[nodiscard]] std::int64_t bodies_now() const { return bodies_now_.load(std::memory_order_relaxed); }
+  // Pairs of fixtures, of different bodies and at least one dynamic, whose boxes overlap, where the
+  // boxes are the fat AABBs Box2D holds now grown to cover where each body's velocity takes its
+  // fixtures in the next sub-step (b2_aabbMultiplier times that far ahead, as Box2D's MoveProxy
+  // does): about the contacts Box2D's next step creates.
+  [[nodiscard]] std::int64_t estimate_contacts() const;
+  // "body 17 (generators[0] #12)", "body 3 (bodies[3])": the body as the scene file makes it.
+  [[nodiscard]] std::string body_name(std::size_t body) const;
   // Frames stepped since construction, and the simulated time in seconds.
   [[nodiscard]] std::int64_t frame() const override { return frame_; }
   [[nodiscard]] double time() const override { return time_; }
@@ -94,7 +117,20 @@ class PhysicsWorld final : public Box2dFrame {
  private:
   friend class KeptWorldFrame;  // rebuilds a past frame with the geometry helpers below
 
-  void add_body(const BodySpec& spec);
+  // Where a body comes from: bodies[ordinal] (generator -1) or generators[generator] #ordinal.
+  struct BodyOrigin {
+    std::int32_t generator = -1;
+    std::int64_t ordinal = 0;
+  };
+  void add_body(const BodySpec& spec, BodyOrigin origin);
+  // The limits of step(), each throwing (and remembering) its Error.
+  void refuse(const std::string& what);
+  void check_contact_estimate();
+  // True when the contacts may jump this frame: new bodies, Box2D's count past a quarter of the
+  // limit, or bodies fast enough to stretch their fat AABBs over many others.
+  [[nodiscard]] bool estimate_needed() const;
+  void check_contact_count(int sub_step);
+  void check_bodies();
   void update_geometry();
   // Elements and tight AABBs of the first `fixtures` fixtures with bodies at `poses` (live and kept
   // frames alike, so both compute the same bits).
@@ -116,8 +152,15 @@ class PhysicsWorld final : public Box2dFrame {
   b2Body* ground_ = nullptr;             // anchor of the mouse joint; has no fixtures
   b2MouseJoint* mouse_joint_ = nullptr;
   std::vector<Emitter> emitters_;
+  std::vector<std::int32_t> emitter_generators_;  // per emitter: its index in scene_.generators
   std::vector<BodySpec> pending_;        // emitted bodies waiting to be created
   std::vector<b2Body*> bodies_;
+  std::vector<BodyOrigin> origins_;      // per body
+  std::int64_t max_contacts_ = kDefaultMaxContacts;
+  std::string broken_;
+  bool estimate_due_ = true;             // bodies were added since the last estimate                   // the Error that stopped the world ("" while it runs)
+  std::atomic<std::int64_t> estimated_contacts_{0};
+  std::atomic<std::int64_t> bodies_now_{0};
   std::vector<b2Fixture*> fixtures_;     // indexed by element id
   std::vector<b2Vec2> local_centres_;    // bounding-circle centre in body coordinates
   std::vector<double> radii_;            // bounding-circle radius

@@ -1,0 +1,179 @@
+// Worlds that break Box2D, end to end through `nbscope headless` (scenes in tests/worlds/): each
+// either runs or stops with one line naming the frame (and the body) and exit 2, never a hang, a
+// crash or an out-of-memory kill. Release suite only (tests/CMakeLists.txt): some build a
+// million Box2D bodies. The expected numbers are derived here, not copied from a run: N bodies on
+// one point make N(N-1)/2 contacts; a body that Box2D moves at most 2 m a sub-step (b2_maxTranslation)
+// for 100 sub-steps a frame passes 1e6 m from 1e5 m in frame (1e6 - 1e5) / 200 + 1.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <regex>
+#include <string>
+
+#include "support/run_cli.hpp"
+
+namespace nbscope {
+namespace {
+
+using testcli::run;
+using testcli::scratch_dir;
+using testcli::write_text;
+
+std::string world(const std::string& name) { return std::string(NBSCOPE_SOURCE_DIR) + "/tests/worlds/" + name + ".json"; }
+
+// "4,498,500" for 4498500.
+std::string grouped(long long n) {
+  std::string digits = std::to_string(n), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
+// `nbscope ARGS` run after PREFIX (an environment assignment, or a wrapper such as xvfb-run).
+testcli::Result run(const std::string& args, const std::string& prefix) {
+  static int counter = 0;
+  const std::string base = scratch_dir("worlds_capture_" + std::to_string(counter++));
+  const std::string cmd = prefix + " '" + testcli::binary() + "' " + args + " </dev/null >'" + base + "/out' 2>'" + base + "/err'";
+  const int status = std::system(cmd.c_str());
+  testcli::Result r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.out = testcli::read_text(base + "/out");
+  r.err = testcli::read_text(base + "/err");
+  return r;
+}
+
+long long one_point_contacts(long long n) { return n * (n - 1) / 2; }
+
+// One line on stderr, and nothing on stdout.
+void expect_one_error_line(const testcli::Result& r) {
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("nbscope: error: ", 0), 0u) << r.err;
+}
+
+const char* kRaiseIt = "the limit is 1,000,000 (raise it with --max-contacts or the scene's \"max_contacts\")";
+
+TEST(Worlds, ThirtyThousandOverlappingCirclesAreRefusedBeforeBox2DSteps) {
+  const auto r = run("headless --scene '" + world("overlapping-30k") + "' --frames 3");
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("overlapping-30k.json: frame 1: Box2D would create about "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("between the fat AABBs of 30,000 bodies"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(kRaiseIt), std::string::npos) << r.err;
+  // nbscope's own detection finds ~14M touching pairs of these circles; Box2D's fat AABBs more.
+  std::smatch m;
+  const std::string err = r.err;
+  ASSERT_TRUE(std::regex_search(err, m, std::regex("about ([0-9,]+) contacts")));
+  const long long contacts = std::stoll(std::regex_replace(m[1].str(), std::regex(","), ""));
+  EXPECT_GT(contacts, 14'000'000);
+  EXPECT_LT(contacts, one_point_contacts(30'000));
+}
+
+TEST(Worlds, ThreeThousandBodiesOnOnePointAreRefusedWithTheirContactCount) {
+  const auto r = run("headless --scene '" + world("one-point-3k") + "' --frames 20");
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("frame 1: Box2D would create about " + grouped(one_point_contacts(3000)) + " contacts"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(kRaiseIt), std::string::npos) << r.err;
+}
+
+TEST(Worlds, ThirtyThousandBodiesOnOnePointAreRefusedWithTheirContactCount) {
+  const auto r = run("headless --scene '" + world("one-point-30k") + "' --frames 20");
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("frame 1: Box2D would create about " + grouped(one_point_contacts(30000)) + " contacts"), std::string::npos) << r.err;
+}
+
+// The limit is exact at the boundary (the estimate counts N(N-1)/2 for N bodies on one point),
+// the scene's key sets it and the flag overrides the key.
+TEST(Worlds, MaxContactsFromTheSceneAndTheFlag) {
+  const std::string dir = scratch_dir("worlds_max_contacts");
+  const long long n = 200, contacts = one_point_contacts(n);
+  const auto scene_with = [&](long long limit) {
+    const std::string path = dir + "/pile-" + std::to_string(limit) + ".json";
+    write_text(path, "{\"gravity\": [0, 0], \"max_contacts\": " + std::to_string(limit) +
+                         ", \"generators\": [{\"kind\": \"random_box\", \"count\": " + std::to_string(n) +
+                         ", \"min\": [0, 0], \"max\": [0.001, 0.001], \"body\": {\"shape\": \"circle\", \"radius\": 0.5}}]}");
+    return path;
+  };
+  const auto refused = run("headless --scene '" + scene_with(contacts - 1) + "' --frames 2");
+  expect_one_error_line(refused);
+  EXPECT_NE(refused.err.find("about " + grouped(contacts) + " contacts"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("the limit is " + grouped(contacts - 1) + " "), std::string::npos) << refused.err;
+
+  const auto runs = run("headless --scene '" + scene_with(contacts) + "' --frames 2 --quiet");
+  EXPECT_EQ(runs.exit_code, 0) << runs.out << runs.err;
+  const auto flag_lowers = run("headless --scene '" + scene_with(contacts) + "' --frames 2 --max-contacts " + std::to_string(contacts - 1));
+  EXPECT_EQ(flag_lowers.exit_code, 2) << flag_lowers.err;
+  const auto flag_raises = run("headless --scene '" + scene_with(contacts - 1) + "' --frames 2 --quiet --max-contacts " + std::to_string(contacts));
+  EXPECT_EQ(flag_raises.exit_code, 0) << flag_raises.out << flag_raises.err;
+
+  const auto bad = run("headless --scene '" + scene_with(-1) + "' --frames 2");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("max_contacts"), std::string::npos) << bad.err;
+}
+
+// Bodies flung at the scene's speed limit run: their fat AABBs stretch 10 m ahead and overlap by
+// the hundred thousand, and Box2D's first frame takes a second or more. A frame past the
+// slow-frame threshold (lowered here from 5 s; frame 0's detection of 2,000 elements takes
+// milliseconds) says so once on stderr, which is not a terminal here.
+TEST(Worlds, FlungBodiesRunAndASlowFrameSaysSoOnce) {
+  const auto r = run("headless --scene '" + world("flung") + "' --frames 2 --quiet", "NBSCOPE_SLOW_FRAME_SECONDS=0.3");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("headless: flung, nbs, 2 frames, 2000 elements"), std::string::npos) << r.out;
+  EXPECT_EQ(r.err.rfind("nbscope: note: frame 1 has run for ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("so far (Box2D step: 2,000 bodies, about "), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+
+  // Fast frames under the default 5 s: no note.
+  const auto calm = run("headless --scene '" + world("leaving") + "' --frames 10 --quiet");
+  EXPECT_EQ(calm.exit_code, 0);
+  EXPECT_EQ(calm.err, "");
+}
+
+TEST(Worlds, ABodyThatTurnsNonFiniteStopsTheRunNamingIt) {
+  const auto r = run("headless --scene '" + world("nan") + "' --frames 5");
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("nan.json: frame 1: body 0 (bodies[0]) has a non-finite position after the step"), std::string::npos) << r.err;
+}
+
+TEST(Worlds, ABodyLeavingTheWorldStopsTheRunNamingItAndTheFrame) {
+  const auto r = run("headless --scene '" + world("leaving") + "' --frames 10000");
+  expect_one_error_line(r);
+  const int frame = (1'000'000 - 100'000) / 200 + 1;
+  EXPECT_NE(r.err.find("leaving.json: frame " + std::to_string(frame) + ": body 1 (bodies[1]) is at ("), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("beyond +-1,000,000 m"), std::string::npos) << r.err;
+  // Before that frame it runs.
+  const auto before = run("headless --scene '" + world("leaving") + "' --frames " + std::to_string(frame - 1) + " --quiet");
+  EXPECT_EQ(before.exit_code, 0) << before.err;
+}
+
+TEST(Worlds, AMillionOverlappingBodiesAreRefusedAtLoad) {
+  const auto r = run("headless --scene '" + world("million-dense") + "' --frames 1");
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("frame 1: Box2D would create about "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("between the fat AABBs of 1,000,000 bodies"), std::string::npos) << r.err;
+}
+
+// A world that stops mid-run in the window: the message in the Scenes panel over the last good
+// frame, the screenshot still taken, exit 2 with the same line.
+TEST(Worlds, TheWindowShowsAWorldThatStops) {
+  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
+#ifndef NBSCOPE_TEST_GUI
+  GTEST_SKIP() << "built without the window";
+#endif
+  const std::string dir = scratch_dir("worlds_window");
+  const std::string png = dir + "/stopped.png";
+  const auto r = run("gui --scene '" + world("poured-on-one-point") + "' --frames 5 --panels scenes --screenshot '" + png + "'",
+                     "xvfb-run -a -s '-screen 0 1280x720x24'");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("nbscope: error: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("frame 2: Box2D would create about " + grouped(one_point_contacts(3000)) + " contacts"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(png));
+}
+
+}  // namespace
+}  // namespace nbscope
