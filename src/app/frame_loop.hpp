@@ -56,6 +56,12 @@ struct FrameLoopOptions {
   // Bytes of past world states the history keeps (FrameHistory::kDefaultBudget in the window); 0
   // keeps none (headless runs that never go back), summaries are kept either way.
   std::size_t history_budget = FrameHistory::kDefaultBudget;
+  // Most frame summaries kept (FrameHistory::set_max_summaries): headless runs that draw no timeline
+  // and never go back keep a few, so memory does not grow with --frames. A recording needs them all.
+  std::size_t max_summaries = FrameHistory::kMaxSummaries;
+  // Every frame's violations into violation_log() (the Violations panel, --violation N); the same
+  // headless runs log none (each frame's report still lists its own).
+  bool log_violations = true;
 };
 
 class FrameLoop {
