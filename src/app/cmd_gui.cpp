@@ -77,7 +77,6 @@ std::string absolute_path(const std::string& path) {
 int run_without_display(GuiOptions o, FrameLoop& loop) {
   if (!o.view.screenshot) o.view.screenshot = fallback_screenshot_path(loop.scene().name.empty() ? "scene" : loop.scene().name);
   const std::int64_t frames = o.frames.value_or(120);
-  std::fprintf(stderr, "nbscope: no display: rendering %s headless instead\n", plural(frames, "frame").c_str());
   auto view = make_headless_view(o.view, loop);
   bool failed = loop.report().checked && !loop.report().ok();
   for (std::int64_t i = 0; i < frames; ++i) {
@@ -90,7 +89,8 @@ int run_without_display(GuiOptions o, FrameLoop& loop) {
     view->on_rewound(loop);
   }
   const std::string summary = view->write_screenshot(loop);
-  std::fprintf(stderr, "nbscope: %s\n", summary.c_str());
+  // Said once it worked: a refused --gl or screenshot path is then the only line on stderr.
+  std::fprintf(stderr, "nbscope: no display: rendered %s headless instead\nnbscope: %s\n", plural(frames, "frame").c_str(), summary.c_str());
   std::printf("screenshot: %s\n", std::filesystem::absolute(*o.view.screenshot).c_str());
   return failed ? 1 : 0;
 }

@@ -29,18 +29,29 @@ namespace nbscope {
 
 namespace {
 
-// Ctrl+C / SIGTERM while recording: the loop stops at the next frame and throws, so the
-// recording's temporary file is removed and no half recording remains.
-volatile std::sig_atomic_t g_interrupted = 0;
-extern "C" void note_interrupt(int) { g_interrupted = 1; }
+// Ctrl+C, SIGTERM or SIGHUP while recording: the loop stops at the next frame and throws, so the
+// recording's temporary file is removed and no half recording remains (exit 2, one error line).
+// Without --record nothing needs it: the report's temporary exists only while it is written at the
+// end, and io/atomic_file's handler removes it if a signal comes then.
+volatile std::sig_atomic_t g_interrupted = 0;  // the signal's number, 0 for none
+extern "C" void note_interrupt(int sig) { g_interrupted = sig; }
 
-// Installs note_interrupt for SIGINT and SIGTERM while it lives.
+// "SIGINT" for the signals InterruptGuard takes.
+const char* signal_name(int sig) { return sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : sig == SIGHUP ? "SIGHUP" : "a signal"; }
+
+// Installs note_interrupt for SIGINT, SIGTERM and SIGHUP while it lives (an ignored SIGHUP, as
+// under nohup, stays ignored).
 class InterruptGuard {
  public:
-  InterruptGuard() : old_int_(std::signal(SIGINT, note_interrupt)), old_term_(std::signal(SIGTERM, note_interrupt)) {}
+  InterruptGuard() : old_int_(std::signal(SIGINT, note_interrupt)), old_term_(std::signal(SIGTERM, note_interrupt)) {
+    struct sigaction hup {};
+    hup_ignored_ = ::sigaction(SIGHUP, nullptr, &hup) == 0 && (hup.sa_flags & SA_SIGINFO) == 0 && hup.sa_handler == SIG_IGN;
+    if (!hup_ignored_) old_hup_ = std::signal(SIGHUP, note_interrupt);
+  }
   ~InterruptGuard() {
     std::signal(SIGINT, old_int_);
     std::signal(SIGTERM, old_term_);
+    if (!hup_ignored_) std::signal(SIGHUP, old_hup_);
   }
   InterruptGuard(const InterruptGuard&) = delete;
   InterruptGuard& operator=(const InterruptGuard&) = delete;
@@ -48,6 +59,8 @@ class InterruptGuard {
  private:
   void (*old_int_)(int);
   void (*old_term_)(int);
+  void (*old_hup_)(int) = SIG_DFL;
+  bool hup_ignored_ = false;
 };
 
 // A one-line bar on stderr, redrawn only when it changes; erased when done or when an error
@@ -80,63 +93,45 @@ class Progress {
 };
 
 // "A==R 30, T-in-A 7" for the invariants `run` broke.
-std::string broken_text(const AlgorithmRun& run, std::int64_t& total, std::int64_t& bad_frames, std::int64_t& first) {
-  std::array<std::int64_t, kInvariantCount> by{};
-  total = bad_frames = 0;
-  first = -1;
-  for (const FrameReport& f : run.frames) {
-    for (std::size_t k = 0; k < by.size(); ++k) by[k] += f.broken[k];
-    total += f.violation_count();
-    if (f.violation_count() > 0 && bad_frames++ == 0) first = f.frame;
-  }
+std::string broken_text(const AlgorithmRun& run) {
   std::string s;
   for (int k = 0; k < kInvariantCount; ++k)
-    if (by[static_cast<std::size_t>(k)] > 0)
-      s += (s.empty() ? "" : ", ") + std::string(invariant_name(static_cast<Invariant>(k))) + " " + std::to_string(by[static_cast<std::size_t>(k)]);
+    if (run.broken[static_cast<std::size_t>(k)] > 0)
+      s += (s.empty() ? "" : ", ") + std::string(invariant_name(static_cast<Invariant>(k))) + " " +
+           std::to_string(run.broken[static_cast<std::size_t>(k)]);
   return s;
 }
 
 // ": A==R (2, 11) given twice in the recorded pairs" for the first violation `run` lists; a
 // recording whose pairs count from 1 also gets the pair as its file numbers it.
 std::string first_violation_text(const AlgorithmRun& run, int pair_base) {
-  for (const FrameReport& f : run.frames) {
-    if (f.violations.empty()) continue;
-    const Violation& v = f.violations.front();
-    std::string pair = std::to_string(v.pair.i) + ", " + std::to_string(v.pair.j);
-    if (pair_base != 0) pair += "; the file's " + std::to_string(v.pair.i + pair_base) + "," + std::to_string(v.pair.j + pair_base);
-    return std::string(": ") + invariant_name(v.invariant) + " (" + pair + ") " + v.what;
-  }
-  return "";
-}
-
-double mean_ms(const AlgorithmRun& run, double FrameTimings::*field) {
-  double total = 0;
-  for (const FrameReport& f : run.frames) total += f.timings.*field;
-  return run.frames.empty() ? 0 : total / static_cast<double>(run.frames.size());
+  if (!run.first_listed) return "";
+  const Violation& v = *run.first_listed;
+  std::string pair = std::to_string(v.pair.i) + ", " + std::to_string(v.pair.j);
+  if (pair_base != 0) pair += "; the file's " + std::to_string(v.pair.i + pair_base) + "," + std::to_string(v.pair.j + pair_base);
+  return std::string(": ") + invariant_name(v.invariant) + " (" + pair + ") " + v.what;
 }
 
 // The one line on stdout: what ran, whether every invariant held, where it broke, the mean timings.
 std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const RunReport& report) {
   std::map<std::string, std::int64_t> refs;
   for (const AlgorithmRun& run : report.runs)
-    for (const FrameReport& f : run.frames) ++refs[f.reference];
+    for (const auto& [name, count] : run.references) refs[name] += count;
   std::string refs_text;
   for (const auto& [name, count] : refs) refs_text += (refs_text.empty() ? "" : ", ") + name;
   std::string names;
   for (const AlgorithmRun& run : report.runs) names += (names.empty() ? "" : ",") + run.algorithm;
-  const std::size_t frames = report.runs.empty() ? 0 : report.runs.front().frames.size();
+  const std::int64_t frames = report.runs.empty() ? 0 : report.runs.front().frames_run;
   // The run's last frame's, not the frame shown at the end (--back, --violation go elsewhere).
-  const std::int64_t elements =
-      frames > 0 ? report.runs.front().frames.back().counts.elements : loop.elements().size();
+  const std::int64_t elements = frames > 0 ? report.runs.front().last_elements : loop.elements().size();
   std::string s = std::string(loop.replaying() ? "replay: " : "headless: ") + loop.scene().name + ", " + names + (o.fault == Fault::None ? "" : std::string(", fault ") + fault_name(o.fault)) +
                   ", " + plural(static_cast<long long>(frames), "frame") + ", " + plural(elements, "element") + ": ";
   std::string failures;
   for (const AlgorithmRun& run : report.runs) {
-    std::int64_t total = 0, bad_frames = 0, first = -1;
-    const std::string broken = broken_text(run, total, bad_frames, first);
-    if (total == 0) continue;
-    failures += (failures.empty() ? "" : "; ") + (report.runs.size() > 1 ? run.algorithm + ": " : std::string()) + plural(total, "violation") +
-                " in " + plural(bad_frames, "frame") + " (" + broken + "), first in frame " + std::to_string(first) +
+    if (run.violations == 0) continue;
+    failures += (failures.empty() ? "" : "; ") + (report.runs.size() > 1 ? run.algorithm + ": " : std::string()) +
+                plural(run.violations, "violation") + " in " + plural(run.frames_with_violations, "frame") + " (" + broken_text(run) +
+                "), first in frame " + std::to_string(run.first_violation_frame.value_or(-1)) +
                 first_violation_text(run, loop.carries_pairs() ? loop.pair_base() : 0);
   }
   const std::string every = report.runs.size() > 1 ? " for every algorithm" : "";
@@ -166,25 +161,21 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
   if (loop.replaying()) s += "; A-in-F, T-in-A, AABB-in-cells not checked (recorded frames have no Box2D world)";
   if (!report.note.empty()) s += " (" + report.note + ")";
   char buf[160];
-  std::snprintf(buf, sizeof buf, "; ms per frame: physics %.3f, detection", report.runs.empty() ? 0.0 : mean_ms(report.runs.front(), &FrameTimings::physics_ms));
+  std::snprintf(buf, sizeof buf, "; ms per frame: physics %.3f, detection", report.runs.empty() ? 0.0 : report.runs.front().physics.mean(report.runs.front().frames_run));
   s += loop.replaying() ? "; ms per frame: detection" : buf;  // recorded frames have no physics
   double check = 0;
   for (const AlgorithmRun& run : report.runs) {
     std::snprintf(buf, sizeof buf, "%s%s %.3f", &run == &report.runs.front() ? " " : ", ", report.runs.size() > 1 ? run.algorithm.c_str() : "",
-                  mean_ms(run, &FrameTimings::detection_ms));
+                  run.detection.mean(run.frames_run));
     s += report.runs.size() > 1 ? buf : buf + 1;  // one algorithm: no name
-    check += mean_ms(run, &FrameTimings::check_ms);
+    check += run.check.mean(run.frames_run);
   }
   std::snprintf(buf, sizeof buf, ", check %.3f", check);
   s += buf;
   // The check by part (CheckTimings), each the sum of the algorithms' means: R, F, G/T, then each invariant.
   for (int k = 0; k < CheckTimings::kParts; ++k) {
     double ms = 0;
-    for (const AlgorithmRun& run : report.runs) {
-      double total = 0;
-      for (const FrameReport& f : run.frames) total += f.check_timings.part(k);
-      ms += run.frames.empty() ? 0 : total / static_cast<double>(run.frames.size());
-    }
+    for (const AlgorithmRun& run : report.runs) ms += run.check_parts[static_cast<std::size_t>(k)].mean(run.frames_run);
     std::snprintf(buf, sizeof buf, "%s%s %.3f", k == 0 ? " (" : ", ", CheckTimings::part_name(k), ms);
     s += buf;
   }
@@ -227,8 +218,8 @@ bool nothing_to_check(const FrameLoop& loop) {
   return true;
 }
 
-// --rewind FROM:TO at frame FROM: back to kept frame TO, the world re-simulated to it, the report's
-// frames after TO dropped (they run again).
+// --rewind FROM:TO at frame FROM: back to kept frame TO, the world re-simulated to it (the caller
+// puts the report back as it stood after frame TO: the frames after it run again).
 // --violation N: the run's N-th listed violation's frame shown again, and (drawing) the violation
 // chosen as in the Violations panel.
 void go_to_violation(FrameLoop& loop, std::int64_t n, HeadlessView* view) {
@@ -245,8 +236,7 @@ void go_to_violation(FrameLoop& loop, std::int64_t n, HeadlessView* view) {
   }
 }
 
-// Returns the first pass's element hash of every frame after TO, to compare the second pass with.
-std::map<std::int64_t, std::uint64_t> rewind(FrameLoop& loop, const HeadlessOptions::Rewind& r, RunReport& report) {
+void rewind(FrameLoop& loop, const HeadlessOptions::Rewind& r, RunReport& report) {
   if (!loop.can_show(r.to)) {
     const auto first = loop.history().first_kept();
     throw Error("--rewind: frame " + std::to_string(r.to) + " is no longer kept (frames " +
@@ -257,14 +247,8 @@ std::map<std::int64_t, std::uint64_t> rewind(FrameLoop& loop, const HeadlessOpti
   loop.begin_resume();
   while (!loop.continue_resume(1e9)) {
   }
-  std::map<std::int64_t, std::uint64_t> first_pass;
-  for (const FrameReport& f : report.runs.front().frames)
-    if (f.frame > r.to) first_pass[f.frame] = f.hash;
-  for (AlgorithmRun& run : report.runs)
-    std::erase_if(run.frames, [&](const FrameReport& f) { return f.frame > r.to; });
   // Frames up to TO were compared while re-simulating; those after TO are compared as they run again.
   report.rewind = RunReport::Rewind{r.from, r.to, loop.resume_divergence()};
-  return first_pass;
 }
 
 }  // namespace
@@ -366,6 +350,13 @@ int run_headless_loop(const HeadlessOptions& o) {
   // (the window's default budget), or the user asks for a budget; else none.
   const bool keep = o.rewind || o.view.screenshot || o.back > 0 || o.violation > 0;
   lo.history_budget = static_cast<std::size_t>(o.history_mb.value_or(keep ? 256 : 0)) << 20;
+  // Nor the summaries (~100 bytes a frame) or the violation log then: a long run's memory stays that
+  // of its first frames. A recording's frames are all summaries from the start (each is showable),
+  // so replay keeps them.
+  if (!keep && !o.history_mb && !o.replay) {
+    lo.max_summaries = 16;
+    lo.log_violations = false;  // nothing shows the run's violations again (the report has them)
+  }
   FrameLoop loop(lo);  // an unknown algorithm fails here, before the scene is read
   for (const std::string& name : names)
     if (name != kRecordedAlgorithm) make_detector(name);
@@ -406,14 +397,27 @@ int run_headless_loop(const HeadlessOptions& o) {
   // A recording runs its frames (at most --frames); frame 0 is one of them. A scene runs frames 1..N.
   const std::int64_t frames = o.replay ? loop.recorded_frames() : o.frames;
   report.frames_requested = frames;
-  for (const std::string& name : names) {
-    report.runs.push_back({name, {}});
-    report.runs.back().frames.reserve(static_cast<std::size_t>(std::min<std::int64_t>(frames, 100'000)));
-  }
-  const auto keep_frame = [&] {
-    report.runs[0].frames.push_back(loop.report());
-    for (std::size_t r = 0; r < loop.comparison_reports().size(); ++r) report.runs[r + 1].frames.push_back(loop.comparison_reports()[r]);
+  for (const std::string& name : names) report.runs.push_back(AlgorithmRun{name});
+  // Each frame's report is aggregated, and streamed to --report, as it is made: nothing per frame stays in memory.
+  std::unique_ptr<RunReportWriter> writer = o.report ? std::make_unique<RunReportWriter>(*o.report, names.size()) : nullptr;
+  const auto add_frame = [&] {
+    const auto add = [&](std::size_t r, const FrameReport& f) {
+      report.runs[r].add(f);
+      if (writer) writer->add_frame(r, f);
+    };
+    add(0, loop.report());
+    for (std::size_t r = 0; r < loop.comparison_reports().size(); ++r) add(r + 1, loop.comparison_reports()[r]);
   };
+  // --rewind FROM:TO: the report as it stood after frame TO (restored at FROM, as if the frames after
+  // TO had not run), and the first pass's element hashes of frames TO+1..FROM to compare the second with.
+  struct AtTo {
+    std::vector<AlgorithmRun> runs;
+    RunReportWriter::Mark mark;
+  };
+  std::optional<AtTo> at_to;
+  std::vector<std::uint64_t> first_pass;
+  const auto save_at_to = [&] { at_to = AtTo{report.runs, writer ? writer->mark() : RunReportWriter::Mark{}}; };
+  if (o.rewind && o.rewind->to == loop.frame()) save_at_to();
 
   // The recording: the scene's pinned grid, then frame 0 (the initial poses, detected before any step) and every step.
   std::unique_ptr<RecordingWriter> recorder;
@@ -424,39 +428,48 @@ int run_headless_loop(const HeadlessOptions& o) {
     interrupts.emplace();
     recorder->write_frame(loop.frame(), loop.time(), loop.elements());
   }
+  const auto check_interrupt = [&] {
+    if (g_interrupted != 0)
+      throw Error("interrupted: " + *o.record + " not written (" + signal_name(g_interrupted) + "; a recording is whole or not at all)");
+  };
 
   Progress progress(!o.quiet && ::isatty(STDERR_FILENO) == 1, frames);
   bool rewound = false;
-  std::map<std::int64_t, std::uint64_t> first_pass;  // --rewind: the replaced frames' hashes
   for (std::int64_t k = 0; k < frames; ++k) {
-    if (o.replay && k == 0) {
-      keep_frame();  // recorded frame 0 was detected and checked on load
-    } else {
-      loop.step();
-      keep_frame();
-    }
+    if (!(o.replay && k == 0)) loop.step();  // recorded frame 0 was detected and checked on load
+    add_frame();
     if (recorder) {
-      if (g_interrupted != 0) throw Error("interrupted: " + *o.record + " not written (a recording is whole or not at all)");
+      check_interrupt();
       recorder->write_frame(loop.frame(), loop.time(), loop.elements());
     }
     if (view) view->after_step(loop);
     progress.update(k + 1);
-    if (const auto was = first_pass.find(loop.frame());
-        was != first_pass.end() && was->second != loop.report().hash && !report.rewind->diverged_at)
-      report.rewind->diverged_at = loop.frame();
+    if (o.rewind && !rewound) {
+      if (loop.frame() == o.rewind->to) save_at_to();
+      else if (loop.frame() > o.rewind->to) first_pass.push_back(loop.report().hash);
+    } else if (rewound && loop.frame() > o.rewind->to && !report.rewind->diverged_at) {
+      const auto index = static_cast<std::size_t>(loop.frame() - o.rewind->to - 1);
+      if (index < first_pass.size() && first_pass[index] != loop.report().hash) report.rewind->diverged_at = loop.frame();
+    }
     if (o.stop_at_violation && loop.report().violation_count() > 0) {
       report.stopped_at = loop.frame();
       break;
     }
     if (o.rewind && !rewound && loop.frame() == o.rewind->from) {
-      first_pass = rewind(loop, *o.rewind, report);
+      rewind(loop, *o.rewind, report);
+      report.runs = at_to->runs;
+      if (writer) writer->back_to(at_to->mark);
       rewound = true;
       k = o.rewind->to - 1;  // the frames after TO run again
       if (view) view->on_rewound(loop);
     }
   }
   progress.finish();
-  if (recorder) recorder->commit();
+  if (recorder) {
+    interrupts.reset();  // from here a signal ends the process, and io/atomic_file removes the temporary
+    check_interrupt();
+    recorder->commit();
+  }
   // --back K: through the history, one kept frame at a time, each detected and checked again.
   double back_ms = 0;
   for (std::int64_t k = 0; k < o.back; ++k) {
@@ -466,11 +479,15 @@ int run_headless_loop(const HeadlessOptions& o) {
     if (view) view->on_rewound(loop);
   }
   if (o.violation > 0) go_to_violation(loop, o.violation, view.get());
+  std::string screenshot_line;
   if (view) {
     if (report.stopped_at) view->focus_violation(loop, loop.report().violations.front());
-    std::fprintf(stderr, "nbscope: %s\n", view->write_screenshot(loop).c_str());
+    screenshot_line = view->write_screenshot(loop);
   }
-  if (o.report) write_run_report(*o.report, report);
+  if (writer) writer->commit(report);
+  // Notes on stderr only once every output is written: an error is then the only line there.
+  if (!screenshot_line.empty()) std::fprintf(stderr, "nbscope: %s\n", screenshot_line.c_str());
+  if (!o.notice.empty()) std::fprintf(stderr, "nbscope: %s\n", o.notice.c_str());
   std::string summary = summary_of(o, loop, report);
   if (o.back > 0) {
     char buf[160];

@@ -1,5 +1,7 @@
 // `nbscope pairs`: contact pairs of an ELEMENTS.csv, timed without the I/O.
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <cstdio>
 #include <iostream>
 
@@ -54,18 +56,19 @@ int run_pairs(Args& args) {
       return 1;
     }
   }
-  std::fprintf(stderr, "nbscope: %s: %s (%dD), %s, detection %.3f ms", algorithm.c_str(),
-               plural(static_cast<long long>(elements.size()), "element").c_str(), elements.dim,
-               plural(static_cast<long long>(pairs.size()), "pair").c_str(), best * 1e3);
-  if (repeat > 1) std::fprintf(stderr, " (best of %lld, mean %.3f ms, all runs agree)", repeat, total / repeat * 1e3);
-  std::fprintf(stderr, ", %zu bytes of own arrays\n", detector->own_bytes());
-
   if (output) {
     write_pairs_csv(*output, pairs);
   } else {
     write_pairs_csv(std::cout, pairs);
     std::cout.flush();
+    if (!std::cout) throw Error(std::string("stdout: cannot write: ") + std::strerror(errno));  // `> /dev/full`
   }
+  // The line about the run after its output: when writing fails, the error is the only line on stderr.
+  std::fprintf(stderr, "nbscope: %s: %s (%dD), %s, detection %.3f ms", algorithm.c_str(),
+               plural(static_cast<long long>(elements.size()), "element").c_str(), elements.dim,
+               plural(static_cast<long long>(pairs.size()), "pair").c_str(), best * 1e3);
+  if (repeat > 1) std::fprintf(stderr, " (best of %lld, mean %.3f ms, all runs agree)", repeat, total / repeat * 1e3);
+  std::fprintf(stderr, ", %zu bytes of own arrays\n", detector->own_bytes());
   return 0;
 }
 

@@ -40,7 +40,8 @@ int run_replay(Args& args) {
       throw Error("--stop-at-violation: needs --headless (the window lists every violation in its Violations panel)");
     return run_replay_window(o);
   }
-  if (!headless) std::fprintf(stderr, "nbscope: no window (no display, or built without it): replaying headless\n");
+  // Said after the run, not before it: when the recording is refused, the error is the only line.
+  if (!headless) o.notice = "no window (no display, or built without it): replayed headless";
   return run_headless_loop(o);
 }
 

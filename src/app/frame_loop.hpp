@@ -58,6 +58,12 @@ struct FrameLoopOptions {
   std::size_t history_budget = FrameHistory::kDefaultBudget;
   // Box2D contacts a frame may create, over the scene's "max_contacts" (--max-contacts).
   std::optional<std::int64_t> max_contacts;
+  // Most frame summaries kept (FrameHistory::set_max_summaries): headless runs that draw no timeline
+  // and never go back keep a few, so memory does not grow with --frames. A recording needs them all.
+  std::size_t max_summaries = FrameHistory::kMaxSummaries;
+  // Every frame's violations into violation_log() (the Violations panel, --violation N); the same
+  // headless runs log none (each frame's report still lists its own).
+  bool log_violations = true;
 };
 
 class FrameLoop {

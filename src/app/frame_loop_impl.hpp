@@ -143,6 +143,7 @@ struct FrameLoop::Impl {
       : options(std::move(o)), main(options.algorithm), checker(CheckOptions{options.brute_limit}) {
     if (main.recorded_pairs) check_recorded_fault(options.fault);
     history.set_budget(options.history_budget);
+    history.set_max_summaries(options.max_summaries);
   }
   ~Impl() { wait_for_worker(); }
   Impl(const Impl&) = delete;
@@ -282,7 +283,7 @@ struct FrameLoop::Impl {
       s.kept = state != nullptr;  // with no budget only the live frame itself can be shown
       history.push(s, state, state ? state->bytes() : 0);
     }
-    if (r.checked) violations.set_frame(r);
+    if (r.checked && options.log_violations) violations.set_frame(r);
   }
 
   // True when a lane checks the recording's own pairs.

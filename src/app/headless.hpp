@@ -41,6 +41,8 @@ struct HeadlessOptions {
                                       // (each shown, detected and checked again); the screenshot shows it
   std::optional<std::string> scaling;  // --scaling FILE.csv | run: the Scaling panel in the screenshot
   ScalingPlan scaling_plan;            // --scaling run: --algorithm, --layout, --n, --points-per-decade
+  std::string notice;                  // a line for stderr once the run has ended without an error
+                                       // (replay: why no window opened); "" for none
   std::optional<std::int64_t> history_mb;  // --history-mb N: memory for kept frames (default: 256 with
                                            // --rewind, --back, --violation or --screenshot, else none)
   std::optional<std::int64_t> max_contacts;  // --max-contacts N: Box2D contacts a frame may create

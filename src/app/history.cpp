@@ -21,13 +21,15 @@ void FrameHistory::set_budget(std::size_t bytes) {
   enforce_budget();
 }
 
+void FrameHistory::set_max_summaries(std::size_t count) { max_summaries_ = std::max<std::size_t>(count, 1); }
+
 void FrameHistory::push(const FrameSummary& summary, std::shared_ptr<const WorldState> state, std::size_t state_bytes) {
   assert((summaries_.empty() || summary.frame > summaries_.back().frame) && "FrameHistory::push: frames must increase");
   summaries_.push_back(summary);
   state_bytes_ += state ? state_bytes : 0;
   state_sizes_.push_back(state ? state_bytes : 0);
   states_.push_back(std::move(state));
-  while (summaries_.size() > kMaxSummaries) {
+  while (summaries_.size() > max_summaries_) {
     state_bytes_ -= state_sizes_.front();
     summaries_.pop_front();
     states_.pop_front();

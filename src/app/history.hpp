@@ -33,6 +33,9 @@ class FrameHistory {
   // Bytes the kept states may take; states past it are dropped now, oldest first (never the newest).
   void set_budget(std::size_t bytes);
   [[nodiscard]] std::size_t budget() const { return budget_; }
+  // Most summaries kept (default kMaxSummaries; a headless run that never goes back and draws no
+  // timeline needs only the newest few): beyond it the oldest go, as their states do.
+  void set_max_summaries(std::size_t count);
   // Bytes of the kept states and the summaries.
   [[nodiscard]] std::size_t bytes() const { return state_bytes_ + summaries_.size() * sizeof(FrameSummary); }
   // Frames whose states were dropped for the budget (their summaries remain).
@@ -65,6 +68,7 @@ class FrameHistory {
   std::deque<std::size_t> state_sizes_;
   std::size_t first_state_ = 0;  // summaries before it have no state
   std::size_t budget_ = kDefaultBudget;
+  std::size_t max_summaries_ = kMaxSummaries;
   std::size_t state_bytes_ = 0;
   std::int64_t dropped_ = 0;
 };

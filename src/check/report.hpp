@@ -3,12 +3,14 @@
 // writes a headless run's as JSON. Plain data (no Box2D), so io may include it.
 //
 // Index: Invariant | CellIndex, Violation | FrameCounts, FrameTimings, CheckTimings, FrameReport | FrameSummary |
-// AlgorithmRun, RunReport.
+// TimingStats, AlgorithmRun, RunReport.
 #pragma once
 #include <array>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/pairs.hpp"
@@ -151,17 +153,57 @@ struct FrameSummary {
   float physics_ms = 0, detection_ms = 0, check_ms = 0;
 };
 
-// One algorithm's frames in a headless run.
-struct AlgorithmRun {
-  std::string algorithm;
-  std::vector<FrameReport> frames;   // frames 1..N in order
-
-  // True when every frame was checked and held.
-  [[nodiscard]] bool passed() const {
-    for (const FrameReport& f : frames)
-      if (!f.ok()) return false;
-    return true;
+// Mean, max and total of one timing over a run's frames, kept as the frames come.
+struct TimingStats {
+  double total = 0, max = 0;
+  void add(double ms) {
+    total += ms;
+    if (ms > max) max = ms;
   }
+  // The mean over `frames` frames (0 for none).
+  [[nodiscard]] double mean(std::int64_t frames) const { return frames > 0 ? total / static_cast<double>(frames) : 0; }
+};
+
+// One algorithm's frames in a headless run, aggregated as they come. It holds nothing per frame, so
+// a run of any length takes the same memory; each frame's own report is streamed to --report as it
+// is made (io/report_json.hpp).
+struct AlgorithmRun {
+  // An algorithm's run before its first frame.
+  explicit AlgorithmRun(std::string name = {}) : algorithm(std::move(name)) {}
+
+  std::string algorithm;
+  std::int64_t frames_run = 0;
+  bool all_held = true;  // every frame so far was checked and held
+  std::array<std::int64_t, kInvariantCount> broken{};  // violations per invariant, over the frames
+  std::int64_t violations = 0;              // all of them
+  std::int64_t listed = 0;                  // those the frames list (at most kMaxListedViolationsPerFrame each)
+  std::int64_t frames_with_violations = 0;
+  std::optional<std::int64_t> first_violation_frame;
+  std::optional<Violation> first_listed;    // the first violation a frame lists
+  std::map<std::string, std::int64_t> references;  // frames per reference detector's name
+  std::int64_t last_elements = 0;           // elements of the last frame
+  TimingStats physics, detection, check;    // FrameTimings, by stage
+  std::array<TimingStats, CheckTimings::kParts> check_parts;  // CheckTimings, by part
+
+  // Adds one frame's results.
+  void add(const FrameReport& f) {
+    ++frames_run;
+    all_held = all_held && f.ok();
+    const std::int64_t n = f.violation_count();
+    for (std::size_t k = 0; k < broken.size(); ++k) broken[k] += f.broken[k];
+    violations += n;
+    listed += static_cast<std::int64_t>(f.violations.size());
+    if (n > 0 && frames_with_violations++ == 0) first_violation_frame = f.frame;
+    if (!first_listed && !f.violations.empty()) first_listed = f.violations.front();
+    ++references[f.reference];
+    last_elements = f.counts.elements;
+    physics.add(f.timings.physics_ms);
+    detection.add(f.timings.detection_ms);
+    check.add(f.timings.check_ms);
+    for (int k = 0; k < CheckTimings::kParts; ++k) check_parts[static_cast<std::size_t>(k)].add(f.check_timings.part(k));
+  }
+  // True when every frame was checked and held.
+  [[nodiscard]] bool passed() const { return all_held; }
 };
 
 // A headless run (one or more algorithms on the same frames), for the JSON report.
@@ -190,7 +232,7 @@ struct RunReport {
   [[nodiscard]] bool passed() const {
     if (rewind && rewind->diverged_at) return false;
     for (const AlgorithmRun& r : runs)
-      if (!r.passed() || static_cast<std::int64_t>(r.frames.size()) != frames_requested) return false;
+      if (!r.passed() || r.frames_run != frames_requested) return false;
     return !runs.empty();
   }
 };

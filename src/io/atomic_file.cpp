@@ -1,17 +1,101 @@
 #include "io/atomic_file.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
+#include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <utility>
+#include <vector>
 
 #include "core/error.hpp"
 
 namespace nbscope {
+
+// ---- live temporaries and the signals that end a run --------------------------------------
+
+namespace {
+
+// The temporaries being written, in storage a signal handler may read: fixed-size slots, each
+// claimed with an atomic (lock-free, so async-signal-safe) state.
+constexpr std::size_t kSlots = 64;
+constexpr std::size_t kMaxPath = 4096;
+enum SlotState : int { kFree = 0, kFilling = 1, kLive = 2 };
+std::array<std::atomic<int>, kSlots> g_slot_state{};
+char g_slot_path[kSlots][kMaxPath];
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads the slots' states");
+
+constexpr std::array<int, 3> kEndingSignals{SIGINT, SIGTERM, SIGHUP};
+
+// Removes every live temporary, then ends the process by the same signal with its default action
+// (so the parent sees "killed by SIGTERM", as without nbscope's handler). Async-signal-safe only.
+extern "C" void remove_temporaries_and_reraise(int sig) {
+  remove_live_temporaries();
+  struct sigaction dfl {};
+  dfl.sa_handler = SIG_DFL;
+  sigemptyset(&dfl.sa_mask);
+  ::sigaction(sig, &dfl, nullptr);
+  ::raise(sig);  // pending until this handler returns (the signal is blocked while it runs)
+}
+
+// Installs the handler for each ending signal whose action is the default one. A signal that is
+// ignored (nohup's SIGHUP) stays ignored, and one that a loop handles (headless --record's Ctrl+C,
+// the window's close) stays with it: those paths unwind and remove their temporaries themselves.
+void arm_signal_cleanup() {
+  for (const int sig : kEndingSignals) {
+    struct sigaction old {};
+    if (::sigaction(sig, nullptr, &old) != 0 || (old.sa_flags & SA_SIGINFO) != 0 || old.sa_handler != SIG_DFL) continue;
+    struct sigaction ours {};
+    ours.sa_handler = remove_temporaries_and_reraise;
+    sigemptyset(&ours.sa_mask);
+    for (const int other : kEndingSignals) sigaddset(&ours.sa_mask, other);  // one cleanup at a time
+    ::sigaction(sig, &ours, nullptr);
+  }
+}
+
+}  // namespace
+
+void remove_live_temporaries() {
+  for (std::size_t k = 0; k < kSlots; ++k)
+    if (g_slot_state[k].load() == kLive) ::unlink(g_slot_path[k]);
+}
+
+std::size_t live_temporary_count() {
+  std::size_t n = 0;
+  for (const auto& state : g_slot_state) n += state.load() == kLive ? 1 : 0;
+  return n;
+}
+
+LiveTemporary::LiveTemporary(const std::string& path) {
+  arm_signal_cleanup();
+  if (path.size() >= kMaxPath) return;  // the open fails too (ENAMETOOLONG) or it is not removed on a signal
+  for (std::size_t k = 0; k < kSlots; ++k) {
+    int expected = kFree;
+    if (!g_slot_state[k].compare_exchange_strong(expected, kFilling)) continue;
+    std::memcpy(g_slot_path[k], path.c_str(), path.size() + 1);
+    g_slot_state[k].store(kLive);
+    slot_ = static_cast<int>(k);
+    return;
+  }
+}
+
+LiveTemporary::~LiveTemporary() { release(); }
+
+void LiveTemporary::release() {
+  if (slot_ >= 0) g_slot_state[static_cast<std::size_t>(slot_)].store(kFree);
+  slot_ = -1;
+}
+
+// ---- writing whole or not at all ------------------------------------------------------------
 
 namespace {
 std::string temp_name_for(const std::string& path) {
@@ -41,6 +125,7 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   if (std::filesystem::is_directory(path, ec)) throw Error(path + ": cannot write: it is a directory");
   if (is_special_file(path)) return write_in_place(path, fill);
   const std::string tmp = temp_name_for(path);
+  LiveTemporary live(tmp);  // named before it exists: a signal from now on removes it
   try {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) throw Error(path + ": cannot write: " + std::strerror(errno));
@@ -57,9 +142,11 @@ void write_file_atomically(const std::string& path, const std::function<void(std
 
 AtomicFileWriter::AtomicFileWriter(std::string path) : path_(std::move(path)) {
   if (path_.empty()) throw Error("output path is empty");
-  if (std::filesystem::is_directory(path_)) throw Error(path_ + ": cannot write: it is a directory");
+  std::error_code ec;
+  if (std::filesystem::is_directory(path_, ec)) throw Error(path_ + ": cannot write: it is a directory");
   in_place_ = is_special_file(path_);
   temp_ = in_place_ ? path_ : temp_name_for(path_);
+  if (!in_place_) live_ = std::make_unique<LiveTemporary>(temp_);
   out_.open(temp_, in_place_ ? std::ios::binary : std::ios::binary | std::ios::trunc);
   if (!out_) {
     const std::string reason = std::strerror(errno);
@@ -74,6 +161,73 @@ AtomicFileWriter::~AtomicFileWriter() {
   if (!in_place_) std::remove(temp_.c_str());
 }
 
+// ---- scratch files without a name -----------------------------------------------------------
+
+namespace {
+// An unnamed file in `dir` (O_TMPFILE, else a unique name unlinked at once); -1 when neither works.
+int unnamed_file_in(const std::string& dir) {
+#ifdef O_TMPFILE
+  const int fd = ::open(dir.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+  if (fd >= 0) return fd;
+#endif
+  std::string name = (dir.empty() ? std::string(".") : dir) + "/.nbscope-scratch-XXXXXX";
+  const int named = ::mkstemp(name.data());
+  if (named < 0) return -1;
+  ::unlink(name.c_str());
+  return named;
+}
+}  // namespace
+
+ScratchFile::ScratchFile(const std::string& beside) {
+  namespace fs = std::filesystem;
+  const fs::path parent = fs::path(beside).parent_path();
+  int fd = is_special_file(beside) ? -1 : unnamed_file_in(parent.empty() ? "." : parent.string());
+  if (fd < 0) {  // a device as the output (/dev/stdout), or a directory that takes no unnamed file
+    const char* tmp = std::getenv("TMPDIR");
+    fd = unnamed_file_in(tmp != nullptr && *tmp != '\0' ? tmp : "/tmp");
+  }
+  if (fd < 0 || (file_ = ::fdopen(fd, "w+b")) == nullptr) {
+    const std::string reason = std::strerror(errno);
+    if (fd >= 0) ::close(fd);
+    throw Error(beside + ": cannot write: no scratch file for it: " + reason);
+  }
+  where_ = beside;
+}
+
+ScratchFile::~ScratchFile() {
+  if (file_ != nullptr) std::fclose(file_);
+}
+
+void ScratchFile::write(std::string_view bytes) {
+  if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size())
+    throw Error(where_ + ": cannot write: " + std::strerror(errno));
+  size_ += static_cast<std::int64_t>(bytes.size());
+}
+
+void ScratchFile::truncate(std::int64_t size) {
+  if (std::fflush(file_) != 0 || ::ftruncate(::fileno(file_), size) != 0 || std::fseek(file_, size, SEEK_SET) != 0)
+    throw Error(where_ + ": cannot write: " + std::strerror(errno));
+  size_ = size;
+}
+
+std::int64_t ScratchFile::bytes_on_disk() {
+  struct stat st {};
+  if (std::fflush(file_) != 0 || ::fstat(::fileno(file_), &st) != 0) return -1;
+  return static_cast<std::int64_t>(st.st_size);
+}
+
+void ScratchFile::copy_to(std::ostream& out) {
+  if (std::fflush(file_) != 0) throw Error(where_ + ": cannot write: " + std::strerror(errno));
+  std::vector<char> buffer(std::size_t{1} << 20);
+  for (std::int64_t at = 0; at < size_;) {
+    const auto want = static_cast<std::size_t>(std::min<std::int64_t>(size_ - at, static_cast<std::int64_t>(buffer.size())));
+    const ssize_t got = ::pread(::fileno(file_), buffer.data(), want, at);
+    if (got <= 0) throw Error(where_ + ": cannot write: reading back its scratch file: " + std::strerror(got < 0 ? errno : EIO));
+    out.write(buffer.data(), got);
+    at += got;
+  }
+}
+
 void AtomicFileWriter::commit() {
   out_.flush();
   const bool written = static_cast<bool>(out_);
@@ -82,9 +236,11 @@ void AtomicFileWriter::commit() {
     const std::string reason = std::strerror(errno);
     if (!in_place_) std::remove(temp_.c_str());
     committed_ = true;  // nothing left to remove
+    live_.reset();
     throw Error(path_ + ": cannot write: " + reason);
   }
   committed_ = true;
+  live_.reset();  // renamed: a signal now must not remove the name (it is gone anyway)
 }
 
 void check_output_path(const std::string& path) {

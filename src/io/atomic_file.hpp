@@ -1,9 +1,20 @@
-// nbscope io: output files written whole or not at all.
+// nbscope io: output files written whole or not at all, also when a signal ends the run.
+//
+// Every temporary an output is written through is registered while it exists (LiveTemporary); the
+// first registration installs a handler for SIGINT, SIGTERM and SIGHUP (where their action is the
+// default one) that removes the live temporaries and then ends the process by the same signal.
+//
+// Index: write_file_atomically | check_output_path, check_outputs_distinct | AtomicFileWriter |
+// write_bytes_atomically | LiveTemporary | ScratchFile.
 #pragma once
+#include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace nbscope {
@@ -33,6 +44,8 @@ void check_outputs_distinct(const std::vector<NamedPath>& inputs, const std::vec
 // streams to a temporary file beside `path`; commit() renames it into place. Destroyed without
 // commit() (an error, an interruption turned into an exception) it removes the temporary, so
 // neither `path` nor a temporary remains.
+class LiveTemporary;
+
 class AtomicFileWriter {
  public:
   // Creates the temporary; Error("<path>: cannot write: <reason>") when it cannot.
@@ -44,6 +57,8 @@ class AtomicFileWriter {
 
   // Where to write; a failed write is noticed by commit().
   std::ostream& stream() { return out_; }
+  // The path it writes (for messages).
+  [[nodiscard]] const std::string& path() const { return path_; }
   // Flushes, closes and renames into place; Error (temporary removed) on any failure.
   void commit();
 
@@ -52,9 +67,62 @@ class AtomicFileWriter {
   std::ofstream out_;
   bool committed_ = false;
   bool in_place_ = false;  // a device or FIFO: written directly, never renamed over
+  std::unique_ptr<LiveTemporary> live_;  // the temporary, for the signal handler
 };
 
 // Same, for bytes already in memory (PNG encoders hand over a buffer).
 void write_bytes_atomically(const std::string& path, const void* data, std::size_t size);
+
+// A temporary file's name, registered for as long as this lives: SIGINT, SIGTERM or SIGHUP
+// (with their default action, see the top of this file) removes it before the process ends.
+// Register a name before creating the file, and release it after renaming or removing it.
+class LiveTemporary {
+ public:
+  // Registers `path` (a name longer than 4095 bytes, or more than 64 at once, goes unregistered).
+  explicit LiveTemporary(const std::string& path);
+  // Releases the registration (the file itself is left alone).
+  ~LiveTemporary();
+  LiveTemporary(const LiveTemporary&) = delete;
+  LiveTemporary& operator=(const LiveTemporary&) = delete;
+  // Releases it early.
+  void release();
+
+ private:
+  int slot_ = -1;
+};
+
+// Removes every registered temporary now (async-signal-safe: the handler's own work; tests).
+void remove_live_temporaries();
+// How many temporaries are registered (tests: none is left once a write has ended, however it ended).
+[[nodiscard]] std::size_t live_temporary_count();
+
+// A scratch file with no name, beside `beside` (else in $TMPDIR or /tmp): it takes disk, not
+// memory, and vanishes with the process however it ends, so there is nothing to clean up.
+// headless spools each algorithm's frame reports into one while the run goes on.
+class ScratchFile {
+ public:
+  // Creates it; Error("<beside>: cannot write: ...") when no directory takes one.
+  explicit ScratchFile(const std::string& beside);
+  // Closes it (the system frees its space).
+  ~ScratchFile();
+  ScratchFile(const ScratchFile&) = delete;
+  ScratchFile& operator=(const ScratchFile&) = delete;
+
+  // Appends `bytes`; Error naming `beside` when the disk refuses them.
+  void write(std::string_view bytes);
+  // Bytes written so far (after truncate(), its size).
+  [[nodiscard]] std::int64_t size() const { return size_; }
+  // Cuts the file back to its first `size` bytes; writing continues from there.
+  void truncate(std::int64_t size);
+  // The file's size on disk after flushing (tests: frames reach the disk while the run goes on).
+  [[nodiscard]] std::int64_t bytes_on_disk();
+  // Appends the whole content to `out`.
+  void copy_to(std::ostream& out);
+
+ private:
+  std::FILE* file_ = nullptr;
+  std::string where_;
+  std::int64_t size_ = 0;
+};
 
 }  // namespace nbscope

@@ -2,8 +2,10 @@
 #include "io/recording.hpp"
 
 #include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -260,6 +262,8 @@ struct RecordingWriter::Impl {
   void flush() {
     file.stream().write(buf.data(), static_cast<std::streamsize>(buf.size()));
     buf.clear();
+    // A full disk stops a long --record at the frame it happens, not hours later at commit().
+    if (!file.stream()) throw Error(file.path() + ": cannot write: " + std::strerror(errno));
   }
 };
 

@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 #include "io/atomic_file.hpp"
 
@@ -74,64 +75,40 @@ json frame_json(const FrameReport& f) {
           {"violations_not_listed", f.violation_count() - static_cast<std::int64_t>(f.violations.size())}};
 }
 
-json timing_json(const std::vector<FrameReport>& frames, double FrameTimings::*field) {
-  double total = 0, max = 0;
-  for (const FrameReport& f : frames) {
-    total += f.timings.*field;
-    max = std::max(max, f.timings.*field);
-  }
-  const double mean = frames.empty() ? 0 : total / static_cast<double>(frames.size());
-  return {{"mean", mean}, {"max", max}, {"total", total}};
+json timing_json(const TimingStats& t, std::int64_t frames) {
+  return {{"mean", t.mean(frames)}, {"max", t.max}, {"total", t.total}};
 }
 
 // Mean, max and total over the frames of each part of the check.
-json check_parts_timing_json(const std::vector<FrameReport>& frames) {
+json check_parts_timing_json(const AlgorithmRun& run) {
   json parts = json::object();
-  for (int k = 0; k < CheckTimings::kParts; ++k) {
-    double total = 0, max = 0;
-    for (const FrameReport& f : frames) {
-      total += f.check_timings.part(k);
-      max = std::max(max, f.check_timings.part(k));
-    }
-    const double mean = frames.empty() ? 0 : total / static_cast<double>(frames.size());
-    parts[CheckTimings::part_name(k)] = {{"mean", mean}, {"max", max}, {"total", total}};
-  }
+  for (int k = 0; k < CheckTimings::kParts; ++k)
+    parts[CheckTimings::part_name(k)] = timing_json(run.check_parts[static_cast<std::size_t>(k)], run.frames_run);
   return parts;
 }
 
 json run_json(const AlgorithmRun& run) {
-  std::array<std::int64_t, kInvariantCount> by{};
-  std::int64_t total = 0, listed = 0, bad_frames = 0;
-  json first_frame = nullptr;
-  std::map<std::string, std::int64_t> references;
-  for (const FrameReport& f : run.frames) {
-    for (int k = 0; k < kInvariantCount; ++k) by[static_cast<std::size_t>(k)] += f.broken[static_cast<std::size_t>(k)];
-    total += f.violation_count();
-    listed += static_cast<std::int64_t>(f.violations.size());
-    if (f.violation_count() > 0) {
-      ++bad_frames;
-      if (first_frame.is_null()) first_frame = f.frame;
-    }
-    ++references[f.reference];
-  }
   json by_invariant = json::object();
-  for (int k = 0; k < kInvariantCount; ++k) by_invariant[invariant_name(static_cast<Invariant>(k))] = by[static_cast<std::size_t>(k)];
+  for (int k = 0; k < kInvariantCount; ++k) by_invariant[invariant_name(static_cast<Invariant>(k))] = run.broken[static_cast<std::size_t>(k)];
   return {{"algorithm", run.algorithm},
           {"passed", run.passed()},
-          {"frames_run", static_cast<std::int64_t>(run.frames.size())},
+          {"frames_run", run.frames_run},
           {"violations",
-           {{"total", total}, {"by_invariant", by_invariant}, {"frames_with_violations", bad_frames}, {"first_frame", first_frame}, {"listed", listed}}},
-          {"references_used", references},
+           {{"total", run.violations},
+            {"by_invariant", by_invariant},
+            {"frames_with_violations", run.frames_with_violations},
+            {"first_frame", run.first_violation_frame ? json(*run.first_violation_frame) : json(nullptr)},
+            {"listed", run.listed}}},
+          {"references_used", run.references},
           {"timing_ms",
-           {{"physics", timing_json(run.frames, &FrameTimings::physics_ms)},
-            {"detection", timing_json(run.frames, &FrameTimings::detection_ms)},
-            {"check", timing_json(run.frames, &FrameTimings::check_ms)}}},
-          {"check_ms_parts", check_parts_timing_json(run.frames)}};
+           {{"physics", timing_json(run.physics, run.frames_run)},
+            {"detection", timing_json(run.detection, run.frames_run)},
+            {"check", timing_json(run.check, run.frames_run)}}},
+          {"check_ms_parts", check_parts_timing_json(run)}};
 }
 
-}  // namespace
-
-std::string run_report_json(const RunReport& report) {
+// The report up to the first run's frames: every key but "runs", then "runs": [ (no newline after).
+std::string head_text(const RunReport& report) {
   json invariants = json::array();
   for (int k = 0; k < kInvariantCount; ++k)
     invariants.push_back({{"name", invariant_name(static_cast<Invariant>(k))},
@@ -140,7 +117,7 @@ std::string run_report_json(const RunReport& report) {
   std::int64_t total = 0;
   for (const AlgorithmRun& r : report.runs) {
     algorithms.push_back(r.algorithm);
-    for (const FrameReport& f : r.frames) total += f.violation_count();
+    total += r.violations;
   }
   json not_checked = json::array();
   if (report.source == "recording")
@@ -170,25 +147,84 @@ std::string run_report_json(const RunReport& report) {
   std::string out = head.dump(2);
   out.pop_back();  // the closing brace
   while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
-  out += ",\n  \"runs\": [";
-  for (std::size_t r = 0; r < report.runs.size(); ++r) {
-    std::string run = run_json(report.runs[r]).dump(2);
-    run.pop_back();
-    while (!run.empty() && (run.back() == '\n' || run.back() == ' ')) run.pop_back();
-    std::string indented;
-    for (const char c : run) indented += c == '\n' ? std::string("\n    ") : std::string(1, c);
-    out += (r == 0 ? "\n    " : ",\n    ") + indented + ",\n      \"frames\": [";
-    const std::vector<FrameReport>& frames = report.runs[r].frames;
-    for (std::size_t k = 0; k < frames.size(); ++k) out += (k == 0 ? "\n        " : ",\n        ") + frame_json(frames[k]).dump();
-    out += frames.empty() ? "]\n    }" : "\n      ]\n    }";
-  }
-  out += report.runs.empty() ? "]\n}\n" : "\n  ]\n}\n";
-  return out;
+  return out + ",\n  \"runs\": [";
 }
 
-void write_run_report(const std::string& path, const RunReport& report) {
-  const std::string text = run_report_json(report);
-  write_file_atomically(path, [&](std::ostream& out) { out << text; });
+// Run `r`'s summary, indented, up to its frames: "\n    {...,\n      \"frames\": [".
+std::string run_head_text(const AlgorithmRun& run, std::size_t r) {
+  std::string text = run_json(run).dump(2);
+  text.pop_back();
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  std::string indented;
+  for (const char c : text) indented += c == '\n' ? std::string("\n    ") : std::string(1, c);
+  return (r == 0 ? "\n    " : ",\n    ") + indented + ",\n      \"frames\": [";
+}
+
+// What follows a run's frames, and the whole report's end.
+const char* run_tail_text(bool no_frames) { return no_frames ? "]\n    }" : "\n      ]\n    }"; }
+const char* report_tail_text(bool no_runs) { return no_runs ? "]\n}\n" : "\n  ]\n}\n"; }
+
+// One frame's line as it stands in its run's "frames" array, with the separator before it.
+std::string frame_line(const FrameReport& f, bool first) { return (first ? "\n        " : ",\n        ") + frame_json(f).dump(); }
+
+}  // namespace
+
+std::string run_report_json(const RunReport& report, const std::vector<std::vector<FrameReport>>& frames) {
+  std::string out = head_text(report);
+  for (std::size_t r = 0; r < report.runs.size(); ++r) {
+    out += run_head_text(report.runs[r], r);
+    const std::size_t n = r < frames.size() ? frames[r].size() : 0;
+    for (std::size_t k = 0; k < n; ++k) out += frame_line(frames[r][k], k == 0);
+    out += run_tail_text(n == 0);
+  }
+  return out + report_tail_text(report.runs.empty());
+}
+
+// ---- RunReportWriter ----------------------------------------------------------------------
+
+RunReportWriter::RunReportWriter(std::string path, std::size_t runs) : path_(std::move(path)) {
+  for (std::size_t r = 0; r < runs; ++r) spools_.push_back(Spool{std::make_unique<ScratchFile>(path_), 0});
+}
+
+RunReportWriter::~RunReportWriter() = default;
+
+void RunReportWriter::add_frame(std::size_t run, const FrameReport& frame) {
+  Spool& spool = spools_.at(run);
+  spool.file->write(frame_line(frame, spool.frames == 0));
+  ++spool.frames;
+}
+
+RunReportWriter::Mark RunReportWriter::mark() const {
+  Mark m;
+  for (const Spool& s : spools_) m.push_back({s.file->size(), s.frames});
+  return m;
+}
+
+void RunReportWriter::back_to(const Mark& mark) {
+  for (std::size_t r = 0; r < spools_.size() && r < mark.size(); ++r) {
+    spools_[r].file->truncate(mark[r].bytes);
+    spools_[r].frames = mark[r].frames;
+  }
+}
+
+std::int64_t RunReportWriter::spooled_bytes() {
+  std::int64_t n = 0;
+  for (Spool& s : spools_) n += s.file->bytes_on_disk();
+  return n;
+}
+
+void RunReportWriter::commit(const RunReport& report) {
+  AtomicFileWriter file(path_);
+  std::ostream& out = file.stream();
+  out << head_text(report);
+  for (std::size_t r = 0; r < report.runs.size(); ++r) {
+    out << run_head_text(report.runs[r], r);
+    const bool has = r < spools_.size() && spools_[r].frames > 0;
+    if (has) spools_[r].file->copy_to(out);
+    out << run_tail_text(!has);
+  }
+  out << report_tail_text(report.runs.empty());
+  file.commit();
 }
 
 }  // namespace nbscope
