@@ -13,9 +13,9 @@ namespace nbscope {
 
 namespace {
 
-class OsmesaView final : public HeadlessView {
+class OffscreenView final : public HeadlessView {
  public:
-  OsmesaView(const ViewOptions& options, const FrameLoop& loop)
+  OffscreenView(const ViewOptions& options, const FrameLoop& loop)
       : options_(options),
         context_(render::make_offscreen_context(options.width, options.height, options.gl)),
         view_(*context_, nullptr, options) {
@@ -70,7 +70,7 @@ std::unique_ptr<HeadlessView> make_headless_view(const ViewOptions& options, con
   if (!options.screenshot) throw Error("internal: make_headless_view without --screenshot");
   // Fail before simulating any frame, not after.
   check_output_path(*options.screenshot);
-  return std::make_unique<OsmesaView>(options, loop);
+  return std::make_unique<OffscreenView>(options, loop);
 }
 
 }  // namespace nbscope

@@ -1,5 +1,5 @@
 // nbscope app: the screenshot of `nbscope headless --screenshot`: the very frame the window would
-// show (scene, overlays, ImGui panels), rendered off-screen (OSMesa). Without the GUI build,
+// show (scene, overlays, ImGui panels), rendered off-screen (OSMesa or EGL, --gl). Without the GUI build,
 // asking for one is refused with an error (exit 2).
 #pragma once
 #include <memory>

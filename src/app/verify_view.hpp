@@ -1,7 +1,7 @@
 // nbscope app: a `verify --arrays` run drawn — the user's own lists as arrow chains over the
 // elements and the grid, every problem in red (wrong links, elements at fault, cut lists' ends),
 // the selected problem's text in the legend and a Problems panel — as a screenshot rendered
-// off-screen (OSMesa) or in a window (`nbscope gui --input E.csv --arrays A.json`). Numbers are
+// off-screen (OSMesa or EGL) or in a window (`nbscope gui --input E.csv --arrays A.json`). Numbers are
 // shown as the arrays file counts them (its base: 1 numbers elements and cells from 1). GUI build
 // only: without it both refuse with Error (exit 2).
 #pragma once

@@ -85,6 +85,12 @@ void* open_gl_library(const char* env_var, const char* soname, std::string* miss
   return nullptr;
 }
 
+void* gl_library_symbol(void* library, const char* name, const std::string& where, const char* what) {
+  void* symbol = dlsym(library, name);
+  if (symbol == nullptr) throw Error(where + ": the " + what + " library has no " + name);
+  return symbol;
+}
+
 // ---- the framebuffer of a context without a default one -----------------------------------------
 
 OffscreenFramebuffer::OffscreenFramebuffer(int width, int height, const std::string& where) {

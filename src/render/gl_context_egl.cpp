@@ -9,7 +9,6 @@
 #define EGL_NO_X11  // no X11 types in eglplatform.h: the headless path knows no display server
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
-#include <dlfcn.h>
 
 #include <cstdio>
 #include <cstring>
@@ -40,12 +39,6 @@ struct EglApi {
   PFNEGLQUERYDEVICESEXTPROC query_devices = nullptr;
 };
 
-template <typename F>
-void bind(void* library, const char* name, F& out, const std::string& where) {
-  out = reinterpret_cast<F>(dlsym(library, name));
-  if (out == nullptr) throw Error(where + ": the EGL library has no " + name);
-}
-
 const EglApi* egl_api(const std::string& where, std::string* missing) {
   static std::string why;
   static void* const library = open_gl_library("NBSCOPE_EGL_LIBRARY", "libEGL.so.1", &why);
@@ -55,15 +48,15 @@ const EglApi* egl_api(const std::string& where, std::string* missing) {
   }
   static EglApi api;
   if (api.get_proc_address == nullptr) {
-    bind(library, "eglQueryString", api.query_string, where);
-    bind(library, "eglGetError", api.get_error, where);
-    bind(library, "eglInitialize", api.initialize, where);
-    bind(library, "eglBindAPI", api.bind_api, where);
-    bind(library, "eglChooseConfig", api.choose_config, where);
-    bind(library, "eglCreateContext", api.create_context, where);
-    bind(library, "eglMakeCurrent", api.make_current, where);
-    bind(library, "eglDestroyContext", api.destroy_context, where);
-    bind(library, "eglGetProcAddress", api.get_proc_address, where);
+    bind_gl_symbol(library, "eglQueryString", api.query_string, where, "EGL");
+    bind_gl_symbol(library, "eglGetError", api.get_error, where, "EGL");
+    bind_gl_symbol(library, "eglInitialize", api.initialize, where, "EGL");
+    bind_gl_symbol(library, "eglBindAPI", api.bind_api, where, "EGL");
+    bind_gl_symbol(library, "eglChooseConfig", api.choose_config, where, "EGL");
+    bind_gl_symbol(library, "eglCreateContext", api.create_context, where, "EGL");
+    bind_gl_symbol(library, "eglMakeCurrent", api.make_current, where, "EGL");
+    bind_gl_symbol(library, "eglDestroyContext", api.destroy_context, where, "EGL");
+    bind_gl_symbol(library, "eglGetProcAddress", api.get_proc_address, where, "EGL");
     // EGL_EXT_platform_base's entry point takes the same arguments as 1.5's and is in every glvnd.
     api.get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(api.get_proc_address("eglGetPlatformDisplayEXT"));
     api.query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(api.get_proc_address("eglQueryDevicesEXT"));

@@ -6,7 +6,6 @@
 
 #ifdef NBSCOPE_HAVE_OSMESA
 #include <GL/osmesa.h>
-#include <dlfcn.h>
 
 #include <vector>
 #endif
@@ -27,12 +26,6 @@ struct OsmesaApi {
   decltype(&OSMesaGetProcAddress) get_proc_address = nullptr;
 };
 
-template <typename F>
-void bind(void* library, const char* name, F& out, const std::string& where) {
-  out = reinterpret_cast<F>(dlsym(library, name));
-  if (out == nullptr) throw Error(where + ": the OSMesa library has no " + name);
-}
-
 // nullptr (and `*missing`) when the library is not there; the same answer on every call.
 const OsmesaApi* osmesa_api(const std::string& where, std::string* missing) {
   static std::string why;
@@ -43,10 +36,10 @@ const OsmesaApi* osmesa_api(const std::string& where, std::string* missing) {
   }
   static OsmesaApi api;
   if (api.get_proc_address == nullptr) {
-    bind(library, "OSMesaCreateContextAttribs", api.create_context_attribs, where);
-    bind(library, "OSMesaMakeCurrent", api.make_current, where);
-    bind(library, "OSMesaDestroyContext", api.destroy_context, where);
-    bind(library, "OSMesaGetProcAddress", api.get_proc_address, where);
+    bind_gl_symbol(library, "OSMesaCreateContextAttribs", api.create_context_attribs, where, "OSMesa");
+    bind_gl_symbol(library, "OSMesaMakeCurrent", api.make_current, where, "OSMesa");
+    bind_gl_symbol(library, "OSMesaDestroyContext", api.destroy_context, where, "OSMesa");
+    bind_gl_symbol(library, "OSMesaGetProcAddress", api.get_proc_address, where, "OSMesa");
   }
   return &api;
 }

@@ -28,6 +28,13 @@ std::unique_ptr<GlContext> make_egl_context(int width, int height, const std::st
 // Opens `env_var`'s library if set, else `soname`, for the process's life (never closed: GL's
 // function pointers point into it). nullptr and `*missing` ("libX not found") when it cannot.
 void* open_gl_library(const char* env_var, const char* soname, std::string* missing);
+// The symbol `name` of `library` into `out`; Error("<where>: the <what> library has no <name>") when
+// it is missing (a library that is not the backend it claims to be).
+void* gl_library_symbol(void* library, const char* name, const std::string& where, const char* what);
+template <typename F>
+void bind_gl_symbol(void* library, const char* name, F& out, const std::string& where, const char* what) {
+  out = reinterpret_cast<F>(gl_library_symbol(library, name, where, what));
+}
 
 // A colour (RGBA8) + depth24/stencil8 framebuffer object for a context without a default one.
 // Needs the context current (GL loaded) to create, bind and delete it.
