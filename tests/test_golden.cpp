@@ -174,7 +174,7 @@ void expect_window_matches_headless(const std::string& name, const std::string& 
   const std::string window_png = kOut + "/window_" + name + ".png", headless_png = kOut + "/window_" + name + "_headless.png";
   std::filesystem::remove(window_png);
   const std::string log = kOut + "/window_" + name + ".log";
-  const std::string cmd = "xvfb-run -a -s '-screen 0 1280x720x24' '" + testcli::binary() + "' gui " + args +
+  const std::string cmd = testcli::xvfb_run() + " '" + testcli::binary() + "' gui " + args +
                           " --screenshot '" + window_png + "' >'" + log + "' 2>&1";
   const int status = std::system(cmd.c_str());
   ASSERT_EQ(status, 0) << testcli::read_text(log);

@@ -283,7 +283,7 @@ TEST_F(RecordedPairs, WindowChecksTheRecordedPairsUnderXvfb) {
     if (k == 9) p.push_back({3, 3});
   });
   const std::string png = *dir_ + "/window.png";
-  const std::string cmd = "xvfb-run -a -s '-screen 0 1280x720x24' '" + testcli::binary() + "' replay '" + rec + "' --screenshot '" + png +
+  const std::string cmd = testcli::xvfb_run() + " '" + testcli::binary() + "' replay '" + rec + "' --screenshot '" + png +
                           "' --size 960x540 --no-timings --panels +violations,+timeline </dev/null >/dev/null 2>'" + *dir_ + "/window.err'";
   const int status = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(status));

@@ -283,7 +283,7 @@ TEST_F(Recorded, HeadlessScreenshotOfTheLastRecordedFrame) {
 TEST_F(Recorded, WindowPlaysTheRecordingUnderXvfb) {
   if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
   const std::string png = *dir_ + "/window.png";
-  const std::string cmd = "xvfb-run -a -s '-screen 0 1280x720x24' '" + testcli::binary() + "' replay '" + rec() + "' --screenshot '" + png +
+  const std::string cmd = testcli::xvfb_run() + " '" + testcli::binary() + "' replay '" + rec() + "' --screenshot '" + png +
                           "' --size 640x360 --no-timings </dev/null >/dev/null 2>'" + *dir_ + "/window.err'";
   const int status = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(status));

@@ -72,7 +72,7 @@ TEST(VerifyGui, WithoutADisplayRendersHeadlessAndSaysWhere) {
 TEST(VerifyGui, XvfbWindowMatchesTheHeadlessPicture) {
   if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
   const std::string dir = testcli::scratch_dir("verify_gui_window");
-  const Shell r = shell(dir, "xvfb-run -a -s '-screen 0 1280x720x24' " + nbscope() + " gui " + kArgs + " --frames 1 --screenshot window.png");
+  const Shell r = shell(dir, testcli::xvfb_run() + " " + nbscope() + " gui " + kArgs + " --frames 1 --screenshot window.png");
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("nbscope: window: 6 frames drawn; screenshot window.png"), std::string::npos) << r.err;
   ASSERT_TRUE(std::filesystem::exists(dir + "/window.png")) << r.err;

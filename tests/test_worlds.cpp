@@ -5,7 +5,6 @@
 // one point make N(N-1)/2 contacts; a body that Box2D moves at most 2 m a sub-step (b2_maxTranslation)
 // for 100 sub-steps a frame passes 1e6 m from 1e5 m in frame (1e6 - 1e5) / 200 + 1.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -32,19 +31,6 @@ std::string grouped(long long n) {
     out += digits[i];
   }
   return out;
-}
-
-// `nbscope ARGS` run after PREFIX (an environment assignment, or a wrapper such as xvfb-run).
-testcli::Result run(const std::string& args, const std::string& prefix) {
-  static int counter = 0;
-  const std::string base = scratch_dir("worlds_capture_" + std::to_string(counter++));
-  const std::string cmd = prefix + " '" + testcli::binary() + "' " + args + " </dev/null >'" + base + "/out' 2>'" + base + "/err'";
-  const int status = std::system(cmd.c_str());
-  testcli::Result r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  r.out = testcli::read_text(base + "/out");
-  r.err = testcli::read_text(base + "/err");
-  return r;
 }
 
 long long one_point_contacts(long long n) { return n * (n - 1) / 2; }
@@ -168,7 +154,7 @@ TEST(Worlds, TheWindowShowsAWorldThatStops) {
   const std::string dir = scratch_dir("worlds_window");
   const std::string png = dir + "/stopped.png";
   const auto r = run("gui --scene '" + world("poured-on-one-point") + "' --frames 5 --panels scenes --screenshot '" + png + "'",
-                     "xvfb-run -a -s '-screen 0 1280x720x24'");
+                     testcli::xvfb_run());
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("nbscope: error: "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("frame 2: Box2D would create about " + grouped(one_point_contacts(3000)) + " contacts"), std::string::npos) << r.err;

@@ -1,6 +1,7 @@
 #include "support/run_cli.hpp"
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -33,11 +34,15 @@ std::string scratch_dir(const std::string& test_name) {
   return dir.string();
 }
 
-Result run(const std::string& args) {
+std::string xvfb_run() {
+  return "xvfb-run -a -n " + std::to_string(100 + ::getpid() % 800) + " -s '-screen 0 1280x720x24'";
+}
+
+Result run(const std::string& args, const std::string& prefix) {
   static int counter = 0;
   const std::string base = scratch_dir("cli_capture_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
   const std::string out = base + "/out", err = base + "/err";
-  const std::string cmd = "'" + binary() + "' " + args + " </dev/null >'" + out + "' 2>'" + err + "'";
+  const std::string cmd = (prefix.empty() ? "" : prefix + " ") + "'" + binary() + "' " + args + " </dev/null >'" + out + "' 2>'" + err + "'";
   const int status = std::system(cmd.c_str());
   Result r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
