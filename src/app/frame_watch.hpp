@@ -7,6 +7,7 @@
 //
 // The threshold is 5 s; the environment variable NBSCOPE_SLOW_FRAME_SECONDS sets another (tests).
 #pragma once
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
