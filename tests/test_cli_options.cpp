@@ -92,5 +92,36 @@ TEST(CliOptions, AnOptionNotTakenIsNamed) {
   EXPECT_EQ(error_of({"extra"}, "gui", false), "extra: unexpected argument (see nbscope --help)");
 }
 
+// The error Args::integer gives for `value` in [min, max], or "" when it takes it (then `*out` is set).
+std::string integer_error(const std::string& value, long long min, long long max, long long* out = nullptr) {
+  Args args({"--n", value}, "test");
+  try {
+    const auto n = args.integer("--n", min, max);
+    if (out != nullptr) *out = n.value_or(-1);
+    return "";
+  } catch (const Error& e) {
+    return e.what();
+  }
+}
+
+// A whole number is one however it is written: 1e6 and 1000000 are taken alike, and refused alike
+// past the limit (the probe found 1e12 refused as "not a whole number" where 1000000000000 passed).
+TEST(CliOptions, WholeNumbersWithAnExponentAreTakenAndLimitedAlike) {
+  long long n = 0;
+  EXPECT_EQ(integer_error("1e6", 1, kMaxFrames, &n), "");
+  EXPECT_EQ(n, 1'000'000);
+  EXPECT_EQ(integer_error("2.5e3", 1, kMaxFrames, &n), "");
+  EXPECT_EQ(n, 2'500);
+  EXPECT_EQ(integer_error("1e8", 1, kMaxFrames, &n), "");
+  EXPECT_EQ(n, kMaxFrames);
+  const std::string past = "--n: '1e12' is not a whole number from 1 to 100000000";
+  EXPECT_EQ(integer_error("1e12", 1, kMaxFrames), past);
+  EXPECT_EQ(integer_error("1000000000000", 1, kMaxFrames), "--n: '1000000000000' is not a whole number from 1 to 100000000");
+  for (const char* bad : {"1.5", "1e-3", "nan", "inf", "1e400", "", "12abc", "0x10", "1e19"})
+    EXPECT_NE(integer_error(bad, 0, kMaxFrames), "") << bad;
+  const std::string huge(100'000, '9');
+  EXPECT_LT(integer_error(huge, 0, kMaxFrames).size(), 120u) << "a huge value is quoted as an excerpt";
+}
+
 }  // namespace
 }  // namespace nbscope

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "support/run_cli.hpp"
 
@@ -42,6 +43,31 @@ TEST(HostileCli, DevZeroIsRefusedAsEveryKindOfInput) {
       {"verify --input /dev/zero --pairs " + csv, "an elements file"},
   };
   for (const auto& c : cases) expect_refused(run(c.args), "/dev/zero:1" + std::string(kNul) + c.kind + kBinary, c.args);
+}
+
+// --frames has one upper limit for every command, and 1e8 is the same number as 100000000.
+TEST(HostileCli, EveryCommandLimitsFramesAlike) {
+  const std::string dir = scratch_dir("hostile_frames");
+  const std::string csv = dir + "/e.csv";
+  write_text(csv, "0,0,1\n1,0,1\n");
+  write_text(dir + "/r.nbsrec", "nbsrec 1\nframe 0 0\n0,0,1\n");
+  struct Case {
+    std::string args;
+    long long min;  // 0 where --frames 0 means "the first picture only"
+  };
+  const std::string scene = std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/default.json";
+  std::vector<Case> cases = {{"headless --scene " + scene, 1}, {"replay " + dir + "/r.nbsrec --headless", 1}};
+#ifdef NBSCOPE_TEST_GUI  // the window's commands exist in the GUI build only
+  cases.push_back({"gui --scene " + scene + " --screenshot " + dir + "/x.png", 0});
+  cases.push_back({"gui --input " + csv + " --arrays " + dir + "/a.json --screenshot " + dir + "/y.png", 0});
+#endif
+  for (const auto& c : cases) {
+    for (const char* frames : {"100000001", "1e12", "1000000000000"}) {
+      const std::string args = c.args + " --frames " + frames;
+      expect_refused(run(args), "--frames: '" + std::string(frames) + "' is not a whole number from " + std::to_string(c.min) +
+                                    " to 100000000", args);
+    }
+  }
 }
 
 TEST(HostileCli, NestedBracketsAreRefusedAtTheDepthLimit) {

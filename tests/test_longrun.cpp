@@ -150,6 +150,35 @@ TEST(LongRun, SignalsStopARecordingAndLeaveNoFile) {
   }
 }
 
+// SIGKILL cannot be caught, so a killed --record leaves REC.tmp.PID; the next write of REC removes
+// it (its writer no longer runs) and says so in a note, and the run itself succeeds.
+TEST(LongRun, TheNextWriteRemovesTheTemporaryOfAKilledWriter) {
+  const std::string dir = scratch_dir("longrun_record_kill");
+  const std::string run_dir = dir + "/run";
+  fs::create_directory(run_dir);
+  const std::string rec = run_dir + "/rec.nbsrec";
+  const Child c = start({"headless", "--scene", assets_scene("default"), "--frames", "10000000", "--quiet", "--record", rec}, dir);
+  ASSERT_TRUE(appears(run_dir, ".tmp.")) << "the recording's temporary never appeared";
+  ::kill(c.pid, SIGKILL);
+  int status = wait_for(c);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  const std::string temp = "rec.nbsrec.tmp." + std::to_string(c.pid);
+  ASSERT_EQ(names_in(run_dir), std::vector<std::string>{temp}) << "SIGKILL leaves the temporary";
+  // A temporary of a writer that still runs (this test) is not touched.
+  const std::string live = "rec.nbsrec.tmp." + std::to_string(::getpid());
+  write_text(run_dir + "/" + live, "still being written");
+
+  const Child again = start({"headless", "--scene", assets_scene("default"), "--frames", "2", "--quiet", "--record", rec}, dir);
+  status = wait_for(again);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << read_text(again.err);
+  const std::string err = read_text(again.err);
+  EXPECT_EQ(lines(err), 1u) << err;
+  EXPECT_EQ(err, "nbscope: note: " + run_dir + "/" + temp + ": removed the temporary of a writer that no longer runs (pid " +
+                     std::to_string(c.pid) + ")\n");
+  EXPECT_EQ(names_in(run_dir), (std::vector<std::string>{"rec.nbsrec", live}));
+}
+
 // A run without --record ends by the signal itself; its report's frames were in an unnamed file.
 TEST(LongRun, ATerminatedReportRunLeavesNoFile) {
   const std::string dir = scratch_dir("longrun_report_term");

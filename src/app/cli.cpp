@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "io/excerpt.hpp"
 
 namespace nbscope {
 
@@ -54,11 +55,23 @@ bool Args::flag(const std::string& name) {
 std::optional<long long> Args::integer(const std::string& name, long long min, long long max) {
   const auto v = value(name);
   if (!v) return std::nullopt;
+  const auto refuse = [&] {
+    return Error(name + ": '" + excerpt(*v) + "' is not a whole number from " + std::to_string(min) + " to " + std::to_string(max));
+  };
   long long out = 0;
-  const auto [ptr, ec] = std::from_chars(v->data(), v->data() + v->size(), out);
-  if (v->empty() || ec != std::errc() || ptr != v->data() + v->size() || out < min || out > max)
-    throw Error(name + ": '" + *v + "' is not a whole number from " + std::to_string(min) + " to " + std::to_string(max));
-  return out;
+  const char* end = v->data() + v->size();
+  const auto [ptr, ec] = std::from_chars(v->data(), end, out);
+  if (!v->empty() && ec == std::errc() && ptr == end) {
+    if (out < min || out > max) throw refuse();
+    return out;
+  }
+  // Written with an exponent or a fraction ("1e6", "2.5e3"): a whole number still, when it is one.
+  double d = 0;
+  const auto [dptr, dec] = std::from_chars(v->data(), end, d);
+  if (v->empty() || dec != std::errc() || dptr != end || !std::isfinite(d) || std::fabs(d) > 9e18 || d != std::floor(d) ||
+      d < static_cast<double>(min) || d > static_cast<double>(max))
+    throw refuse();
+  return static_cast<long long>(d);
 }
 
 std::optional<double> Args::number(const std::string& name) {

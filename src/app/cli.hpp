@@ -7,6 +7,10 @@
 
 namespace nbscope {
 
+// The most frames any command's --frames runs (headless, replay, gui, verify): one limit for all,
+// since a run's memory no longer grows with its length (docs: README "Long runs").
+inline constexpr long long kMaxFrames = 100'000'000;
+
 class Args {
  public:
   // Wraps the arguments after the command name; `command` names the command in errors.
@@ -19,7 +23,7 @@ class Args {
   std::optional<std::string> value(const std::string& name);
   // True when `--name` or `--name=VALUE` is among the arguments not yet taken; takes nothing.
   [[nodiscard]] bool has(const std::string& name) const;
-  // Like value(), parsed as an integer in [min, max]; Error names the flag otherwise.
+  // Like value(), parsed as an integer in [min, max] ("1e6" is one too); Error names the flag otherwise.
   std::optional<long long> integer(const std::string& name, long long min, long long max);
   // Like value(), parsed as a finite double.
   std::optional<double> number(const std::string& name);

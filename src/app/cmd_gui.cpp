@@ -50,7 +50,7 @@ GuiOptions parse_gui_options(Args& args) {
   o.scene = args.value("--scene");
   o.algorithm = args.value("--algorithm");
   if (auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);
-  if (auto n = args.integer("--frames", 0, 100'000'000)) o.frames = *n;
+  if (auto n = args.integer("--frames", 0, kMaxFrames)) o.frames = *n;
   if (auto mb = args.integer("--history-mb", 0, 1'000'000)) o.history_mb = *mb;
   if (auto n = args.integer("--max-contacts", 0, kMaxMaxContacts)) o.max_contacts = *n;
   o.back = args.integer("--back", 1, 100'000'000).value_or(0);

@@ -276,7 +276,7 @@ HeadlessOptions::Rewind parse_rewind(const std::string& text) {
 HeadlessOptions parse_headless_options(Args& args) {
   HeadlessOptions o;
   const auto scene = args.value("--scene");
-  o.frames = args.integer("--frames", 1, 10'000'000).value_or(o.frames);
+  o.frames = args.integer("--frames", 1, kMaxFrames).value_or(o.frames);
   o.algorithm = args.value("--algorithm").value_or(o.algorithm);
   o.report = args.value("--report");
   if (const auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);

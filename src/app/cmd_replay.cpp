@@ -13,7 +13,7 @@ namespace nbscope {
 int run_replay(Args& args) {
   HeadlessOptions o;
   const bool headless = args.flag("--headless");
-  o.frames = args.integer("--frames", 1, std::numeric_limits<std::int64_t>::max()).value_or(std::numeric_limits<std::int64_t>::max());
+  o.frames = args.integer("--frames", 1, kMaxFrames).value_or(std::numeric_limits<std::int64_t>::max());
   const auto algorithm = args.value("--algorithm");
   o.algorithm = algorithm.value_or(o.algorithm);
   o.algorithm_from_recording = !algorithm;  // recorded when the file carries pairs, else nbs

@@ -1,6 +1,7 @@
 #include "io/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -102,6 +103,36 @@ std::string temp_name_for(const std::string& path) {
   return path + ".tmp." + std::to_string(static_cast<long>(::getpid()));
 }
 
+// Whether process `pid` is gone: kill(pid, 0) fails with ESRCH. A process of another user
+// (EPERM) or one that reused the number counts as running: its temporary is left alone.
+bool process_is_gone(long pid) {
+  return pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
+}
+
+// Removes the temporaries that writers of `path` killed by SIGKILL (or a power cut) left behind:
+// PATH.tmp.PID whose PID no longer runs. Each removal is said in a note, once, on stderr.
+void remove_stale_temporaries_of(const std::string& path) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const std::string prefix = target.filename().string() + ".tmp.";
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  fs::directory_iterator it(dir, ec), end;
+  for (; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string digits = name.substr(prefix.size());
+    if (digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    const long pid = std::stol(digits);
+    std::error_code type_ec;
+    if (pid == static_cast<long>(::getpid()) || it->is_directory(type_ec) || !process_is_gone(pid)) continue;
+    const fs::path stale = target.has_parent_path() ? dir / name : fs::path(name);
+    if (fs::remove(stale, type_ec))
+      std::fprintf(stderr, "nbscope: note: %s: removed the temporary of a writer that no longer runs (pid %ld)\n",
+                   stale.c_str(), pid);
+  }
+}
+
 // An existing path that is not a regular file: /dev/null, /dev/stdout, a FIFO. It is written in
 // place: renaming a temporary over it would replace the device with a plain file (as root).
 bool is_special_file(const std::string& path) {
@@ -124,6 +155,7 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   std::error_code ec;  // a name too long, a directory not searchable: the open below says what is wrong
   if (std::filesystem::is_directory(path, ec)) throw Error(path + ": cannot write: it is a directory");
   if (is_special_file(path)) return write_in_place(path, fill);
+  remove_stale_temporaries_of(path);
   const std::string tmp = temp_name_for(path);
   LiveTemporary live(tmp);  // named before it exists: a signal from now on removes it
   try {
@@ -146,6 +178,7 @@ AtomicFileWriter::AtomicFileWriter(std::string path) : path_(std::move(path)) {
   if (std::filesystem::is_directory(path_, ec)) throw Error(path_ + ": cannot write: it is a directory");
   in_place_ = is_special_file(path_);
   temp_ = in_place_ ? path_ : temp_name_for(path_);
+  if (!in_place_) remove_stale_temporaries_of(path_);
   if (!in_place_) live_ = std::make_unique<LiveTemporary>(temp_);
   out_.open(temp_, in_place_ ? std::ios::binary : std::ios::binary | std::ios::trunc);
   if (!out_) {

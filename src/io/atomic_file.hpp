@@ -3,6 +3,8 @@
 // Every temporary an output is written through is registered while it exists (LiveTemporary); the
 // first registration installs a handler for SIGINT, SIGTERM and SIGHUP (where their action is the
 // default one) that removes the live temporaries and then ends the process by the same signal.
+// SIGKILL cannot be caught: the temporary it leaves (PATH.tmp.PID) is removed, with a note on
+// stderr, by the next write to the same PATH once process PID no longer runs.
 //
 // Index: write_file_atomically | check_output_path, check_outputs_distinct | AtomicFileWriter |
 // write_bytes_atomically | LiveTemporary | ScratchFile.
