@@ -141,6 +141,8 @@ const BadScene kBadScenes[] = {
      "2: generators[0].count: missing"},
     {"wrong_type_radius", "{\"bodies\": [{\"shape\": \"circle\",\n \"radius\": \"big\"}]}",
      "2: bodies[0].radius: must be a number, got a string \"big\""},
+    {"null_radius", "{\"bodies\": [{\"shape\": \"circle\",\n \"radius\": null}]}", "2: bodies[0].radius: must be a number, got null"},
+    {"null_bool", "{\"continuous\": null}", "1: continuous: must be true or false, got null"},
     {"wrong_type_gravity", "{\n\n\"gravity\": 10}", "3: gravity: must be an array of two numbers [a, b], got a number 10"},
     {"wrong_type_bool", "{\"continuous\": 1}", "1: continuous: must be true or false, got a number 1"},
     {"wrong_type_bodies", "{\"bodies\": {}}", "1: bodies: must be an array of bodies, got an object"},

@@ -68,6 +68,10 @@ std::string type_of(const json& v) {
   return "something else";
 }
 
+// What a value of the wrong type is, for "must be ..., got X": its type and an excerpt, or "null"
+// alone (it was "got null null").
+std::string described(const json& v) { return v.is_null() ? "null" : type_of(v) + " " + show(v); }
+
 std::string fmt(double v) {
   std::ostringstream s;
   s.precision(10);
@@ -78,7 +82,7 @@ std::string fmt(double v) {
 // ---- value readers -------------------------------------------------------------------------
 
 double read_number(const LocatedJson& doc, const json& v, const Path& path) {
-  if (!v.is_number()) doc.fail(path, "must be a number, got " + type_of(v) + " " + show(v));
+  if (!v.is_number()) doc.fail(path, "must be a number, got " + described(v));
   const double d = v.get<double>();
   if (!std::isfinite(d)) doc.fail(path, "must be a finite number");
   return d;
@@ -99,7 +103,7 @@ double read_positive(const LocatedJson& doc, const json& v, const Path& path, do
 }
 
 std::int64_t read_integer(const LocatedJson& doc, const json& v, const Path& path, std::int64_t lo, std::int64_t hi) {
-  if (!v.is_number()) doc.fail(path, "must be a whole number, got " + type_of(v) + " " + show(v));
+  if (!v.is_number()) doc.fail(path, "must be a whole number, got " + described(v));
   const double d = v.get<double>();
   if (!std::isfinite(d) || d != std::floor(d)) doc.fail(path, "must be a whole number, got " + show(v));
   if (d < static_cast<double>(lo) || d > static_cast<double>(hi))
@@ -108,18 +112,18 @@ std::int64_t read_integer(const LocatedJson& doc, const json& v, const Path& pat
 }
 
 bool read_bool(const LocatedJson& doc, const json& v, const Path& path) {
-  if (!v.is_boolean()) doc.fail(path, "must be true or false, got " + type_of(v) + " " + show(v));
+  if (!v.is_boolean()) doc.fail(path, "must be true or false, got " + described(v));
   return v.get<bool>();
 }
 
 std::string read_string(const LocatedJson& doc, const json& v, const Path& path) {
-  if (!v.is_string()) doc.fail(path, "must be a string, got " + type_of(v) + " " + show(v));
+  if (!v.is_string()) doc.fail(path, "must be a string, got " + described(v));
   return v.get<std::string>();
 }
 
 std::array<double, 2> read_pair(const LocatedJson& doc, const json& v, const Path& path) {
   if (!v.is_array() || v.size() != 2)
-    doc.fail(path, "must be an array of two numbers [a, b], got " + type_of(v) + " " + show(v));
+    doc.fail(path, "must be an array of two numbers [a, b], got " + described(v));
   return {read_number(doc, v[0], LocatedJson::element(path, 0)), read_number(doc, v[1], LocatedJson::element(path, 1))};
 }
 
