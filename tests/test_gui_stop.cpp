@@ -185,7 +185,10 @@ TEST(GuiSettings, ALastSceneThatNoLongerReadsFallsBackToTheDefaultScene) {
   const auto r = window_with_settings(dir, R"({"version": 1, "last_scene": ")" + dir + R"(/broken.json"})");
   expect_one_note(r, dir, {"last_scene (" + dir + "/broken.json:1: "});
   EXPECT_EQ(nlohmann::json::parse(testcli::read_text(dir + "/nbscope/settings.json")).at("last_scene"), kDefaultScene);
+}
 
+TEST(GuiSettings, ALastSceneThatIsGoneFallsBackToTheDefaultScene) {
+  SKIP_WITHOUT_WINDOW();
   const std::string gone = scratch_dir("gui_settings_last_scene_gone");
   const auto g = window_with_settings(gone, R"({"version": 1, "last_scene": "/no/such/scene.json"})");
   expect_one_note(g, gone, {"last_scene \"/no/such/scene.json\" (no such file)"});
