@@ -194,9 +194,11 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
     });
   }
   if (r.restart) {
-    // A world that stopped at load is built again (and says so again when it stops again).
-    attempt([&] { loop.has_scene() ? loop.restart() : loop.load_scene_file(session.scene_path); });
-    view.on_scene_loaded(loop, false);
+    // A world that stopped at load is built again (and says so again when it stops again); the
+    // camera then fits the scene it had not seen.
+    const bool had_scene = loop.has_scene();
+    attempt([&] { had_scene ? loop.restart() : loop.load_scene_file(session.scene_path); });
+    view.on_scene_loaded(loop, !had_scene && loop.has_scene());
     new_run();
   }
   if (r.history_budget_mb) loop.set_history_budget(static_cast<std::size_t>(*r.history_budget_mb) << 20);
