@@ -193,9 +193,9 @@ TEST(Settings, RoundTripAndMalformedFilesFallBackToDefaults) {
   s.camera = std::array<double, 3>{1.5, -2.0, 33.0};
   s.speed = 2.5;
   save_settings(path, s);  // creates the directory
-  std::string warning;
-  const Settings back = load_settings(path, warning);
-  EXPECT_TRUE(warning.empty()) << warning;
+  std::vector<std::string> ignored;
+  const Settings back = load_settings(path, ignored);
+  EXPECT_TRUE(ignored.empty()) << ignored.front();
   EXPECT_TRUE(back.overlays.lists);
   EXPECT_FALSE(back.overlays.grid);
   EXPECT_EQ(back.panels.at("Metrics"), true);
@@ -205,13 +205,14 @@ TEST(Settings, RoundTripAndMalformedFilesFallBackToDefaults) {
   EXPECT_DOUBLE_EQ(back.speed, 2.5);
 
   std::ofstream(path) << "{ not json";
-  const Settings bad = load_settings(path, warning);
-  EXPECT_NE(warning.find(path), std::string::npos);
+  const Settings bad = load_settings(path, ignored);
+  ASSERT_EQ(ignored.size(), 1u);
+  EXPECT_EQ(ignored[0].rfind("the whole file (not JSON: ", 0), 0u) << ignored[0];
   EXPECT_EQ(bad.overlays.grid, render::OverlayFlags{}.grid);
   EXPECT_FALSE(bad.last_scene.has_value());
 
-  EXPECT_TRUE(load_settings(dir + "/missing.json", warning).panels.empty());
-  EXPECT_TRUE(warning.empty());
+  EXPECT_TRUE(load_settings(dir + "/missing.json", ignored).panels.empty());
+  EXPECT_TRUE(ignored.empty());
 }
 
 // A camera left where the fit put it is not frozen into the settings: the next start fits the

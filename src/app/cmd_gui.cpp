@@ -3,7 +3,14 @@
 // itself can be tested under xvfb-run. Without a display it renders the same frames headless and
 // says where the screenshot went.
 //
-// Index: options | headless fallback | applying the panels' requests | the window loop | run_gui.
+// A scene file that cannot be read or fails the scene check is an error (exit 2, nothing to show).
+// A scene whose world stops — at load (Box2D would create too many contacts at once, or change a
+// shape) or at a later step — is shown: the interactive window opens (or stays) paused on the
+// line in red; a scripted run and the no-display fallback save the picture of it, then exit 2 with
+// that line as the only one on stderr.
+//
+// Index: options | headless fallback | the window loop | replay | run_gui. The panels' requests are
+// applied in gui_requests.cpp.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +20,7 @@
 #include "app/commands.hpp"
 #include "app/frame_loop.hpp"
 #include "app/gl_view.hpp"
+#include "app/gui_requests.hpp"
 #include "app/headless.hpp"
 #include "app/headless_view.hpp"
 #include "app/recorded_pairs.hpp"
@@ -23,7 +31,9 @@
 #include "check/faults.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/excerpt.hpp"
 #include "io/plural.hpp"
+#include "io/scene_json.hpp"
 #include "render/gl_window.hpp"
 #include "ui/settings.hpp"
 
@@ -72,17 +82,45 @@ std::string absolute_path(const std::string& path) {
   return ec ? path : p.lexically_normal().string();
 }
 
+// Loads the scene file `path` into `loop`; its name into `name`. Throws Error when the file cannot
+// be read or fails the scene check; returns the refusal of a world that stops at load (the loop is
+// then left without a scene, and the window shows the line), else "".
+std::string load_scene_or_stop(FrameLoop& loop, const std::string& path, std::string& name) {
+  const Scene scene = read_scene_json(path);
+  name = scene.name.empty() ? std::filesystem::path(path).stem().string() : scene.name;
+  try {
+    loop.load_scene(scene);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
 // ---- headless fallback ------------------------------------------------------------------------
 
-int run_without_display(GuiOptions o, FrameLoop& loop) {
-  if (!o.view.screenshot) o.view.screenshot = fallback_screenshot_path(loop.scene().name.empty() ? "scene" : loop.scene().name);
+// `stopped`: the refusal of a world that stopped at load ("" when it runs).
+int run_without_display(GuiOptions o, FrameLoop& loop, const std::string& scene_path, const std::string& scene_name, std::string stopped) {
+  if (!o.view.screenshot) o.view.screenshot = fallback_screenshot_path(scene_name.empty() ? "scene" : scene_name);
   const std::int64_t frames = o.frames.value_or(120);
   auto view = make_headless_view(o.view, loop);
   bool failed = loop.report().checked && !loop.report().ok();
-  for (std::int64_t i = 0; i < frames; ++i) {
-    loop.step();
+  for (std::int64_t i = 0; i < frames && stopped.empty(); ++i) {
+    try {
+      loop.step();
+    } catch (const Error& e) {
+      stopped = e.what();  // the last good frame stays: its picture shows the line
+      break;
+    }
     view->after_step(loop);
     failed = failed || (loop.report().checked && !loop.report().ok());
+  }
+  if (!stopped.empty()) {
+    // The picture of the stopped world, then its line as the only one on stderr (exit 2).
+    view->show_stopped(stopped, scene_path);
+    view->write_screenshot(loop);
+    std::printf("screenshot: %s\n", std::filesystem::absolute(*o.view.screenshot).c_str());
+    std::fflush(stdout);
+    throw Error(stopped);
   }
   for (std::int64_t i = 0; i < o.back; ++i) {
     step_back_for_flag(loop);
@@ -95,153 +133,17 @@ int run_without_display(GuiOptions o, FrameLoop& loop) {
   return failed ? 1 : 0;
 }
 
-// ---- applying the panels' requests ------------------------------------------------------------
-
-void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Session& session) {
-  auto attempt = [&](auto&& action) {
-    try {
-      action();
-      session.error.clear();
-    } catch (const Error& e) {
-      session.error = e.what();
-    }
-  };
-  // Another frame of the history on screen: the simulation pauses there.
-  auto show = [&](std::int64_t frame) {
-    attempt([&] {
-      loop.show_frame(frame);
-      view.on_frame_shown(loop);
-    });
-    session.paused = true;
-  };
-  if (r.toggle_pause) {
-    session.paused = !session.paused;
-    session.play_direction = 1;
-    // Playing a recording that has ended starts it again.
-    if (!session.paused && loop.at_end()) {
-      attempt([&] { loop.restart(); });
-      view.on_scene_loaded(loop, false);
-    }
-  }
-  if (r.play) {
-    const bool same = !session.paused && session.play_direction == *r.play;
-    session.paused = same;
-    session.play_direction = *r.play;
-  }
-  if (r.speed) session.speed = *r.speed;
-  if (r.algorithm) attempt([&] { loop.set_algorithm(*r.algorithm); });
-  // A new run (another scene, a restart, a new time step): nothing of the old one's playback stays.
-  const auto new_run = [&] {
-    session.resume_note.clear();
-    session.play_direction = 1;
-  };
-  if (r.scene) {
-    attempt([&] {
-      loop.load_scene_file(*r.scene);
-      session.scene_path = *r.scene;
-      view.on_scene_loaded(loop);
-      new_run();
-    });
-  }
-  if (r.time_step && loop.replaying()) {
-    session.error = "recorded frames: the time step is the recording's";
-  } else if (r.time_step) {
-    // The time step is part of the scene: the scene restarts with the new one.
-    attempt([&] {
-      Scene s = loop.scene();
-      s.time_step = *r.time_step;
-      loop.load_scene(s);
-      view.on_scene_loaded(loop, false);
-      new_run();
-    });
-  }
-  if (r.restart) {
-    attempt([&] { loop.restart(); });
-    view.on_scene_loaded(loop, false);
-    new_run();
-  }
-  if (r.history_budget_mb) loop.set_history_budget(static_cast<std::size_t>(*r.history_budget_mb) << 20);
-  if (r.cancel_resume) loop.cancel_resume();
-  if (r.resume_here && loop.showing_past()) {
-    loop.begin_resume();
-    session.resume_note.clear();
-  }
-  if (r.show_frame && !loop.resuming()) show(*r.show_frame);
-  if (r.frame_delta && !loop.resuming()) {
-    if (const auto to = loop.neighbour(*r.frame_delta)) {
-      show(*to);
-    } else if (*r.frame_delta > 0 && !loop.showing_past()) {
-      // Forward from the newest frame: one more step, as O does.
-      session.paused = true;
-      attempt([&] { loop.step(); });
-      view.after_step(loop);
-    }
-  }
-  if (r.step_once && !loop.resuming()) {
-    session.paused = true;
-    attempt([&] { loop.step(); });
-    view.after_step(loop);
-  }
-  if (r.go_to_violation && !loop.resuming()) {
-    const auto& listed = loop.violation_log().listed();
-    if (*r.go_to_violation < listed.size()) {
-      const Violation v = listed[*r.go_to_violation];  // a copy: showing the frame checks it again
-      view.state().current_violation = static_cast<std::int64_t>(*r.go_to_violation);
-      if (loop.can_show(v.frame)) {
-        show(v.frame);
-        view.focus_violation(loop, v, false);
-      } else {
-        session.error = "frame " + std::to_string(v.frame) + " is no longer kept (the history budget dropped it; a larger budget in the Timeline keeps more)";
-      }
-    }
-  }
-  // (Drags adopt a step in flight first, which may throw as a step does.)
-  if (r.drag_begin) attempt([&] { loop.begin_drag(r.drag_begin->x(), r.drag_begin->y()); });
-  if (r.drag_to) attempt([&] { loop.drag_to(r.drag_to->x(), r.drag_to->y()); });
-  if (r.drag_end) attempt([&] { loop.end_drag(); });
-}
-
-// One step forwards (adopting the step begun last frame, if any); false, paused, when it failed.
-bool step_forwards(FrameLoop& loop, GlView& view, Session& session) {
-  try {
-    loop.step();
-  } catch (const Error& e) {
-    session.error = e.what();
-    session.paused = true;
-    return false;
-  }
-  view.after_step(loop);
-  return true;
-}
-
-// One slice of a resume in progress (the window stays responsive); when it arrives the simulation
-// plays on from the resumed frame.
-void continue_resume(FrameLoop& loop, GlView& view, Session& session) {
-  try {
-    if (!loop.continue_resume(25.0)) return;
-  } catch (const Error& e) {
-    session.error = e.what();
-    session.paused = true;
-    return;
-  }
-  const std::int64_t k = loop.frame();
-  session.resume_note = loop.resume_divergence()
-                            ? "resumed at " + std::to_string(k) + ": re-simulation DIFFERS from the kept frames from frame " +
-                                  std::to_string(*loop.resume_divergence())
-                            : "resumed at " + std::to_string(k) + " (re-simulated frames matched the kept ones)";
-  view.on_frame_shown(loop);
-  session.paused = false;
-  session.play_direction = 1;
-}
-
 // ---- the window loop --------------------------------------------------------------------------
 
-int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Settings* settings) {
-  render::GlfwWindow window(o.view.width, o.view.height, "nbscope - " + loop.scene().name);
+// `stopped`: the refusal of a world that stopped at load ("" when it runs): the window opens paused
+// on it, with no scene (a scripted run saves that picture and ends with the line).
+int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Settings* settings, const std::string& stopped = "") {
+  const std::string title = loop.has_scene() ? loop.scene().name : std::filesystem::path(session.scene_path).stem().string();
+  render::GlfwWindow window(o.view.width, o.view.height, "nbscope - " + title);
   const bool scripted = o.frames.has_value();
   window.set_vsync(!scripted);
   GlView view(window, window.handle(), o.view);
-  view.check_selection(loop);
+  if (loop.has_scene()) view.check_selection(loop);
   if (settings != nullptr) {
     if (o.view.overlays.empty()) view.state().overlays = settings->overlays;
     if (o.view.panels.empty()) view.state().panel_open = settings->panels;
@@ -252,6 +154,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   loop.set_history_budget(static_cast<std::size_t>(view.state().history_budget_mb) << 20);
   view.on_scene_loaded(loop);
   if (settings != nullptr) ui::restore_camera(*settings, absolute_path(session.scene_path), view.camera());
+  if (!stopped.empty()) view.state().panel_open[kScenesPanel] = true;  // where the line is shown
 
   bool failed = false;
   double owed_steps = 0;
@@ -260,7 +163,15 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   bool any_overlapped = false;  // physics ran on the worker thread, beside the drawing
   double sum_back_show = 0, sum_back_view = 0;  // --back: showing a kept frame again, and drawing it
   const std::int64_t scripted_frames = o.frames.value_or(0) + o.back;
-  std::string world_error;  // a scripted run's step that failed (the world stopped)
+  // A scripted run's world that stopped (at load, or a step that failed): drawn until the layout
+  // settles, saved, then the run ends with its line. The interactive window just pauses on it.
+  std::string world_error = scripted ? stopped : "";
+  std::int64_t last_drawn = scripted_frames + GlView::kSettleFrames - 1;  // the scripted run's final frame
+  if (!stopped.empty()) {
+    session.error = stopped;
+    session.paused = true;
+    last_drawn = GlView::kSettleFrames - 1;
+  }
   auto last = Clock::now();
   double fps_window_start = window.time();
   int fps_frames = 0;
@@ -293,6 +204,8 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
           world_error = e.what();
           session.error = world_error;
           session.paused = true;
+          view.state().panel_open[kScenesPanel] = true;
+          last_drawn = rendered + GlView::kSettleFrames;  // not the N frames asked for
         }
       } else if (rendered > *o.frames && rendered <= scripted_frames) {
         const auto t0 = Clock::now();
@@ -348,7 +261,12 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       sum_detect += loop.timings().detection_ms;
       sum_check += loop.timings().check_ms;
     }
-    if (scripted && rendered >= scripted_frames + GlView::kSettleFrames - 1) {
+    if (scripted && rendered >= last_drawn) {
+      if (!world_error.empty()) {
+        // The picture of the stopped world; its line (thrown below) is then the only one on stderr.
+        if (o.view.screenshot) write_png(*o.view.screenshot, view.screenshot());
+        break;
+      }
       view.check_step();
       if (o.view.screenshot) write_png(*o.view.screenshot, view.screenshot());
       // What a scripted run measured: the window's frame rate and where the time went. --frames N
@@ -434,13 +352,12 @@ int run_gui(Args& args) {
   const GuiOptions o = parse_gui_options(args);
   const bool scripted = o.frames.has_value();
   // Settings only for interactive sessions: scripted runs must give the same picture everywhere.
+  // A stale settings file never keeps the window from opening: what it cannot use is ignored and
+  // named in one note line.
   std::optional<ui::Settings> settings;
+  std::vector<std::string> ignored;
   const std::string settings_file = ui::settings_path();
-  if (!scripted && have_display()) {
-    std::string warning;
-    settings = ui::load_settings(settings_file, warning);
-    if (!warning.empty()) std::fprintf(stderr, "nbscope: warning: %s\n", warning.c_str());
-  }
+  if (!scripted && have_display()) settings = ui::load_settings(settings_file, ignored);
 
   FrameLoopOptions loop_options;
   loop_options.fault = o.fault;
@@ -449,19 +366,37 @@ int run_gui(Args& args) {
   if (o.algorithm) loop_options.algorithm = *o.algorithm;
   else if (settings && settings->algorithm) loop_options.algorithm = *settings->algorithm;
   FrameLoop loop(loop_options);
-  std::string scene = o.scene.value_or("");
-  if (scene.empty() && settings && settings->last_scene && std::filesystem::is_regular_file(*settings->last_scene))
-    scene = *settings->last_scene;
-  if (scene.empty()) scene = default_scene_path();
-  loop.load_scene_file(scene);
+  std::string scene = o.scene.value_or(""), scene_name, stopped;
+  if (scene.empty() && settings && settings->last_scene) {
+    // The last session's scene, unless it no longer reads: then the default one, said in the note.
+    const std::string& last = *settings->last_scene;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(last, ec)) {
+      ignored.push_back("last_scene \"" + excerpt(last) + "\" (no such file)");
+    } else {
+      try {
+        stopped = load_scene_or_stop(loop, last, scene_name);
+        scene = last;
+      } catch (const Error& e) {
+        ignored.push_back("last_scene (" + std::string(e.what()) + ")");
+      }
+    }
+  }
+  if (scene.empty()) {
+    scene = default_scene_path();
+    stopped = load_scene_or_stop(loop, scene, scene_name);
+  } else if (o.scene) {
+    stopped = load_scene_or_stop(loop, scene, scene_name);
+  }
+  if (!ignored.empty()) std::fprintf(stderr, "nbscope: note: %s\n", printable_line(ui::settings_note(settings_file, ignored)).c_str());
   check_step_algorithm(o.view, loop.algorithm());  // the window and the fallback alike, before any frame
 
-  if (!have_display()) return run_without_display(o, loop);
+  if (!have_display()) return run_without_display(o, loop, scene, scene_name, stopped);
 
   Session session;
   session.scene_path = scene;
   session.scene_files = bundled_scene_files();
-  const int code = run_window(o, loop, session, settings ? &*settings : nullptr);
+  const int code = run_window(o, loop, session, settings ? &*settings : nullptr, stopped);
   if (settings) {
     try {
       ui::save_settings(settings_file, *settings);

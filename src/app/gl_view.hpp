@@ -25,6 +25,9 @@ struct GLFWwindow;
 
 namespace nbscope {
 
+// The panel (ui/panel_scenes.cpp) that shows Session::error in red: opened when a world stops.
+inline constexpr const char* kScenesPanel = "Scenes";
+
 // What the loop around the view knows and the panels show.
 struct Session {
   std::string scene_path;

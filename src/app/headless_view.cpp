@@ -21,7 +21,7 @@ class OffscreenView final : public HeadlessView {
         view_(*context_, nullptr, options) {
     session_.scene_path = loop.scene().path;
     session_.scene_files = bundled_scene_files();
-    view_.check_selection(loop);
+    if (loop.has_scene()) view_.check_selection(loop);  // (a world that stopped at load has no elements to select)
     view_.on_scene_loaded(loop);
   }
 
@@ -29,6 +29,13 @@ class OffscreenView final : public HeadlessView {
   void on_rewound(const FrameLoop& loop) override { view_.on_frame_shown(loop); }
   void focus_violation(const FrameLoop& loop, const Violation& violation) override {
     view_.focus_violation(loop, violation);
+  }
+
+  void show_stopped(const std::string& message, const std::string& scene_path) override {
+    session_.scene_path = scene_path;  // (a world that stopped at load left the loop without its scene)
+    session_.error = message;
+    session_.paused = true;
+    view_.state().panel_open[kScenesPanel] = true;
   }
 
   std::string write_screenshot(FrameLoop& loop) override {
@@ -40,7 +47,7 @@ class OffscreenView final : public HeadlessView {
     // The settled layout, as the window's scripted screenshot shows it.
     for (int i = 1; i < GlView::kSettleFrames; ++i) view_.frame(loop, session_, false, 1.0f / 60.0f);
     const double render_ms = ms_since(t0) / (GlView::kSettleFrames - 1);
-    view_.check_step();
+    if (session_.error.empty()) view_.check_step();  // a stopped world's picture is of its message
     const GlView::Cost cost = view_.last_cost();
     auto t1 = Clock::now();
     const Image image = view_.screenshot();

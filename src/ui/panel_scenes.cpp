@@ -15,6 +15,13 @@ std::string stem(const std::string& path) { return std::filesystem::path(path).s
 class ScenesPanel final : public Panel {
  public:
   [[nodiscard]] const char* title() const override { return "Scenes"; }
+  // A stopped world's line (or a scene that failed to open) is shown here: while there is one the
+  // panel outranks the others, so that a short window collapses them rather than it.
+  [[nodiscard]] int priority() const override { return showing_error_ ? 100 : 0; }
+  [[nodiscard]] bool visible(const UiContext& c) const override {
+    showing_error_ = !c.sim.error.empty();  // (asked every frame before the columns are fitted)
+    return true;
+  }
 
   void draw(UiContext& c) override {
     const SimView& s = c.sim;
@@ -38,6 +45,9 @@ class ScenesPanel final : public Panel {
       ImGui::PopStyleColor();
     }
   }
+
+ private:
+  mutable bool showing_error_ = false;
 };
 
 }  // namespace

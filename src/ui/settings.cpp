@@ -1,20 +1,18 @@
 #include "ui/settings.hpp"
 
-#include <cmath>
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
+#include "core/detector.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/excerpt.hpp"
+#include "io/input_file.hpp"
+#include "ui/settings_json.hpp"
 
 namespace nbscope::ui {
-
-namespace {
-constexpr int kVersion = 1;
-}
 
 std::string settings_path() {
   const char* xdg = std::getenv("XDG_CONFIG_HOME");
@@ -24,39 +22,45 @@ std::string settings_path() {
   return "";
 }
 
-Settings load_settings(const std::string& path, std::string& warning) {
+Settings load_settings(const std::string& path, std::vector<std::string>& ignored) {
   Settings s;
-  warning.clear();
-  if (path.empty() || !std::filesystem::exists(path)) return s;
+  ignored.clear();
+  std::error_code ec;
+  if (path.empty() || !std::filesystem::exists(path, ec)) return s;
+  std::vector<std::string_view> overlay_names;
+  for (const render::OverlayInfo& o : render::overlay_infos()) overlay_names.emplace_back(o.name);
+  SettingsValues v;
   try {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error("cannot read the file");
-    std::stringstream text;
-    text << in.rdbuf();
-    const nlohmann::json j = nlohmann::json::parse(text.str());
-    if (!j.is_object()) throw std::runtime_error("not a JSON object");
-    if (j.value("version", 0) != kVersion) throw std::runtime_error("unknown version");
-    Settings out;
-    if (j.contains("overlays")) {
-      for (const render::OverlayInfo& o : render::overlay_infos())
-        if (j["overlays"].contains(o.name)) out.overlays.*o.flag = j["overlays"][o.name].get<bool>();
-    }
-    if (j.contains("panels")) out.panels = j["panels"].get<std::map<std::string, bool>>();
-    if (j.contains("last_scene")) out.last_scene = j["last_scene"].get<std::string>();
-    if (j.contains("algorithm")) out.algorithm = j["algorithm"].get<std::string>();
-    if (j.contains("camera")) {
-      const auto c = j["camera"].get<std::array<double, 3>>();
-      if (std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]) && c[2] > 0) out.camera = c;
-    }
-    out.speed = j.value("speed", 1.0);
-    if (!(out.speed > 0.0 && out.speed <= 100.0)) out.speed = 1.0;
-    const std::int64_t mb = j.contains("history_mb") && j["history_mb"].is_number_integer() ? j["history_mb"].get<std::int64_t>() : 256;
-    out.history_mb = mb >= 0 && mb <= 1'000'000 ? mb : 256;
-    return out;
-  } catch (const std::exception& e) {
-    warning = path + ": " + e.what() + " (settings ignored)";
+    v = parse_settings_json(read_input_file(path, "settings file", kMaxSettingsBytes), overlay_names, ignored);
+  } catch (const Error& e) {
+    // read_input_file's messages start with the path the note names anyway.
+    std::string why = e.what();
+    if (why.rfind(path + ": ", 0) == 0) why.erase(0, path.size() + 2);
+    ignored.assign(1, "the whole file (" + why + ")");
     return s;
   }
+  for (const render::OverlayInfo& o : render::overlay_infos())
+    if (const auto it = v.overlays.find(o.name); it != v.overlays.end()) s.overlays.*o.flag = it->second;
+  s.panels = std::move(v.panels);
+  s.last_scene = std::move(v.last_scene);
+  if (v.algorithm) {
+    // Registered at start-up (box2d too) before any window: the names this nbscope has now.
+    const auto& infos = detector_infos();
+    const auto known = std::find_if(infos.begin(), infos.end(), [&](const DetectorInfo& d) { return d.name == *v.algorithm; });
+    if (known != infos.end() && known->dim2) s.algorithm = std::move(v.algorithm);
+    else ignored.push_back("algorithm \"" + excerpt(*v.algorithm) + "\" (not one of " + detector_names() + ")");
+  }
+  s.camera = v.camera;
+  s.speed = v.speed;
+  s.history_mb = v.history_mb;
+  return s;
+}
+
+std::string settings_note(const std::string& path, const std::vector<std::string>& ignored) {
+  if (ignored.empty()) return "";
+  std::string line = path + ": ignored ";
+  for (std::size_t k = 0; k < ignored.size(); ++k) line += (k > 0 ? ", " : "") + ignored[k];
+  return line + (ignored.size() == 1 && ignored[0].rfind("the whole file", 0) == 0 ? "; the defaults are used" : "; the rest is used");
 }
 
 std::optional<std::array<double, 3>> camera_to_save(const render::Camera& camera) {
@@ -73,7 +77,7 @@ bool restore_camera(const Settings& s, const std::string& scene, render::Camera&
 void save_settings(const std::string& path, const Settings& s) {
   if (path.empty()) throw Error("settings: no config directory (neither XDG_CONFIG_HOME nor HOME is set)");
   nlohmann::json j;
-  j["version"] = kVersion;
+  j["version"] = kSettingsVersion;
   for (const render::OverlayInfo& o : render::overlay_infos()) j["overlays"][o.name] = s.overlays.*o.flag;
   j["panels"] = s.panels;
   if (s.last_scene) j["last_scene"] = *s.last_scene;

@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "render/camera.hpp"
 #include "render/overlays.hpp"
@@ -26,9 +27,13 @@ struct Settings {
 
 // $XDG_CONFIG_HOME/nbscope/settings.json, else $HOME/.config/nbscope/settings.json, else "".
 std::string settings_path();
-// Reads `path`. A missing file gives the defaults; an unreadable or malformed one gives the defaults
-// and a one-line `warning` ("<path>: ... (ignored)"), since a bad settings file must not stop the app.
-Settings load_settings(const std::string& path, std::string& warning);
+// Reads `path` (ui/settings_json.hpp). A missing file gives the defaults. A stale or broken one must
+// not keep the window from opening: what cannot be used keeps its default and is named in `ignored`
+// — the whole file (unreadable, not JSON, another version) or single keys (a wrong type, a value out
+// of range, an algorithm this nbscope does not have, e.g. "bogus").
+Settings load_settings(const std::string& path, std::vector<std::string>& ignored);
+// The one line that says so: "<path>: ignored <what>, <what>; the rest is used" ("" when nothing was).
+std::string settings_note(const std::string& path, const std::vector<std::string>& ignored);
 // The camera to save: none while it is where the last fit (or Home) put it, so that the next start
 // fits the scene and keeps refitting it as panels open and close; else its centre and scale.
 std::optional<std::array<double, 3>> camera_to_save(const render::Camera& camera);

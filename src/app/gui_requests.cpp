@@ -1,0 +1,146 @@
+#include "app/gui_requests.hpp"
+
+#include "core/error.hpp"
+
+namespace nbscope {
+
+void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Session& session) {
+  auto attempt = [&](auto&& action) {
+    try {
+      action();
+      session.error.clear();
+    } catch (const Error& e) {
+      session.error = e.what();
+    }
+  };
+  // Another frame of the history on screen: the simulation pauses there.
+  auto show = [&](std::int64_t frame) {
+    attempt([&] {
+      loop.show_frame(frame);
+      view.on_frame_shown(loop);
+    });
+    session.paused = true;
+  };
+  if (r.toggle_pause) {
+    session.paused = !session.paused;
+    session.play_direction = 1;
+    // Playing a recording that has ended starts it again.
+    if (!session.paused && loop.at_end()) {
+      attempt([&] { loop.restart(); });
+      view.on_scene_loaded(loop, false);
+    }
+  }
+  if (r.play) {
+    const bool same = !session.paused && session.play_direction == *r.play;
+    session.paused = same;
+    session.play_direction = *r.play;
+  }
+  if (r.speed) session.speed = *r.speed;
+  if (r.algorithm) attempt([&] { loop.set_algorithm(*r.algorithm); });
+  // A new run (another scene, a restart, a new time step): nothing of the old one's playback stays.
+  const auto new_run = [&] {
+    session.resume_note.clear();
+    session.play_direction = 1;
+  };
+  if (r.scene) {
+    attempt([&] {
+      loop.load_scene_file(*r.scene);
+      session.scene_path = *r.scene;
+      view.on_scene_loaded(loop);
+      new_run();
+    });
+  }
+  if (r.time_step && !loop.has_scene()) {
+    session.error = "no scene runs (pick one in the Scenes panel)";  // a world that stopped at load
+  } else if (r.time_step && loop.replaying()) {
+    session.error = "recorded frames: the time step is the recording's";
+  } else if (r.time_step) {
+    // The time step is part of the scene: the scene restarts with the new one.
+    attempt([&] {
+      Scene s = loop.scene();
+      s.time_step = *r.time_step;
+      loop.load_scene(s);
+      view.on_scene_loaded(loop, false);
+      new_run();
+    });
+  }
+  if (r.restart) {
+    // A world that stopped at load is built again (and says so again when it stops again); the
+    // camera then fits the scene it had not seen.
+    const bool had_scene = loop.has_scene();
+    attempt([&] { had_scene ? loop.restart() : loop.load_scene_file(session.scene_path); });
+    view.on_scene_loaded(loop, !had_scene && loop.has_scene());
+    new_run();
+  }
+  if (r.history_budget_mb) loop.set_history_budget(static_cast<std::size_t>(*r.history_budget_mb) << 20);
+  if (r.cancel_resume) loop.cancel_resume();
+  if (r.resume_here && loop.showing_past()) {
+    loop.begin_resume();
+    session.resume_note.clear();
+  }
+  if (r.show_frame && !loop.resuming()) show(*r.show_frame);
+  if (r.frame_delta && !loop.resuming()) {
+    if (const auto to = loop.neighbour(*r.frame_delta)) {
+      show(*to);
+    } else if (*r.frame_delta > 0 && !loop.showing_past()) {
+      // Forward from the newest frame: one more step, as O does.
+      session.paused = true;
+      attempt([&] { loop.step(); });
+      view.after_step(loop);
+    }
+  }
+  if (r.step_once && !loop.resuming()) {
+    session.paused = true;
+    attempt([&] { loop.step(); });
+    view.after_step(loop);
+  }
+  if (r.go_to_violation && !loop.resuming()) {
+    const auto& listed = loop.violation_log().listed();
+    if (*r.go_to_violation < listed.size()) {
+      const Violation v = listed[*r.go_to_violation];  // a copy: showing the frame checks it again
+      view.state().current_violation = static_cast<std::int64_t>(*r.go_to_violation);
+      if (loop.can_show(v.frame)) {
+        show(v.frame);
+        view.focus_violation(loop, v, false);
+      } else {
+        session.error = "frame " + std::to_string(v.frame) + " is no longer kept (the history budget dropped it; a larger budget in the Timeline keeps more)";
+      }
+    }
+  }
+  // (Drags adopt a step in flight first, which may throw as a step does.)
+  if (r.drag_begin) attempt([&] { loop.begin_drag(r.drag_begin->x(), r.drag_begin->y()); });
+  if (r.drag_to) attempt([&] { loop.drag_to(r.drag_to->x(), r.drag_to->y()); });
+  if (r.drag_end) attempt([&] { loop.end_drag(); });
+}
+
+bool step_forwards(FrameLoop& loop, GlView& view, Session& session) {
+  try {
+    loop.step();
+  } catch (const Error& e) {
+    session.error = e.what();
+    session.paused = true;
+    return false;
+  }
+  view.after_step(loop);
+  return true;
+}
+
+void continue_resume(FrameLoop& loop, GlView& view, Session& session) {
+  try {
+    if (!loop.continue_resume(25.0)) return;
+  } catch (const Error& e) {
+    session.error = e.what();
+    session.paused = true;
+    return;
+  }
+  const std::int64_t k = loop.frame();
+  session.resume_note = loop.resume_divergence()
+                            ? "resumed at " + std::to_string(k) + ": re-simulation DIFFERS from the kept frames from frame " +
+                                  std::to_string(*loop.resume_divergence())
+                            : "resumed at " + std::to_string(k) + " (re-simulated frames matched the kept ones)";
+  view.on_frame_shown(loop);
+  session.paused = false;
+  session.play_direction = 1;
+}
+
+}  // namespace nbscope

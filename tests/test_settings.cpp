@@ -1,0 +1,115 @@
+// The settings file's reader key by key (ui/settings_json.hpp, ui/settings.hpp): a stale or broken
+// value keeps its default and is named once; only an unusable file is ignored whole; the note is
+// one line naming the file.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "render/overlays.hpp"
+#include "ui/settings.hpp"
+#include "ui/settings_json.hpp"
+
+namespace nbscope::ui {
+namespace {
+
+constexpr std::string_view kOverlays[] = {"bodies", "grid", "ids"};
+
+SettingsValues parse(const std::string& text, std::vector<std::string>& ignored) { return parse_settings_json(text, kOverlays, ignored); }
+
+bool mentions(const std::vector<std::string>& ignored, const std::string& phrase) {
+  for (const std::string& p : ignored)
+    if (p.find(phrase) != std::string::npos) return true;
+  return false;
+}
+
+TEST(SettingsJson, GoodValuesAreKeptWithNothingIgnored) {
+  std::vector<std::string> ignored;
+  const SettingsValues v = parse(R"({"version": 1, "overlays": {"grid": false, "ids": true}, "panels": {"Metrics": true},
+    "last_scene": "/s.json", "algorithm": "screen", "camera": [1, -2, 30], "speed": 100, "history_mb": 0})",
+                                 ignored);
+  EXPECT_TRUE(ignored.empty()) << ignored.front();
+  EXPECT_EQ(v.overlays, (std::map<std::string, bool>{{"grid", false}, {"ids", true}}));
+  EXPECT_EQ(v.panels.at("Metrics"), true);
+  EXPECT_EQ(v.last_scene, "/s.json");
+  EXPECT_EQ(v.algorithm, "screen");
+  EXPECT_EQ(v.camera, (std::array<double, 3>{1, -2, 30}));
+  EXPECT_EQ(v.speed, 100);
+  EXPECT_EQ(v.history_mb, 0);
+}
+
+TEST(SettingsJson, EachWrongKeyKeepsItsDefaultAndIsNamed) {
+  std::vector<std::string> ignored;
+  const SettingsValues v = parse(R"({"version": 1, "overlays": {"grid": 1, "sparkles": true, "ids": true}, "panels": [],
+    "last_scene": 7, "algorithm": "", "camera": [0, 0, 0], "speed": "fast", "history_mb": 2.5, "future_key": {}})",
+                                 ignored);
+  EXPECT_EQ(v.overlays, (std::map<std::string, bool>{{"ids", true}}));  // the good entry stays
+  EXPECT_TRUE(v.panels.empty());
+  EXPECT_FALSE(v.last_scene);
+  EXPECT_FALSE(v.algorithm);
+  EXPECT_FALSE(v.camera);
+  EXPECT_EQ(v.speed, 1.0);
+  EXPECT_EQ(v.history_mb, 256);
+  EXPECT_EQ(ignored.size(), 8u);
+  for (const char* phrase : {"overlays.grid 1 (not true or false)", "overlays.sparkles (no such overlay)", "panels [] (not an object)",
+                             "last_scene 7 (", "algorithm \"\" (", "camera [0,0,0] (", "speed \"fast\" (not a number in (0, 100])",
+                             "history_mb 2.5 ("})
+    EXPECT_TRUE(mentions(ignored, phrase)) << phrase;
+  EXPECT_FALSE(mentions(ignored, "future_key"));  // a newer nbscope's key is left alone
+}
+
+TEST(SettingsJson, RangesAreHeld) {
+  std::vector<std::string> ignored;
+  EXPECT_EQ(parse(R"({"version": 1, "speed": 0})", ignored).speed, 1.0);
+  EXPECT_EQ(parse(R"({"version": 1, "speed": 1e308})", ignored).speed, 1.0);
+  EXPECT_EQ(parse(R"({"version": 1, "history_mb": -1})", ignored).history_mb, 256);
+  EXPECT_EQ(parse(R"({"version": 1, "history_mb": 18446744073709551615})", ignored).history_mb, 256);
+  EXPECT_FALSE(parse(R"({"version": 1, "camera": [1, 2]})", ignored).camera);
+  EXPECT_FALSE(parse(R"({"version": 1, "camera": [1, 2, -3]})", ignored).camera);
+}
+
+TEST(SettingsJson, AnUnusableFileIsRefusedWhole) {
+  std::vector<std::string> ignored;
+  const auto refusal = [&](const std::string& text) {
+    try {
+      parse(text, ignored);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refusal("{ not json").rfind("not JSON: ", 0), 0u);
+  EXPECT_EQ(refusal("[1, 2]"), "not a JSON object");
+  EXPECT_EQ(refusal("{}"), "no \"version\"");
+  EXPECT_EQ(refusal(R"({"version": 2})"), "version 2 (this nbscope reads version 1)");
+  EXPECT_EQ(refusal(std::string(100, '[') + std::string(100, ']')).rfind("line 1: ", 0), 0u);
+  EXPECT_EQ(refusal("{\"version\": 1, \"x\": \"" + std::string(kMaxSettingsBytes, 'a') + "\"}"), "larger than 1 MB");
+}
+
+TEST(Settings, AnUnknownAlgorithmIsIgnoredAndTheNoteNamesTheFile) {
+  const std::string dir = std::string(NBSCOPE_TEST_OUT) + "/settings_unknown_algorithm";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string path = dir + "/settings.json";
+  std::ofstream(path) << R"({"version": 1, "algorithm": "bogus", "speed": 3, "overlays": {"ids": true}})";
+  std::vector<std::string> ignored;
+  const Settings s = load_settings(path, ignored);
+  EXPECT_FALSE(s.algorithm);
+  EXPECT_EQ(s.speed, 3);
+  EXPECT_TRUE(s.overlays.ids);
+  ASSERT_EQ(ignored.size(), 1u);
+  EXPECT_EQ(ignored[0].rfind("algorithm \"bogus\" (not one of ", 0), 0u) << ignored[0];
+  EXPECT_NE(ignored[0].find("nbs"), std::string::npos);
+  EXPECT_EQ(settings_note(path, ignored), path + ": ignored " + ignored[0] + "; the rest is used");
+  EXPECT_EQ(settings_note(path, {}), "");
+
+  std::ofstream(path) << R"({"version": 1, "algorithm": "tree"})";
+  EXPECT_EQ(load_settings(path, ignored).algorithm, "tree");
+  EXPECT_TRUE(ignored.empty());
+}
+
+}  // namespace
+}  // namespace nbscope::ui
