@@ -143,6 +143,7 @@ const BadScene kBadScenes[] = {
      "2: bodies[0].radius: must be a number, got a string \"big\""},
     {"wrong_type_gravity", "{\n\n\"gravity\": 10}", "3: gravity: must be an array of two numbers [a, b], got a number 10"},
     {"wrong_type_bool", "{\"continuous\": 1}", "1: continuous: must be true or false, got a number 1"},
+    {"null_bool", "{\"continuous\": null}", "1: continuous: must be true or false, got null"},  // was "got null null"
     {"wrong_type_bodies", "{\"bodies\": {}}", "1: bodies: must be an array of bodies, got an object"},
     {"negative_radius", "{\"bodies\": [\n{\"shape\": \"circle\", \"radius\": 1},\n{\"shape\": \"circle\",\n \"radius\": -0.5}]}",
      "4: bodies[1].radius: must be positive, got -0.5"},

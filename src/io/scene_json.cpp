@@ -68,6 +68,9 @@ std::string type_of(const json& v) {
   return "something else";
 }
 
+// "a string \"x\"", "an array [1, 2]"; null alone: "null null" said it twice.
+std::string described(const json& v) { return v.is_null() ? "null" : type_of(v) + " " + show(v); }
+
 std::string fmt(double v) {
   std::ostringstream s;
   s.precision(10);
@@ -78,7 +81,7 @@ std::string fmt(double v) {
 // ---- value readers -------------------------------------------------------------------------
 
 double read_number(const LocatedJson& doc, const json& v, const Path& path) {
-  if (!v.is_number()) doc.fail(path, "must be a number, got " + type_of(v) + " " + show(v));
+  if (!v.is_number()) doc.fail(path, "must be a number, got " + described(v));
   const double d = v.get<double>();
   if (!std::isfinite(d)) doc.fail(path, "must be a finite number");
   return d;
@@ -99,7 +102,7 @@ double read_positive(const LocatedJson& doc, const json& v, const Path& path, do
 }
 
 std::int64_t read_integer(const LocatedJson& doc, const json& v, const Path& path, std::int64_t lo, std::int64_t hi) {
-  if (!v.is_number()) doc.fail(path, "must be a whole number, got " + type_of(v) + " " + show(v));
+  if (!v.is_number()) doc.fail(path, "must be a whole number, got " + described(v));
   const double d = v.get<double>();
   if (!std::isfinite(d) || d != std::floor(d)) doc.fail(path, "must be a whole number, got " + show(v));
   if (d < static_cast<double>(lo) || d > static_cast<double>(hi))
@@ -108,18 +111,18 @@ std::int64_t read_integer(const LocatedJson& doc, const json& v, const Path& pat
 }
 
 bool read_bool(const LocatedJson& doc, const json& v, const Path& path) {
-  if (!v.is_boolean()) doc.fail(path, "must be true or false, got " + type_of(v) + " " + show(v));
+  if (!v.is_boolean()) doc.fail(path, "must be true or false, got " + described(v));
   return v.get<bool>();
 }
 
 std::string read_string(const LocatedJson& doc, const json& v, const Path& path) {
-  if (!v.is_string()) doc.fail(path, "must be a string, got " + type_of(v) + " " + show(v));
+  if (!v.is_string()) doc.fail(path, "must be a string, got " + described(v));
   return v.get<std::string>();
 }
 
 std::array<double, 2> read_pair(const LocatedJson& doc, const json& v, const Path& path) {
   if (!v.is_array() || v.size() != 2)
-    doc.fail(path, "must be an array of two numbers [a, b], got " + type_of(v) + " " + show(v));
+    doc.fail(path, "must be an array of two numbers [a, b], got " + described(v));
   return {read_number(doc, v[0], LocatedJson::element(path, 0)), read_number(doc, v[1], LocatedJson::element(path, 1))};
 }
 
@@ -150,7 +153,7 @@ class ObjectReader {
  public:
   ObjectReader(const LocatedJson& doc, const json& object, Path path, std::string what)
       : doc_(doc), object_(object), path_(std::move(path)) {
-    if (!object_.is_object()) doc_.fail(path_, "must be " + what + " (a JSON object), got " + type_of(object) + " " + show(object));
+    if (!object_.is_object()) doc_.fail(path_, "must be " + what + " (a JSON object), got " + described(object));
   }
   [[nodiscard]] const LocatedJson& doc() const { return doc_; }
   [[nodiscard]] const Path& path() const { return path_; }
