@@ -91,7 +91,7 @@ class Tree {
 
  private:
   // Blocks, not one vector: no doubling copy at the peak of a large file.
-  static constexpr unsigned kBlockBits = 16;
+  static constexpr unsigned kBlockBits = 12;  // 32 KB: below malloc's mmap threshold, so a small file costs no mmap
   static constexpr std::uint32_t kBlockMask = (1u << kBlockBits) - 1;
   std::vector<std::unique_ptr<Node[]>> blocks_;
   std::uint32_t size_ = 0;
