@@ -61,6 +61,19 @@ TEST(ArraysReader, KeepsEightBytesAValueAndNothingOfOtherKeys) {
   EXPECT_EQ(verify::verify_arrays(e, grid, with_noise.arrays("nbs", grid, e.size(), 0), true).problem_count, 0);
 }
 
+TEST(ArraysReader, ValuesAreCountedAsTheyArriveNotAfterTheWholeText) {
+  // 1 (the object) + 1 (the array) + 8 numbers = 10: within a limit of 10; one more, refused on its line.
+  EXPECT_NO_THROW(arrays_tree::parse_text("{\"next\": [0,1,2,3,4,5,6,7]}", "v.json", 10));
+  try {
+    arrays_tree::parse_text("{\"next\": [0,1,2,3,4,5,6,\n7,8, \"never read\"", "v.json", 10);  // cut short: refused before the end
+    FAIL();
+  } catch (const Error& err) {
+    EXPECT_STREQ(err.what(), "v.json:2: more than 10 values (arrays, objects and their entries), the limit for arrays files");
+  }
+  // Values under keys not the schema's count too.
+  EXPECT_THROW(arrays_tree::parse_text("{\"notes\": [[0,1],[2,3],[4,5],[6,7]]}", "v.json", 10), Error);
+}
+
 TEST(ArraysReader, AKeyGivenTwiceIsTheLastAsNlohmannKeepsIt) {
   const ArraysJson file = parse_arrays_json(R"({"dim": 3, "base": 0, "dim": 2, "algorithm": "tree", "algorithm": "nbs"})", "a.json");
   EXPECT_EQ(file.dim, 2);

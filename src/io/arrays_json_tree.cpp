@@ -163,8 +163,8 @@ class CheckedInput : public std::streambuf {
     file_->read(chunk_.data(), static_cast<std::streamsize>(chunk_.size()));
     const auto got = static_cast<std::size_t>(file_->gcount());
     if (file_->bad()) throw Error(where_ + ": cannot read the arrays file");
+    setg(chunk_.data(), chunk_.data(), chunk_.data() + got);  // empty at the end: its lines are counted above
     if (got == 0) return traits_type::eof();
-    setg(chunk_.data(), chunk_.data(), chunk_.data() + got);
     if (const void* nul = std::memchr(chunk_.data(), '\0', got)) {
       const auto at = static_cast<std::size_t>(static_cast<const char*>(nul) - chunk_.data());
       setg(chunk_.data(), chunk_.data() + at, chunk_.data() + got);
@@ -189,7 +189,8 @@ class CheckedInput : public std::streambuf {
 
 class Builder : public nlohmann::json_sax<nlohmann::json> {
  public:
-  Builder(Tree& tree, const CheckedInput& input, const std::string& where) : tree_(tree), input_(input), where_(where) {}
+  Builder(Tree& tree, const CheckedInput& input, const std::string& where, std::size_t max_values)
+      : tree_(tree), input_(input), where_(where), max_values_(max_values) {}
 
   bool null() override { return scalar(make(kNull)); }
   bool boolean(bool v) override { return scalar(make(v ? kTrue : kFalse)); }
@@ -250,8 +251,8 @@ class Builder : public nlohmann::json_sax<nlohmann::json> {
   [[nodiscard]] std::string at(bool lookahead) const { return where_ + ":" + std::to_string(input_.line(lookahead)) + ": "; }
 
   void count_value(bool lookahead) {
-    if (++values_ > kMaxArraysJsonValues)
-      throw Error(at(lookahead) + "more than " + std::to_string(kMaxArraysJsonValues) +
+    if (++values_ > max_values_)
+      throw Error(at(lookahead) + "more than " + std::to_string(max_values_) +
                   " values (arrays, objects and their entries), the limit for arrays files");
   }
   // The open array gains an entry (an object's members are counted at their keys).
@@ -316,14 +317,16 @@ class Builder : public nlohmann::json_sax<nlohmann::json> {
   int skipped_depth_ = 0;            // open ones inside a value not kept
   bool skip_next_ = false;           // the next value is not kept (an unknown key's)
   bool keep_next_text_ = false;      // the next value is "algorithm"'s
+  std::size_t max_values_;
   std::size_t values_ = 0;
 };
 
-std::shared_ptr<const Tree> parse(std::istream* file, std::string_view memory, const std::string& where, std::size_t max_bytes) {
+std::shared_ptr<const Tree> parse(std::istream* file, std::string_view memory, const std::string& where, std::size_t max_bytes,
+                                  std::size_t max_values) {
   auto tree = std::make_shared<Tree>();
   CheckedInput input(file, memory, where, max_bytes);
   std::istream stream(&input);
-  Builder builder(*tree, input, where);
+  Builder builder(*tree, input, where, max_values);
   nlohmann::json::sax_parse(stream, &builder);
   return tree;
 }
@@ -336,11 +339,11 @@ std::shared_ptr<const Tree> read_file(const std::string& path, std::size_t max_b
   if (std::filesystem::is_directory(path, ec)) throw Error(path + ": is a directory, not an arrays file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path + ": cannot open the arrays file (no such file or not readable)");
-  return parse(&in, {}, path, max_bytes);
+  return parse(&in, {}, path, max_bytes, kMaxArraysJsonValues);
 }
 
-std::shared_ptr<const Tree> parse_text(std::string_view text, const std::string& where) {
-  return parse(nullptr, text, where, std::numeric_limits<std::size_t>::max());
+std::shared_ptr<const Tree> parse_text(std::string_view text, const std::string& where, std::size_t max_values) {
+  return parse(nullptr, text, where, std::numeric_limits<std::size_t>::max(), max_values);
 }
 
 }  // namespace nbscope::arrays_tree

@@ -17,6 +17,8 @@
 #include <string_view>
 #include <vector>
 
+#include "io/json_limits.hpp"
+
 namespace nbscope::arrays_tree {
 
 class Tree;
@@ -101,7 +103,7 @@ class Tree {
 // "<path>: ..." (unreadable, too large), "<path>:<line>: ..." (a NUL byte, a limit passed, a JSON
 // syntax error), "<path>: JSON syntax error: number out of range ..." (no line, as nlohmann says it).
 std::shared_ptr<const Tree> read_file(const std::string& path, std::size_t max_bytes);
-// The same from memory; `where` names it.
-std::shared_ptr<const Tree> parse_text(std::string_view text, const std::string& where);
+// The same from memory; `where` names it; more than `max_values` values is refused (a test's lower limit).
+std::shared_ptr<const Tree> parse_text(std::string_view text, const std::string& where, std::size_t max_values = kMaxArraysJsonValues);
 
 }  // namespace nbscope::arrays_tree
