@@ -29,7 +29,7 @@ verify::UserArrays y_lists(const Elements& e, const Grid& g, bool cycle) {
   }
   if (cycle) f.next[0] = static_cast<std::int32_t>(n - 1);
   for (std::size_t iy = 0; iy < heads.size(); ++iy)
-    if (heads[iy] != -1) f.lists.push_back({static_cast<std::int64_t>(iy), heads[iy], {-1, static_cast<std::int32_t>(iy), -1}, ""});
+    if (heads[iy] != -1) f.lists.push_back({static_cast<std::int64_t>(iy), heads[iy], {-1, static_cast<std::int32_t>(iy), -1}, 0});
   verify::UserArrays u;
   u.algorithm = "nbs";
   u.families.push_back(std::move(f));

@@ -305,7 +305,7 @@ Planting planting(const std::string& algorithm, int dim) {
   p.user = file.arrays(algorithm, p.grid, p.e.size(), 0);
   for (std::size_t f = 0; f < p.user.families.size() && p.family < 0; ++f) {
     const verify::ListFamily& fam = p.user.families[f];
-    if (!fam.next_pairs.empty()) continue;  // a dense next array, to plant by index
+    if (fam.sparse) continue;  // a dense next array, to plant by index
     for (std::size_t l = 0; l < fam.lists.size(); ++l) {
       std::vector<ElementId> chain;
       for (std::int32_t k = fam.lists[l].head; k != -1; k = fam.next[static_cast<std::size_t>(k)]) chain.push_back(k);
@@ -382,6 +382,68 @@ TEST(VerifyArraysPlanted, EveryBugInEveryListAlgorithmIsNamedByTheEntryPlanted) 
   }
 }
 
+// ---- sparse next arrays given empty (a row's "x_next": [], a layer's "y_next": []) ----
+
+TEST(VerifyArraysSparse, AnEmptySparseNextArrayLeavesEveryListEntryNotGiven) {
+  // Was a segfault: an empty next_pairs was taken for a dense next array and indexed.
+  for (int dim : {2, 3}) {
+    SCOPED_TRACE(std::to_string(dim) + "D");
+    const Elements e = make_layout(Layout::Dense, 60, dim, 5);
+    json d = own_dump(e, "nbs");
+    json& holder = dim == 2 ? d["rows"][0] : d["layers"][0];
+    const char* next_key = dim == 2 ? "x_next" : "y_next";
+    ASSERT_FALSE(holder[next_key].empty());
+    holder[next_key] = json::array();
+    const Checked c = check(e, d);
+    EXPECT_TRUE(c.has(ProblemKind::NotGiven, std::string(dim == 2 ? "X[" : "Y[") + "")) << c.all();
+    EXPECT_EQ(c.first().kind, ProblemKind::NotGiven) << c.all();
+    if (dim == 3) {  // a layer's rows too
+      json r = own_dump(e, "nbs");
+      ASSERT_FALSE(r["layers"][0]["rows"].empty());
+      r["layers"][0]["rows"][0]["x_next"] = json::array();
+      EXPECT_TRUE(check(e, r).has(ProblemKind::NotGiven, "X[")) << check(e, r).all();
+    }
+  }
+  // Built by hand, no reader: a sparse family with heads and no next entries at all.
+  const Elements e = testdata::book_nine();
+  const Grid grid = make_grid(e, testdata::book_grid());
+  verify::UserArrays u;
+  u.algorithm = "nbs";
+  verify::ListFamily f;
+  f.sparse = true;
+  f.heads_name = "x_heads";
+  f.next_name = "X";
+  f.heads_shape = {grid.n[0]};
+  f.scope = {-1, 6, -1};
+  f.lists.push_back({4, 3, {4, -1, -1}, 0});
+  f.heads_path = "$.rows[0].x_heads";
+  f.heads_form = verify::HeadsForm::Pairs;
+  f.next_path = "$.rows[0].x_next";
+  u.families.push_back(std::move(f));
+  const verify::ArraysVerdict v = verify::verify_arrays(e, grid, u, false);
+  ASSERT_GE(v.problem_count, 1);
+  EXPECT_EQ(v.problems[0].text, "row 6: x_heads[4] -> 3, but X[3] is not given in $.rows[0].x_next");
+}
+
+TEST(VerifyArraysSparse, ADenseNextArrayShorterThanNGivesNoEntryPastItsEnd) {
+  const Elements e = testdata::book_nine();
+  const Grid grid = make_grid(e, testdata::book_grid());
+  verify::UserArrays u;
+  u.algorithm = "screen";
+  verify::ListFamily f;
+  f.heads_name = "C";
+  f.next_name = "E";
+  f.heads_shape = {grid.n[0], grid.n[1]};
+  f.lists.push_back({46, 3, {4, 6, -1}, 0});
+  f.heads_path = "$.heads";
+  f.heads_form = verify::HeadsForm::Cells;
+  f.next_path = "$.next";
+  u.families.push_back(std::move(f));
+  const verify::ArraysVerdict v = verify::verify_arrays(e, grid, u, false);
+  ASSERT_GE(v.problem_count, 1);
+  EXPECT_EQ(v.problems[0].kind, ProblemKind::NotGiven);
+}
+
 // ---- base 1: the book's numbering ----
 
 TEST(VerifyArraysBase1, TheBooksArraysReadAsPrintedAndProblemsNamedAsTheBookDoes) {
@@ -430,7 +492,8 @@ TEST(VerifyArraysScale, AMillionElementCycleIsFoundInOneWalk) {
   f.heads_name = "y_heads";
   f.next_name = "Y";
   f.heads_shape = {grid.n[1]};
-  f.lists.push_back({0, static_cast<std::int32_t>(n - 1), {-1, 0, -1}, "$.y_heads[0]"});
+  f.lists.push_back({0, static_cast<std::int32_t>(n - 1), {-1, 0, -1}, 0});
+  f.heads_path = "$.y_heads";
   f.next.resize(static_cast<std::size_t>(n));
   for (std::int64_t k = 1; k < n; ++k) f.next[static_cast<std::size_t>(k)] = static_cast<std::int32_t>(k - 1);
   f.next[0] = static_cast<std::int32_t>(n - 1);  // the last link closes the list on its head
@@ -482,6 +545,18 @@ TEST(VerifyPairs, TheReaderTakesEitherOrderBase1WhiteSpaceAndAHeader) {
   EXPECT_THROW(parse_given_pairs_csv("\n \n", "p.csv", 0), Error);
 }
 
+TEST(VerifyPairs, AByteOrderMarkIsSkippedLikeElementsCsvSkipsIt) {
+  // A header after the mark is still a header, and a pair right after it still a pair on line 1.
+  const auto with_header = parse_given_pairs_csv("\xEF\xBB\xBFi,j\n1,0\n", "p.csv", 0);
+  ASSERT_EQ(with_header.size(), 1u);
+  EXPECT_EQ(with_header[0].i, 1);
+  EXPECT_EQ(with_header[0].line, 2);
+  const auto bare = parse_given_pairs_csv("\xEF\xBB\xBF" "1,0\n", "p.csv", 0);
+  ASSERT_EQ(bare.size(), 1u);
+  EXPECT_EQ(bare[0].line, 1);
+  EXPECT_THROW(parse_given_pairs_csv("\xEF\xBB\xBF\n", "p.csv", 0), Error);
+}
+
 // ---- the arrays reader's bad input: the JSON path of the bad value ----
 
 std::string arrays_error(const json& doc, const Elements& e) {
@@ -491,6 +566,17 @@ std::string arrays_error(const json& doc, const Elements& e) {
     return err.what();
   }
   return "(no error)";
+}
+
+TEST(VerifyArraysInput, TheLowestInt32IsANegativeIndexNotOutside32Bits) {
+  const Elements e = testdata::book_nine();
+  json d = own_dump(e, "screen", testdata::book_grid());
+  d["next"][2] = -2147483648LL;
+  EXPECT_EQ(arrays_error(d, e), "arrays.json: $.next[2]: -2147483648 is a negative index other than -1: elements count from 0, and -1 ends a list");
+  d["next"][2] = -2147483649LL;
+  EXPECT_EQ(arrays_error(d, e), "arrays.json: $.next[2]: -2147483649 is beyond 32 bits (the book's arrays are int32)");
+  d["next"][2] = -5;  // an ordinary wrong entry: a verdict, not bad input
+  EXPECT_TRUE(check(e, d).has(ProblemKind::OutOfRange, "E[2] = -5, but elements are 0..8")) << check(e, d).all();
 }
 
 TEST(VerifyArraysInput, WrongLengthsAndDimensionsAndTypesNameTheirPath) {

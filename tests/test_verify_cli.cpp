@@ -102,6 +102,49 @@ TEST(VerifyCli, Base1NamesEverythingAsTheBookDoes) {
   EXPECT_EQ(verify_arrays("verify_base1_flag", d, " --base 0").exit_code, 2);
 }
 
+TEST(VerifyCli, EmptySparseNextArraysAreAVerdictNotACrash) {
+  // A row's "x_next": [] and a 3D layer's "y_next": [] were a segfault (exit 139) in verify and gui.
+  json d = nine_dump("nbs");
+  d["rows"][0]["x_next"] = json::array();
+  const auto r = verify_arrays("verify_empty_x_next", d);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.out.find("is not given in $.rows[0].x_next"), std::string::npos) << r.out;
+  const std::string gui_dir = scratch_dir("verify_empty_x_next_gui");
+  write_text(gui_dir + "/arrays.json", d.dump());
+  const auto gui = run("gui --input " + testpaths::nine_csv() + " --arrays " + gui_dir + "/arrays.json --frames 1 --screenshot " +
+                           gui_dir + "/x.png",
+                       "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_EQ(gui.exit_code, 1) << gui.err;
+
+  const std::string dir = scratch_dir("verify_empty_y_next_3d");
+  std::string csv = "x,y,z,r\n";
+  for (int k = 0; k < 27; ++k) csv += std::to_string(k % 3) + "," + std::to_string(k / 3 % 3) + "," + std::to_string(k / 9) + ",0.4\n";
+  write_text(dir + "/e.csv", csv);
+  const auto dump = run("dump --input " + dir + "/e.csv --algorithm nbs");
+  ASSERT_EQ(dump.exit_code, 0) << dump.err;
+  json d3 = json::parse(dump.out);
+  d3["layers"][0]["y_next"] = json::array();
+  write_text(dir + "/a.json", d3.dump());
+  const auto r3 = run("verify --input " + dir + "/e.csv --arrays " + dir + "/a.json");
+  EXPECT_EQ(r3.exit_code, 1) << r3.err;
+  EXPECT_NE(r3.out.find("is not given in $.layers[0].y_next"), std::string::npos) << r3.out;
+  d3 = json::parse(dump.out);
+  d3["layers"][0]["rows"][0]["x_next"] = json::array();
+  write_text(dir + "/b.json", d3.dump());
+  const auto rows3 = run("verify --input " + dir + "/e.csv --arrays " + dir + "/b.json");
+  EXPECT_EQ(rows3.exit_code, 1) << rows3.err;
+  EXPECT_NE(rows3.out.find("is not given in $.layers[0].rows[0].x_next"), std::string::npos) << rows3.out;
+}
+
+TEST(VerifyCli, APairsFileWithAByteOrderMarkIsReadLikeOneWithout) {
+  const std::string dir = scratch_dir("verify_pairs_bom");
+  write_text(dir + "/p.csv", "\xEF\xBB\xBFi,j\n1,0\n");
+  const auto r = run("verify --input " + testpaths::nine_csv() + " --pairs " + dir + "/p.csv");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  write_text(dir + "/q.csv", "\xEF\xBB\xBF" "0,1\n");
+  EXPECT_EQ(run("verify --input " + testpaths::nine_csv() + " --pairs " + dir + "/q.csv").exit_code, 0);
+}
+
 TEST(VerifyCli, AMillionElementFileWithACycleIsRefusedAfterOneWalk) {
   // One row of a million elements, every y-list link to the element before, the first back to the last.
   const std::string dir = scratch_dir("verify_million_cycle");

@@ -80,7 +80,7 @@ VerifyArraysInputs take_verify_inputs(Args& args) {
 
 VerifyArraysRun run_verify_arrays(const VerifyArraysInputs& in) {
   VerifyArraysRun run;
-  const ArraysJson file = read_arrays_json(in.arrays_path);
+  ArraysJson file = read_arrays_json(in.arrays_path);
   run.elements = read_elements_csv(in.elements_path);
   const Elements& e = run.elements;
   const std::string& f = in.arrays_path;
@@ -116,6 +116,7 @@ VerifyArraysRun run_verify_arrays(const VerifyArraysInputs& in) {
   }
   if (options.cells || options.origin) check_inside(e, run.grid, f);
   run.user = file.arrays(algorithm, run.grid, e.size(), base);
+  file.doc.reset();  // the document's tree is not needed past here: free it before the walk
   run.verdict = verify::verify_arrays(e, run.grid, run.user, in.exact);
   return run;
 }

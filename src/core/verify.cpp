@@ -30,6 +30,22 @@ std::string file_index(std::int64_t value, int base) {
   return std::to_string(value + base);
 }
 
+std::string list_where(const ListFamily& family, const UserList& l) {
+  const auto index = [](std::int64_t i) { return "[" + std::to_string(i) + "]"; };
+  switch (family.heads_form) {
+    case HeadsForm::Cells: {
+      std::string p = family.heads_path;
+      for (std::int32_t c : l.cell)
+        if (c >= 0) p += index(c);
+      return p;
+    }
+    case HeadsForm::Dense: return family.heads_path + index(l.slot);
+    case HeadsForm::Pairs: return family.heads_path + index(l.entry) + "[1]";
+    case HeadsForm::Leaves: return family.heads_path + index(l.entry) + ".head";
+  }
+  return family.heads_path;
+}
+
 std::string slot_name(const ListFamily& family, std::int64_t slot, int base) {
   std::string out = family.heads_name;
   std::vector<std::int64_t> index(family.heads_shape.size(), 0);
@@ -123,6 +139,10 @@ class Checker {
         entry_(static_cast<std::size_t>(n_), -1) {}
 
   ArraysVerdict run() {
+    // One walked list per list at most: reserved whole, so that a million of them are not copied at the peak.
+    std::size_t lists = 0;
+    for (const ListFamily& f : user_.families) lists += f.lists.size();
+    out_.lists.reserve(lists);
     for (std::size_t f = 0; f < user_.families.size(); ++f) walk_family(static_cast<int>(f));
     if (user_.sort) check_sort(*user_.sort);
     return std::move(out_);
@@ -159,7 +179,7 @@ class Checker {
     return "cell " + cell_name(c, e_.dim, user_.base);
   }
   [[nodiscard]] std::string next_path(const ListFamily& f, ElementId k) const {
-    if (f.next_pairs.empty()) return f.next_path + "[" + std::to_string(k) + "]";
+    if (!f.sparse) return f.next_path + "[" + std::to_string(k) + "]";
     return f.next_path + "[" + std::to_string(entry_[static_cast<std::size_t>(k)]) + "][1]";
   }
 
@@ -175,21 +195,21 @@ class Checker {
       for (int a = 0; a < e_.dim; ++a) outside = outside || l.cell[a] >= g_.n[a];
       if (outside) {
         add({ProblemKind::OutOfRange, pre + slot_name(f, l.slot, user_.base) + " is the list of cell " +
-             cell_name(l.cell, e_.dim, user_.base) + ", outside the grid of " + grid_text(), l.where, {}, {}, fi, static_cast<int>(li)});
+             cell_name(l.cell, e_.dim, user_.base) + ", outside the grid of " + grid_text(), list_where(f, l), {}, {}, fi, static_cast<int>(li)});
       }
       const auto [it, fresh] = list_of_cell.emplace(l.cell, static_cast<int>(li));
       if (!fresh) {
         const UserList& first = f.lists[static_cast<std::size_t>(it->second)];
         add({ProblemKind::TwoLists, pre + slot_name(f, l.slot, user_.base) + " and " + slot_name(f, first.slot, user_.base) +
-             " are both the list of cell " + cell_name(l.cell, e_.dim, user_.base), l.where, {}, {}, fi, static_cast<int>(li)});
+             " are both the list of cell " + cell_name(l.cell, e_.dim, user_.base), list_where(f, l), {}, {}, fi, static_cast<int>(li)});
       }
     }
     touched_.clear();
     cut_.assign(f.lists.size(), false);
     for (std::size_t li = 0; li < f.lists.size(); ++li) walk_list(f, fi, static_cast<int>(li), pre);
     report_dropped(f, fi, pre, list_of_cell);
-    if (f.next_pairs.empty()) {
-      for (std::int64_t k = 0; k < static_cast<std::int64_t>(f.next.size()); ++k) {
+    if (!f.sparse) {
+      for (std::int64_t k = 0; k < std::min(n_, static_cast<std::int64_t>(f.next.size())); ++k) {
         const std::int32_t v = f.next[static_cast<std::size_t>(k)];
         if (owner_[static_cast<std::size_t>(k)] == -1 && v != -1 && !in_range(v)) {
           add({ProblemKind::OutOfRange, pre + f.next_name + "[" + el(static_cast<ElementId>(k)) + "] = " + value(v) +
@@ -203,7 +223,7 @@ class Checker {
 
   // The family's next array into next_ (sparse pairs: their entries, repeats and bad k reported).
   void load_next(const ListFamily& f, int fi, const std::string& pre) {
-    if (f.next_pairs.empty()) return;
+    if (!f.sparse) return;
     for (std::size_t p = 0; p < f.next_pairs.size(); ++p) {
       const auto [k, v] = f.next_pairs[p];
       const auto where = [&] { return f.next_path + "[" + std::to_string(p) + "][0]"; };
@@ -227,7 +247,9 @@ class Checker {
       if (in_range(k)) next_[static_cast<std::size_t>(k)] = kUnset;
   }
   [[nodiscard]] std::int32_t next_of(const ListFamily& f, ElementId k) const {
-    return f.next_pairs.empty() ? f.next[static_cast<std::size_t>(k)] : next_[static_cast<std::size_t>(k)];
+    const auto i = static_cast<std::size_t>(k);
+    if (f.sparse) return next_[i];
+    return i < f.next.size() ? f.next[i] : kUnset;
   }
 
   // "C[4][6] -> 3 -> 1 -> 3": the chain from the head, long ones shortened in the middle.
@@ -256,7 +278,7 @@ class Checker {
     while (k != -1) {
       // The entry that led here, the head or next[prev], named only when a problem needs it.
       const auto from_text = [&] { return prev == -1 ? head() : pre + f.next_name + "[" + el(prev) + "]"; };
-      const auto where_text = [&] { return prev == -1 ? l.where : next_path(f, prev); };
+      const auto where_text = [&] { return prev == -1 ? list_where(f, l) : next_path(f, prev); };
       if (!in_range(k)) {
         add({ProblemKind::OutOfRange, from_text() + " = " + value(k) + ", but " + range_text(), where_text(), {}, {}, fi, li});
         walked.cut = true;
@@ -398,7 +420,7 @@ class Checker {
     const int dim = e_.dim;
     const char* names[3] = {"ix", "iy", "iz"};
     for (int a = 0; a < dim; ++a) {
-      for (std::size_t k = 0; k < s.cell_of[a].size(); ++k) {
+      for (std::size_t k = 0; k < std::min(s.cell_of[a].size(), static_cast<std::size_t>(n_)); ++k) {
         const auto id = static_cast<ElementId>(k);
         if (!cells_.fits(id, a, s.cell_of[a][k]) || s.cell_of[a][k] < 0)
           add({ProblemKind::WrongCell, std::string(names[a]) + "[" + el(id) + "] = " + value(s.cell_of[a][k]) + ", but element " +
@@ -407,7 +429,8 @@ class Checker {
       }
     }
     std::vector<std::int32_t> position(static_cast<std::size_t>(n_), -1);
-    for (std::size_t p = 0; p < s.order.size(); ++p) {
+    // The reader gives keys and order N entries each; shorter keys leave the rest of order unchecked.
+    for (std::size_t p = 0; p < std::min(s.order.size(), s.keys.size()); ++p) {
       const std::int32_t k = s.order[p];
       const std::string where = "$.order[" + std::to_string(p) + "]";
       const std::string at = "order[" + std::to_string(p + static_cast<std::size_t>(user_.base)) + "]";

@@ -23,12 +23,21 @@ namespace nbscope::verify {
 // An index the file gives as 0 where it counts from 1 ("base": 1): neither an element nor -1.
 inline constexpr std::int32_t kZeroInBase1 = std::numeric_limits<std::int32_t>::min();
 
-// One list: where its head sits and the cell its elements must lie in.
+// One list: where its head sits and the cell its elements must lie in. 32 bytes: a million-element
+// file has about as many lists (its JSON path is written by list_where() only for a message).
 struct UserList {
   std::int64_t slot = 0;                  // flat index into the family's heads (its name: heads_name[...])
   std::int32_t head = -1;                 // the first element, -1 for an empty list
   std::array<std::int32_t, 3> cell{-1, -1, -1};  // the cell its elements lie in; -1: an axis it does not fix
-  std::string where;                      // JSON path of the head value, for messages ("$.rows[2].x_heads[0][1]")
+  std::int32_t entry = 0;                 // the index of its entry in the file's heads array (HeadsForm Pairs, Leaves)
+};
+
+// How the file gives a family's heads, for the JSON path of a list's head value.
+enum class HeadsForm : std::uint8_t {
+  Cells,   // heads_path[ix][iy]([iz]), by the list's cell: "$.heads[4][6]"
+  Dense,   // heads_path[slot]: "$.y_heads[3]"
+  Pairs,   // [slot, head] pairs, the head at heads_path[entry][1]: "$.rows[2].x_heads[0][1]"
+  Leaves,  // heads_path[entry].head: "$.leaves[5].head"
 };
 
 // One family of lists sharing a next array: C + E (screen), HEAD + E (tree), y_heads + Y (nbs), the
@@ -38,8 +47,13 @@ struct ListFamily {
   std::string next_name;                  // "E", "Y", "X", "Z"
   std::vector<std::int64_t> heads_shape;  // to name a slot by its indices: C[ix][iy]
   std::vector<UserList> lists;            // in the file's order (the walk's and the report's order)
+  std::string heads_path;                 // JSON path of the heads array ("$.heads", "$.rows[2].x_heads", "$.leaves")
+  HeadsForm heads_form = HeadsForm::Dense;
   // The next array: dense (N entries, `next[k]`), or sparse as the file gives an NBS row's
-  // ([k, next[k]] pairs, k possibly out of range); one of the two is empty.
+  // ([k, next[k]] pairs, k possibly out of range; none at all is legal). `sparse` says which: an
+  // empty `next_pairs` is still a sparse family whose entries are all not given. A dense array
+  // shorter than N (the reader refuses one) gives no entry past its end.
+  bool sparse = false;
   std::vector<std::int32_t> next;
   std::vector<std::array<std::int32_t, 2>> next_pairs;
   std::string next_path;                  // JSON path of the next array ("$.next", "$.rows[2].x_next"), for messages
@@ -157,5 +171,7 @@ std::string cell_name(const std::array<std::int32_t, 3>& cell, int dim, int base
 std::string scope_prefix(const ListFamily& family, int base);
 // An index as the file wrote it: "-1", kZeroInBase1 as "0", else value + base.
 std::string file_index(std::int64_t value, int base);
+// The JSON path of list `l`'s head value in `family`: "$.rows[2].x_heads[0][1]".
+std::string list_where(const ListFamily& family, const UserList& l);
 
 }  // namespace nbscope::verify

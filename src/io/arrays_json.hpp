@@ -2,19 +2,21 @@
 // (io/dump_json.hpp, README "Arrays as JSON"), read for `nbscope verify --arrays`.
 //
 // Read in two steps, because the shape of the heads arrays depends on the grid, and the grid may
-// come from the flags, from the file's own keys or from the elements: read_arrays_json() parses the
-// document and its header keys; ArraysJson::arrays() then builds the families of lists for a grid
+// come from the flags, from the file's own keys or from the elements: read_arrays_json() streams the
+// document into a compact tree (io/arrays_json_tree.hpp: 8 bytes a value, the limits checked as it
+// reads) and checks its header keys; ArraysJson::arrays() then builds the families of lists for a grid
 // and N elements, refusing wrong shapes. Every error names the file and the JSON path of the bad
 // value: "arrays.json: $.rows[2].x_heads[0]: ...". Keys a dump has but verify does not need (pairs,
 // own_bytes, bytes, leaves' bounds) are ignored.
 #pragma once
 #include <cstdint>
-#include <nlohmann/json.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "core/grid.hpp"
 #include "core/verify.hpp"
+#include "io/arrays_json_tree.hpp"
 
 namespace nbscope {
 
@@ -37,10 +39,11 @@ class ArraysJson {
   // a cell or row outside the grid, a number that is not an int32.
   [[nodiscard]] verify::UserArrays arrays(const std::string& algorithm, const Grid& grid, std::int64_t n, int base) const;
 
-  nlohmann::json doc;
+  // The document as read (io/arrays_json_tree.hpp): reset it once arrays() has built what verify needs.
+  std::shared_ptr<const arrays_tree::Tree> doc;
 };
 
-// Parses `path` and checks its header keys' types and values (algorithm one of screen, nbs, tree,
+// Reads `path` as it streams (never the whole text at once) and checks its header keys' types and values (algorithm one of screen, nbs, tree,
 // sort; dim 2 or 3; base 0 or 1; elements >= 0; cell_size > 0; origin `dim` numbers; nx, ny, nz >= 1).
 // Throws Error("<path>:<line>: JSON syntax error ...") or Error("<path>: <json path>: what").
 ArraysJson read_arrays_json(const std::string& path);

@@ -21,11 +21,13 @@ bool whole(std::string_view f, std::int64_t& out) {
 }  // namespace
 
 std::vector<verify::GivenPair> parse_given_pairs_csv(const std::string& text, const std::string& where, int base, std::size_t max_pairs) {
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw Error(where + ": empty file (a header `i,j` alone is no pairs)");
+  // Spreadsheets and some editors write a UTF-8 byte order mark: skipped, as ELEMENTS.csv skips it.
+  const std::size_t bom = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
+  if (text.find_first_not_of(" \t\r\n", bom) == std::string::npos) throw Error(where + ": empty file (a header `i,j` alone is no pairs)");
   std::vector<verify::GivenPair> out;
   std::int64_t line_no = 0;
   bool first_row = true;
-  std::size_t pos = 0;
+  std::size_t pos = bom;
   while (pos <= text.size()) {
     const std::size_t end = std::min(text.find('\n', pos), text.size());
     const std::string_view raw = std::string_view(text).substr(pos, end - pos);

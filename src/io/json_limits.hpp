@@ -1,6 +1,7 @@
-// nbscope io: limits every JSON reader (scene files, ARRAYS.json) applies before building a tree,
-// so that hostile nesting or keys cost a scan of what was read and nothing more, and the text of
-// nlohmann-json's syntax errors made fit for one short error line.
+// nbscope io: limits every JSON reader applies (scene files before building a tree, by one scan;
+// ARRAYS.json as it streams, io/arrays_json_tree.hpp), so that hostile nesting or keys cost a scan
+// of what was read and nothing more, and the text of nlohmann-json's syntax errors made fit for one
+// short error line.
 #pragma once
 #include <cstddef>
 #include <string>

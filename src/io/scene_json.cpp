@@ -154,7 +154,7 @@ class ObjectReader {
  public:
   ObjectReader(const LocatedJson& doc, const json& object, Path path, std::string what)
       : doc_(doc), object_(object), path_(std::move(path)) {
-    if (!object_.is_object()) doc_.fail(path_, "must be " + what + " (a JSON object), got " + type_of(object) + " " + show(object));
+    if (!object_.is_object()) doc_.fail(path_, "must be " + what + " (a JSON object), got " + described(object));
   }
   [[nodiscard]] const LocatedJson& doc() const { return doc_; }
   [[nodiscard]] const Path& path() const { return path_; }
