@@ -193,10 +193,32 @@ const BadScene kBadScenes[] = {
     {"scaled_beyond_shape_size", "{\"generators\": [{\"kind\": \"random_box\", \"count\": 5, \"min\": [0, 0], \"max\": [9, 9],\n"
      "  \"radius\": [1, 10000], \"scale\": [1, 10000]}]}",
      "2: generators[0].scale: scales a shape beyond 10000 m"},
+    // Radii Box2D's float cannot hold (FLT_MIN is 1.18e-38; a dynamic circle's float mass
+    // density * pi * r^2 must reach it too, or its inverse is infinite).
+    {"radius_zero_in_float", "{\"bodies\": [{\"shape\": \"circle\",\n \"radius\": 1e-300}]}",
+     "2: bodies[0].radius: 1e-300 m is 0 in Box2D's float: at least 1.18e-38 m"},
+    {"radius_denormal_in_float", "{\"bodies\": [{\"type\": \"static\", \"shape\": \"circle\", \"radius\": 1e-40}]}",
+     "1: bodies[0].radius: 1e-40 m is a denormal in Box2D's float: at least 1.18e-38 m"},
+    {"radius_of_denormal_mass", "{\"bodies\": [{\"shape\": \"circle\",\n \"radius\": 1e-20, \"density\": 4}]}",
+     "2: bodies[0].radius: 1e-20 m at density 4 makes a mass of 1.26e-39 kg in Box2D's float, whose inverse is infinite (its "
+     "first step would turn the body NaN): at least 3.06e-20 m"},
+    {"fixture_radius_of_denormal_mass", "{\"bodies\": [{\"fixtures\": [{\"shape\": \"circle\", \"radius\": 1},\n {\"shape\": \"circle\", \"radius\": 1e-21}]}]}",
+     "2: bodies[0].fixtures[1].radius: 1e-21 m at density 1 makes a mass of 3.14e-42 kg in Box2D's float, whose inverse is infinite (its "
+     "first step would turn the body NaN): at least 6.12e-20 m"},
+    {"drawn_radius_of_denormal_mass", "{\"generators\": [{\"kind\": \"random_box\", \"count\": 5, \"min\": [0, 0], \"max\": [9, 9],\n"
+     "  \"radius\": [1e-25, 1]}]}",
+     "2: generators[0].radius[0]: 1e-25 m at density 1 makes a mass of 0 kg in Box2D's float, whose inverse is infinite (its "
+     "first step would turn the body NaN): at least 6.12e-20 m"},
 };
 
 INSTANTIATE_TEST_SUITE_P(All, SceneBadInput, ::testing::ValuesIn(kBadScenes),
                          [](const ::testing::TestParamInfo<BadScene>& info) { return std::string(info.param.name); });
+
+// A static body has no mass in Box2D: only its radius must be a float.
+TEST(Scene, AStaticCircleTooLightToBeDynamicIsRead) {
+  const Scene s = parse_scene_json("{\"bodies\": [{\"type\": \"static\", \"shape\": \"circle\", \"radius\": 1e-20}]}", "s.json");
+  EXPECT_EQ(s.bodies[0].fixtures[0].radius, 1e-20);
+}
 
 TEST(Scene, UnreadableFile) {
   try {

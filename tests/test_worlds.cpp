@@ -120,10 +120,83 @@ TEST(Worlds, FlungBodiesRunAndASlowFrameSaysSoOnce) {
   EXPECT_EQ(calm.err, "");
 }
 
-TEST(Worlds, ABodyThatTurnsNonFiniteStopsTheRunNamingIt) {
+// A circle of radius 1e-20 m: its float mass (pi 1e-40 kg) is a denormal whose inverse is
+// infinite, and Box2D's first step would turn it NaN; 1e-300 m is 0 in float, an element of
+// radius 0. Both are refused when the scene is read, naming the radius.
+TEST(Worlds, ARadiusBox2DsFloatCannotHoldIsRefusedWhenTheSceneIsRead) {
   const auto r = run("headless --scene '" + world("nan") + "' --frames 5");
   expect_one_error_line(r);
-  EXPECT_NE(r.err.find("nan.json: frame 1: body 0 (bodies[0]) has a non-finite position after the step"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("nan.json:4: bodies[0].radius: 1e-20 m at density 1 makes a mass of "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("whose inverse is infinite"), std::string::npos) << r.err;
+
+  const std::string dir = scratch_dir("worlds_tiny_radius");
+  write_text(dir + "/tiny.json", "{\"bodies\": [{\"shape\": \"circle\", \"radius\": 1},\n {\"shape\": \"circle\", \"radius\": 1e-300}]}");
+  const auto tiny = run("headless --scene '" + dir + "/tiny.json' --frames 2");
+  expect_one_error_line(tiny);
+  EXPECT_NE(tiny.err.find("tiny.json:2: bodies[1].radius: 1e-300 m is 0 in Box2D's float: at least 1.18e-38 m"), std::string::npos) << tiny.err;
+  // A generator drawing radii that small: named by the body it makes.
+  write_text(dir + "/drawn.json", "{\"generators\": [{\"kind\": \"random_box\", \"count\": 5, \"min\": [0, 0], \"max\": [9, 9],\n"
+                                  " \"scale\": [1e-300, 1e-299]}]}");
+  const auto drawn = run("headless --scene '" + dir + "/drawn.json' --frames 2");
+  expect_one_error_line(drawn);
+  EXPECT_NE(drawn.err.find("drawn.json:1: generators[0].body: body #0: radius "), std::string::npos) << drawn.err;
+  // A circle of 1e-4 m, 1 m from its body's origin: its inertia about the centre of mass,
+  // m (r^2 / 2 + 1) - m 1, is 0 in float, and b2Body::ResetMassData's assertion aborted (signal 6).
+  write_text(dir + "/inertia.json", "{\"bodies\": [{\"fixtures\": [{\"shape\": \"circle\", \"radius\": 1e-4, \"offset\": [1, 0]}]}]}");
+  const auto inertia = run("headless --scene '" + dir + "/inertia.json' --frames 2");
+  expect_one_error_line(inertia);
+  EXPECT_NE(inertia.err.find("inertia.json:1: bodies[0]: its rotational inertia about its centre of mass is 0 in Box2D's float"), std::string::npos)
+      << inertia.err;
+}
+
+// The contacts Box2D would make are held to the memory this process can get: past it the world
+// is refused before Box2D steps, naming both figures, however high --max-contacts is set.
+TEST(Worlds, ContactsBeyondTheMemoryThisProcessCanGetAreRefusedNamingBothFigures) {
+  // 450M contacts, ~765 GB: beyond any machine's memory.
+  const auto r = run("headless --scene '" + world("one-point-30k") + "' --frames 2 --max-contacts 1000000000");
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("frame 1: Box2D would create about " + grouped(one_point_contacts(30000)) + " contacts (765.0 GB)"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("; this process can get about "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--max-contacts cannot raise that)"), std::string::npos) << r.err;
+
+  // Under `ulimit -v` (RLIMIT_AS) of 1.5 GB, 3,000 bodies on one point (4.5M contacts, 7.6 GB):
+  // without the rule Box2D ran out of memory inside its step, a segfault after seconds.
+  const auto limited = run("headless --scene '" + world("one-point-3k") + "' --frames 2 --max-contacts 1000000000", "ulimit -v 1500000;");
+  expect_one_error_line(limited);
+  EXPECT_NE(limited.err.find("frame 1: Box2D would create about " + grouped(one_point_contacts(3000)) + " contacts (7.6 GB)"), std::string::npos)
+      << limited.err;
+  EXPECT_NE(limited.err.find("for them (RLIMIT_AS; --max-contacts cannot raise that)"), std::string::npos) << limited.err;
+}
+
+// An emitter pouring 10 circles a frame onto one point without gravity: Box2D never parts them,
+// so N bodies make N(N-1)/2 contacts. Frame f (emitting at time (f-1)/60, one body at time 0)
+// has 10 (f - 1) + 1 bodies; the growth is measured from the first count of 64 bodies or more
+// (71, frame 8) to the first of twice that (151, frame 16): exponent 2. At that growth the 2,849
+// still to come make ~4.6M contacts: refused at frame 16, not at frame 143 when the pile itself
+// passed 1,000,000 (after 44 s).
+TEST(Worlds, AnEmitterPilingBodiesOnOnePointIsRefusedOnceItsGrowthShows) {
+  const std::string dir = scratch_dir("worlds_pour");
+  const std::string scene = dir + "/pour.json";
+  write_text(scene, "{\"gravity\": [0, 0], \"generators\": [{\"kind\": \"emitter\", \"count\": 3000, \"rate\": 600, \"position\": [0, 0],\n"
+                    " \"body\": {\"type\": \"dynamic\", \"shape\": \"circle\", \"radius\": 0.5}}]}");
+  const auto r = run("headless --scene '" + scene + "' --frames 400");
+  expect_one_error_line(r);
+  const long long before = 10 * (8 - 1) + 1, now = 10 * (16 - 1) + 1;
+  EXPECT_NE(r.err.find("pour.json: frame 16: the emitters' bodies pile up: " + grouped(now) + " bodies make about " +
+                       grouped(one_point_contacts(now)) + " contacts, where " + grouped(before) + " made " + grouped(one_point_contacts(before)) +
+                       " (contacts growing as bodies^2.0); with the " + grouped(3000 - now) + " still to come, about "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find(kRaiseIt), std::string::npos) << r.err;
+
+  // Poured the same way onto a floor under gravity, they fall apart and the pile grows about
+  // linearly: it runs.
+  const std::string floor = dir + "/floor.json";
+  write_text(floor, "{\"bodies\": [{\"type\": \"static\", \"shape\": \"box\", \"half_extents\": [20, 0.5], \"position\": [0, -0.5]}],\n"
+                    " \"generators\": [{\"kind\": \"emitter\", \"count\": 3000, \"rate\": 600, \"position\": [0, 30]}]}");
+  const auto falls = run("headless --scene '" + floor + "' --frames 40 --quiet");
+  EXPECT_EQ(falls.exit_code, 0) << falls.err;
 }
 
 TEST(Worlds, ABodyLeavingTheWorldStopsTheRunNamingItAndTheFrame) {

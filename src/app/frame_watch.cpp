@@ -40,6 +40,7 @@ void FrameWatch::arm(std::int64_t frame, Describe describe) {
     armed_ = true;
     frame_ = frame;
     started_ = std::chrono::steady_clock::now();
+    first_phase_ended_.reset();
     ++generation_;
     if (!thread_.joinable()) thread_ = std::thread([this] { watch(); });
   }
@@ -48,18 +49,48 @@ void FrameWatch::arm(std::int64_t frame, Describe describe) {
 
 void FrameWatch::next_phase(std::int64_t frame, Describe describe) {
   const std::lock_guard lock(mutex_);
-  if (armed_ && frame_ == frame) describe_ = std::move(describe);
+  if (!armed_ || frame_ != frame) return;
+  if (!first_phase_ended_) {
+    first_phase_ended_ = std::chrono::steady_clock::now();
+    first_describe_ = std::move(describe_);
+  }
+  describe_ = std::move(describe);
 }
 
 void FrameWatch::disarm() {
   const std::lock_guard lock(mutex_);
+  if (armed_ && !noted_) add_recent(std::chrono::steady_clock::now());
   armed_ = false;
+  first_describe_ = nullptr;
 }
 
 void FrameWatch::reset() {
   const std::lock_guard lock(mutex_);
   armed_ = false;
   noted_ = false;
+  recent_.clear();
+}
+
+void FrameWatch::add_recent(std::chrono::steady_clock::time_point now) {
+  const auto seconds = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
+  const auto first_end = first_phase_ended_.value_or(now);
+  if (!recent_.empty() && recent_.back().frame + 1 != frame_) recent_.clear();  // consecutive frames only
+  recent_.push_back({frame_, seconds(started_, first_end), seconds(first_end, now)});
+  if (recent_.size() > static_cast<std::size_t>(kSlowWindow)) recent_.pop_front();
+  double first = 0, later = 0;
+  for (const Spent& s : recent_) {
+    first += s.first_phase;
+    later += s.later;
+  }
+  if (recent_.size() < 2 || first + later <= threshold_) return;
+  // The frames are done: what they read is not changing.
+  const Describe& what = first >= later && first_describe_ ? first_describe_ : describe_;
+  const std::string text = what ? what() : std::string();
+  std::fprintf(stderr, "nbscope: note: frames %lld to %lld took %.*f s together%s%s%s\n", static_cast<long long>(recent_.front().frame),
+               static_cast<long long>(recent_.back().frame), first + later < 1 ? 2 : 1, first + later, text.empty() ? "" : " (", text.c_str(),
+               text.empty() ? "" : ")");
+  std::fflush(stderr);
+  noted_ = true;
 }
 
 bool FrameWatch::noted() const {

@@ -5,7 +5,9 @@
 // generators | the scene.
 #include "io/scene_json.hpp"
 
+#include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -252,11 +254,31 @@ void check_polygon(const LocatedJson& doc, const std::vector<Vec2>& v, const Pat
   if (area2 / 2 < kMinPolygonFeature * kMinPolygonFeature) doc.fail(path, "degenerate polygon: area " + fmt(area2 / 2));
 }
 
+// A circle radius (at `path`) Box2D's float holds: not 0 or a denormal there, and with a positive
+// `density` (a dynamic body's; Box2D gives others no mass) a mass (Box2D's density * pi * r * r, in float) that is not either: a denormal mass
+// has an infinite inverse, and Box2D's first step turns the body NaN. The rest of what float
+// makes of a body (several fixtures, inertia) is physics' check when the world is built.
+void check_radius_in_float(const LocatedJson& doc, const Path& path, double radius, double density) {
+  const auto short_number = [](double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", v);
+    return std::string(buf);
+  };
+  const float r = static_cast<float>(radius);
+  if (!(r >= FLT_MIN))
+    doc.fail(path, fmt(radius) + " m is " + (r == 0 ? std::string("0") : "a denormal") + " in Box2D's float: at least " + short_number(FLT_MIN) + " m");
+  const float mass = static_cast<float>(density) * 3.14159265359f * r * r;  // b2CircleShape::ComputeMass
+  if (density > 0 && !(mass >= FLT_MIN))
+    doc.fail(path, fmt(radius) + " m at density " + fmt(density) + " makes a mass of " + short_number(mass) +
+                       " kg in Box2D's float, whose inverse is infinite (its first step would turn the body NaN): at least " +
+                       short_number(std::sqrt(FLT_MIN / (std::numbers::pi * density)) * 1.001) + " m");
+}
+
 constexpr const char* kShapeKeys[] = {"shape", "radius", "half_extents", "vertices", "offset", "density", "friction", "restitution"};
 
-// The shape fields of `r` (a body with one inline shape, or one element of "fixtures").
+// The shape fields of `r` (a body with one inline shape, or one element of "fixtures") of a body of `type`.
 // In a generator's template a circle's radius may be left out (0.5; random_box may draw it).
-ShapeSpec read_shape(ObjectReader& r, bool angle_is_shapes, bool is_template) {
+ShapeSpec read_shape(ObjectReader& r, bool angle_is_shapes, bool is_template, BodyType type) {
   const LocatedJson& doc = r.doc();
   ShapeSpec s;
   s.where = doc.locate(r.path());
@@ -297,6 +319,7 @@ ShapeSpec read_shape(ObjectReader& r, bool angle_is_shapes, bool is_template) {
   s.density = r.number_in("density", 1, 0, 1e6, "from 0 to 1e6");
   s.friction = r.number_in("friction", 0.6, 0, 100, "from 0 to 100");
   s.restitution = r.number_in("restitution", 0, 0, 1, "from 0 to 1");
+  if (kind == "circle" && r.has("radius")) check_radius_in_float(doc, r.at("radius"), s.radius, type == BodyType::Dynamic ? s.density : 0);
   return s;
 }
 
@@ -331,7 +354,7 @@ BodySpec read_body(const LocatedJson& doc, const json& v, const Path& path, bool
     if (f.size() > 64) doc.fail(fp, "at most 64 fixtures per body, got " + std::to_string(f.size()));
     for (std::size_t i = 0; i < f.size(); ++i) {
       ObjectReader fr(doc, f[i], LocatedJson::element(fp, i), "a shape");
-      b.fixtures.push_back(read_shape(fr, true, is_template));
+      b.fixtures.push_back(read_shape(fr, true, is_template, b.type));
       fr.finish();
     }
   } else {
@@ -342,7 +365,7 @@ BodySpec read_body(const LocatedJson& doc, const json& v, const Path& path, bool
       for (const char* k : kShapeKeys)
         if (r.has(k)) doc.fail(r.at(k), "missing \"shape\" next to it");
     } else {
-      b.fixtures.push_back(read_shape(r, false, is_template));
+      b.fixtures.push_back(read_shape(r, false, is_template, b.type));
     }
   }
   r.finish();
@@ -413,6 +436,8 @@ GeneratorSpec read_generator(const LocatedJson& doc, const json& v, const Path& 
       if (g.body.fixtures.size() != 1 || g.body.fixtures[0].kind != ShapeKind::Circle)
         doc.fail(r.at("radius"), "radius applies to circle templates; use scale for other shapes");
       g.radius_range = read_range(doc, r.get("radius"), r.at("radius"), 0, kMaxShapeSize, true);
+      check_radius_in_float(doc, LocatedJson::element(r.at("radius"), 0), (*g.radius_range)[0],
+                            g.body.type == BodyType::Dynamic ? g.body.fixtures[0].density : 0);
     }
     if (r.has("scale")) g.scale_range = read_range(doc, r.get("scale"), r.at("scale"), 0, 1e4, true);
     if (r.has("speed")) g.speed_range = read_range(doc, r.get("speed"), r.at("speed"), 0, 1e5, false);

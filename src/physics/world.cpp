@@ -9,12 +9,12 @@
 #include <typeinfo>
 
 #include "core/error.hpp"
+#include "physics/box2d_memory.hpp"
+#include "physics/fixture_shape.hpp"
 
 namespace nbscope {
 
 namespace {
-
-b2Vec2 to_b2(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
 
 // Box2D 2.4.1 has no const GetUserData; reading it changes nothing.
 ElementId element_of(const b2Fixture* f) {
@@ -47,63 +47,12 @@ inline void world_point(const b2Transform& xf, b2Vec2 p, double& x, double& y) {
   y = static_cast<double>(xf.p.y) + (s * px + c * py);
 }
 
-
-// A fixture's Box2D shape built from its spec, with the centre (body frame) and radius of its
-// bounding circle, the element the detectors see: a polygon's includes Box2D's skin.
-struct FixtureShape {
-  b2CircleShape circle;
-  b2PolygonShape polygon;
-  const b2Shape* shape = nullptr;
-  b2Vec2 centre{0, 0};
-  double radius = 0;
-
-  explicit FixtureShape(const ShapeSpec& s) {
-    if (s.kind == ShapeKind::Circle) {
-      circle.m_p = to_b2(s.offset);
-      circle.m_radius = static_cast<float>(s.radius);
-      shape = &circle;
-      centre = circle.m_p;
-      radius = circle.m_radius;
-      return;
-    }
-    if (s.kind == ShapeKind::Box) {
-      polygon.SetAsBox(static_cast<float>(s.half_extents.x), static_cast<float>(s.half_extents.y), to_b2(s.offset),
-                       static_cast<float>(s.angle));
-    } else {
-      b2Vec2 points[b2_maxPolygonVertices];
-      for (std::size_t i = 0; i < s.vertices.size(); ++i) points[i] = to_b2(s.vertices[i]);
-      polygon.Set(points, static_cast<int32>(s.vertices.size()));
-      if (polygon.m_count != static_cast<int32>(s.vertices.size()))
-        throw Error(s.where + "Box2D keeps only " + std::to_string(polygon.m_count) + " of the " +
-                    std::to_string(s.vertices.size()) + " polygon vertices (points too close or nearly collinear)");
-    }
-    shape = &polygon;
-    centre = polygon.m_centroid;
-    double far = 0;
-    for (int32 i = 0; i < polygon.m_count; ++i) {
-      const double dx = static_cast<double>(polygon.m_vertices[i].x) - centre.x;
-      const double dy = static_cast<double>(polygon.m_vertices[i].y) - centre.y;
-      far = std::max(far, std::sqrt(dx * dx + dy * dy));
-    }
-    radius = far + static_cast<double>(polygon.m_radius) + kPolygonCircleMargin;
-  }
-  FixtureShape(const FixtureShape&) = delete;
-  FixtureShape& operator=(const FixtureShape&) = delete;
-};
 }  // namespace
 
 // ---- building ------------------------------------------------------------------------------
 
 PhysicsWorld::PhysicsWorld(const Scene& scene) : scene_(scene) {
-  world_ = std::make_unique<b2World>(to_b2(scene_.gravity));
-  world_->SetAllowSleeping(false);  // every body moves through the broadphase every frame (STACK.md "Ground truth")
-  world_->SetContinuousPhysics(scene_.continuous);
-  b2BodyDef ground_def;
-  ground_ = world_->CreateBody(&ground_def);
-  elements_.dim = 2;
-  max_contacts_ = scene_.max_contacts;
   const std::vector<BodySpec> initial = initial_bodies(scene_);
-  bodies_.reserve(initial.size());
   // initial_bodies() lists the scene's bodies, then each generator's (but emitters') in file order.
   std::vector<BodyOrigin> origins;
   origins.reserve(initial.size());
@@ -111,6 +60,23 @@ PhysicsWorld::PhysicsWorld(const Scene& scene) : scene_(scene) {
   for (std::size_t g = 0; g < scene_.generators.size(); ++g)
     if (scene_.generators[g].kind != GeneratorKind::Emitter)
       for (std::int64_t k = 0; k < scene_.generators[g].count; ++k) origins.push_back({static_cast<std::int32_t>(g), k});
+  // Bodies Box2D's float cannot hold are refused before any is made, each named as the scene makes it.
+  for (std::size_t b = 0; b < initial.size(); ++b)
+    if (const std::string trouble = box2d_float_trouble(initial[b]); !trouble.empty())
+      throw Error(initial[b].where + (b < origins.size() && origins[b].generator >= 0 ? "body #" + std::to_string(origins[b].ordinal) + ": " : "") + trouble);
+  for (const GeneratorSpec& g : scene_.generators)
+    if (g.kind == GeneratorKind::Emitter && g.count > 0)
+      if (const std::string trouble = box2d_float_trouble(g.body); !trouble.empty()) throw Error(g.body.where + "every body it pours: " + trouble);
+
+  world_ = std::make_unique<b2World>(to_b2(scene_.gravity));
+  b2BodyDef ground_def;
+  ground_ = world_->CreateBody(&ground_def);
+  const Box2dAllocScope alloc_scope(world_.get(), 1, (scene_.path.empty() ? "" : scene_.path + ": ") + "building the world: ");
+  world_->SetAllowSleeping(false);  // every body moves through the broadphase every frame (STACK.md "Ground truth")
+  world_->SetContinuousPhysics(scene_.continuous);
+  elements_.dim = 2;
+  max_contacts_ = scene_.max_contacts;
+  bodies_.reserve(initial.size());
   for (std::size_t b = 0; b < initial.size(); ++b) add_body(initial[b], b < origins.size() ? origins[b] : BodyOrigin{-2, 0});
   for (std::size_t g = 0; g < scene_.generators.size(); ++g)
     if (scene_.generators[g].kind == GeneratorKind::Emitter) {
@@ -183,6 +149,7 @@ void PhysicsWorld::add_body(const BodySpec& spec, BodyOrigin origin) {
 
 void PhysicsWorld::step() {
   if (!broken_.empty()) throw Error(broken_);
+  const Box2dAllocScope alloc_scope(world_.get(), 1, frame_prefix());  // the ground body is not the scene's
   for (std::size_t e = 0; e < emitters_.size(); ++e) {
     pending_.clear();
     emitters_[e].emit_until(time_, pending_);

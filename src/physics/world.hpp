@@ -19,6 +19,7 @@
 #include "physics/aabb_pairs.hpp"
 #include "physics/box2d_frame.hpp"
 #include "physics/generators.hpp"
+#include "physics/memory_budget.hpp"
 #include "physics/scene.hpp"
 #include "physics/shapes.hpp"
 #include "physics/world_limits.hpp"
@@ -45,7 +46,10 @@ class PhysicsWorld final : public Box2dFrame {
   // Throws Error "path: frame K: ..." (physics/world_limits.hpp), leaving the last frame as it was
   // (elements, shapes, contacts) and every later step() refusing with the same message:
   //   before Box2D steps, when the contacts it would create are estimated past max_contacts (the
-  //   scene's, or set_max_contacts), and after any sub-step that made more than that;
+  //   scene's, or set_max_contacts) or past what the memory this process can get holds
+  //   (physics/memory_budget.hpp; ~bytes_per_contact() each), and after any sub-step that made
+  //   more than either;
+  //   and, with one line and exit 2 (physics/box2d_memory.hpp), when an allocation inside Box2D fails;
   //   after the step, when a body's position, angle or velocity is not finite, or a body is beyond
   //   kMaxWorldCoordinate.
   void step();
@@ -123,12 +127,22 @@ class PhysicsWorld final : public Box2dFrame {
     std::int64_t ordinal = 0;
   };
   void add_body(const BodySpec& spec, BodyOrigin origin);
+  // "scene.json: frame 3: ", for the frame step() makes.
+  [[nodiscard]] std::string frame_prefix() const;
   // The limits of step(), each throwing (and remembering) its Error.
   void refuse(const std::string& what);
   void check_contact_estimate();
+  // Reads the memory budget again and derives memory_contact_limit_ from it.
+  void update_memory_limit();
+  // "this process can get about 3.1 GB for them (MemAvailable; ...)": the memory limit's words.
+  [[nodiscard]] std::string memory_text() const;
   // True when the contacts may jump this frame: new bodies, Box2D's count past a quarter of the
   // limit, or bodies fast enough to stretch their fat AABBs over many others.
   [[nodiscard]] bool estimate_needed() const;
+  // The emitters' pile: refused early when the contacts grow about as the square of the bodies
+  // (bodies poured onto each other that Box2D cannot part) and the bodies still to come would
+  // take them past the limit. `contacts` is this frame's estimate.
+  void check_emitter_growth(std::int64_t contacts);
   void check_contact_count(int sub_step);
   void check_bodies();
   void update_geometry();
@@ -157,8 +171,13 @@ class PhysicsWorld final : public Box2dFrame {
   std::vector<b2Body*> bodies_;
   std::vector<BodyOrigin> origins_;      // per body
   std::int64_t max_contacts_ = kDefaultMaxContacts;
-  std::string broken_;
-  bool estimate_due_ = true;             // bodies were added since the last estimate                   // the Error that stopped the world ("" while it runs)
+  // The contacts the memory this process can get holds (physics/memory_budget.hpp), as of the last
+  // estimate: the limit below max_contacts_ that no flag raises.
+  std::int64_t memory_contact_limit_ = kMaxMaxContacts;
+  MemoryBudget memory_;                  // the budget it was derived from
+  std::int64_t growth_bodies_ = 0, growth_contacts_ = 0;  // check_emitter_growth()'s last checkpoint
+  std::string broken_;                   // the Error that stopped the world ("" while it runs)
+  bool estimate_due_ = true;             // bodies were added since the last estimate
   std::atomic<std::int64_t> estimated_contacts_{0};
   std::atomic<std::int64_t> bodies_now_{0};
   std::vector<b2Fixture*> fixtures_;     // indexed by element id

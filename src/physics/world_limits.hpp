@@ -7,7 +7,7 @@
 // 30,000 circles in a 10 x 10 m box ask for ~23M contacts, and Box2D dies inside its allocator
 // rather than say so. So before a frame's step the pairs Box2D would make contacts for are counted
 // (exactly, without listing them: count_overlapping_boxes) and the step is refused past
-// `max_contacts`. Crowding also costs time: b2ContactManager::AddPair walks a body's whole contact
+// `max_contacts`, or past what the memory this process can get holds (physics/memory_budget.hpp). Crowding also costs time: b2ContactManager::AddPair walks a body's whole contact
 // list for every new pair, so a frame costs about the sum over bodies of (contacts per body)^2
 // list steps (2,000 circles in that box: 100k contacts, 1.6 s; 4,000: 405k, 50 s); the slow-frame
 // note (app/frame_watch.hpp) says so.
