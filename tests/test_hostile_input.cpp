@@ -186,6 +186,18 @@ TEST(HostileStream, AnEndlessPipeOfRowsStopsAtTheFirstRowPastTheElementLimit) {
   EXPECT_LT(written, 1001 * 8 + kReadAhead);
 }
 
+// A file that can hold more rows than the limit is counted before any row is parsed or held: it is
+// refused for its count even where a row before the limit is bad (a single pass stops at that row).
+TEST(HostileStream, AFileWithTooManyRowsIsCountedBeforeItsRowsAreRead) {
+  std::string text = "x,y,r\n# a comment\n\n1,oops,1\n";
+  for (int k = 0; k < 10; ++k) text += "0,0,1\n";
+  const std::string path = temp_file("too-many.csv", text);
+  EXPECT_EQ(error_of([&] { read_elements_csv(path, 10); }), path + ":14: more than 10 elements");
+  // At the limit, the rows are read and the bad one named.
+  EXPECT_EQ(error_of([&] { read_elements_csv(path, 11); }), path + ":4: y: 'oops' is not a number");
+  fs::remove(path);
+}
+
 TEST(HostileStream, AnEndlessPipeOfFramesStopsAtTheFirstFramePastTheFrameLimit) {
   std::size_t written = 0;
   {
