@@ -3,7 +3,11 @@
 //
 // Index: helpers (run + parse, cells from the dump's grid) | Fig. 3.20 | lists cover every element
 // in its own cell (and the checker's fault test) | screen limit vs nbs | bad input.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <map>
@@ -243,6 +247,44 @@ TEST(Dump, ScreenRefusesASparseWorldThatNbsHandles) {
   // dump runs the book's loops, which need nothing beside the book's arrays.
   const json d = dump("--input '" + dir + "/sparse.csv' --algorithm nbs");
   EXPECT_EQ(d["own_bytes"], 120036);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Memory: dump's peak grows by the arrays it shows, not by a log of the run or a document of the dump.
+
+// Peak resident memory, in KB, of `nbscope ARGS` with stdout to `out` (waited for with wait4).
+long peak_rss_kb(const std::vector<std::string>& args, const std::string& out, int* exit_code) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int fd = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(fd, 1);
+    std::vector<char*> argv{const_cast<char*>(testcli::binary().c_str())};
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(argv[0], argv.data());
+    std::_Exit(127);
+  }
+  int status = 0;
+  struct rusage ru {};
+  ::wait4(pid, &status, 0, &ru);
+  *exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return ru.ru_maxrss;
+}
+
+TEST(Dump, PeakMemoryIsTheArraysNotALogOfTheRunOrADocument) {
+#ifdef NBSCOPE_SANITIZED_BUILD
+  GTEST_SKIP() << "the sanitizers' shadow memory and quarantine make RSS meaningless";
+#endif
+  const std::string dir = scratch_dir("dump_memory");
+  const int n = 200'000;
+  write_random(dir + "/in.csv", n, 2, 600, 11);
+  int code = -1;
+  const long kb = peak_rss_kb({"dump", "--input", dir + "/in.csv", "--algorithm", "nbs"}, dir + "/out.json", &code);
+  ASSERT_EQ(code, 0);
+  // Its arrays and each row's lists are some 100 bytes an element; the log of the run took 440 and a
+  // document of the dump some 500 more (190 MB here).
+  EXPECT_LT(kb * 1024, 40'000'000 + 250L * n) << kb << " KB for " << n << " elements";
+  EXPECT_EQ(json::parse(testcli::read_text(dir + "/out.json"))["elements"], n);
 }
 
 struct BadDump {

@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -111,10 +112,12 @@ TEST(HostileFile, ALineAtTheLimitReadsOneByteLongerIsRefused) {
   fs::remove(last);
 }
 
-// A FIFO fed by a thread with `chunk` over and over until the reader closes it.
+// A FIFO fed by a thread with chunk(0), chunk(1), ... until the reader closes it.
 class EndlessFifo {
  public:
-  explicit EndlessFifo(std::string chunk) : path_((fs::temp_directory_path() / ("nbscope-fifo-" + std::to_string(::getpid()))).string()) {
+  explicit EndlessFifo(std::string chunk) : EndlessFifo([chunk = std::move(chunk)](std::size_t) { return chunk; }) {}
+  explicit EndlessFifo(std::function<std::string(std::size_t)> chunk)
+      : path_((fs::temp_directory_path() / ("nbscope-fifo-" + std::to_string(::getpid()))).string()) {
     fs::remove(path_);
     if (::mkfifo(path_.c_str(), 0600) != 0) throw std::runtime_error("mkfifo failed");
     // The reader closing the pipe must end the writer with EPIPE, not the test with SIGPIPE.
@@ -122,7 +125,11 @@ class EndlessFifo {
     writer_ = std::thread([this, chunk = std::move(chunk)] {
       std::FILE* f = std::fopen(path_.c_str(), "wb");
       if (f == nullptr) return;
-      while (std::fwrite(chunk.data(), 1, chunk.size(), f) == chunk.size()) written_ += chunk.size();
+      for (std::size_t k = 0;; ++k) {
+        const std::string text = chunk(k);
+        if (std::fwrite(text.data(), 1, text.size(), f) != text.size()) break;
+        written_ += text.size();
+      }
       std::fclose(f);
     });
   }
@@ -134,13 +141,14 @@ class EndlessFifo {
   EndlessFifo(const EndlessFifo&) = delete;
   EndlessFifo& operator=(const EndlessFifo&) = delete;
   [[nodiscard]] const std::string& path() const { return path_; }
+  // Bytes the writer got into the pipe: read, or in the pipe's buffer and the writer's.
   [[nodiscard]] std::size_t written() const { return written_; }
 
  private:
   std::string path_;
   void (*old_)(int) = nullptr;
   std::thread writer_;
-  std::size_t written_ = 0;
+  std::atomic<std::size_t> written_ = 0;
 };
 
 TEST(HostileFile, AnEndlessLineFromAPipeIsRefusedAfterTheLineLimit) {
@@ -156,6 +164,69 @@ TEST(HostileFile, AnEndlessPipeOfGoodLinesStopsAtTheSizeLimit) {
   EndlessFifo fifo("1,2,0.5\n");
   EXPECT_EQ(error_of([&] { read_input_file(fifo.path(), "elements file", std::size_t{4} << 20, kMaxLineBytes); }),
             fifo.path() + ": larger than 4 MB, the limit for an elements file");
+}
+
+// ---- limits while the lines arrive ---------------------------------------------------------------
+//
+// The readers of ELEMENTS.csv and .nbsrec parse lines as they are read: a limit stops the read at
+// the first line past it, and replay's first N frames are all that is read. Each input here is an
+// endless pipe: read whole first (as before), each would have run to the 2 GB size limit.
+
+// The bytes a stopped reader may have taken from the pipe: the chunks it read (64 KiB, then 1 MiB)
+// and what the pipe and the writer's stdio buffer held.
+constexpr std::size_t kReadAhead = std::size_t{4} << 20;
+
+TEST(HostileStream, AnEndlessPipeOfRowsStopsAtTheFirstRowPastTheElementLimit) {
+  std::size_t written = 0;
+  {
+    EndlessFifo fifo("1,2,0.5\n");
+    EXPECT_EQ(error_of([&] { read_elements_csv(fifo.path(), 1000); }), fifo.path() + ":1001: more than 1000 elements");
+    written = fifo.written();
+  }
+  EXPECT_LT(written, 1001 * 8 + kReadAhead);
+}
+
+// A file that can hold more rows than the limit is counted before any row is parsed or held: it is
+// refused for its count even where a row before the limit is bad (a single pass stops at that row).
+TEST(HostileStream, AFileWithTooManyRowsIsCountedBeforeItsRowsAreRead) {
+  std::string text = "x,y,r\n# a comment\n\n1,oops,1\n";
+  for (int k = 0; k < 10; ++k) text += "0,0,1\n";
+  const std::string path = temp_file("too-many.csv", text);
+  EXPECT_EQ(error_of([&] { read_elements_csv(path, 10); }), path + ":14: more than 10 elements");
+  // At the limit, the rows are read and the bad one named.
+  EXPECT_EQ(error_of([&] { read_elements_csv(path, 11); }), path + ":4: y: 'oops' is not a number");
+  fs::remove(path);
+}
+
+TEST(HostileStream, AnEndlessPipeOfFramesStopsAtTheFirstFramePastTheFrameLimit) {
+  std::size_t written = 0;
+  {
+    EndlessFifo fifo([](std::size_t k) { return (k == 0 ? "nbsrec 1\n" : "") + ("frame " + std::to_string(k) + " 0\n0,0,1\n"); });
+    EXPECT_EQ(error_of([&] { read_recording(fifo.path(), std::numeric_limits<std::int64_t>::max(), 1000); }),
+              fifo.path() + ":2002: more than 1000 frames, the limit for a recording (replay --frames N reads the first N)");
+    written = fifo.written();
+  }
+  EXPECT_LT(written, kReadAhead + 20'000);
+}
+
+TEST(HostileStream, TheFirstFramesOfAnEndlessPipeAreAllThatIsRead) {
+  std::size_t written = 0;
+  {
+    EndlessFifo fifo([](std::size_t k) { return (k == 0 ? "nbsrec 1\n" : "") + ("frame " + std::to_string(k) + " 0.5\n0,0,1\n1,0,1\n"); });
+    const Recording rec = read_recording(fifo.path(), 2);
+    ASSERT_EQ(rec.frames.size(), 2u);
+    EXPECT_EQ(rec.frames[1].number, 1);
+    EXPECT_EQ(rec.frames[1].elements.size(), 2);
+    EXPECT_EQ(rec.frames[1].elements.x[1], 1.0);
+    written = fifo.written();
+  }
+  EXPECT_LT(written, kReadAhead);
+}
+
+TEST(HostileStream, AnEndlessPipeOfGoodRowsStopsAtTheSizeLimitAsItIsRead) {
+  EndlessFifo fifo("1,2,0.5\n");
+  EXPECT_EQ(error_of([&] { read_elements_csv(fifo.path(), kMaxElements, std::size_t{2} << 20); }),
+            fifo.path() + ": larger than 2 MB, the limit for an elements file");
 }
 
 // ---- CSV and pairs -----------------------------------------------------------------------------

@@ -5,6 +5,7 @@
 //
 // Index: helpers (an independent .nbsrec reader) | record + replay | faults | bad input | outputs.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -157,6 +158,23 @@ TEST_F(Recorded, FramesLimitsTheReplay) {
   const auto r = run("replay '" + rec() + "' --headless --frames 7 --algorithm screen");
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("replay: run, screen, 7 frames"), std::string::npos) << r.out;
+}
+
+// `replay --frames N` reads N frames: from a simulation's pipe (a FIFO fed by awk here) it replays
+// them and stops. The pipe's 5 MB of frames end in a NUL byte, which a reader of the whole input
+// refuses (exit 2): read whole first, an endless pipe ran to the 2 GB limit.
+TEST(Replay, FramesOfAPipeAreReadOnlyAsFarAsTheyAreReplayed) {
+  const std::string dir = scratch_dir("replay_long_pipe");
+  const std::string fifo = dir + "/frames.nbsrec";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string writer = "(timeout 20 awk 'BEGIN { print \"nbsrec 1\"; for (i = 0; i < 200000; i++) printf \"frame %d %d\\n0,0,1\\n1.5,0,1\\n\", i, i }'; printf '\\000') > '" +
+                             fifo + "' &";
+  const auto r = run("replay '" + fifo + "' --headless --frames 2 --algorithm nbs --report '" + dir + "/r.json'", writer);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("replay: frames, nbs, 2 frames"), std::string::npos) << r.out;
+  const json frames = json::parse(read_text(dir + "/r.json"))["runs"][0]["frames"];
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_EQ(frames[1]["pairs"]["A"], 1);  // (0,0) and (1.5,0), radius 1: in contact
 }
 
 // ---- faults ------------------------------------------------------------------------------------

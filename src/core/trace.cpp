@@ -17,22 +17,19 @@ int TraceLog::declare_array(std::string name, std::vector<std::int64_t> shape, s
   return static_cast<int>(arrays_.size()) - 1;
 }
 
-void TraceLog::phase(std::uint8_t line, const char* label, std::int32_t index) {
+void TraceLog::phase(std::uint8_t line, const char* label, std::int32_t index) { phase(line, label, index, -1, -1, -1); }
+
+void TraceLog::phase(std::uint8_t line, const char* label, std::int32_t index, std::int32_t ix, std::int32_t iy,
+                     std::int32_t iz) {
   TraceEvent e;
   e.op = TraceOp::Phase;
   e.line = line;
   e.label = label;
   e.index = index;
-  record(e);
-}
-
-void TraceLog::phase(std::uint8_t line, const char* label, std::int32_t index, std::int32_t ix, std::int32_t iy,
-                     std::int32_t iz) {
-  phase(line, label, index);
-  TraceEvent& e = events_.back();
   e.cell[0] = ix;
   e.cell[1] = iy;
   e.cell[2] = iz;
+  record(e);  // whole: a consumer sees the event as it will be kept
 }
 
 void TraceLog::push(std::uint8_t line, const char* kind, int heads, std::int64_t list_index, int next, ElementId k,
@@ -105,6 +102,10 @@ void TraceLog::record(const TraceEvent& e) {
     live.reserve(live_.size());
     for (const auto& a : live_) live.emplace_back(a.begin(), a.end());
     probe_(events_.size(), e, live);
+  }
+  if (consumer_) {
+    consumer_(e);
+    return;
   }
   events_.push_back(e);
 }

@@ -92,6 +92,11 @@ class TraceLog {
                                    const std::vector<std::vector<std::int32_t>>& live)>;
   void set_probe(Probe probe) { probe_ = std::move(probe); }
 
+  // When set, each event is handed to `consumer` as it happens instead of being kept (events() stays
+  // empty): a reader of one pass over a large detection (`nbscope dump`) holds no O(events) log. Survives reset().
+  using Consumer = std::function<void(const TraceEvent& event)>;
+  void set_consumer(Consumer consumer) { consumer_ = std::move(consumer); }
+
   [[nodiscard]] const std::vector<TraceEvent>& events() const { return events_; }
   [[nodiscard]] const std::vector<TracedArray>& arrays() const { return arrays_; }
   // Contents of every array after the first `count` events (count clamped to the event count).
@@ -109,6 +114,7 @@ class TraceLog {
   std::vector<std::span<const std::int32_t>> live_;  // the detector's arrays, during its run
   bool keep_tests_ = true;
   Probe probe_;
+  Consumer consumer_;
 };
 
 // The sink of untraced runs: every call compiles to nothing.

@@ -1,5 +1,6 @@
 #include "io/csv.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -7,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
@@ -114,73 +116,193 @@ void parse_element_row(const std::vector<std::string_view>& fields, const std::s
   }
 }
 
-Elements parse_elements_csv(const std::string& text, const std::string& where) {
-  const std::size_t bom = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;  // spreadsheets write a UTF-8 byte order mark
-  if (trim(std::string_view(text).substr(bom)).empty()) throw Error(where + ":1: empty file (expected rows of x,y,r or x,y,z,r)");
-  Elements e;
-  e.dim = 0;
-  std::vector<double> cols[4];
-  std::size_t line_no = 0;
-  bool seen_row_or_header = false;
-  std::size_t header_line = 0;
-  std::size_t pos = bom;
-  while (pos <= text.size()) {
-    std::size_t end = text.find('\n', pos);
-    if (end == std::string::npos) end = text.size();
-    std::string_view line(text.data() + pos, end - pos);
-    pos = end + 1;
-    ++line_no;
-    check_line_length(line, where, line_no);
-    line = strip_comment(line);
-    if (line.empty()) {
-      if (end == text.size()) break;
-      continue;
+// ---- ElementColumns --------------------------------------------------------------------------
+
+ElementColumns::ElementColumns(int count) : count_(count) {}
+
+void ElementColumns::push(const std::array<double, 4>& row) {
+  if (size_ == capacity_) {
+    capacity_ = std::max<Eigen::Index>(1024, capacity_ * 2);
+    for (int c = 0; c < count_; ++c) cols_[c].conservativeResize(capacity_);
+  }
+  for (int c = 0; c < count_; ++c) cols_[c][size_] = row[static_cast<std::size_t>(c)];
+  ++size_;
+}
+
+Eigen::ArrayXd ElementColumns::take(int c) {
+  cols_[c].conservativeResize(size_);
+  return std::move(cols_[c]);
+}
+
+void ElementColumns::clear() {
+  for (auto& col : cols_) col.resize(0);
+  size_ = capacity_ = 0;
+}
+
+bool parse_plain_row(std::string_view line, int& count, std::array<double, 4>& out) {
+  count = 0;
+  std::size_t start = 0;
+  for (;;) {
+    if (count == 4) return false;
+    const std::size_t comma = line.find(',', start);
+    const std::string_view f = trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+    if (f.empty() || f.size() > kMaxNumberBytes) return false;
+    double v = 0;
+    const auto [ptr, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
+    if (ec != std::errc() || ptr != f.data() + f.size() || !std::isfinite(v)) return false;
+    out[static_cast<std::size_t>(count++)] = v;
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  if (count < 3) return false;
+  for (int c = 0; c + 1 < count; ++c)
+    if (std::abs(out[static_cast<std::size_t>(c)]) > kMaxCoordinate) return false;
+  const double r = out[static_cast<std::size_t>(count - 1)];
+  return r >= kMinRadius && r <= kMaxRadius;
+}
+
+namespace {
+
+// ELEMENTS.csv one line at a time: from memory or as a file's lines arrive, so that a file with
+// too many rows is refused at the first row past the limit, having held only the rows before it.
+class ElementsCsvParser {
+ public:
+  ElementsCsvParser(const std::string& where, std::int64_t max_elements) : where_(where), max_elements_(max_elements) {}
+
+  // Line `line_no` (1-based), without its newline.
+  void line(std::string_view raw, std::size_t line_no) {
+    if (line_no == 1 && raw.rfind("\xEF\xBB\xBF", 0) == 0) raw.remove_prefix(3);  // spreadsheets write a UTF-8 byte order mark
+    const std::string_view line = strip_comment(raw);
+    if (!seen_text_ && !trim(raw).empty()) seen_text_ = true;
+    if (line.empty()) return;
+    if (dim_ != 0 && seen_row_or_header_) {
+      int count = 0;
+      std::array<double, 4> row{};
+      if (parse_plain_row(line, count, row) && count == dim_ + 1 && cols_.size() < max_elements_) {
+        cols_.push(row);
+        return;
+      }
     }
-    const std::string at = where + ":" + std::to_string(line_no) + ": ";
+    full_row(line, line_no);
+  }
+
+  // The elements read. Error "empty file" when every line was blank.
+  Elements finish() {
+    if (!seen_text_) throw Error(where_ + ":1: empty file (expected rows of x,y,r or x,y,z,r)");
+    Elements e;
+    e.dim = dim_ == 0 ? 2 : dim_;
+    e.x = cols_.take(0);
+    e.y = cols_.take(1);
+    if (e.dim == 3) {
+      e.z = cols_.take(2);
+      e.r = cols_.take(3);
+    } else {
+      e.r = cols_.take(2);
+    }
+    return e;
+  }
+
+ private:
+  // A header, or a row with anything unusual: read with a message for every way it can be wrong.
+  void full_row(std::string_view line, std::size_t line_no) {
+    const std::string at = where_ + ":" + std::to_string(line_no) + ": ";
     const std::vector<std::string_view> fields = split_commas(line);
-    if (!seen_row_or_header && is_name(fields.front())) {
+    if (!seen_row_or_header_ && is_name(fields.front())) {
       for (std::string_view f : fields)
         if (!is_name(f)) throw Error(at + "header mixes names and numbers: '" + excerpt(f) + "'");
       if (fields.size() != 3 && fields.size() != 4)
         throw Error(at + "header has " + plural(static_cast<long long>(fields.size()), "column") + "; expected x,y,r or x,y,z,r");
-      e.dim = fields.size() == 3 ? 2 : 3;  // the header fixes the dimension, as a first row would
-      header_line = line_no;
-      seen_row_or_header = true;
-      continue;
+      set_dim(fields.size() == 3 ? 2 : 3);  // the header fixes the dimension, as a first row would
+      header_line_ = line_no;
+      seen_row_or_header_ = true;
+      return;
     }
-    seen_row_or_header = true;
+    seen_row_or_header_ = true;
     if (fields.size() != 3 && fields.size() != 4)
       throw Error(at + plural(static_cast<long long>(fields.size()), "column") + "; expected 3 (x,y,r) or 4 (x,y,z,r)");
     const int dim = fields.size() == 3 ? 2 : 3;
-    if (e.dim == 0) e.dim = dim;
-    if (dim != e.dim)
+    if (dim_ == 0) set_dim(dim);
+    if (dim != dim_)
       throw Error(at + plural(static_cast<long long>(fields.size()), "column") + ", but " +
-                  (header_line != 0 && cols[0].empty() ? "the header on line " + std::to_string(header_line) + " has "
-                                                       : std::string("the first row had ")) +
-                  std::to_string(e.dim + 1));
-    if (static_cast<std::int64_t>(cols[0].size()) >= kMaxElements)
-      throw Error(at + "more than " + std::to_string(kMaxElements) + " elements");
+                  (header_line_ != 0 && cols_.size() == 0 ? "the header on line " + std::to_string(header_line_) + " has "
+                                                          : std::string("the first row had ")) +
+                  std::to_string(dim_ + 1));
+    if (cols_.size() >= max_elements_) throw Error(at + "more than " + std::to_string(max_elements_) + " elements");
     std::array<double, 4> row{};
     parse_element_row(fields, at, row);
-    for (std::size_t c = 0; c < fields.size(); ++c) cols[c].push_back(row[c]);
-    if (end == text.size()) break;
+    cols_.push(row);
   }
-  if (e.dim == 0) e.dim = 2;
-  const auto n = static_cast<Eigen::Index>(cols[0].size());
-  auto column = [&](int c) { return Eigen::Map<const Eigen::ArrayXd>(cols[c].data(), n); };
-  e.x = column(0);
-  e.y = column(1);
-  if (e.dim == 3) {
-    e.z = column(2);
-    e.r = column(3);
-  } else {
-    e.r = column(2);
+
+  void set_dim(int dim) {
+    dim_ = dim;
+    cols_ = ElementColumns(dim + 1);
   }
-  return e;
+
+  const std::string& where_;
+  std::int64_t max_elements_;
+  int dim_ = 0;  // fixed by the header or the first row
+  bool seen_text_ = false;
+  bool seen_row_or_header_ = false;
+  std::size_t header_line_ = 0;
+  ElementColumns cols_{3};
+};
+
+}  // namespace
+
+Elements parse_elements_csv(const std::string& text, const std::string& where, std::int64_t max_elements) {
+  ElementsCsvParser parser(where, max_elements);
+  std::size_t line_no = 0;
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string::npos) end = text.size();
+    const std::string_view line(text.data() + pos, end - pos);
+    pos = end + 1;
+    ++line_no;
+    check_line_length(line, where, line_no);
+    parser.line(line, line_no);
+  }
+  return parser.finish();
 }
 
-Elements read_elements_csv(const std::string& path) {
-  return parse_elements_csv(read_input_file(path, "elements file", kMaxElementsBytes, kMaxLineBytes), path);
+namespace {
+
+// The line of the first row past `max_elements` in `path`, or 0 when there is none: a scan for line
+// ends, comments and the header, with no number parsed and no row held.
+std::size_t first_row_past(const std::string& path, std::int64_t max_elements, std::size_t max_bytes) {
+  InputLines lines(path, "elements file", max_bytes, kMaxLineBytes);
+  std::string_view line;
+  std::int64_t rows = 0;
+  bool first = true;
+  while (lines.next(line)) {
+    if (lines.line_number() == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.remove_prefix(3);
+    const std::string_view content = strip_comment(line);
+    if (content.empty()) continue;
+    if (std::exchange(first, false) && is_name(trim(content.substr(0, content.find(','))))) continue;  // the header
+    if (++rows > max_elements) return lines.line_number();
+  }
+  return 0;
+}
+
+}  // namespace
+
+Elements read_elements_csv(const std::string& path, std::int64_t max_elements, std::size_t max_bytes) {
+  // A file that can hold more rows than the limit (a row takes at least 6 bytes, "0,0,1\n") is
+  // counted first: one with too many is then refused in seconds, holding nothing, instead of after
+  // holding max_elements rows (2.4 GB at 1e8). A pipe cannot be read twice: its rows are counted as
+  // they are held.
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(path, ec)) {
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (!ec && (size + 1) / 6 > static_cast<std::uintmax_t>(max_elements))
+      if (const std::size_t line = first_row_past(path, max_elements, max_bytes); line != 0)
+        throw Error(path + ":" + std::to_string(line) + ": more than " + std::to_string(max_elements) + " elements");
+  }
+  InputLines lines(path, "elements file", max_bytes, kMaxLineBytes);
+  ElementsCsvParser parser(path, max_elements);
+  std::string_view line;
+  while (lines.next(line)) parser.line(line, lines.line_number());
+  return parser.finish();
 }
 
 void write_pairs_csv(std::ostream& out, const PairList& sorted_pairs) {

@@ -21,31 +21,44 @@ std::string size_text(std::size_t bytes) {
   return std::to_string(bytes) + " bytes";
 }
 
+// Opens `path` as a `kind` of input; Error for an empty path, a directory or a file it cannot open.
+void open_input(std::ifstream& in, const std::string& path, const char* kind) {
+  if (path.empty()) throw Error(std::string(kind) + " path is empty");
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw Error(path + ": is a directory, not " + with_article(kind));
+  in.open(path, std::ios::binary);
+  if (!in) throw Error(path + ": cannot open the " + kind + " (no such file or not readable)");
+}
+
+constexpr std::size_t kFirstChunk = std::size_t{64} << 10;
+constexpr std::size_t kChunk = std::size_t{1} << 20;
+}  // namespace
+
 // Checks each chunk as it arrives, counting lines once: a NUL byte, and a line longer than the
-// limit (also one still open at the end of what has been read).
+// limit (also one still open at the end of what has been read). Offsets are in the whole input.
 class TextCheck {
  public:
   TextCheck(const std::string& path, const char* kind, std::size_t max_line) : path_(path), kind_(kind), max_line_(max_line) {}
 
-  // Checks text[from, text.size()), the bytes just read.
-  void chunk(const std::string& text, std::size_t from) {
-    const char* const base = text.data();
-    const char* const end = base + text.size();
-    const void* nul = std::memchr(base + from, '\0', text.size() - from);
+  // Checks the `size` bytes at `data`, which start at `offset` in the input.
+  void chunk(const char* data, std::size_t size, std::size_t offset) {
+    const char* const end = data + size;
+    const void* nul = std::memchr(data, '\0', size);
     const char* const stop = nul != nullptr ? static_cast<const char*>(nul) : end;
-    for (const char* p = base + from; p < stop;) {
+    const auto at = [&](const char* p) { return offset + static_cast<std::size_t>(p - data); };
+    for (const char* p = data; p < stop;) {
       const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(stop - p));
       if (nl == nullptr) break;
       p = static_cast<const char*>(nl);
-      check_line(static_cast<std::size_t>(p - base));
-      line_start_ = static_cast<std::size_t>(p - base) + 1;
+      check_line(at(p));
+      line_start_ = at(p) + 1;
       ++line_;
       ++p;
     }
     if (nul != nullptr)
-      throw Error(path_ + ":" + std::to_string(line_) + ": a NUL byte (byte " + std::to_string(stop - base) + "): " +
+      throw Error(path_ + ":" + std::to_string(line_) + ": a NUL byte (byte " + std::to_string(at(stop)) + "): " +
                   with_article(kind_) + " is text, this is binary data (or UTF-16 text: save it as UTF-8)");
-    check_line(text.size());
+    check_line(at(end));
   }
 
  private:
@@ -55,36 +68,84 @@ class TextCheck {
       throw Error(path_ + ":" + std::to_string(line_) + ": a line longer than " + size_text(max_line_) + ", the limit for " +
                   with_article(kind_) + " (its lines are short rows; is this the right file?)");
   }
-  const std::string& path_;
+  std::string path_;
   const char* kind_;
   std::size_t max_line_;
   std::size_t line_ = 1;
   std::size_t line_start_ = 0;
 };
-}  // namespace
 
 std::string read_input_file(const std::string& path, const char* kind, std::size_t max_bytes, std::size_t max_line_bytes) {
-  if (path.empty()) throw Error(std::string(kind) + " path is empty");
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw Error(path + ": is a directory, not " + with_article(kind));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open the " + kind + " (no such file or not readable)");
+  std::ifstream in;
+  open_input(in, path, kind);
   std::string text;
   TextCheck check(path, kind, max_line_bytes);
   // A small first chunk: /dev/zero, a binary file or an endless line are refused after reading it.
-  std::size_t chunk = std::size_t{64} << 10;
+  std::size_t chunk = kFirstChunk;
   while (in) {
     const std::size_t old = text.size();
     text.resize(old + chunk);
     in.read(text.data() + old, static_cast<std::streamsize>(chunk));
     text.resize(old + static_cast<std::size_t>(in.gcount()));
-    check.chunk(text, old);
+    check.chunk(text.data() + old, text.size() - old, old);
     if (text.size() > max_bytes)
       throw Error(path + ": larger than " + size_text(max_bytes) + ", the limit for " + with_article(kind));
-    chunk = std::size_t{1} << 20;
+    chunk = kChunk;
   }
   if (in.bad()) throw Error(path + ": cannot read the " + kind);
   return text;
+}
+
+// ---- InputLines ------------------------------------------------------------------------------
+
+InputLines::InputLines(const std::string& path, const char* kind, std::size_t max_bytes, std::size_t max_line_bytes)
+    : path_(path), kind_(kind), max_bytes_(max_bytes), chunk_(kFirstChunk) {
+  open_input(in_, path, kind);
+  check_ = std::make_unique<TextCheck>(path, kind, max_line_bytes);
+}
+
+InputLines::~InputLines() = default;
+
+void InputLines::fill() {
+  // Only the unread part of a line is kept: the text held is one chunk and one line at most.
+  buf_.erase(0, begin_);
+  base_ += begin_;
+  begin_ = 0;
+  const std::size_t old = buf_.size();
+  buf_.resize(old + chunk_);
+  in_.read(buf_.data() + old, static_cast<std::streamsize>(chunk_));
+  const auto got = static_cast<std::size_t>(in_.gcount());
+  buf_.resize(old + got);
+  check_->chunk(buf_.data() + old, got, base_ + old);
+  if (base_ + buf_.size() > max_bytes_)
+    throw Error(path_ + ": larger than " + size_text(max_bytes_) + ", the limit for " + with_article(kind_));
+  chunk_ = kChunk;
+  if (!in_) {
+    if (in_.bad()) throw Error(path_ + ": cannot read the " + kind_);
+    end_ = true;
+  }
+}
+
+bool InputLines::next(std::string_view& line) {
+  for (;;) {
+    const char* const from = buf_.data() + begin_;
+    const std::size_t left = buf_.size() - begin_;
+    if (const void* nl = std::memchr(from, '\n', left); nl != nullptr) {
+      const auto length = static_cast<std::size_t>(static_cast<const char*>(nl) - from);
+      line = std::string_view(from, length);
+      begin_ += length + 1;
+      ++line_no_;
+      return true;
+    }
+    if (end_) {
+      if (left == 0) return false;
+      line = std::string_view(from, left);  // the last line, without a newline
+      begin_ = buf_.size();
+      ++line_no_;
+      return true;
+    }
+    fill();
+  }
 }
 
 }  // namespace nbscope

@@ -1,7 +1,10 @@
-// nbscope io: reading an input file whole, with a size limit, for every text format.
+// nbscope io: reading a text input, whole or line by line, with size limits, for every text format.
 #pragma once
 #include <cstddef>
+#include <fstream>
+#include <memory>
 #include <string>
+#include <string_view>
 
 namespace nbscope {
 
@@ -22,5 +25,40 @@ inline constexpr std::size_t kMaxLineBytes = std::size_t{64} << 10;
 // in the first chunk read, so /dev/zero stops at once) and, when `max_line_bytes` is not 0, for a
 // line longer than that (seen as soon as that many bytes without a newline have been read).
 std::string read_input_file(const std::string& path, const char* kind, std::size_t max_bytes, std::size_t max_line_bytes = 0);
+
+class TextCheck;
+
+// The lines of a text input as they arrive, with read_input_file's checks and messages: a reader
+// that refuses its input at a row (too many elements, frames) stops there, having held one chunk
+// of text, and a reader that needs only the first frames stops reading an endless pipe. Opening
+// throws as read_input_file does; next() throws for a NUL byte, a line longer than
+// `max_line_bytes` or more than `max_bytes` bytes, each as soon as the chunk holding it is read.
+class InputLines {
+ public:
+  InputLines(const std::string& path, const char* kind, std::size_t max_bytes, std::size_t max_line_bytes);
+  ~InputLines();
+  InputLines(const InputLines&) = delete;
+  InputLines& operator=(const InputLines&) = delete;
+
+  // The next line, without its '\n', into `line` (valid until the next call); false at the end.
+  bool next(std::string_view& line);
+  // The number of the line next() gave last (1-based; 0 before the first).
+  [[nodiscard]] std::size_t line_number() const { return line_no_; }
+
+ private:
+  void fill();  // reads one more chunk behind the unread bytes
+
+  std::string path_;
+  const char* kind_;
+  std::size_t max_bytes_;
+  std::ifstream in_;
+  std::unique_ptr<TextCheck> check_;
+  std::string buf_;          // unread bytes start at begin_
+  std::size_t begin_ = 0;
+  std::size_t base_ = 0;     // offset in the input of buf_[0]
+  std::size_t chunk_;        // small at first: /dev/zero or a binary file stops after one
+  bool end_ = false;
+  std::size_t line_no_ = 0;
+};
 
 }  // namespace nbscope

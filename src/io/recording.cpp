@@ -61,13 +61,12 @@ std::string shortest(double v) {
 }
 
 // Moves the collected columns into the frame's Elements.
-void finish_frame(RecordedFrame& frame, std::vector<double> (&cols)[3]) {
-  const auto n = static_cast<Eigen::Index>(cols[0].size());
+void finish_frame(RecordedFrame& frame, ElementColumns& cols) {
   frame.elements.dim = 2;
-  frame.elements.x = Eigen::Map<const Eigen::ArrayXd>(cols[0].data(), n);
-  frame.elements.y = Eigen::Map<const Eigen::ArrayXd>(cols[1].data(), n);
-  frame.elements.r = Eigen::Map<const Eigen::ArrayXd>(cols[2].data(), n);
-  for (auto& c : cols) c.clear();
+  frame.elements.x = cols.take(0);
+  frame.elements.y = cols.take(1);
+  frame.elements.r = cols.take(2);
+  cols.clear();
 }
 
 // What the parser knows of the frame being read, for its pairs block.
@@ -116,21 +115,179 @@ void parse_pair_row(std::string_view line, const std::string& at, int base, std:
 
 // ---- parse_recording ------------------------------------------------------------------------
 
-Recording parse_recording(const std::string& text, const std::string& where, std::int64_t max_frames, std::size_t frame_limit) {
-  Recording rec;
-  rec.path = where;
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
-    throw Error(where + ":1: empty file (expected 'nbsrec 1', then frames)");
-  bool seen_version = false;
-  std::vector<double> cols[3];
-  FrameState state;  // of rec.frames.back()
+namespace {
+
+// A recording one line at a time: from memory or as a file's lines arrive, so that reading stops
+// after the frames wanted (an endless pipe included) and a limit passed stops it at that line.
+class RecordingParser {
+ public:
+  RecordingParser(const std::string& where, std::int64_t max_frames, std::size_t frame_limit)
+      : where_(where), max_frames_(max_frames), frame_limit_(frame_limit) {
+    rec_.path = where;
+  }
+
+  // Line `line_no` (1-based), without its newline; false once `max_frames` frames are complete
+  // (this line starts the next one, which is not read).
+  bool line(std::string_view raw, std::size_t line_no) {
+    last_line_ = line_no;
+    if (!seen_text_ && raw.find_first_not_of(" \t\r") != std::string_view::npos) seen_text_ = true;
+    const std::string_view line = strip_comment(raw);
+    if (line.empty()) return true;
+    if (plain_element_row(line)) return true;
+    const std::string at = where_ + ":" + std::to_string(line_no) + ": ";
+    const std::vector<std::string_view> words = split_words(line);
+    const std::string_view key = words.front();
+    if (!seen_version_) {
+      if (key != "nbsrec")
+        throw Error(at + "expected 'nbsrec 1' as the first line (an nbscope recording), got '" + excerpt(line) + "'");
+      if (words.size() != 2 || words[1] != "1")
+        throw Error(at + "'" + excerpt(line) + "': this nbscope reads version 1 ('nbsrec 1') only");
+      seen_version_ = true;
+      first_line_[0] = line_no;
+      return true;
+    }
+    const bool in_header = rec_.frames.empty();
+    if (const std::size_t h = header_index(key); h < kHeaderKeys.size()) {
+      header_line(words, key, h, at, line_no, in_header);
+      return true;
+    }
+    if (key == "frame") return frame_line(words, line, at, line_no);
+    if (key == "pairs") {
+      if (words.size() != 1) throw Error(at + "expected 'pairs' alone on its line, got '" + excerpt(line) + "'");
+      if (in_header) throw Error(at + "a 'pairs' line before the first 'frame NUMBER TIME' line");
+      if (state_.has_pairs)
+        throw Error(at + "a second 'pairs' line in frame " + std::to_string(rec_.frames.back().number) + " (one pairs block a frame)");
+      state_.has_pairs = true;
+      // A block where the first frame has none is refused here, before its rows are read.
+      if (rec_.frames.size() > 1) check_all_or_none(rec_, state_, rec_.has_pairs, where_);
+      return true;
+    }
+    if (std::isalpha(static_cast<unsigned char>(key.front())) && line.find(',') == std::string_view::npos)
+      throw Error(at + "unknown line '" + excerpt(line) + "' (expected frame, pairs, cell_size, origin, cells, base or a row x,y,r)");
+    if (in_header) throw Error(at + "an element row before the first 'frame NUMBER TIME' line");
+    if (state_.has_pairs) {
+      parse_pair_row(line, at, rec_.pair_base, cols_.size(), rec_.frames.back());
+      return true;
+    }
+    element_row(line, at);
+    return true;
+  }
+
+  // The recording read (at most max_frames frames).
+  Recording finish() {
+    if (!stopped_) {
+      if (!seen_text_) throw Error(where_ + ":1: empty file (expected 'nbsrec 1', then frames)");
+      if (!seen_version_) throw Error(where_ + ":" + std::to_string(last_line_) + ": only comments (expected 'nbsrec 1', then frames)");
+      if (rec_.frames.empty())
+        throw Error(where_ + ":" + std::to_string(last_line_) + ": no frames (expected 'frame NUMBER TIME' lines with x,y,r rows)");
+      end_frame();
+    }
+    return std::move(rec_);
+  }
+
+ private:
+  void header_line(const std::vector<std::string_view>& words, std::string_view key, std::size_t h, const std::string& at,
+                   std::size_t line_no, bool in_header) {
+    // One value per key: a second line would silently win over the first.
+    if (first_line_[h] != 0)
+      throw Error(at + std::string(key) + " given twice (first on line " + std::to_string(first_line_[h]) + ")");
+    first_line_[h] = line_no;
+    if (!in_header) throw Error(at + std::string(key) + ": header lines come before the first frame");
+    if (key == "cell_size") {
+      const double d = parse_finite_number(header_value(words, at, "cell_size D"), at, "cell_size");
+      if (!(d > 0)) throw Error(at + "cell_size: must be > 0, got " + excerpt(words[1]));
+      rec_.grid.cell_size = d;
+    } else if (key == "origin") {
+      const auto f = two_fields(header_value(words, at, "origin X,Y"), at, "origin", "X,Y");
+      rec_.grid.origin = std::array<double, 3>{parse_finite_number(f[0], at, "origin x"), parse_finite_number(f[1], at, "origin y"), 0};
+    } else if (key == "cells") {
+      const auto f = two_fields(header_value(words, at, "cells NX,NY"), at, "cells", "NX,NY");
+      rec_.grid.cells = std::array<std::int64_t, 3>{parse_integer(f[0], at, "cells nx", 1, std::int64_t{1} << 24),
+                                                    parse_integer(f[1], at, "cells ny", 1, std::int64_t{1} << 24), 1};
+    } else {
+      const std::string_view b = header_value(words, at, "base 0|1");
+      if (b != "0" && b != "1")
+        throw Error(at + "base: '" + excerpt(b) + "': pairs number elements from 0 ('base 0', the default) or 1 ('base 1')");
+      rec_.pair_base = b == "1" ? 1 : 0;
+    }
+  }
+
+  bool frame_line(const std::vector<std::string_view>& words, std::string_view line, const std::string& at, std::size_t line_no) {
+    if (words.size() != 3) throw Error(at + "expected 'frame NUMBER TIME', got '" + excerpt(line) + "'");
+    const std::int64_t number = parse_integer(words[1], at, "frame number", 0, std::numeric_limits<std::int64_t>::max());
+    const double time = parse_finite_number(words[2], at, "frame time");
+    if (!rec_.frames.empty()) {
+      const RecordedFrame& last = rec_.frames.back();
+      if (number <= last.number)
+        throw Error(at + "frame " + std::to_string(number) + " after frame " + std::to_string(last.number) +
+                    ": frame numbers must increase");
+      if (time < last.time)
+        throw Error(at + "frame " + std::to_string(number) + ": time " + shortest(time) + " is before frame " +
+                    std::to_string(last.number) + "'s " + shortest(last.time) + ": times must not decrease");
+      end_frame();
+      if (static_cast<std::int64_t>(rec_.frames.size()) >= max_frames_) {
+        stopped_ = true;
+        return false;
+      }
+    }
+    // ~110 bytes a frame from a 10-byte line: millions of empty frames must not take the machine.
+    if (rec_.frames.size() >= frame_limit_)
+      throw Error(at + "more than " + std::to_string(frame_limit_) + " frames, the limit for a recording (replay --frames N reads the first N)");
+    rec_.frames.push_back({number, time, {}, {}});
+    state_ = FrameState{line_no, false};
+    return true;
+  }
+
+  // An ordinary x,y,r row of the frame being read, taken without building a message; false for any
+  // other line, which line() reads (or refuses) with its message.
+  bool plain_element_row(std::string_view line) {
+    if (rec_.frames.empty() || state_.has_pairs) return false;
+    int count = 0;
+    std::array<double, 4> row{};
+    if (!parse_plain_row(line, count, row) || count != 3 || cols_.size() >= kMaxElements) return false;
+    if (rec_.grid.cell_size && 2 * row[2] > *rec_.grid.cell_size) return false;
+    cols_.push(row);
+    return true;
+  }
+
+  void element_row(std::string_view line, const std::string& at) {
+    const std::vector<std::string_view> fields = split_fields(line);
+    if (fields.size() == 4) throw Error(at + "4 columns (x,y,z,r): replay is 2D, rows are x,y,r");
+    if (fields.size() == 2) throw Error(at + "2 columns; expected 3 (x,y,r) (a pair i,j? pairs come after the frame's 'pairs' line)");
+    if (fields.size() != 3) throw Error(at + plural(static_cast<long long>(fields.size()), "column") + "; expected 3 (x,y,r)");
+    if (cols_.size() >= kMaxElements) throw Error(at + "more than " + std::to_string(kMaxElements) + " elements in one frame");
+    std::array<double, 4> row{};
+    parse_element_row(fields, at, row);
+    if (rec_.grid.cell_size && 2 * row[2] > *rec_.grid.cell_size)
+      throw Error(at + "r: diameter " + shortest(2 * row[2]) + " is larger than the header's cell_size " + shortest(*rec_.grid.cell_size) +
+                  " (contacts could skip a cell)");
+    cols_.push(row);
+  }
+
   // The frame being read is complete: its elements into place, its pairs block held to the first frame's.
-  const auto end_frame = [&] {
-    finish_frame(rec.frames.back(), cols);
-    if (rec.frames.size() == 1) rec.has_pairs = state.has_pairs;
-    check_all_or_none(rec, state, rec.has_pairs, where);
-  };
-  std::size_t first_line[kHeaderKeys.size()] = {};  // of each header key, 0 until seen ("nbsrec": the version line)
+  void end_frame() {
+    finish_frame(rec_.frames.back(), cols_);
+    if (rec_.frames.size() == 1) rec_.has_pairs = state_.has_pairs;
+    check_all_or_none(rec_, state_, rec_.has_pairs, where_);
+  }
+
+  const std::string& where_;
+  std::int64_t max_frames_;
+  std::size_t frame_limit_;
+  Recording rec_;
+  bool seen_text_ = false;
+  bool seen_version_ = false;
+  bool stopped_ = false;  // max_frames frames read; the rest is not
+  ElementColumns cols_{3};
+  FrameState state_;  // of rec_.frames.back()
+  std::size_t first_line_[kHeaderKeys.size()] = {};  // of each header key, 0 until seen ("nbsrec": the version line)
+  std::size_t last_line_ = 0;
+};
+
+}  // namespace
+
+Recording parse_recording(const std::string& text, const std::string& where, std::int64_t max_frames, std::size_t frame_limit) {
+  RecordingParser parser(where, max_frames, frame_limit);
   std::size_t line_no = 0;
   std::size_t pos = 0;
   while (pos < text.size()) {
@@ -140,109 +297,20 @@ Recording parse_recording(const std::string& text, const std::string& where, std
     pos = end + 1;
     ++line_no;
     check_line_length(raw, where, line_no);
-    const std::string_view line = strip_comment(raw);
-    if (line.empty()) continue;
-    const std::string at = where + ":" + std::to_string(line_no) + ": ";
-    const std::vector<std::string_view> words = split_words(line);
-    const std::string_view key = words.front();
-    if (!seen_version) {
-      if (key != "nbsrec")
-        throw Error(at + "expected 'nbsrec 1' as the first line (an nbscope recording), got '" + excerpt(line) + "'");
-      if (words.size() != 2 || words[1] != "1")
-        throw Error(at + "'" + excerpt(line) + "': this nbscope reads version 1 ('nbsrec 1') only");
-      seen_version = true;
-      first_line[0] = line_no;
-      continue;
-    }
-    const bool in_header = rec.frames.empty();
-    if (const std::size_t h = header_index(key); h < kHeaderKeys.size()) {
-      // One value per key: a second line would silently win over the first.
-      if (first_line[h] != 0)
-        throw Error(at + std::string(key) + " given twice (first on line " + std::to_string(first_line[h]) + ")");
-      first_line[h] = line_no;
-      if (!in_header) throw Error(at + std::string(key) + ": header lines come before the first frame");
-      if (key == "cell_size") {
-        const double d = parse_finite_number(header_value(words, at, "cell_size D"), at, "cell_size");
-        if (!(d > 0)) throw Error(at + "cell_size: must be > 0, got " + excerpt(words[1]));
-        rec.grid.cell_size = d;
-      } else if (key == "origin") {
-        const auto f = two_fields(header_value(words, at, "origin X,Y"), at, "origin", "X,Y");
-        rec.grid.origin = std::array<double, 3>{parse_finite_number(f[0], at, "origin x"), parse_finite_number(f[1], at, "origin y"), 0};
-      } else if (key == "cells") {
-        const auto f = two_fields(header_value(words, at, "cells NX,NY"), at, "cells", "NX,NY");
-        rec.grid.cells = std::array<std::int64_t, 3>{parse_integer(f[0], at, "cells nx", 1, std::int64_t{1} << 24),
-                                                     parse_integer(f[1], at, "cells ny", 1, std::int64_t{1} << 24), 1};
-      } else {
-        const std::string_view b = header_value(words, at, "base 0|1");
-        if (b != "0" && b != "1")
-          throw Error(at + "base: '" + excerpt(b) + "': pairs number elements from 0 ('base 0', the default) or 1 ('base 1')");
-        rec.pair_base = b == "1" ? 1 : 0;
-      }
-      continue;
-    }
-    if (key == "frame") {
-      if (words.size() != 3) throw Error(at + "expected 'frame NUMBER TIME', got '" + excerpt(line) + "'");
-      const std::int64_t number = parse_integer(words[1], at, "frame number", 0, std::numeric_limits<std::int64_t>::max());
-      const double time = parse_finite_number(words[2], at, "frame time");
-      if (!rec.frames.empty()) {
-        const RecordedFrame& last = rec.frames.back();
-        if (number <= last.number)
-          throw Error(at + "frame " + std::to_string(number) + " after frame " + std::to_string(last.number) +
-                      ": frame numbers must increase");
-        if (time < last.time)
-          throw Error(at + "frame " + std::to_string(number) + ": time " + shortest(time) + " is before frame " +
-                      std::to_string(last.number) + "'s " + shortest(last.time) + ": times must not decrease");
-        end_frame();
-        if (static_cast<std::int64_t>(rec.frames.size()) >= max_frames) return rec;
-      }
-      // ~110 bytes a frame from a 10-byte line: millions of empty frames must not take the machine.
-      if (rec.frames.size() >= frame_limit)
-        throw Error(at + "more than " + std::to_string(frame_limit) + " frames, the limit for a recording (replay --frames N reads the first N)");
-      rec.frames.push_back({number, time, {}, {}});
-      state = FrameState{line_no, false};
-      continue;
-    }
-    if (key == "pairs") {
-      if (words.size() != 1) throw Error(at + "expected 'pairs' alone on its line, got '" + excerpt(line) + "'");
-      if (in_header) throw Error(at + "a 'pairs' line before the first 'frame NUMBER TIME' line");
-      if (state.has_pairs)
-        throw Error(at + "a second 'pairs' line in frame " + std::to_string(rec.frames.back().number) + " (one pairs block a frame)");
-      state.has_pairs = true;
-      // A block where the first frame has none is refused here, before its rows are read.
-      if (rec.frames.size() > 1) check_all_or_none(rec, state, rec.has_pairs, where);
-      continue;
-    }
-    if (std::isalpha(static_cast<unsigned char>(key.front())) && line.find(',') == std::string_view::npos)
-      throw Error(at + "unknown line '" + excerpt(line) + "' (expected frame, pairs, cell_size, origin, cells, base or a row x,y,r)");
-    if (in_header) throw Error(at + "an element row before the first 'frame NUMBER TIME' line");
-    if (state.has_pairs) {
-      parse_pair_row(line, at, rec.pair_base, static_cast<std::int64_t>(cols[0].size()), rec.frames.back());
-      continue;
-    }
-    const std::vector<std::string_view> fields = split_fields(line);
-    if (fields.size() == 4) throw Error(at + "4 columns (x,y,z,r): replay is 2D, rows are x,y,r");
-    if (fields.size() == 2) throw Error(at + "2 columns; expected 3 (x,y,r) (a pair i,j? pairs come after the frame's 'pairs' line)");
-    if (fields.size() != 3) throw Error(at + plural(static_cast<long long>(fields.size()), "column") + "; expected 3 (x,y,r)");
-    if (static_cast<std::int64_t>(cols[0].size()) >= kMaxElements)
-      throw Error(at + "more than " + std::to_string(kMaxElements) + " elements in one frame");
-    std::array<double, 4> row{};
-    parse_element_row(fields, at, row);
-    if (rec.grid.cell_size && 2 * row[2] > *rec.grid.cell_size)
-      throw Error(at + "r: diameter " + shortest(2 * row[2]) + " is larger than the header's cell_size " + shortest(*rec.grid.cell_size) +
-                  " (contacts could skip a cell)");
-    for (int c = 0; c < 3; ++c) cols[c].push_back(row[static_cast<std::size_t>(c)]);
+    if (!parser.line(raw, line_no)) break;
   }
-  if (!seen_version) throw Error(where + ":" + std::to_string(line_no) + ": only comments (expected 'nbsrec 1', then frames)");
-  if (rec.frames.empty())
-    throw Error(where + ":" + std::to_string(line_no) + ": no frames (expected 'frame NUMBER TIME' lines with x,y,r rows)");
-  end_frame();
-  return rec;
+  return parser.finish();
 }
 
 // ---- read_recording -------------------------------------------------------------------------
 
-Recording read_recording(const std::string& path, std::int64_t max_frames) {
-  return parse_recording(read_input_file(path, "recording", kMaxRecordingBytes, kMaxLineBytes), path, max_frames);
+Recording read_recording(const std::string& path, std::int64_t max_frames, std::size_t frame_limit, std::size_t max_bytes) {
+  InputLines lines(path, "recording", max_bytes, kMaxLineBytes);
+  RecordingParser parser(path, max_frames, frame_limit);
+  std::string_view line;
+  while (lines.next(line))
+    if (!parser.line(line, lines.line_number())) break;  // the frames wanted are read: the rest is not
+  return parser.finish();
 }
 
 // ---- RecordingWriter ------------------------------------------------------------------------

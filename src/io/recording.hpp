@@ -29,6 +29,7 @@
 #include "core/elements.hpp"
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
+#include "io/input_file.hpp"
 
 namespace nbscope {
 
@@ -64,9 +65,13 @@ struct Recording {
 // before the first frame or twice in a frame, an element row after it, a pair row that is not two
 // integers or names an element the frame does not have; a frame without a pairs block when another has
 // one.
-Recording read_recording(const std::string& path, std::int64_t max_frames = std::numeric_limits<std::int64_t>::max());
-// Same from memory; `where` names it in messages. More than `frame_limit` frames (before
-// `max_frames` stops the read) is an error: "more than N frames, the limit for a recording".
+// The lines are parsed as they arrive: the read stops after `max_frames` frames (an endless pipe
+// included) and at the first line past a limit: more than `frame_limit` frames (before `max_frames`
+// stops the read: "more than N frames, the limit for a recording"), kMaxElements rows in a frame,
+// `max_bytes` bytes.
+Recording read_recording(const std::string& path, std::int64_t max_frames = std::numeric_limits<std::int64_t>::max(),
+                         std::size_t frame_limit = kMaxRecordedFrames, std::size_t max_bytes = kMaxRecordingBytes);
+// Same from memory; `where` names it in messages.
 Recording parse_recording(const std::string& text, const std::string& where,
                           std::int64_t max_frames = std::numeric_limits<std::int64_t>::max(),
                           std::size_t frame_limit = kMaxRecordedFrames);
