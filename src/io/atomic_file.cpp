@@ -237,6 +237,11 @@ void ScratchFile::write(std::string_view bytes) {
   size_ += static_cast<std::int64_t>(bytes.size());
 }
 
+std::string ScratchFile::reopen_path() {
+  if (std::fflush(file_) != 0) throw Error(where_ + ": cannot write: " + std::strerror(errno));
+  return "/proc/self/fd/" + std::to_string(::fileno(file_));
+}
+
 void ScratchFile::truncate(std::int64_t size) {
   if (std::fflush(file_) != 0 || ::ftruncate(::fileno(file_), size) != 0 || std::fseek(file_, size, SEEK_SET) != 0)
     throw Error(where_ + ": cannot write: " + std::strerror(errno));

@@ -120,6 +120,8 @@ class ScratchFile {
   [[nodiscard]] std::int64_t bytes_on_disk();
   // Appends the whole content to `out`.
   void copy_to(std::ostream& out);
+  // A path that opens the content afresh from its start (/proc/self/fd/N), after flushing it.
+  [[nodiscard]] std::string reopen_path();
 
  private:
   std::FILE* file_ = nullptr;

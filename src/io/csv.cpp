@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string_view>
 #include <utility>
@@ -268,19 +269,29 @@ Elements parse_elements_csv(const std::string& text, const std::string& where, s
 namespace {
 
 // The line of the first row past `max_elements` in `path`, or 0 when there is none: a scan for line
-// ends, comments and the header, with no number parsed and no row held.
-std::size_t first_row_past(const std::string& path, std::int64_t max_elements, std::size_t max_bytes) {
+// ends, comments and the header, with no number parsed and no row held. With `copy`, every line
+// read is appended to it too (a pipe, which cannot be read twice).
+std::size_t first_row_past(const std::string& path, std::int64_t max_elements, std::size_t max_bytes, ScratchFile* copy = nullptr) {
   InputLines lines(path, "elements file", max_bytes, kMaxLineBytes);
   std::string_view line;
   std::int64_t rows = 0;
   bool first = true;
+  std::string block;  // lines gathered for the copy: one write a block, not a line
   while (lines.next(line)) {
+    if (copy != nullptr) {
+      block.append(line).push_back('\n');
+      if (block.size() >= (std::size_t{1} << 20)) {
+        copy->write(block);
+        block.clear();  // its capacity kept: a fresh megabyte each time costs page faults
+      }
+    }
     if (lines.line_number() == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.remove_prefix(3);
     const std::string_view content = strip_comment(line);
     if (content.empty()) continue;
     if (std::exchange(first, false) && is_name(trim(content.substr(0, content.find(','))))) continue;  // the header
     if (++rows > max_elements) return lines.line_number();
   }
+  if (copy != nullptr) copy->write(block);
   return 0;
 }
 
@@ -289,16 +300,22 @@ std::size_t first_row_past(const std::string& path, std::int64_t max_elements, s
 Elements read_elements_csv(const std::string& path, std::int64_t max_elements, std::size_t max_bytes) {
   // A file that can hold more rows than the limit (a row takes at least 6 bytes, "0,0,1\n") is
   // counted first: one with too many is then refused in seconds, holding nothing, instead of after
-  // holding max_elements rows (2.4 GB at 1e8). A pipe cannot be read twice: its rows are counted as
-  // they are held.
+  // holding max_elements rows (2.4 GB at 1e8). A pipe or device cannot be read twice: it is copied
+  // to an unnamed scratch file (disk, not memory) while its rows are counted, then read from there.
+  const auto too_many = [&](std::size_t line) {
+    return Error(path + ":" + std::to_string(line) + ": more than " + std::to_string(max_elements) + " elements");
+  };
   std::error_code ec;
+  std::unique_ptr<ScratchFile> spool;
   if (std::filesystem::is_regular_file(path, ec)) {
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
     if (!ec && (size + 1) / 6 > static_cast<std::uintmax_t>(max_elements))
-      if (const std::size_t line = first_row_past(path, max_elements, max_bytes); line != 0)
-        throw Error(path + ":" + std::to_string(line) + ": more than " + std::to_string(max_elements) + " elements");
+      if (const std::size_t line = first_row_past(path, max_elements, max_bytes); line != 0) throw too_many(line);
+  } else if (std::filesystem::exists(path, ec) && !std::filesystem::is_directory(path, ec)) {
+    spool = std::make_unique<ScratchFile>(path);
+    if (const std::size_t line = first_row_past(path, max_elements, max_bytes, spool.get()); line != 0) throw too_many(line);
   }
-  InputLines lines(path, "elements file", max_bytes, kMaxLineBytes);
+  InputLines lines(path, "elements file", max_bytes, kMaxLineBytes, spool ? spool->reopen_path() : std::string());
   ElementsCsvParser parser(path, max_elements);
   std::string_view line;
   while (lines.next(line)) parser.line(line, lines.line_number());

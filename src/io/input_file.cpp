@@ -98,9 +98,15 @@ std::string read_input_file(const std::string& path, const char* kind, std::size
 
 // ---- InputLines ------------------------------------------------------------------------------
 
-InputLines::InputLines(const std::string& path, const char* kind, std::size_t max_bytes, std::size_t max_line_bytes)
+InputLines::InputLines(const std::string& path, const char* kind, std::size_t max_bytes, std::size_t max_line_bytes,
+                       const std::string& open_path)
     : path_(path), kind_(kind), max_bytes_(max_bytes), chunk_(kFirstChunk) {
-  open_input(in_, path, kind);
+  if (open_path.empty()) {
+    open_input(in_, path, kind);
+  } else {
+    in_.open(open_path, std::ios::binary);
+    if (!in_) throw Error(path + ": cannot read the " + kind + " back from its spooled copy");
+  }
   check_ = std::make_unique<TextCheck>(path, kind, max_line_bytes);
 }
 

@@ -35,7 +35,9 @@ class TextCheck;
 // `max_line_bytes` or more than `max_bytes` bytes, each as soon as the chunk holding it is read.
 class InputLines {
  public:
-  InputLines(const std::string& path, const char* kind, std::size_t max_bytes, std::size_t max_line_bytes);
+  // `open_path`, when given, is opened in place of `path` (a spooled copy); messages name `path`.
+  InputLines(const std::string& path, const char* kind, std::size_t max_bytes, std::size_t max_line_bytes,
+             const std::string& open_path = {});
   ~InputLines();
   InputLines(const InputLines&) = delete;
   InputLines& operator=(const InputLines&) = delete;
