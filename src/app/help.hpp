@@ -22,14 +22,15 @@ usage:
       (see Help in the menu bar). Mouse: left selects an element and drags its body, right-drag
       pans, wheel zooms. Every frame is kept
       for the Timeline within --history-mb N (default 256, saved with the settings; oldest frames
-      dropped first). Settings persist in $XDG_CONFIG_HOME/nbscope/settings.json (~/.config/...).
+      dropped first). Settings persist in $XDG_CONFIG_HOME/nbscope/settings.json (~/.config/...);
+      a stale one opens the window all the same, its bad keys named in one note.
       --frames N runs N frames, saves --screenshot and exits (no input, no settings: for tests
       under xvfb-run); --back K then goes K frames back through the history first, each drawn,
       and says how long a frame took. Without a display it renders --frames N (default 120)
       headless into --screenshot (default $TMPDIR/nbscope-SCENE.png) and prints the path.
       A world that stops (too many contacts, a body not finite or leaving the world: see
-      headless --max-contacts) shows its message in the Scenes panel and pauses; with --frames
-      the screenshot shows it and the exit code is 2.
+      headless --max-contacts), also at load, shows its message in the Scenes panel and pauses;
+      with --frames the screenshot shows it and the exit code is 2.
   nbscope gui --input ELEMENTS.csv --arrays ARRAYS.json [--algorithm NAME] [--base 1] [--exact]
               [--cell-size D] [--origin X,Y] [--cells NX,NY] [--frames N --screenshot OUT.png]
               [--overlays SPEC] [--panels SPEC] [--select K]
@@ -125,8 +126,9 @@ usage:
       --screenshot, else 0: a run that never goes back keeps only summaries).
       --max-contacts N the Box2D contacts a frame may create (default 1,000,000, ~1.7 GB; the
       scene's "max_contacts" sets it too): before every step the pairs of fat AABBs are counted
-      and a world past it stops with exit 2 naming the count. A frame running over 5 s says so
-      once on stderr. A body that is not finite after a step, or beyond +-1e6 m, stops the run
+      and a world past it stops with exit 2 naming the count; no more than the memory this
+      process can get (rlimits, cgroup, MemAvailable) at ~1.7 kB a contact, whatever N says.
+      A frame running over 5 s (or 10 frames together) says so once on stderr. A body that is not finite after a step, or beyond +-1e6 m, stops the run
       with exit 2 naming the body and the frame.
       --scaling FILE.csv (with --screenshot) opens the Scaling panel on a CSV of nbscope scaling
       (a bad row: exit 2 naming FILE:LINE); --scaling run measures first, as nbscope scaling does,
