@@ -1,11 +1,10 @@
 // Fuzz target: the settings file's reader (ui/settings_json.hpp) on arbitrary bytes. It refuses a
 // whole file only with nbscope::Error; what it keeps must be in range (speed, history budget,
-// camera, overlay names), and written back as nbscope writes a settings file and read again it
-// must give the same values with nothing ignored.
+// camera, overlay names), and written back by the window's own writer (settings_json_text) and
+// read again it must give the same values with nothing ignored.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -20,18 +19,6 @@ namespace {
 // The overlay names of render/overlays.cpp (that file needs the renderer; the reader takes names).
 constexpr std::string_view kOverlays[] = {"bodies", "pairs", "grid", "lists", "ids"};
 
-std::string written(const nbscope::ui::SettingsValues& v) {
-  nlohmann::json j;
-  j["version"] = nbscope::ui::kSettingsVersion;
-  j["overlays"] = v.overlays;
-  j["panels"] = v.panels;
-  if (v.last_scene) j["last_scene"] = *v.last_scene;
-  if (v.algorithm) j["algorithm"] = *v.algorithm;
-  if (v.camera) j["camera"] = *v.camera;
-  j["speed"] = v.speed;
-  j["history_mb"] = v.history_mb;
-  return j.dump(2);
-}
 
 }  // namespace
 
@@ -62,7 +49,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<std::string> again_ignored;
   nbscope::ui::SettingsValues again;
   try {
-    again = nbscope::ui::parse_settings_json(written(v), kOverlays, again_ignored);
+    again = nbscope::ui::parse_settings_json(nbscope::ui::settings_json_text(v), kOverlays, again_ignored);
   } catch (const nbscope::Error& e) {
     nbscope::fuzz::fuzz_fail(std::string("settings: its own values refused: ") + e.what());
   }

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 
 #include "core/detector.hpp"
 #include "core/error.hpp"
@@ -76,19 +75,13 @@ bool restore_camera(const Settings& s, const std::string& scene, render::Camera&
 
 void save_settings(const std::string& path, const Settings& s) {
   if (path.empty()) throw Error("settings: no config directory (neither XDG_CONFIG_HOME nor HOME is set)");
-  nlohmann::json j;
-  j["version"] = kSettingsVersion;
-  for (const render::OverlayInfo& o : render::overlay_infos()) j["overlays"][o.name] = s.overlays.*o.flag;
-  j["panels"] = s.panels;
-  if (s.last_scene) j["last_scene"] = *s.last_scene;
-  if (s.algorithm) j["algorithm"] = *s.algorithm;
-  if (s.camera) j["camera"] = *s.camera;
-  j["speed"] = s.speed;
-  j["history_mb"] = s.history_mb;
+  SettingsValues values{{}, s.panels, s.last_scene, s.algorithm, s.camera, s.speed, s.history_mb};
+  for (const render::OverlayInfo& o : render::overlay_infos()) values.overlays[o.name] = s.overlays.*o.flag;
+  const std::string text = settings_json_text(values);
   std::error_code ec;
   std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
   if (ec) throw Error(path + ": cannot write: " + ec.message());
-  write_file_atomically(path, [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+  write_file_atomically(path, [&](std::ostream& out) { out << text << "\n"; });
 }
 
 }  // namespace nbscope::ui

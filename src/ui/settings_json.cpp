@@ -110,4 +110,17 @@ SettingsValues parse_settings_json(std::string_view text, std::span<const std::s
   return out;
 }
 
+std::string settings_json_text(const SettingsValues& values) {
+  Json j;
+  j["version"] = kSettingsVersion;
+  j["overlays"] = values.overlays;
+  j["panels"] = values.panels;
+  if (values.last_scene) j["last_scene"] = *values.last_scene;
+  if (values.algorithm) j["algorithm"] = *values.algorithm;
+  if (values.camera) j["camera"] = *values.camera;
+  j["speed"] = values.speed;
+  j["history_mb"] = values.history_mb;
+  return j.dump(2);
+}
+
 }  // namespace nbscope::ui

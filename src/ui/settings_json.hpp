@@ -35,4 +35,7 @@ struct SettingsValues {
 SettingsValues parse_settings_json(std::string_view text, std::span<const std::string_view> overlay_names,
                                    std::vector<std::string>& ignored);
 
+// The file's text for `values`, as the window writes it (parse_settings_json reads it back whole).
+std::string settings_json_text(const SettingsValues& values);
+
 }  // namespace nbscope::ui
