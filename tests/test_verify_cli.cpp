@@ -109,12 +109,14 @@ TEST(VerifyCli, EmptySparseNextArraysAreAVerdictNotACrash) {
   const auto r = verify_arrays("verify_empty_x_next", d);
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.out.find("is not given in $.rows[0].x_next"), std::string::npos) << r.out;
+#ifdef NBSCOPE_TEST_GUI  // gui --arrays exists in the GUI build only
   const std::string gui_dir = scratch_dir("verify_empty_x_next_gui");
   write_text(gui_dir + "/arrays.json", d.dump());
   const auto gui = run("gui --input " + testpaths::nine_csv() + " --arrays " + gui_dir + "/arrays.json --frames 1 --screenshot " +
                            gui_dir + "/x.png",
                        "env -u DISPLAY -u WAYLAND_DISPLAY");
   EXPECT_EQ(gui.exit_code, 1) << gui.err;
+#endif
 
   const std::string dir = scratch_dir("verify_empty_y_next_3d");
   std::string csv = "x,y,z,r\n";
