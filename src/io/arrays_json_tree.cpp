@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <istream>
 #include <limits>
@@ -14,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "io/excerpt.hpp"
+#include "io/input_file.hpp"
 #include "io/json_limits.hpp"
 
 namespace nbscope::arrays_tree {
@@ -168,11 +168,10 @@ class CheckedInput : public std::streambuf {
     if (const void* nul = std::memchr(chunk_.data(), '\0', got)) {
       const auto at = static_cast<std::size_t>(static_cast<const char*>(nul) - chunk_.data());
       setg(chunk_.data(), chunk_.data() + at, chunk_.data() + got);
-      throw Error(where_ + ":" + std::to_string(line()) + ": a NUL byte (byte " + std::to_string(read_ + at) +
-                  "): an arrays file is text, this is binary data (or UTF-16 text: save it as UTF-8)");
+      throw nul_byte_in(where_, line(), read_ + at, "arrays file");
     }
     read_ += got;
-    if (read_ > max_bytes_) throw Error(where_ + ": larger than " + std::to_string(max_bytes_ >> 20) + " MB, the limit for an arrays file");
+    if (read_ > max_bytes_) throw input_too_large(where_, "arrays file", max_bytes_);
     return traits_type::to_int_type(*gptr());
   }
 
@@ -334,11 +333,8 @@ std::shared_ptr<const Tree> parse(std::istream* file, std::string_view memory, c
 }  // namespace
 
 std::shared_ptr<const Tree> read_file(const std::string& path, std::size_t max_bytes) {
-  if (path.empty()) throw Error("arrays file path is empty");
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw Error(path + ": is a directory, not an arrays file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open the arrays file (no such file or not readable)");
+  std::ifstream in;
+  open_input(in, path, "arrays file");
   return parse(&in, {}, path, max_bytes, kMaxArraysJsonValues);
 }
 

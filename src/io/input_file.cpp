@@ -21,7 +21,8 @@ std::string size_text(std::size_t bytes) {
   return std::to_string(bytes) + " bytes";
 }
 
-// Opens `path` as a `kind` of input; Error for an empty path, a directory or a file it cannot open.
+}  // namespace
+
 void open_input(std::ifstream& in, const std::string& path, const char* kind) {
   if (path.empty()) throw Error(std::string(kind) + " path is empty");
   std::error_code ec;
@@ -29,6 +30,17 @@ void open_input(std::ifstream& in, const std::string& path, const char* kind) {
   in.open(path, std::ios::binary);
   if (!in) throw Error(path + ": cannot open the " + kind + " (no such file or not readable)");
 }
+
+Error input_too_large(const std::string& path, const char* kind, std::size_t max_bytes) {
+  return Error(path + ": larger than " + size_text(max_bytes) + ", the limit for " + with_article(kind));
+}
+
+Error nul_byte_in(const std::string& path, std::size_t line, std::size_t byte, const char* kind) {
+  return Error(path + ":" + std::to_string(line) + ": a NUL byte (byte " + std::to_string(byte) + "): " + with_article(kind) +
+               " is text, this is binary data (or UTF-16 text: save it as UTF-8)");
+}
+
+namespace {
 
 constexpr std::size_t kFirstChunk = std::size_t{64} << 10;
 constexpr std::size_t kChunk = std::size_t{1} << 20;
@@ -56,8 +68,7 @@ class TextCheck {
       ++p;
     }
     if (nul != nullptr)
-      throw Error(path_ + ":" + std::to_string(line_) + ": a NUL byte (byte " + std::to_string(at(stop)) + "): " +
-                  with_article(kind_) + " is text, this is binary data (or UTF-16 text: save it as UTF-8)");
+      throw nul_byte_in(path_, line_, at(stop), kind_);
     check_line(at(end));
   }
 
@@ -89,7 +100,7 @@ std::string read_input_file(const std::string& path, const char* kind, std::size
     text.resize(old + static_cast<std::size_t>(in.gcount()));
     check.chunk(text.data() + old, text.size() - old, old);
     if (text.size() > max_bytes)
-      throw Error(path + ": larger than " + size_text(max_bytes) + ", the limit for " + with_article(kind));
+      throw input_too_large(path, kind, max_bytes);
     chunk = kChunk;
   }
   if (in.bad()) throw Error(path + ": cannot read the " + kind);
@@ -124,7 +135,7 @@ void InputLines::fill() {
   buf_.resize(old + got);
   check_->chunk(buf_.data() + old, got, base_ + old);
   if (base_ + buf_.size() > max_bytes_)
-    throw Error(path_ + ": larger than " + size_text(max_bytes_) + ", the limit for " + with_article(kind_));
+    throw input_too_large(path_, kind_, max_bytes_);
   chunk_ = kChunk;
   if (!in_) {
     if (in_.bad()) throw Error(path_ + ": cannot read the " + kind_);

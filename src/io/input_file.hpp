@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include "core/error.hpp"
+
 namespace nbscope {
 
 // Default limits per format: generous for real data, small enough that /dev/zero or a runaway
@@ -25,6 +27,13 @@ inline constexpr std::size_t kMaxLineBytes = std::size_t{64} << 10;
 // in the first chunk read, so /dev/zero stops at once) and, when `max_line_bytes` is not 0, for a
 // line longer than that (seen as soon as that many bytes without a newline have been read).
 std::string read_input_file(const std::string& path, const char* kind, std::size_t max_bytes, std::size_t max_line_bytes = 0);
+
+// Opens `path` as a `kind` of input; Error for an empty path, a directory or a file it cannot open.
+void open_input(std::ifstream& in, const std::string& path, const char* kind);
+// The errors every text reader gives: "<path>: larger than 2048 MB, the limit for an elements file",
+// and "<path>:<line>: a NUL byte (byte N): an elements file is text, this is binary data (...)".
+Error input_too_large(const std::string& path, const char* kind, std::size_t max_bytes);
+Error nul_byte_in(const std::string& path, std::size_t line, std::size_t byte, const char* kind);
 
 class TextCheck;
 
