@@ -64,7 +64,7 @@ TEST(ReplayFrameLoop, ASceneReplacesTheRecording) {
   EXPECT_FALSE(loop.at_end());
 }
 
-// ---- `recorded`: the recording's own pairs (app/recorded_pairs.hpp) ------------------------------
+// ---- `recorded`: the recording's own pairs (check/recorded_lane.hpp) ------------------------------
 
 // Frames 3, 4, 9 of three_frames() with their contact pairs; frame 4's are wrong (a pair of elements
 // that do not touch, and element 1 paired with itself).

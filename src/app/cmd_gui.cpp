@@ -23,7 +23,7 @@
 #include "app/gui_requests.hpp"
 #include "app/headless.hpp"
 #include "app/headless_view.hpp"
-#include "app/recorded_pairs.hpp"
+#include "check/recorded_lane.hpp"
 #include "app/replay.hpp"
 #include "app/verify_view.hpp"
 #include "app/view_options.hpp"

@@ -17,7 +17,7 @@
 #include "app/headless.hpp"
 #include "app/headless_view.hpp"
 #include "app/help.hpp"
-#include "app/recorded_pairs.hpp"
+#include "check/recorded_lane.hpp"
 #include "app/scaling_flags.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"

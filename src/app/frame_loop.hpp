@@ -21,7 +21,7 @@
 // Errors: load_scene_file() throws Error "file:line: field: what" and keeps the previous scene;
 // set_algorithm() throws Error for an unknown or 3D-only name and keeps the previous one; `recorded`
 // (the recording's own pairs) is refused with a scene, a recording without pairs, and the faults
-// that act on detection's input (app/recorded_pairs.hpp: check_recorded_fault), wherever it comes in; step()
+// that act on detection's input (check/recorded_lane.hpp: check_recorded_fault), wherever it comes in; step()
 // and redetect() throw Error when detection refuses the frame (pair limit, a grid too large), with
 // the frame number in the message; so does any call that adopts a step begun by begin_step()
 // (show_frame, the drags, a configuration change). The window should show these and stay open.
@@ -37,6 +37,7 @@
 
 #include "app/history.hpp"
 #include "check/faults.hpp"
+#include "check/frame_result.hpp"
 #include "check/report.hpp"
 #include "core/detector.hpp"
 #include "core/grid.hpp"
@@ -49,7 +50,7 @@
 namespace nbscope {
 
 struct FrameLoopOptions {
-  std::string algorithm = "nbs";  // registry name (core/detector.hpp), or "recorded" (app/recorded_pairs.hpp)
+  std::string algorithm = "nbs";  // registry name (core/detector.hpp), or "recorded" (check/recorded_lane.hpp)
   Fault fault = Fault::None;
   bool checks = true;             // run the cross-check every frame
   std::int64_t brute_limit = 2000;  // R is brute force up to this many elements (CheckOptions)
@@ -99,7 +100,7 @@ class FrameLoop {
   // The number of recorded frames (0 for a scene).
   [[nodiscard]] std::int64_t recorded_frames() const;
   // True when the recording's frames carry the user's contact pairs (a `pairs` block each), which
-  // the algorithm `recorded` (app/recorded_pairs.hpp) returns; false for a scene.
+  // the algorithm `recorded` (check/recorded_lane.hpp) returns; false for a scene.
   [[nodiscard]] bool carries_pairs() const;
   // The recording's `base`: its pairs number elements from 0 or 1 (0 for a scene). Element ids
   // here stay 0-based rows either way.
@@ -207,6 +208,9 @@ class FrameLoop {
   [[nodiscard]] const Grid& grid() const;
   // The detector's cell of every element (under grid(); shifted by the off-by-one-cell fault).
   [[nodiscard]] const std::vector<CellIndex>& cells() const;
+  // Everything the pipeline found in this frame (check/frame_result.hpp): hash, each lane's pairs,
+  // grid, cells and report, the check's sets, the trace once asked for.
+  [[nodiscard]] const FrameResult& result() const;
   // Counts, timings and violations of this frame (report().checked is false when checks are off).
   [[nodiscard]] const FrameReport& report() const;
   [[nodiscard]] const FrameTimings& timings() const { return report().timings; }

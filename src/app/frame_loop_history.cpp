@@ -18,16 +18,16 @@ bool FrameLoop::showing_past() const { return impl_->kept != nullptr; }
 
 std::int64_t FrameLoop::newest_frame() const {
   const Impl& m = *impl_;
-  if (m.recording) return m.recording->frames.back().number;
-  return m.world ? m.live_frame() : 0;
+  if (m.replay) return m.replay->recording().frames.back().number;
+  return m.live ? m.live_frame() : 0;
 }
 
 bool FrameLoop::can_show(std::int64_t frame) const {
   const Impl& m = *impl_;
   if (!m.loaded()) return false;
-  if (m.world && frame == m.live_frame()) return true;
+  if (m.live && frame == m.live_frame()) return true;
   const auto index = m.history.find(frame);
-  return index && m.history.at(*index).kept && (m.recording || m.history.state(*index));
+  return index && m.history.at(*index).kept && (m.replay || m.history.state(*index));
 }
 
 void FrameLoop::show_frame(std::int64_t frame) {
@@ -43,13 +43,13 @@ void FrameLoop::show_frame(std::int64_t frame) {
   }
   if (frame == m.frame_number()) return;
   const double physics_ms = 0;  // nothing was simulated to show it
-  if (m.recording) {
-    m.recorded = m.recorded_index(frame);
-  } else if (frame == m.world->frame()) {
+  if (m.replay) {
+    m.replay->show(frame);
+  } else if (frame == m.live->world().frame()) {
     m.kept.reset();
   } else {
-    m.release_drag();  // leaving the live frame: nobody holds a body in the past
-    m.kept = std::make_unique<KeptWorldFrame>(*m.world, m.history.state(*m.history.find(frame)));
+    m.live->release_drag();  // leaving the live frame: nobody holds a body in the past
+    m.kept = std::make_unique<KeptWorldFrame>(m.live->world(), m.history.state(*m.history.find(frame)));
   }
   m.set_physics_ms(physics_ms);
   m.detect_and_check();
@@ -89,12 +89,12 @@ void FrameLoop::element_path(ElementId k, std::int64_t from, std::int64_t to, st
     const FrameSummary& f = m.history.at(i);
     if (f.frame > to) break;
     if (k >= f.elements) continue;
-    if (m.recording) {
-      const Elements& e = m.recording->frames[m.recorded_index(f.frame)].elements;
+    if (m.replay) {
+      const Elements& e = m.replay->recording().frames[m.replay->index_of(f.frame)].elements;
       out.push_back({e.x[k], e.y[k]});
     } else if (const auto& state = m.history.state(i)) {
       std::array<double, 2> p{};
-      m.world->element_centre(*state, k, p[0], p[1]);
+      m.live->world().element_centre(*state, k, p[0], p[1]);
       out.push_back(p);
     } else if (f.frame == m.live_frame()) {
       out.push_back({m.now().x[k], m.now().y[k]});
@@ -107,8 +107,8 @@ void FrameLoop::element_path(ElementId k, std::int64_t from, std::int64_t to, st
 void FrameLoop::begin_resume() {
   Impl& m = *impl_;
   m.settle();
-  if (!m.world || !m.kept || m.resume_world) return;
-  m.release_drag();
+  if (!m.live || !m.kept || m.resume_world) return;
+  m.live->release_drag();
   m.resume_target = m.kept->frame();
   m.resume_world = std::make_unique<PhysicsWorld>(m.scene);
   m.resume_input = 0;
@@ -123,12 +123,8 @@ bool FrameLoop::continue_resume(double budget_ms) {
   do {
     if (w.frame() >= m.resume_target) break;
     // The drags made on this frame, in their order, then the step, as the original run did.
-    while (m.resume_input < m.inputs.size() && m.inputs[m.resume_input].frame <= w.frame()) {
-      const Impl::DragInput& in = m.inputs[m.resume_input++];
-      if (in.kind == Impl::DragInput::Kind::Begin) w.begin_drag(in.x, in.y);
-      else if (in.kind == Impl::DragInput::Kind::To) w.drag_to(in.x, in.y);
-      else w.end_drag();
-    }
+    const std::vector<DragInput>& drags = m.live->drags();
+    while (m.resume_input < drags.size() && drags[m.resume_input].frame <= w.frame()) replay_drag(w, drags[m.resume_input++]);
     if (w.frame() + 1 == m.resume_target) m.resume_stale = w.elements();
     try {
       w.step();
@@ -149,14 +145,12 @@ bool FrameLoop::continue_resume(double budget_ms) {
   // Arrived: the re-simulated world is the live one at K, the later frames are gone.
   const std::int64_t k = m.resume_target;
   m.kept.reset();
-  m.world = std::move(m.resume_world);
+  m.live->replace_world(std::move(m.resume_world));  // the drags from K on go with the frames
   m.resume_target = -1;
   m.history.truncate_after(k);
   m.violations.truncate_after(k);
-  std::erase_if(m.inputs, [&](const Impl::DragInput& in) { return in.frame >= k; });
-  m.release_drag();  // nobody holds the mouse now; recorded, so a later resume replays it too
-  m.stale = k > 0 ? m.resume_stale : m.world->elements();
-  m.stale_for = k;
+  m.live->release_drag();  // nobody holds the mouse now; recorded, so a later resume replays it too
+  m.pipeline.remember_previous(k, k > 0 ? m.resume_stale : m.live->world().elements());
   m.set_physics_ms(0);
   m.detect_and_check();
   return true;

@@ -4,7 +4,7 @@
 #include "app/gl_view.hpp"
 
 #include "app/clock.hpp"
-#include "app/recorded_pairs.hpp"
+#include "check/recorded_lane.hpp"
 #include "app/view_spec.hpp"
 
 #include <imgui.h>

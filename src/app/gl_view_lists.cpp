@@ -2,7 +2,7 @@
 // stand at the stepper's operation while it is mid-way), and what the overlay is told to highlight,
 // filter and say in the legend.
 #include "app/clock.hpp"
-#include "app/recorded_pairs.hpp"
+#include "check/recorded_lane.hpp"
 #include "app/gl_view.hpp"
 
 namespace nbscope {

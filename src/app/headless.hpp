@@ -20,7 +20,7 @@ struct HeadlessOptions {
   std::int64_t frames = 600;          // --frames N
   std::string algorithm = "nbs";      // --algorithm NAME[,NAME...] or "all": compared on the same frames
   bool algorithm_from_recording = false;  // replay without --algorithm: `recorded` when the recording
-                                          // carries pairs (app/recorded_pairs.hpp), else `algorithm`
+                                          // carries pairs (check/recorded_lane.hpp), else `algorithm`
   std::optional<std::string> report;  // --report OUT.json
   Fault fault = Fault::None;          // --inject-fault NAME
   std::int64_t brute_limit = 2000;    // --brute-limit N: R is brute force up to N elements

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "app/recorded_pairs.hpp"
+#include "check/recorded_lane.hpp"
 #include "core/detector.hpp"
 #include "core/error.hpp"
 

@@ -75,6 +75,13 @@ class FrameChecker {
   [[nodiscard]] const PairList& box2d_pairs() const { return f_; }
   [[nodiscard]] const PairList& touching_pairs() const { return t_; }
   [[nodiscard]] const PairList& tight_aabb_pairs() const { return g_; }
+  // Hands F, T and G over to the caller once every check of the frame is done (swapped, not copied:
+  // the checker refills the caller's old lists next frame, so no memory is allocated per frame).
+  void take_sets(PairList& f, PairList& t, PairList& g) {
+    f.swap(f_);
+    t.swap(t_);
+    g.swap(g_);
+  }
 
  private:
   Detector& reference(const std::string& name);

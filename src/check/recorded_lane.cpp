@@ -1,4 +1,4 @@
-#include "app/recorded_pairs.hpp"
+#include "check/recorded_lane.hpp"
 
 #include <algorithm>
 #include <string>
@@ -8,10 +8,10 @@
 namespace nbscope {
 
 void RecordedPairsDetector::detect(const Elements& /*elements*/, const DetectOptions& options, PairList& out_pairs) {
-  if (frame_ == nullptr) throw Error("recorded: there are no recorded pairs for this frame");
-  if (frame_->pairs.size() > options.max_pairs) throw_pair_limit(options.max_pairs);
-  out_pairs.resize(frame_->pairs.size());
-  std::transform(frame_->pairs.begin(), frame_->pairs.end(), out_pairs.begin(),
+  if (pairs_ == nullptr) throw Error("recorded: there are no recorded pairs for this frame");
+  if (pairs_->size() > options.max_pairs) throw_pair_limit(options.max_pairs);
+  out_pairs.resize(pairs_->size());
+  std::transform(pairs_->begin(), pairs_->end(), out_pairs.begin(),
                  [](const Pair& p) { return p.i <= p.j ? p : Pair{p.j, p.i}; });
 }
 

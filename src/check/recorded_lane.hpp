@@ -1,18 +1,18 @@
-// nbscope app: `recorded`, the contact pairs a recording carries (a frame's `pairs` block,
-// io/recording.hpp) as an algorithm beside the detectors, so that `nbscope replay` checks a
+// nbscope check: `recorded`, the contact pairs a recording carries (a frame's `pairs` block,
+// io/recording.hpp) as a lane beside the detectors' (check/pipeline.hpp), so that `nbscope replay` checks a
 // simulation's own pairs with A==R exactly as it checks nbscope's, and the window's picker,
 // Timeline and Violations panel work on them.
 //
 // Not in core's registry: it is no contact-detection algorithm (`pairs`, `dump`, `scaling`, the
-// benchmarks and scenes have nothing for it) and its make() would need the recording. The frame
-// loop makes it by name (make_lane_detector) and tells it which frame is current (set_frame).
+// benchmarks and scenes have nothing for it). The pipeline makes it by name (make_lane_detector),
+// with its capabilities declared (recorded_info: no trace, no lists), and gives it each frame's
+// pairs (set_pairs).
 #pragma once
 #include <memory>
 #include <string_view>
 
 #include "check/faults.hpp"
 #include "core/detector.hpp"
-#include "io/recording.hpp"
 
 namespace nbscope {
 
@@ -27,8 +27,8 @@ class RecordedPairsDetector final : public Detector {
   [[nodiscard]] std::string_view name() const override { return kRecordedAlgorithm; }
   // A recording is 2D.
   [[nodiscard]] bool supports_dim(int dim) const override { return dim == 2; }
-  // The frame whose pairs the next detect() returns (it must outlive that call); null: none.
-  void set_frame(const RecordedFrame* frame) { frame_ = frame; }
+  // The frame's pairs the next detect() returns, as recorded (they must outlive that call); null: none.
+  void set_pairs(const PairList* pairs) { pairs_ = pairs; }
   // The current frame's pairs (the elements are not looked at); Error without a frame that has a
   // pairs block, or past options.max_pairs.
   void detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) override;
@@ -38,7 +38,7 @@ class RecordedPairsDetector final : public Detector {
   [[nodiscard]] std::size_t own_bytes() const override { return 0; }
 
  private:
-  const RecordedFrame* frame_ = nullptr;
+  const PairList* pairs_ = nullptr;
 };
 
 // What `recorded` can do, in the registry's terms: 2D, no trace, no lists (as box2d).
