@@ -33,6 +33,42 @@ TEST(FrameLoop, EmptyUntilASceneIsLoaded) {
   EXPECT_FALSE(loop.begin_drag(0, 0));
 }
 
+// The generation moves whenever the frame shown (or what was found in it) changes, and only then:
+// the views derive trails, flashes and caches from it.
+TEST(FrameLoop, GenerationCountsEveryChangeOfTheShownFrame) {
+  ASSERT_TRUE(kRegistered);
+  FrameLoop loop;
+  const std::uint64_t empty = loop.generation();
+  loop.load_scene_file(scene("default"));
+  std::uint64_t g = loop.generation();
+  EXPECT_GT(g, empty);
+  const auto moved = [&] {
+    const bool m = loop.generation() > g;
+    g = loop.generation();
+    return m;
+  };
+  loop.step();
+  EXPECT_TRUE(moved()) << "step";
+  loop.begin_step();
+  EXPECT_FALSE(moved()) << "a step begun shows the same frame";
+  loop.step();
+  EXPECT_TRUE(moved()) << "the step adopted";
+  EXPECT_EQ(loop.result().frame, 2);
+  loop.show_frame(1);
+  EXPECT_TRUE(moved()) << "a past frame shown";
+  loop.begin_resume();
+  while (!loop.continue_resume(1000)) {
+  }
+  EXPECT_TRUE(moved()) << "resumed";
+  loop.redetect();
+  EXPECT_TRUE(moved()) << "redetect";
+  loop.set_algorithm("sort");
+  EXPECT_TRUE(moved()) << "algorithm";
+  loop.restart();
+  EXPECT_TRUE(moved()) << "restart";
+  EXPECT_FALSE(moved()) << "nothing happened";
+}
+
 TEST(FrameLoop, EveryFrameIsConsistent) {
   ASSERT_TRUE(kRegistered);
   FrameLoop loop;

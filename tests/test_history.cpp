@@ -8,7 +8,7 @@
 #include "support/frame_facts.hpp"
 #include "support/paths.hpp"
 #include "app/frame_loop.hpp"
-#include "app/history.hpp"
+#include "check/history.hpp"
 #include "core/error.hpp"
 #include "io/scene_json.hpp"
 #include "physics/box2d_detector.hpp"

@@ -17,13 +17,14 @@
 #include "app/headless.hpp"
 #include "app/headless_view.hpp"
 #include "app/help.hpp"
-#include "check/recorded_lane.hpp"
 #include "app/scaling_flags.hpp"
+#include "check/recorded_lane.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/plural.hpp"
 #include "io/recording.hpp"
 #include "io/report_json.hpp"
+#include "physics/divergence.hpp"
 
 namespace nbscope {
 
@@ -416,6 +417,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   };
   std::optional<AtTo> at_to;
   std::vector<std::uint64_t> first_pass;
+  Divergence second_pass;  // against the first, as a resume checks against the history (physics/resume.hpp)
   const auto save_at_to = [&] { at_to = AtTo{report.runs, writer ? writer->mark() : RunReportWriter::Mark{}}; };
   if (o.rewind && o.rewind->to == loop.frame()) save_at_to();
 
@@ -449,7 +451,8 @@ int run_headless_loop(const HeadlessOptions& o) {
       else if (loop.frame() > o.rewind->to) first_pass.push_back(loop.report().hash);
     } else if (rewound && loop.frame() > o.rewind->to && !report.rewind->diverged_at) {
       const auto index = static_cast<std::size_t>(loop.frame() - o.rewind->to - 1);
-      if (index < first_pass.size() && first_pass[index] != loop.report().hash) report.rewind->diverged_at = loop.frame();
+      if (index < first_pass.size()) second_pass.compare(loop.frame(), first_pass[index], loop.report().hash);
+      report.rewind->diverged_at = second_pass.first();
     }
     if (o.stop_at_violation && loop.report().violation_count() > 0) {
       report.stopped_at = loop.frame();

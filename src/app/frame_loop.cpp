@@ -73,7 +73,7 @@ const std::vector<FrameReport>& FrameLoop::comparison_reports() const { return i
 void FrameLoop::step() {
   Impl& m = *impl_;
   if (m.settle()) return;  // the frame begin_step() started
-  if (m.resume_world) return;
+  if (m.resume.active()) return;
   if (m.kept) {
     // A past frame: the next one is the run's own, kept (or the live one).
     if (const auto next = neighbour(1)) show_frame(*next);
@@ -107,6 +107,7 @@ const std::vector<ElementSource>& FrameLoop::element_sources() const {
   return impl_->loaded() ? impl_->source().element_sources() : kNone;
 }
 std::int64_t FrameLoop::body_count() const { return impl_->loaded() ? impl_->source().body_count() : 0; }
+std::uint64_t FrameLoop::generation() const { return impl_->generation; }
 const FrameResult& FrameLoop::result() const { return impl_->pipeline.result(); }
 const PairList& FrameLoop::pairs() const { return impl_->pipeline.result().selected().pairs; }
 const Grid& FrameLoop::grid() const { return impl_->pipeline.result().selected().grid; }
@@ -134,18 +135,18 @@ std::shared_ptr<const FrameTrace> FrameLoop::frame_trace() {
 bool FrameLoop::begin_drag(double x, double y) {
   Impl& m = *impl_;
   m.settle();  // the drag acts on the newest frame
-  if (!m.live || m.kept || m.resume_world) return false;
+  if (!m.live || m.kept || m.resume.active()) return false;
   return m.live->begin_drag(x, y);
 }
 void FrameLoop::drag_to(double x, double y) {
   Impl& m = *impl_;
   m.settle();
-  if (m.live && !m.kept && !m.resume_world) m.live->drag_to(x, y);
+  if (m.live && !m.kept && !m.resume.active()) m.live->drag_to(x, y);
 }
 void FrameLoop::end_drag() {
   Impl& m = *impl_;
   m.settle();
-  if (m.live && !m.kept && !m.resume_world) m.live->end_drag();
+  if (m.live && !m.kept && !m.resume.active()) m.live->end_drag();
 }
 bool FrameLoop::dragging() const { return impl_->live && !impl_->kept && impl_->live->dragging(); }
 

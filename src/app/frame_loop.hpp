@@ -7,7 +7,7 @@
 //                    window draws frame k (frame_loop_overlap.cpp); headless keeps the plain step()
 //   load_recording*() / step() -> the same on recorded frames (io/recording.hpp) instead of a world:
 //                    no physics, and the check runs only A==R (there is no Box2D world to compare with)
-//   show_frame()  -> a kept past frame (app/history.hpp) made current: its elements, shapes and Box2D
+//   show_frame()  -> a kept past frame (check/history.hpp) made current: its elements, shapes and Box2D
 //                    sets rebuilt from the history (physics/kept_frame.hpp), detected and checked again
 //   begin_resume() / continue_resume() -> the simulation continued from the shown past frame: a fresh
 //                    world re-simulated from the scene with the same steps and drags arrives at that
@@ -35,7 +35,7 @@
 #include <utility>
 #include <vector>
 
-#include "app/history.hpp"
+#include "check/history.hpp"
 #include "check/faults.hpp"
 #include "check/frame_result.hpp"
 #include "check/report.hpp"
@@ -151,7 +151,7 @@ class FrameLoop {
   // frame before (its physics_ms is the worker's own time).
   [[nodiscard]] bool physics_overlapped() const;
 
-  // ---- history: every frame of the run (app/history.hpp) ----
+  // ---- history: every frame of the run (check/history.hpp) ----
   // The run's frames: a summary of each, and the kept states that show past ones again.
   [[nodiscard]] const FrameHistory& history() const;
   // Bytes of world states to keep; older states are dropped at once when the budget shrinks.
@@ -194,6 +194,10 @@ class FrameLoop {
   [[nodiscard]] std::optional<std::int64_t> resume_divergence() const;
 
   // ---- the current frame ----
+  // Bumped whenever the frame shown or what was found in it changes (load, restart, step, a past
+  // frame shown, redetect or a configuration change, a resume's arrival): views compare it with the
+  // last one they drew, and frame() with theirs (a jump that is not +1 starts trails again).
+  [[nodiscard]] std::uint64_t generation() const;
   [[nodiscard]] std::int64_t frame() const;   // 0 after load, +1 per step(); a recording's own numbers
   [[nodiscard]] double time() const;          // simulated seconds (a recording's own times)
   // Bounding circles at the current poses (element k = fixture k, see element_sources()).

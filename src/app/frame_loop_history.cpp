@@ -34,7 +34,7 @@ void FrameLoop::show_frame(std::int64_t frame) {
   Impl& m = *impl_;
   if (!m.loaded()) return;
   m.settle();  // the newest frame first, so that the run (and its history) is whole
-  if (m.resume_world) throw Error("frame " + std::to_string(frame) + ": the simulation is being resumed; wait or cancel");
+  if (m.resume.active()) throw Error("frame " + std::to_string(frame) + ": the simulation is being resumed; wait or cancel");
   if (!can_show(frame)) {
     const auto first = m.history.first_kept();
     throw Error("frame " + std::to_string(frame) + " is not kept (frames " +
@@ -107,68 +107,38 @@ void FrameLoop::element_path(ElementId k, std::int64_t from, std::int64_t to, st
 void FrameLoop::begin_resume() {
   Impl& m = *impl_;
   m.settle();
-  if (!m.live || !m.kept || m.resume_world) return;
+  if (!m.live || !m.kept || m.resume.active()) return;
   m.live->release_drag();
-  m.resume_target = m.kept->frame();
-  m.resume_world = std::make_unique<PhysicsWorld>(m.scene);
-  m.resume_input = 0;
-  m.divergence.reset();
+  m.resume.begin(m.scene, m.kept->frame());
 }
 
 bool FrameLoop::continue_resume(double budget_ms) {
   Impl& m = *impl_;
-  if (!m.resume_world) return true;
-  PhysicsWorld& w = *m.resume_world;
-  const auto t0 = std::chrono::steady_clock::now();
-  do {
-    if (w.frame() >= m.resume_target) break;
-    // The drags made on this frame, in their order, then the step, as the original run did.
-    const std::vector<DragInput>& drags = m.live->drags();
-    while (m.resume_input < drags.size() && drags[m.resume_input].frame <= w.frame()) replay_drag(w, drags[m.resume_input++]);
-    if (w.frame() + 1 == m.resume_target) m.resume_stale = w.elements();
-    try {
-      w.step();
-    } catch (const Error& e) {
-      const std::int64_t at = w.frame();
-      cancel_resume();  // `w` is gone after this
-      throw Error(m.scene.path + ": resuming at frame " + std::to_string(at) + ": " + e.what());
-    }
-    // Determinism check: every kept frame on the way must come back exactly.
-    if (!m.divergence) {
-      const auto index = m.history.find(w.frame());
-      if (index && m.history.at(*index).hash != 0 && m.history.at(*index).hash != hash_elements(w.elements()))
-        m.divergence = w.frame();
-    }
-  } while (ms_since(t0) < budget_ms);
-  if (w.frame() < m.resume_target) return false;
+  if (!m.resume.active()) return true;
+  // Every kept frame on the way must come back exactly (the hash the history has of it).
+  const auto hash_of = [&m](std::int64_t frame) -> std::uint64_t {
+    const auto index = m.history.find(frame);
+    return index ? m.history.at(*index).hash : 0;
+  };
+  if (!m.resume.advance(budget_ms, m.live->drags(), hash_of)) return false;
 
   // Arrived: the re-simulated world is the live one at K, the later frames are gone.
-  const std::int64_t k = m.resume_target;
+  const std::int64_t k = m.resume.target();
+  std::unique_ptr<PhysicsWorld> world = m.resume.take_world();
   m.kept.reset();
-  m.live->replace_world(std::move(m.resume_world));  // the drags from K on go with the frames
-  m.resume_target = -1;
+  m.live->replace_world(std::move(world));  // the drags from K on go with the frames
   m.history.truncate_after(k);
   m.violations.truncate_after(k);
   m.live->release_drag();  // nobody holds the mouse now; recorded, so a later resume replays it too
-  m.pipeline.remember_previous(k, k > 0 ? m.resume_stale : m.live->world().elements());
+  m.pipeline.remember_previous(k, m.resume.previous_elements());
   m.set_physics_ms(0);
   m.detect_and_check();
   return true;
 }
 
-void FrameLoop::cancel_resume() {
-  impl_->resume_world.reset();
-  impl_->resume_target = -1;
-}
-
-bool FrameLoop::resuming() const { return impl_->resume_world != nullptr; }
-
-std::pair<std::int64_t, std::int64_t> FrameLoop::resume_progress() const {
-  const Impl& m = *impl_;
-  if (!m.resume_world) return {0, 0};
-  return {m.resume_world->frame(), m.resume_target};
-}
-
-std::optional<std::int64_t> FrameLoop::resume_divergence() const { return impl_->divergence; }
+void FrameLoop::cancel_resume() { impl_->resume.cancel(); }
+bool FrameLoop::resuming() const { return impl_->resume.active(); }
+std::pair<std::int64_t, std::int64_t> FrameLoop::resume_progress() const { return impl_->resume.progress(); }
+std::optional<std::int64_t> FrameLoop::resume_divergence() const { return impl_->resume.divergence(); }
 
 }  // namespace nbscope

@@ -14,6 +14,7 @@ FrameLoop::Impl::Impl(FrameLoopOptions o)
 FrameLoop::Impl::~Impl() { wait_for_worker(); }
 
 void FrameLoop::Impl::detect_and_check() {
+  ++generation;  // every change of the shown frame comes through here: load, restart, step, show, redetect, resume
   const std::string what =
       "detection (" + pipeline.options().algorithm + ") and the check of " + grouped(now().size()) + " elements";
   watch.next_phase(frame_number(), [what] { return what; });
@@ -142,9 +143,7 @@ void FrameLoop::Impl::start() {
   physics_overlapped = false;
   if (replay) replay->rewind();
   kept.reset();
-  resume_world.reset();
-  resume_target = -1;
-  divergence.reset();
+  resume.reset();
   history.clear();
   violations.clear();
   if (replay) {

@@ -21,6 +21,7 @@
 #include "io/recording_source.hpp"
 #include "physics/kept_frame.hpp"
 #include "physics/live_world.hpp"
+#include "physics/resume.hpp"
 
 namespace nbscope {
 
@@ -39,12 +40,9 @@ struct FrameLoop::Impl {
   ViolationLog violations;
 
   // ---- resume ----
-  std::unique_ptr<PhysicsWorld> resume_world;  // re-simulating towards resume_target
-  std::int64_t resume_target = -1;
-  std::size_t resume_input = 0;                // next drag to replay
-  Elements resume_stale;                       // the re-simulated frame before the target
-  std::optional<std::int64_t> divergence;
+  Resume resume;  // a fresh world re-simulated to the past frame shown (physics/resume.hpp)
 
+  std::uint64_t generation = 0;     // bumped whenever the shown frame (or what was found in it) changes
   bool physics_overlapped = false;  // the current frame's physics ran on the worker (frame_loop_overlap.cpp)
 
   // The slow-frame note (app/frame_watch.hpp). Declared last: its thread, which may read the world's

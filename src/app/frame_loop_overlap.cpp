@@ -11,7 +11,7 @@ namespace nbscope {
 
 void FrameLoop::begin_step() {
   Impl& m = *impl_;
-  if (m.pending() || !m.live || m.kept || m.resume_world) return;
+  if (m.pending() || !m.live || m.kept || m.resume.active()) return;
   // As step() does: the stale-positions fault detects the next frame on this one's positions.
   m.pipeline.remember_previous(m.live->world().frame() + 1, m.live->world().elements());
   m.watch_physics();  // settle() moves the note on to the detection, and ends it

@@ -140,7 +140,7 @@ struct FrameReport {
 };
 
 // What the timeline shows of one frame of a run: kept for every frame, whether or not the frame
-// itself can still be shown (the history keeps frames within a memory budget, app/history.hpp).
+// itself can still be shown (the history keeps frames within a memory budget, check/history.hpp).
 struct FrameSummary {
   std::int64_t frame = 0;
   double time = 0;

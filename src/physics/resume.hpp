@@ -4,8 +4,7 @@
 //   Resume       a fresh world built from the scene and stepped to K with the drags the run logged
 //                (physics/live_world.hpp), a few frames per call so that the window stays live;
 //                Box2D is deterministic, so it arrives at K bit for bit.
-//   Divergence   the first frame whose element hash differs from the hash the first run had: the
-//                resume's check against the history and `headless --rewind`'s against its first pass.
+// Divergence (physics/divergence.hpp) checks it arrives at K as the run did.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -15,25 +14,10 @@
 #include <utility>
 #include <vector>
 
+#include "physics/divergence.hpp"
 #include "physics/live_world.hpp"
 
 namespace nbscope {
-
-class Divergence {
- public:
-  // Forgets what was found (a new comparison).
-  void clear() { first_.reset(); }
-  // Frame `frame` made again with element hash `now`, where the first run had `before` (0: not
-  // known, not compared); the first frame that differs is kept.
-  void compare(std::int64_t frame, std::uint64_t before, std::uint64_t now) {
-    if (!first_ && before != 0 && before != now) first_ = frame;
-  }
-  // The first frame that differed, or nullopt when every frame compared came back exactly.
-  [[nodiscard]] std::optional<std::int64_t> first() const { return first_; }
-
- private:
-  std::optional<std::int64_t> first_;
-};
 
 class Resume {
  public:
@@ -50,6 +34,8 @@ class Resume {
   void cancel();
   // True between begin() and arriving or cancelling.
   [[nodiscard]] bool active() const { return world_ != nullptr; }
+  // The frame being resumed from (-1 when none).
+  [[nodiscard]] std::int64_t target() const { return target_; }
   // Frames re-simulated so far and the target.
   [[nodiscard]] std::pair<std::int64_t, std::int64_t> progress() const;
   // The first re-simulated frame that differed from the run's (kept after arriving).

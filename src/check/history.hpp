@@ -1,4 +1,4 @@
-// nbscope app: the frame history behind the timeline and the Violations panel.
+// nbscope check: the frame history behind the timeline and the Violations panel.
 //
 //   FrameHistory  one FrameSummary per frame of the run (what the timeline plots), and for the
 //                 newest frames within a memory budget the kept world state that shows the frame

@@ -1,4 +1,4 @@
-#include "app/history.hpp"
+#include "check/history.hpp"
 
 #include <algorithm>
 #include <cassert>
