@@ -135,6 +135,90 @@ int run_without_display(GuiOptions o, FrameLoop& loop, const std::string& scene_
 
 // ---- the window loop --------------------------------------------------------------------------
 
+// What a scripted run (--frames N) measures: where each frame's time went, and --back's frames apart.
+struct ScriptedTimes {
+  Clock::time_point started = Clock::now();
+  double sum_physics = 0, sum_detect = 0, sum_check = 0, sum_view = 0;
+  bool any_overlapped = false;                  // physics ran on the worker thread, beside the drawing
+  double sum_back_show = 0, sum_back_view = 0;  // --back: showing a kept frame again, and drawing it
+
+  // One frame drawn in `view_ms` (`back`: one of --back's).
+  void add(const FrameLoop& loop, double view_ms, bool back) {
+    if (back) sum_back_view += view_ms;
+    sum_view += view_ms;
+    const FrameTimings& t = loop.result().report().timings;
+    sum_physics += t.physics_ms;
+    any_overlapped = any_overlapped || loop.physics_overlapped();
+    sum_detect += t.detection_ms;
+    sum_check += t.check_ms;
+  }
+
+  // The window's frame rate and where the time went. --frames N is N steps, as in headless; the
+  // picture of the start and the redraws while the layout settles are counted apart (the frame rate
+  // is over every frame drawn). A recording's frame 0 is one of its frames, as in headless replay.
+  void print(const GuiOptions& o, const FrameLoop& loop, std::int64_t rendered) const {
+    const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+    const double n = static_cast<double>(rendered + 1);
+    const std::int64_t counted = *o.frames + (loop.replaying() ? 1 : 0);
+    std::fprintf(stderr,
+                 "nbscope: window: %s (+%lld drawn besides: the start and while the layout settles) in %.2f s = "
+                 "%.1f FPS; ms a frame: physics %.2f%s, detection %.2f, check %.2f, render+panels %.2f%s%s\n",
+                 plural(counted, "frame").c_str(), static_cast<long long>(rendered + 1 - counted - o.back), seconds,
+                 n / seconds, sum_physics / n, any_overlapped ? " (overlapped)" : "", sum_detect / n, sum_check / n, sum_view / n,
+                 o.view.screenshot ? "; screenshot " : "", o.view.screenshot ? o.view.screenshot->c_str() : "");
+    if (o.back > 0) {
+      const double k = static_cast<double>(o.back);
+      std::fprintf(stderr,
+                   "nbscope: window: went back %s to frame %lld: %.2f ms a frame (the kept frame rebuilt, "
+                   "detected and checked again %.2f, render+panels %.2f)\n",
+                   plural(o.back, "frame").c_str(), static_cast<long long>(loop.frame()), (sum_back_show + sum_back_view) / k,
+                   sum_back_show / k, sum_back_view / k);
+    }
+  }
+};
+
+// The interactive window's frames of simulation this UI frame: as many steps as the speed owes
+// (`owed_steps` carries the fraction), backwards through the kept frames when playing backwards,
+// then the next frame's step begun so that its physics runs while this frame is drawn.
+void play(FrameLoop& loop, GlView& view, Session& session, double& owed_steps, bool adopted) {
+  owed_steps += session.speed - (adopted ? 1.0 : 0.0);
+  for (; owed_steps >= 1.0; owed_steps -= 1.0) {
+    if (session.play_direction < 0) {
+      // Backwards through the kept frames, until the oldest.
+      bool back = false;
+      try {
+        back = loop.step_back();
+      } catch (const Error& e) {
+        session.error = e.what();
+      }
+      if (!back) {
+        session.paused = true;
+        owed_steps = 0;
+        break;
+      }
+      view.on_frame_shown(loop);
+      continue;
+    }
+    if (!step_forwards(loop, view, session)) {
+      owed_steps = 0;
+      break;
+    }
+  }
+  if (loop.at_end()) session.paused = true;  // a recording plays once; P or R starts it again
+  if (!session.paused && session.play_direction > 0 && owed_steps + session.speed >= 1.0) loop.begin_step();
+}
+
+// What the window leaves for the next start: overlays, panels, scene, algorithm, camera, speed, budget.
+void save_settings(ui::Settings& settings, GlView& view, const FrameLoop& loop, const Session& session) {
+  settings.overlays = view.state().overlays;
+  settings.panels = view.state().panel_open;
+  settings.last_scene = absolute_path(session.scene_path);  // the next start may be elsewhere
+  settings.algorithm = loop.algorithm();
+  settings.camera = ui::camera_to_save(view.camera());
+  settings.speed = session.speed;
+  settings.history_mb = view.state().history_budget_mb;
+}
+
 // `stopped`: the refusal of a world that stopped at load ("" when it runs): the window opens paused
 // on it, with no scene (a scripted run saves that picture and ends with the line).
 int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Settings* settings, const std::string& stopped = "") {
@@ -158,10 +242,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
 
   bool failed = false;
   double owed_steps = 0;
-  const auto started = Clock::now();
-  double sum_physics = 0, sum_detect = 0, sum_check = 0, sum_view = 0;
-  bool any_overlapped = false;  // physics ran on the worker thread, beside the drawing
-  double sum_back_show = 0, sum_back_view = 0;  // --back: showing a kept frame again, and drawing it
+  ScriptedTimes times;
   const std::int64_t scripted_frames = o.frames.value_or(0) + o.back;
   // A scripted run's world that stopped (at load, or a step that failed): drawn until the layout
   // settles, saved, then the run ends with its line. The interactive window just pauses on it.
@@ -211,7 +292,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
         const auto t0 = Clock::now();
         step_back_for_flag(loop);
         view.on_frame_shown(loop);
-        sum_back_show += ms_since(t0);
+        times.sum_back_show += ms_since(t0);
       }
     } else {
       // The step begun last frame is this frame's first (its physics ran while that one was drawn).
@@ -221,46 +302,13 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       if (loop.resuming()) {
         continue_resume(loop, view, session);
       } else if (!session.paused) {
-        owed_steps += session.speed - (adopted ? 1.0 : 0.0);
-        for (; owed_steps >= 1.0; owed_steps -= 1.0) {
-          if (session.play_direction < 0) {
-            // Backwards through the kept frames, until the oldest.
-            bool back = false;
-            try {
-              back = loop.step_back();
-            } catch (const Error& e) {
-              session.error = e.what();
-            }
-            if (!back) {
-              session.paused = true;
-              owed_steps = 0;
-              break;
-            }
-            view.on_frame_shown(loop);
-            continue;
-          }
-          if (!step_forwards(loop, view, session)) {
-            owed_steps = 0;
-            break;
-          }
-        }
-        if (loop.at_end()) session.paused = true;  // a recording plays once; P or R starts it again
-        // The next frame's first step, begun now so that its physics runs while this frame is drawn.
-        if (!session.paused && session.play_direction > 0 && owed_steps + session.speed >= 1.0) loop.begin_step();
+        play(loop, view, session, owed_steps, adopted);
       }
     }
     failed = failed || (loop.report().checked && !loop.report().ok());
     const auto view_start = Clock::now();
     requests = view.frame(loop, session, !scripted, static_cast<float>(session.frame_ms / 1000.0));
-    if (scripted) {
-      const double view_ms = ms_since(view_start);
-      if (rendered > *o.frames && rendered <= scripted_frames) sum_back_view += view_ms;
-      sum_view += view_ms;
-      sum_physics += loop.timings().physics_ms;
-      any_overlapped = any_overlapped || loop.physics_overlapped();
-      sum_detect += loop.timings().detection_ms;
-      sum_check += loop.timings().check_ms;
-    }
+    if (scripted) times.add(loop, ms_since(view_start), rendered > *o.frames && rendered <= scripted_frames);
     if (scripted && rendered >= last_drawn) {
       if (!world_error.empty()) {
         // The picture of the stopped world; its line (thrown below) is then the only one on stderr.
@@ -269,28 +317,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       }
       view.check_step();
       if (o.view.screenshot) write_png(*o.view.screenshot, view.screenshot());
-      // What a scripted run measured: the window's frame rate and where the time went. --frames N
-      // is N steps, as in headless; the picture of the start and the redraws while the layout
-      // settles are counted apart (the frame rate is over every frame drawn). A recording's frame
-      // 0 is one of its frames, as in headless replay.
-      const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
-      const double n = static_cast<double>(rendered + 1);
-      const std::int64_t counted = *o.frames + (loop.replaying() ? 1 : 0);
-      std::fprintf(stderr,
-                   "nbscope: window: %s (+%lld drawn besides: the start and while the layout settles) in %.2f s = "
-                   "%.1f FPS; ms a frame: physics %.2f%s, detection %.2f, check %.2f, render+panels %.2f%s%s\n",
-                   plural(counted, "frame").c_str(), static_cast<long long>(rendered + 1 - counted - o.back), seconds,
-                   n / seconds, sum_physics / n, any_overlapped ? " (overlapped)" : "", sum_detect / n, sum_check / n, sum_view / n,
-                   o.view.screenshot ? "; screenshot " : "",
-                   o.view.screenshot ? o.view.screenshot->c_str() : "");
-      if (o.back > 0) {
-        const double k = static_cast<double>(o.back);
-        std::fprintf(stderr,
-                     "nbscope: window: went back %s to frame %lld: %.2f ms a frame (the kept frame rebuilt, "
-                     "detected and checked again %.2f, render+panels %.2f)\n",
-                     plural(o.back, "frame").c_str(), static_cast<long long>(loop.frame()), (sum_back_show + sum_back_view) / k,
-                     sum_back_show / k, sum_back_view / k);
-      }
+      times.print(o, loop, rendered);
       break;
     }
     window.present();
@@ -301,15 +328,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       fps_frames = 0;
     }
   }
-  if (settings != nullptr) {
-    settings->overlays = view.state().overlays;
-    settings->panels = view.state().panel_open;
-    settings->last_scene = absolute_path(session.scene_path);  // the next start may be elsewhere
-    settings->algorithm = loop.algorithm();
-    settings->camera = ui::camera_to_save(view.camera());
-    settings->speed = session.speed;
-    settings->history_mb = view.state().history_budget_mb;
-  }
+  if (settings != nullptr) save_settings(*settings, view, loop, session);
   if (!world_error.empty()) throw Error(world_error);
   return failed ? 1 : 0;
 }

@@ -219,45 +219,7 @@ bool nothing_to_check(const FrameLoop& loop) {
   return true;
 }
 
-// --rewind FROM:TO at frame FROM: back to kept frame TO, the world re-simulated to it (the caller
-// puts the report back as it stood after frame TO: the frames after it run again).
-// --violation N: the run's N-th listed violation's frame shown again, and (drawing) the violation
-// chosen as in the Violations panel.
-void go_to_violation(FrameLoop& loop, std::int64_t n, HeadlessView* view) {
-  const std::vector<Violation>& listed = loop.violation_log().listed();
-  if (static_cast<std::size_t>(n) > listed.size())
-    throw Error("--violation: " + std::to_string(n) + " is past the run's " + plural(static_cast<long long>(listed.size()), "listed violation"));
-  const Violation v = listed[static_cast<std::size_t>(n - 1)];
-  if (!loop.can_show(v.frame))
-    throw Error("--violation: its frame " + std::to_string(v.frame) + " is no longer kept (a larger --history-mb keeps more)");
-  loop.show_frame(v.frame);
-  if (view != nullptr) {
-    view->on_rewound(loop);
-    view->focus_violation(loop, v);
-  }
-}
-
-void rewind(FrameLoop& loop, const HeadlessOptions::Rewind& r, RunReport& report) {
-  if (!loop.can_show(r.to)) {
-    const auto first = loop.history().first_kept();
-    throw Error("--rewind: frame " + std::to_string(r.to) + " is no longer kept (frames " +
-                std::to_string(first.value_or(loop.newest_frame())) + ".." + std::to_string(loop.newest_frame()) +
-                " are; a larger --history-mb keeps more)");
-  }
-  loop.show_frame(r.to);
-  loop.begin_resume();
-  while (!loop.continue_resume(1e9)) {
-  }
-  // Frames up to TO were compared while re-simulating; those after TO are compared as they run again.
-  report.rewind = RunReport::Rewind{r.from, r.to, loop.resume_divergence()};
-}
-
 }  // namespace
-
-void step_back_for_flag(FrameLoop& loop) {
-  if (!loop.step_back())
-    throw Error("--back: frame " + std::to_string(loop.frame()) + " is the oldest kept (a larger --history-mb keeps more)");
-}
 
 HeadlessOptions::Rewind parse_rewind(const std::string& text) {
   const std::size_t colon = text.find(':');
@@ -326,7 +288,10 @@ void check_stop_at_violation(const HeadlessOptions& o) {
   if (o.view.step) throw Error("--step: --stop-at-violation puts the stepper at the violation's operation");
 }
 
-int run_headless_loop(const HeadlessOptions& o) {
+namespace {
+
+// Before any frame runs: every output writable, none the same file as another or as an input.
+void check_headless_paths(const HeadlessOptions& o) {
   if (o.report) check_output_path(*o.report);  // before any frame runs
   if (o.record) check_output_path(*o.record);
   {
@@ -338,10 +303,14 @@ int run_headless_loop(const HeadlessOptions& o) {
     if (o.scaling && *o.scaling != "run") inputs.push_back({"--scaling", *o.scaling});
     check_outputs_distinct(inputs, outputs);
   }
+}
+
+// The run's loop: its history budget, the scene or recording loaded, the algorithms set (`names`: the
+// loop's own first, then those compared beside it; `note` says what was chosen and why).
+std::unique_ptr<FrameLoop> open_headless_loop(const HeadlessOptions& o, std::vector<std::string>& names, std::string& note) {
   check_step_algorithm(o.view, o.algorithm);  // before any frame runs
   check_stop_at_violation(o);
-  std::string note;
-  std::vector<std::string> names = algorithms_of(o.algorithm, 0, o.brute_limit, note, false);
+  names = algorithms_of(o.algorithm, 0, o.brute_limit, note, false);
   FrameLoopOptions lo;
   lo.algorithm = o.algorithm == "all" ? "nbs" : names.front();
   lo.fault = o.fault;
@@ -358,7 +327,8 @@ int run_headless_loop(const HeadlessOptions& o) {
     lo.max_summaries = 16;
     lo.log_violations = false;  // nothing shows the run's violations again (the report has them)
   }
-  FrameLoop loop(lo);  // an unknown algorithm fails here, before the scene is read
+  auto owned = std::make_unique<FrameLoop>(lo);  // an unknown algorithm fails here, before the scene is read
+  FrameLoop& loop = *owned;
   for (const std::string& name : names)
     if (name != kRecordedAlgorithm) make_detector(name);
   if (o.replay) loop.load_recording_file(*o.replay, o.frames);
@@ -379,13 +349,11 @@ int run_headless_loop(const HeadlessOptions& o) {
   if (o.stop_at_violation && nothing_to_check(loop))
     throw Error("--stop-at-violation: " + (o.replay ? *o.replay : o.scene) +
                 " has no elements in any frame (and nothing adds any): there is nothing to check");
-  // The screenshot's context and shaders are set up first, so a bad --gl/--shader-dir/path fails at once.
-  ViewOptions view_options = o.view;
-  // Ids drawn as the recording's own pairs count them (the window does the same).
-  view_options.book_numbering = view_options.book_numbering || (loop.carries_pairs() && loop.pair_base() == 1);
-  if (o.scaling) view_options.scaling = scaling_to_show(*o.scaling, o.scaling_plan, !o.quiet && ::isatty(STDERR_FILENO) == 1);
-  std::unique_ptr<HeadlessView> view = o.view.screenshot ? make_headless_view(view_options, loop) : nullptr;
+  return owned;
+}
 
+// The run's report before its first frame: what runs, on what, checked how.
+RunReport start_report(const HeadlessOptions& o, const FrameLoop& loop, const std::vector<std::string>& names, const std::string& note) {
   RunReport report;
   report.source = o.replay ? "recording" : "scene";
   report.scene_path = o.replay ? *o.replay : o.scene;
@@ -396,9 +364,28 @@ int run_headless_loop(const HeadlessOptions& o) {
   report.scope_note = FrameLoop::scope_note();
   report.note = note;
   // A recording runs its frames (at most --frames); frame 0 is one of them. A scene runs frames 1..N.
-  const std::int64_t frames = o.replay ? loop.recorded_frames() : o.frames;
-  report.frames_requested = frames;
+  report.frames_requested = o.replay ? loop.recorded_frames() : o.frames;
   for (const std::string& name : names) report.runs.push_back(AlgorithmRun{name});
+  return report;
+}
+
+}  // namespace
+
+int run_headless_loop(const HeadlessOptions& o) {
+  check_headless_paths(o);
+  std::vector<std::string> names;
+  std::string note;
+  const std::unique_ptr<FrameLoop> owned = open_headless_loop(o, names, note);
+  FrameLoop& loop = *owned;
+  // The screenshot's context and shaders are set up first, so a bad --gl/--shader-dir/path fails at once.
+  ViewOptions view_options = o.view;
+  // Ids drawn as the recording's own pairs count them (the window does the same).
+  view_options.book_numbering = view_options.book_numbering || (loop.carries_pairs() && loop.pair_base() == 1);
+  if (o.scaling) view_options.scaling = scaling_to_show(*o.scaling, o.scaling_plan, !o.quiet && ::isatty(STDERR_FILENO) == 1);
+  std::unique_ptr<HeadlessView> view = o.view.screenshot ? make_headless_view(view_options, loop) : nullptr;
+
+  RunReport report = start_report(o, loop, names, note);
+  const std::int64_t frames = report.frames_requested;
   // Each frame's report is aggregated, and streamed to --report, as it is made: nothing per frame stays in memory.
   std::unique_ptr<RunReportWriter> writer = o.report ? std::make_unique<RunReportWriter>(*o.report, names.size()) : nullptr;
   const auto add_frame = [&] {
@@ -459,7 +446,7 @@ int run_headless_loop(const HeadlessOptions& o) {
       break;
     }
     if (o.rewind && !rewound && loop.frame() == o.rewind->from) {
-      rewind(loop, *o.rewind, report);
+      rewind_for_flag(loop, *o.rewind, report);
       report.runs = at_to->runs;
       if (writer) writer->back_to(at_to->mark);
       rewound = true;

@@ -401,15 +401,13 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
                                      : "Open the Stepper (View menu) to see the operation that decided this pair.";
   sim.scene_insets = host_.insets(state_);
   sim.hide_timings = hide_timings_;
-  sim.timings.physics_ms = report.timings.physics_ms;
-  sim.timings.physics_overlapped = loop.physics_overlapped();
-  sim.timings.detect_ms = report.timings.detection_ms;
-  sim.timings.check_ms = report.timings.check_ms;
-  sim.timings.trace_ms = cost_.trace_ms;
-  sim.timings.overlay_ms = cost_.overlay_ms;
-  sim.timings.render_ms = cost_.render_ms;
-  sim.timings.ui_ms = cost_.ui_ms;  // last frame's: this one is being measured
-  sim.timings.frame_ms = session.frame_ms;
+  sim.timings = report.timings;
+  sim.drawing.physics_overlapped = loop.physics_overlapped();
+  sim.drawing.trace_ms = cost_.trace_ms;
+  sim.drawing.overlay_ms = cost_.overlay_ms;
+  sim.drawing.render_ms = cost_.render_ms;
+  sim.drawing.ui_ms = cost_.ui_ms;  // last frame's: this one is being measured
+  sim.drawing.frame_ms = session.frame_ms;
   sim.fps = session.fps;
   sim.frame_history_ms = frame_history_;
   sim.render_stats = &renderer_->stats();

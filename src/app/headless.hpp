@@ -13,6 +13,9 @@
 
 namespace nbscope {
 
+class HeadlessView;
+struct RunReport;
+
 class FrameLoop;
 
 struct HeadlessOptions {
@@ -53,6 +56,12 @@ void check_stop_at_violation(const HeadlessOptions& options);
 // One frame back through `loop`'s history for --back (headless and the window alike); Error when
 // the frame shown is the oldest kept.
 void step_back_for_flag(FrameLoop& loop);
+// --violation N: the run's N-th listed violation's frame shown again, and (`view`, when drawing) the
+// violation chosen as in the Violations panel. Error when there is none or it is no longer kept.
+void go_to_violation(FrameLoop& loop, std::int64_t n, HeadlessView* view);
+// --rewind FROM:TO at frame FROM: back to kept frame TO, the world re-simulated to it, the resume's
+// divergence into report.rewind (the caller puts the report back as it stood after frame TO).
+void rewind_for_flag(FrameLoop& loop, const HeadlessOptions::Rewind& rewind, RunReport& report);
 // "FROM:TO" of --rewind; Error names the flag and what is wrong.
 HeadlessOptions::Rewind parse_rewind(const std::string& text);
 

@@ -31,17 +31,15 @@ namespace nbscope::ui {
 // One algorithm's cost this frame.
 struct AlgorithmStat {
   std::string name;
-  double detect_ms = 0;
+  double detection_ms = 0;
   std::size_t bytes = 0;  // the detector's own arrays
   std::size_t pairs = 0;
 };
 
-// Where one frame's time went, in milliseconds.
-struct FrameTimings {
-  double physics_ms = 0;
+// Where the window's own part of a frame's time went, in milliseconds (the pipeline's part, physics,
+// detection and check, is FrameTimings, check/report.hpp).
+struct DrawTimings {
   bool physics_overlapped = false;  // the physics ran on a worker thread while the frame before was drawn
-  double detect_ms = 0;
-  double check_ms = 0;
   double trace_ms = 0;    // the traced detection for the list overlay
   double overlay_ms = 0;  // building the overlays (CPU)
   double render_ms = 0;   // submitting the scene to GL
@@ -103,7 +101,8 @@ struct SimView {
   render::ScreenInsets scene_insets;  // pixels the panels cover at each edge (last frame)
 
   bool hide_timings = false;  // reproducible screenshots: no wall-clock numbers
-  FrameTimings timings;
+  FrameTimings timings;  // the frame's pipeline: physics, detection, check
+  DrawTimings drawing;   // the window's own work on it
   double fps = 0;
   std::vector<float> frame_history_ms;  // oldest first
 

@@ -52,7 +52,7 @@ class StatsPanel final : public Panel {
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(a.name.c_str());
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(format_ms(s, a.detect_ms).c_str());
+        ImGui::TextUnformatted(format_ms(s, a.detection_ms).c_str());
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(format_bytes(a.bytes).c_str());
         ImGui::TableNextColumn();
@@ -93,20 +93,20 @@ class StatsPanel final : public Panel {
       return;
     }
     if (s.fps > 0)
-      ImGui::Text("%.1f FPS   frame %s ms", s.fps, format_ms(s, s.timings.frame_ms).c_str());
+      ImGui::Text("%.1f FPS   frame %s ms", s.fps, format_ms(s, s.drawing.frame_ms).c_str());
     else
       ImGui::TextUnformatted("off-screen frame (no FPS)");
     if (ImGui::BeginTable("split", 2)) {
       const std::pair<const char*, double> rows[] = {
-          {"physics", s.timings.physics_ms}, {"detection", s.timings.detect_ms}, {"check", s.timings.check_ms},
-          {"trace (lists)", s.timings.trace_ms}, {"overlays", s.timings.overlay_ms}, {"render", s.timings.render_ms},
-          {"panels", s.timings.ui_ms}};
+          {"physics", s.timings.physics_ms}, {"detection", s.timings.detection_ms}, {"check", s.timings.check_ms},
+          {"trace (lists)", s.drawing.trace_ms}, {"overlays", s.drawing.overlay_ms}, {"render", s.drawing.render_ms},
+          {"panels", s.drawing.ui_ms}};
       for (const auto& [name, ms] : rows) {
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(name);
         ImGui::TableNextColumn();
         // Physics stepped on a worker thread while the frame before was drawn: not in this frame's sum.
-        const bool overlapped = &ms == &rows[0].second && s.timings.physics_overlapped;
+        const bool overlapped = &ms == &rows[0].second && s.drawing.physics_overlapped;
         ImGui::Text("%s ms%s", format_ms(s, ms).c_str(), overlapped ? " (overlapped)" : "");
       }
       ImGui::EndTable();
