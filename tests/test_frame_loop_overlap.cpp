@@ -30,8 +30,8 @@ void compare_runs(const std::string& name, int frames, FrameLoopOptions options,
                   const std::function<void(FrameLoop&, int)>& on_frame = {}) {
   SCOPED_TRACE(name);
   FrameLoop plain(options), overlapped(options);
-  plain.load_scene_file(scene(name));
-  overlapped.load_scene_file(scene(name));
+  load_scene_file(plain, scene(name));
+  load_scene_file(overlapped, scene(name));
   expect_same_frame(facts_of(plain), facts_of(overlapped));
   for (int k = 1; k <= frames; ++k) {
     if (on_frame) {
@@ -40,17 +40,17 @@ void compare_runs(const std::string& name, int frames, FrameLoopOptions options,
     }
     plain.step();
     overlapped.begin_step();
-    ASSERT_TRUE(overlapped.step_pending());
+    ASSERT_TRUE(overlapped.source().step_pending());
     overlapped.step();
-    ASSERT_FALSE(overlapped.step_pending());
-    EXPECT_TRUE(overlapped.physics_overlapped());
-    EXPECT_FALSE(plain.physics_overlapped());
-    EXPECT_GE(overlapped.timings().physics_ms, 0);
+    ASSERT_FALSE(overlapped.source().step_pending());
+    EXPECT_TRUE(overlapped.source().physics_overlapped());
+    EXPECT_FALSE(plain.source().physics_overlapped());
+    EXPECT_GE(overlapped.result().report().timings.physics_ms, 0);
     expect_same_frame(facts_of(plain), facts_of(overlapped));
     if (::testing::Test::HasFailure()) return;
   }
-  EXPECT_EQ(plain.history().size(), overlapped.history().size());
-  EXPECT_EQ(plain.violation_log().total(), overlapped.violation_log().total());
+  EXPECT_EQ(plain.history().frames().size(), overlapped.history().frames().size());
+  EXPECT_EQ(plain.history().violation_log().total(), overlapped.history().violation_log().total());
 }
 
 // Circles, boxes and polygons, emitters (default.json adds bodies as it runs), a pile.
@@ -65,9 +65,9 @@ TEST(FrameLoopOverlap, SameFramesWithEveryFaultAndAComparisonLane) {
     FrameLoopOptions options;
     options.fault = fault;
     compare_runs("default", 25, options, [](FrameLoop& loop, int k) {
-      if (k == 0) loop.set_comparison_algorithms({"screen", "box2d"});
-      if (k == 10) loop.set_checks_enabled(false);
-      if (k == 15) loop.set_checks_enabled(true);
+      if (k == 0) loop.pipeline().set_comparison_algorithms({"screen", "box2d"});
+      if (k == 10) loop.pipeline().set_checks_enabled(false);
+      if (k == 15) loop.pipeline().set_checks_enabled(true);
     });
   }
 }
@@ -75,8 +75,8 @@ TEST(FrameLoopOverlap, SameFramesWithEveryFaultAndAComparisonLane) {
 // A drag made while the step is in flight acts on the newest frame, as it does between plain steps.
 TEST(FrameLoopOverlap, DragsGiveThePlainRunsFrames) {
   FrameLoop plain, overlapped;
-  plain.load_scene_file(scene("default"));
-  overlapped.load_scene_file(scene("default"));
+  load_scene_file(plain, scene("default"));
+  load_scene_file(overlapped, scene("default"));
   for (int k = 0; k < 20; ++k) {
     plain.step();
     overlapped.begin_step();
@@ -84,7 +84,7 @@ TEST(FrameLoopOverlap, DragsGiveThePlainRunsFrames) {
   }
   // A dynamic body to grab, at the newest frame.
   std::vector<BodyShape> shapes;
-  plain.body_shapes(shapes);
+  plain.source().body_shapes(shapes);
   const auto grabbed = std::find_if(shapes.begin(), shapes.end(),
                                     [](const BodyShape& s) { return s.body_type == BodyType::Dynamic && s.form == ShapeForm::Circle; });
   ASSERT_NE(grabbed, shapes.end());
@@ -95,19 +95,19 @@ TEST(FrameLoopOverlap, DragsGiveThePlainRunsFrames) {
     // step runs adopts it first, so it lands on the same frame.
     plain.step();
     if (k == 0) {
-      EXPECT_TRUE(plain.begin_drag(at.x, at.y));
-      EXPECT_TRUE(overlapped.begin_drag(at.x, at.y));
+      EXPECT_TRUE(plain.drag().begin(at.x, at.y));
+      EXPECT_TRUE(overlapped.drag().begin(at.x, at.y));
     }
     if (k > 0 && k < 20) {
-      plain.drag_to(at.x + 0.2 * k, at.y + 0.1 * k);
-      overlapped.drag_to(at.x + 0.2 * k, at.y + 0.1 * k);
+      plain.drag().move_to(at.x + 0.2 * k, at.y + 0.1 * k);
+      overlapped.drag().move_to(at.x + 0.2 * k, at.y + 0.1 * k);
     }
     if (k == 20) {
-      plain.end_drag();
-      overlapped.end_drag();
+      plain.drag().end();
+      overlapped.drag().end();
     }
-    if (overlapped.step_pending()) overlapped.step();  // frames without a drag call
-    EXPECT_EQ(plain.dragging(), overlapped.dragging());
+    if (overlapped.source().step_pending()) overlapped.step();  // frames without a drag call
+    EXPECT_EQ(plain.drag().active(), overlapped.drag().active());
     expect_same_frame(facts_of(plain), facts_of(overlapped));
     if (HasFailure()) return;
   }
@@ -117,89 +117,89 @@ TEST(FrameLoopOverlap, DragsGiveThePlainRunsFrames) {
 // underneath is already being stepped to the next.
 TEST(FrameLoopOverlap, WhileTheStepRunsTheCurrentFrameIsShown) {
   FrameLoop loop;
-  loop.load_scene_file(scene("default"));
+  load_scene_file(loop, scene("default"));
   for (int k = 0; k < 10; ++k) loop.step();
   const Facts before = facts_of(loop);
-  const std::size_t kept = loop.history().size();
+  const std::size_t kept = loop.history().frames().size();
   loop.begin_step();
-  ASSERT_TRUE(loop.step_pending());
+  ASSERT_TRUE(loop.source().step_pending());
   expect_same_frame(before, facts_of(loop));
-  EXPECT_EQ(loop.newest_frame(), 10);
-  EXPECT_TRUE(loop.can_show(10));
-  EXPECT_FALSE(loop.can_show(11));
-  EXPECT_EQ(loop.history().size(), kept);
-  EXPECT_EQ(loop.element_sources().size(), static_cast<std::size_t>(before.elements.size()));
-  EXPECT_FALSE(loop.dragging());
+  EXPECT_EQ(loop.history().newest_frame(), 10);
+  EXPECT_TRUE(loop.history().can_show(10));
+  EXPECT_FALSE(loop.history().can_show(11));
+  EXPECT_EQ(loop.history().frames().size(), kept);
+  EXPECT_EQ(loop.source().element_sources().size(), static_cast<std::size_t>(before.elements.size()));
+  EXPECT_FALSE(loop.drag().active());
   std::vector<std::array<double, 2>> path;
-  loop.element_path(0, 0, 10, path);
+  loop.history().element_path(0, 0, 10, path);
   EXPECT_EQ(path.size(), 11u);
   EXPECT_EQ(path.back()[0], before.elements.x[0]);
-  const auto trace = loop.frame_trace();
+  const auto trace = loop.pipeline().frame_trace();
   ASSERT_NE(trace, nullptr);
   EXPECT_EQ(trace->frame, 10);
   EXPECT_TRUE(same_elements(trace->elements, before.elements));
   loop.begin_step();  // already pending: nothing more
-  EXPECT_EQ(loop.frame(), 10);
+  EXPECT_EQ(loop.source().frame(), 10);
   loop.step();
-  EXPECT_EQ(loop.frame(), 11);
-  EXPECT_EQ(loop.history().size(), kept + 1);
-  EXPECT_EQ(loop.newest_frame(), 11);
+  EXPECT_EQ(loop.source().frame(), 11);
+  EXPECT_EQ(loop.history().frames().size(), kept + 1);
+  EXPECT_EQ(loop.history().newest_frame(), 11);
 }
 
 // Calls that need the world adopt the step first: the run stays whole and nothing is lost.
 TEST(FrameLoopOverlap, CallsThatNeedTheWorldAdoptTheStepFirst) {
   FrameLoop plain, loop;
-  plain.load_scene_file(scene("default"));
-  loop.load_scene_file(scene("default"));
+  load_scene_file(plain, scene("default"));
+  load_scene_file(loop, scene("default"));
   for (int k = 0; k < 10; ++k) {
     plain.step();
     loop.step();
   }
   // A new algorithm: the adopted frame is detected with it.
   plain.step();
-  plain.set_algorithm("screen");
+  plain.pipeline().set_algorithm("screen");
   loop.begin_step();
-  loop.set_algorithm("screen");
-  EXPECT_FALSE(loop.step_pending());
+  loop.pipeline().set_algorithm("screen");
+  EXPECT_FALSE(loop.source().step_pending());
   expect_same_frame(facts_of(plain), facts_of(loop));
-  EXPECT_TRUE(loop.physics_overlapped());
+  EXPECT_TRUE(loop.source().physics_overlapped());
   // A past frame: the newest is adopted into the history first.
   loop.begin_step();
   loop.show_frame(5);
-  EXPECT_EQ(loop.frame(), 5);
-  EXPECT_EQ(loop.newest_frame(), 12);
-  EXPECT_TRUE(loop.showing_past());
+  EXPECT_EQ(loop.source().frame(), 5);
+  EXPECT_EQ(loop.history().newest_frame(), 12);
+  EXPECT_TRUE(loop.history().showing_past());
   loop.begin_step();  // nothing on a past frame
-  EXPECT_FALSE(loop.step_pending());
+  EXPECT_FALSE(loop.source().step_pending());
   loop.show_frame(12);
   // Redetect, a fault, a restart, another scene, the destructor: none leaves a step behind.
   loop.begin_step();
   loop.redetect();
-  EXPECT_EQ(loop.frame(), 13);
+  EXPECT_EQ(loop.source().frame(), 13);
   loop.begin_step();
-  loop.set_fault(Fault::DropPair);
-  EXPECT_EQ(loop.frame(), 14);
+  loop.pipeline().set_fault(Fault::DropPair);
+  EXPECT_EQ(loop.source().frame(), 14);
   loop.begin_step();
   loop.restart();
-  EXPECT_FALSE(loop.step_pending());
-  EXPECT_EQ(loop.frame(), 0);
+  EXPECT_FALSE(loop.source().step_pending());
+  EXPECT_EQ(loop.source().frame(), 0);
   loop.begin_step();
-  loop.load_scene_file(scene("pile"));
-  EXPECT_EQ(loop.frame(), 0);
-  EXPECT_EQ(loop.scene().name, "pile");
+  load_scene_file(loop, scene("pile"));
+  EXPECT_EQ(loop.source().frame(), 0);
+  EXPECT_EQ(loop.source().scene().name, "pile");
   loop.begin_step();
   // A scene that is refused keeps the old one, and its step still pending.
-  EXPECT_THROW(loop.load_scene_file(scene("no-such-scene")), Error);
-  EXPECT_TRUE(loop.step_pending());
+  EXPECT_THROW(load_scene_file(loop, scene("no-such-scene")), Error);
+  EXPECT_TRUE(loop.source().step_pending());
   loop.step();
-  EXPECT_EQ(loop.frame(), 1);
+  EXPECT_EQ(loop.source().frame(), 1);
   loop.begin_step();  // destroyed with the step in flight
 }
 
 TEST(FrameLoopOverlap, RecordingsAndEmptyLoopsStepPlainly) {
   FrameLoop empty;
   empty.begin_step();
-  EXPECT_FALSE(empty.step_pending());
+  EXPECT_FALSE(empty.source().step_pending());
   Recording rec;
   rec.path = "two.nbsrec";
   for (int k = 0; k < 2; ++k) {
@@ -215,10 +215,10 @@ TEST(FrameLoopOverlap, RecordingsAndEmptyLoopsStepPlainly) {
   FrameLoop loop;
   loop.load_recording(rec);
   loop.begin_step();
-  EXPECT_FALSE(loop.step_pending());
+  EXPECT_FALSE(loop.source().step_pending());
   loop.step();
-  EXPECT_EQ(loop.frame(), 1);
-  EXPECT_FALSE(loop.physics_overlapped());
+  EXPECT_EQ(loop.source().frame(), 1);
+  EXPECT_FALSE(loop.source().physics_overlapped());
 }
 
 }  // namespace

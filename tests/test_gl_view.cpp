@@ -25,8 +25,8 @@ struct ViewRig {
     options.width = 800;
     options.height = 500;
     options.shader_dir = NBSCOPE_SHADER_DIR;
-    loop.load_scene_file(scene(file));
-    session.scene_path = loop.scene().path;
+    load_scene_file(loop, scene(file));
+    session.scene_path = loop.source().scene().path;
     session.paused = true;
     view = std::make_unique<GlView>(*context, nullptr, options);
     view->on_scene_loaded(loop);
@@ -44,9 +44,9 @@ TEST(GlView, TheStepperAndTheListsOverlayShareOneTraceAndAgreeAtEveryOperation) 
   rig.frames(3);
   ui::StepperSession& s = rig.view->stepper();
   ASSERT_TRUE(s.has_capture()) << s.message();
-  const auto trace = rig.loop.frame_trace();
+  const auto trace = rig.loop.pipeline().frame_trace();
   EXPECT_EQ(s.frame_trace(), trace) << "the stepper ran a detection of its own";
-  const std::size_t n = static_cast<std::size_t>(rig.loop.elements().size());
+  const std::size_t n = static_cast<std::size_t>(rig.loop.source().elements().size());
   for (const std::size_t p : {std::size_t{3}, std::size_t{56}, s.stepper().size()}) {
     s.stepper().seek(p);
     rig.frames(1);
@@ -67,7 +67,7 @@ TEST(GlView, ADetectorWithoutATraceSaysSoInTheStepperPanels) {
   o.overlays = "+lists";
   o.panels = "+stepper,+arrays,+pseudocode";
   ViewRig rig(o, "book-fig-3-15.json");
-  rig.loop.set_algorithm("box2d");
+  rig.loop.pipeline().set_algorithm("box2d");
   rig.frames(2);
   const ui::StepperSession& s = rig.view->stepper();
   EXPECT_FALSE(s.has_capture());
@@ -85,7 +85,7 @@ TEST(GlView, TheArraysPanelAloneHoldsTheTrace) {
   rig.frames(2);
   EXPECT_NO_THROW(rig.view->check_step());
   EXPECT_TRUE(rig.view->stepper().has_capture()) << rig.view->stepper().message();
-  EXPECT_EQ(rig.view->stepper().frame_trace(), rig.loop.frame_trace());
+  EXPECT_EQ(rig.view->stepper().frame_trace(), rig.loop.pipeline().frame_trace());
 }
 
 TEST(GlView, ASelectionSurvivesARestartButNotAnotherScene) {
@@ -98,7 +98,7 @@ TEST(GlView, ASelectionSurvivesARestartButNotAnotherScene) {
   rig.loop.restart();
   rig.view->on_scene_loaded(rig.loop, false);
   EXPECT_EQ(rig.view->state().selected, 5) << "a restart shows the same bodies";
-  rig.loop.load_scene_file(scene("pile.json"));
+  load_scene_file(rig.loop, scene("pile.json"));
   rig.view->on_scene_loaded(rig.loop);
   EXPECT_EQ(rig.view->state().selected, -1) << "element 5 of another scene is another body";
 }

@@ -28,7 +28,7 @@ using testframes::FrameFacts;
 
 // Loads default.json into `loop` and steps it `frames` frames.
 void run_default(FrameLoop& loop, int frames) {
-  loop.load_scene_file(scene("default"));
+  load_scene_file(loop, scene("default"));
   for (int k = 0; k < frames; ++k) loop.step();
 }
 
@@ -56,7 +56,7 @@ TEST(History, AKeptFrameIsTheLiveFrameAgain) {
   for (const char* name : {"default", "mixed-sizes", "pile"}) {
     SCOPED_TRACE(name);
     FrameLoop loop;
-    loop.load_scene_file(scene(name));
+    load_scene_file(loop, scene(name));
     std::map<std::int64_t, FrameFacts> live;
     live[0] = facts_of(loop);
     for (int k = 1; k <= 60; ++k) {
@@ -69,8 +69,8 @@ TEST(History, AKeptFrameIsTheLiveFrameAgain) {
     shown.push_back(1);
     for (const std::int64_t k : shown) {
       loop.show_frame(k);
-      EXPECT_EQ(loop.frame(), k);
-      EXPECT_EQ(loop.showing_past(), k != 60);
+      EXPECT_EQ(loop.source().frame(), k);
+      EXPECT_EQ(loop.history().showing_past(), k != 60);
       expect_same_frame(live[k], facts_of(loop));
     }
   }
@@ -102,29 +102,29 @@ TEST(History, ResumingReproducesTheOriginalRun) {
   for (const char* name : {"default", "pile"}) {
     SCOPED_TRACE(name);
     FrameLoop straight, rewound;
-    straight.load_scene_file(scene(name));
-    rewound.load_scene_file(scene(name));
-    std::vector<std::uint64_t> hashes{straight.report().hash};
+    load_scene_file(straight, scene(name));
+    load_scene_file(rewound, scene(name));
+    std::vector<std::uint64_t> hashes{straight.result().report().hash};
     for (int k = 1; k <= 120; ++k) {
       straight.step();
-      hashes.push_back(straight.report().hash);
+      hashes.push_back(straight.result().report().hash);
     }
     for (int k = 1; k <= 90; ++k) rewound.step();
     rewound.show_frame(30);
-    ASSERT_TRUE(rewound.showing_past());
-    rewound.begin_resume();
-    ASSERT_TRUE(rewound.resuming());
-    while (!rewound.continue_resume(1.0)) {
+    ASSERT_TRUE(rewound.history().showing_past());
+    rewound.resume().begin();
+    ASSERT_TRUE(rewound.resume().active());
+    while (!rewound.resume().advance(1.0)) {
     }
-    EXPECT_FALSE(rewound.showing_past());
-    EXPECT_FALSE(rewound.resume_divergence().has_value());
-    EXPECT_EQ(rewound.frame(), 30);
-    EXPECT_EQ(rewound.newest_frame(), 30);
-    EXPECT_EQ(rewound.history().summaries().back().frame, 30);
-    EXPECT_EQ(rewound.report().hash, hashes[30]);
+    EXPECT_FALSE(rewound.history().showing_past());
+    EXPECT_FALSE(rewound.resume().divergence().has_value());
+    EXPECT_EQ(rewound.source().frame(), 30);
+    EXPECT_EQ(rewound.history().newest_frame(), 30);
+    EXPECT_EQ(rewound.history().frames().summaries().back().frame, 30);
+    EXPECT_EQ(rewound.result().report().hash, hashes[30]);
     for (int k = 31; k <= 120; ++k) {
       rewound.step();
-      ASSERT_EQ(rewound.report().hash, hashes[static_cast<std::size_t>(k)]) << "frame " << k;
+      ASSERT_EQ(rewound.result().report().hash, hashes[static_cast<std::size_t>(k)]) << "frame " << k;
     }
   }
 }
@@ -134,11 +134,11 @@ TEST(History, ResumingReproducesTheOriginalRun) {
 void drive_with_drag(FrameLoop& loop, int from, int to, int release_at) {
   for (int k = from; k < to; ++k) {
     if (k == 10) {
-      const Elements& e = loop.elements();
-      ASSERT_TRUE(loop.begin_drag(e.x[e.size() - 1], e.y[e.size() - 1]));
+      const Elements& e = loop.source().elements();
+      ASSERT_TRUE(loop.drag().begin(e.x[e.size() - 1], e.y[e.size() - 1]));
     }
-    if (k > 10 && k < release_at) loop.drag_to(static_cast<double>(k) * 0.1, 8.0);
-    if (k == release_at) loop.end_drag();
+    if (k > 10 && k < release_at) loop.drag().move_to(static_cast<double>(k) * 0.1, 8.0);
+    if (k == release_at) loop.drag().end();
     loop.step();
   }
 }
@@ -147,21 +147,21 @@ void drive_with_drag(FrameLoop& loop, int from, int to, int release_at) {
 TEST(History, ResumingReplaysDrags) {
   ASSERT_TRUE(kRegistered);
   FrameLoop straight, rewound;
-  for (FrameLoop* loop : {&straight, &rewound}) loop->load_scene_file(scene("default"));
+  for (FrameLoop* loop : {&straight, &rewound}) load_scene_file(*loop, scene("default"));
   const auto drive = [](FrameLoop& loop, int from, int to) { drive_with_drag(loop, from, to, 30); };
   drive(straight, 0, 80);
   drive(rewound, 0, 60);
   rewound.show_frame(40);
-  rewound.begin_resume();
-  while (!rewound.continue_resume(5.0)) {
+  rewound.resume().begin();
+  while (!rewound.resume().advance(5.0)) {
   }
-  EXPECT_FALSE(rewound.resume_divergence().has_value());
+  EXPECT_FALSE(rewound.resume().divergence().has_value());
   drive(rewound, 40, 80);
-  EXPECT_EQ(rewound.report().hash, straight.report().hash);
+  EXPECT_EQ(rewound.result().report().hash, straight.result().report().hash);
   // The drag mattered: without it frame 80 is another.
   FrameLoop undisturbed;
   run_default(undisturbed, 80);
-  EXPECT_NE(undisturbed.report().hash, straight.report().hash);
+  EXPECT_NE(undisturbed.result().report().hash, straight.result().report().hash);
 }
 
 // Leaving the live frame while a body is held lets it go, as the user's own release would, and a
@@ -169,24 +169,24 @@ TEST(History, ResumingReplaysDrags) {
 TEST(History, ADragHeldWhenGoingBackIsReleasedAndReplayed) {
   ASSERT_TRUE(kRegistered);
   FrameLoop straight, viewer;
-  for (FrameLoop* loop : {&straight, &viewer}) loop->load_scene_file(scene("default"));
+  for (FrameLoop* loop : {&straight, &viewer}) load_scene_file(*loop, scene("default"));
   drive_with_drag(straight, 0, 60, 20);  // let go on frame 20
   drive_with_drag(viewer, 0, 20, 20);    // still holding the body on frame 20
-  ASSERT_TRUE(viewer.dragging());
+  ASSERT_TRUE(viewer.drag().active());
   viewer.show_frame(15);  // still holding the body: it is let go at frame 20
-  EXPECT_FALSE(viewer.dragging());
+  EXPECT_FALSE(viewer.drag().active());
   viewer.show_frame(20);
-  EXPECT_FALSE(viewer.dragging());
+  EXPECT_FALSE(viewer.drag().active());
   for (int k = 20; k < 60; ++k) viewer.step();
-  EXPECT_EQ(viewer.report().hash, straight.report().hash);
+  EXPECT_EQ(viewer.result().report().hash, straight.result().report().hash);
   // Resumed from frame 30, the re-simulation replays the drag and its release.
   viewer.show_frame(30);
-  viewer.begin_resume();
-  while (!viewer.continue_resume(5.0)) {
+  viewer.resume().begin();
+  while (!viewer.resume().advance(5.0)) {
   }
-  EXPECT_FALSE(viewer.resume_divergence().has_value());
+  EXPECT_FALSE(viewer.resume().divergence().has_value());
   for (int k = 30; k < 60; ++k) viewer.step();
-  EXPECT_EQ(viewer.report().hash, straight.report().hash);
+  EXPECT_EQ(viewer.result().report().hash, straight.result().report().hash);
 }
 
 // Switching the checks off does not erase what they found: the run's violations stay listed.
@@ -196,14 +196,14 @@ TEST(History, ChecksSwitchedOffKeepTheRunsViolations) {
   o.fault = Fault::DropPair;
   FrameLoop loop(o);
   run_default(loop, 10);
-  const std::int64_t total = loop.violation_log().total();
+  const std::int64_t total = loop.history().violation_log().total();
   ASSERT_GT(total, 0);
-  loop.set_checks_enabled(false);
-  EXPECT_EQ(loop.violation_log().total(), total);
+  loop.pipeline().set_checks_enabled(false);
+  EXPECT_EQ(loop.history().violation_log().total(), total);
   loop.show_frame(5);
-  EXPECT_EQ(loop.violation_log().total(), total);
-  EXPECT_TRUE(loop.history().at(5).checked);
-  EXPECT_GT(loop.history().at(5).violations, 0);
+  EXPECT_EQ(loop.history().violation_log().total(), total);
+  EXPECT_TRUE(loop.history().frames().at(5).checked);
+  EXPECT_GT(loop.history().frames().at(5).violations, 0);
 }
 
 TEST(History, ThePastIsReadOnlyUntilResumed) {
@@ -211,30 +211,30 @@ TEST(History, ThePastIsReadOnlyUntilResumed) {
   FrameLoop loop;
   run_default(loop, 20);
   loop.show_frame(5);
-  const Elements& e = loop.elements();
-  EXPECT_FALSE(loop.begin_drag(e.x[e.size() - 1], e.y[e.size() - 1]));  // resume first
+  const Elements& e = loop.source().elements();
+  EXPECT_FALSE(loop.drag().begin(e.x[e.size() - 1], e.y[e.size() - 1]));  // resume first
   loop.step();  // moves through the kept frames, simulates nothing
-  EXPECT_EQ(loop.frame(), 6);
-  EXPECT_EQ(loop.newest_frame(), 20);
+  EXPECT_EQ(loop.source().frame(), 6);
+  EXPECT_EQ(loop.history().newest_frame(), 20);
   loop.show_frame(20);
-  EXPECT_FALSE(loop.showing_past());
+  EXPECT_FALSE(loop.history().showing_past());
   loop.step();
-  EXPECT_EQ(loop.newest_frame(), 21);
+  EXPECT_EQ(loop.history().newest_frame(), 21);
 }
 
 TEST(History, TheBudgetDropsTheOldestStatesOnly) {
   ASSERT_TRUE(kRegistered);
   FrameLoop loop;
   run_default(loop, 50);
-  const std::size_t all = loop.history().bytes();
-  loop.set_history_budget(all / 4);
-  EXPECT_LE(loop.history().bytes(), all / 4 + 51 * sizeof(FrameSummary));
-  EXPECT_EQ(loop.history().size(), 51u);  // every summary stays
-  const auto first = loop.history().first_kept();
+  const std::size_t all = loop.history().frames().bytes();
+  loop.history().set_budget(all / 4);
+  EXPECT_LE(loop.history().frames().bytes(), all / 4 + 51 * sizeof(FrameSummary));
+  EXPECT_EQ(loop.history().frames().size(), 51u);  // every summary stays
+  const auto first = loop.history().frames().first_kept();
   ASSERT_TRUE(first.has_value());
   EXPECT_GT(*first, 0);
-  EXPECT_FALSE(loop.can_show(0));
-  EXPECT_TRUE(loop.can_show(50));
+  EXPECT_FALSE(loop.history().can_show(0));
+  EXPECT_TRUE(loop.history().can_show(50));
   EXPECT_THROW(loop.show_frame(0), Error);
   try {
     loop.show_frame(1);
@@ -242,11 +242,11 @@ TEST(History, TheBudgetDropsTheOldestStatesOnly) {
     EXPECT_NE(std::string(err.what()).find("not kept"), std::string::npos) << err.what();
   }
   loop.show_frame(*first);
-  EXPECT_EQ(loop.neighbour(-1), std::nullopt);  // nothing older can be shown
-  EXPECT_EQ(loop.neighbour(-10), std::nullopt);
-  EXPECT_EQ(loop.neighbour(+3), *first + 3);
-  loop.set_history_budget(0);  // only the newest stays
-  EXPECT_EQ(loop.history().first_kept(), 50);
+  EXPECT_EQ(loop.history().neighbour(-1), std::nullopt);  // nothing older can be shown
+  EXPECT_EQ(loop.history().neighbour(-10), std::nullopt);
+  EXPECT_EQ(loop.history().neighbour(+3), *first + 3);
+  loop.history().set_budget(0);  // only the newest stays
+  EXPECT_EQ(loop.history().frames().first_kept(), 50);
 }
 
 TEST(History, TheViolationLogFollowsTheRun) {
@@ -255,7 +255,7 @@ TEST(History, TheViolationLogFollowsTheRun) {
   o.fault = Fault::DropPair;
   FrameLoop loop(o);
   run_default(loop, 30);
-  const ViolationLog& log = loop.violation_log();
+  const ViolationLog& log = loop.history().violation_log();
   EXPECT_GT(log.total(), 0);
   EXPECT_EQ(log.total(), static_cast<std::int64_t>(log.listed().size()));
   for (std::size_t k = 1; k < log.listed().size(); ++k) EXPECT_LE(log.listed()[k - 1].frame, log.listed()[k].frame);
@@ -263,30 +263,30 @@ TEST(History, TheViolationLogFollowsTheRun) {
   // Showing a frame again checks it again: its violations are replaced, not added.
   loop.show_frame(10);
   EXPECT_EQ(log.total(), total);
-  loop.set_fault(Fault::None);  // frame 10 re-checked without the fault
+  loop.pipeline().set_fault(Fault::None);  // frame 10 re-checked without the fault
   EXPECT_LT(log.total(), total);
   for (const Violation& v : log.listed()) EXPECT_NE(v.frame, 10);
   // Resuming from frame 10 drops the later frames' violations.
-  loop.begin_resume();
-  while (!loop.continue_resume(5.0)) {
+  loop.resume().begin();
+  while (!loop.resume().advance(5.0)) {
   }
   for (const Violation& v : log.listed()) EXPECT_LT(v.frame, 10);
-  EXPECT_EQ(loop.history().summaries().back().frame, 10);
+  EXPECT_EQ(loop.history().frames().summaries().back().frame, 10);
 }
 
 // A replay scrubbed back, frame by frame, shows the pairs and check results it showed played forwards.
 TEST(History, AReplayScrubbedBackShowsWhatItShowedForwards) {
   ASSERT_TRUE(kRegistered);
   FrameLoop source;
-  source.load_scene_file(scene("mixed-sizes"));
+  load_scene_file(source, scene("mixed-sizes"));
   Recording rec;
   rec.path = "mixed.nbsrec";
   for (int k = 0; k <= 40; ++k) {
     if (k > 0) source.step();
     RecordedFrame f;
-    f.number = source.frame();
-    f.time = source.time();
-    f.elements = source.elements();
+    f.number = source.source().frame();
+    f.time = source.source().time();
+    f.elements = source.source().elements();
     rec.frames.push_back(std::move(f));
   }
   FrameLoopOptions o;
@@ -294,26 +294,26 @@ TEST(History, AReplayScrubbedBackShowsWhatItShowedForwards) {
   FrameLoop loop(o);
   loop.load_recording(rec);
   std::map<std::int64_t, std::pair<PairList, std::array<std::int64_t, kInvariantCount>>> forwards;
-  forwards[loop.frame()] = {loop.pairs(), loop.report().broken};
-  while (!loop.at_end()) {
+  forwards[loop.source().frame()] = {loop.result().selected().pairs, loop.result().report().broken};
+  while (!loop.source().at_end()) {
     loop.step();
-    forwards[loop.frame()] = {loop.pairs(), loop.report().broken};
+    forwards[loop.source().frame()] = {loop.result().selected().pairs, loop.result().report().broken};
   }
   ASSERT_EQ(forwards.size(), 41u);
   std::int64_t broken = 0;
   for (std::int64_t k = 40; k >= 0; --k) {
     if (k < 40) {
-      const auto previous = loop.neighbour(-1);
+      const auto previous = loop.history().neighbour(-1);
       ASSERT_TRUE(previous.has_value());
       loop.show_frame(*previous);
     }
-    ASSERT_EQ(loop.frame(), k);
-    EXPECT_EQ(loop.pairs(), forwards[k].first) << "frame " << k;
-    EXPECT_EQ(loop.report().broken, forwards[k].second) << "frame " << k;
-    for (const std::int64_t b : loop.report().broken) broken += b;
+    ASSERT_EQ(loop.source().frame(), k);
+    EXPECT_EQ(loop.result().selected().pairs, forwards[k].first) << "frame " << k;
+    EXPECT_EQ(loop.result().report().broken, forwards[k].second) << "frame " << k;
+    for (const std::int64_t b : loop.result().report().broken) broken += b;
   }
   EXPECT_GT(broken, 0);
-  EXPECT_EQ(loop.neighbour(-1), std::nullopt);
+  EXPECT_EQ(loop.history().neighbour(-1), std::nullopt);
 }
 
 TEST(History, ARecordingIsItsOwnHistory) {
@@ -330,20 +330,20 @@ TEST(History, ARecordingIsItsOwnHistory) {
   }
   FrameLoop loop;
   loop.load_recording(rec);
-  EXPECT_EQ(loop.history().size(), 5u);
-  EXPECT_TRUE(loop.history().at(0).checked);
-  EXPECT_FALSE(loop.history().at(3).checked);  // not shown yet
-  EXPECT_EQ(loop.newest_frame(), 8);
+  EXPECT_EQ(loop.history().frames().size(), 5u);
+  EXPECT_TRUE(loop.history().frames().at(0).checked);
+  EXPECT_FALSE(loop.history().frames().at(3).checked);  // not shown yet
+  EXPECT_EQ(loop.history().newest_frame(), 8);
   loop.show_frame(6);
-  EXPECT_EQ(loop.frame(), 6);
-  EXPECT_TRUE(loop.history().at(3).checked);
-  EXPECT_EQ(loop.neighbour(-1), 4);
-  EXPECT_EQ(loop.neighbour(+5), 8);
-  EXPECT_FALSE(loop.showing_past());  // recorded frames are all "recorded", none is live
-  loop.begin_resume();                // nothing to resume
-  EXPECT_FALSE(loop.resuming());
+  EXPECT_EQ(loop.source().frame(), 6);
+  EXPECT_TRUE(loop.history().frames().at(3).checked);
+  EXPECT_EQ(loop.history().neighbour(-1), 4);
+  EXPECT_EQ(loop.history().neighbour(+5), 8);
+  EXPECT_FALSE(loop.history().showing_past());  // recorded frames are all "recorded", none is live
+  loop.resume().begin();                // nothing to resume
+  EXPECT_FALSE(loop.resume().active());
   std::vector<std::array<double, 2>> path;
-  loop.element_path(1, 0, 8, path);
+  loop.history().element_path(1, 0, 8, path);
   ASSERT_EQ(path.size(), 5u);
   EXPECT_DOUBLE_EQ(path[4][0], 1.4);
 }

@@ -54,10 +54,10 @@ TEST(SceneLabels, NoLabelTouchesAnotherAndNoIdSitsAmongTheAxisNumbers) {
   ASSERT_GE(scenes.size(), 7u);
   for (const auto& path : scenes) {
     FrameLoop loop;
-    loop.load_scene_file(path);
+    load_scene_file(loop, path);
     for (int k = 0; k < 10; ++k) loop.step();
-    const Elements& e = loop.elements();
-    const auto trace = loop.frame_trace();
+    const Elements& e = loop.source().elements();
+    const auto trace = loop.pipeline().frame_trace();
     const std::vector<TracedList> lists =
         trace ? traced_lists(trace->log, static_cast<std::size_t>(e.size())) : std::vector<TracedList>{};
     for (const auto& [w, h] : {std::pair{1280, 720}, std::pair{1024, 640}}) {
@@ -69,7 +69,7 @@ TEST(SceneLabels, NoLabelTouchesAnotherAndNoIdSitsAmongTheAxisNumbers) {
                                           {256, float(h - 100), float(w - 290), float(h)}};
       render::Camera camera;
       camera.set_viewport(w, h);
-      const double d = loop.grid().cell_size;
+      const double d = loop.result().selected().grid.cell_size;
       render::WorldRect box;
       box.min = Eigen::Vector2d((e.x - e.r).minCoeff(), (e.y - e.r).minCoeff()).array() - 0.5 * d;
       box.max = Eigen::Vector2d((e.x + e.r).maxCoeff(), (e.y + e.r).maxCoeff()).array() + 0.5 * d;
@@ -78,8 +78,8 @@ TEST(SceneLabels, NoLabelTouchesAnotherAndNoIdSitsAmongTheAxisNumbers) {
       camera.fit(box, 0.06, fit);
       render::OverlayScene s;
       s.elements = &e;
-      s.grid = &loop.grid();
-      s.pairs = &loop.pairs();
+      s.grid = &loop.result().selected().grid;
+      s.pairs = &loop.result().selected().pairs;
       s.lists = &lists;
       s.insets = insets;
       s.covered = panels;

@@ -103,7 +103,7 @@ int run_without_display(GuiOptions o, FrameLoop& loop, const std::string& scene_
   if (!o.view.screenshot) o.view.screenshot = fallback_screenshot_path(scene_name.empty() ? "scene" : scene_name);
   const std::int64_t frames = o.frames.value_or(120);
   auto view = make_headless_view(o.view, loop);
-  bool failed = loop.report().checked && !loop.report().ok();
+  bool failed = loop.result().report().checked && !loop.result().report().ok();
   for (std::int64_t i = 0; i < frames && stopped.empty(); ++i) {
     try {
       loop.step();
@@ -112,7 +112,7 @@ int run_without_display(GuiOptions o, FrameLoop& loop, const std::string& scene_
       break;
     }
     view->after_step(loop);
-    failed = failed || (loop.report().checked && !loop.report().ok());
+    failed = failed || (loop.result().report().checked && !loop.result().report().ok());
   }
   if (!stopped.empty()) {
     // The picture of the stopped world, then its line as the only one on stderr (exit 2).
@@ -148,7 +148,7 @@ struct ScriptedTimes {
     sum_view += view_ms;
     const FrameTimings& t = loop.result().report().timings;
     sum_physics += t.physics_ms;
-    any_overlapped = any_overlapped || loop.physics_overlapped();
+    any_overlapped = any_overlapped || loop.source().physics_overlapped();
     sum_detect += t.detection_ms;
     sum_check += t.check_ms;
   }
@@ -159,7 +159,7 @@ struct ScriptedTimes {
   void print(const GuiOptions& o, const FrameLoop& loop, std::int64_t rendered) const {
     const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
     const double n = static_cast<double>(rendered + 1);
-    const std::int64_t counted = *o.frames + (loop.replaying() ? 1 : 0);
+    const std::int64_t counted = *o.frames + (loop.source().replaying() ? 1 : 0);
     std::fprintf(stderr,
                  "nbscope: window: %s (+%lld drawn besides: the start and while the layout settles) in %.2f s = "
                  "%.1f FPS; ms a frame: physics %.2f%s, detection %.2f, check %.2f, render+panels %.2f%s%s\n",
@@ -171,7 +171,7 @@ struct ScriptedTimes {
       std::fprintf(stderr,
                    "nbscope: window: went back %s to frame %lld: %.2f ms a frame (the kept frame rebuilt, "
                    "detected and checked again %.2f, render+panels %.2f)\n",
-                   plural(o.back, "frame").c_str(), static_cast<long long>(loop.frame()), (sum_back_show + sum_back_view) / k,
+                   plural(o.back, "frame").c_str(), static_cast<long long>(loop.source().frame()), (sum_back_show + sum_back_view) / k,
                    sum_back_show / k, sum_back_view / k);
     }
   }
@@ -204,7 +204,7 @@ void play(FrameLoop& loop, GlView& view, Session& session, double& owed_steps, b
       break;
     }
   }
-  if (loop.at_end()) session.paused = true;  // a recording plays once; P or R starts it again
+  if (loop.source().at_end()) session.paused = true;  // a recording plays once; P or R starts it again
   if (!session.paused && session.play_direction > 0 && owed_steps + session.speed >= 1.0) loop.begin_step();
 }
 
@@ -213,7 +213,7 @@ void save_settings(ui::Settings& settings, GlView& view, const FrameLoop& loop, 
   settings.overlays = view.state().overlays;
   settings.panels = view.state().panel_open;
   settings.last_scene = absolute_path(session.scene_path);  // the next start may be elsewhere
-  settings.algorithm = loop.algorithm();
+  settings.algorithm = loop.pipeline().algorithm();
   settings.camera = ui::camera_to_save(view.camera());
   settings.speed = session.speed;
   settings.history_mb = view.state().history_budget_mb;
@@ -222,12 +222,12 @@ void save_settings(ui::Settings& settings, GlView& view, const FrameLoop& loop, 
 // `stopped`: the refusal of a world that stopped at load ("" when it runs): the window opens paused
 // on it, with no scene (a scripted run saves that picture and ends with the line).
 int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Settings* settings, const std::string& stopped = "") {
-  const std::string title = loop.has_scene() ? loop.scene().name : std::filesystem::path(session.scene_path).stem().string();
+  const std::string title = loop.source().has_scene() ? loop.source().scene().name : std::filesystem::path(session.scene_path).stem().string();
   render::GlfwWindow window(o.view.width, o.view.height, "nbscope - " + title);
   const bool scripted = o.frames.has_value();
   window.set_vsync(!scripted);
   GlView view(window, window.handle(), o.view);
-  if (loop.has_scene()) view.check_selection(loop);
+  if (loop.source().has_scene()) view.check_selection(loop);
   if (settings != nullptr) {
     if (o.view.overlays.empty()) view.state().overlays = settings->overlays;
     if (o.view.panels.empty()) view.state().panel_open = settings->panels;
@@ -235,7 +235,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   }
   if (o.history_mb) view.state().history_budget_mb = *o.history_mb;
   else if (settings != nullptr) view.state().history_budget_mb = settings->history_mb;
-  loop.set_history_budget(static_cast<std::size_t>(view.state().history_budget_mb) << 20);
+  loop.history().set_budget(static_cast<std::size_t>(view.state().history_budget_mb) << 20);
   view.on_scene_loaded(loop);
   if (settings != nullptr) ui::restore_camera(*settings, absolute_path(session.scene_path), view.camera());
   if (!stopped.empty()) view.state().panel_open[kScenesPanel] = true;  // where the line is shown
@@ -263,7 +263,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   IdlePacer pacer;
   for (std::int64_t rendered = 0; !window.should_close() && !stop_requested(); ++rendered) {
     // Paused with nothing moving: wait for input rather than draw the same frame again.
-    pacer.pace(window, scripted || !session.paused || loop.resuming() || loop.step_pending() || loop.dragging() ||
+    pacer.pace(window, scripted || !session.paused || loop.resume().active() || loop.source().step_pending() || loop.drag().active() ||
                            view.animating() || !(requests == ui::UiRequests{}));
     const auto now = Clock::now();
     session.frame_ms = std::chrono::duration<double, std::milli>(now - last).count();
@@ -296,16 +296,16 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       }
     } else {
       // The step begun last frame is this frame's first (its physics ran while that one was drawn).
-      const bool adopted = loop.step_pending();
+      const bool adopted = loop.source().step_pending();
       if (adopted && !step_forwards(loop, view, session)) owed_steps = 0;
       apply_requests(requests, loop, view, session);
-      if (loop.resuming()) {
+      if (loop.resume().active()) {
         continue_resume(loop, view, session);
       } else if (!session.paused) {
         play(loop, view, session, owed_steps, adopted);
       }
     }
-    failed = failed || (loop.report().checked && !loop.report().ok());
+    failed = failed || (loop.result().report().checked && !loop.result().report().ok());
     const auto view_start = Clock::now();
     requests = view.frame(loop, session, !scripted, static_cast<float>(session.frame_ms / 1000.0));
     if (scripted) times.add(loop, ms_since(view_start), rendered > *o.frames && rendered <= scripted_frames);
@@ -345,18 +345,18 @@ int run_replay_window(const HeadlessOptions& o) {
   loop_options.fault = o.fault;
   loop_options.brute_limit = o.brute_limit;
   FrameLoop loop(loop_options);
-  loop.load_recording_file(*o.replay, o.frames);
+  load_recording_file(loop, *o.replay, o.frames);
   // No --algorithm: a recording that carries the user's pairs opens on them (headless does the same).
-  if (o.algorithm_from_recording && loop.carries_pairs()) loop.set_algorithm(kRecordedAlgorithm);
-  check_step_algorithm(o.view, loop.algorithm());
+  if (o.algorithm_from_recording && loop.source().carries_pairs()) loop.pipeline().set_algorithm(kRecordedAlgorithm);
+  check_step_algorithm(o.view, loop.pipeline().algorithm());
   GuiOptions g;
-  g.algorithm = loop.algorithm();
+  g.algorithm = loop.pipeline().algorithm();
   g.fault = o.fault;
   g.view = o.view;
   // Ids shown as the recording's own pairs count them (Book numbering in the View menu turns it off).
-  g.view.book_numbering = g.view.book_numbering || (loop.carries_pairs() && loop.pair_base() == 1);
+  g.view.book_numbering = g.view.book_numbering || (loop.source().carries_pairs() && loop.source().pair_base() == 1);
   // With a screenshot: play to the last recorded frame, save it, exit (scripted, as gui --frames).
-  if (o.view.screenshot) g.frames = loop.recorded_frames() - 1;
+  if (o.view.screenshot) g.frames = loop.source().recorded_frames() - 1;
   Session session;
   session.scene_path = *o.replay;
   session.scene_files = bundled_scene_files();
@@ -408,7 +408,7 @@ int run_gui(Args& args) {
     stopped = load_scene_or_stop(loop, scene, scene_name);
   }
   if (!ignored.empty()) std::fprintf(stderr, "nbscope: note: %s\n", printable_line(ui::settings_note(settings_file, ignored)).c_str());
-  check_step_algorithm(o.view, loop.algorithm());  // the window and the fallback alike, before any frame
+  check_step_algorithm(o.view, loop.pipeline().algorithm());  // the window and the fallback alike, before any frame
 
   if (!have_display()) return run_without_display(o, loop, scene, scene_name, stopped);
 

@@ -124,8 +124,8 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
   for (const AlgorithmRun& run : report.runs) names += (names.empty() ? "" : ",") + run.algorithm;
   const std::int64_t frames = report.runs.empty() ? 0 : report.runs.front().frames_run;
   // The run's last frame's, not the frame shown at the end (--back, --violation go elsewhere).
-  const std::int64_t elements = frames > 0 ? report.runs.front().last_elements : loop.elements().size();
-  std::string s = std::string(loop.replaying() ? "replay: " : "headless: ") + loop.scene().name + ", " + names + (o.fault == Fault::None ? "" : std::string(", fault ") + fault_name(o.fault)) +
+  const std::int64_t elements = frames > 0 ? report.runs.front().last_elements : loop.source().elements().size();
+  std::string s = std::string(loop.source().replaying() ? "replay: " : "headless: ") + loop.source().scene().name + ", " + names + (o.fault == Fault::None ? "" : std::string(", fault ") + fault_name(o.fault)) +
                   ", " + plural(static_cast<long long>(frames), "frame") + ", " + plural(elements, "element") + ": ";
   std::string failures;
   for (const AlgorithmRun& run : report.runs) {
@@ -133,10 +133,10 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
     failures += (failures.empty() ? "" : "; ") + (report.runs.size() > 1 ? run.algorithm + ": " : std::string()) +
                 plural(run.violations, "violation") + " in " + plural(run.frames_with_violations, "frame") + " (" + broken_text(run) +
                 "), first in frame " + std::to_string(run.first_violation_frame.value_or(-1)) +
-                first_violation_text(run, loop.carries_pairs() ? loop.pair_base() : 0);
+                first_violation_text(run, loop.source().carries_pairs() ? loop.source().pair_base() : 0);
   }
   const std::string every = report.runs.size() > 1 ? " for every algorithm" : "";
-  if (failures.empty() && loop.replaying()) {
+  if (failures.empty() && loop.source().replaying()) {
     s += "A==R held in every frame" + every;
   } else if (failures.empty()) {
     s += "all " + std::to_string(kInvariantCount) + " invariants held in every frame" + every;
@@ -145,7 +145,7 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
   }
   s += " (reference " + refs_text + ")";
   if (report.stopped_at) {
-    const Violation& v = loop.report().violations.front();
+    const Violation& v = loop.result().report().violations.front();
     s += "; stopped at the first violation, frame " + std::to_string(*report.stopped_at) + ": " + invariant_name(v.invariant) +
          " (" + std::to_string(v.pair.i) + ", " + std::to_string(v.pair.j) + ") " + v.what;
   } else if (o.stop_at_violation) {
@@ -159,11 +159,11 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
                               " simulated again are identical to the first run (element hashes)");
   }
   // Recorded frames: say plainly what was not checked rather than let it pass silently.
-  if (loop.replaying()) s += "; A-in-F, T-in-A, AABB-in-cells not checked (recorded frames have no Box2D world)";
+  if (loop.source().replaying()) s += "; A-in-F, T-in-A, AABB-in-cells not checked (recorded frames have no Box2D world)";
   if (!report.note.empty()) s += " (" + report.note + ")";
   char buf[160];
   std::snprintf(buf, sizeof buf, "; ms per frame: physics %.3f, detection", report.runs.empty() ? 0.0 : report.runs.front().physics.mean(report.runs.front().frames_run));
-  s += loop.replaying() ? "; ms per frame: detection" : buf;  // recorded frames have no physics
+  s += loop.source().replaying() ? "; ms per frame: detection" : buf;  // recorded frames have no physics
   double check = 0;
   for (const AlgorithmRun& run : report.runs) {
     std::snprintf(buf, sizeof buf, "%s%s %.3f", &run == &report.runs.front() ? " " : ", ", report.runs.size() > 1 ? run.algorithm.c_str() : "",
@@ -208,13 +208,13 @@ std::vector<std::string> algorithms_of(const std::string& text, std::int64_t ele
 // True when no frame of the loaded scene or recording can have a pair: no elements now, and no
 // emitter (scene) or recorded frame (recording) that brings any.
 bool nothing_to_check(const FrameLoop& loop) {
-  if (loop.elements().size() > 0) return false;
-  if (loop.replaying()) {
-    for (const FrameSummary& f : loop.history().summaries())
+  if (loop.source().elements().size() > 0) return false;
+  if (loop.source().replaying()) {
+    for (const FrameSummary& f : loop.history().frames().summaries())
       if (f.elements > 0) return false;
     return true;
   }
-  for (const GeneratorSpec& g : loop.scene().generators)
+  for (const GeneratorSpec& g : loop.source().scene().generators)
     if (g.kind == GeneratorKind::Emitter && g.count > 0) return false;
   return true;
 }
@@ -331,21 +331,21 @@ std::unique_ptr<FrameLoop> open_headless_loop(const HeadlessOptions& o, std::vec
   FrameLoop& loop = *owned;
   for (const std::string& name : names)
     if (name != kRecordedAlgorithm) make_detector(name);
-  if (o.replay) loop.load_recording_file(*o.replay, o.frames);
-  else loop.load_scene_file(o.scene);
+  if (o.replay) load_recording_file(loop, *o.replay, o.frames);
+  else load_scene_file(loop, o.scene);
   if (o.algorithm == "all") {
-    names = algorithms_of(o.algorithm, loop.elements().size(), o.brute_limit, note, loop.carries_pairs());
-    loop.set_algorithm(names.front());
-  } else if (o.algorithm_from_recording && loop.carries_pairs()) {
+    names = algorithms_of(o.algorithm, loop.source().elements().size(), o.brute_limit, note, loop.source().carries_pairs());
+    loop.pipeline().set_algorithm(names.front());
+  } else if (o.algorithm_from_recording && loop.source().carries_pairs()) {
     // No --algorithm: a recording that carries the user's pairs is replayed to check them.
     names = {std::string(kRecordedAlgorithm)};
     check_step_algorithm(o.view, names.front());
-    loop.set_algorithm(names.front());
+    loop.pipeline().set_algorithm(names.front());
   }
-  if (loop.carries_pairs() && loop.pair_base() != 0)
+  if (loop.source().carries_pairs() && loop.source().pair_base() != 0)
     note += (note.empty() ? "" : "; ") + std::string("element ids are 0-based rows here; the recording numbers its pairs from ") +
-            std::to_string(loop.pair_base());
-  loop.set_comparison_algorithms(std::vector<std::string>(names.begin() + 1, names.end()));
+            std::to_string(loop.source().pair_base());
+  loop.pipeline().set_comparison_algorithms(std::vector<std::string>(names.begin() + 1, names.end()));
   if (o.stop_at_violation && nothing_to_check(loop))
     throw Error("--stop-at-violation: " + (o.replay ? *o.replay : o.scene) +
                 " has no elements in any frame (and nothing adds any): there is nothing to check");
@@ -357,14 +357,14 @@ RunReport start_report(const HeadlessOptions& o, const FrameLoop& loop, const st
   RunReport report;
   report.source = o.replay ? "recording" : "scene";
   report.scene_path = o.replay ? *o.replay : o.scene;
-  report.scene_name = loop.scene().name;
+  report.scene_name = loop.source().scene().name;
   report.fault = fault_name(o.fault);
   report.fault_description = fault_description(o.fault);
-  report.reference_policy = loop.reference_policy();
-  report.scope_note = FrameLoop::scope_note();
+  report.reference_policy = loop.pipeline().reference_policy();
+  report.scope_note = LoopPipeline::scope_note();
   report.note = note;
   // A recording runs its frames (at most --frames); frame 0 is one of them. A scene runs frames 1..N.
-  report.frames_requested = o.replay ? loop.recorded_frames() : o.frames;
+  report.frames_requested = o.replay ? loop.source().recorded_frames() : o.frames;
   for (const std::string& name : names) report.runs.push_back(AlgorithmRun{name});
   return report;
 }
@@ -380,7 +380,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   // The screenshot's context and shaders are set up first, so a bad --gl/--shader-dir/path fails at once.
   ViewOptions view_options = o.view;
   // Ids drawn as the recording's own pairs count them (the window does the same).
-  view_options.book_numbering = view_options.book_numbering || (loop.carries_pairs() && loop.pair_base() == 1);
+  view_options.book_numbering = view_options.book_numbering || (loop.source().carries_pairs() && loop.source().pair_base() == 1);
   if (o.scaling) view_options.scaling = scaling_to_show(*o.scaling, o.scaling_plan, !o.quiet && ::isatty(STDERR_FILENO) == 1);
   std::unique_ptr<HeadlessView> view = o.view.screenshot ? make_headless_view(view_options, loop) : nullptr;
 
@@ -393,8 +393,8 @@ int run_headless_loop(const HeadlessOptions& o) {
       report.runs[r].add(f);
       if (writer) writer->add_frame(r, f);
     };
-    add(0, loop.report());
-    for (std::size_t r = 0; r < loop.comparison_reports().size(); ++r) add(r + 1, loop.comparison_reports()[r]);
+    add(0, loop.result().report());
+    for (std::size_t r = 0; r < loop.pipeline().comparison_reports().size(); ++r) add(r + 1, loop.pipeline().comparison_reports()[r]);
   };
   // --rewind FROM:TO: the report as it stood after frame TO (restored at FROM, as if the frames after
   // TO had not run), and the first pass's element hashes of frames TO+1..FROM to compare the second with.
@@ -406,16 +406,16 @@ int run_headless_loop(const HeadlessOptions& o) {
   std::vector<std::uint64_t> first_pass;
   Divergence second_pass;  // against the first, as a resume checks against the history (physics/resume.hpp)
   const auto save_at_to = [&] { at_to = AtTo{report.runs, writer ? writer->mark() : RunReportWriter::Mark{}}; };
-  if (o.rewind && o.rewind->to == loop.frame()) save_at_to();
+  if (o.rewind && o.rewind->to == loop.source().frame()) save_at_to();
 
   // The recording: the scene's pinned grid, then frame 0 (the initial poses, detected before any step) and every step.
   std::unique_ptr<RecordingWriter> recorder;
   std::optional<InterruptGuard> interrupts;
   if (o.record) {
-    recorder = std::make_unique<RecordingWriter>(*o.record, loop.scene().grid, std::string("nbscope ") + kVersion + " headless --record: scene " + o.scene);
+    recorder = std::make_unique<RecordingWriter>(*o.record, loop.source().scene().grid, std::string("nbscope ") + kVersion + " headless --record: scene " + o.scene);
     g_interrupted = 0;
     interrupts.emplace();
-    recorder->write_frame(loop.frame(), loop.time(), loop.elements());
+    recorder->write_frame(loop.source().frame(), loop.source().time(), loop.source().elements());
   }
   const auto check_interrupt = [&] {
     if (g_interrupted != 0)
@@ -429,23 +429,23 @@ int run_headless_loop(const HeadlessOptions& o) {
     add_frame();
     if (recorder) {
       check_interrupt();
-      recorder->write_frame(loop.frame(), loop.time(), loop.elements());
+      recorder->write_frame(loop.source().frame(), loop.source().time(), loop.source().elements());
     }
     if (view) view->after_step(loop);
     progress.update(k + 1);
     if (o.rewind && !rewound) {
-      if (loop.frame() == o.rewind->to) save_at_to();
-      else if (loop.frame() > o.rewind->to) first_pass.push_back(loop.report().hash);
-    } else if (rewound && loop.frame() > o.rewind->to && !report.rewind->diverged_at) {
-      const auto index = static_cast<std::size_t>(loop.frame() - o.rewind->to - 1);
-      if (index < first_pass.size()) second_pass.compare(loop.frame(), first_pass[index], loop.report().hash);
+      if (loop.source().frame() == o.rewind->to) save_at_to();
+      else if (loop.source().frame() > o.rewind->to) first_pass.push_back(loop.result().report().hash);
+    } else if (rewound && loop.source().frame() > o.rewind->to && !report.rewind->diverged_at) {
+      const auto index = static_cast<std::size_t>(loop.source().frame() - o.rewind->to - 1);
+      if (index < first_pass.size()) second_pass.compare(loop.source().frame(), first_pass[index], loop.result().report().hash);
       report.rewind->diverged_at = second_pass.first();
     }
-    if (o.stop_at_violation && loop.report().violation_count() > 0) {
-      report.stopped_at = loop.frame();
+    if (o.stop_at_violation && loop.result().report().violation_count() > 0) {
+      report.stopped_at = loop.source().frame();
       break;
     }
-    if (o.rewind && !rewound && loop.frame() == o.rewind->from) {
+    if (o.rewind && !rewound && loop.source().frame() == o.rewind->from) {
       rewind_for_flag(loop, *o.rewind, report);
       report.runs = at_to->runs;
       if (writer) writer->back_to(at_to->mark);
@@ -471,7 +471,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   if (o.violation > 0) go_to_violation(loop, o.violation, view.get());
   std::string screenshot_line;
   if (view) {
-    if (report.stopped_at) view->focus_violation(loop, loop.report().violations.front());
+    if (report.stopped_at) view->focus_violation(loop, loop.result().report().violations.front());
     screenshot_line = view->write_screenshot(loop);
   }
   if (writer) writer->commit(report);
@@ -482,7 +482,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   if (o.back > 0) {
     char buf[160];
     std::snprintf(buf, sizeof buf, "; went back %s to frame %lld: %.3f ms a frame (kept frame rebuilt, detected, checked)",
-                  plural(o.back, "frame").c_str(), static_cast<long long>(loop.frame()), back_ms / static_cast<double>(o.back));
+                  plural(o.back, "frame").c_str(), static_cast<long long>(loop.source().frame()), back_ms / static_cast<double>(o.back));
     summary += buf;
   }
   std::printf("%s\n", summary.c_str());

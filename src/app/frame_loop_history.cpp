@@ -8,62 +8,30 @@ namespace nbscope {
 
 // ---- history -------------------------------------------------------------------------------
 
-const FrameHistory& FrameLoop::history() const { return impl_->history; }
-void FrameLoop::set_history_budget(std::size_t bytes) {
-  impl_->options.history_budget = bytes;
-  impl_->history.set_budget(bytes);
+const FrameHistory& LoopHistory::frames() const { return s_->history; }
+void LoopHistory::set_budget(std::size_t bytes) {
+  s_->options.history_budget = bytes;
+  s_->history.set_budget(bytes);
 }
-const ViolationLog& FrameLoop::violation_log() const { return impl_->violations; }
-bool FrameLoop::showing_past() const { return impl_->kept != nullptr; }
+const ViolationLog& LoopHistory::violation_log() const { return s_->violations; }
+bool LoopHistory::showing_past() const { return s_->kept != nullptr; }
 
-std::int64_t FrameLoop::newest_frame() const {
-  const Impl& m = *impl_;
+std::int64_t LoopHistory::newest_frame() const {
+  const FrameLoopState& m = *s_;
   if (m.replay) return m.replay->recording().frames.back().number;
   return m.live ? m.live_frame() : 0;
 }
 
-bool FrameLoop::can_show(std::int64_t frame) const {
-  const Impl& m = *impl_;
+bool LoopHistory::can_show(std::int64_t frame) const {
+  const FrameLoopState& m = *s_;
   if (!m.loaded()) return false;
   if (m.live && frame == m.live_frame()) return true;
   const auto index = m.history.find(frame);
   return index && m.history.at(*index).kept && (m.replay || m.history.state(*index));
 }
 
-void FrameLoop::show_frame(std::int64_t frame) {
-  Impl& m = *impl_;
-  if (!m.loaded()) return;
-  m.settle();  // the newest frame first, so that the run (and its history) is whole
-  if (m.resume.active()) throw Error("frame " + std::to_string(frame) + ": the simulation is being resumed; wait or cancel");
-  if (!can_show(frame)) {
-    const auto first = m.history.first_kept();
-    throw Error("frame " + std::to_string(frame) + " is not kept (frames " +
-                (first ? std::to_string(*first) : std::to_string(newest_frame())) + ".." + std::to_string(newest_frame()) +
-                " are; a larger history budget keeps more)");
-  }
-  if (frame == m.frame_number()) return;
-  const double physics_ms = 0;  // nothing was simulated to show it
-  if (m.replay) {
-    m.replay->show(frame);
-  } else if (frame == m.live->world().frame()) {
-    m.kept.reset();
-  } else {
-    m.live->release_drag();  // leaving the live frame: nobody holds a body in the past
-    m.kept = std::make_unique<KeptWorldFrame>(m.live->world(), m.history.state(*m.history.find(frame)));
-  }
-  m.set_physics_ms(physics_ms);
-  m.detect_and_check();
-}
-
-bool FrameLoop::step_back() {
-  const auto previous = neighbour(-1);
-  if (!previous) return false;
-  show_frame(*previous);
-  return true;
-}
-
-std::optional<std::int64_t> FrameLoop::neighbour(std::int64_t delta) const {
-  const Impl& m = *impl_;
+std::optional<std::int64_t> LoopHistory::neighbour(std::int64_t delta) const {
+  const FrameLoopState& m = *s_;
   if (!m.loaded() || delta == 0 || m.history.empty()) return std::nullopt;
   const auto here = m.history.find(m.frame_number());
   if (!here) return std::nullopt;
@@ -76,9 +44,9 @@ std::optional<std::int64_t> FrameLoop::neighbour(std::int64_t delta) const {
   return m.history.at(static_cast<std::size_t>(index)).frame;
 }
 
-void FrameLoop::element_path(ElementId k, std::int64_t from, std::int64_t to, std::vector<std::array<double, 2>>& out) const {
+void LoopHistory::element_path(ElementId k, std::int64_t from, std::int64_t to, std::vector<std::array<double, 2>>& out) const {
   out.clear();
-  const Impl& m = *impl_;
+  const FrameLoopState& m = *s_;
   if (!m.loaded() || k < 0) return;
   m.wait_for_worker();  // the world's geometry is read below
   // From the first summary at or after `from` (a trail is a few hundred frames of a long history).
@@ -104,16 +72,16 @@ void FrameLoop::element_path(ElementId k, std::int64_t from, std::int64_t to, st
 
 // ---- resume --------------------------------------------------------------------------------
 
-void FrameLoop::begin_resume() {
-  Impl& m = *impl_;
+void LoopResume::begin() {
+  FrameLoopState& m = *s_;
   m.settle();
   if (!m.live || !m.kept || m.resume.active()) return;
   m.live->release_drag();
   m.resume.begin(m.scene, m.kept->frame());
 }
 
-bool FrameLoop::continue_resume(double budget_ms) {
-  Impl& m = *impl_;
+bool LoopResume::advance(double budget_ms) {
+  FrameLoopState& m = *s_;
   if (!m.resume.active()) return true;
   // Every kept frame on the way must come back exactly (the hash the history has of it).
   const auto hash_of = [&m](std::int64_t frame) -> std::uint64_t {
@@ -136,9 +104,9 @@ bool FrameLoop::continue_resume(double budget_ms) {
   return true;
 }
 
-void FrameLoop::cancel_resume() { impl_->resume.cancel(); }
-bool FrameLoop::resuming() const { return impl_->resume.active(); }
-std::pair<std::int64_t, std::int64_t> FrameLoop::resume_progress() const { return impl_->resume.progress(); }
-std::optional<std::int64_t> FrameLoop::resume_divergence() const { return impl_->resume.divergence(); }
+void LoopResume::cancel() { s_->resume.cancel(); }
+bool LoopResume::active() const { return s_->resume.active(); }
+std::pair<std::int64_t, std::int64_t> LoopResume::progress() const { return s_->resume.progress(); }
+std::optional<std::int64_t> LoopResume::divergence() const { return s_->resume.divergence(); }
 
 }  // namespace nbscope

@@ -1,4 +1,4 @@
-// FrameLoop::Impl: loading a frame source, running the shown frame through the pipeline and
+// FrameLoopState: loading a frame source, running the shown frame through the pipeline and
 // recording it in the history (frame_loop_impl.hpp).
 #include "app/frame_loop_impl.hpp"
 
@@ -6,14 +6,14 @@
 
 namespace nbscope {
 
-FrameLoop::Impl::Impl(FrameLoopOptions o)
+FrameLoopState::FrameLoopState(FrameLoopOptions o)
     : options(std::move(o)), pipeline(PipelineOptions{options.algorithm, options.fault, options.checks, options.brute_limit}) {
   history.set_budget(options.history_budget);
   history.set_max_summaries(options.max_summaries);
 }
-FrameLoop::Impl::~Impl() { wait_for_worker(); }
+FrameLoopState::~FrameLoopState() { wait_for_worker(); }
 
-void FrameLoop::Impl::detect_and_check() {
+void FrameLoopState::detect_and_check() {
   ++generation;  // every change of the shown frame comes through here: load, restart, step, show, redetect, resume
   const std::string what =
       "detection (" + pipeline.options().algorithm + ") and the check of " + grouped(now().size()) + " elements";
@@ -29,7 +29,12 @@ void FrameLoop::Impl::detect_and_check() {
   record_frame();
 }
 
-void FrameLoop::Impl::record_frame() {
+void FrameLoopState::redetect() {
+  if (settle()) return;  // a step in flight is adopted, and so detected with what is set now
+  if (loaded()) detect_and_check();
+}
+
+void FrameLoopState::record_frame() {
   const FrameResult& result = pipeline.result();
   const FrameReport& r = result.report();
   FrameSummary s;
@@ -67,7 +72,7 @@ void FrameLoop::Impl::record_frame() {
   if (r.checked && options.log_violations) violations.set_frame(r);
 }
 
-void FrameLoop::Impl::check_recorded_source(bool wanted, const Recording* rec, const std::string& path) {
+void FrameLoopState::check_recorded_source(bool wanted, const Recording* rec, const std::string& path) {
   if (!wanted) return;
   if (rec == nullptr)
     throw Error(std::string(kRecordedAlgorithm) + ": the pairs a recording carries (nbscope replay FILE.nbsrec); the scene " + path +
@@ -77,12 +82,12 @@ void FrameLoop::Impl::check_recorded_source(bool wanted, const Recording* rec, c
                 " carries no pairs (no frame has a 'pairs' block): choose a detector, e.g. --algorithm nbs");
 }
 
-void FrameLoop::Impl::accept_recorded() const {
+void FrameLoopState::accept_recorded() const {
   check_recorded_fault(pipeline.options().fault);
   if (loaded()) check_recorded_source(true, replay ? &replay->recording() : nullptr, scene.path);
 }
 
-void FrameLoop::Impl::build(const Scene& s) {
+void FrameLoopState::build(const Scene& s) {
   check_recorded_source(pipeline.has_recorded_lane(), nullptr, s.path);
   DetectOptions opts;
   opts.grid = s.grid;
@@ -117,7 +122,7 @@ void FrameLoop::Impl::build(const Scene& s) {
   start();
 }
 
-void FrameLoop::Impl::build(std::shared_ptr<const Recording> rec) {
+void FrameLoopState::build(std::shared_ptr<const Recording> rec) {
   check_recorded_source(pipeline.has_recorded_lane(), rec.get(), rec->path);
   discard_step();  // the world it steps goes
   DetectOptions opts;
@@ -138,7 +143,7 @@ void FrameLoop::Impl::build(std::shared_ptr<const Recording> rec) {
   start();
 }
 
-void FrameLoop::Impl::start() {
+void FrameLoopState::start() {
   pipeline.clear_reports();
   physics_overlapped = false;
   if (replay) replay->rewind();
@@ -161,7 +166,7 @@ void FrameLoop::Impl::start() {
   detect_and_check();
 }
 
-Elements FrameLoop::Impl::elements_before(std::int64_t frame) const {
+Elements FrameLoopState::elements_before(std::int64_t frame) const {
   if (replay) return replay->previous_elements();
   const auto index = history.find(frame - 1);
   if (index && history.state(*index)) return KeptWorldFrame(live->world(), history.state(*index)).elements();

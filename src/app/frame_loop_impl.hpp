@@ -4,7 +4,7 @@
 //
 // Who owns what: the frame sources (physics/live_world.hpp, physics/kept_frame.hpp,
 // io/recording_source.hpp) make frames; the pipeline (check/pipeline.hpp) detects and checks them
-// into a FrameResult; the history and the violation log keep the run; Impl coordinates them.
+// into a FrameResult; the history and the violation log keep the run; FrameLoopState coordinates them.
 #pragma once
 #include <algorithm>
 #include <filesystem>
@@ -25,7 +25,7 @@
 
 namespace nbscope {
 
-struct FrameLoop::Impl {
+struct FrameLoopState {
   FrameLoopOptions options;
   Scene scene;
   // The frame sources: the live world for a scene, or a recording (the other null); `kept` when a
@@ -61,10 +61,10 @@ struct FrameLoop::Impl {
     ~Unwatch() { watch.disarm(); }
   };
 
-  explicit Impl(FrameLoopOptions o);
-  ~Impl();
-  Impl(const Impl&) = delete;
-  Impl& operator=(const Impl&) = delete;
+  explicit FrameLoopState(FrameLoopOptions o);
+  ~FrameLoopState();
+  FrameLoopState(const FrameLoopState&) = delete;
+  FrameLoopState& operator=(const FrameLoopState&) = delete;
 
   // True while a step begun by FrameLoop::begin_step() has not been adopted.
   [[nodiscard]] bool pending() const { return live && live->pending(); }
@@ -94,6 +94,8 @@ struct FrameLoop::Impl {
 
   // The shown frame through the pipeline (lanes, faults, check), then into the history.
   void detect_and_check();
+  // The current frame detected and checked again (a step in flight is adopted instead).
+  void redetect();
   // The shown frame's summary into the history (a new live frame is pushed with its kept state; a
   // frame shown again has its counts replaced), and its violations into the run's log.
   void record_frame();

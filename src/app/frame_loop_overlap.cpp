@@ -10,7 +10,7 @@
 namespace nbscope {
 
 void FrameLoop::begin_step() {
-  Impl& m = *impl_;
+  FrameLoopState& m = *impl_;
   if (m.pending() || !m.live || m.kept || m.resume.active()) return;
   // As step() does: the stale-positions fault detects the next frame on this one's positions.
   m.pipeline.remember_previous(m.live->world().frame() + 1, m.live->world().elements());
@@ -18,10 +18,8 @@ void FrameLoop::begin_step() {
   if (!m.live->begin_step()) m.watch.disarm();  // no thread: the next step() steps here as it always did
 }
 
-bool FrameLoop::step_pending() const { return impl_->pending(); }
-bool FrameLoop::physics_overlapped() const { return impl_->physics_overlapped; }
 
-bool FrameLoop::Impl::settle() {
+bool FrameLoopState::settle() {
   if (!pending()) return false;
   const Unwatch unwatch{watch};
   const double physics_ms = live->finish_step();  // rethrows the step's Error; the future is spent either way
@@ -31,7 +29,7 @@ bool FrameLoop::Impl::settle() {
   return true;
 }
 
-void FrameLoop::Impl::discard_step() {
+void FrameLoopState::discard_step() {
   if (live) live->discard_step();
 }
 

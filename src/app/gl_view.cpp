@@ -104,12 +104,12 @@ GlView::~GlView() {
 
 void GlView::fit_camera(const FrameLoop& loop) {
   camera_.set_viewport(context_.width(), context_.height());
-  const Elements& e = loop.elements();
+  const Elements& e = loop.source().elements();
   render::WorldRect box{{0, 0}, {1, 1}};
   if (e.size() > 0) {
     // The elements and half a cell around them: the neighbour cells and the list heads stay in view
     // even when the grid is pinned much larger (the book's 10x10 figure).
-    const double d = loop.grid().dim == 2 ? loop.grid().cell_size : 0.0;
+    const double d = loop.result().selected().grid.dim == 2 ? loop.result().selected().grid.cell_size : 0.0;
     box.min = Eigen::Vector2d((e.x - e.r).minCoeff(), (e.y - e.r).minCoeff()).array() - 0.5 * d;
     box.max = Eigen::Vector2d((e.x + e.r).maxCoeff(), (e.y + e.r).maxCoeff()).array() + 0.5 * d;
   }
@@ -130,7 +130,7 @@ void GlView::refit() {
 
 void GlView::check_selection(const FrameLoop& loop) const {
   if (select_option_ < 0) return;
-  const std::int64_t n = loop.elements().size();
+  const std::int64_t n = loop.source().elements().size();
   const bool book = state_.book_numbering;
   if (!(book ? (select_option_ < 1 || select_option_ > n) : select_option_ >= n)) return;
   const std::string numbered = n == 0                ? ""
@@ -153,19 +153,19 @@ void GlView::check_step() const {
 void GlView::on_scene_loaded(const FrameLoop& loop, bool fit) {
   // Element k of another scene is another body: the selection is kept across a restart only (and
   // for the first scene, where --select chose it).
-  if (!loaded_scene_.empty() && loaded_scene_ != loop.scene().path) {
+  if (!loaded_scene_.empty() && loaded_scene_ != loop.source().scene().path) {
     state_.selected = -1;
     stepper_->focus_element = -1;
   }
-  loaded_scene_ = loop.scene().path;
+  loaded_scene_ = loop.source().scene().path;
   trails_.clear();
   trail_element_ = state_.selected;
-  previous_cells_ = loop.cells();
-  flash_.assign(static_cast<std::size_t>(loop.elements().size()), 0.0f);
+  previous_cells_ = loop.result().selected().cells;
+  flash_.assign(static_cast<std::size_t>(loop.source().elements().size()), 0.0f);
   lists_.clear();
   lists_serial_ = 0;
-  previous_frame_ = loop.frame();
-  if (state_.selected >= loop.elements().size()) state_.selected = -1;
+  previous_frame_ = loop.source().frame();
+  if (state_.selected >= loop.source().elements().size()) state_.selected = -1;
   state_.selected_pair.reset();
   state_.selected_cell.reset();
   state_.current_violation = -1;
@@ -179,7 +179,7 @@ void GlView::on_scene_loaded(const FrameLoop& loop, bool fit) {
 }
 
 void GlView::after_step(const FrameLoop& loop) {
-  const Elements& e = loop.elements();
+  const Elements& e = loop.source().elements();
   // Trails follow the selected element; a new selection starts a new trail.
   if (state_.selected != trail_element_) {
     trails_.clear();
@@ -192,21 +192,21 @@ void GlView::after_step(const FrameLoop& loop) {
     if (t.size() > kTrailPoints) t.erase(t.begin());
   }
   // Flashes: elements whose cell (and so list) changed this frame.
-  const auto& cells = loop.cells();
+  const auto& cells = loop.result().selected().cells;
   flash_.resize(cells.size(), 0.0f);
   for (std::size_t k = 0; k < cells.size(); ++k) {
     flash_[k] *= kFlashDecay;
     if (k < previous_cells_.size() && !(cells[k] == previous_cells_[k])) flash_[k] = 1.0f;
   }
   previous_cells_ = cells;
-  previous_frame_ = loop.frame();
+  previous_frame_ = loop.source().frame();
 }
 
 void GlView::on_frame_shown(const FrameLoop& loop) {
   // A neighbouring frame flashes as a step does; a jump starts the flashes again.
-  if (std::llabs(loop.frame() - previous_frame_) != 1) {
+  if (std::llabs(loop.source().frame() - previous_frame_) != 1) {
     std::fill(flash_.begin(), flash_.end(), 0.0f);
-    previous_cells_ = loop.cells();
+    previous_cells_ = loop.result().selected().cells;
   }
   after_step(loop);
   rebuild_trail(loop);
@@ -218,19 +218,19 @@ void GlView::rebuild_trail(const FrameLoop& loop) {
   trail_element_ = state_.selected;
   if (trail_element_ < 0) return;
   std::vector<std::array<double, 2>> path;
-  loop.element_path(trail_element_, loop.frame() - static_cast<std::int64_t>(kTrailPoints) + 1, loop.frame(), path);
+  loop.history().element_path(trail_element_, loop.source().frame() - static_cast<std::int64_t>(kTrailPoints) + 1, loop.source().frame(), path);
   auto& t = trails_.emplace_back();
   for (const auto& p : path) t.emplace_back(static_cast<float>(p[0]), static_cast<float>(p[1]));
 }
 
 void GlView::focus_violation(const FrameLoop& loop, const Violation& v, bool open_stepper) {
-  const Elements& e = loop.elements();
+  const Elements& e = loop.source().elements();
   if (v.pair.i < 0 || v.pair.j < 0 || v.pair.i >= e.size() || v.pair.j >= e.size()) return;
   state_.selected = v.pair.i;
   state_.selected_pair = v.pair;
   state_.selected_cell = std::array<std::int32_t, 2>{v.cell_i.ix, v.cell_i.iy};
   state_.panel_open[ui::kViolationsTitle] = true;
-  const auto& log = loop.violation_log().listed();
+  const auto& log = loop.history().violation_log().listed();
   state_.current_violation = -1;  // unless it is still listed (the frame was checked again)
   for (std::size_t k = 0; k < log.size(); ++k)
     if (log[k].frame == v.frame && log[k].pair == v.pair && log[k].invariant == v.invariant) {
@@ -282,14 +282,14 @@ bool GlView::stepper_panels_open() const {
 ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_input, float dt) {
   const auto frame_start = Clock::now();
   camera_.set_viewport(context_.width(), context_.height());
-  const Elements& e = loop.elements();
+  const Elements& e = loop.source().elements();
   if (state_.selected >= e.size()) state_.selected = -1;
 
   // The one traced detection of this frame, made when the lists overlay or the stepper wants it.
   cost_.trace_ms = 0;
   auto t0 = Clock::now();
-  const bool stepper_wants = stepper_panels_open() && stepper_->wants_trace(loop.frame(), session.paused);
-  const std::shared_ptr<const FrameTrace> trace = state_.overlays.lists || stepper_wants ? loop.frame_trace() : nullptr;
+  const bool stepper_wants = stepper_panels_open() && stepper_->wants_trace(loop.source().frame(), session.paused);
+  const std::shared_ptr<const FrameTrace> trace = state_.overlays.lists || stepper_wants ? loop.pipeline().frame_trace() : nullptr;
   cost_.trace_ms = ms_since(t0);
   update_lists(loop, trace);
   t0 = Clock::now();
@@ -301,10 +301,10 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
 
   render::OverlayScene scene;
   scene.elements = &e;
-  scene.grid = &loop.grid();
+  scene.grid = &loop.result().selected().grid;
   scene.shapes = shapes_;
   scene.shape_points = shape_points_;
-  scene.pairs = &loop.pairs();
+  scene.pairs = &loop.result().selected().pairs;
   scene.checks = &checks_;
   scene.lists = state_.overlays.lists ? &lists_ : nullptr;
   scene.selected = state_.selected;
@@ -316,7 +316,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   scene.insets = host_.insets(state_);  // last frame's panels: labels keep to the part of the view they leave free
   scene.covered = host_.covered();
   scene.book_numbering = state_.book_numbering;
-  if (loop.dragging() && state_.selected >= 0 && state_.mouse_world)
+  if (loop.drag().active() && state_.selected >= 0 && state_.mouse_world)
     scene.drag = std::array<render::Vec2, 2>{
         render::Vec2(static_cast<float>(e.x[state_.selected]), static_cast<float>(e.y[state_.selected])),
         state_.mouse_world->cast<float>()};
@@ -335,31 +335,31 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   // The panels' view of this frame.
   t0 = Clock::now();
   sim.scene_path = session.scene_path;
-  sim.scene_name = loop.scene().name;
+  sim.scene_name = loop.source().scene().name;
   sim.scene_files = session.scene_files;
   for (const DetectorInfo& d : detector_infos())
     if (d.dim2) sim.detectors.push_back(d.name);
   sim.algorithms = sim.detectors;
-  if (loop.carries_pairs()) sim.algorithms.emplace_back(kRecordedAlgorithm);  // the recording's own pairs, last
-  sim.algorithm = loop.algorithm();
+  if (loop.source().carries_pairs()) sim.algorithms.emplace_back(kRecordedAlgorithm);  // the recording's own pairs, last
+  sim.algorithm = loop.pipeline().algorithm();
   sim.error = session.error;
   sim.paused = session.paused;
-  sim.time_step = loop.scene().time_step;
+  sim.time_step = loop.source().scene().time_step;
   sim.speed = session.speed;
-  sim.frame = loop.frame();
-  sim.sim_time = loop.time();
-  sim.bodies = loop.body_count();
+  sim.frame = loop.source().frame();
+  sim.sim_time = loop.source().time();
+  sim.bodies = loop.source().body_count();
   sim.elements = &e;
-  sim.grid = &loop.grid();
-  sim.pairs = &loop.pairs();
+  sim.grid = &loop.result().selected().grid;
+  sim.pairs = &loop.result().selected().pairs;
   sim.lists = state_.overlays.lists ? &lists_ : nullptr;
   sim.trace = trace;
-  const FrameReport& report = loop.report();
+  const FrameReport& report = loop.result().report();
   sim.algorithm_stats.push_back(
-      {loop.algorithm(), report.timings.detection_ms, loop.detector().own_bytes(), loop.pairs().size()});
+      {loop.pipeline().algorithm(), report.timings.detection_ms, loop.pipeline().detector().own_bytes(), loop.result().selected().pairs.size()});
   if (report.checked)
     sim.algorithm_stats.push_back({"check (R: " + report.reference + ")", report.timings.check_ms, 0,
-                                   loop.reference_pairs().size()});
+                                   loop.result().reference.size()});
   sim.check_ran = report.checked;
   sim.check_ok = report.ok();
   sim.check_box2d = report.box2d_checks;
@@ -373,24 +373,24 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
                                   num(v.cell_j.ix) + "," + num(v.cell_j.iy) + ")");
   }
   sim.violation_lines_more = sim.violation_count - sim.violation_lines.size();
-  if (loop.fault() != Fault::None) {
-    sim.fault_name = fault_name(loop.fault());
-    sim.fault_description = fault_description(loop.fault());
+  if (loop.pipeline().fault() != Fault::None) {
+    sim.fault_name = fault_name(loop.pipeline().fault());
+    sim.fault_description = fault_description(loop.pipeline().fault());
   }
   // The run: its frames for the Timeline, its violations for their panel.
-  const FrameHistory& history = loop.history();
+  const FrameHistory& history = loop.history().frames();
   sim.timeline = &history.summaries();
-  sim.newest_frame = loop.newest_frame();
-  sim.showing_past = loop.showing_past();
-  sim.replaying = loop.replaying();
+  sim.newest_frame = loop.history().newest_frame();
+  sim.showing_past = loop.history().showing_past();
+  sim.replaying = loop.source().replaying();
   sim.play_direction = session.play_direction;
   sim.history_bytes = history.bytes();
   sim.history_budget = history.budget();
   sim.history_dropped = history.dropped();
-  sim.resuming = loop.resuming();
-  std::tie(sim.resume_done, sim.resume_target) = loop.resume_progress();
+  sim.resuming = loop.resume().active();
+  std::tie(sim.resume_done, sim.resume_target) = loop.resume().progress();
   sim.resume_note = session.resume_note;
-  const ViolationLog& log = loop.violation_log();
+  const ViolationLog& log = loop.history().violation_log();
   sim.violations = &log.listed();
   sim.violations_total = log.total();
   sim.violations_by_invariant = log.by_invariant();
@@ -402,7 +402,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   sim.scene_insets = host_.insets(state_);
   sim.hide_timings = hide_timings_;
   sim.timings = report.timings;
-  sim.drawing.physics_overlapped = loop.physics_overlapped();
+  sim.drawing.physics_overlapped = loop.source().physics_overlapped();
   sim.drawing.trace_ms = cost_.trace_ms;
   sim.drawing.overlay_ms = cost_.overlay_ms;
   sim.drawing.render_ms = cost_.render_ms;

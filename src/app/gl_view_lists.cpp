@@ -34,7 +34,7 @@ void GlView::update_lists(const FrameLoop& loop, const std::shared_ptr<const Fra
     return;
   const auto t0 = Clock::now();
   lists_built_at_ = t0;
-  lists_ = traced_lists(trace->log, static_cast<std::size_t>(loop.elements().size()), upto);
+  lists_ = traced_lists(trace->log, static_cast<std::size_t>(loop.source().elements().size()), upto);
   lists_serial_ = trace->serial;
   lists_upto_ = upto;
   cost_.trace_ms += ms_since(t0);
@@ -42,7 +42,7 @@ void GlView::update_lists(const FrameLoop& loop, const std::shared_ptr<const Fra
 
 void GlView::describe_lists(const FrameLoop& loop, const std::shared_ptr<const FrameTrace>& trace,
                             render::OverlayScene& scene) const {
-  const Elements& e = loop.elements();
+  const Elements& e = loop.source().elements();
   const bool book = state_.book_numbering;
   const auto num = [&](std::int64_t v) { return std::to_string(ui::shown(v, book)); };
   scene.list_filter = state_.list_filter.value_or(e.size() > render::kRowFilterAbove ? render::ListFilter::Row
@@ -69,15 +69,15 @@ void GlView::describe_lists(const FrameLoop& loop, const std::shared_ptr<const F
   // the stepper's, else the selected element's.
   if (state_.hovered_cell) scene.focus_row = (*state_.hovered_cell)[1];
   else if (stepper_row) scene.focus_row = stepper_row;
-  else if (state_.selected >= 0 && state_.selected < e.size()) scene.focus_row = loop.grid().cell(e.y[state_.selected], 1);
+  else if (state_.selected >= 0 && state_.selected < e.size()) scene.focus_row = loop.result().selected().grid.cell(e.y[state_.selected], 1);
   if (!state_.overlays.lists) return;
   auto& caption = scene.lists_caption;
   if (!trace || lists_.empty()) {
-    const bool has_lists = algorithm_info(loop.algorithm()).has_lists;
+    const bool has_lists = algorithm_info(loop.pipeline().algorithm()).has_lists;
     const std::string why = trace && !trace->refusal.empty() ? trace->refusal
                             : !has_lists && !stepping ? "it keeps no heads or next arrays, only its tests"
                                                       : "";
-    caption.push_back("lists: " + loop.algorithm() + (stepping ? " has built none yet" : " builds none") + (why.empty() ? "" : ":"));
+    caption.push_back("lists: " + loop.pipeline().algorithm() + (stepping ? " has built none yet" : " builds none") + (why.empty() ? "" : ":"));
     // The reason, wrapped to the legend's width.
     std::string line;
     std::size_t start = 0;

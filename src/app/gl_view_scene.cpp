@@ -8,7 +8,7 @@
 namespace nbscope {
 
 void GlView::build_shapes(const FrameLoop& loop) {
-  loop.body_shapes(body_shapes_);
+  loop.source().body_shapes(body_shapes_);
   shapes_.clear();
   shape_points_.clear();
   for (const BodyShape& b : body_shapes_) {
@@ -36,16 +36,16 @@ void GlView::build_checks(const FrameLoop& loop) {
   checks_.confirmed.clear();
   checks_.broadphase_only.clear();
   checks_.violations.clear();
-  const FrameReport& r = loop.report();
+  const FrameReport& r = loop.result().report();
   if (!r.checked) return;
-  const PairList& a = loop.pairs();
+  const PairList& a = loop.result().selected().pairs;
   if (state_.overlays.checks) {
-    const PairList& t = loop.touching_pairs();
+    const PairList& t = loop.result().touching;
     std::set_intersection(a.begin(), a.end(), t.begin(), t.end(), std::back_inserter(checks_.confirmed));
     for (const Violation& v : r.violations) checks_.violations.push_back(v.pair);
   }
   if (state_.overlays.broadphase) {
-    const PairList& f = loop.box2d_pairs();
+    const PairList& f = loop.result().box2d;
     std::set_difference(f.begin(), f.end(), a.begin(), a.end(), std::back_inserter(checks_.broadphase_only));
   }
 }

@@ -25,7 +25,7 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
     session.paused = !session.paused;
     session.play_direction = 1;
     // Playing a recording that has ended starts it again.
-    if (!session.paused && loop.at_end()) {
+    if (!session.paused && loop.source().at_end()) {
       attempt([&] { loop.restart(); });
       view.on_scene_loaded(loop, false);
     }
@@ -36,7 +36,7 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
     session.play_direction = *r.play;
   }
   if (r.speed) session.speed = *r.speed;
-  if (r.algorithm) attempt([&] { loop.set_algorithm(*r.algorithm); });
+  if (r.algorithm) attempt([&] { loop.pipeline().set_algorithm(*r.algorithm); });
   // A new run (another scene, a restart, a new time step): nothing of the old one's playback stays.
   const auto new_run = [&] {
     session.resume_note.clear();
@@ -44,20 +44,20 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
   };
   if (r.scene) {
     attempt([&] {
-      loop.load_scene_file(*r.scene);
+      load_scene_file(loop, *r.scene);
       session.scene_path = *r.scene;
       view.on_scene_loaded(loop);
       new_run();
     });
   }
-  if (r.time_step && !loop.has_scene()) {
+  if (r.time_step && !loop.source().has_scene()) {
     session.error = "no scene runs (pick one in the Scenes panel)";  // a world that stopped at load
-  } else if (r.time_step && loop.replaying()) {
+  } else if (r.time_step && loop.source().replaying()) {
     session.error = "recorded frames: the time step is the recording's";
   } else if (r.time_step) {
     // The time step is part of the scene: the scene restarts with the new one.
     attempt([&] {
-      Scene s = loop.scene();
+      Scene s = loop.source().scene();
       s.time_step = *r.time_step;
       loop.load_scene(s);
       view.on_scene_loaded(loop, false);
@@ -67,39 +67,39 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
   if (r.restart) {
     // A world that stopped at load is built again (and says so again when it stops again); the
     // camera then fits the scene it had not seen.
-    const bool had_scene = loop.has_scene();
-    attempt([&] { had_scene ? loop.restart() : loop.load_scene_file(session.scene_path); });
-    view.on_scene_loaded(loop, !had_scene && loop.has_scene());
+    const bool had_scene = loop.source().has_scene();
+    attempt([&] { had_scene ? loop.restart() : load_scene_file(loop, session.scene_path); });
+    view.on_scene_loaded(loop, !had_scene && loop.source().has_scene());
     new_run();
   }
-  if (r.history_budget_mb) loop.set_history_budget(static_cast<std::size_t>(*r.history_budget_mb) << 20);
-  if (r.cancel_resume) loop.cancel_resume();
-  if (r.resume_here && loop.showing_past()) {
-    loop.begin_resume();
+  if (r.history_budget_mb) loop.history().set_budget(static_cast<std::size_t>(*r.history_budget_mb) << 20);
+  if (r.cancel_resume) loop.resume().cancel();
+  if (r.resume_here && loop.history().showing_past()) {
+    loop.resume().begin();
     session.resume_note.clear();
   }
-  if (r.show_frame && !loop.resuming()) show(*r.show_frame);
-  if (r.frame_delta && !loop.resuming()) {
-    if (const auto to = loop.neighbour(*r.frame_delta)) {
+  if (r.show_frame && !loop.resume().active()) show(*r.show_frame);
+  if (r.frame_delta && !loop.resume().active()) {
+    if (const auto to = loop.history().neighbour(*r.frame_delta)) {
       show(*to);
-    } else if (*r.frame_delta > 0 && !loop.showing_past()) {
+    } else if (*r.frame_delta > 0 && !loop.history().showing_past()) {
       // Forward from the newest frame: one more step, as O does.
       session.paused = true;
       attempt([&] { loop.step(); });
       view.after_step(loop);
     }
   }
-  if (r.step_once && !loop.resuming()) {
+  if (r.step_once && !loop.resume().active()) {
     session.paused = true;
     attempt([&] { loop.step(); });
     view.after_step(loop);
   }
-  if (r.go_to_violation && !loop.resuming()) {
-    const auto& listed = loop.violation_log().listed();
+  if (r.go_to_violation && !loop.resume().active()) {
+    const auto& listed = loop.history().violation_log().listed();
     if (*r.go_to_violation < listed.size()) {
       const Violation v = listed[*r.go_to_violation];  // a copy: showing the frame checks it again
       view.state().current_violation = static_cast<std::int64_t>(*r.go_to_violation);
-      if (loop.can_show(v.frame)) {
+      if (loop.history().can_show(v.frame)) {
         show(v.frame);
         view.focus_violation(loop, v, false);
       } else {
@@ -108,9 +108,9 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
     }
   }
   // (Drags adopt a step in flight first, which may throw as a step does.)
-  if (r.drag_begin) attempt([&] { loop.begin_drag(r.drag_begin->x(), r.drag_begin->y()); });
-  if (r.drag_to) attempt([&] { loop.drag_to(r.drag_to->x(), r.drag_to->y()); });
-  if (r.drag_end) attempt([&] { loop.end_drag(); });
+  if (r.drag_begin) attempt([&] { loop.drag().begin(r.drag_begin->x(), r.drag_begin->y()); });
+  if (r.drag_to) attempt([&] { loop.drag().move_to(r.drag_to->x(), r.drag_to->y()); });
+  if (r.drag_end) attempt([&] { loop.drag().end(); });
 }
 
 bool step_forwards(FrameLoop& loop, GlView& view, Session& session) {
@@ -127,16 +127,16 @@ bool step_forwards(FrameLoop& loop, GlView& view, Session& session) {
 
 void continue_resume(FrameLoop& loop, GlView& view, Session& session) {
   try {
-    if (!loop.continue_resume(25.0)) return;
+    if (!loop.resume().advance(25.0)) return;
   } catch (const Error& e) {
     session.error = e.what();
     session.paused = true;
     return;
   }
-  const std::int64_t k = loop.frame();
-  session.resume_note = loop.resume_divergence()
+  const std::int64_t k = loop.source().frame();
+  session.resume_note = loop.resume().divergence()
                             ? "resumed at " + std::to_string(k) + ": re-simulation DIFFERS from the kept frames from frame " +
-                                  std::to_string(*loop.resume_divergence())
+                                  std::to_string(*loop.resume().divergence())
                             : "resumed at " + std::to_string(k) + " (re-simulated frames matched the kept ones)";
   view.on_frame_shown(loop);
   session.paused = false;

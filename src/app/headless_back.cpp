@@ -18,11 +18,11 @@ namespace nbscope {
 // --violation N: the run's N-th listed violation's frame shown again, and (drawing) the violation
 // chosen as in the Violations panel.
 void go_to_violation(FrameLoop& loop, std::int64_t n, HeadlessView* view) {
-  const std::vector<Violation>& listed = loop.violation_log().listed();
+  const std::vector<Violation>& listed = loop.history().violation_log().listed();
   if (static_cast<std::size_t>(n) > listed.size())
     throw Error("--violation: " + std::to_string(n) + " is past the run's " + plural(static_cast<long long>(listed.size()), "listed violation"));
   const Violation v = listed[static_cast<std::size_t>(n - 1)];
-  if (!loop.can_show(v.frame))
+  if (!loop.history().can_show(v.frame))
     throw Error("--violation: its frame " + std::to_string(v.frame) + " is no longer kept (a larger --history-mb keeps more)");
   loop.show_frame(v.frame);
   if (view != nullptr) {
@@ -32,23 +32,23 @@ void go_to_violation(FrameLoop& loop, std::int64_t n, HeadlessView* view) {
 }
 
 void rewind_for_flag(FrameLoop& loop, const HeadlessOptions::Rewind& r, RunReport& report) {
-  if (!loop.can_show(r.to)) {
-    const auto first = loop.history().first_kept();
+  if (!loop.history().can_show(r.to)) {
+    const auto first = loop.history().frames().first_kept();
     throw Error("--rewind: frame " + std::to_string(r.to) + " is no longer kept (frames " +
-                std::to_string(first.value_or(loop.newest_frame())) + ".." + std::to_string(loop.newest_frame()) +
+                std::to_string(first.value_or(loop.history().newest_frame())) + ".." + std::to_string(loop.history().newest_frame()) +
                 " are; a larger --history-mb keeps more)");
   }
   loop.show_frame(r.to);
-  loop.begin_resume();
-  while (!loop.continue_resume(1e9)) {
+  loop.resume().begin();
+  while (!loop.resume().advance(1e9)) {
   }
   // Frames up to TO were compared while re-simulating; those after TO are compared as they run again.
-  report.rewind = RunReport::Rewind{r.from, r.to, loop.resume_divergence()};
+  report.rewind = RunReport::Rewind{r.from, r.to, loop.resume().divergence()};
 }
 
 void step_back_for_flag(FrameLoop& loop) {
   if (!loop.step_back())
-    throw Error("--back: frame " + std::to_string(loop.frame()) + " is the oldest kept (a larger --history-mb keeps more)");
+    throw Error("--back: frame " + std::to_string(loop.source().frame()) + " is the oldest kept (a larger --history-mb keeps more)");
 }
 
 }  // namespace nbscope

@@ -19,9 +19,9 @@ class OffscreenView final : public HeadlessView {
       : options_(options),
         context_(render::make_offscreen_context(options.width, options.height, options.gl)),
         view_(*context_, nullptr, options) {
-    session_.scene_path = loop.scene().path;
+    session_.scene_path = loop.source().scene().path;
     session_.scene_files = bundled_scene_files();
-    if (loop.has_scene()) view_.check_selection(loop);  // (a world that stopped at load has no elements to select)
+    if (loop.source().has_scene()) view_.check_selection(loop);  // (a world that stopped at load has no elements to select)
     view_.on_scene_loaded(loop);
   }
 

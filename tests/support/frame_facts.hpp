@@ -29,9 +29,9 @@ inline bool same_elements(const Elements& a, const Elements& b) {
 inline FrameFacts facts_of(const FrameLoop& loop) {
   FrameFacts x;
   x.result = loop.result();
-  x.elements = loop.elements();
-  loop.body_shapes(x.shapes);
-  x.bodies = loop.body_count();
+  x.elements = loop.source().elements();
+  loop.source().body_shapes(x.shapes);
+  x.bodies = loop.source().body_count();
   return x;
 }
 

@@ -1,0 +1,96 @@
+// The parts FrameLoop hands out (app/frame_loop_parts.hpp): the frame shown, the pipeline's
+// configuration and the drag; the history and resume are in frame_loop_history.cpp.
+//
+// Index: source | pipeline | drag.
+#include "app/frame_loop_impl.hpp"
+
+namespace nbscope {
+
+// ---- source --------------------------------------------------------------------------------
+
+bool LoopSource::has_scene() const { return s_->loaded(); }
+const Scene& LoopSource::scene() const { return s_->scene; }
+bool LoopSource::replaying() const { return s_->replay != nullptr; }
+std::int64_t LoopSource::recorded_frames() const {
+  return s_->replay ? static_cast<std::int64_t>(s_->replay->recording().frames.size()) : 0;
+}
+bool LoopSource::carries_pairs() const { return s_->replay && s_->replay->recording().has_pairs; }
+int LoopSource::pair_base() const { return s_->replay ? s_->replay->recording().pair_base : 0; }
+bool LoopSource::at_end() const { return s_->replay && !s_->replay->can_step(); }
+bool LoopSource::step_pending() const { return s_->pending(); }
+bool LoopSource::physics_overlapped() const { return s_->physics_overlapped; }
+std::int64_t LoopSource::frame() const { return s_->loaded() ? s_->frame_number() : 0; }
+double LoopSource::time() const { return s_->loaded() ? s_->source().time() : 0; }
+
+const Elements& LoopSource::elements() const {
+  static const Elements kNone;
+  return s_->loaded() ? s_->now() : kNone;
+}
+const std::vector<ElementSource>& LoopSource::element_sources() const {
+  static const std::vector<ElementSource> kNone;
+  return s_->loaded() ? s_->source().element_sources() : kNone;
+}
+std::int64_t LoopSource::body_count() const { return s_->loaded() ? s_->source().body_count() : 0; }
+
+void LoopSource::body_shapes(std::vector<BodyShape>& out) const {
+  out.clear();
+  if (s_->loaded()) s_->source().body_shapes(out);
+}
+
+// ---- pipeline ------------------------------------------------------------------------------
+
+void LoopPipeline::set_algorithm(std::string_view name) {
+  s_->pipeline.set_algorithm(name, [this] { s_->accept_recorded(); });
+  s_->redetect();
+}
+const std::string& LoopPipeline::algorithm() const { return s_->pipeline.options().algorithm; }
+
+void LoopPipeline::set_fault(Fault fault) {
+  if (s_->pipeline.has_recorded_lane()) check_recorded_fault(fault);
+  s_->pipeline.set_fault(fault);
+  s_->redetect();
+}
+Fault LoopPipeline::fault() const { return s_->pipeline.options().fault; }
+
+void LoopPipeline::set_checks_enabled(bool on) {
+  s_->pipeline.set_checks(on);
+  s_->redetect();
+}
+bool LoopPipeline::checks_enabled() const { return s_->pipeline.options().checks; }
+std::string LoopPipeline::reference_policy() const { return s_->pipeline.reference_policy(); }
+std::string LoopPipeline::scope_note() { return FrameChecker::scope_note(); }
+
+void LoopPipeline::set_comparison_algorithms(const std::vector<std::string>& names) {
+  s_->pipeline.set_comparison_algorithms(names, [this] { s_->accept_recorded(); });
+  s_->redetect();
+}
+const std::vector<std::string>& LoopPipeline::comparison_algorithms() const { return s_->pipeline.comparison_algorithms(); }
+const std::vector<FrameReport>& LoopPipeline::comparison_reports() const { return s_->pipeline.comparison_reports(); }
+const Detector& LoopPipeline::detector() const { return s_->pipeline.detector(); }
+
+std::shared_ptr<const FrameTrace> LoopPipeline::frame_trace() {
+  if (!s_->loaded()) return nullptr;
+  return s_->pipeline.trace(s_->source());
+}
+
+// ---- drag ----------------------------------------------------------------------------------
+
+bool LoopDrag::begin(double x, double y) {
+  FrameLoopState& m = *s_;
+  m.settle();  // the drag acts on the newest frame
+  if (!m.live || m.kept || m.resume.active()) return false;
+  return m.live->begin_drag(x, y);
+}
+void LoopDrag::move_to(double x, double y) {
+  FrameLoopState& m = *s_;
+  m.settle();
+  if (m.live && !m.kept && !m.resume.active()) m.live->drag_to(x, y);
+}
+void LoopDrag::end() {
+  FrameLoopState& m = *s_;
+  m.settle();
+  if (m.live && !m.kept && !m.resume.active()) m.live->end_drag();
+}
+bool LoopDrag::active() const { return s_->live && !s_->kept && s_->live->dragging(); }
+
+}  // namespace nbscope

@@ -1,0 +1,186 @@
+// nbscope app: the parts FrameLoop hands out (app/frame_loop.hpp): each a window on the loop's one state
+// (app/frame_loop_impl.hpp), grouped by what it is about, so that FrameLoop itself keeps only the
+// coordination (load, step, time travel). They live as long as their FrameLoop.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "check/faults.hpp"
+#include "check/history.hpp"
+#include "check/report.hpp"
+#include "core/detector.hpp"
+#include "core/frame_trace.hpp"
+#include "physics/scene.hpp"
+#include "physics/shapes.hpp"
+
+namespace nbscope {
+
+struct FrameLoopState;
+
+// The frame shown and where it comes from (a Box2D world, or a recording: io/recording.hpp).
+class LoopSource {
+ public:
+  // A view of `state` (FrameLoop makes it).
+  explicit LoopSource(FrameLoopState& state) : s_(&state) {}
+  // True when a scene or a recording is loaded.
+  [[nodiscard]] bool has_scene() const;
+  // The loaded scene (an empty default Scene before the first load; for a recording: its path, its
+  // file's stem as name, its pinned grid, no bodies).
+  [[nodiscard]] const Scene& scene() const;
+  // True when the frames come from a recording.
+  [[nodiscard]] bool replaying() const;
+  // The number of recorded frames (0 for a scene).
+  [[nodiscard]] std::int64_t recorded_frames() const;
+  // True when the recording's frames carry the user's contact pairs (a `pairs` block each), which
+  // the algorithm `recorded` (check/recorded_lane.hpp) returns; false for a scene.
+  [[nodiscard]] bool carries_pairs() const;
+  // The recording's `base`: its pairs number elements from 0 or 1 (0 for a scene). Element ids
+  // here stay 0-based rows either way.
+  [[nodiscard]] int pair_base() const;
+  // True on a recording's last frame, where step() does nothing (always false for a scene).
+  [[nodiscard]] bool at_end() const;
+  // True between FrameLoop::begin_step() and the call that adopts its frame.
+  [[nodiscard]] bool step_pending() const;
+  // True when the current frame's physics ran on the worker thread, beside the drawing of the
+  // frame before (its physics_ms is the worker's own time).
+  [[nodiscard]] bool physics_overlapped() const;
+  // 0 after load, +1 per step(); a recording's own numbers.
+  [[nodiscard]] std::int64_t frame() const;
+  // Simulated seconds (a recording's own times).
+  [[nodiscard]] double time() const;
+  // Bounding circles at the current poses (element k = fixture k, see element_sources()).
+  [[nodiscard]] const Elements& elements() const;
+  // Element -> (body, fixture).
+  [[nodiscard]] const std::vector<ElementSource>& element_sources() const;
+  // Bodies of the frame shown.
+  [[nodiscard]] std::int64_t body_count() const;
+  // Every fixture at the current poses in world coordinates, for drawing (fills `out`); for a
+  // recording one dynamic circle per element.
+  void body_shapes(std::vector<BodyShape>& out) const;
+
+ private:
+  FrameLoopState* s_;
+};
+
+// Configuration of detection and checking; each change takes effect at once (the current frame is
+// detected and checked again).
+class LoopPipeline {
+ public:
+  // A view of `state` (FrameLoop makes it).
+  explicit LoopPipeline(FrameLoopState& state) : s_(&state) {}
+  // Switches the detector; throws Error (old one kept) for an unknown or 3D-only name, or `recorded`
+  // where it has no pairs or the fault cannot act on them.
+  void set_algorithm(std::string_view name);
+  // The chosen detector's registry name (or "recorded").
+  [[nodiscard]] const std::string& algorithm() const;
+  // Injects `fault` into detection (check/faults.hpp).
+  void set_fault(Fault fault);
+  // The injected fault.
+  [[nodiscard]] Fault fault() const;
+  // Runs the cross-check every frame, or not.
+  void set_checks_enabled(bool on);
+  // True when the cross-check runs.
+  [[nodiscard]] bool checks_enabled() const;
+  // How R is chosen, in words (for the UI and reports).
+  [[nodiscard]] std::string reference_policy() const;
+  // Which pairs A-in-F applies to, in words.
+  [[nodiscard]] static std::string scope_note();
+  // More detectors to run and check on every frame beside the chosen one, on the same elements
+  // with the same fault (headless --algorithm a,b,c compares them on identical frames; the window
+  // leaves this empty). Throws Error for an unknown or 3D-only name and keeps the previous list.
+  void set_comparison_algorithms(const std::vector<std::string>& names);
+  // The comparison detectors, in the order given.
+  [[nodiscard]] const std::vector<std::string>& comparison_algorithms() const;
+  // This frame's report of each comparison algorithm, in the order given.
+  [[nodiscard]] const std::vector<FrameReport>& comparison_reports() const;
+  // The detector in use (for its name, own_bytes(), pseudocode()).
+  [[nodiscard]] const Detector& detector() const;
+  // The current detector's traced run on the elements it was given this frame (faults not
+  // applied): the one trace the stepper and the lists overlay both show. Made on the first request
+  // and kept until the frame or the detector changes; its `refusal` says why it holds no operations
+  // (too many elements, a detector without a trace). Null without a scene.
+  [[nodiscard]] std::shared_ptr<const FrameTrace> frame_trace();
+
+ private:
+  FrameLoopState* s_;
+};
+
+// Every frame of the run (check/history.hpp) and which of them can be shown again.
+class LoopHistory {
+ public:
+  // A view of `state` (FrameLoop makes it).
+  explicit LoopHistory(FrameLoopState& state) : s_(&state) {}
+  // The run's frames: a summary of each, and the kept states that show past ones again.
+  [[nodiscard]] const FrameHistory& frames() const;
+  // Bytes of world states to keep; older states are dropped at once when the budget shrinks.
+  void set_budget(std::size_t bytes);
+  // Every violation of the run, in frame order.
+  [[nodiscard]] const ViolationLog& violation_log() const;
+  // True while the frame shown is a kept past frame rather than the newest one.
+  [[nodiscard]] bool showing_past() const;
+  // The newest frame of the run: the live world's, or a recording's last.
+  [[nodiscard]] std::int64_t newest_frame() const;
+  // True when frame `frame` can be shown (kept, the newest, or recorded).
+  [[nodiscard]] bool can_show(std::int64_t frame) const;
+  // The showable frame `delta` frames from the shown one (clamped to the first/newest showable), or
+  // nullopt when there is none in that direction.
+  [[nodiscard]] std::optional<std::int64_t> neighbour(std::int64_t delta) const;
+  // Element k's centre at each showable frame in [from, to], oldest first (a past frame's trail).
+  void element_path(ElementId k, std::int64_t from, std::int64_t to, std::vector<std::array<double, 2>>& out) const;
+
+ private:
+  FrameLoopState* s_;
+};
+
+// Continuing the simulation from a past frame K: a fresh world is built from the scene and stepped
+// to K with the drags recorded before K (Box2D is deterministic), and the later frames are replaced.
+class LoopResume {
+ public:
+  // A view of `state` (FrameLoop makes it).
+  explicit LoopResume(FrameLoopState& state) : s_(&state) {}
+  // Starts from the shown past frame. No effect on the live frame or a recording.
+  void begin();
+  // Re-simulates for about `budget_ms` of wall time (at least one step); true once the world is at
+  // K: the frames after K are dropped and K is the live frame. Throws Error as step() does.
+  bool advance(double budget_ms);
+  // Stops a resume before it arrives; the history is unchanged.
+  void cancel();
+  // True while resuming.
+  [[nodiscard]] bool active() const;
+  // Frames re-simulated so far and the frame being resumed from.
+  [[nodiscard]] std::pair<std::int64_t, std::int64_t> progress() const;
+  // After a resume: the first re-simulated frame whose element hash differed from what the history
+  // kept for it (nullopt: every kept frame on the way was reproduced exactly).
+  [[nodiscard]] std::optional<std::int64_t> divergence() const;
+
+ private:
+  FrameLoopState* s_;
+};
+
+// The mouse drag (world coordinates). Each call is recorded with its frame, so that a resume replays
+// it. Only on the live frame.
+class LoopDrag {
+ public:
+  // A view of `state` (FrameLoop makes it).
+  explicit LoopDrag(FrameLoopState& state) : s_(&state) {}
+  // Grabs the dynamic body under (x, y) with a b2MouseJoint; false when there is none (or a past
+  // frame is shown: resume first).
+  bool begin(double x, double y);
+  // Moves the grabbed body's target.
+  void move_to(double x, double y);
+  // Lets go (no effect when nothing is grabbed).
+  void end();
+  // True while a body is held.
+  [[nodiscard]] bool active() const;
+
+ private:
+  FrameLoopState* s_;
+};
+
+}  // namespace nbscope
