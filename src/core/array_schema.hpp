@@ -1,5 +1,5 @@
 // nbscope core: the one description of each algorithm's arrays as `nbscope dump` writes them and
-// `nbscope verify --arrays` reads them (docs/formats.md, "Arrays as JSON"): the document's keys,
+// `nbscope verify --arrays` reads them (docs/formats.md "Arrays JSON"): the document's keys,
 // which are heads and which next arrays, how heads are laid out, the book's names for messages,
 // the traced arrays the dump copies, and the book's order within a list. Plain data: the writer
 // (io/dump_json.cpp), the reader (io/arrays_json.cpp, io/arrays_json_tree.cpp) and the check

@@ -218,7 +218,7 @@ void nest_list(DumpText& text, ObjectText& parent, std::span<const array_schema:
 
 // ---- DumpCollector --------------------------------------------------------------------------
 //
-// What each algorithm shows (docs/cli.md, `dump`; core/array_schema.hpp): its arrays right before
+// What each algorithm shows (docs/formats.md "Arrays JSON"; core/array_schema.hpp): its arrays right before
 // the layout's phase `shown_at` (screen, tree and sort: the contacts; nbs: the y-lists (z-lists in 3D)
 // before they are cleared) and the lists of each nest's objects when they are complete (nbs: each
 // row's x-lists, B[0] or A[0]; 3D: each layer's y-lists, B[0]). The events are applied to one copy

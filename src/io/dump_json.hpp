@@ -2,7 +2,7 @@
 // are complete (the detectors clear their heads before they return, so the arrays are read from a
 // traced run: the state right before the phase that first uses complete lists).
 //
-// Every index is 0-based and -1 means an empty list or the end of a list. Keys (docs/formats.md):
+// Every index is 0-based and -1 means an empty list or the end of a list. Keys (docs/formats.md "Arrays JSON"):
 //   all:     algorithm, dim, elements, pairs, cell_size, origin, nx, ny (nz in 3D), own_bytes, bytes
 //   then the algorithm's arrays, as core/array_schema.hpp lays them out (screen, tree, sort, nbs 2D/3D).
 #pragma once
