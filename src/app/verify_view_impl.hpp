@@ -15,7 +15,7 @@
 #include "render/imgui_layer.hpp"
 #include "render/overlays.hpp"
 #include "render/renderer.hpp"
-#include "render/verify_overlay.hpp"
+#include "render/overlay_verify.hpp"
 #include "ui/verify_panels.hpp"
 
 struct GLFWwindow;
