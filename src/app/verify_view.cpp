@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <set>
 
+#include "core/cells.hpp"
 #include "app/clock.hpp"
 #include "app/view_spec.hpp"
 #include "core/error.hpp"
@@ -245,7 +246,7 @@ void VerifyView::handle_input(ui::VerifyUiRequests& requests) {
     return;
   }
   const Eigen::Vector2d world = camera_.to_world(*mouse);
-  hovered_cell_ = run_.grid.dim == 2 ? render::cell_at(run_.grid, world) : std::nullopt;
+  hovered_cell_ = run_.grid.dim == 2 ? cell_at(run_.grid, world) : std::nullopt;
   // Either button drags the view; a left click that did not drag selects the element under it.
   ui::move_camera_by_mouse(camera_, *mouse, true);
   if (ImGui::IsMouseReleased(0) && io.MouseDragMaxDistanceSqr[0] <= ui::kClickSlopPx * ui::kClickSlopPx) {

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string_view>
 
+#include "core/cells.hpp"
 #include "ui/panels.hpp"
 #include "ui/window_input.hpp"
 
@@ -343,7 +344,7 @@ void UiHost::handle_mouse(UiContext& ctx) {
   }
   const Eigen::Vector2d world = ctx.camera.to_world(mouse);
   ctx.state.mouse_world = world;
-  ctx.state.hovered_cell = ctx.sim.grid != nullptr ? render::cell_at(*ctx.sim.grid, world) : std::nullopt;
+  ctx.state.hovered_cell = ctx.sim.grid != nullptr ? cell_at(*ctx.sim.grid, world) : std::nullopt;
   move_camera_by_mouse(ctx.camera, mouse, false);  // the left button drags a body here
   if (ImGui::IsMouseClicked(0) && !ctx.state.dragging) {
     ctx.state.selected = ctx.sim.elements != nullptr ? render::element_at(*ctx.sim.elements, world) : -1;
