@@ -155,7 +155,7 @@ CommandSpec headless_command() {
           "elements, so a rewound run can be compared with a straight one frame by frame"},
          {"--back", "K", "", "after the last frame goes K frames back through the history (each detected and checked again); "
                              "--screenshot then shows that frame"},
-         {"--violation", "N", "", "goes to the run's N-th violation instead (from 1, as the Violations panel lists them) and shows it as "
+         {"--violation", "N", "", "instead of --back, goes to the run's N-th violation (from 1, as the Violations panel lists them) and shows it as "
                                   "choosing it there does"},
          {"--history-mb", "N", "256 with --rewind, --back, --violation or --screenshot, else 0",
           "memory for kept frames (0: a run that never goes back keeps only summaries)"},
