@@ -116,11 +116,25 @@ void Args::finish() const {
     if (!used_[i]) throw Error(args_[i] + ": unexpected argument (see nbscope --help)");
 }
 
+// The command table's options (app/command_table.hpp) as names per command, built once from it.
+const std::vector<std::pair<const char*, std::vector<const char*>>>& command_options() {
+  static const std::vector<std::pair<const char*, std::vector<const char*>>> options = [] {
+    std::vector<std::pair<const char*, std::vector<const char*>>> out;
+    for (const CommandSpec& command : command_table()) {
+      out.emplace_back(command.name, std::vector<const char*>{});
+      for (const OptionGroup& g : command.groups)
+        for (const OptionSpec& o : g.options) out.back().second.push_back(o.name);
+    }
+    return out;
+  }();
+  return options;
+}
+
 std::string commands_taking(const std::string& option) {
   std::string out;
-  for (const CommandSpec& command : command_table())
-    for (const std::string& o : option_names(command))
-      if (option == o) out += (out.empty() ? "" : ", ") + std::string(command.name);
+  for (const auto& [command, options] : command_options())
+    for (const char* o : options)
+      if (option == o) out += (out.empty() ? "" : ", ") + std::string(command);
   return out;
 }
 

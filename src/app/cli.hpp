@@ -47,8 +47,9 @@ class Args {
 // The names of a comma-separated list ("nbs,sort"); Error naming `flag` for an empty or repeated name.
 std::vector<std::string> split_names(const std::string& flag, const std::string& text);
 
-// The commands whose options (in the command table, app/command_table.hpp) include `option` (without
-// any "=VALUE"), comma-separated in the table's order; "" for none.
+// The options each command takes ("gui", "headless", "replay", "pairs", "dump", "scaling"), as --help lists
+// them; the commands of the ones that take `option` (without any "=VALUE"), comma-separated.
+const std::vector<std::pair<const char*, std::vector<const char*>>>& command_options();
 std::string commands_taking(const std::string& option);
 
 // "W" "x" "H" into width and height; Error names `flag` otherwise.
