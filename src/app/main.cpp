@@ -10,7 +10,9 @@
 #include "app/command_table.hpp"
 #include "app/help.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "physics/box2d_detector.hpp"
+#include "physics/box2d_memory.hpp"
 
 namespace {
 
@@ -48,6 +50,7 @@ int main(int argc, char** argv) {
   const std::string command = implicit_gui ? "gui" : argv[1];
   try {
     nbscope::register_physics_detectors();  // "box2d" joins core's detectors
+    nbscope::set_box2d_out_of_memory_cleanup(nbscope::remove_live_temporaries);
     return dispatch(command, rest);
   } catch (const nbscope::Error& e) {
     std::fprintf(stderr, "nbscope: error: %s\n", nbscope::printable_line(e.what()).c_str());
