@@ -1,8 +1,11 @@
-// The option table behind "gui: --report is not an option of gui (it is one of headless, replay)"
-// agrees with --help: every option --help lists under a command is in that command's row, and
-// every option of a row is in --help under that command.
+// The command table behind "gui: --report is not an option of gui (it is one of headless, replay)"
+// and every help page: it names every option the parsers take (read from src/app), each with a help
+// line, and nothing they do not take.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -10,63 +13,111 @@
 #include <vector>
 
 #include "app/cli.hpp"
+#include "app/command_table.hpp"
 #include "app/help.hpp"
 #include "core/error.hpp"
 
 namespace nbscope {
 namespace {
 
-// Every "--name" word of `line` (a letter after the dashes, then letters, digits and dashes). No
-// std::regex: GCC 12's -O1 sanitizer build warns inside it (maybe-uninitialized), and CI builds -Werror.
-std::vector<std::string> option_words(const std::string& line) {
-  std::vector<std::string> out;
+// The source files that take options from Args, and the commands whose parser runs each; a file
+// that takes options and is not here fails the test (map it). view_options.cpp's --gl is taken only
+// off-screen: gui has no --gl.
+struct ParserFile {
+  const char* file;
+  std::vector<std::string> commands;
+  std::set<std::string> not_for_gui;
+};
+
+const std::vector<ParserFile>& parser_files() {
+  static const std::vector<ParserFile> files = {
+      {"cmd_pairs.cpp", {"pairs"}, {}},
+      {"cmd_dump.cpp", {"dump"}, {}},
+      {"cmd_headless.cpp", {"headless"}, {}},
+      {"cmd_replay.cpp", {"replay"}, {}},
+      {"cmd_scaling.cpp", {"scaling"}, {}},
+      {"cmd_verify.cpp", {"verify"}, {}},
+      {"verify_run.cpp", {"verify", "gui"}, {}},
+      {"cmd_gui.cpp", {"gui"}, {}},
+      {"verify_window.cpp", {"gui"}, {}},
+      {"grid_flags.cpp", {"pairs", "dump", "verify", "gui"}, {}},
+      {"view_options.cpp", {"headless", "replay", "verify", "gui"}, {"--gl"}},
+      {"scaling_flags.cpp", {"scaling", "headless"}, {}},
+      {"help.cpp", {}, {}},  // `help --markdown`, hidden: not a command's option
+  };
+  return files;
+}
+
+// The option names `source` hands to Args: the "--name" literal of every args.value/flag/integer/
+// number/has call. No std::regex: GCC 12's -O1 sanitizer build warns inside it (maybe-uninitialized),
+// and CI builds -Werror.
+std::set<std::string> options_taken(const std::string& source) {
+  std::set<std::string> out;
   const auto word_char = [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-'; };
-  for (std::size_t i = line.find("--"); i != std::string::npos; i = line.find("--", i)) {
-    std::size_t end = i + 2;
-    if (end < line.size() && line[end] >= 'a' && line[end] <= 'z') {
-      while (end < line.size() && word_char(line[end])) ++end;
-      out.push_back(line.substr(i, end - i));
+  for (const char* call : {".value(\"--", ".flag(\"--", ".integer(\"--", ".number(\"--", ".has(\"--"}) {
+    const std::string needle = call;
+    for (std::size_t i = source.find(needle); i != std::string::npos; i = source.find(needle, i + 1)) {
+      std::size_t begin = i + needle.size() - 2, end = begin + 2;
+      while (end < source.size() && word_char(source[end])) ++end;
+      out.insert(source.substr(begin, end - begin));
     }
-    i = end;
   }
   return out;
 }
 
-// The "--name" words of --help, by the command whose section they are in; the rendering flags'
-// section counts for gui, headless and replay.
-std::map<std::string, std::set<std::string>> options_in_help() {
-  std::map<std::string, std::set<std::string>> out;
-  std::istringstream in(kHelpText);
-  std::string line, section;
-  while (std::getline(in, line)) {
-    if (line.rfind("  nbscope ", 0) == 0) {
-      const std::string word = line.substr(10, line.find(' ', 10) - 10);
-      section = word.rfind("[gui]", 0) == 0 ? "gui" : word;
-    } else if (line.rfind("  rendering flags", 0) == 0) {
-      section = "rendering";
-    } else if (line.rfind("  ", 0) != 0) {
-      section.clear();
-    }
-    if (section.empty() || section == "algorithms" || section == "--help") continue;
-    for (const std::string& word : option_words(line)) {
-      if (section == "rendering") {
-        for (const char* c : {"gui", "headless", "replay"}) out[c].insert(word);
-      } else {
-        out[section].insert(word);
+std::string read_source(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Every option a parser takes is in the table, with a help line, under each command that runs the
+// parser; every option of the table is taken by one of the command's parsers. An option added to a
+// parser without a line in the table fails here (and would be refused at run time as unknown).
+TEST(CliOptions, TheTableNamesEveryOptionTheParsersTake) {
+  const std::string dir = std::string(NBSCOPE_SOURCE_DIR) + "/src/app";
+  std::map<std::string, std::set<std::string>> taken;  // by command
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".cpp") continue;
+    const std::string file = entry.path().filename().string();
+    const std::set<std::string> names = options_taken(read_source(entry.path().string()));
+    if (names.empty()) continue;
+    const auto row = std::find_if(parser_files().begin(), parser_files().end(), [&](const ParserFile& p) { return file == p.file; });
+    ASSERT_NE(row, parser_files().end()) << file << " takes options: add it to parser_files() with the commands that run it";
+    for (const std::string& command : row->commands) {
+      const CommandSpec* spec = find_command(command);
+      ASSERT_NE(spec, nullptr) << command;
+      const std::vector<std::string> table = option_names(*spec);
+      for (const std::string& name : names) {
+        if (command == "gui" && row->not_for_gui.count(name)) continue;
+        taken[command].insert(name);
+        EXPECT_NE(std::find(table.begin(), table.end(), name), table.end())
+            << file << " takes " << name << " for " << command << ": give it a line in the command table";
       }
     }
   }
-  return out;
+  for (const CommandSpec& c : command_table()) {
+    for (const OptionGroup& g : c.groups) {
+      for (const OptionSpec& o : g.options) {
+        EXPECT_TRUE(taken[c.name].count(o.name)) << c.name << " " << o.name << " is in the table, but no parser of " << c.name << " takes it";
+        EXPECT_GT(std::string(o.help).size(), 10u) << c.name << " " << o.name << ": no help line";
+      }
+    }
+  }
 }
 
-TEST(CliOptions, TheTableAgreesWithHelp) {
-  const auto help = options_in_help();
-  ASSERT_EQ(help.size(), command_options().size());
-  for (const auto& [command, options] : command_options()) {
-    ASSERT_TRUE(help.count(command)) << command;
-    std::set<std::string> table(options.begin(), options.end());
-    for (const std::string& o : help.at(command)) EXPECT_TRUE(table.count(o)) << command << " " << o << " in --help, not in the table";
-    for (const std::string& o : table) EXPECT_TRUE(help.at(command).count(o)) << command << " " << o << " in the table, not in --help";
+// Each command's page names every option of its row, and the summary every command.
+TEST(CliOptions, EveryPageNamesItsOptionsAndTheSummaryEveryCommand) {
+  const std::string summary = help_summary();
+  for (const CommandSpec& c : command_table()) {
+    EXPECT_NE(summary.find("\n  " + std::string(c.name) + " "), std::string::npos) << c.name;
+    const std::string page = command_help(c);
+    for (const std::string& o : option_names(c)) EXPECT_NE(page.find("\n  " + o), std::string::npos) << c.name << " " << o;
+    // An option given twice in one row would be listed twice and taken once.
+    std::vector<std::string> names = option_names(c);
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(std::adjacent_find(names.begin(), names.end()), names.end()) << c.name;
   }
 }
 

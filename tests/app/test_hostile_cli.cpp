@@ -104,5 +104,12 @@ TEST(HostileCli, ARecordingHeaderGivenTwiceIsRefused) {
   EXPECT_EQ(run("replay " + rec + " --headless").exit_code, 0);
 }
 
+// Help for a command that is not one, its name unprintable too: one escaped line, exit 2, no page.
+TEST(HostileCli, HelpOfAnUnknownCommandIsOneLine) {
+  expect_refused(run("help bogus"), "bogus: unknown command (see nbscope --help)", "help bogus");
+  expect_refused(run("help \"$(printf 'bo\\001gus')\""), "bo\\x01gus: unknown command (see nbscope --help)", "help bo^Agus");
+  expect_refused(run("help pairs --markdown"), "--markdown: prints every command; give no command", "help pairs --markdown");
+}
+
 }  // namespace
 }  // namespace nbscope
