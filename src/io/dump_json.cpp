@@ -212,7 +212,7 @@ struct LayerLists {
 
 // ---- DumpCollector --------------------------------------------------------------------------
 //
-// What each algorithm shows (DESIGN.md "Command line", `dump`): screen, tree and sort their arrays
+// What each algorithm shows (docs/formats.md "Arrays JSON"): screen, tree and sort their arrays
 // right before the contacts phase; nbs 2D the y-lists before they are cleared and each row's x-lists
 // (B[0]) when its contacts begin; nbs 3D the z-lists before they are cleared, per layer its y-lists
 // (B[0]) and per row its x-lists (A[0]). The events are applied to one copy of the arrays as they
@@ -453,7 +453,7 @@ void DumpCollector::write(const DumpSource& src, std::ostream& out) const {
     o.close();
   }
   // No book arrays (brute, box2d): counts only. Otherwise each algorithm has its own arrays, so its
-  // own keys (DESIGN.md "Command line", `dump`).
+  // own keys (docs/formats.md "Arrays JSON").
   if (!log.arrays().empty() && src.grid != nullptr) {
     const Impl& c = *impl_;
     if (src.algorithm == "screen") {

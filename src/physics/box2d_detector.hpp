@@ -1,6 +1,6 @@
 // nbscope physics: `box2d`, Box2D's b2DynamicTree used as a contact detector: one proxy per element
 // kept between detections (moved, as a physics engine moves them), each element's tight AABB
-// queried against the tree, then the exact circle test of core (DESIGN.md "Contact").
+// queried against the tree, then the exact circle test of core (docs/architecture.md "Contact").
 //
 // Proxies are inserted and queried in Morton (Z-curve) order of the element centres, not in the
 // input's order: Box2D's incremental insertion builds a much looser tree from randomly ordered
