@@ -6,7 +6,7 @@
 // input's order: Box2D's incremental insertion builds a much looser tree from randomly ordered
 // boxes (area ratio 2,291 vs 1,314 at 200k loose elements; 5,791 vs 2,657 at 800k), and queries in
 // random order miss the cache on every node. In input order the queries grew as N^2.2 (200k:
-// 1.9 s, 800k: 75 s); in Morton order 0.14 s and 1.2 s (README "Algorithms", box2d).
+// 1.9 s, 800k: 75 s); in Morton order 0.14 s and 1.2 s (docs/algorithms.md, box2d).
 //
 // Registered with core's registry by register_physics_detectors(), which the app calls at
 // start-up, so core never sees Box2D.
