@@ -7,7 +7,7 @@
 #include "app/gl_view.hpp"
 #include "physics/box2d_detector.hpp"
 #include "render/gl_context.hpp"
-#include "render/lists.hpp"
+#include "core/traced_lists.hpp"
 #include "ui/stepper_panels.hpp"
 
 namespace nbscope {
@@ -50,15 +50,15 @@ TEST(GlView, TheStepperAndTheListsOverlayShareOneTraceAndAgreeAtEveryOperation) 
   for (const std::size_t p : {std::size_t{3}, std::size_t{56}, s.stepper().size()}) {
     s.stepper().seek(p);
     rig.frames(1);
-    const auto expected = render::traced_lists(trace->log, n, p);
+    const auto expected = traced_lists(trace->log, n, p);
     ASSERT_EQ(rig.view->lists().size(), expected.size()) << "at operation " << p;
     for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_EQ(rig.view->lists()[i].chain, expected[i].chain) << "at operation " << p;
   }
   // At the end: the finished lists.
-  const auto finished = render::traced_lists(trace->log, n);
+  const auto finished = traced_lists(trace->log, n);
   ASSERT_EQ(rig.view->lists().size(), finished.size());
   // Operation 3 differs from the end (the scene does not show finished lists mid-trace).
-  EXPECT_NE(render::traced_lists(trace->log, n, 3).size(), finished.size());
+  EXPECT_NE(traced_lists(trace->log, n, 3).size(), finished.size());
 }
 
 // Box2D keeps no book arrays: paused, with the stepper open, the panels say so (not "pause").

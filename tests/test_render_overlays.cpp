@@ -6,8 +6,9 @@
 #include <algorithm>
 #include <map>
 
+#include "core/cells.hpp"
 #include "core/detector.hpp"
-#include "render/lists.hpp"
+#include "core/traced_lists.hpp"
 #include "core/stepper.hpp"
 #include "render/overlays.hpp"
 #include "support/generators.hpp"

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/cells.hpp"
 #include "support/ui_fixture.hpp"
 #include "render/overlays.hpp"
 #include "ui/host.hpp"
@@ -108,7 +109,7 @@ TEST(UiHost, MouseZoomsAboutTheCursorPansSelectsAndDrags) {
   EXPECT_TRUE(w.camera.to_world({cursor.x, cursor.y}).isApprox(under, 1e-9));
   // Hovering names the cell under the cursor.
   ASSERT_TRUE(w.state.hovered_cell.has_value());
-  EXPECT_EQ(*w.state.hovered_cell, render::cell_at(w.grid, under));
+  EXPECT_EQ(*w.state.hovered_cell, cell_at(w.grid, under));
 
   // Right-drag pans: the world follows the mouse.
   io.MouseDown[1] = true;

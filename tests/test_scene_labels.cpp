@@ -9,7 +9,7 @@
 
 #include "app/frame_loop.hpp"
 #include "physics/box2d_detector.hpp"
-#include "render/lists.hpp"
+#include "core/traced_lists.hpp"
 #include "render/overlays.hpp"
 #include "support/paths.hpp"
 
@@ -58,8 +58,8 @@ TEST(SceneLabels, NoLabelTouchesAnotherAndNoIdSitsAmongTheAxisNumbers) {
     for (int k = 0; k < 10; ++k) loop.step();
     const Elements& e = loop.elements();
     const auto trace = loop.frame_trace();
-    const std::vector<render::TracedList> lists =
-        trace ? render::traced_lists(trace->log, static_cast<std::size_t>(e.size())) : std::vector<render::TracedList>{};
+    const std::vector<TracedList> lists =
+        trace ? traced_lists(trace->log, static_cast<std::size_t>(e.size())) : std::vector<TracedList>{};
     for (const auto& [w, h] : {std::pair{1280, 720}, std::pair{1024, 640}}) {
       // The window's docked columns, menu bar and Timeline.
       const render::ScreenInsets insets{256, 290, 20, 100};

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "core/detector.hpp"
-#include "render/lists.hpp"
+#include "core/traced_lists.hpp"
 #include "ui/host.hpp"
 #include "ui/panels.hpp"
 #include "ui/stepper_panels.hpp"
@@ -130,7 +130,7 @@ TEST(SelectionPanel, NamesListHeadsAsTheArraysDoInEitherNumbering) {
   TraceLog log;
   nbs->detect_traced(f.elements, o, pairs, log);
   std::vector<std::string> zero, book;
-  for (const render::TracedList& l : render::traced_lists(log, 9)) {
+  for (const TracedList& l : traced_lists(log, 9)) {
     if (std::find(l.chain.begin(), l.chain.end(), 3) == l.chain.end()) continue;
     zero.push_back(describe_chain(l, 3, false));
     book.push_back(describe_chain(l, 3, true));

@@ -91,7 +91,7 @@ class GlView {
   [[nodiscard]] ui::UiHost& host() { return host_; }
   // The stepper panels' session (its trace is the frame loop's) and the lists the overlay drew last.
   [[nodiscard]] ui::StepperSession& stepper() { return *stepper_; }
-  [[nodiscard]] const std::vector<render::TracedList>& lists() const { return lists_; }
+  [[nodiscard]] const std::vector<TracedList>& lists() const { return lists_; }
   // The Scaling panel's background run (owned here; cancelled when the panel closes).
   [[nodiscard]] ScalingJob& scaling() { return *scaling_; }
   // Where the last frame's time went (overlays, GL submit, panels, traced detection), in ms.
@@ -153,7 +153,7 @@ class GlView {
   std::vector<std::pair<ElementId, float>> flash_list_;
 
   // The lists overlay, rebuilt from the frame loop's trace when it or the stepper's position changes.
-  std::vector<render::TracedList> lists_;
+  std::vector<TracedList> lists_;
   std::uint64_t lists_serial_ = 0;   // the trace they were built from
   std::size_t lists_upto_ = 0;       // the events applied (SIZE_MAX: all)
   std::chrono::steady_clock::time_point lists_built_at_;  // the last rebuild (throttled while playing)

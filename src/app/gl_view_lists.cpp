@@ -34,7 +34,7 @@ void GlView::update_lists(const FrameLoop& loop, const std::shared_ptr<const Fra
     return;
   const auto t0 = Clock::now();
   lists_built_at_ = t0;
-  lists_ = render::traced_lists(trace->log, static_cast<std::size_t>(loop.elements().size()), upto);
+  lists_ = traced_lists(trace->log, static_cast<std::size_t>(loop.elements().size()), upto);
   lists_serial_ = trace->serial;
   lists_upto_ = upto;
   cost_.trace_ms += ms_since(t0);

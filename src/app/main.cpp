@@ -10,7 +10,9 @@
 #include "app/help.hpp"
 #include "core/detector.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "physics/box2d_detector.hpp"
+#include "physics/box2d_memory.hpp"
 
 namespace {
 
@@ -59,6 +61,7 @@ int main(int argc, char** argv) {
   nbscope::Args args(rest, command);
   try {
     nbscope::register_physics_detectors();  // "box2d" joins core's detectors
+    nbscope::set_box2d_out_of_memory_cleanup(nbscope::remove_live_temporaries);
     return dispatch(command, rest, args);
   } catch (const nbscope::Error& e) {
     std::fprintf(stderr, "nbscope: error: %s\n", nbscope::printable_line(e.what()).c_str());

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <set>
 
+#include "core/cells.hpp"
 #include "app/clock.hpp"
 #include "app/view_spec.hpp"
 #include "core/error.hpp"
@@ -281,7 +282,7 @@ void VerifyView::handle_input(ui::VerifyUiRequests& requests) {
   }
   const Eigen::Vector2d mouse(io.MousePos.x, io.MousePos.y);
   const Eigen::Vector2d world = camera_.to_world(mouse);
-  hovered_cell_ = run_.grid.dim == 2 ? render::cell_at(run_.grid, world) : std::nullopt;
+  hovered_cell_ = run_.grid.dim == 2 ? cell_at(run_.grid, world) : std::nullopt;
   if (io.MouseWheel != 0.0f) camera_.zoom_at(mouse, std::pow(kZoomPerNotch, static_cast<double>(io.MouseWheel)));
   // Either button drags the view; a left click that did not drag selects the element under it.
   for (int b = 0; b < 2; ++b)

@@ -68,7 +68,7 @@ class VerifyView {
   std::unique_ptr<render::Renderer> renderer_;
   std::unique_ptr<render::ImGuiLayer> imgui_;
   render::Camera camera_;
-  std::vector<render::TracedList> lists_;
+  std::vector<TracedList> lists_;
   std::vector<std::pair<ElementId, int>> on_lists_;  // (element, list) sorted: the lists each element is on
   std::vector<render::ShapeDraw> shapes_;
   render::VerifyMarks marks_;

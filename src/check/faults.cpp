@@ -56,15 +56,6 @@ Fault parse_fault(std::string_view name) {
   throw Error("--inject-fault: unknown fault '" + std::string(name) + "' (known: " + fault_names() + ")");
 }
 
-void integerise_cells(const Elements& e, const Grid& grid, std::vector<CellIndex>& cells) {
-  const auto n = static_cast<std::size_t>(e.size());
-  cells.resize(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const auto i = static_cast<Eigen::Index>(k);
-    cells[k] = {grid.cell(e.x[i], 0), grid.cell(e.y[i], 1)};
-  }
-}
-
 void apply_output_fault(Fault fault, const Grid& grid, std::vector<CellIndex>& cells, PairList& pairs) {
   const auto cell_of = [&](ElementId k) { return cells[static_cast<std::size_t>(k)]; };
   switch (fault) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "check/report.hpp"
+#include "core/cells.hpp"
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
 
@@ -30,9 +31,6 @@ const char* fault_description(Fault fault);
 Fault parse_fault(std::string_view name);
 // "drop-mask-cell, off-by-one-cell, ..." for help and messages.
 std::string fault_names();
-
-// The cell of every element under `grid` (eq. 3.76, clamped as Grid::cell), written into `cells`.
-void integerise_cells(const Elements& elements, const Grid& grid, std::vector<CellIndex>& cells);
 
 // Applies the output side of `fault` (stale-positions and drop-box2d-contact have none): `cells` are the detector's cells of
 // each element and become the faulty ones (off-by-one-cell), `pairs` (sorted) lose what the faulty

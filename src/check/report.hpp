@@ -2,7 +2,7 @@
 // fills them, the frame loop keeps the current frame's, the GUI draws them and io/report_json
 // writes a headless run's as JSON. Plain data (no Box2D), so io may include it.
 //
-// Index: Invariant | CellIndex, Violation | FrameCounts, FrameTimings, CheckTimings, FrameReport | FrameSummary |
+// Index: Invariant | Violation | FrameCounts, FrameTimings, CheckTimings, FrameReport | FrameSummary |
 // TimingStats, AlgorithmRun, RunReport.
 #pragma once
 #include <array>
@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/cells.hpp"
 #include "core/pairs.hpp"
 
 namespace nbscope {
@@ -52,12 +53,6 @@ inline const char* invariant_description(Invariant invariant) {
   return "?";
 }
 
-// An element's cell as the detector integerised it (book numbering is 1-based; these are 0-based).
-struct CellIndex {
-  std::int32_t ix = 0;
-  std::int32_t iy = 0;
-  friend bool operator==(const CellIndex&, const CellIndex&) = default;
-};
 
 // One broken invariant for one pair in one frame.
 struct Violation {

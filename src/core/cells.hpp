@@ -1,11 +1,14 @@
 // nbscope core: what every cell-based detector shares besides the Grid itself — the contact mask
 // (which neighbour cells an element is checked against) and the integerisation of all elements.
 //
-// Index: CellOffset and the half masks kMask2d/kMask3d | in_half_mask | integerise.
+// Index: CellOffset and the half masks kMask2d/kMask3d | in_half_mask | CellIndex, integerise_cells,
+// cell_at | integerise.
 #pragma once
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
+#include <vector>
 
 #include "core/elements.hpp"
 #include "core/grid.hpp"
@@ -61,6 +64,20 @@ template <int D>
   if (dy != 0) return dy < 0;
   return dx < 0;
 }
+
+// An element's cell as the detector integerised it (book numbering is 1-based; these are 0-based).
+struct CellIndex {
+  std::int32_t ix = 0;
+  std::int32_t iy = 0;
+  friend bool operator==(const CellIndex&, const CellIndex&) = default;
+};
+
+// The cell of every element under `grid` (eq. 3.76, clamped as Grid::cell), written into `cells`:
+// the cells the cross-check compares a detector's against.
+void integerise_cells(const Elements& elements, const Grid& grid, std::vector<CellIndex>& cells);
+
+// The cell (ix, iy) of a world point, or nullopt outside the grid (picking: not clamped).
+std::optional<std::array<std::int32_t, 2>> cell_at(const Grid& grid, const Eigen::Vector2d& world);
 
 // Integerised coordinates of every element on axis `axis` (eq. 3.76, clamped as Grid::cell), as one
 // vectorised array expression; `out` must hold elements.size() entries.

@@ -4,11 +4,11 @@
 #include <box2d/box2d.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
-#include "io/atomic_file.hpp"
 
 namespace nbscope {
 
@@ -30,6 +30,8 @@ const char* grouped_into(long long n, char* out, std::size_t size) {
   return out;
 }
 
+std::atomic<OutOfMemoryCleanup> g_cleanup{nullptr};
+
 [[noreturn]] void out_of_memory(long long bytes) {
   char line[1400];
   std::memcpy(line, "nbscope: error: ", 16);
@@ -41,7 +43,7 @@ const char* grouped_into(long long n, char* out, std::size_t size) {
   }
   const std::size_t len = std::strlen(line);
   line[len] = '\n';
-  remove_live_temporaries();
+  if (const OutOfMemoryCleanup cleanup = g_cleanup) cleanup();
   [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, line, len + 1);
   ::_exit(2);
 }
@@ -55,6 +57,8 @@ Box2dAllocScope::Box2dAllocScope(const b2World* world, int uncounted_bodies, con
 }
 
 Box2dAllocScope::~Box2dAllocScope() { t_scope = outer_; }
+
+void set_box2d_out_of_memory_cleanup(OutOfMemoryCleanup cleanup) { g_cleanup = cleanup; }
 
 void Box2dAllocScope::describe_failure(long long bytes, char* out, std::size_t size) const {
   char amount[32];

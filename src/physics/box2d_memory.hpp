@@ -35,4 +35,10 @@ class Box2dAllocScope {
   char where_[1024];
 };
 
+// Called (async-signal-safe, allocation-free) just before a failed Box2D allocation ends the
+// process: the program sets it to remove its live temporaries (io/atomic_file.hpp), which physics,
+// a floor below io, cannot name.
+using OutOfMemoryCleanup = void (*)();
+void set_box2d_out_of_memory_cleanup(OutOfMemoryCleanup cleanup);
+
 }  // namespace nbscope

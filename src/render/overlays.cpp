@@ -44,13 +44,6 @@ std::span<const OverlayInfo> overlay_infos() {
 
 // ---- picking helpers --------------------------------------------------------------------------
 
-std::optional<std::array<std::int32_t, 2>> cell_at(const Grid& grid, const Eigen::Vector2d& world) {
-  const double fx = std::floor((world.x() - grid.origin[0]) * grid.inv_cell_size);
-  const double fy = std::floor((world.y() - grid.origin[1]) * grid.inv_cell_size);
-  if (!(fx >= 0 && fy >= 0 && fx < double(grid.n[0]) && fy < double(grid.n[1]))) return std::nullopt;
-  return std::array<std::int32_t, 2>{static_cast<std::int32_t>(fx), static_cast<std::int32_t>(fy)};
-}
-
 ElementId element_at(const Elements& e, const Eigen::Vector2d& world) {
   ElementId best = -1;
   double best_r = 0;

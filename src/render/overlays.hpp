@@ -20,7 +20,7 @@
 #include "render/camera.hpp"
 #include "render/draw_sink.hpp"
 #include "render/label_space.hpp"
-#include "render/lists.hpp"
+#include "core/traced_lists.hpp"
 #include "render/verify_overlay.hpp"
 
 namespace nbscope::render {
@@ -129,9 +129,6 @@ struct OverlayScene {
 
 // Draws the scene and every overlay `flags` turns on, seen through `camera`.
 void draw_scene(const OverlayScene& scene, const OverlayFlags& flags, const Camera& camera, DrawSink& sink);
-
-// The cell (ix, iy) of a world point, or nullopt outside the grid.
-std::optional<std::array<std::int32_t, 2>> cell_at(const Grid& grid, const Eigen::Vector2d& world);
 
 // The element whose bounding circle contains `world` (the smallest such; ties: lowest id), or -1.
 ElementId element_at(const Elements& elements, const Eigen::Vector2d& world);

@@ -14,7 +14,7 @@
 
 #include "core/elements.hpp"
 #include "core/verify.hpp"
-#include "render/lists.hpp"
+#include "core/traced_lists.hpp"
 
 namespace nbscope::render {
 

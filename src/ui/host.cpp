@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string_view>
 
+#include "core/cells.hpp"
 #include "ui/panels.hpp"
 
 namespace nbscope::ui {
@@ -345,7 +346,7 @@ void UiHost::handle_mouse(UiContext& ctx) {
   }
   const Eigen::Vector2d world = ctx.camera.to_world(mouse);
   ctx.state.mouse_world = world;
-  ctx.state.hovered_cell = ctx.sim.grid != nullptr ? render::cell_at(*ctx.sim.grid, world) : std::nullopt;
+  ctx.state.hovered_cell = ctx.sim.grid != nullptr ? cell_at(*ctx.sim.grid, world) : std::nullopt;
   if (io.MouseWheel != 0.0f) ctx.camera.zoom_at(mouse, std::pow(kZoomPerNotch, static_cast<double>(io.MouseWheel)));
   if (io.MouseDown[1] && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
     ctx.camera.pan_pixels({io.MouseDelta.x, io.MouseDelta.y});

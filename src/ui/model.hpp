@@ -19,7 +19,7 @@
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
 #include "render/camera.hpp"
-#include "render/lists.hpp"
+#include "core/traced_lists.hpp"
 #include "render/overlays.hpp"
 #include "render/renderer.hpp"
 
@@ -69,7 +69,7 @@ struct SimView {
   const Elements* elements = nullptr;
   const Grid* grid = nullptr;
   const PairList* pairs = nullptr;
-  const std::vector<render::TracedList>* lists = nullptr;  // only while the list overlay is on
+  const std::vector<TracedList>* lists = nullptr;  // only while the list overlay is on
   std::shared_ptr<const FrameTrace> trace;  // this frame's traced detection, when the overlay or the stepper asked
   std::vector<AlgorithmStat> algorithm_stats;               // the chosen algorithm first
 

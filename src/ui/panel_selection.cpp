@@ -38,7 +38,7 @@ class SelectionPanel final : public Panel {
     if (s.lists == nullptr) {
       ImGui::TextDisabled("lists: turn on the list overlay (L)");
     } else {
-      for (const render::TracedList& l : *s.lists) {
+      for (const TracedList& l : *s.lists) {
         const auto at = std::find(l.chain.begin(), l.chain.end(), k);
         if (at == l.chain.end()) continue;
         const ElementId next = at + 1 == l.chain.end() ? -1 : *(at + 1);
@@ -71,7 +71,7 @@ class SelectionPanel final : public Panel {
 }  // namespace
 
 // Windowed around the element: three before it, three after.
-std::string describe_chain(const render::TracedList& l, ElementId k, bool book) {
+std::string describe_chain(const TracedList& l, ElementId k, bool book) {
   const auto at = std::find(l.chain.begin(), l.chain.end(), k);
   const auto pos = static_cast<std::size_t>(at - l.chain.begin());
   const TracedArray heads{l.heads_name, l.heads_shape.empty() ? std::vector<std::int64_t>{l.slot + 1} : l.heads_shape, {}};

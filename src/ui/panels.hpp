@@ -40,7 +40,7 @@ std::string describe_violation(const Violation& violation, bool book);
 
 // The Selection panel's line for list `l` around element k: "B[1][8]: 11 -> [12] -> 191 -> ... ",
 // the head named as the Arrays panel names it, every number from 1 with `book`.
-std::string describe_chain(const render::TracedList& l, ElementId k, bool book);
+std::string describe_chain(const TracedList& l, ElementId k, bool book);
 
 // Formats milliseconds for a panel, or "-" when timings are hidden (reproducible screenshots).
 std::string format_ms(const SimView& sim, double ms);

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <string>
 
-#include "render/lists.hpp"
+#include "core/traced_lists.hpp"
 #include "render/overlays.hpp"
 #include "ui/stepper_panels.hpp"
 
@@ -67,7 +67,7 @@ class SceneWriter {
   // The lists overlay's colour of the list headed by slot `slot` of array `heads`.
   static Rgba list_colour(const char* kind, int heads, std::int64_t slot, const StepperSession& s) {
     const auto& arrays = s.stepper().trace().arrays();
-    const bool below = heads >= 0 && static_cast<std::size_t>(heads) < arrays.size() && render::is_row_below(arrays[heads], slot);
+    const bool below = heads >= 0 && static_cast<std::size_t>(heads) < arrays.size() && is_row_below(arrays[heads], slot);
     return render::list_colour(kind, below);
   }
 

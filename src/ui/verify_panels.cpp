@@ -136,7 +136,7 @@ render::ScreenInsets verify_panel_insets(const VerifyUiState& state) {
   return in;
 }
 
-std::string list_line(const verify::UserArrays& user, const verify::WalkedList& walked, const render::TracedList& drawn,
+std::string list_line(const verify::UserArrays& user, const verify::WalkedList& walked, const TracedList& drawn,
                       int base, std::size_t max_ids) {
   std::string out;
   if (walked.family >= 0 && static_cast<std::size_t>(walked.family) < user.families.size())

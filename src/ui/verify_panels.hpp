@@ -11,7 +11,7 @@
 #include "core/verify.hpp"
 #include "render/camera.hpp"
 #include "render/label_space.hpp"
-#include "render/lists.hpp"
+#include "core/traced_lists.hpp"
 #include "render/overlays.hpp"
 
 namespace nbscope::ui {
@@ -29,7 +29,7 @@ inline constexpr float kVerifyColumnWidth = 390.0f;
 struct VerifyUiModel {
   const verify::UserArrays* user = nullptr;
   const verify::ArraysVerdict* verdict = nullptr;
-  const std::vector<render::TracedList>* lists = nullptr;  // verdict->lists as drawn (heads named)
+  const std::vector<TracedList>* lists = nullptr;  // verdict->lists as drawn (heads named)
   int base = 0;                                            // the numbering shown (the file's)
   std::string source;                                      // "nine_screen_bug.json on nine.csv"
 };
@@ -63,7 +63,7 @@ struct VerifyPanelsLayout {
 // One list as the book writes it, ids shown with `base`: "C[5][7]: 4 -> 2 -> 1 -> -1" (at most
 // `max_ids` ids, then "..."); a cut list ends in "-> (cut)" (a walk cut at once: "C[5][7]: (cut)").
 [[nodiscard]] std::string list_line(const verify::UserArrays& user, const verify::WalkedList& walked,
-                                    const render::TracedList& drawn, int base, std::size_t max_ids = 12);
+                                    const TracedList& drawn, int base, std::size_t max_ids = 12);
 // Draws the open panels (between ImGui::NewFrame and ImGui::Render) on a display of `width` x `height`.
 VerifyPanelsLayout draw_verify_panels(const VerifyUiModel& model, VerifyUiState& state, VerifyUiRequests& requests,
                                       float width, float height);

@@ -1,8 +1,9 @@
-// nbscope render: the singly connected lists of one traced detection, rebuilt from its events for
-// drawing. A detector clears its heads before it returns, so the final arrays hold no lists: each
-// list is captured from the replayed arrays just before its head is cleared (or at the end of the
-// run if it never is). A list rebuilt several times (NBS: the x-lists of every row) gives one
-// TracedList per build. Sort, which has no lists, gives its runs of equal cell keys instead.
+// nbscope core: the singly connected lists of one traced detection, rebuilt from its events for
+// the overlays, the panels and verify (the list model). A detector clears its heads before it
+// returns, so the final arrays hold no lists: each list is captured from the replayed arrays just
+// before its head is cleared (or at the end of the run if it never is). A list rebuilt several
+// times (NBS: the x-lists of every row) gives one TracedList per build. Sort, which has no lists,
+// gives its runs of equal cell keys instead.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -12,7 +13,7 @@
 #include "core/elements.hpp"
 #include "core/trace.hpp"
 
-namespace nbscope::render {
+namespace nbscope {
 
 // One list as the detector built it.
 struct TracedList {
@@ -41,4 +42,4 @@ struct TracedList {
 // lists.
 std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_count, std::size_t upto = SIZE_MAX);
 
-}  // namespace nbscope::render
+}  // namespace nbscope

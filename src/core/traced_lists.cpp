@@ -1,10 +1,10 @@
-#include "render/lists.hpp"
+#include "core/traced_lists.hpp"
 
 #include <algorithm>
 #include <map>
 #include <tuple>
 
-namespace nbscope::render {
+namespace nbscope {
 
 namespace {
 
@@ -148,4 +148,4 @@ std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_co
   return out;
 }
 
-}  // namespace nbscope::render
+}  // namespace nbscope
