@@ -13,7 +13,7 @@
 //
 // Why it is the same frame: the worker runs the very PhysicsWorld::step() that step() runs, on the
 // same world in the same order (Box2D is deterministic), and the adoption then runs the same
-// detect_and_check() step() runs; only the thread differs (tests/test_frame_loop_overlap.cpp).
+// detect_and_check() step() runs; only the thread differs (tests/app/test_frame_loop_overlap.cpp).
 #include <system_error>
 
 #include "app/frame_loop_impl.hpp"

@@ -169,7 +169,7 @@ TEST(Cli, ADirectoryAsInputIsRefusedByName) {
 TEST(Cli, BytesFromABadFileAreEscapedSoTheErrorStaysOnePrintableLine) {
   const std::string dir = scratch_dir("unprintable") + "/d\xC3\xA9j\xC3\xA0";  // a UTF-8 name stays as it is
   std::filesystem::create_directories(dir);
-  // (A NUL byte is refused before any field is read: tests/test_hostile_cli.cpp.)
+  // (A NUL byte is refused before any field is read: tests/app/test_hostile_cli.cpp.)
   write_text(dir + "/in.csv", std::string("1,2\x01x\r\xFF,1\n", 10));
   const auto r = run("pairs --input '" + dir + "/in.csv'");
   EXPECT_EQ(r.exit_code, 2);
