@@ -17,7 +17,7 @@ namespace nbscope {
 
 // Inputs of one detection besides the elements.
 struct DetectOptions {
-  GridOptions grid;                        // cell size / origin overrides (defaults: DESIGN.md "Cells")
+  GridOptions grid;                        // cell size / origin overrides (defaults: docs/architecture.md "Cells")
   std::size_t max_pairs = kDefaultMaxPairs;  // past this detection throws Error
 };
 

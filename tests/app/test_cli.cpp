@@ -184,7 +184,7 @@ TEST(Cli, BytesFromABadFileAreEscapedSoTheErrorStaysOnePrintableLine) {
   EXPECT_EQ(r.err, "nbscope: error: " + dir + "/in.csv:1: y: '2\\x01x\\x0D\\xFF' is not a number\n");
 }
 
-// The window's keys (every one the host and the Stepper handle) in gui --help and in the README's key
+// The window's keys (every one the host and the Stepper handle) in gui --help and in docs/window.md's key
 // list, as in the Help menu (test_stepper_ui.cpp checks the menu).
 TEST(Cli, HelpAndTheReadmeNameEveryKeyOfTheWindow) {
   const auto one_line = [](const std::string& text) {  // line breaks and indents as single spaces
@@ -197,14 +197,14 @@ TEST(Cli, HelpAndTheReadmeNameEveryKeyOfTheWindow) {
     return out;
   };
   const std::string help = one_line(run("gui --help").out);
-  const std::string readme = testcli::read_text(std::string(NBSCOPE_SOURCE_DIR) + "/README.md");
+  const std::string readme = testcli::read_text(std::string(NBSCOPE_SOURCE_DIR) + "/docs/window.md");
   const std::size_t keys_at = readme.find("Keys: P play/pause");
   ASSERT_NE(keys_at, std::string::npos);
   const std::string keys = one_line(readme.substr(keys_at, readme.find("\n\n", keys_at) - keys_at));
   for (const char* key : {"P play", "O single step", "R restart", "Home", "1..9", "Esc", "J play backwards", "Shift+[", "->",
                           "<-", "Space", "PageUp", "PageDown", "Shift: one phase", "Shift: on the selected cell"}) {
     EXPECT_NE(help.find(key), std::string::npos) << key << " missing from gui --help";
-    EXPECT_NE(keys.find(key), std::string::npos) << key << " missing from the README's key list";
+    EXPECT_NE(keys.find(key), std::string::npos) << key << " missing from docs/window.md's key list";
   }
 }
 

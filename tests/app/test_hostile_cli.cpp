@@ -1,6 +1,6 @@
 // Hostile files through the binary: /dev/zero as every kind of input, 80 KB and 1 MB of nested
 // brackets as a scene, 20 MB and 2 MB numeric fields, a .nbsrec header given twice — each exits 2 with one
-// short line naming the file. Time and memory are not measured here (see README "Bad input").
+// short line naming the file. Time and memory are not measured here (see docs/limits.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>
