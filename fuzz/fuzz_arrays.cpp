@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/array_schema.hpp"
 #include "core/error.hpp"
 #include "core/grid.hpp"
 #include "core/verify.hpp"
@@ -74,7 +75,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   const Elements& e = file.dim.value_or(2) == 3 ? three : two;
   if (file.elements && *file.elements != e.size()) return 0;  // verify refuses it before the arrays
-  std::vector<std::string> algorithms{"screen", "nbs", "tree", "sort"};
+  std::vector<std::string> algorithms = nbscope::array_schema::algorithms();
   if (file.algorithm) algorithms = {*file.algorithm};
   for (const std::string& algorithm : algorithms) {
     nbscope::verify::UserArrays user;

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "app/command_table.hpp"
 #include "core/error.hpp"
 #include "io/excerpt.hpp"
 
@@ -115,28 +116,19 @@ void Args::finish() const {
     if (!used_[i]) throw Error(args_[i] + ": unexpected argument (see nbscope --help)");
 }
 
-// The rendering options gui, headless and replay share (app/view_options.cpp).
-#define NBSCOPE_VIEW_OPTIONS "--screenshot", "--size", "--overlays", "--panels", "--select", "--lists", "--camera", \
-    "--no-timings", "--step", "--book-numbering", "--shader-dir"
-
+// The command table's options (app/command_table.hpp) as names per command, built once from it.
 const std::vector<std::pair<const char*, std::vector<const char*>>>& command_options() {
-  static const std::vector<std::pair<const char*, std::vector<const char*>>> table = {
-      {"gui", {"--scene", "--algorithm", "--inject-fault", "--frames", "--history-mb", "--max-contacts", "--back", "--input", "--arrays",
-               "--cell-size", "--origin", "--cells", "--base", "--exact", NBSCOPE_VIEW_OPTIONS}},
-      {"headless", {"--scene", "--frames", "--algorithm", "--report", "--inject-fault", "--brute-limit", "--quiet",
-                    "--record", "--stop-at-violation", "--rewind", "--history-mb", "--max-contacts", "--back", "--violation", "--gl",
-                    "--scaling", "--layout", "--n", "--points-per-decade", NBSCOPE_VIEW_OPTIONS}},
-      {"replay", {"--headless", "--frames", "--algorithm", "--report", "--inject-fault", "--brute-limit", "--quiet",
-                  "--stop-at-violation", "--gl", NBSCOPE_VIEW_OPTIONS}},
-      {"pairs", {"--input", "--algorithm", "--output", "--repeat", "--cell-size", "--origin", "--cells", "--max-pairs"}},
-      {"dump", {"--input", "--algorithm", "--cell-size", "--origin", "--cells", "--format"}},
-      {"verify", {"--input", "--pairs", "--arrays", "--algorithm", "--base", "--exact", "--cell-size", "--origin", "--cells",
-                  "--brute-limit", "--gl", NBSCOPE_VIEW_OPTIONS}},
-      {"scaling", {"--algorithm", "--layout", "--n", "--points-per-decade", "--output", "--quiet"}},
-  };
-  return table;
+  static const std::vector<std::pair<const char*, std::vector<const char*>>> options = [] {
+    std::vector<std::pair<const char*, std::vector<const char*>>> out;
+    for (const CommandSpec& command : command_table()) {
+      out.emplace_back(command.name, std::vector<const char*>{});
+      for (const OptionGroup& g : command.groups)
+        for (const OptionSpec& o : g.options) out.back().second.push_back(o.name);
+    }
+    return out;
+  }();
+  return options;
 }
-#undef NBSCOPE_VIEW_OPTIONS
 
 std::string commands_taking(const std::string& option) {
   std::string out;

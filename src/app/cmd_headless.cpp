@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -25,44 +24,11 @@
 #include "io/recording.hpp"
 #include "io/report_json.hpp"
 #include "physics/divergence.hpp"
+#include "io/signals.hpp"
 
 namespace nbscope {
 
 namespace {
-
-// Ctrl+C, SIGTERM or SIGHUP while recording: the loop stops at the next frame and throws, so the
-// recording's temporary file is removed and no half recording remains (exit 2, one error line).
-// Without --record nothing needs it: the report's temporary exists only while it is written at the
-// end, and io/atomic_file's handler removes it if a signal comes then.
-volatile std::sig_atomic_t g_interrupted = 0;  // the signal's number, 0 for none
-extern "C" void note_interrupt(int sig) { g_interrupted = sig; }
-
-// "SIGINT" for the signals InterruptGuard takes.
-const char* signal_name(int sig) { return sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : sig == SIGHUP ? "SIGHUP" : "a signal"; }
-
-// Installs note_interrupt for SIGINT, SIGTERM and SIGHUP while it lives (an ignored SIGHUP, as
-// under nohup, stays ignored).
-class InterruptGuard {
- public:
-  InterruptGuard() : old_int_(std::signal(SIGINT, note_interrupt)), old_term_(std::signal(SIGTERM, note_interrupt)) {
-    struct sigaction hup {};
-    hup_ignored_ = ::sigaction(SIGHUP, nullptr, &hup) == 0 && (hup.sa_flags & SA_SIGINFO) == 0 && hup.sa_handler == SIG_IGN;
-    if (!hup_ignored_) old_hup_ = std::signal(SIGHUP, note_interrupt);
-  }
-  ~InterruptGuard() {
-    std::signal(SIGINT, old_int_);
-    std::signal(SIGTERM, old_term_);
-    if (!hup_ignored_) std::signal(SIGHUP, old_hup_);
-  }
-  InterruptGuard(const InterruptGuard&) = delete;
-  InterruptGuard& operator=(const InterruptGuard&) = delete;
-
- private:
-  void (*old_int_)(int);
-  void (*old_term_)(int);
-  void (*old_hup_)(int) = SIG_DFL;
-  bool hup_ignored_ = false;
-};
 
 // A one-line bar on stderr, redrawn only when it changes; erased when done or when an error
 // unwinds past it, so that the error line starts clean.
@@ -410,16 +376,19 @@ int run_headless_loop(const HeadlessOptions& o) {
 
   // The recording: the scene's pinned grid, then frame 0 (the initial poses, detected before any step) and every step.
   std::unique_ptr<RecordingWriter> recorder;
-  std::optional<InterruptGuard> interrupts;
+  // Ctrl+C, SIGTERM or SIGHUP while recording: the loop stops at the next frame and throws, so the
+  // recording's temporary file is removed and no half recording remains (exit 2, one error line).
+  // Without --record nothing needs it: the report's temporary exists only while it is written at the
+  // end, and io/signals' handler removes it if a signal comes then.
+  std::optional<StopOnSignals> interrupts;
   if (o.record) {
     recorder = std::make_unique<RecordingWriter>(*o.record, loop.source().scene().grid, std::string("nbscope ") + kVersion + " headless --record: scene " + o.scene);
-    g_interrupted = 0;
     interrupts.emplace();
     recorder->write_frame(loop.source().frame(), loop.source().time(), loop.source().elements());
   }
   const auto check_interrupt = [&] {
-    if (g_interrupted != 0)
-      throw Error("interrupted: " + *o.record + " not written (" + signal_name(g_interrupted) + "; a recording is whole or not at all)");
+    if (stop_signal() != 0)
+      throw Error("interrupted: " + *o.record + " not written (" + signal_name(stop_signal()) + "; a recording is whole or not at all)");
   };
 
   Progress progress(!o.quiet && ::isatty(STDERR_FILENO) == 1, frames);
@@ -456,7 +425,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   }
   progress.finish();
   if (recorder) {
-    interrupts.reset();  // from here a signal ends the process, and io/atomic_file removes the temporary
+    interrupts.reset();  // from here a signal ends the process, and io/signals removes the temporary
     check_interrupt();
     recorder->commit();
   }

@@ -111,7 +111,7 @@ int report_arrays(const VerifyArraysInputs& in, const VerifyArraysRun& run) {
                     "the list of its own cell";
     if (in.exact) s += ", every list in the book's order";
     if (v.other_order_lists > 0)
-      s += " (" + plural(v.other_order_lists, run.user.algorithm == "sort" ? "tie" : "list") +
+      s += " (" + plural(v.other_order_lists, run.user.sort ? "tie" : "list") +
            " in another order than the book's; --exact holds them to it)";
     print_line(s);
     std::fflush(stdout);

@@ -4,7 +4,7 @@
 //
 // The world, its worker and the snapshot the accessors read meanwhile are physics/live_world.hpp's
 // (why it is safe, why it is the same frame); this file arms the slow-frame note and runs the
-// adopted frame through the same detect_and_check() step() runs (tests/test_frame_loop_overlap.cpp).
+// adopted frame through the same detect_and_check() step() runs (tests/app/test_frame_loop_overlap.cpp).
 #include "app/frame_loop_impl.hpp"
 
 namespace nbscope {

@@ -36,11 +36,6 @@ constexpr std::size_t kFrameHistory = 240;
 // A fit leaves this much below the scene for the legend (render::draw_scene's lower right corner).
 constexpr double kLegendReservePx = 44.0;
 
-render::ScreenInsets with_legend(render::ScreenInsets insets) {
-  insets.bottom += kLegendReservePx;
-  return insets;
-}
-
 }  // namespace
 
 // ---- scene files ------------------------------------------------------------------------------
@@ -58,7 +53,8 @@ std::string default_scene_path() { return data_dir() + "/assets/scenes/default.j
 
 // ---- GlView -----------------------------------------------------------------------------------
 
-GlView::GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions& options) : context_(context) {
+GlView::GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions& options)
+    : context_(context), framing_(kLegendReservePx, render::FocusZoom{6, 2}) {
   renderer_ = std::make_unique<render::Renderer>(render::resolve_shader_dir(options.shader_dir));
   imgui_ = std::make_unique<render::ImGuiLayer>(window);
   gl_description_ = context.describe();
@@ -103,29 +99,11 @@ GlView::~GlView() {
 }
 
 void GlView::fit_camera(const FrameLoop& loop) {
+  // The elements and half a cell around them: the neighbour cells and the list heads stay in view
+  // even when the grid is pinned much larger (the book's 10x10 figure).
   camera_.set_viewport(context_.width(), context_.height());
-  const Elements& e = loop.source().elements();
-  render::WorldRect box{{0, 0}, {1, 1}};
-  if (e.size() > 0) {
-    // The elements and half a cell around them: the neighbour cells and the list heads stay in view
-    // even when the grid is pinned much larger (the book's 10x10 figure).
-    const double d = loop.result().selected().grid.dim == 2 ? loop.result().selected().grid.cell_size : 0.0;
-    box.min = Eigen::Vector2d((e.x - e.r).minCoeff(), (e.y - e.r).minCoeff()).array() - 0.5 * d;
-    box.max = Eigen::Vector2d((e.x + e.r).maxCoeff(), (e.y + e.r).maxCoeff()).array() + 0.5 * d;
-  }
-  fit_box_ = box;
-  home_is_fixed_ = false;
-  fitted_insets_ = host_.insets(state_);
-  camera_.fit(box, 0.06, with_legend(fitted_insets_));
-}
-
-void GlView::refit() {
-  fitted_insets_ = host_.insets(state_);
-  if (home_is_fixed_ && fixed_camera_) {
-    camera_.look_at({(*fixed_camera_)[0], (*fixed_camera_)[1]}, (*fixed_camera_)[2], fitted_insets_);
-  } else if (fit_box_) {
-    camera_.fit(*fit_box_, 0.06, with_legend(fitted_insets_));
-  }
+  framing_.set_home_box(render::elements_box(loop.source().elements(), loop.result().selected().grid));
+  framing_.go_home(camera_, host_.insets(state_));
 }
 
 void GlView::check_selection(const FrameLoop& loop) const {
@@ -169,12 +147,12 @@ void GlView::on_scene_loaded(const FrameLoop& loop, bool fit) {
   state_.selected_pair.reset();
   state_.selected_cell.reset();
   state_.current_violation = -1;
-  focus_.reset();
+  framing_.forget_focus();
   if (fit) fit_camera(loop);
   if (fit && fixed_camera_) {
     // --camera X,Y,PPM: (X, Y) in the middle of the part of the view the panels leave free.
-    home_is_fixed_ = true;
-    refit();
+    framing_.set_home_view(*fixed_camera_);
+    framing_.go_home(camera_, host_.insets(state_));
   }
 }
 
@@ -238,29 +216,12 @@ void GlView::focus_violation(const FrameLoop& loop, const Violation& v, bool ope
       break;
     }
   const Eigen::Vector2d a(e.x[v.pair.i], e.y[v.pair.i]), b(e.x[v.pair.j], e.y[v.pair.j]);
-  focus_ = Focus{a, b, (b - a).norm() + e.r[v.pair.i] + e.r[v.pair.j], std::nullopt};
-  apply_focus();
+  // The pair's middle in the middle of the free view, zoomed so that it spans a sixth to a half of it.
+  camera_.set_viewport(context_.width(), context_.height());
+  framing_.focus(camera_, 0.5 * (a + b), (b - a).norm() + e.r[v.pair.i] + e.r[v.pair.j], host_.insets(state_));
   rebuild_trail(loop);
   if (open_stepper) state_.panel_open[ui::kStepperTitle] = true;
   if (stepper_open()) stepper_->set_target(ui::StepperSession::PairTarget{v.frame, v.pair, v.invariant, v.what});
-}
-
-void GlView::apply_focus() {
-  if (!focus_) return;
-  // The user panned or zoomed since: the camera is theirs again.
-  if (focus_->applied && !(focus_->applied->first == camera_.centre() && focus_->applied->second == camera_.pixels_per_metre())) {
-    focus_.reset();
-    return;
-  }
-  // The pair's middle in the middle of the free view, zoomed so that it spans a sixth to a half of it.
-  const render::ScreenInsets in = host_.insets(state_);
-  const double free_px = std::max(100.0, std::min(context_.width() - in.left - in.right, context_.height() - in.top - in.bottom));
-  double ppm = camera_.pixels_per_metre();
-  if (focus_->span * ppm < free_px / 6) ppm = free_px / 6 / focus_->span;
-  if (focus_->span * ppm > free_px / 2) ppm = free_px / 2 / focus_->span;
-  camera_.set(camera_.centre(), ppm);
-  camera_.centre_on(0.5 * (focus_->a + focus_->b), in);
-  focus_->applied = std::make_pair(camera_.centre(), camera_.pixels_per_metre());
 }
 
 bool GlView::panel_open(std::string_view title) const {
@@ -431,14 +392,9 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   frame_history_.push_back(static_cast<float>(session.frame_ms > 0 ? session.frame_ms : ms_since(frame_start)));
   if (frame_history_.size() > kFrameHistory) frame_history_.erase(frame_history_.begin());
   if (requests.camera_home) {
-    focus_.reset();
     fit_camera(loop);
-  } else if (focus_) {
-    apply_focus();
-  } else if (camera_.at_home() && !(host_.insets(state_) == fitted_insets_)) {
-    // Panels opened, closed or resized while the camera is where the last fit put it: fit again
-    // into the space they leave.
-    refit();
+  } else {
+    framing_.settle(camera_, host_.insets(state_));  // the focus kept, or Home again in the space the panels leave
   }
   return requests;
 }

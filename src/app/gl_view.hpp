@@ -15,6 +15,7 @@
 #include "app/view_options.hpp"
 #include "core/frame_trace.hpp"
 #include "io/png.hpp"
+#include "render/camera_framing.hpp"
 #include "render/gl_context.hpp"
 #include "render/imgui_layer.hpp"
 #include "render/renderer.hpp"
@@ -108,15 +109,11 @@ class GlView {
   void build_checks(const FrameLoop& loop);
   void fit_camera(const FrameLoop& loop);
   void rebuild_trail(const FrameLoop& loop);
-  // Puts the camera on focus_ in the space the panels leave (again while they settle), until the
-  // user moves the camera.
-  void apply_focus();
   // True when the panel titled `title` is open.
   [[nodiscard]] bool panel_open(std::string_view title) const;
   [[nodiscard]] bool stepper_open() const;
   // Any of the Stepper, Arrays and Pseudocode panels is open: each shows the held trace.
   [[nodiscard]] bool stepper_panels_open() const;
-  void refit();
 
   render::GlContext& context_;
   std::unique_ptr<render::Renderer> renderer_;
@@ -130,18 +127,9 @@ class GlView {
   std::optional<std::int64_t> step_option_;            // --step K
   std::shared_ptr<ui::StepperSession> stepper_;
   std::shared_ptr<ScalingJob> scaling_ = std::make_shared<ScalingJob>();
-  // The last fit (load or Home): while the user leaves the camera there, it refits to the same box
+  // Home (the scene fitted, or --camera's view on load), a violation's pair kept in view, the refit
   // when the panels change the free space.
-  std::optional<render::WorldRect> fit_box_;
-  bool home_is_fixed_ = false;  // Home is --camera's view (until the user asks for Home)
-  render::ScreenInsets fitted_insets_;
-  // A violation's pair the camera is kept on: both centres and the pair's extent.
-  struct Focus {
-    Eigen::Vector2d a, b;
-    double span = 0;
-    std::optional<std::pair<Eigen::Vector2d, double>> applied;  // where the camera was put
-  };
-  std::optional<Focus> focus_;
+  render::CameraFraming framing_;
   std::string gl_description_;
   Cost cost_;
 

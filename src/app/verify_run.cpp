@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/array_schema.hpp"
 #include "core/error.hpp"
 #include "io/arrays_json.hpp"
 #include "io/csv.hpp"
@@ -93,11 +94,11 @@ VerifyArraysRun run_verify_arrays(const VerifyArraysInputs& in) {
   } else if (file.algorithm) {
     algorithm = *file.algorithm;
   } else {
-    throw Error(f + ": $: no \"algorithm\" key, and no --algorithm (screen, nbs, tree or sort)");
+    throw Error(f + ": $: no \"algorithm\" key, and no --algorithm (" + array_schema::algorithms_text("or") + ")");
   }
-  if (algorithm != "screen" && algorithm != "nbs" && algorithm != "tree" && algorithm != "sort")
+  if (array_schema::find_layout(algorithm, e.dim) == nullptr)
     throw Error((in.algorithm ? std::string("--algorithm") : f + ": $.algorithm") + ": '" + algorithm +
-                "': verify checks the arrays of screen, nbs, tree and sort");
+                "': verify checks the arrays of " + array_schema::algorithms_text());
   if (file.dim && *file.dim != e.dim)
     throw Error(f + ": $.dim: " + std::to_string(*file.dim) + "D arrays, but " + in.elements_path + " holds " +
                 std::to_string(e.dim) + "D elements");

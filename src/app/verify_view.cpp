@@ -19,14 +19,11 @@
 #include "io/atomic_file.hpp"
 #include "io/plural.hpp"
 #include "render/shader.hpp"
+#include "ui/window_input.hpp"
 
 namespace nbscope {
 
 namespace {
-// Mouse wheel: zoom per notch.
-constexpr double kZoomPerNotch = 1.2;
-// Pixels the mouse may move with the button down and still click (select) rather than pan.
-constexpr float kClickSlopPx = 4.0f;
 // Caption lines: as wide as the free view allows (ImGui's font: 7 px a character), within these.
 constexpr std::size_t kMinCaptionChars = 40, kMaxCaptionChars = 110;
 
@@ -36,7 +33,7 @@ render::Vec2 v2(double x, double y) { return {static_cast<float>(x), static_cast
 // ---- set-up -----------------------------------------------------------------------------------
 
 VerifyView::VerifyView(render::GlContext& context, GLFWwindow* window, const VerifyArraysRun& run, const ViewOptions& options)
-    : run_(run), context_(context), book_(run.user.base == 1) {
+    : run_(run), context_(context), book_(run.user.base == 1), framing_(0.0, render::FocusZoom{4, 1.5}) {
   // The arrays are given whole (nothing to step), and numbered as their file counts.
   if (options.step) throw Error("--step: does not apply to a verify run (the arrays are given whole, no operations to step)");
   if (options.book_numbering && !book_)
@@ -72,7 +69,9 @@ VerifyView::VerifyView(render::GlContext& context, GLFWwindow* window, const Ver
   }
   for (std::size_t i = 0; i < std::size(render::kListFilterNames); ++i)
     if (options.lists == render::kListFilterNames[i]) list_filter_ = static_cast<render::ListFilter>(i);
-  fixed_camera_ = options.camera;
+  // Home: the elements and half a cell around them (neighbour cells and the heads stay in view), or --camera's view.
+  framing_.set_home_box(render::elements_box(e, run.grid));
+  if (options.camera) framing_.set_home_view(*options.camera);
 
   lists_ = render::user_lists(run.user, run.verdict, run.user.base);
   for (std::size_t i = 0; i < lists_.size(); ++i)
@@ -118,21 +117,7 @@ render::ScreenInsets VerifyView::fit_insets() const {
 
 void VerifyView::fit() {
   camera_.set_viewport(context_.width(), context_.height());
-  fitted_insets_ = fit_insets();
-  focus_.reset();
-  if (fixed_camera_) {
-    camera_.look_at({(*fixed_camera_)[0], (*fixed_camera_)[1]}, (*fixed_camera_)[2], fitted_insets_);
-    return;
-  }
-  const Elements& e = run_.elements;
-  render::WorldRect box{{0, 0}, {1, 1}};
-  if (e.size() > 0) {
-    // The elements and half a cell around them: neighbour cells and the heads stay in view.
-    const double d = run_.grid.dim == 2 ? run_.grid.cell_size : 0.0;
-    box.min = Eigen::Vector2d((e.x - e.r).minCoeff(), (e.y - e.r).minCoeff()).array() - 0.5 * d;
-    box.max = Eigen::Vector2d((e.x + e.r).maxCoeff(), (e.y + e.r).maxCoeff()).array() + 0.5 * d;
-  }
-  camera_.fit(box, 0.06, fitted_insets_);
+  framing_.go_home(camera_, fit_insets());
 }
 
 void VerifyView::focus_on(std::vector<ElementId> ks) {
@@ -148,25 +133,9 @@ void VerifyView::focus_on(std::vector<ElementId> ks) {
   }
   // Its cells and their neighbours in view: at least two cells across.
   const double cell = run_.grid.dim == 2 ? run_.grid.cell_size : 0.0;
-  focus_ = Focus{0.5 * (lo + hi), std::max((hi - lo).norm() + 2 * r, 2 * cell), std::nullopt};
-  apply_focus();
-}
-
-void VerifyView::apply_focus() {
-  if (!focus_) return;
-  // The user panned or zoomed since: the camera is theirs again.
-  if (focus_->applied && !(focus_->applied->first == camera_.centre() && focus_->applied->second == camera_.pixels_per_metre())) {
-    focus_.reset();
-    return;
-  }
-  const render::ScreenInsets in = fit_insets();
-  const double free_px = std::max(100.0, std::min(context_.width() - in.left - in.right, context_.height() - in.top - in.bottom));
-  double ppm = camera_.pixels_per_metre();
-  if (focus_->span * ppm < free_px / 4) ppm = free_px / 4 / focus_->span;
-  if (focus_->span * ppm > free_px / 1.5) ppm = free_px / 1.5 / focus_->span;
-  camera_.set(camera_.centre(), ppm);
-  camera_.centre_on(focus_->centre, in);
-  focus_->applied = std::make_pair(camera_.centre(), camera_.pixels_per_metre());
+  // Zoomed so that it spans a quarter to two thirds of the free view.
+  camera_.set_viewport(context_.width(), context_.height());
+  framing_.focus(camera_, 0.5 * (lo + hi), std::max((hi - lo).norm() + 2 * r, 2 * cell), fit_insets());
 }
 
 // ---- problems ---------------------------------------------------------------------------------
@@ -254,10 +223,8 @@ void VerifyView::frame(bool live_input, float dt) {
     focus_on(lists_[static_cast<std::size_t>(*requests.go_to_list)].chain);
   if (requests.camera_home) {
     fit();
-  } else if (focus_) {
-    apply_focus();
-  } else if (camera_.at_home() && !(fit_insets() == fitted_insets_)) {
-    fit();  // the panels took another share of the display while the camera was where the fit put it
+  } else {
+    framing_.settle(camera_, fit_insets());  // the focus kept, or Home again in the space the panels leave
   }
 }
 
@@ -265,31 +232,24 @@ void VerifyView::frame(bool live_input, float dt) {
 
 void VerifyView::handle_input(ui::VerifyUiRequests& requests) {
   const ImGuiIO& io = ImGui::GetIO();
-  if (!io.WantCaptureKeyboard && !io.KeyCtrl && !io.KeyAlt && !io.KeySuper) {
+  if (ui::keys_reach_scene()) {
     const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
-    for (const char key : {'B', 'G', 'L', 'I', 'E'})
-      for (const render::OverlayInfo& o : render::overlay_infos())
-        if (o.key == key && pressed(key)) state_.overlays.*o.flag = !(state_.overlays.*o.flag);
+    ui::toggle_overlays_by_key(state_.overlays, "BGLIE");
     if (ImGui::IsKeyPressed('[', true)) step_problem(-1);
     if (ImGui::IsKeyPressed(']', true)) step_problem(+1);
     if (pressed(ImGui::GetKeyIndex(ImGuiKey_Home))) requests.camera_home = true;
     if (pressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) state_.selected_element = -1;
   }
-  const bool mouse_valid = io.MousePos.x > -1e30f && io.MousePos.y > -1e30f;
-  if (io.WantCaptureMouse || !mouse_valid) {
+  const std::optional<Eigen::Vector2d> mouse = ui::mouse_over_scene();
+  if (!mouse) {
     hovered_cell_.reset();
     return;
   }
-  const Eigen::Vector2d mouse(io.MousePos.x, io.MousePos.y);
-  const Eigen::Vector2d world = camera_.to_world(mouse);
+  const Eigen::Vector2d world = camera_.to_world(*mouse);
   hovered_cell_ = run_.grid.dim == 2 ? cell_at(run_.grid, world) : std::nullopt;
-  if (io.MouseWheel != 0.0f) camera_.zoom_at(mouse, std::pow(kZoomPerNotch, static_cast<double>(io.MouseWheel)));
   // Either button drags the view; a left click that did not drag selects the element under it.
-  for (int b = 0; b < 2; ++b)
-    if (io.MouseDown[b] && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) &&
-        (b == 1 || ImGui::IsMouseDragging(0, kClickSlopPx)))
-      camera_.pan_pixels({io.MouseDelta.x, io.MouseDelta.y});
-  if (ImGui::IsMouseReleased(0) && io.MouseDragMaxDistanceSqr[0] <= kClickSlopPx * kClickSlopPx) {
+  ui::move_camera_by_mouse(camera_, *mouse, true);
+  if (ImGui::IsMouseReleased(0) && io.MouseDragMaxDistanceSqr[0] <= ui::kClickSlopPx * ui::kClickSlopPx) {
     state_.selected_element = render::element_at(run_.elements, world);
     // An element at fault selects its (first) problem too.
     if (state_.selected_element >= 0)

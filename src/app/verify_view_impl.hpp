@@ -10,12 +10,12 @@
 #include <vector>
 
 #include "app/verify_view.hpp"
-#include "render/camera.hpp"
+#include "render/camera_framing.hpp"
 #include "render/gl_context.hpp"
 #include "render/imgui_layer.hpp"
+#include "render/overlay_verify.hpp"
 #include "render/overlays.hpp"
 #include "render/renderer.hpp"
-#include "render/verify_overlay.hpp"
 #include "ui/verify_panels.hpp"
 
 struct GLFWwindow;
@@ -53,9 +53,10 @@ class VerifyView {
   void step_problem(int delta);
   // Problem `index`'s elements, its link's ends (a head link: its list's first element).
   [[nodiscard]] std::vector<ElementId> problem_elements(int index) const;
+  // Home (the elements fitted, or --camera's view) in the space the panels and the legend leave.
   void fit();
+  // Keeps `elements` (their cells and neighbours) in view until the user moves the camera.
   void focus_on(std::vector<ElementId> elements);
-  void apply_focus();
   // What the panels cover (before their first frame: what they will), and that plus the legend's room.
   [[nodiscard]] render::ScreenInsets panel_insets() const;
   [[nodiscard]] render::ScreenInsets fit_insets() const;
@@ -77,15 +78,8 @@ class VerifyView {
   ui::VerifyPanelsLayout layout_;
   bool panels_seen_ = false;  // layout_ holds a drawn frame's panels
   std::optional<render::ListFilter> list_filter_;
-  std::optional<std::array<double, 3>> fixed_camera_;
-  render::ScreenInsets fitted_insets_;
-  // A problem or list the camera is kept on (until the user moves it).
-  struct Focus {
-    Eigen::Vector2d centre;
-    double span = 0;
-    std::optional<std::pair<Eigen::Vector2d, double>> applied;
-  };
-  std::optional<Focus> focus_;
+  // Home, a problem or list the camera is kept on (until the user moves it), the refit.
+  render::CameraFraming framing_;
   std::optional<std::array<std::int32_t, 2>> hovered_cell_;
   double frame_ms_ = 0;
 };

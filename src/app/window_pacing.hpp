@@ -4,6 +4,7 @@
 #pragma once
 #include <string>
 
+#include "io/signals.hpp"  // install_stop_handlers, stop_requested: Ctrl+C and SIGTERM close the window
 #include "render/gl_window.hpp"
 
 namespace nbscope {
@@ -13,11 +14,6 @@ namespace nbscope {
 
 // Where a window run without a display puts its screenshot: $TMPDIR (else /tmp)/nbscope-STEM.png.
 [[nodiscard]] std::string fallback_screenshot_path(const std::string& stem);
-
-// From now on Ctrl+C and SIGTERM only ask the window to close (so a loop can save its settings).
-void install_stop_handlers();
-// True once Ctrl+C or SIGTERM was received.
-[[nodiscard]] bool stop_requested();
 
 // Events at the top of each frame: polled while something moves and a few frames after (ImGui
 // settles hover states, popups and auto-sized panels over them); else a wait for input of at most

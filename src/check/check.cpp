@@ -10,7 +10,7 @@
 namespace nbscope {
 
 namespace {
-// The detectors the reference policy names (DESIGN.md "Cross-checks"): each is chosen for what
+// The detectors the reference policy names (docs/architecture.md "Reference policy"): each is chosen for what
 // it is, not for a capability another detector could share.
 constexpr std::string_view kBrute = "brute";  // the reference up to --brute-limit elements
 constexpr std::string_view kSort = "sort";    // the plainest cell method, above the limit

@@ -1,4 +1,4 @@
-// nbscope check: the cross-checks of one frame (DESIGN.md "Cross-checks").
+// nbscope check: the cross-checks of one frame (docs/architecture.md "Invariants").
 //
 // Sets: A = the chosen algorithm's pairs; R = the reference's (brute force up to
 // CheckOptions::brute_limit elements, above it and for brute itself another detector: sort, or nbs

@@ -18,7 +18,7 @@
 
 namespace nbscope {
 
-// The four per-frame invariants of DESIGN.md "Cross-checks".
+// The four per-frame invariants of docs/architecture.md "Invariants".
 enum class Invariant : std::uint8_t {
   AEqualsR,     // "A==R": the algorithm's pairs equal the reference's
   AInF,         // "A-in-F": the pairs of A in Box2D's scope are all in Box2D's contact list
@@ -63,7 +63,7 @@ struct Violation {
   const char* what = "";     // static text: "missing from A", "extra in A", "not in Box2D's contact list", ...
 };
 
-// Sizes of the frame's sets (see DESIGN.md "Cross-checks").
+// Sizes of the frame's sets (see docs/architecture.md "Invariants").
 struct FrameCounts {
   std::int64_t elements = 0;
   std::int64_t bodies = 0;

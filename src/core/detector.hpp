@@ -17,7 +17,7 @@ namespace nbscope {
 
 // Inputs of one detection besides the elements.
 struct DetectOptions {
-  GridOptions grid;                        // cell size / origin overrides (defaults: DESIGN.md "Cells")
+  GridOptions grid;                        // cell size / origin overrides (defaults: docs/architecture.md "Cells")
   std::size_t max_pairs = kDefaultMaxPairs;  // past this detection throws Error
 };
 
@@ -81,7 +81,7 @@ void DimensionalDetector<Self>::detect_traced(const Elements& elements, const De
 }
 
 // What the registry knows of one algorithm: its name, and what it can do, so that callers ask
-// for a capability instead of comparing names. tests/test_detectors.cpp holds every entry to its
+// for a capability instead of comparing names. tests/core/test_detectors.cpp holds every entry to its
 // word by running it traced.
 struct DetectorInfo {
   std::string name;

@@ -13,7 +13,7 @@ namespace nbscope {
 // (nbs: 2*nx + ny integers) within ~130 MB; a sparser world needs a larger --cell-size.
 inline constexpr std::int64_t kMaxCellsPerSide = std::int64_t{1} << 24;
 
-// How the grid is pinned. Unset fields are derived from the data each frame (DESIGN.md "Cells").
+// How the grid is pinned. Unset fields are derived from the data each frame (docs/architecture.md "Cells").
 // The one description of a pinned grid: detection options, scene files (Scene::grid), recordings
 // (Recording::grid) and the --cell-size/--origin/--cells flags all hold one. 2D grids read the
 // first two entries of `origin` and `cells`; by convention the third is 0 and 1 there.

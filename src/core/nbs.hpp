@@ -12,7 +12,7 @@
 // (iy-1,iz), (iy-1,iz-1), (iy,iz-1), (iy+1,iz-1) (heads A[5][nx], next X[N]); then the mask's 13
 // neighbour cells and the own cell. Time O(N + nz), memory nz + 2ny + 5nx + 3N integers.
 //
-// Two paths compute the same arrays and the same pairs in the same order (tests/test_nbs_fast.cpp):
+// Two paths compute the same arrays and the same pairs in the same order (tests/core/test_nbs_fast.cpp):
 // - detect_traced() and detect_book() run the book's loops as written (nbs.cpp, nbs3d.cpp): every
 //   list walk follows `next`, so with elements in random memory order each step is a cache miss;
 // - detect() runs the fast path (nbs_fast.cpp): the rows (3D: layers) are ordered by one counting

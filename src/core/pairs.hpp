@@ -22,7 +22,7 @@ using PairList = std::vector<Pair>;
 // stops with an Error instead of exhausting memory. Override with DetectOptions::max_pairs.
 inline constexpr std::size_t kDefaultMaxPairs = 50'000'000;
 
-// Contact as in DESIGN.md: |c_i - c_j| <= r_i + r_j, in double, touching counts. Exact to rounding
+// Contact as in docs/architecture.md: |c_i - c_j| <= r_i + r_j, in double, touching counts. Exact to rounding
 // for elements within the supported magnitudes (elements.hpp), where no square over- or underflows.
 [[nodiscard]] inline bool in_contact(const Elements& e, ElementId i, ElementId j) {
   const double dx = e.x[i] - e.x[j];

@@ -1,4 +1,4 @@
-// Index: names | ElementCells (each element's cell, with the neighbour across a boundary it lies on
+// Index: ElementCells (each element's cell, with the neighbour across a boundary it lies on
 // within rounding) | Checker: problems, one family's walk (heads in range, links in range, cycles,
 // repeats, wrong lists, dropped elements, order), sort's arrays | verify_arrays.
 #include "core/verify.hpp"
@@ -9,69 +9,6 @@
 #include <span>
 
 namespace nbscope::verify {
-
-const char* problem_kind_name(ProblemKind kind) {
-  switch (kind) {
-    case ProblemKind::OutOfRange: return "out of range";
-    case ProblemKind::Cycle: return "cycle";
-    case ProblemKind::TwoLists: return "repeated";
-    case ProblemKind::NotListed: return "dropped";
-    case ProblemKind::WrongList: return "wrong list";
-    case ProblemKind::NotGiven: return "not given";
-    case ProblemKind::WrongOrder: return "order";
-    case ProblemKind::WrongCell: return "wrong cell";
-  }
-  return "?";
-}
-
-std::string file_index(std::int64_t value, int base) {
-  if (value == kZeroInBase1) return "0";
-  if (value == -1) return "-1";
-  return std::to_string(value + base);
-}
-
-std::string list_where(const ListFamily& family, const UserList& l) {
-  const auto index = [](std::int64_t i) { return "[" + std::to_string(i) + "]"; };
-  switch (family.heads_form) {
-    case HeadsForm::Cells: {
-      std::string p = family.heads_path;
-      for (std::int32_t c : l.cell)
-        if (c >= 0) p += index(c);
-      return p;
-    }
-    case HeadsForm::Dense: return family.heads_path + index(l.slot);
-    case HeadsForm::Pairs: return family.heads_path + index(l.entry) + "[1]";
-    case HeadsForm::Leaves: return family.heads_path + index(l.entry) + ".head";
-  }
-  return family.heads_path;
-}
-
-std::string slot_name(const ListFamily& family, std::int64_t slot, int base) {
-  std::string out = family.heads_name;
-  std::vector<std::int64_t> index(family.heads_shape.size(), 0);
-  for (std::size_t a = index.size(); a-- > 0;) {
-    const std::int64_t n = std::max<std::int64_t>(family.heads_shape[a], 1);
-    index[a] = slot % n;
-    slot /= n;
-  }
-  if (index.empty()) index.push_back(slot);
-  for (std::int64_t i : index) out += "[" + std::to_string(i + base) + "]";
-  return out;
-}
-
-std::string cell_name(const std::array<std::int32_t, 3>& cell, int dim, int base) {
-  std::string out = "(";
-  for (int a = 0; a < dim; ++a) out += (a ? "," : "") + std::to_string(cell[a] + base);
-  return out + ")";
-}
-
-std::string scope_prefix(const ListFamily& family, int base) {
-  const auto& s = family.scope;
-  if (s[1] >= 0 && s[2] >= 0) return "row " + std::to_string(s[1] + base) + " of layer " + std::to_string(s[2] + base) + ": ";
-  if (s[1] >= 0) return "row " + std::to_string(s[1] + base) + ": ";
-  if (s[2] >= 0) return "layer " + std::to_string(s[2] + base) + ": ";
-  return "";
-}
 
 namespace {
 
@@ -415,25 +352,28 @@ class Checker {
                                                           static_cast<std::size_t>(hi - lo));
   }
 
-  // ---- sort ----
+  // ---- sort (its keys as core/array_schema.hpp names them) ----
+  static constexpr const char* kKeys = array_schema::kSort.keys_key;
+  static constexpr const char* kOrder = array_schema::kSort.order_key;
+  // "$.order[7]": the JSON path of entry p of a sort array.
+  static std::string sort_path(const char* key, std::size_t p) { return "$." + std::string(key) + "[" + std::to_string(p) + "]"; }
   void check_sort(const SortArrays& s) {
     const int dim = e_.dim;
-    const char* names[3] = {"ix", "iy", "iz"};
+    const auto& names = array_schema::kSort.axis_keys;
     for (int a = 0; a < dim; ++a) {
       for (std::size_t k = 0; k < std::min(s.cell_of[a].size(), static_cast<std::size_t>(n_)); ++k) {
         const auto id = static_cast<ElementId>(k);
         if (!cells_.fits(id, a, s.cell_of[a][k]) || s.cell_of[a][k] < 0)
           add({ProblemKind::WrongCell, std::string(names[a]) + "[" + el(id) + "] = " + value(s.cell_of[a][k]) + ", but element " +
-               el(id) + " lies in cell " + cell_name(cells_.cell(id), dim, user_.base), "$." + std::string(names[a]) + "[" +
-               std::to_string(k) + "]", {id}, {}, -1, -1});
+               el(id) + " lies in cell " + cell_name(cells_.cell(id), dim, user_.base), sort_path(names[a], k), {id}, {}, -1, -1});
       }
     }
     std::vector<std::int32_t> position(static_cast<std::size_t>(n_), -1);
     // The reader gives keys and order N entries each; shorter keys leave the rest of order unchecked.
     for (std::size_t p = 0; p < std::min(s.order.size(), s.keys.size()); ++p) {
       const std::int32_t k = s.order[p];
-      const std::string where = "$.order[" + std::to_string(p) + "]";
-      const std::string at = "order[" + std::to_string(p + static_cast<std::size_t>(user_.base)) + "]";
+      const std::string where = sort_path(kOrder, p);
+      const std::string at = std::string(kOrder) + "[" + std::to_string(p + static_cast<std::size_t>(user_.base)) + "]";
       if (!in_range(k)) {
         add({ProblemKind::OutOfRange, at + " = " + value(k) + ", but elements are " + el(0) + ".." + el(static_cast<ElementId>(n_ - 1)),
              where, {}, {}, -1, -1});
@@ -441,22 +381,22 @@ class Checker {
       }
       auto& seen = position[static_cast<std::size_t>(k)];
       if (seen != -1) {
-        add({ProblemKind::TwoLists, at + " = " + el(k) + ", but element " + el(k) + " is already at order[" +
+        add({ProblemKind::TwoLists, at + " = " + el(k) + ", but element " + el(k) + " is already at " + kOrder + "[" +
              std::to_string(seen + user_.base) + "]", where, {k}, {}, -1, -1});
         continue;
       }
       seen = static_cast<std::int32_t>(p);
       const auto& key = s.keys[p];
       if (!cells_.fits(k, key))
-        add({ProblemKind::WrongCell, "keys[" + std::to_string(p + static_cast<std::size_t>(user_.base)) + "] = " +
+        add({ProblemKind::WrongCell, std::string(kKeys) + "[" + std::to_string(p + static_cast<std::size_t>(user_.base)) + "] = " +
              cell_name(key, dim, user_.base) + ", but " + at + " = element " + el(k) + " lies in cell " +
-             cell_name(cells_.cell(k), dim, user_.base), "$.keys[" + std::to_string(p) + "]", {k}, {}, -1, -1});
+             cell_name(cells_.cell(k), dim, user_.base), sort_path(kKeys, p), {k}, {}, -1, -1});
       if (p > 0) check_sorted(s, p, dim);
     }
     for (ElementId k = 0; k < n_; ++k)
       if (position[static_cast<std::size_t>(k)] == -1)
         add({ProblemKind::NotListed, "element " + el(k) + " is not in order (it lies in cell " +
-             cell_name(cells_.cell(k), dim, user_.base) + ")", "$.order", {k}, {}, -1, -1});
+             cell_name(cells_.cell(k), dim, user_.base) + ")", "$." + std::string(kOrder), {k}, {}, -1, -1});
   }
 
   void check_sorted(const SortArrays& s, std::size_t p, int dim) {
@@ -466,13 +406,13 @@ class Checker {
     const std::string at = std::to_string(p + static_cast<std::size_t>(user_.base));
     const std::string before = std::to_string(p - 1 + static_cast<std::size_t>(user_.base));
     if (pa) {
-      add({ProblemKind::WrongCell, "keys[" + at + "] = " + cell_name(b, dim, user_.base) + " after keys[" + before + "] = " +
-           cell_name(a, dim, user_.base) + ": not sorted (ix first)", "$.keys[" + std::to_string(p) + "]", {}, {}, -1, -1});
+      add({ProblemKind::WrongCell, kKeys + ("[" + at) + "] = " + cell_name(b, dim, user_.base) + " after " + kKeys + "[" + before + "] = " +
+           cell_name(a, dim, user_.base) + ": not sorted (ix first)", sort_path(kKeys, p), {}, {}, -1, -1});
     } else if (std::equal(a.begin(), a.begin() + dim, b.begin()) && s.order[p] < s.order[p - 1] && in_range(s.order[p])) {
       if (exact_) {
-        add({ProblemKind::WrongOrder, "order[" + at + "] = " + el(s.order[p]) + " after order[" + before + "] = " +
+        add({ProblemKind::WrongOrder, kOrder + ("[" + at) + "] = " + el(s.order[p]) + " after " + kOrder + "[" + before + "] = " +
              el(s.order[p - 1]) + " in cell " + cell_name(b, dim, user_.base) + ": the book's ties go by element id",
-             "$.order[" + std::to_string(p) + "]", {s.order[p]}, {}, -1, -1});
+             sort_path(kOrder, p), {s.order[p]}, {}, -1, -1});
       } else {
         ++out_.other_order_lists;
       }

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/array_schema.hpp"
 #include "core/elements.hpp"
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
@@ -32,13 +33,8 @@ struct UserList {
   std::int32_t entry = 0;                 // the index of its entry in the file's heads array (HeadsForm Pairs, Leaves)
 };
 
-// How the file gives a family's heads, for the JSON path of a list's head value.
-enum class HeadsForm : std::uint8_t {
-  Cells,   // heads_path[ix][iy]([iz]), by the list's cell: "$.heads[4][6]"
-  Dense,   // heads_path[slot]: "$.y_heads[3]"
-  Pairs,   // [slot, head] pairs, the head at heads_path[entry][1]: "$.rows[2].x_heads[0][1]"
-  Leaves,  // heads_path[entry].head: "$.leaves[5].head"
-};
+// How the file gives a family's heads, for the JSON path of a list's head value (core/array_schema.hpp).
+using HeadsForm = array_schema::HeadsForm;
 
 // One family of lists sharing a next array: C + E (screen), HEAD + E (tree), y_heads + Y (nbs), the
 // x-lists of one NBS row (x_heads + X), ...

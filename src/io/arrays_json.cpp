@@ -1,14 +1,17 @@
-// Index: Reader (typed access with JSON paths) | header keys | one builder per algorithm (screen,
-// nbs 2D, nbs 3D, tree, sort) | ArraysJson::arrays | read/parse.
+// Index: Reader (typed access with JSON paths) | one builder per form of heads in the schema
+// (core/array_schema.hpp: cells, pairs and the nests holding them, dense, leaves) | sort | header
+// keys | ArraysJson::arrays (the layout's families, sort, nests) | read/parse.
 #include "io/arrays_json.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <type_traits>
 #include <vector>
 
+#include "core/array_schema.hpp"
 #include "core/error.hpp"
 #include "io/arrays_json_tree.hpp"
 #include "io/excerpt.hpp"
@@ -18,6 +21,8 @@ namespace nbscope {
 namespace {
 
 using Value = arrays_tree::Value;
+using array_schema::Family;
+using array_schema::Nest;
 using verify::ListFamily;
 using verify::UserList;
 
@@ -119,25 +124,34 @@ class Reader {
   std::int64_t n_;
 };
 
-// ---- screen: heads [ix][iy]([iz]) = C, next = E ----
-void build_screen(const Reader& r, const Value& doc, const Grid& g, verify::UserArrays& out) {
+const char* const kCellAxes[3] = {"ix", "iy", "iz"};
+const char* const kCellCounts[3] = {"nx", "ny", "nz"};
+
+// A family's names, form and order as the schema gives them (core/array_schema.hpp).
+ListFamily family_of(const Family& s) {
   ListFamily f;
-  f.heads_name = "C";
-  f.next_name = "E";
-  f.next_path = "$.next";
-  f.heads_path = "$.heads";
-  f.heads_form = verify::HeadsForm::Cells;
+  f.heads_name = s.heads_name;
+  f.next_name = s.next_name;
+  f.heads_form = s.form;
+  f.ascending = s.ascending;
+  return f;
+}
+
+// ---- HeadsForm::Cells (screen): heads [ix][iy]([iz]), a dense next array ----
+ListFamily cells_family(const Reader& r, const Value& doc, const Grid& g, const Family& s) {
+  ListFamily f = family_of(s);
+  f.next_path = key("$", s.next_key);
+  f.heads_path = key("$", s.heads_key);
   const int dim = g.dim;
   for (int a = 0; a < dim; ++a) f.heads_shape.push_back(g.n[a]);
-  const Value heads = r.member(doc, "$", "heads", "the screen array C[nx][ny] of list heads");
-  const char* axes[3] = {"nx", "ny", "nz"};
+  const Value heads = r.member(doc, "$", s.heads_key, s.heads_meaning);
   // Walk the nest axis by axis, checking each level's length.
   struct Level {
     Value v;
     std::array<std::int32_t, 3> cell;  // the indices so far (-1 below this level)
   };
-  const auto path_of = [](const std::array<std::int32_t, 3>& cell) {
-    std::string p = "$.heads";
+  const auto path_of = [&](const std::array<std::int32_t, 3>& cell) {
+    std::string p = f.heads_path;
     for (std::int32_t i : cell)
       if (i >= 0) p = at(p, static_cast<std::size_t>(i));
     return p;
@@ -146,7 +160,7 @@ void build_screen(const Reader& r, const Value& doc, const Grid& g, verify::User
   for (int a = 0; a < dim; ++a) {
     std::vector<Level> deeper;
     for (const Level& l : level) {
-      r.array(l.v, [&] { return path_of(l.cell); }, g.n[a], axes[a]);
+      r.array(l.v, [&] { return path_of(l.cell); }, g.n[a], kCellCounts[a]);
       std::int32_t i = 0;
       for (const Value v : l.v) {
         Level d{v, l.cell};
@@ -166,30 +180,27 @@ void build_screen(const Reader& r, const Value& doc, const Grid& g, verify::User
     }
     level = std::move(deeper);
   }
-  f.next = r.next_array(r.member(doc, "$", "next", "E, the next array"), "$.next");
-  out.families.push_back(std::move(f));
+  f.next = r.next_array(r.member(doc, "$", s.next_key, s.next_meaning), f.next_path);
+  return f;
 }
 
-// A family of lists whose heads are given as [slot, head] pairs (NBS rows, 3D layers): the slot is
-// the cell index on `axis` (of `n` cells); the next array as [k, next[k]] pairs.
-ListFamily sparse_family(const Reader& r, const Value& object, const std::string& path, const char* heads_key,
-                         const char* next_key, const char* heads_name, const char* next_name, int axis, std::int64_t n) {
-  ListFamily f;
+// ---- HeadsForm::Pairs (nbs rows, 3D layers): [slot, head] pairs, [k, next[k]] pairs ----
+// The slot is the cell index on the family's axis (of `n` cells).
+ListFamily sparse_family(const Reader& r, const Value& object, const std::string& path, const Family& s, std::int64_t n) {
+  ListFamily f = family_of(s);
   f.sparse = true;
-  f.heads_name = heads_name;
-  f.next_name = next_name;
   f.heads_shape = {n};
-  const std::string hp = key(path, heads_key);
+  const std::string hp = key(path, s.heads_key);
   f.heads_path = hp;
-  f.heads_form = verify::HeadsForm::Pairs;
-  const Value heads = r.array(r.member(object, path, heads_key, "[index, head] of each non-empty list"), hp);
+  const int axis = s.axis;
+  const Value heads = r.array(r.member(object, path, s.heads_key, s.heads_meaning), hp);
   f.lists.reserve(heads.size());
   std::size_t i = 0;
   for (const Value item : heads) {
     const auto p = [&](std::size_t j) { return at(at(hp, i), j); };
     const Value h = r.pair(item, [&] { return at(hp, i); });
     UserList list;
-    list.cell[axis] = r.cell(h[0], [&] { return p(0); }, n, axis == 0 ? "ix" : axis == 1 ? "iy" : "iz");
+    list.cell[axis] = r.cell(h[0], [&] { return p(0); }, n, kCellAxes[axis]);
     list.slot = list.cell[axis];
     list.head = r.element(h[1], [&] { return p(1); });
     if (list.head != -1) {
@@ -198,8 +209,8 @@ ListFamily sparse_family(const Reader& r, const Value& object, const std::string
     }
     ++i;
   }
-  f.next_path = key(path, next_key);
-  const Value next = r.array(r.member(object, path, next_key, "[k, next[k]] of each element on the lists"), f.next_path);
+  f.next_path = key(path, s.next_key);
+  const Value next = r.array(r.member(object, path, s.next_key, s.next_meaning), f.next_path);
   f.next_pairs.reserve(next.size());
   i = 0;
   for (const Value item : next) {
@@ -211,38 +222,46 @@ ListFamily sparse_family(const Reader& r, const Value& object, const std::string
   return f;
 }
 
-// The x-lists of `rows` (2D: of the whole grid; 3D: of layer iz), one family per row.
-void build_rows(const Reader& r, const Value& object, const std::string& path, const Grid& g, std::int32_t iz,
-                bool ascending, verify::UserArrays& out) {
-  const auto rows = object.find("rows");
-  if (!rows) return;  // rows are optional: the y-lists alone can be checked
-  const std::string rp = key(path, "rows");
-  r.array(*rows, rp);
+// "{iz, y_heads, y_next, rows}": what an object of the first of `nests` holds.
+std::string nest_fields(std::span<const Nest> nests) {
+  const Nest& n = nests.front();
+  std::string out = std::string("{") + n.index_key + ", " + n.family.heads_key + ", " + n.family.next_key;
+  if (nests.size() > 1) out += std::string(", ") + nests[1].key;
+  return out + "}";
+}
+
+// The objects of the first of `nests` in `object` (nbs rows, 3D layers holding rows), one family
+// each, scoped to its cell index within `scope`; optional: the outer lists alone can be checked.
+void build_nests(const Reader& r, const Value& object, const std::string& path, const Grid& g, std::span<const Nest> nests,
+                 const std::array<std::int32_t, 3>& scope, verify::UserArrays& out) {
+  const Nest& nest = nests.front();
+  const auto items = object.find(nest.key);
+  if (!items) return;
+  const std::string np = key(path, nest.key);
+  r.array(*items, np);
   std::size_t i = 0;
-  for (const Value row : *rows) {
-    const std::string p = at(rp, i++);
-    if (!row.is_object()) r.fail(p, "not an object {iy, x_heads, x_next}");
-    const std::int32_t iy = r.cell(r.member(row, p, "iy", "the row"), key(p, "iy"), g.n[1], "row");
-    ListFamily f = sparse_family(r, row, p, "x_heads", "x_next", "x_heads", "X", 0, g.n[0]);
-    f.scope = {-1, iy, iz};
-    f.ascending = ascending;
+  for (const Value item : *items) {
+    const std::string p = at(np, i++);
+    if (!item.is_object()) r.fail(p, "not an object " + nest_fields(nests));
+    const std::int32_t index = r.cell(r.member(item, p, nest.index_key, (std::string("the ") + nest.word).c_str()),
+                                      key(p, nest.index_key), g.n[nest.axis], nest.word);
+    ListFamily f = sparse_family(r, item, p, nest.family, g.n[nest.family.axis]);
+    f.scope = scope;
+    f.scope[nest.axis] = index;
+    const std::array<std::int32_t, 3> inner = f.scope;
     out.families.push_back(std::move(f));
+    if (nests.size() > 1) build_nests(r, item, p, g, nests.subspan(1), inner, out);
   }
 }
 
-// The lists of one axis over the whole grid, their heads one per cell index (nbs: y-lists per row in
-// 2D, z-lists per layer in 3D): "y_heads"/"y_next" or "z_heads"/"z_next".
-ListFamily axis_lists(const Reader& r, const Value& doc, const Grid& g, int axis) {
-  const bool y = axis == 1;
-  ListFamily f;
-  f.heads_name = y ? "y_heads" : "z_heads";
-  f.next_name = y ? "Y" : "Z";
+// ---- HeadsForm::Dense (nbs y-lists in 2D, z-lists in 3D): a head per cell index on the family's axis ----
+ListFamily dense_family(const Reader& r, const Value& doc, const Grid& g, const Family& s) {
+  const int axis = s.axis;
+  ListFamily f = family_of(s);
   f.heads_shape = {g.n[axis]};
-  const std::string hp = "$." + f.heads_name;
+  const std::string hp = key("$", s.heads_key);
   f.heads_path = hp;
-  f.heads_form = verify::HeadsForm::Dense;
-  const Value heads = r.array(r.member(doc, "$", f.heads_name.c_str(), y ? "the heads of the y-lists, one per row" : "the heads of the z-lists, one per layer"),
-                              hp, g.n[axis], y ? "ny" : "nz");
+  const Value heads = r.array(r.member(doc, "$", s.heads_key, s.heads_meaning), hp, g.n[axis], kCellCounts[axis]);
   std::size_t i = 0;
   for (const Value h : heads) {
     UserList l;
@@ -254,97 +273,82 @@ ListFamily axis_lists(const Reader& r, const Value& doc, const Grid& g, int axis
     }
     ++i;
   }
-  f.next_path = y ? "$.y_next" : "$.z_next";
-  f.next = r.next_array(r.member(doc, "$", y ? "y_next" : "z_next", y ? "Y, the next array of the y-lists" : "Z, the next array of the z-lists"),
-                        f.next_path);
+  f.next_path = key("$", s.next_key);
+  f.next = r.next_array(r.member(doc, "$", s.next_key, s.next_meaning), f.next_path);
   return f;
 }
 
-// ---- nbs 2D: y_heads, y_next, rows ----
-void build_nbs_2d(const Reader& r, const Value& doc, const Grid& g, verify::UserArrays& out) {
-  out.families.push_back(axis_lists(r, doc, g, 1));
-  build_rows(r, doc, "$", g, -1, true, out);  // x-lists: pushed walking a y-list from its highest id down
-}
-
-// ---- nbs 3D: z_heads, z_next, layers [{iz, y_heads, y_next, rows}] ----
-void build_nbs_3d(const Reader& r, const Value& doc, const Grid& g, verify::UserArrays& out) {
-  out.families.push_back(axis_lists(r, doc, g, 2));
-  const auto layers = doc.find("layers");
-  if (!layers) return;
-  r.array(*layers, "$.layers");
-  std::size_t i = 0;
-  for (const Value layer : *layers) {
-    const std::string p = at("$.layers", i++);
-    if (!layer.is_object()) r.fail(p, "not an object {iz, y_heads, y_next, rows}");
-    const std::int32_t iz = r.cell(r.member(layer, p, "iz", "the layer"), key(p, "iz"), g.n[2], "layer");
-    ListFamily y = sparse_family(r, layer, p, "y_heads", "y_next", "y_heads", "Y", 1, g.n[1]);
-    y.scope = {-1, -1, iz};
-    y.ascending = true;  // pushed walking a z-list from its highest id down
-    out.families.push_back(std::move(y));
-    build_rows(r, layer, p, g, iz, false, out);  // pushed walking a y-list that rises
-  }
-}
-
-// ---- tree: leaves [{node, cell, head}], next = E ----
-void build_tree(const Reader& r, const Value& doc, const Grid& g, verify::UserArrays& out) {
-  ListFamily f;
-  f.heads_name = "HEAD";
-  f.next_name = "E";
-  f.heads_path = "$.leaves";
-  f.heads_form = verify::HeadsForm::Leaves;
-  const Value leaves = r.array(r.member(doc, "$", "leaves", "every leaf with its node, cell and HEAD"), "$.leaves");
+// ---- HeadsForm::Leaves (tree): leaves [{node, cell, head}], a dense next array ----
+ListFamily leaves_family(const Reader& r, const Value& doc, const Grid& g, const Family& s) {
+  namespace k = array_schema;
+  ListFamily f = family_of(s);
+  f.heads_path = key("$", s.heads_key);
+  const Value leaves = r.array(r.member(doc, "$", s.heads_key, s.heads_meaning), f.heads_path);
   std::int64_t nodes = 0;
-  if (const auto it = doc.find("nodes")) nodes = r.integer(*it, "$.nodes");
-  const char* axes[3] = {"ix", "iy", "iz"};
+  if (const auto it = doc.find(k::kNodesKey)) nodes = r.integer(*it, key("$", k::kNodesKey));
+  const std::string leaf_fields = std::string("{") + k::kLeafNodeKey + ", " + k::kLeafCellKey + ", " + k::kLeafHeadKey + "}";
   std::size_t i = 0;
   for (const Value leaf : leaves) {
-    const std::string p = at("$.leaves", i++);
-    if (!leaf.is_object()) r.fail(p, "not an object {node, cell, head}");
+    const std::string p = at(f.heads_path, i++);
+    if (!leaf.is_object()) r.fail(p, "not an object " + leaf_fields);
     UserList l;
-    l.slot = r.integer(r.member(leaf, p, "node", "its index in HEAD"), key(p, "node")) - r.base();
-    if (l.slot < 0) r.fail(key(p, "node"), "not a node index (from " + std::to_string(r.base()) + ")");
+    l.slot = r.integer(r.member(leaf, p, k::kLeafNodeKey, (std::string("its index in ") + s.heads_name).c_str()), key(p, k::kLeafNodeKey)) -
+             r.base();
+    if (l.slot < 0) r.fail(key(p, k::kLeafNodeKey), "not a node index (from " + std::to_string(r.base()) + ")");
     nodes = std::max(nodes, l.slot + 1);
-    const Value cell = r.array(r.member(leaf, p, "cell", "[ix, iy(, iz)]"), key(p, "cell"), g.dim, "dim");
-    for (int a = 0; a < g.dim; ++a) l.cell[a] = r.cell(cell[static_cast<std::size_t>(a)], at(key(p, "cell"), static_cast<std::size_t>(a)), g.n[a], axes[a]);
-    l.head = r.element(r.member(leaf, p, "head", "its HEAD"), key(p, "head"));
+    const std::string cp = key(p, k::kLeafCellKey);
+    const Value cell = r.array(r.member(leaf, p, k::kLeafCellKey, "[ix, iy(, iz)]"), cp, g.dim, "dim");
+    for (int a = 0; a < g.dim; ++a) l.cell[a] = r.cell(cell[static_cast<std::size_t>(a)], at(cp, static_cast<std::size_t>(a)), g.n[a], kCellAxes[a]);
+    l.head = r.element(r.member(leaf, p, k::kLeafHeadKey, (std::string("its ") + s.heads_name).c_str()), key(p, k::kLeafHeadKey));
     l.entry = static_cast<std::int32_t>(i - 1);
     if (l.head != -1) f.lists.push_back(std::move(l));
   }
   f.heads_shape = {std::max<std::int64_t>(nodes, 1)};
-  f.next_path = "$.next";
-  f.next = r.next_array(r.member(doc, "$", "next", "E, the next array"), "$.next");
-  out.families.push_back(std::move(f));
+  f.next_path = key("$", s.next_key);
+  f.next = r.next_array(r.member(doc, "$", s.next_key, s.next_meaning), f.next_path);
+  return f;
+}
+
+// A family at the document's top, by the form of its heads.
+ListFamily document_family(const Reader& r, const Value& doc, const Grid& g, const Family& s) {
+  switch (s.form) {
+    case array_schema::HeadsForm::Cells: return cells_family(r, doc, g, s);
+    case array_schema::HeadsForm::Dense: return dense_family(r, doc, g, s);
+    case array_schema::HeadsForm::Leaves: return leaves_family(r, doc, g, s);
+    case array_schema::HeadsForm::Pairs: break;
+  }
+  return sparse_family(r, doc, "$", s, g.n[s.axis]);
 }
 
 // ---- sort: keys, order, ix, iy (iz) ----
 void build_sort(const Reader& r, const Value& doc, const Grid& g, verify::UserArrays& out) {
   verify::SortArrays s;
-  const char* names[3] = {"ix", "iy", "iz"};
+  const array_schema::SortArraysSchema& names = array_schema::kSort;
   const auto cell_value = [&](const Value& v, const auto& p) {
     const std::int64_t i = r.integer(v, p) - r.base();
     return static_cast<std::int32_t>(std::clamp<std::int64_t>(i, -2, std::numeric_limits<std::int32_t>::max()));
   };
-  const Value keys = r.array(r.member(doc, "$", "keys", "the cell of each sorted position"), "$.keys", r.n(), "N");
+  const Value keys = r.array(r.member(doc, "$", names.keys_key, "the cell of each sorted position"), key("$", names.keys_key), r.n(), "N");
   std::size_t p = 0;
   for (const Value item : keys) {
-    const Value k = r.array(item, [&] { return at("$.keys", p); }, g.dim, "dim");
+    const Value k = r.array(item, [&] { return at(key("$", names.keys_key), p); }, g.dim, "dim");
     std::array<std::int32_t, 3> cell{-1, -1, -1};
     for (int a = 0; a < g.dim; ++a) {
       const auto i = static_cast<std::size_t>(a);
-      cell[a] = cell_value(k[i], [&] { return at(at("$.keys", p), i); });
+      cell[a] = cell_value(k[i], [&] { return at(at(key("$", names.keys_key), p), i); });
     }
     s.keys.push_back(cell);
     ++p;
   }
-  const Value order = r.array(r.member(doc, "$", "order", "the element at each sorted position"), "$.order", r.n(), "N");
+  const Value order = r.array(r.member(doc, "$", names.order_key, "the element at each sorted position"), key("$", names.order_key), r.n(), "N");
   p = 0;
   for (const Value v : order) {
-    s.order.push_back(r.element(v, [&] { return at("$.order", p); }));
+    s.order.push_back(r.element(v, [&] { return at(key("$", names.order_key), p); }));
     ++p;
   }
   for (int a = 0; a < g.dim; ++a) {
-    const std::string path = std::string("$.") + names[a];
-    const Value v = r.array(r.member(doc, "$", names[a], "each element's integerised coordinate"), path, r.n(), "N");
+    const std::string path = key("$", names.axis_keys[a]);
+    const Value v = r.array(r.member(doc, "$", names.axis_keys[a], "each element's integerised coordinate"), path, r.n(), "N");
     std::size_t k = 0;
     for (const Value c : v) {
       s.cell_of[a].push_back(cell_value(c, [&] { return at(path, k); }));
@@ -428,19 +432,12 @@ verify::UserArrays ArraysJson::arrays(const std::string& name, const Grid& g, st
   out.base = base_used;
   if (!doc) throw Error(path + ": the arrays were taken already");  // a programming error, said as one line
   const Value root = doc->root();
-  if (name == "screen") {
-    build_screen(r, root, g, out);
-  } else if (name == "nbs" && g.dim == 3) {
-    build_nbs_3d(r, root, g, out);
-  } else if (name == "nbs") {
-    build_nbs_2d(r, root, g, out);
-  } else if (name == "tree") {
-    build_tree(r, root, g, out);
-  } else if (name == "sort") {
-    build_sort(r, root, g, out);
-  } else {
-    throw Error("--algorithm: verify checks the arrays of screen, nbs, tree and sort ('" + name + "' keeps no book arrays)");
-  }
+  const array_schema::Layout* layout = array_schema::find_layout(name, g.dim);
+  if (layout == nullptr)
+    throw Error("--algorithm: verify checks the arrays of " + array_schema::algorithms_text() + " ('" + name + "' keeps no book arrays)");
+  for (const Family& f : layout->families) out.families.push_back(document_family(r, root, g, f));
+  if (layout->sort) build_sort(r, root, g, out);
+  if (!layout->nests.empty()) build_nests(r, root, "$", g, layout->nests, {-1, -1, -1}, out);
   return out;
 }
 

@@ -1,5 +1,5 @@
 // nbscope io: ARRAYS.json in — a user's heads and next arrays in the schema `nbscope dump` writes
-// (io/dump_json.hpp, README "Arrays as JSON"), read for `nbscope verify --arrays`.
+// (core/array_schema.hpp, docs/formats.md "Arrays JSON"), read for `nbscope verify --arrays`.
 //
 // Read in two steps, because the shape of the heads arrays depends on the grid, and the grid may
 // come from the flags, from the file's own keys or from the elements: read_arrays_json() streams the

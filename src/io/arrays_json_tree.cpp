@@ -7,10 +7,12 @@
 #include <cstring>
 #include <fstream>
 #include <istream>
+#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <streambuf>
 
+#include "core/array_schema.hpp"
 #include "core/error.hpp"
 #include "io/excerpt.hpp"
 #include "io/input_file.hpp"
@@ -28,19 +30,30 @@ Kind kind_of(const Tree::Node& n) { return static_cast<Kind>(n.head >> kKindShif
 std::uint32_t count_of(const Tree::Node& n) { return n.head & kCountMask; }
 Tree::Node make(Kind k, std::int32_t value = 0) { return {static_cast<std::uint32_t>(k) << kKindShift, value}; }
 
-// The keys of the schema (io/arrays_json.hpp); a key's id is its index. "bodies" and "frames" are
-// kept as present only (a scene or a report given as arrays).
-constexpr std::array<std::string_view, 31> kKeys{
-    "algorithm", "dim",    "base",  "elements", "cell_size", "origin", "nx",   "ny",   "nz",     "heads", "next",
-    "y_heads",   "y_next", "z_heads", "z_next", "rows",      "layers", "iy",   "iz",   "x_heads", "x_next", "leaves",
-    "nodes",     "node",   "cell",  "head",     "keys",      "order",  "ix",   "bodies", "frames"};
-constexpr std::size_t kPresenceOnly = 29;  // from "bodies" on
+// The keys kept: the schema's (core/array_schema.hpp, "algorithm" first), then "bodies" and
+// "frames", kept as present only (a scene or a report given as arrays). A key's id is its index.
+constexpr std::string_view kPresenceOnlyKeys[] = {"bodies", "frames"};
 constexpr std::size_t kAlgorithmKey = 0;
 constexpr std::size_t kKeptTextBytes = 128;
 
+const std::vector<std::string_view>& kept_keys() {
+  static const std::vector<std::string_view> keys = [] {
+    std::vector<std::string_view> k = array_schema::document_keys();
+    k.insert(k.end(), std::begin(kPresenceOnlyKeys), std::end(kPresenceOnlyKeys));
+    return k;
+  }();
+  return keys;
+}
+// The id from which keys are kept as present only.
+std::size_t presence_only_from() {
+  static const std::size_t from = kept_keys().size() - std::size(kPresenceOnlyKeys);
+  return from;
+}
+
 std::optional<std::uint32_t> key_id(std::string_view name) {
-  for (std::size_t i = 0; i < kKeys.size(); ++i)
-    if (kKeys[i] == name) return static_cast<std::uint32_t>(i);
+  const std::vector<std::string_view>& keys = kept_keys();
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    if (keys[i] == name) return static_cast<std::uint32_t>(i);
   return std::nullopt;
 }
 
@@ -229,7 +242,7 @@ class Builder : public nlohmann::json_sax<nlohmann::json> {
     bump_parent();
     tree_.push({(static_cast<std::uint32_t>(kKey) << kKindShift) | *id, 0});
     keep_next_text_ = *id == kAlgorithmKey;
-    if (*id >= kPresenceOnly) {
+    if (*id >= presence_only_from()) {
       tree_.push(make(kNull));
       skip_next_ = true;
     }

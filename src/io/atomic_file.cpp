@@ -9,7 +9,6 @@
 #include <array>
 #include <atomic>
 #include <cerrno>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -19,6 +18,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "io/signals.hpp"
 
 namespace nbscope {
 
@@ -35,34 +35,6 @@ std::array<std::atomic<int>, kSlots> g_slot_state{};
 char g_slot_path[kSlots][kMaxPath];
 static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads the slots' states");
 
-constexpr std::array<int, 3> kEndingSignals{SIGINT, SIGTERM, SIGHUP};
-
-// Removes every live temporary, then ends the process by the same signal with its default action
-// (so the parent sees "killed by SIGTERM", as without nbscope's handler). Async-signal-safe only.
-extern "C" void remove_temporaries_and_reraise(int sig) {
-  remove_live_temporaries();
-  struct sigaction dfl {};
-  dfl.sa_handler = SIG_DFL;
-  sigemptyset(&dfl.sa_mask);
-  ::sigaction(sig, &dfl, nullptr);
-  ::raise(sig);  // pending until this handler returns (the signal is blocked while it runs)
-}
-
-// Installs the handler for each ending signal whose action is the default one. A signal that is
-// ignored (nohup's SIGHUP) stays ignored, and one that a loop handles (headless --record's Ctrl+C,
-// the window's close) stays with it: those paths unwind and remove their temporaries themselves.
-void arm_signal_cleanup() {
-  for (const int sig : kEndingSignals) {
-    struct sigaction old {};
-    if (::sigaction(sig, nullptr, &old) != 0 || (old.sa_flags & SA_SIGINFO) != 0 || old.sa_handler != SIG_DFL) continue;
-    struct sigaction ours {};
-    ours.sa_handler = remove_temporaries_and_reraise;
-    sigemptyset(&ours.sa_mask);
-    for (const int other : kEndingSignals) sigaddset(&ours.sa_mask, other);  // one cleanup at a time
-    ::sigaction(sig, &ours, nullptr);
-  }
-}
-
 }  // namespace
 
 void remove_live_temporaries() {
@@ -77,7 +49,7 @@ std::size_t live_temporary_count() {
 }
 
 LiveTemporary::LiveTemporary(const std::string& path) {
-  arm_signal_cleanup();
+  arm_signal_cleanup(&remove_live_temporaries);  // io/signals: removed when a signal ends the run
   if (path.size() >= kMaxPath) return;  // the open fails too (ENAMETOOLONG) or it is not removed on a signal
   for (std::size_t k = 0; k < kSlots; ++k) {
     int expected = kFree;

@@ -1,4 +1,4 @@
-// nbscope io: ELEMENTS.csv in, PAIRS.csv out (formats in DESIGN.md "Command line").
+// nbscope io: ELEMENTS.csv in, PAIRS.csv out (formats in docs/formats.md).
 #pragma once
 #include <array>
 #include <ostream>

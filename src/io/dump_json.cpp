@@ -1,6 +1,6 @@
 // Index: helpers (arrays by name, snapshots) | the streamed text (buffer, objects, arrays, lists as
-// [k, next] pairs) | one function per algorithm (screen, tree, sort, nbs 2D, nbs 3D) | write_dump |
-// dump_json | format_dump.
+// [k, next] pairs, a nest's objects) | DumpCollector | one function per form of the schema (a
+// family's heads, a tree's leaves, sort's arrays) | write | write_dump | dump_json | format_dump.
 #include "io/dump_json.hpp"
 
 #include <algorithm>
@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/array_schema.hpp"
 #include "core/error.hpp"
 #include "core/lists.hpp"
 #include "core/tree.hpp"
@@ -188,89 +189,85 @@ SparseLists sparse_lists(const std::vector<std::int32_t>& heads, const std::vect
   return out;
 }
 
-// One row's x-lists: {"iy": ..., "x_heads": [...], "x_next": [...]}.
-struct RowLists {
-  std::int64_t iy = 0;
+// The lists of one object of a nest (core/array_schema.hpp: an nbs row or 3D layer): its cell
+// index, its lists and the objects of the nest inside it (a layer's rows), in index order.
+struct NestLists {
+  std::int64_t index = 0;
   SparseLists lists;
+  std::vector<NestLists> inner;
 };
-void row_object(DumpText& text, const RowLists& row, int indent) {
-  ObjectText o(text, indent);
-  o.key("iy").integer(row.iy);
-  pair_array(o.key("x_heads"), row.lists.heads);
-  pair_array(o.key("x_next"), row.lists.next);
-  o.close();
-}
 
-// nbs 3D: one layer's y-lists (B[0]) and its rows' x-lists (A[0]).
-struct LayerLists {
-  std::int64_t iz = 0;
-  SparseLists lists;
-  std::vector<RowLists> rows;  // in iy order
-};
+// `items` as the value of `nests.front().key` in `parent`: one object a line, each
+// {index_key, heads_key, next_key[, the inner nest's key]}.
+void nest_list(DumpText& text, ObjectText& parent, std::span<const array_schema::Nest> nests, const std::vector<NestLists>& items) {
+  const array_schema::Nest& nest = nests.front();
+  ListText list(parent.key(nest.key), parent.inner());
+  for (const NestLists& item : items) {
+    list.item();
+    ObjectText o(text, list.inner());
+    o.key(nest.index_key).integer(item.index);
+    pair_array(o.key(nest.family.heads_key), item.lists.heads);
+    pair_array(o.key(nest.family.next_key), item.lists.next);
+    if (nests.size() > 1) nest_list(text, o, nests.subspan(1), item.inner);
+    o.close();
+  }
+  list.close();
+}
 
 }  // namespace
 
 // ---- DumpCollector --------------------------------------------------------------------------
 //
-// What each algorithm shows (DESIGN.md "Command line", `dump`): screen, tree and sort their arrays
-// right before the contacts phase; nbs 2D the y-lists before they are cleared and each row's x-lists
-// (B[0]) when its contacts begin; nbs 3D the z-lists before they are cleared, per layer its y-lists
-// (B[0]) and per row its x-lists (A[0]). The events are applied to one copy of the arrays as they
-// come; a snapshot is taken at the phase shown, and the lists of each row when it is reached.
+// What each algorithm shows (docs/formats.md "Arrays JSON"; core/array_schema.hpp): its arrays right before
+// the layout's phase `shown_at` (screen, tree and sort: the contacts; nbs: the y-lists (z-lists in 3D)
+// before they are cleared) and the lists of each nest's objects when they are complete (nbs: each
+// row's x-lists, B[0] or A[0]; 3D: each layer's y-lists, B[0]). The events are applied to one copy
+// of the arrays as they come; a snapshot is taken at the phase shown, the lists of a nest's object
+// at its end phase.
 
 struct DumpCollector::Impl {
-  std::string algorithm;
-  int dim = 2;
+  const array_schema::Layout* layout = nullptr;  // nullptr: no book arrays (brute, box2d)
   const char* shown_at = "";     // the phase whose state the dump's arrays are
   State state;                   // every declared array as the events so far leave it
   std::optional<State> snapshot;  // the state right before the first `shown_at` phase
-  // nbs: the ids of the list arrays (-1 until declared), the list heads each row (layer) touched.
-  int b = -1, xn = -1, a = -1, x = -1, y_id = -1;
-  std::vector<std::int64_t> touched, touched_y, touched_x;
-  std::vector<RowLists> rows;        // 2D: every row's; 3D: the current layer's
-  std::vector<LayerLists> layers;    // 3D
+  // Per nest (outermost first): the ids of its lists' traced arrays (-1 until declared), the heads
+  // its current object touched, the objects completed inside the current outer one.
+  struct Level {
+    int heads = -1, next = -1;
+    std::vector<std::int64_t> touched;
+    std::vector<NestLists> done;
+  };
+  std::vector<Level> levels;
 
-  bool nbs() const { return algorithm == "nbs"; }
   static std::int64_t width(const TraceLog& log, int id) { return log.arrays()[static_cast<std::size_t>(id)].shape.back(); }
 
   void event(const TraceLog& log, const TraceEvent& ev) {
     while (state.size() < log.arrays().size()) state.push_back(log.arrays()[state.size()].initial);
     if (!snapshot && is_phase(ev, shown_at)) snapshot = state;
-    if (nbs() && dim == 3) {
-      nbs_3d(log, ev);
-    } else if (nbs()) {
-      nbs_2d(log, ev);
-    }
+    for (std::size_t d = 0; d < levels.size(); ++d) nest_event(log, ev, d);
     TraceLog::apply(ev, state);
   }
 
-  void nbs_2d(const TraceLog& log, const TraceEvent& ev) {
-    declared(log, "B", b);
-    declared(log, "X", xn);
-    if (is_phase(ev, phase_label::kXListsOfRow)) touched.clear();
-    if (is_phase(ev, phase_label::kContactsOfRow))
-      rows.push_back({ev.index, sparse_lists(state[b], state[xn], touched, 0, width(log, b))});
-    if (ev.op == TraceOp::Push && b >= 0 && ev.writes[1].array == b) touched.push_back(ev.writes[1].index);
-  }
-
-  void nbs_3d(const TraceLog& log, const TraceEvent& ev) {
-    const int y = declared(log, "Y", y_id);
-    declared(log, "B", b);
-    declared(log, "A", a);
-    declared(log, "X", x);
-    if (is_phase(ev, phase_label::kYListsOfLayer)) {
-      touched_y.clear();
-      rows.clear();
+  // Nest d's object begins (its heads and its inner objects start afresh), ends (its lists are kept
+  // with its inner objects, in index order), or a push onto its heads.
+  void nest_event(const TraceLog& log, const TraceEvent& ev, std::size_t d) {
+    const array_schema::Nest& nest = layout->nests[d];
+    Level& level = levels[d];
+    declared(log, nest.family.heads_trace, level.heads);
+    declared(log, nest.family.next_trace, level.next);
+    if (is_phase(ev, nest.begin_phase)) {
+      level.touched.clear();
+      for (std::size_t i = d + 1; i < levels.size(); ++i) levels[i].done.clear();
     }
-    if (is_phase(ev, phase_label::kXListsOfRow)) touched_x.clear();
-    if (is_phase(ev, phase_label::kContactsOfRow))
-      rows.push_back({ev.cell[1], sparse_lists(state[a], state[x], touched_x, 0, width(log, a))});
-    if (is_phase(ev, phase_label::kClearYListsOfLayer)) {
-      std::stable_sort(rows.begin(), rows.end(), [](const RowLists& p, const RowLists& q) { return p.iy < q.iy; });
-      layers.push_back({ev.index, sparse_lists(state[b], state[y], touched_y, 0, width(log, b)), rows});
+    if (is_phase(ev, nest.end_phase)) {
+      NestLists item{ev.index, sparse_lists(state[level.heads], state[level.next], level.touched, 0, width(log, level.heads)), {}};
+      if (d + 1 < levels.size()) {
+        item.inner = levels[d + 1].done;
+        std::stable_sort(item.inner.begin(), item.inner.end(), [](const NestLists& p, const NestLists& q) { return p.index < q.index; });
+      }
+      level.done.push_back(std::move(item));
     }
-    if (ev.op == TraceOp::Push && b >= 0 && ev.writes[1].array == b) touched_y.push_back(ev.writes[1].index);
-    if (ev.op == TraceOp::Push && a >= 0 && ev.writes[1].array == a) touched_x.push_back(ev.writes[1].index);
+    if (ev.op == TraceOp::Push && level.heads >= 0 && ev.writes[1].array == level.heads) level.touched.push_back(ev.writes[1].index);
   }
 
   // The arrays as shown: the snapshot, or the state after the whole run when the phase never came.
@@ -278,9 +275,9 @@ struct DumpCollector::Impl {
 };
 
 DumpCollector::DumpCollector(std::string algorithm, int dim) : impl_(std::make_unique<Impl>()) {
-  impl_->algorithm = std::move(algorithm);
-  impl_->dim = dim;
-  impl_->shown_at = impl_->nbs() ? (dim == 3 ? phase_label::kClearZLists : phase_label::kClearYLists) : phase_label::kContacts;
+  impl_->layout = array_schema::find_layout(algorithm, dim);
+  impl_->shown_at = impl_->layout != nullptr ? impl_->layout->shown_at : phase_label::kContacts;
+  if (impl_->layout != nullptr) impl_->levels.resize(impl_->layout->nests.size());
 }
 DumpCollector::~DumpCollector() = default;
 
@@ -288,22 +285,17 @@ void DumpCollector::event(const TraceLog& log, const TraceEvent& e) { impl_->eve
 
 namespace {
 
-void dump_screen(const TraceLog& log, const State& s, ObjectText& j) {
-  const int c = array_id(log, "C"), e = array_id(log, "E");
-  nested(j.key("heads"), s[c], log.arrays()[c].shape, j.inner());
-  int_array(j.key("next"), s[e]);
-}
-
-void dump_tree(const TraceLog& log, const State& s, const Grid& g, ObjectText& j) {
-  const int child = array_id(log, "child"), head = array_id(log, "HEAD"), e = array_id(log, "E");
-  j.key("nodes").integer(static_cast<std::int64_t>(s[head].size()));
-  DumpText& text = j.key("leaves");
+// A tree's node count and leaves [{node, cell, bounds, head}].
+void dump_leaves(const TraceLog& log, const State& s, const Grid& g, const array_schema::Family& f, ObjectText& j) {
+  const int child = array_id(log, array_schema::kTreeChildTrace), head = array_id(log, f.heads_trace);
+  j.key(array_schema::kNodesKey).integer(static_cast<std::int64_t>(s[head].size()));
+  DumpText& text = j.key(f.heads_key);
   ListText leaves(text, j.inner());
   for (const TreeLeaf& leaf : tree_leaves(g, s[child], s[head])) {
     leaves.item();
     ObjectText o(text, leaves.inner());
-    o.key("node").integer(leaf.node);
-    int_array(o.key("cell"), std::span<const std::int32_t>(leaf.cell, static_cast<std::size_t>(g.dim)));
+    o.key(array_schema::kLeafNodeKey).integer(leaf.node);
+    int_array(o.key(array_schema::kLeafCellKey), std::span<const std::int32_t>(leaf.cell, static_cast<std::size_t>(g.dim)));
     o.key("bounds") << "[";
     for (int side = 0; side < 2; ++side) {
       text << (side ? ", [" : "[");
@@ -311,62 +303,40 @@ void dump_tree(const TraceLog& log, const State& s, const Grid& g, ObjectText& j
       text << "]";
     }
     text << "]";
-    o.key("head").integer(leaf.head);
+    o.key(array_schema::kLeafHeadKey).integer(leaf.head);
     o.close();
   }
   leaves.close();
-  int_array(j.key("next"), s[e]);
 }
 
+// sort's keys, order and each element's cell index (the traced arrays of the same names).
 void dump_sort(const TraceLog& log, const State& s, int dim, ObjectText& j) {
-  const char* names[3] = {"ix", "iy", "iz"};
+  const array_schema::SortArraysSchema& k = array_schema::kSort;
   int ids[3] = {-1, -1, -1};
-  for (int a = 0; a < dim; ++a) ids[a] = array_id(log, names[a]);
-  const int order = array_id(log, "order");
-  DumpText& text = j.key("keys") << "[";
+  for (int a = 0; a < dim; ++a) ids[a] = array_id(log, k.axis_keys[a]);
+  const int order = array_id(log, k.order_key);
+  DumpText& text = j.key(k.keys_key) << "[";
   for (std::size_t i = 0; i < s[order].size(); ++i) {
-    const std::int32_t k = s[order][i];
+    const std::int32_t e = s[order][i];
     text << (i ? ", [" : "[");
-    for (int a = 0; a < dim; ++a) (a ? text << ", " : text).integer(s[ids[a]][k]);
+    for (int a = 0; a < dim; ++a) (a ? text << ", " : text).integer(s[ids[a]][e]);
     text << "]";
   }
   text << "]";
-  int_array(j.key("order"), s[order]);
-  for (int a = 0; a < dim; ++a) int_array(j.key(names[a]), s[ids[a]]);
+  int_array(j.key(k.order_key), s[order]);
+  for (int a = 0; a < dim; ++a) int_array(j.key(k.axis_keys[a]), s[ids[a]]);
 }
 
-void dump_nbs_2d(const TraceLog& log, const State& ys, const std::vector<RowLists>& rows, ObjectText& j) {
-  int_array(j.key("y_heads"), ys[array_id(log, "y_heads")]);
-  int_array(j.key("y_next"), ys[array_id(log, "Y")]);
-  DumpText& text = j.key("rows");
-  ListText list(text, j.inner());
-  for (const RowLists& row : rows) {
-    list.item();
-    row_object(text, row, list.inner());
+// A family at the document's top: its heads as the layout lays them out, then its next array.
+void dump_family(const TraceLog& log, const State& s, const Grid& g, const array_schema::Family& f, ObjectText& j) {
+  const int heads = array_id(log, f.heads_trace);
+  switch (f.form) {
+    case array_schema::HeadsForm::Cells: nested(j.key(f.heads_key), s[heads], log.arrays()[heads].shape, j.inner()); break;
+    case array_schema::HeadsForm::Leaves: dump_leaves(log, s, g, f, j); break;
+    case array_schema::HeadsForm::Dense:
+    case array_schema::HeadsForm::Pairs: int_array(j.key(f.heads_key), s[heads]); break;
   }
-  list.close();
-}
-
-void dump_nbs_3d(const TraceLog& log, const State& zs, const std::vector<LayerLists>& layers, ObjectText& j) {
-  int_array(j.key("z_heads"), zs[array_id(log, "C")]);
-  int_array(j.key("z_next"), zs[array_id(log, "Z")]);
-  DumpText& text = j.key("layers");
-  ListText list(text, j.inner());
-  for (const LayerLists& l : layers) {
-    list.item();
-    ObjectText layer(text, list.inner());
-    layer.key("iz").integer(l.iz);
-    pair_array(layer.key("y_heads"), l.lists.heads);
-    pair_array(layer.key("y_next"), l.lists.next);
-    ListText row_list(layer.key("rows"), layer.inner());
-    for (const RowLists& row : l.rows) {
-      row_list.item();
-      row_object(text, row, row_list.inner());
-    }
-    row_list.close();
-    layer.close();
-  }
-  list.close();
+  int_array(j.key(f.next_key), s[array_id(log, f.next_trace)]);
 }
 
 void format_value(const json& v, int indent, std::string& out);
@@ -452,21 +422,14 @@ void DumpCollector::write(const DumpSource& src, std::ostream& out) const {
     for (const auto& [name, size] : bytes) o.key(name).integer(size);
     o.close();
   }
-  // No book arrays (brute, box2d): counts only. Otherwise each algorithm has its own arrays, so its
-  // own keys (DESIGN.md "Command line", `dump`).
-  if (!log.arrays().empty() && src.grid != nullptr) {
-    const Impl& c = *impl_;
-    if (src.algorithm == "screen") {
-      dump_screen(log, c.shown(), j);
-    } else if (src.algorithm == "tree") {
-      dump_tree(log, c.shown(), *src.grid, j);
-    } else if (src.algorithm == "sort") {
-      dump_sort(log, c.shown(), e.dim, j);
-    } else if (src.algorithm == "nbs" && e.dim == 3) {
-      dump_nbs_3d(log, c.shown(), c.layers, j);
-    } else if (src.algorithm == "nbs") {
-      dump_nbs_2d(log, c.shown(), c.rows, j);
-    }
+  // No book arrays (brute, box2d): counts only. Otherwise the keys of the algorithm's layout
+  // (core/array_schema.hpp), in its order.
+  const array_schema::Layout* layout = array_schema::find_layout(src.algorithm, e.dim);
+  if (!log.arrays().empty() && src.grid != nullptr && layout != nullptr) {
+    const State& shown = impl_->shown();
+    for (const array_schema::Family& f : layout->families) dump_family(log, shown, *src.grid, f, j);
+    if (layout->sort) dump_sort(log, shown, e.dim, j);
+    if (!layout->nests.empty() && !impl_->levels.empty()) nest_list(text, j, layout->nests, impl_->levels.front().done);
   }
   j.close();
   text << "\n";

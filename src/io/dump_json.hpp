@@ -2,13 +2,9 @@
 // are complete (the detectors clear their heads before they return, so the arrays are read from a
 // traced run: the state right before the phase that first uses complete lists).
 //
-// Every index is 0-based and -1 means an empty list or the end of a list. Keys (README "dump"):
+// Every index is 0-based and -1 means an empty list or the end of a list. Keys (docs/formats.md "Arrays JSON"):
 //   all:     algorithm, dim, elements, pairs, cell_size, origin, nx, ny (nz in 3D), own_bytes, bytes
-//   screen:  heads [ix][iy]([iz]) = C, next = E
-//   tree:    nodes, leaves [{node, cell, bounds, head}], next = E
-//   sort:    keys (cell of each sorted position), order (element at each sorted position), ix, iy (iz)
-//   nbs 2D:  y_heads, y_next, rows [{iy, x_heads [[ix, head]], x_next [[k, X[k]]]}]
-//   nbs 3D:  z_heads, z_next, layers [{iz, y_heads [[iy, head]], y_next [[k, Y[k]]], rows [...]}]
+//   then the algorithm's arrays, as core/array_schema.hpp lays them out (screen, tree, sort, nbs 2D/3D).
 #pragma once
 #include <cstddef>
 #include <memory>

@@ -1,4 +1,4 @@
-// nbscope io: scene files (DESIGN.md "Scenes") read into a Scene (physics/scene.hpp), every field
+// nbscope io: scene files (docs/formats.md "Scene JSON") read into a Scene (physics/scene.hpp), every field
 // validated.
 //
 // The format, with every default (lengths in metres, angles in radians, times in seconds):

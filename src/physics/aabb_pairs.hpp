@@ -1,5 +1,5 @@
 // nbscope physics: every pair of overlapping AABBs of one frame, for the ground truth G of the
-// cross-check (DESIGN.md "Cross-checks"). Independent of every detector under test: its own
+// cross-check (docs/architecture.md "Invariants"). Independent of every detector under test: its own
 // uniform grid over the boxes themselves (not the elements' bounding circles), and Box2D's own
 // inclusive test (b2TestOverlap, in float) decides each pair, so the set is exactly
 // { (i, j) : i < j, b2TestOverlap(box i, box j) } — what a brute-force loop over all pairs gives.

@@ -1,12 +1,12 @@
 // nbscope physics: `box2d`, Box2D's b2DynamicTree used as a contact detector: one proxy per element
 // kept between detections (moved, as a physics engine moves them), each element's tight AABB
-// queried against the tree, then the exact circle test of core (DESIGN.md "Contact").
+// queried against the tree, then the exact circle test of core (docs/architecture.md "Contact").
 //
 // Proxies are inserted and queried in Morton (Z-curve) order of the element centres, not in the
 // input's order: Box2D's incremental insertion builds a much looser tree from randomly ordered
 // boxes (area ratio 2,291 vs 1,314 at 200k loose elements; 5,791 vs 2,657 at 800k), and queries in
 // random order miss the cache on every node. In input order the queries grew as N^2.2 (200k:
-// 1.9 s, 800k: 75 s); in Morton order 0.14 s and 1.2 s (README "Algorithms", box2d).
+// 1.9 s, 800k: 75 s); in Morton order 0.14 s and 1.2 s (docs/algorithms.md, box2d).
 //
 // Registered with core's registry by register_physics_detectors(), which the app calls at
 // start-up, so core never sees Box2D.

@@ -21,7 +21,7 @@
 #include "render/draw_sink.hpp"
 #include "render/label_space.hpp"
 #include "core/traced_lists.hpp"
-#include "render/verify_overlay.hpp"
+#include "render/overlay_verify.hpp"
 
 namespace nbscope::render {
 

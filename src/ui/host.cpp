@@ -9,6 +9,7 @@
 
 #include "core/cells.hpp"
 #include "ui/panels.hpp"
+#include "ui/window_input.hpp"
 
 namespace nbscope::ui {
 
@@ -38,8 +39,6 @@ void cap_column_widths(float display_w, float& left, float& right) {
   for (float* w : {&left, &right})
     if (*w > 0) *w = std::max(kMinColumnWidth, *w - excess / static_cast<float>(columns));
 }
-// Wheel notches to zoom factor: 1.2x per notch.
-constexpr double kZoomPerNotch = 1.2;
 }  // namespace
 
 void same_line_if_fits(float width, float spacing) {
@@ -299,7 +298,7 @@ void UiHost::draw_scene(const UiContext& ctx, render::DrawSink& sink) const {
 
 void UiHost::handle_keys(UiContext& ctx) {
   const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantCaptureKeyboard || io.KeyCtrl || io.KeyAlt || io.KeySuper) return;
+  if (!keys_reach_scene()) return;
   for (const auto& p : panels_)
     if (is_open(*p, ctx.state) && p->handle_keys(ctx)) return;
   auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
@@ -320,8 +319,7 @@ void UiHost::handle_keys(UiContext& ctx) {
     ctx.state.selected_pair.reset();
     ctx.state.selected_cell.reset();
   }
-  for (const render::OverlayInfo& o : render::overlay_infos())
-    if (pressed(o.key)) ctx.state.overlays.*o.flag = !(ctx.state.overlays.*o.flag);
+  toggle_overlays_by_key(ctx.state.overlays);
   for (std::size_t i = 0; i < ctx.sim.algorithms.size() && i < 9; ++i)
     if (pressed('1' + static_cast<int>(i))) ctx.requests.algorithm = ctx.sim.algorithms[i];
 }
@@ -347,9 +345,7 @@ void UiHost::handle_mouse(UiContext& ctx) {
   const Eigen::Vector2d world = ctx.camera.to_world(mouse);
   ctx.state.mouse_world = world;
   ctx.state.hovered_cell = ctx.sim.grid != nullptr ? cell_at(*ctx.sim.grid, world) : std::nullopt;
-  if (io.MouseWheel != 0.0f) ctx.camera.zoom_at(mouse, std::pow(kZoomPerNotch, static_cast<double>(io.MouseWheel)));
-  if (io.MouseDown[1] && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
-    ctx.camera.pan_pixels({io.MouseDelta.x, io.MouseDelta.y});
+  move_camera_by_mouse(ctx.camera, mouse, false);  // the left button drags a body here
   if (ImGui::IsMouseClicked(0) && !ctx.state.dragging) {
     ctx.state.selected = ctx.sim.elements != nullptr ? render::element_at(*ctx.sim.elements, world) : -1;
     ctx.state.selected_pair.reset();

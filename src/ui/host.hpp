@@ -18,7 +18,7 @@ namespace nbscope::ui {
 
 // The Help menu's text, one line each: "" is a separator, "@overlays" the overlay keys (from
 // render::overlay_infos()). Every key the host and the panels handle is here; --help and the
-// README's key list say the same (tests check the keys of all three).
+// docs/window.md's key list say the same (tests check the keys of all three).
 [[nodiscard]] std::span<const char* const> help_lines();
 
 class UiHost {

@@ -2,7 +2,7 @@
 // input just under it (accepted) and just over it (refused with its message), nesting far past the
 // limit, NUL bytes, endless lines and endless pipes, 20 MB fields quoted as short excerpts, and
 // .nbsrec header lines given twice. Nothing here is timed: the readers' time and memory on these
-// inputs are measured by hand (README "Bad input").
+// inputs are measured by hand (docs/limits.md).
 //
 // Index: helpers | excerpt | read_input_file | CSV and pairs | .nbsrec | scene JSON | ARRAYS.json.
 // (Limits too large to reach cheaply — frames, pairs — are passed smaller to the parsers.)

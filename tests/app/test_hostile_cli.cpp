@@ -1,6 +1,6 @@
 // Hostile files through the binary: /dev/zero as every kind of input, 80 KB and 1 MB of nested
 // brackets as a scene, 20 MB and 2 MB numeric fields, a .nbsrec header given twice — each exits 2 with one
-// short line naming the file. Time and memory are not measured here (see README "Bad input").
+// short line naming the file. Time and memory are not measured here (see docs/limits.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -102,6 +102,13 @@ TEST(HostileCli, ARecordingHeaderGivenTwiceIsRefused) {
   // Once, it replays.
   write_text(rec, "nbsrec 1\ncell_size 1\norigin 0,0\nframe 0 0\n0,0,0.1\n");
   EXPECT_EQ(run("replay " + rec + " --headless").exit_code, 0);
+}
+
+// Help for a command that is not one, its name unprintable too: one escaped line, exit 2, no page.
+TEST(HostileCli, HelpOfAnUnknownCommandIsOneLine) {
+  expect_refused(run("help bogus"), "bogus: unknown command (see nbscope --help)", "help bogus");
+  expect_refused(run("help \"$(printf 'bo\\001gus')\""), "bo\\x01gus: unknown command (see nbscope --help)", "help bo^Agus");
+  expect_refused(run("help pairs --markdown"), "--markdown: prints every command; give no command", "help pairs --markdown");
 }
 
 }  // namespace

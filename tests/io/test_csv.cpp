@@ -117,7 +117,7 @@ TEST(InputFile, ReadsAFileWholeUpToItsLimit) {
 }
 
 TEST(InputFile, AnEndlessDeviceOfZerosStopsAtItsFirstByteInsteadOfFillingMemory) {
-  // (An endless pipe of text stops at the size limit: tests/test_hostile_input.cpp.)
+  // (An endless pipe of text stops at the size limit: tests/io/test_hostile_input.cpp.)
   EXPECT_EQ(read_error("/dev/zero", std::size_t{4} << 20),
             "/dev/zero:1: a NUL byte (byte 0): an elements file is text, this is binary data (or UTF-16 text: save it as UTF-8)");
 }

@@ -117,7 +117,7 @@ TEST(StepperSession, SortWordsFirstWritesAsUnsetAndOrderAsAPosition) {
   EXPECT_NE(done.position.find("] = 0"), std::string::npos) << done.position;
 }
 
-// The Selection panel names a list's head as the Arrays panel and the README do (B[0][4], never the
+// The Selection panel names a list's head as the Arrays panel and docs/window.md do (B[0][4], never the
 // flat B[4]; the row below's copy B[1][4]), and counts from 1 in book numbering like everything else.
 TEST(SelectionPanel, NamesListHeadsAsTheArraysDoInEitherNumbering) {
   BookFrame f;
@@ -189,7 +189,7 @@ using testui::release;
 using testui::run_frame;
 
 // The Help menu lists every key the host and the Stepper handle (the Stepper's were once missing
-// from --help; test_cli.cpp checks --help and the README).
+// from --help; test_cli.cpp checks --help and docs/window.md).
 TEST(HelpMenu, NamesEveryKeyOfTheHostAndTheStepper) {
   std::string text;
   for (const char* line : help_lines()) text += std::string(line) + "\n";

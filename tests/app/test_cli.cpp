@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "support/paths.hpp"
 #include "support/run_cli.hpp"
@@ -20,11 +23,16 @@ using testcli::write_text;
 TEST(Cli, HelpVersionAndAlgorithms) {
   auto help = run("--help");
   EXPECT_EQ(help.exit_code, 0);
-  EXPECT_NE(help.out.find("nbscope pairs"), std::string::npos);
+  EXPECT_NE(help.out.find("\n  pairs "), std::string::npos);
+  EXPECT_EQ(run("-h").out, help.out);
+  EXPECT_EQ(run("help").out, help.out);
   auto version = run("--version");
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_EQ(version.out.rfind("nbscope ", 0), 0u);
-  EXPECT_EQ(run("pairs --help").out, help.out);  // help after a command is help, not an unknown flag
+  const auto pairs = run("pairs --help");  // help after a command is its page, not an unknown flag
+  EXPECT_EQ(pairs.exit_code, 0);
+  EXPECT_NE(pairs.out.find("--repeat K"), std::string::npos);
+  EXPECT_EQ(run("help pairs").out, pairs.out);
   EXPECT_EQ(run("headless -h").exit_code, 0);
   const auto extra = run("--version extra");
   EXPECT_EQ(extra.exit_code, 2);
@@ -169,14 +177,14 @@ TEST(Cli, ADirectoryAsInputIsRefusedByName) {
 TEST(Cli, BytesFromABadFileAreEscapedSoTheErrorStaysOnePrintableLine) {
   const std::string dir = scratch_dir("unprintable") + "/d\xC3\xA9j\xC3\xA0";  // a UTF-8 name stays as it is
   std::filesystem::create_directories(dir);
-  // (A NUL byte is refused before any field is read: tests/test_hostile_cli.cpp.)
+  // (A NUL byte is refused before any field is read: tests/app/test_hostile_cli.cpp.)
   write_text(dir + "/in.csv", std::string("1,2\x01x\r\xFF,1\n", 10));
   const auto r = run("pairs --input '" + dir + "/in.csv'");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "nbscope: error: " + dir + "/in.csv:1: y: '2\\x01x\\x0D\\xFF' is not a number\n");
 }
 
-// The window's keys (every one the host and the Stepper handle) in --help and in the README's key
+// The window's keys (every one the host and the Stepper handle) in gui --help and in docs/window.md's key
 // list, as in the Help menu (test_stepper_ui.cpp checks the menu).
 TEST(Cli, HelpAndTheReadmeNameEveryKeyOfTheWindow) {
   const auto one_line = [](const std::string& text) {  // line breaks and indents as single spaces
@@ -188,15 +196,15 @@ TEST(Cli, HelpAndTheReadmeNameEveryKeyOfTheWindow) {
     }
     return out;
   };
-  const std::string help = one_line(run("--help").out);
-  const std::string readme = testcli::read_text(std::string(NBSCOPE_SOURCE_DIR) + "/README.md");
+  const std::string help = one_line(run("gui --help").out);
+  const std::string readme = testcli::read_text(std::string(NBSCOPE_SOURCE_DIR) + "/docs/window.md");
   const std::size_t keys_at = readme.find("Keys: P play/pause");
   ASSERT_NE(keys_at, std::string::npos);
   const std::string keys = one_line(readme.substr(keys_at, readme.find("\n\n", keys_at) - keys_at));
   for (const char* key : {"P play", "O single step", "R restart", "Home", "1..9", "Esc", "J play backwards", "Shift+[", "->",
                           "<-", "Space", "PageUp", "PageDown", "Shift: one phase", "Shift: on the selected cell"}) {
-    EXPECT_NE(help.find(key), std::string::npos) << key << " missing from --help";
-    EXPECT_NE(keys.find(key), std::string::npos) << key << " missing from the README's key list";
+    EXPECT_NE(help.find(key), std::string::npos) << key << " missing from gui --help";
+    EXPECT_NE(keys.find(key), std::string::npos) << key << " missing from docs/window.md's key list";
   }
 }
 
@@ -224,6 +232,68 @@ TEST(Cli, AListsFilterNotKnownIsRefusedByName) {
   const auto r = run("headless --scene " + std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/book-fig-3-15.json --frames 1 --lists rows --screenshot x.png");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "nbscope: error: --lists: 'rows' is not one of all, selected, row\n");
+}
+
+// The commands `nbscope --help` lists ("  NAME  summary" lines under "commands:").
+std::vector<std::string> listed_commands(const std::string& summary) {
+  std::vector<std::string> names;
+  std::istringstream in(summary.substr(summary.find("commands:\n") + 10));
+  std::string line;
+  while (std::getline(in, line) && line.rfind("  ", 0) == 0)
+    if (line[2] != ' ') names.push_back(line.substr(2, line.find(' ', 2) - 2));  // not a summary's second line
+  return names;
+}
+
+// `nbscope --help` is one screen: every command with one line, the global options, where to read more.
+TEST(Cli, TheSummaryFitsOneScreen) {
+  const auto r = run("--help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_LE(std::count(r.out.begin(), r.out.end(), '\n'), 30) << r.out;
+  EXPECT_NE(r.out.find("nbscope COMMAND --help for its options; docs/cli.md for the reference"), std::string::npos);
+  EXPECT_NE(r.out.find("--version"), std::string::npos);
+  for (const char* c : {"gui", "headless", "replay", "pairs", "dump", "verify", "scaling", "algorithms"})
+    EXPECT_NE(std::find(listed_commands(r.out).begin(), listed_commands(r.out).end(), c), listed_commands(r.out).end()) << c;
+}
+
+// Every command's page runs, exits 0, is the same by `help COMMAND`, and names each option it
+// lists in usage (the table's test, test_cli_options.cpp, ties the options to the parsers).
+TEST(Cli, EveryCommandHasItsPage) {
+  const auto names = listed_commands(run("--help").out);
+  ASSERT_GE(names.size(), 8u);
+  for (const std::string& name : names) {
+    const auto page = run(name + " --help");
+    EXPECT_EQ(page.exit_code, 0) << name << ": " << page.err;
+    EXPECT_EQ(page.out.rfind("nbscope " + name + " - ", 0), 0u) << name;
+    EXPECT_NE(page.out.find("\nusage:\n"), std::string::npos) << name;
+    EXPECT_NE(page.out.find("\nexit codes: "), std::string::npos) << name;
+    EXPECT_EQ(run(name + " -h").out, page.out) << name;
+    EXPECT_EQ(run("help " + name).out, page.out) << name;
+    // Every "--option" word of the usage lines is on the page as an option of its own.
+    const std::string usage = page.out.substr(0, page.out.find("\n\n", page.out.find("usage:")));
+    for (std::size_t i = usage.find("[--"); i != std::string::npos; i = usage.find("[--", i + 1)) {
+      const std::string option = usage.substr(i + 1, usage.find_first_of(" ]=", i + 1) - i - 1);
+      EXPECT_NE(page.out.find("\n  " + option), std::string::npos) << name << " " << option;
+    }
+  }
+}
+
+TEST(Cli, HelpOfAnUnknownCommandIsOneErrorLine) {
+  for (const char* args : {"help bogus", "--help bogus", "bogus --help"}) {
+    const auto r = run(args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_EQ(r.err, "nbscope: error: bogus: unknown command (see nbscope --help)\n") << args;
+    EXPECT_EQ(r.out, "") << args;
+  }
+}
+
+// docs/cli.md is `nbscope help --markdown`, so the reference cannot drift from the table.
+TEST(Cli, TheReferencePageIsTheTablesMarkdown) {
+  const auto r = run("help --markdown");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string page = read_text(std::string(NBSCOPE_SOURCE_DIR) + "/docs/cli.md");
+  EXPECT_EQ(page, r.out) << "docs/cli.md is out of date: nbscope help --markdown > docs/cli.md";
+  for (const std::string& name : listed_commands(run("--help").out))
+    EXPECT_NE(page.find("\n## nbscope " + name + "\n"), std::string::npos) << name;
 }
 
 TEST(Cli, UnknownCommandExitsTwo) {

@@ -31,7 +31,7 @@ using testcli::write_text;
 
 using testpaths::scene;
 
-// ---- helpers: the format as the README documents it, read with nothing but strtod -------------
+// ---- helpers: the format as docs/formats.md documents it, read with nothing but strtod -------
 
 struct TestFrame {
   long long number = 0;

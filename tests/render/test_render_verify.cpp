@@ -10,7 +10,7 @@
 #include <limits>
 
 #include "render/overlays.hpp"
-#include "render/verify_overlay.hpp"
+#include "render/overlay_verify.hpp"
 #include "support/verify_fixture.hpp"
 
 namespace nbscope::render {

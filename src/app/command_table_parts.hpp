@@ -1,0 +1,19 @@
+// nbscope app: the pieces the command table's two files share (app/command_table.cpp holds the
+// window's commands, app/command_table_files.cpp the file commands).
+#pragma once
+#include <vector>
+
+#include "app/command_table.hpp"
+
+namespace nbscope {
+
+// The rendering options gui, headless, replay and verify --screenshot share (app/view_options.cpp).
+const std::vector<OptionSpec>& rendering_options();
+// --cell-size, --origin, --cells: the grid pins of pairs, dump, verify and gui --arrays (app/grid_flags.cpp).
+const std::vector<OptionSpec>& grid_options();
+// --gl: the off-screen GL of a screenshot (headless, replay, verify).
+OptionSpec gl_option();
+// The rows of pairs, dump, verify, scaling and algorithms, in --help order.
+std::vector<CommandSpec> file_commands();
+
+}  // namespace nbscope

@@ -1,0 +1,31 @@
+// nbscope ui: the mouse and keys every window reads the same way over its scene — the wheel zooms
+// about the cursor, a drag pans, the overlays' letters toggle them — shared by the main window
+// (UiHost) and the verify window, so that both cameras answer the same input alike. The camera's
+// standing orders (Home, a focus, the refit) are render::CameraFraming.
+#pragma once
+#include <Eigen/Core>
+#include <optional>
+#include <string_view>
+
+#include "render/camera.hpp"
+#include "render/overlays.hpp"
+
+namespace nbscope::ui {
+
+// Zoom factor per wheel notch.
+inline constexpr double kZoomPerNotch = 1.2;
+// Pixels the mouse may move with the left button down and still click rather than drag.
+inline constexpr float kClickSlopPx = 4.0f;
+
+// True when keys reach the scene: no text field holds them and no Ctrl, Alt or Super is down.
+[[nodiscard]] bool keys_reach_scene();
+// The mouse in pixels when it is over the scene (known, and over no panel); else nullopt.
+[[nodiscard]] std::optional<Eigen::Vector2d> mouse_over_scene();
+// This frame's wheel and drag move `camera`: the wheel zooms about `mouse`, the right button drags
+// the view, and with `left_button_pans` the left one too once it moved past kClickSlopPx (where a
+// left drag does nothing else; the main window's drags a body).
+void move_camera_by_mouse(render::Camera& camera, const Eigen::Vector2d& mouse, bool left_button_pans);
+// Toggles the overlays whose letter was pressed this frame, of `letters` (empty: every overlay's).
+void toggle_overlays_by_key(render::OverlayFlags& flags, std::string_view letters = {});
+
+}  // namespace nbscope::ui
