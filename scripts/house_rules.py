@@ -3,7 +3,8 @@
 
 Fails, one line per offence, when a file under src/ is longer than MAX_LINES lines, or when a header
 holds more than MAX_HEADER_BODY lines of function bodies (a header declares; the code lives in the
-.cpp). A one-line body counts as one line. Usage: house_rules.py SOURCE_DIR
+.cpp). A one-line body counts as one line. Usage: house_rules.py SOURCE_DIR, or house_rules.py --self-test (plants one offence of each kind
+in a scratch tree and fails unless both are named).
 """
 import pathlib
 import re
@@ -43,8 +44,7 @@ def header_body_lines(lines: list[str]) -> int:
     return total
 
 
-def main() -> int:
-    root = pathlib.Path(sys.argv[1])
+def offences_in(root: pathlib.Path) -> list[str]:
     offences = []
     for path in sorted(root.rglob("*")):
         if path.suffix not in (".cpp", ".hpp", ".h", ".c"):
@@ -58,6 +58,34 @@ def main() -> int:
             if body > MAX_HEADER_BODY:
                 offences.append(f"{shown}: {body} lines of function bodies in a header, over {MAX_HEADER_BODY}: "
                                 "move them to a .cpp")
+    return offences
+
+
+def self_test() -> int:
+    import tempfile
+    with tempfile.TemporaryDirectory() as scratch:
+        root = pathlib.Path(scratch) / "src"
+        (root / "core").mkdir(parents=True)
+        (root / "core" / "long.cpp").write_text("int x;\n" * (MAX_LINES + 1))
+        (root / "core" / "short.cpp").write_text("int y;\n" * MAX_LINES)
+        body = "".join(f"  int v{i} = {i};\n" for i in range(MAX_LINES // 8))
+        (root / "core" / "bodies.hpp").write_text(f"#pragma once\ninline int f(int a) {{\n{body}  return a;\n}}\n")
+        (root / "core" / "decls.hpp").write_text("#pragma once\nstruct S {\n  int get() const { return 1; }\n};\nint g(int);\n")
+        found = offences_in(root)
+    expected = ["src/core/long.cpp:", "src/core/bodies.hpp:"]
+    missing = [e for e in expected if not any(o.startswith(e) for o in found)]
+    extra = [o for o in found if not any(o.startswith(e) for e in expected)]
+    for line in missing:
+        print(f"house_rules --self-test: the planted offence {line} was not named")
+    for line in extra:
+        print(f"house_rules --self-test: a clean file was named: {line}")
+    return 1 if missing or extra else 0
+
+
+def main() -> int:
+    if sys.argv[1:] == ["--self-test"]:
+        return self_test()
+    offences = offences_in(pathlib.Path(sys.argv[1]))
     for line in offences:
         print(line)
     return 1 if offences else 0

@@ -27,31 +27,10 @@ enum class Invariant : std::uint8_t {
 };
 inline constexpr int kInvariantCount = 4;
 // Short name used in reports, summaries and test expectations ("A==R", "A-in-F", "T-in-A", "AABB-in-cells").
-inline const char* invariant_name(Invariant invariant) {
-  switch (invariant) {
-    case Invariant::AEqualsR: return "A==R";
-    case Invariant::AInF: return "A-in-F";
-    case Invariant::TInA: return "T-in-A";
-    case Invariant::AabbInCells: return "AABB-in-cells";
-  }
-  return "?";
-}
+const char* invariant_name(Invariant invariant);
 
 // One sentence saying what the invariant checks.
-inline const char* invariant_description(Invariant invariant) {
-  switch (invariant) {
-    case Invariant::AEqualsR: return "the algorithm's pairs A equal the reference's pairs R";
-    case Invariant::AInF:
-      return "every pair of A that Box2D would consider (its filters applied; with a polygon, the shapes' tight AABBs "
-             "overlapping) "
-             "is in Box2D's contact list F";
-    case Invariant::TInA: return "every pair of shapes touching at the current transforms (T) is in A";
-    case Invariant::AabbInCells:
-      return "every pair whose tight AABBs overlap (b2TestOverlap, inclusive) lies in the same or neighbouring cells of the "
-             "detector's integerisation";
-  }
-  return "?";
-}
+const char* invariant_description(Invariant invariant);
 
 
 // One broken invariant for one pair in one frame.
