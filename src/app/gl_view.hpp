@@ -107,6 +107,9 @@ class GlView {
   void describe_lists(const FrameLoop& loop, const std::shared_ptr<const FrameTrace>& trace, render::OverlayScene& scene) const;
   void build_shapes(const FrameLoop& loop);
   void build_checks(const FrameLoop& loop);
+  // Fills the panels' view of this frame (gl_view_panels.cpp).
+  void fill_panels_view(const FrameLoop& loop, const Session& session, const std::shared_ptr<const FrameTrace>& trace,
+                        ui::SimView& sim);
   void fit_camera(const FrameLoop& loop);
   void rebuild_trail(const FrameLoop& loop);
   // True when the panel titled `title` is open.

@@ -1,0 +1,100 @@
+// The panels' part of GlView: the SimView each frame hands the ImGui panels, filled from the
+// loop's shown frame, its history and the window's own costs.
+#include <tuple>
+
+#include "app/gl_view.hpp"
+#include "check/recorded_lane.hpp"
+
+namespace nbscope {
+
+void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, const std::shared_ptr<const FrameTrace>& trace,
+                              ui::SimView& sim) {
+  const Elements& e = loop.source().elements();
+  sim.scene_path = session.scene_path;
+  sim.scene_name = loop.source().scene().name;
+  sim.scene_files = session.scene_files;
+  for (const DetectorInfo& d : detector_infos())
+    if (d.dim2) sim.detectors.push_back(d.name);
+  sim.algorithms = sim.detectors;
+  if (loop.source().carries_pairs()) sim.algorithms.emplace_back(kRecordedAlgorithm);  // the recording's own pairs, last
+  sim.algorithm = loop.pipeline().algorithm();
+  sim.error = session.error;
+  sim.paused = session.paused;
+  sim.time_step = loop.source().scene().time_step;
+  sim.speed = session.speed;
+  sim.frame = loop.source().frame();
+  sim.sim_time = loop.source().time();
+  sim.bodies = loop.source().body_count();
+  sim.elements = &e;
+  sim.grid = &loop.result().selected().grid;
+  sim.pairs = &loop.result().selected().pairs;
+  sim.lists = state_.overlays.lists ? &lists_ : nullptr;
+  sim.trace = trace;
+  const FrameReport& report = loop.result().report();
+  sim.algorithm_stats.push_back(
+      {loop.pipeline().algorithm(), report.timings.detection_ms, loop.pipeline().detector().own_bytes(), loop.result().selected().pairs.size()});
+  if (report.checked)
+    sim.algorithm_stats.push_back({"check (R: " + report.reference + ")", report.timings.check_ms, 0,
+                                   loop.result().reference.size()});
+  sim.check_ran = report.checked;
+  sim.check_ok = report.ok();
+  sim.check_box2d = report.box2d_checks;
+  sim.check_reference = report.reference;
+  sim.violation_count = static_cast<std::size_t>(report.violation_count());
+  const auto num = [&](std::int64_t v) { return std::to_string(ui::shown(v, state_.book_numbering)); };
+  for (std::size_t i = 0; i < report.violations.size() && i < 6; ++i) {
+    const Violation& v = report.violations[i];
+    sim.violation_lines.push_back(std::string(invariant_name(v.invariant)) + ": (" + num(v.pair.i) + ", " + num(v.pair.j) +
+                                  ") " + v.what + ", cells (" + num(v.cell_i.ix) + "," + num(v.cell_i.iy) + ") (" +
+                                  num(v.cell_j.ix) + "," + num(v.cell_j.iy) + ")");
+  }
+  sim.violation_lines_more = sim.violation_count - sim.violation_lines.size();
+  if (loop.pipeline().fault() != Fault::None) {
+    sim.fault_name = fault_name(loop.pipeline().fault());
+    sim.fault_description = fault_description(loop.pipeline().fault());
+  }
+  // The run: its frames for the Timeline, its violations for their panel.
+  const FrameHistory& history = loop.history().frames();
+  sim.timeline = &history.summaries();
+  sim.newest_frame = loop.history().newest_frame();
+  sim.showing_past = loop.history().showing_past();
+  sim.replaying = loop.source().replaying();
+  sim.play_direction = session.play_direction;
+  sim.history_bytes = history.bytes();
+  sim.history_budget = history.budget();
+  sim.history_dropped = history.dropped();
+  sim.resuming = loop.resume().active();
+  std::tie(sim.resume_done, sim.resume_target) = loop.resume().progress();
+  sim.resume_note = session.resume_note;
+  const ViolationLog& log = loop.history().violation_log();
+  sim.violations = &log.listed();
+  sim.violations_total = log.total();
+  sim.violations_by_invariant = log.by_invariant();
+  sim.violation_frames = log.frames();
+  sim.violations_generation = log.generation();
+  if (state_.current_violation >= static_cast<std::int64_t>(log.listed().size())) state_.current_violation = -1;
+  sim.locate_status = stepper_open() ? stepper_->target_status()
+                                     : "Open the Stepper (View menu) to see the operation that decided this pair.";
+  sim.scene_insets = host_.insets(state_);
+  sim.hide_timings = hide_timings_;
+  sim.timings = report.timings;
+  sim.drawing.physics_overlapped = loop.source().physics_overlapped();
+  sim.drawing.trace_ms = cost_.trace_ms;
+  sim.drawing.overlay_ms = cost_.overlay_ms;
+  sim.drawing.render_ms = cost_.render_ms;
+  sim.drawing.ui_ms = cost_.ui_ms;  // last frame's: this one is being measured
+  sim.drawing.frame_ms = session.frame_ms;
+  sim.fps = session.fps;
+  sim.frame_history_ms = frame_history_;
+  sim.render_stats = &renderer_->stats();
+  sim.imgui_vertices = imgui_->last_vertices();
+  sim.imgui_indices = imgui_->last_indices();
+  sim.imgui_lists = imgui_->last_draw_lists();
+  sim.trace_events = trace ? trace->log.events().size() : 0;
+  sim.trace_bytes = trace ? trace->log.events().size() * sizeof(TraceEvent) : 0;
+  sim.gl_description = gl_description_;
+  sim.width = context_.width();
+  sim.height = context_.height();
+}
+
+}  // namespace nbscope
