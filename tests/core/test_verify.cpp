@@ -16,6 +16,7 @@
 #include "io/dump_json.hpp"
 #include "io/given_pairs.hpp"
 #include "support/generators.hpp"
+#include "support/own_dump.hpp"
 
 namespace nbscope {
 namespace {
@@ -25,21 +26,7 @@ using verify::ProblemKind;
 
 // nbscope's own arrays of `e` as `nbscope dump` writes them (the grid keys pin it, as a user's would).
 json own_dump(const Elements& e, const std::string& algorithm, const GridOptions& grid = {}) {
-  auto d = make_detector(algorithm);
-  DetectOptions options;
-  options.grid = grid;
-  TraceLog trace;
-  trace.set_keep_tests(false);
-  PairList pairs;
-  d->detect_traced(e, options, pairs, trace);
-  DumpSource s;
-  s.algorithm = algorithm;
-  s.elements = &e;
-  s.grid = d->last_grid();
-  s.trace = &trace;
-  s.own_bytes = d->own_bytes();
-  s.pairs = pairs.size();
-  return json::parse(format_dump(dump_json(s)));
+  return json::parse(testdump::own_dump_text(e, algorithm, grid));
 }
 
 struct Checked {

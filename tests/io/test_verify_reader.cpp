@@ -12,27 +12,14 @@
 #include "io/arrays_json.hpp"
 #include "io/dump_json.hpp"
 #include "support/generators.hpp"
+#include "support/own_dump.hpp"
 
 namespace nbscope {
 namespace {
 
 using nlohmann::json;
 
-std::string nbs_dump_text(const Elements& e) {
-  auto d = make_detector("nbs");
-  TraceLog trace;
-  trace.set_keep_tests(false);
-  PairList pairs;
-  d->detect_traced(e, DetectOptions{}, pairs, trace);
-  DumpSource s;
-  s.algorithm = "nbs";
-  s.elements = &e;
-  s.grid = d->last_grid();
-  s.trace = &trace;
-  s.own_bytes = d->own_bytes();
-  s.pairs = pairs.size();
-  return format_dump(dump_json(s));
-}
+std::string nbs_dump_text(const Elements& e) { return testdump::own_dump_text(e, "nbs"); }
 
 std::string error_of(const std::string& text) {
   try {

@@ -18,6 +18,7 @@
 #include "io/arrays_json.hpp"
 #include "io/dump_json.hpp"
 #include "support/generators.hpp"
+#include "support/own_dump.hpp"
 
 namespace nbscope {
 namespace {
@@ -26,23 +27,7 @@ using nlohmann::ordered_json;
 namespace schema = array_schema;
 
 // The dump of `algorithm` on `e`, as text (the writer's output, byte for byte).
-std::string dump_text(const Elements& e, const std::string& algorithm) {
-  auto d = make_detector(algorithm);
-  TraceLog trace;
-  trace.set_keep_tests(false);
-  PairList pairs;
-  d->detect_traced(e, DetectOptions{}, pairs, trace);
-  DumpSource s;
-  s.algorithm = algorithm;
-  s.elements = &e;
-  s.grid = d->last_grid();
-  s.trace = &trace;
-  s.own_bytes = d->own_bytes();
-  s.pairs = pairs.size();
-  std::ostringstream out;
-  write_dump(s, out);
-  return out.str();
-}
+std::string dump_text(const Elements& e, const std::string& algorithm) { return testdump::own_dump_text(e, algorithm); }
 
 std::set<std::string> keys_of(const ordered_json& object) {
   std::set<std::string> out;
