@@ -66,8 +66,10 @@ void Box2dDetector::sort_by_morton(const Elements& e) {
     v = (v | (v << 2)) & 0x33333333ull;
     return (v | (v << 1)) & 0x55555555ull;
   };
+  // A spread of a few denormals makes the scale infinite: clamp before the cast, which would be undefined.
+  const auto quantise = [](double t) -> std::uint64_t { return t > 0.0 ? static_cast<std::uint64_t>(std::min(t, 65535.0)) : 0u; };
   for (std::int64_t k = 0; k < n; ++k) {
-    const auto qx = static_cast<std::uint64_t>((e.x[k] - b.min[0]) * sx), qy = static_cast<std::uint64_t>((e.y[k] - b.min[1]) * sy);
+    const std::uint64_t qx = quantise((e.x[k] - b.min[0]) * sx), qy = quantise((e.y[k] - b.min[1]) * sy);
     keys_[static_cast<std::size_t>(k)] = ((spread(qx) | (spread(qy) << 1)) << 32) | static_cast<std::uint64_t>(k);
   }
   std::sort(keys_.begin(), keys_.end());

@@ -306,6 +306,21 @@ TEST(Box2dDetector, RefusesThreeDimensionsAndFarAwayElements) {
   EXPECT_THROW(d.detect(far, DetectOptions{}, p), Error);
 }
 
+TEST(Box2dDetector, FindsThePairsOfElementsADenormalApart) {
+  // The Morton sort's scale is 65535 / spread: infinite here, and the fuzzer's UBSan once caught its cast.
+  Box2dDetector d;
+  Eigen::ArrayXd x(3), y(3), r(3);
+  x << 0.0, 5e-324, 1e-323;
+  y << 0.0, 0.0, 5e-324;
+  r << 1.0, 1.0, 1.0;
+  const Elements e = make_elements_2d(x, y, r);
+  PairList p;
+  d.detect(e, DetectOptions{}, p);
+  sort_pairs(p);
+  EXPECT_EQ(p, brute_pairs(e));
+  EXPECT_EQ(p.size(), 3u);
+}
+
 TEST(Box2dDetector, IsRegisteredByPhysics) {
   register_physics_detectors();
   register_physics_detectors();  // twice is harmless
