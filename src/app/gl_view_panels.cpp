@@ -1,5 +1,5 @@
-// The panels' part of GlView: the SimView each frame hands the ImGui panels, filled from the
-// loop's shown frame, its history and the window's own costs.
+// The panels' part of GlView: the SimView each frame hands the ImGui panels: a pointer to the
+// loop's shown FrameResult, and what it does not hold (the session, the history, the window's costs).
 #include <tuple>
 
 #include "app/gl_view.hpp"
@@ -22,33 +22,12 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
   sim.paused = session.paused;
   sim.time_step = loop.source().scene().time_step;
   sim.speed = session.speed;
-  sim.frame = loop.source().frame();
-  sim.sim_time = loop.source().time();
+  sim.frame = &loop.result();  // the loop's own: read, not copied
   sim.bodies = loop.source().body_count();
   sim.elements = &e;
-  sim.grid = &loop.result().selected().grid;
-  sim.pairs = &loop.result().selected().pairs;
   sim.lists = state_.overlays.lists ? &lists_ : nullptr;
   sim.trace = trace;
-  const FrameReport& report = loop.result().report();
-  sim.algorithm_stats.push_back(
-      {loop.pipeline().algorithm(), report.timings.detection_ms, loop.pipeline().detector().own_bytes(), loop.result().selected().pairs.size()});
-  if (report.checked)
-    sim.algorithm_stats.push_back({"check (R: " + report.reference + ")", report.timings.check_ms, 0,
-                                   loop.result().reference.size()});
-  sim.check_ran = report.checked;
-  sim.check_ok = report.ok();
-  sim.check_box2d = report.box2d_checks;
-  sim.check_reference = report.reference;
-  sim.violation_count = static_cast<std::size_t>(report.violation_count());
-  const auto num = [&](std::int64_t v) { return std::to_string(ui::shown(v, state_.book_numbering)); };
-  for (std::size_t i = 0; i < report.violations.size() && i < 6; ++i) {
-    const Violation& v = report.violations[i];
-    sim.violation_lines.push_back(std::string(invariant_name(v.invariant)) + ": (" + num(v.pair.i) + ", " + num(v.pair.j) +
-                                  ") " + v.what + ", cells (" + num(v.cell_i.ix) + "," + num(v.cell_i.iy) + ") (" +
-                                  num(v.cell_j.ix) + "," + num(v.cell_j.iy) + ")");
-  }
-  sim.violation_lines_more = sim.violation_count - sim.violation_lines.size();
+  sim.detector_bytes = loop.pipeline().detector().own_bytes();
   if (loop.pipeline().fault() != Fault::None) {
     sim.fault_name = fault_name(loop.pipeline().fault());
     sim.fault_description = fault_description(loop.pipeline().fault());
@@ -77,7 +56,6 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
                                      : "Open the Stepper (View menu) to see the operation that decided this pair.";
   sim.scene_insets = host_.insets(state_);
   sim.hide_timings = hide_timings_;
-  sim.timings = report.timings;
   sim.drawing.physics_overlapped = loop.source().physics_overlapped();
   sim.drawing.trace_ms = cost_.trace_ms;
   sim.drawing.overlay_ms = cost_.overlay_ms;

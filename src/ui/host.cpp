@@ -133,7 +133,7 @@ void UiHost::draw_menu(UiContext& ctx) {
   }
   char where[160];
   std::snprintf(where, sizeof where, "%s  |  %s  |  frame %lld%s", ctx.sim.scene_name.c_str(), ctx.sim.algorithm.c_str(),
-                static_cast<long long>(ctx.sim.frame), ctx.sim.showing_past ? " (past)" : "");
+                static_cast<long long>(ctx.sim.frame_number()), ctx.sim.showing_past ? " (past)" : "");
   // Right-aligned: the injected fault (red), then scene, algorithm and frame.
   const std::string fault = ctx.sim.fault_name.empty() ? "" : "FAULT: " + ctx.sim.fault_name;
   const float spacing = ImGui::GetStyle().ItemSpacing.x;
@@ -344,7 +344,7 @@ void UiHost::handle_mouse(UiContext& ctx) {
   }
   const Eigen::Vector2d world = ctx.camera.to_world(mouse);
   ctx.state.mouse_world = world;
-  ctx.state.hovered_cell = ctx.sim.grid != nullptr ? cell_at(*ctx.sim.grid, world) : std::nullopt;
+  ctx.state.hovered_cell = ctx.sim.grid() != nullptr ? cell_at(*ctx.sim.grid(), world) : std::nullopt;
   move_camera_by_mouse(ctx.camera, mouse, false);  // the left button drags a body here
   if (ImGui::IsMouseClicked(0) && !ctx.state.dragging) {
     ctx.state.selected = ctx.sim.elements != nullptr ? render::element_at(*ctx.sim.elements, world) : -1;

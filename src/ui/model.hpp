@@ -1,7 +1,10 @@
-// nbscope ui: what the panels read (SimView: one frame's facts, filled by the app), what they
+// nbscope ui: what the panels read (SimView: one frame's facts, given by the app), what they
 // change (UiState: view state, persisted in the settings file), and what they ask the app to do
 // (UiRequests: applied by the app after the UI frame). The ui never sees the frame loop itself,
-// so it depends only on render and core.
+// so it depends only on check, render and core. SimView points at the shown frame's FrameResult
+// instead of copying it: the app owns the frame, the ui reads it (and formats what it shows, such
+// as the violation lines in the book's numbering); SimView's own fields are what the FrameResult
+// does not hold (the session, the run's history, the window's costs, self-inspection).
 #pragma once
 #include <Eigen/Core>
 #include <array>
@@ -13,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "check/frame_result.hpp"
 #include "check/report.hpp"
 #include "core/elements.hpp"
 #include "core/frame_trace.hpp"
@@ -28,14 +32,6 @@ namespace nbscope::ui {
 // Shown index of an element id or array index: itself, or one more in book numbering (-1 stays -1).
 [[nodiscard]] inline std::int64_t shown(std::int64_t value, bool book) { return (book && value >= 0) ? value + 1 : value; }
 
-// One algorithm's cost this frame.
-struct AlgorithmStat {
-  std::string name;
-  double detection_ms = 0;
-  std::size_t bytes = 0;  // the detector's own arrays
-  std::size_t pairs = 0;
-};
-
 // Where the window's own part of a frame's time went, in milliseconds (the pipeline's part, physics,
 // detection and check, is FrameTimings, check/report.hpp).
 struct DrawTimings {
@@ -49,6 +45,8 @@ struct DrawTimings {
 
 // The facts of the current frame that panels show. Pointers may be null (nothing loaded yet).
 struct SimView {
+  const FrameResult* frame = nullptr;  // the shown frame's result, the loop's own (null: nothing loaded)
+
   std::string scene_path;
   std::string scene_name;
   std::vector<std::string> scene_files;  // every scene in assets/scenes
@@ -60,24 +58,13 @@ struct SimView {
   bool paused = false;
   double time_step = 1.0 / 60.0;
   double speed = 1.0;
-  std::int64_t frame = 0;
-  double sim_time = 0;
 
   std::int64_t bodies = 0;
   const Elements* elements = nullptr;
-  const Grid* grid = nullptr;
-  const PairList* pairs = nullptr;
   const std::vector<TracedList>* lists = nullptr;  // only while the list overlay is on
   std::shared_ptr<const FrameTrace> trace;  // this frame's traced detection, when the overlay or the stepper asked
-  std::vector<AlgorithmStat> algorithm_stats;               // the chosen algorithm first
+  std::size_t detector_bytes = 0;  // the chosen detector's own arrays
 
-  bool check_ran = false;
-  bool check_ok = true;
-  std::string check_reference;             // "brute" or "nbs" (above brute force's size)
-  bool check_box2d = true;                 // A in F, T in A ran (false for recorded frames: no Box2D world)
-  std::size_t violation_count = 0;
-  std::vector<std::string> violation_lines;  // the first few, one line each
-  std::size_t violation_lines_more = 0;      // this frame's violations not among the lines
   std::string fault_name;                    // an injected fault ("" for none): a banner says so
   std::string fault_description;
 
@@ -101,8 +88,7 @@ struct SimView {
   render::ScreenInsets scene_insets;  // pixels the panels cover at each edge (last frame)
 
   bool hide_timings = false;  // reproducible screenshots: no wall-clock numbers
-  FrameTimings timings;  // the frame's pipeline: physics, detection, check
-  DrawTimings drawing;   // the window's own work on it
+  DrawTimings drawing;   // the window's own work on the frame (the pipeline's: frame->report().timings)
   double fps = 0;
   std::vector<float> frame_history_ms;  // oldest first
 
@@ -112,6 +98,17 @@ struct SimView {
   std::size_t trace_events = 0, trace_bytes = 0;
   std::string gl_description;
   int width = 0, height = 0;
+
+  // The shown frame's number (0 with nothing loaded).
+  [[nodiscard]] std::int64_t frame_number() const { return frame != nullptr ? frame->frame : 0; }
+  // The shown frame's simulated time in seconds (0 with nothing loaded).
+  [[nodiscard]] double sim_time() const { return frame != nullptr ? frame->time : 0; }
+  // The chosen detector's grid this frame (null with nothing loaded).
+  [[nodiscard]] const Grid* grid() const { return frame != nullptr ? &frame->selected().grid : nullptr; }
+  // The chosen detector's pairs A this frame (null with nothing loaded).
+  [[nodiscard]] const PairList* pairs() const { return frame != nullptr ? &frame->selected().pairs : nullptr; }
+  // The chosen detector's report this frame: counts, timings, check, violations (null with nothing loaded).
+  [[nodiscard]] const FrameReport* report() const { return frame != nullptr ? &frame->report() : nullptr; }
 };
 
 // Open/closed panels, overlays and interaction state: owned by the app, edited by the UI.

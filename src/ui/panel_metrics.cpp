@@ -69,7 +69,7 @@ class MetricsPanel final : public Panel {
     }
     if (s.elements != nullptr)
       ImGui::Text("elements: %.1f KB, pairs: %.1f KB", double(s.elements->size()) * 3 * sizeof(double) / 1024.0,
-                  s.pairs != nullptr ? double(s.pairs->size() * sizeof(Pair)) / 1024.0 : 0.0);
+                  s.pairs() != nullptr ? double(s.pairs()->size() * sizeof(Pair)) / 1024.0 : 0.0);
     if (!s.frame_history_ms.empty() && !s.hide_timings) {
       const auto& h = s.frame_history_ms;
       const float worst = *std::max_element(h.begin(), h.end());

@@ -33,7 +33,7 @@ class SelectionPanel final : public Panel {
     const auto num = [book](std::int64_t v) { return static_cast<long long>(shown(v, book)); };
     ImGui::Text("element %lld", num(k));
     ImGui::Text("centre (%.3f, %.3f)  r = %.3f", e.x[k], e.y[k], e.r[k]);
-    if (s.grid != nullptr) ImGui::Text("cell ix = %lld, iy = %lld", num(s.grid->cell(e.x[k], 0)), num(s.grid->cell(e.y[k], 1)));
+    if (const Grid* grid = s.grid()) ImGui::Text("cell ix = %lld, iy = %lld", num(grid->cell(e.x[k], 0)), num(grid->cell(e.y[k], 1)));
 
     if (s.lists == nullptr) {
       ImGui::TextDisabled("lists: turn on the list overlay (L)");
@@ -54,10 +54,10 @@ class SelectionPanel final : public Panel {
       }
     }
 
-    if (s.pairs != nullptr) {
+    if (s.pairs() != nullptr) {
       std::string others;
       std::size_t count = 0;
-      for (const Pair& p : *s.pairs) {
+      for (const Pair& p : *s.pairs()) {
         if (p.i != k && p.j != k) continue;
         if (++count <= 16) others += (others.empty() ? "" : ", ") + std::to_string(num(p.i == k ? p.j : p.i));
       }

@@ -1,7 +1,10 @@
 // The Stats panel: sizes, pairs, the cost of each algorithm, the check status and the frame split.
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "io/plural.hpp"
 #include "ui/panels.hpp"
@@ -15,6 +18,12 @@ std::string format_ms(const SimView& sim, double ms) {
   return buf;
 }
 
+std::string violation_line(const Violation& v, bool book) {
+  const auto num = [&](std::int64_t value) { return std::to_string(shown(value, book)); };
+  return std::string(invariant_name(v.invariant)) + ": (" + num(v.pair.i) + ", " + num(v.pair.j) + ") " + v.what + ", cells (" +
+         num(v.cell_i.ix) + "," + num(v.cell_i.iy) + ") (" + num(v.cell_j.ix) + "," + num(v.cell_j.iy) + ")";
+}
+
 namespace {
 
 std::string format_bytes(std::size_t bytes) {
@@ -24,6 +33,26 @@ std::string format_bytes(std::size_t bytes) {
   else std::snprintf(buf, sizeof buf, "%.1f MB", double(bytes) / (1024.0 * 1024.0));
   return buf;
 }
+
+// One row of the cost table: the chosen algorithm, then the check (its reference detector's).
+struct AlgorithmStat {
+  std::string name;
+  double ms = 0;
+  std::size_t bytes = 0;  // the detector's own arrays
+  std::size_t pairs = 0;
+};
+
+std::vector<AlgorithmStat> algorithm_stats(const SimView& s) {
+  std::vector<AlgorithmStat> rows;
+  if (s.frame == nullptr) return rows;
+  const FrameReport& report = s.frame->report();
+  rows.push_back({s.algorithm, report.timings.detection_ms, s.detector_bytes, s.frame->selected().pairs.size()});
+  if (report.checked) rows.push_back({"check (R: " + report.reference + ")", report.timings.check_ms, 0, s.frame->reference.size()});
+  return rows;
+}
+
+// At most this many of a frame's violations are spelled out in the panel; the Violations panel lists all.
+constexpr std::size_t kViolationLines = 6;
 
 class StatsPanel final : public Panel {
  public:
@@ -35,58 +64,14 @@ class StatsPanel final : public Panel {
     const SimView& s = c.sim;
     const long long n = s.elements != nullptr ? static_cast<long long>(s.elements->size()) : 0;
     ImGui::Text("N = %s, %s", plural(n, "element").c_str(), plural(static_cast<long long>(s.bodies), "body", "bodies").c_str());
-    if (s.grid != nullptr) {
-      ImGui::Text("cells %lld x %lld = %lld, d = %.3g m", static_cast<long long>(s.grid->n[0]),
-                  static_cast<long long>(s.grid->n[1]), static_cast<long long>(s.grid->cell_count()),
-                  s.grid->cell_size);
+    if (const Grid* grid = s.grid()) {
+      ImGui::Text("cells %lld x %lld = %lld, d = %.3g m", static_cast<long long>(grid->n[0]), static_cast<long long>(grid->n[1]),
+                  static_cast<long long>(grid->cell_count()), grid->cell_size);
     }
-    ImGui::Text("pairs %zu", s.pairs != nullptr ? s.pairs->size() : std::size_t{0});
-
-    if (!s.algorithm_stats.empty() && ImGui::BeginTable("algos", 4, ImGuiTableFlags_BordersInnerH)) {
-      ImGui::TableSetupColumn("algorithm");
-      ImGui::TableSetupColumn("ms");
-      ImGui::TableSetupColumn("own bytes");
-      ImGui::TableSetupColumn("pairs");
-      ImGui::TableHeadersRow();
-      for (const AlgorithmStat& a : s.algorithm_stats) {
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(a.name.c_str());
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(format_ms(s, a.detection_ms).c_str());
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(format_bytes(a.bytes).c_str());
-        ImGui::TableNextColumn();
-        ImGui::Text("%zu", a.pairs);
-      }
-      ImGui::EndTable();
-    }
-
+    ImGui::Text("pairs %zu", s.pairs() != nullptr ? s.pairs()->size() : std::size_t{0});
+    draw_costs(s);
     ImGui::Separator();
-    if (!s.check_ran) {
-      ImGui::TextDisabled("check: not run");
-    } else if (s.check_ok && s.check_box2d) {
-      ImGui::TextColored(ImVec4(0.4f, 0.9f, 0.5f, 1.0f), "check OK: all 4 invariants (R = %s)", s.check_reference.c_str());
-      ImGui::TextDisabled("A == R, A in F, T in A, AABB in cells");
-    } else if (s.check_ok) {
-      ImGui::TextColored(ImVec4(0.4f, 0.9f, 0.5f, 1.0f), "check OK: A == %s", s.check_reference.c_str());
-      ImGui::PushTextWrapPos(0.0f);
-      ImGui::TextDisabled("no Box2D: A in F, T in A, AABB in cells not checked");
-      ImGui::PopTextWrapPos();
-    } else {
-      ImGui::TextColored(ImVec4(1.0f, 0.3f, 0.3f, 1.0f), "check FAILED: %s",
-                         plural(static_cast<long long>(s.violation_count), "violation").c_str());
-      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.5f, 0.5f, 1.0f));
-      for (const std::string& line : s.violation_lines) ImGui::TextWrapped("%s", line.c_str());
-      ImGui::PopStyleColor();
-      // Never cut silently: say how many more, and where they all are.
-      if (s.violation_lines_more > 0) {
-        char more[96];
-        std::snprintf(more, sizeof more, "+%zu more: the Violations panel lists them", s.violation_lines_more);
-        if (ImGui::SmallButton(more)) c.state.panel_open[kViolationsTitle] = true;
-      }
-      if (!s.fault_name.empty()) ImGui::TextDisabled("(fault %s injected)", s.fault_name.c_str());
-    }
-
+    draw_check(c);
     ImGui::Separator();
     if (s.hide_timings) {
       ImGui::TextDisabled("timings hidden (--no-timings)");
@@ -96,9 +81,10 @@ class StatsPanel final : public Panel {
       ImGui::Text("%.1f FPS   frame %s ms", s.fps, format_ms(s, s.drawing.frame_ms).c_str());
     else
       ImGui::TextUnformatted("off-screen frame (no FPS)");
+    const FrameTimings timings = s.report() != nullptr ? s.report()->timings : FrameTimings{};
     if (ImGui::BeginTable("split", 2)) {
       const std::pair<const char*, double> rows[] = {
-          {"physics", s.timings.physics_ms}, {"detection", s.timings.detection_ms}, {"check", s.timings.check_ms},
+          {"physics", timings.physics_ms}, {"detection", timings.detection_ms}, {"check", timings.check_ms},
           {"trace (lists)", s.drawing.trace_ms}, {"overlays", s.drawing.overlay_ms}, {"render", s.drawing.render_ms},
           {"panels", s.drawing.ui_ms}};
       for (const auto& [name, ms] : rows) {
@@ -110,6 +96,60 @@ class StatsPanel final : public Panel {
         ImGui::Text("%s ms%s", format_ms(s, ms).c_str(), overlapped ? " (overlapped)" : "");
       }
       ImGui::EndTable();
+    }
+  }
+
+ private:
+  static void draw_costs(const SimView& s) {
+    const std::vector<AlgorithmStat> rows = algorithm_stats(s);
+    if (rows.empty() || !ImGui::BeginTable("algos", 4, ImGuiTableFlags_BordersInnerH)) return;
+    ImGui::TableSetupColumn("algorithm");
+    ImGui::TableSetupColumn("ms");
+    ImGui::TableSetupColumn("own bytes");
+    ImGui::TableSetupColumn("pairs");
+    ImGui::TableHeadersRow();
+    for (const AlgorithmStat& a : rows) {
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(a.name.c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(format_ms(s, a.ms).c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(format_bytes(a.bytes).c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%zu", a.pairs);
+    }
+    ImGui::EndTable();
+  }
+
+  // The check's verdict on the frame: OK (with what it covered) or the first violations, numbered as shown.
+  static void draw_check(UiContext& c) {
+    const SimView& s = c.sim;
+    const FrameReport* report = s.report();
+    if (report == nullptr || !report->checked) {
+      ImGui::TextDisabled("check: not run");
+    } else if (report->ok() && report->box2d_checks) {
+      ImGui::TextColored(ImVec4(0.4f, 0.9f, 0.5f, 1.0f), "check OK: all 4 invariants (R = %s)", report->reference.c_str());
+      ImGui::TextDisabled("A == R, A in F, T in A, AABB in cells");
+    } else if (report->ok()) {
+      ImGui::TextColored(ImVec4(0.4f, 0.9f, 0.5f, 1.0f), "check OK: A == %s", report->reference.c_str());
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextDisabled("no Box2D: A in F, T in A, AABB in cells not checked");
+      ImGui::PopTextWrapPos();
+    } else {
+      const auto count = static_cast<std::size_t>(report->violation_count());
+      ImGui::TextColored(ImVec4(1.0f, 0.3f, 0.3f, 1.0f), "check FAILED: %s", plural(static_cast<long long>(count), "violation").c_str());
+      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.5f, 0.5f, 1.0f));
+      const std::size_t lines = std::min(report->violations.size(), kViolationLines);
+      for (std::size_t i = 0; i < lines; ++i)
+        ImGui::TextWrapped("%s", violation_line(report->violations[i], c.state.book_numbering).c_str());
+      ImGui::PopStyleColor();
+      // Never cut silently: say how many more, and where they all are.
+      if (count > lines) {
+        char more[96];
+        std::snprintf(more, sizeof more, "+%zu more: the Violations panel lists them", count - lines);
+        if (ImGui::SmallButton(more)) c.state.panel_open[kViolationsTitle] = true;
+      }
+      if (!s.fault_name.empty()) ImGui::TextDisabled("(fault %s injected)", s.fault_name.c_str());
     }
   }
 };

@@ -54,7 +54,7 @@ class StepperPanel final : public Panel {
     }
     if (!s.current_for(c.sim)) {
       ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "showing frame %lld (now %lld)",
-                         static_cast<long long>(s.frame()), static_cast<long long>(c.sim.frame));
+                         static_cast<long long>(s.frame()), static_cast<long long>(c.sim.frame_number()));
       if (ImGui::Button("Record this frame")) s.capture(c.sim);
     }
     Stepper& st = s.stepper();
@@ -151,8 +151,8 @@ class StepperPanel final : public Panel {
   static void seek_touching(UiContext& c, StepperSession& s, bool cell, int direction) {
     std::optional<std::array<std::int32_t, 2>> at = c.state.selected_cell;
     const ElementId k = c.state.selected;
-    if (!at && k >= 0 && c.sim.grid != nullptr && c.sim.elements != nullptr && k < c.sim.elements->size())
-      at = std::array<std::int32_t, 2>{c.sim.grid->cell(c.sim.elements->x[k], 0), c.sim.grid->cell(c.sim.elements->y[k], 1)};
+    if (!at && k >= 0 && c.sim.grid() != nullptr && c.sim.elements != nullptr && k < c.sim.elements->size())
+      at = std::array<std::int32_t, 2>{c.sim.grid()->cell(c.sim.elements->x[k], 0), c.sim.grid()->cell(c.sim.elements->y[k], 1)};
     if (cell ? !at : k < 0) {
       s.status = cell ? "select a cell (click it) first" : "select an element (click it) first";
       return;

@@ -58,7 +58,7 @@ class TimelinePanel final : public Panel {
   void draw_transport(UiContext& c) {
     const SimView& s = c.sim;
     const ImVec2 b(28, 0);
-    const bool past = s.showing_past || (s.replaying && s.frame != s.newest_frame);
+    const bool past = s.showing_past || (s.replaying && s.frame_number() != s.newest_frame);
     if (ImGui::Button("|<", b)) c.requests.show_frame = first_showable(s);
     tooltip("the oldest kept frame");
     ImGui::SameLine();
@@ -80,14 +80,14 @@ class TimelinePanel final : public Panel {
     tooltip(s.replaying ? "the last recorded frame" : "the newest (live) frame");
     ImGui::SameLine();
     if (s.showing_past) {
-      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "frame %lld of %lld (past)", static_cast<long long>(s.frame),
+      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "frame %lld of %lld (past)", static_cast<long long>(s.frame_number()),
                          static_cast<long long>(s.newest_frame));
       ImGui::SameLine();
       if (ImGui::SmallButton("Resume here")) c.requests.resume_here = true;
       tooltip("continue the simulation from this frame: the later frames are replaced. The scene is re-simulated\n"
               "from frame 0 with the same steps and drags, so Box2D arrives here bit for bit.");
     } else {
-      ImGui::Text("frame %lld of %lld%s", static_cast<long long>(s.frame), static_cast<long long>(s.newest_frame),
+      ImGui::Text("frame %lld of %lld%s", static_cast<long long>(s.frame_number()), static_cast<long long>(s.newest_frame),
                   s.replaying ? " (recorded)" : " (live)");
     }
     if (!s.resume_note.empty()) {
@@ -194,7 +194,7 @@ class TimelinePanel final : public Panel {
     plot(&Column::pairs, min_pairs, max_pairs, kPairsLine);
     if (!s.hide_timings) plot(&Column::ms, 0.0f, max_ms, kTimeLine);
     dl->AddLine(ImVec2(x_of(s.newest_frame), p0.y), ImVec2(x_of(s.newest_frame), p0.y + kStripHeight), kNewest, 1.0f);
-    const float cx = x_of(s.frame);
+    const float cx = x_of(s.frame_number());
     dl->AddRectFilled(ImVec2(cx - 1, p0.y - 1), ImVec2(cx + 2, p0.y + kStripHeight + 1), kCursor);
     dl->AddRect(p0, ImVec2(p0.x + width, p0.y + kStripHeight), IM_COL32(90, 95, 110, 255));
 
@@ -215,9 +215,9 @@ class TimelinePanel final : public Panel {
         }
       }
       // Clicking or dragging goes to the nearest frame that can be shown.
-      if (active && near != nullptr && near->frame != s.frame) {
+      if (active && near != nullptr && near->frame != s.frame_number()) {
         const FrameSummary* target = near->kept || near->frame == s.newest_frame ? near : nearest_kept(frames, want);
-        if (target != nullptr && target->frame != s.frame) c.requests.show_frame = target->frame;
+        if (target != nullptr && target->frame != s.frame_number()) c.requests.show_frame = target->frame;
       }
     }
     legend(s, dl, p0);

@@ -37,6 +37,9 @@ inline constexpr const char* kStatsTitle = "Stats";
 std::optional<std::size_t> step_violation(const SimView& sim, const UiState& state, int direction);
 // "A==R in frame 3: (4, 6) missing from A (in R); cells (5,6) and (4,7)", in the chosen numbering.
 std::string describe_violation(const Violation& violation, bool book);
+// The Stats panel's line for one of the frame's violations: "A==R: (4, 6) missing from A (in R),
+// cells (5,6) (4,7)", in the chosen numbering.
+std::string violation_line(const Violation& violation, bool book);
 
 // The Selection panel's line for list `l` around element k: "B[1][8]: 11 -> [12] -> 191 -> ... ",
 // the head named as the Arrays panel names it, every number from 1 with `book`.

@@ -20,7 +20,7 @@ StepperSession::StepperSession(StepperConfig config)
     : book_numbering(config.book_numbering), pending_step_(config.step) {}
 
 StepperSession::Key StepperSession::key_of(const SimView& sim) {
-  return Key{sim.scene_path, sim.algorithm, sim.frame, sim.elements != nullptr ? sim.elements->size() : -1};
+  return Key{sim.scene_path, sim.algorithm, sim.frame_number(), sim.elements != nullptr ? sim.elements->size() : -1};
 }
 
 bool StepperSession::current_for(const SimView& sim) const { return captured_ && key_ == key_of(sim); }
@@ -34,9 +34,9 @@ void StepperSession::update(const SimView& sim, double dt_seconds, int ui_frame)
   last_frame_count_ = ui_frame;
   // A configured step (headless --step K) shows whatever frame is on screen; otherwise only a
   // paused frame is recorded, so a running simulation does not pay for tracing every frame.
-  const bool target_here = target_ && target_->frame == sim.frame;
+  const bool target_here = target_ && target_->frame == sim.frame_number();
   const bool fresh = sim.trace ? sim.trace->serial != held_serial_ : !(key_ == key_of(sim));
-  if (wants_trace(sim.frame, sim.paused) && sim.elements != nullptr && fresh) capture(sim);
+  if (wants_trace(sim.frame_number(), sim.paused) && sim.elements != nullptr && fresh) capture(sim);
   if (target_here && (key_ == key_of(sim))) apply_target(sim);
   if (captured_) stepper_.advance(dt_seconds);
   was_current_ = current_for(sim);
@@ -146,7 +146,7 @@ std::optional<Eigen::Vector2d> StepperSession::focus_point() const {
 
 void StepperSession::capture(const SimView& sim) {
   const std::size_t keep_position = stepper_.position();
-  if (!target_ || target_->frame != sim.frame) {
+  if (!target_ || target_->frame != sim.frame_number()) {
     target_status_.clear();  // it described another frame
     target_location_.reset();
   }
@@ -165,7 +165,7 @@ void StepperSession::capture(const SimView& sim) {
   tests_of_element_ = -1;
   tests_.clear();
   algorithm_ = sim.algorithm;
-  frame_ = sim.frame;
+  frame_ = sim.frame_number();
   trace_ = sim.trace;
   held_serial_ = trace_ ? trace_->serial : 0;
   if (sim.elements == nullptr) {

@@ -1,13 +1,16 @@
 // The verify view under OSMesa on a hand-made run (the book's nine elements, screen arrays with a
 // planted bug): the screenshot is written and shows the wrong link in red where it lies on screen,
-// the first problem is selected, and choosing another problem puts the camera on it.
+// the first problem is selected, and choosing another problem puts the camera on it. And the
+// window's panels read the frame loop's own FrameResult (the SimView points at it, copies nothing).
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
+#include "app/gl_view.hpp"
 #include "app/verify_view_impl.hpp"
 #include "core/error.hpp"
 #include "io/png.hpp"
+#include "physics/box2d_detector.hpp"
 #include "render/gl_context.hpp"
 #include "support/verify_fixture.hpp"
 
@@ -87,6 +90,44 @@ TEST(VerifyView, UnknownPanelsAndElementsAreRefused) {
   EXPECT_THROW(make(o), Error);
   o.select = 9;
   EXPECT_NO_THROW(make(o));
+}
+
+// A floating panel that keeps what the SimView it is handed says about the frame.
+struct FrameProbe final : ui::Panel {
+  const FrameResult** frame;
+  std::int64_t* number;
+  FrameProbe(const FrameResult** f, std::int64_t* n) : frame(f), number(n) {}
+  [[nodiscard]] const char* title() const override { return "Frame probe"; }
+  [[nodiscard]] ui::PanelPlace place() const override { return ui::PanelPlace::Floating; }
+  void draw(ui::UiContext& c) override {
+    *frame = c.sim.frame;
+    *number = c.sim.frame_number();
+  }
+};
+
+TEST(PanelsView, TheSimViewPointsAtTheFrameLoopsOwnResult) {
+  register_physics_detectors();
+  const auto context = render::make_offscreen_context(800, 500, "osmesa");
+  FrameLoop loop;
+  load_scene_file(loop, std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/book-fig-3-15.json");
+  ViewOptions o = options();
+  o.width = 800;
+  o.height = 500;
+  GlView view(*context, nullptr, o);
+  view.on_scene_loaded(loop);
+  const FrameResult* seen = nullptr;
+  std::int64_t number = -1;
+  view.host().add_panel(std::make_unique<FrameProbe>(&seen, &number));
+  Session session;
+  session.paused = true;
+  view.frame(loop, session, false, 1.0f / 60.0f);
+  EXPECT_EQ(seen, &loop.result());
+  EXPECT_EQ(number, 0);
+  loop.step();
+  view.frame(loop, session, false, 1.0f / 60.0f);
+  EXPECT_EQ(seen, &loop.result());
+  EXPECT_EQ(number, 1);
+  EXPECT_EQ(number, loop.source().frame());
 }
 
 }  // namespace

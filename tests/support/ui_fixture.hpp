@@ -35,37 +35,39 @@ struct ImGuiScope {
   ~ImGuiScope() { ImGui::DestroyContext(); }
 };
 
-// The book's Fig. 3.15 on its 10x10 grid of unit cells, as the frame loop would show it.
+// The book's Fig. 3.15 on its 10x10 grid of unit cells, as the frame loop would show it: the
+// view points at `result`, as it points at the frame loop's own (its frame number, grid, pairs).
 struct BookFrame {
   Elements elements;
-  Grid grid;
+  FrameResult result;
   SimView sim;
   UiState state;
   UiRequests requests;
   render::Camera camera;
   BookFrame() {
     elements = testdata::book_nine();
-    grid.n[0] = grid.n[1] = 10;
+    result.lanes.front().grid.n[0] = result.lanes.front().grid.n[1] = 10;
     sim.scene_path = "book-fig-3-15.json";
     sim.elements = &elements;
-    sim.grid = &grid;
+    sim.frame = &result;
     sim.algorithm = "screen";
     sim.paused = true;
     camera.set_viewport(1280, 720);
     camera.set({5, 5}, 40.0);
   }
-  // The view with this frame's trace, made as the frame loop makes it (the grid pinned to `grid`
-  // when sim.grid points at it) for the current algorithm, elements and frame; kept while those stay.
+  // The view with this frame's trace, made as the frame loop makes it (the grid pinned to the
+  // result's when sim.frame points at one) for the current algorithm, elements and frame; kept while those stay.
   SimView& traced() {
-    const auto key = std::make_tuple(sim.algorithm, static_cast<const void*>(sim.elements), sim.frame, sim.grid != nullptr);
+    const Grid* grid = sim.grid();
+    const auto key = std::make_tuple(sim.algorithm, static_cast<const void*>(sim.elements), sim.frame_number(), grid != nullptr);
     if (sim.elements != nullptr && (!sim.trace || key != trace_key_)) {
       DetectOptions o;
-      if (sim.grid != nullptr) {
-        o.grid.cell_size = sim.grid->cell_size;
-        o.grid.origin = std::array<double, 3>{sim.grid->origin[0], sim.grid->origin[1], sim.grid->origin[2]};
-        o.grid.cells = std::array<std::int64_t, 3>{sim.grid->n[0], sim.grid->n[1], sim.grid->n[2]};
+      if (grid != nullptr) {
+        o.grid.cell_size = grid->cell_size;
+        o.grid.origin = std::array<double, 3>{grid->origin[0], grid->origin[1], grid->origin[2]};
+        o.grid.cells = std::array<std::int64_t, 3>{grid->n[0], grid->n[1], grid->n[2]};
       }
-      sim.trace = trace_frame(*make_detector(sim.algorithm), *sim.elements, o, sim.frame, sim.grid != nullptr ? *sim.grid : Grid{});
+      sim.trace = trace_frame(*make_detector(sim.algorithm), *sim.elements, o, sim.frame_number(), grid != nullptr ? *grid : Grid{});
       trace_key_ = key;
     }
     return sim;

@@ -70,12 +70,12 @@ TEST(StepperTarget, WaitsForItsFrame) {
   s.update(f.traced(), 0, 1);  // frame 0 shown: the target waits
   EXPECT_TRUE(s.target_pending());
   EXPECT_TRUE(s.target_status().empty());
-  f.sim.frame = 7;
+  f.result.frame = 7;
   s.update(f.traced(), 0, 2);
   EXPECT_FALSE(s.target_pending());
   EXPECT_FALSE(s.target_status().empty());
   // Another frame captured later: the status described frame 7, and goes.
-  f.sim.frame = 8;
+  f.result.frame = 8;
   s.update(f.traced(), 0, 3);
   EXPECT_TRUE(s.target_status().empty());
 }
@@ -156,7 +156,7 @@ TEST(DebugPanels, KeysAskForFramesPlaybackAndViolations) {
   for (int k = 0; k <= 3; ++k) timeline.push_back(FrameSummary{k, k / 60.0, 0, true, true, 9, 1, k == 2 ? 2 : 0, 0, 0.1f, 0});
   f.sim.timeline = &timeline;
   f.sim.newest_frame = 3;
-  f.sim.frame = 3;
+  f.result.frame = 3;
   f.sim.violations = &v.all;
   f.sim.violations_total = 5;
   f.sim.violation_frames = 3;
@@ -216,6 +216,30 @@ TEST(DebugPanels, APastFrameIsSelectedNotDragged) {
   EXPECT_FALSE(f.state.dragging);
   ASSERT_TRUE(f.state.selected_cell.has_value());
   EXPECT_EQ((*f.state.selected_cell)[0], 4);
+}
+
+// The panels read the frame from the FrameResult the view points at, and cope without one.
+TEST(DebugPanels, ReadTheFrameResultAndCopeWithNone) {
+  ImGuiScope scope;
+  UiHost host;
+  BookFrame f;
+  for (const auto& panel : host.panels()) f.state.panel_open[panel->title()] = true;
+  FrameReport& report = f.result.lanes.front().report;
+  report.checked = true;
+  report.reference = "brute";
+  for (int k = 0; k < 8; ++k) report.violations.push_back(Violation{0, Invariant::AEqualsR, Pair{k, k + 1}, {1, 2}, {3, 4}, "missing from A"});
+  report.broken[0] = 8;
+  f.state.book_numbering = true;
+  EXPECT_EQ(violation_line(report.violations[2], true), "A==R: (3, 4) missing from A, cells (2,3) (4,5)");
+  EXPECT_EQ(violation_line(report.violations[2], false), "A==R: (2, 3) missing from A, cells (1,2) (3,4)");
+  EXPECT_NO_THROW(run_frame(host, f));
+  f.sim.frame = nullptr;  // nothing loaded
+  f.sim.elements = nullptr;
+  f.sim.trace.reset();
+  EXPECT_EQ(f.sim.frame_number(), 0);
+  EXPECT_EQ(f.sim.grid(), nullptr);
+  EXPECT_EQ(f.sim.report(), nullptr);
+  EXPECT_NO_THROW(run_frame(host, f));
 }
 
 TEST(CameraFollow, KeepsAPointInsideTheFreeView) {

@@ -23,7 +23,8 @@ using ImGuiContextScope = testui::ImGuiScope;
 struct World {
   Elements elements = make_elements_2d((Eigen::ArrayXd(3) << 1, 3, 5).finished(), (Eigen::ArrayXd(3) << 1, 1, 1).finished(),
                                        (Eigen::ArrayXd(3) << 0.9, 0.9, 0.5).finished());
-  Grid grid;
+  FrameResult result;
+  Grid& grid = result.lanes.front().grid;
   SimView sim;
   UiState state;
   UiRequests requests;
@@ -34,7 +35,7 @@ struct World {
     grid.n[0] = 3;
     grid.n[1] = 1;
     sim.elements = &elements;
-    sim.grid = &grid;
+    sim.frame = &result;
     sim.algorithms = {"brute", "nbs", "screen"};
     sim.algorithm = "nbs";
     camera.set_viewport(1280, 720);

@@ -72,7 +72,7 @@ TEST(StepperSession, RecordsOnlyAPausedFrameAndWordsEventsAsTheBook) {
   EXPECT_TRUE(tests.front().contact);
 
   // The next frame keeps the place in the sequence.
-  f.sim.frame = 1;
+  f.result.frame = 1;
   s.update(f.traced(), 0, 3);
   EXPECT_EQ(s.frame(), 1);
   EXPECT_EQ(s.stepper().position(), 20u);
@@ -166,7 +166,7 @@ TEST(StepperSession, SaysWhyNothingCanBeSteppedInsteadOfThrowing) {
   }
   const Elements many = testdata::make_layout(testdata::Layout::Loose, kMaxTracedElements + 1, 2, 1);
   f.sim.elements = &many;
-  f.sim.grid = nullptr;
+  f.sim.frame = nullptr;  // no frame result: no grid to pin
   f.sim.algorithm = "nbs";
   StepperSession s;
   s.capture(f.traced());
