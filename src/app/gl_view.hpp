@@ -96,9 +96,7 @@ class GlView {
   // The Scaling panel's background run (owned here; cancelled when the panel closes).
   [[nodiscard]] ScalingJob& scaling() { return *scaling_; }
   // Where the last frame's time went (overlays, GL submit, panels, traced detection), in ms.
-  struct Cost {
-    double trace_ms = 0, overlay_ms = 0, render_ms = 0, ui_ms = 0;
-  };
+  using Cost = ui::DrawTimings;  // the window's one timings type (its frame_ms: the panels' copy only)
   [[nodiscard]] const Cost& last_cost() const { return cost_; }
 
  private:

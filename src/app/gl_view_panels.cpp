@@ -56,11 +56,8 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
                                      : "Open the Stepper (View menu) to see the operation that decided this pair.";
   sim.scene_insets = host_.insets(state_);
   sim.hide_timings = hide_timings_;
+  sim.drawing = cost_;  // its ui_ms is last frame's: this one is being measured
   sim.drawing.physics_overlapped = loop.source().physics_overlapped();
-  sim.drawing.trace_ms = cost_.trace_ms;
-  sim.drawing.overlay_ms = cost_.overlay_ms;
-  sim.drawing.render_ms = cost_.render_ms;
-  sim.drawing.ui_ms = cost_.ui_ms;  // last frame's: this one is being measured
   sim.drawing.frame_ms = session.frame_ms;
   sim.fps = session.fps;
   sim.frame_history_ms = frame_history_;
