@@ -59,10 +59,13 @@ struct SimView {
   double time_step = 1.0 / 60.0;
   double speed = 1.0;
 
+  // The shown frame's source (the FrameResult holds no elements).
   std::int64_t bodies = 0;
   const Elements* elements = nullptr;
   const std::vector<TracedList>* lists = nullptr;  // only while the list overlay is on
-  std::shared_ptr<const FrameTrace> trace;  // this frame's traced detection, when the overlay or the stepper asked
+  // The frame's FrameResult::trace, handed only when the lists overlay or the stepper asked for it
+  // this frame (null otherwise; the stepper then asks for the next frame's, StepperSession::wants_trace).
+  std::shared_ptr<const FrameTrace> trace;
   std::size_t detector_bytes = 0;  // the chosen detector's own arrays
 
   std::string fault_name;                    // an injected fault ("" for none): a banner says so
