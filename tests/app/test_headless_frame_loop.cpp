@@ -9,6 +9,7 @@
 #include "app/frame_loop.hpp"
 #include "core/brute.hpp"
 #include "core/error.hpp"
+#include "io/recording.hpp"
 #include "io/scene_json.hpp"
 #include "physics/box2d_detector.hpp"
 
@@ -83,6 +84,38 @@ TEST(FrameLoop, GenerationCountsEveryChangeOfTheShownFrame) {
   EXPECT_EQ(loop.change().frame, 0);
   loop.show_frame(0);
   EXPECT_EQ(loop.change().generation, g) << "nothing happened";
+}
+
+// A frame whose detection throws is not published: the views stay on the last whole frame. A load
+// whose first detection threw is carried by the next change published, so no view misses it.
+TEST(FrameLoop, AChangeIsPublishedOnlyOnceTheFrameIsDetected) {
+  using Kind = FrameChange::Kind;
+  // Two recorded frames; the second spreads its elements past any grid's cell limit at cell size 1.
+  Recording rec;
+  rec.path = "spread.nbsrec";
+  rec.grid.cell_size = 1.0;
+  RecordedFrame near, far;
+  far.number = 1;
+  far.time = 0.1;
+  near.elements.push_back(0, 0, 0, 0.25);
+  near.elements.push_back(2, 0, 0, 0.25);
+  far.elements.push_back(0, 0, 0, 0.25);
+  far.elements.push_back(1e12, 0, 0, 0.25);
+  rec.frames = {near, far, near};
+  FrameLoop loop;
+  loop.load_recording(rec);
+  const FrameChange loaded = loop.change();
+  EXPECT_EQ(loaded.kind, Kind::loaded);
+  EXPECT_THROW(loop.step(), Error);
+  EXPECT_EQ(loop.change().generation, loaded.generation) << "the frame that could not be detected";
+  // Starting from the far frame: the load's own detection throws; the next change carries the load.
+  rec.frames = {far, near};
+  EXPECT_THROW(loop.load_recording(rec), Error);
+  EXPECT_EQ(loop.change().generation, loaded.generation);
+  loop.step();
+  EXPECT_EQ(loop.change().kind, Kind::stepped);
+  EXPECT_EQ(loop.change().generation, loaded.generation + 1);
+  EXPECT_EQ(loop.change().loaded_at, loop.change().generation) << "a new source, to the views";
 }
 
 TEST(FrameLoop, EveryFrameIsConsistent) {
