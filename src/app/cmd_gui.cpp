@@ -111,7 +111,7 @@ int run_without_display(GuiOptions o, FrameLoop& loop, const std::string& scene_
       stopped = e.what();  // the last good frame stays: its picture shows the line
       break;
     }
-    view->after_step(loop);
+    view->follow(loop);  // each frame its trail point and flash fade
     failed = failed || (loop.result().report().checked && !loop.result().report().ok());
   }
   if (!stopped.empty()) {
@@ -124,7 +124,7 @@ int run_without_display(GuiOptions o, FrameLoop& loop, const std::string& scene_
   }
   for (std::int64_t i = 0; i < o.back; ++i) {
     step_back_for_flag(loop);
-    view->on_rewound(loop);
+    view->follow(loop);
   }
   const std::string summary = view->write_screenshot(loop);
   // Said once it worked: a refused --gl or screenshot path is then the only line on stderr.
@@ -196,7 +196,7 @@ void play(FrameLoop& loop, GlView& view, Session& session, double& owed_steps, b
         owed_steps = 0;
         break;
       }
-      view.on_frame_shown(loop);
+      view.follow(loop);  // each frame shown its own trail and flashes, however many this UI frame
       continue;
     }
     if (!step_forwards(loop, view, session)) {
@@ -236,7 +236,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   if (o.history_mb) view.state().history_budget_mb = *o.history_mb;
   else if (settings != nullptr) view.state().history_budget_mb = settings->history_mb;
   loop.history().set_budget(static_cast<std::size_t>(view.state().history_budget_mb) << 20);
-  view.on_scene_loaded(loop);
+  view.follow(loop);  // the scene fitted, before the restored camera replaces the fit
   if (settings != nullptr) ui::restore_camera(*settings, absolute_path(session.scene_path), view.camera());
   if (!stopped.empty()) view.state().panel_open[kScenesPanel] = true;  // where the line is shown
 
@@ -278,8 +278,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
         // A world that stops is shown as the interactive window shows it (message, paused); the
         // screenshot is still taken, then the error ends the run (exit 2).
         try {
-          loop.step();
-          view.after_step(loop);
+          loop.step();  // (frame() follows it)
           if (rendered < *o.frames) loop.begin_step();
         } catch (const Error& e) {
           world_error = e.what();
@@ -291,7 +290,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       } else if (rendered > *o.frames && rendered <= scripted_frames) {
         const auto t0 = Clock::now();
         step_back_for_flag(loop);
-        view.on_frame_shown(loop);
+        view.follow(loop);  // here rather than in frame(): going back's time includes the trail rebuilt
         times.sum_back_show += ms_since(t0);
       }
     } else {
@@ -299,8 +298,9 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       const bool adopted = loop.source().step_pending();
       if (adopted && !step_forwards(loop, view, session)) owed_steps = 0;
       apply_requests(requests, loop, view, session);
+      view.follow(loop);  // what the requests did, before play() steps on
       if (loop.resume().active()) {
-        continue_resume(loop, view, session);
+        continue_resume(loop, session);
       } else if (!session.paused) {
         play(loop, view, session, owed_steps, adopted);
       }

@@ -400,7 +400,7 @@ int run_headless_loop(const HeadlessOptions& o) {
       check_interrupt();
       recorder->write_frame(loop.source().frame(), loop.source().time(), loop.source().elements());
     }
-    if (view) view->after_step(loop);
+    if (view) view->follow(loop);  // each frame its trail point and flash fade
     progress.update(k + 1);
     if (o.rewind && !rewound) {
       if (loop.source().frame() == o.rewind->to) save_at_to();
@@ -420,7 +420,7 @@ int run_headless_loop(const HeadlessOptions& o) {
       if (writer) writer->back_to(at_to->mark);
       rewound = true;
       k = o.rewind->to - 1;  // the frames after TO run again
-      if (view) view->on_rewound(loop);
+      if (view) view->follow(loop);  // back at TO before the frames after it run again
     }
   }
   progress.finish();
@@ -435,7 +435,7 @@ int run_headless_loop(const HeadlessOptions& o) {
     const auto t0 = Clock::now();
     step_back_for_flag(loop);
     back_ms += ms_since(t0);
-    if (view) view->on_rewound(loop);
+    if (view) view->follow(loop);
   }
   if (o.violation > 0) go_to_violation(loop, o.violation, view.get());
   std::string screenshot_line;

@@ -42,7 +42,10 @@ void FrameLoop::step() {
   if (m.resume.active()) return;
   if (m.kept) {
     // A past frame: the next one is the run's own, kept (or the live one).
-    if (const auto next = history_.neighbour(1)) show_frame(*next);
+    if (const auto next = history_.neighbour(1)) {
+      show_frame(*next);
+      m.change.kind = FrameChange::Kind::stepped;  // forwards through the run's own frames: a step, to the views
+    }
     return;
   }
   if (!m.loaded() || !m.source().can_step()) return;
@@ -51,7 +54,7 @@ void FrameLoop::step() {
   if (m.live) m.watch_physics();
   m.set_physics_ms(m.live ? m.live->step() : m.replay->step());  // a recorded frame was read with the file: 0
   m.pipeline.remember_previous(m.frame_number(), std::move(previous));
-  m.detect_and_check();
+  m.detect_and_check(FrameChange::Kind::stepped);
 }
 
 void FrameLoop::redetect() { impl_->redetect(); }
@@ -81,7 +84,7 @@ void FrameLoop::show_frame(std::int64_t frame) {
     m.kept = std::make_unique<KeptWorldFrame>(m.live->world(), m.history.state(*m.history.find(frame)));
   }
   m.set_physics_ms(physics_ms);
-  m.detect_and_check();
+  m.detect_and_check(FrameChange::Kind::shown);
 }
 
 bool FrameLoop::step_back() {
@@ -93,7 +96,7 @@ bool FrameLoop::step_back() {
 
 // ---- the parts -----------------------------------------------------------------------------
 
-std::uint64_t FrameLoop::generation() const { return impl_->generation; }
+const FrameChange& FrameLoop::change() const { return impl_->change; }
 const FrameResult& FrameLoop::result() const { return impl_->pipeline.result(); }
 const LoopSource& FrameLoop::source() const { return source_; }
 LoopPipeline& FrameLoop::pipeline() { return pipeline_; }

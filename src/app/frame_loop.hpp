@@ -67,6 +67,25 @@ struct FrameLoopOptions {
   bool log_violations = true;
 };
 
+// What the loop last did to the frame shown, with a counter: views compare it with the generation
+// they last followed and derive their trails, flashes and camera from it (GlView::follow) instead of
+// being told. Published once the frame is detected and checked (a step whose detection throws
+// publishes nothing: the picture stays on the last whole frame).
+struct FrameChange {
+  enum class Kind {
+    none,        // nothing yet (an empty loop, or a world that stopped at load)
+    loaded,      // a new source: load_scene, load_recording, restart
+    stepped,     // a step forwards (live, recorded, an adopted begin_step, or the next kept frame)
+    shown,       // another frame of the history: show_frame, step_back, a resume that arrived
+    redetected,  // the same frame detected again (algorithm, fault, checks, redetect)
+  };
+  std::uint64_t generation = 0;  // bumped by every change
+  Kind kind = Kind::none;        // the latest change
+  std::int64_t frame = 0;        // the frame shown after it
+  std::uint64_t loaded_at = 0;   // the generation of the last load: a view behind it missed a new source
+  std::uint64_t moved_at = 0;    // the generation that last moved the frame shown (all kinds but redetected)
+};
+
 // Coordinates one run: loads, steps, travels in time, and hands out its parts (app/frame_loop_parts.hpp):
 // source() the frame shown, pipeline() what detects and checks it, result() what was found, history()
 // the run's frames, resume() and drag() the live world's.
@@ -111,10 +130,9 @@ class FrameLoop {
   bool step_back();
 
   // ---- the parts ----
-  // Bumped whenever the frame shown or what was found in it changes (load, restart, step, a past
-  // frame shown, redetect or a configuration change, a resume's arrival): views compare it with the
-  // last one they drew, and the frame number with theirs (a jump that is not +1 starts trails again).
-  [[nodiscard]] std::uint64_t generation() const;
+  // What changed last and its generation (bumped by load, restart, step, a past frame shown, a
+  // resume's arrival, redetect or a configuration change): views follow it instead of being told.
+  [[nodiscard]] const FrameChange& change() const;
   // Everything the pipeline found in the frame shown (check/frame_result.hpp): hash, each lane's
   // pairs, grid, cells and report, the check's sets R, F, T, G.
   [[nodiscard]] const FrameResult& result() const;

@@ -100,7 +100,7 @@ bool LoopResume::advance(double budget_ms) {
   m.live->release_drag();  // nobody holds the mouse now; recorded, so a later resume replays it too
   m.pipeline.remember_previous(k, m.resume.previous_elements());
   m.set_physics_ms(0);
-  m.detect_and_check();
+  m.detect_and_check(FrameChange::Kind::shown);
   return true;
 }
 

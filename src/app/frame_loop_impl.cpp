@@ -13,8 +13,8 @@ FrameLoopState::FrameLoopState(FrameLoopOptions o)
 }
 FrameLoopState::~FrameLoopState() { wait_for_worker(); }
 
-void FrameLoopState::detect_and_check() {
-  ++generation;  // every change of the shown frame comes through here: load, restart, step, show, redetect, resume
+void FrameLoopState::detect_and_check(FrameChange::Kind kind) {
+  // Every change of the shown frame comes through here: load, restart, step, show, redetect, resume.
   const std::string what =
       "detection (" + pipeline.options().algorithm + ") and the check of " + grouped(now().size()) + " elements";
   watch.next_phase(frame_number(), [what] { return what; });
@@ -27,11 +27,20 @@ void FrameLoopState::detect_and_check() {
   in.where = scene.path + ": frame " + std::to_string(frame_number()) + ": ";
   pipeline.run(in);
   record_frame();
+  // Published only now: a detection that threw leaves the views on the last whole frame.
+  // (A redetect after such a throw shows a frame the views have not followed: it moved it.)
+  const bool moved = kind != FrameChange::Kind::redetected || frame_number() != change.frame;
+  ++change.generation;
+  change.kind = kind;
+  change.frame = frame_number();
+  if (kind == FrameChange::Kind::loaded || load_unpublished) change.loaded_at = change.generation;
+  load_unpublished = false;
+  if (moved) change.moved_at = change.generation;
 }
 
 void FrameLoopState::redetect() {
   if (settle()) return;  // a step in flight is adopted, and so detected with what is set now
-  if (loaded()) detect_and_check();
+  if (loaded()) detect_and_check(FrameChange::Kind::redetected);
 }
 
 void FrameLoopState::record_frame() {
@@ -163,7 +172,8 @@ void FrameLoopState::start() {
     }
   }
   pipeline.remember_previous(frame_number(), now());
-  detect_and_check();
+  load_unpublished = true;  // until a detection publishes it (this one may throw)
+  detect_and_check(FrameChange::Kind::loaded);
 }
 
 Elements FrameLoopState::elements_before(std::int64_t frame) const {

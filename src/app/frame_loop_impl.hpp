@@ -42,7 +42,8 @@ struct FrameLoopState {
   // ---- resume ----
   Resume resume;  // a fresh world re-simulated to the past frame shown (physics/resume.hpp)
 
-  std::uint64_t generation = 0;     // bumped whenever the shown frame (or what was found in it) changes
+  FrameChange change;               // what the last detect_and_check() published (FrameLoop::change)
+  bool load_unpublished = false;    // a new source whose first detection threw: the next change carries it
   bool physics_overlapped = false;  // the current frame's physics ran on the worker (frame_loop_overlap.cpp)
 
   // The slow-frame note (app/frame_watch.hpp). Declared last: its thread, which may read the world's
@@ -92,8 +93,9 @@ struct FrameLoopState {
   // The live world's frame: the newest of the run (the one shown while a step is pending).
   [[nodiscard]] std::int64_t live_frame() const { return live->newest_frame(); }
 
-  // The shown frame through the pipeline (lanes, faults, check), then into the history.
-  void detect_and_check();
+  // The shown frame through the pipeline (lanes, faults, check), then into the history; then
+  // published as a change of `kind` (a redetect that finds another frame shown moved it too).
+  void detect_and_check(FrameChange::Kind kind);
   // The current frame detected and checked again (a step in flight is adopted instead).
   void redetect();
   // The shown frame's summary into the history (a new live frame is pushed with its kept state; a

@@ -25,7 +25,7 @@ bool FrameLoopState::settle() {
   const double physics_ms = live->finish_step();  // rethrows the step's Error; the future is spent either way
   set_physics_ms(physics_ms);
   physics_overlapped = true;
-  detect_and_check();
+  detect_and_check(FrameChange::Kind::stepped);
   return true;
 }
 

@@ -1,4 +1,4 @@
-// Index: scene files | GlView: set-up, scene load, per step, frame. The --overlays and --panels
+// Index: scene files | GlView: set-up, following the loop's changes, frame. The --overlays and --panels
 // specs are parsed in view_spec.hpp; the lists overlay's part is in gl_view_lists.cpp; the bodies
 // and check sets drawn, in gl_view_scene.cpp.
 #include "app/gl_view.hpp"
@@ -128,7 +128,26 @@ void GlView::check_step() const {
                 " operations of frame " + std::to_string(s.frame()) + " (" + s.algorithm() + ")");
 }
 
-void GlView::on_scene_loaded(const FrameLoop& loop, bool fit) {
+void GlView::follow(const FrameLoop& loop) {
+  const FrameChange& c = loop.change();
+  if (followed_ && *followed_ == c.generation) return;
+  const bool new_source = !followed_ || c.loaded_at > *followed_;
+  const bool one_change = followed_ && c.generation == *followed_ + 1;
+  const bool moved = followed_ && c.moved_at > *followed_;
+  followed_ = c.generation;
+  if (new_source) {
+    // The camera fits a scene it had not shown (or the first that runs); a restart keeps it.
+    source_loaded(loop, !showed_scene_ || loaded_scene_ != loop.source().scene().path);
+    if (c.moved_at > c.loaded_at) frame_shown(loop);  // steps missed after the load: a jump
+  } else if (moved && one_change && c.kind == FrameChange::Kind::stepped) {
+    stepped(loop);
+  } else if (moved) {
+    frame_shown(loop);  // a frame of the history, or several changes at once: as a jump unless a neighbour
+  }
+  // Only redetected: the same frame, nothing seen changes (the lists follow the trace, update_lists).
+}
+
+void GlView::source_loaded(const FrameLoop& loop, bool fit) {
   // Element k of another scene is another body: the selection is kept across a restart only (and
   // for the first scene, where --select chose it).
   if (!loaded_scene_.empty() && loaded_scene_ != loop.source().scene().path) {
@@ -136,6 +155,7 @@ void GlView::on_scene_loaded(const FrameLoop& loop, bool fit) {
     stepper_->focus_element = -1;
   }
   loaded_scene_ = loop.source().scene().path;
+  showed_scene_ = loop.source().has_scene();
   trails_.clear();
   trail_element_ = state_.selected;
   previous_cells_ = loop.result().selected().cells;
@@ -156,7 +176,7 @@ void GlView::on_scene_loaded(const FrameLoop& loop, bool fit) {
   }
 }
 
-void GlView::after_step(const FrameLoop& loop) {
+void GlView::stepped(const FrameLoop& loop) {
   const Elements& e = loop.source().elements();
   // Trails follow the selected element; a new selection starts a new trail.
   if (state_.selected != trail_element_) {
@@ -180,13 +200,13 @@ void GlView::after_step(const FrameLoop& loop) {
   previous_frame_ = loop.source().frame();
 }
 
-void GlView::on_frame_shown(const FrameLoop& loop) {
+void GlView::frame_shown(const FrameLoop& loop) {
   // A neighbouring frame flashes as a step does; a jump starts the flashes again.
   if (std::llabs(loop.source().frame() - previous_frame_) != 1) {
     std::fill(flash_.begin(), flash_.end(), 0.0f);
     previous_cells_ = loop.result().selected().cells;
   }
-  after_step(loop);
+  stepped(loop);
   rebuild_trail(loop);
 }
 
@@ -202,6 +222,7 @@ void GlView::rebuild_trail(const FrameLoop& loop) {
 }
 
 void GlView::focus_violation(const FrameLoop& loop, const Violation& v, bool open_stepper) {
+  follow(loop);  // the change that brought this frame (e.g. it was just shown) before the focus
   const Elements& e = loop.source().elements();
   if (v.pair.i < 0 || v.pair.j < 0 || v.pair.i >= e.size() || v.pair.j >= e.size()) return;
   state_.selected = v.pair.i;
@@ -242,6 +263,7 @@ bool GlView::stepper_panels_open() const {
 
 ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_input, float dt) {
   const auto frame_start = Clock::now();
+  follow(loop);
   camera_.set_viewport(context_.width(), context_.height());
   const Elements& e = loop.source().elements();
   if (state_.selected >= e.size()) state_.selected = -1;

@@ -2,7 +2,7 @@
 // scene and its overlays through the renderer, then the ImGui panels, from one FrameLoop. The two
 // loops differ only in where the pixels go and whether input is live.
 //
-// Index: Session (what the surrounding loop knows) | GlView (scene load, per-step bookkeeping, frame).
+// Index: Session (what the surrounding loop knows) | GlView (following the loop's changes, frame).
 #pragma once
 #include <chrono>
 #include <memory>
@@ -67,13 +67,13 @@ class GlView {
   // Error("--step: ...") when --step asked for more operations than the shown frame's detection
   // has, or its algorithm records none (call after frame(), before the screenshot).
   void check_step() const;
-  // A scene was (re)loaded: forget trails, flashes and lists; with `fit`, point the camera at it.
-  void on_scene_loaded(const FrameLoop& loop, bool fit = true);
-  // Bookkeeping after each FrameLoop::step(): trails of the selection, cell-change flashes.
-  void after_step(const FrameLoop& loop);
-  // The loop shows another frame of its history (a jump, a rewind, a resume): the trail is rebuilt
-  // from the kept frames, flashes continue only from the neighbouring frame.
-  void on_frame_shown(const FrameLoop& loop);
+  // Catches up with what the loop did since the last call (FrameLoop::change): a new source forgets
+  // trails, flashes and lists (the camera fits a scene this view had not shown; a restart keeps it);
+  // a step adds a trail point and fades the flashes; another frame shown, or changes missed between
+  // two calls, rebuild the trail from the history and flash only from a neighbouring frame; a
+  // redetect changes nothing seen. Nothing changed: no-op. frame() and focus_violation() call it
+  // first; a loop that renders after several steps calls it after each, so each adds its point.
+  void follow(const FrameLoop& loop);
   // Shows `violation` (of the loop's current frame) as choosing it in the Violations panel does: both
   // elements selected, the camera on them, the Violations panel open; with `open_stepper` (or the
   // stepper already open) the stepper moves to the operation that decided the pair.
@@ -93,6 +93,10 @@ class GlView {
   // The stepper panels' session (its trace is the frame loop's) and the lists the overlay drew last.
   [[nodiscard]] ui::StepperSession& stepper() { return *stepper_; }
   [[nodiscard]] const std::vector<TracedList>& lists() const { return lists_; }
+  // The selection's trail and each element's cell-change flash (1 on the frame its cell changed,
+  // then fading each step), as the next frame() draws them.
+  [[nodiscard]] const std::vector<std::vector<render::Vec2>>& trails() const { return trails_; }
+  [[nodiscard]] const std::vector<float>& flashes() const { return flash_; }
   // The Scaling panel's background run (owned here; cancelled when the panel closes).
   [[nodiscard]] ScalingJob& scaling() { return *scaling_; }
   // Where the last frame's time went (overlays, GL submit, panels, traced detection), in ms.
@@ -109,6 +113,10 @@ class GlView {
   void fill_panels_view(const FrameLoop& loop, const Session& session, const std::shared_ptr<const FrameTrace>& trace,
                         ui::SimView& sim);
   void fit_camera(const FrameLoop& loop);
+  // follow()'s cases: a new source (with `fit`, the camera on it), one step forwards, another frame shown.
+  void source_loaded(const FrameLoop& loop, bool fit);
+  void stepped(const FrameLoop& loop);
+  void frame_shown(const FrameLoop& loop);
   void rebuild_trail(const FrameLoop& loop);
   // True when the panel titled `title` is open.
   [[nodiscard]] bool panel_open(std::string_view title) const;
@@ -147,8 +155,10 @@ class GlView {
   std::size_t lists_upto_ = 0;       // the events applied (SIZE_MAX: all)
   std::chrono::steady_clock::time_point lists_built_at_;  // the last rebuild (throttled while playing)
   std::string loaded_scene_;         // the scene last loaded: a selection survives a restart, not a new scene
+  bool showed_scene_ = false;        // the last source followed had a scene (not a world stopped at load)
+  std::optional<std::uint64_t> followed_;  // the loop's generation last followed (none: never)
 
-  // Trails and flashes, advanced per step.
+  // Trails and flashes, advanced per change followed.
   ElementId trail_element_ = -1;
   std::vector<std::vector<render::Vec2>> trails_;
   std::vector<CellIndex> previous_cells_;

@@ -17,7 +17,6 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
   auto show = [&](std::int64_t frame) {
     attempt([&] {
       loop.show_frame(frame);
-      view.on_frame_shown(loop);
     });
     session.paused = true;
   };
@@ -27,7 +26,6 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
     // Playing a recording that has ended starts it again.
     if (!session.paused && loop.source().at_end()) {
       attempt([&] { loop.restart(); });
-      view.on_scene_loaded(loop, false);
     }
   }
   if (r.play) {
@@ -46,7 +44,6 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
     attempt([&] {
       load_scene_file(loop, *r.scene);
       session.scene_path = *r.scene;
-      view.on_scene_loaded(loop);
       new_run();
     });
   }
@@ -60,16 +57,14 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
       Scene s = loop.source().scene();
       s.time_step = *r.time_step;
       loop.load_scene(s);
-      view.on_scene_loaded(loop, false);
       new_run();
     });
   }
   if (r.restart) {
     // A world that stopped at load is built again (and says so again when it stops again); the
-    // camera then fits the scene it had not seen.
+    // view then fits the scene it had not shown (GlView::follow).
     const bool had_scene = loop.source().has_scene();
     attempt([&] { had_scene ? loop.restart() : load_scene_file(loop, session.scene_path); });
-    view.on_scene_loaded(loop, !had_scene && loop.source().has_scene());
     new_run();
   }
   if (r.history_budget_mb) loop.history().set_budget(static_cast<std::size_t>(*r.history_budget_mb) << 20);
@@ -86,13 +81,11 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
       // Forward from the newest frame: one more step, as O does.
       session.paused = true;
       attempt([&] { loop.step(); });
-      view.after_step(loop);
     }
   }
   if (r.step_once && !loop.resume().active()) {
     session.paused = true;
     attempt([&] { loop.step(); });
-    view.after_step(loop);
   }
   if (r.go_to_violation && !loop.resume().active()) {
     const auto& listed = loop.history().violation_log().listed();
@@ -121,11 +114,11 @@ bool step_forwards(FrameLoop& loop, GlView& view, Session& session) {
     session.paused = true;
     return false;
   }
-  view.after_step(loop);
+  view.follow(loop);  // each step its trail point and flash fade, however many this UI frame
   return true;
 }
 
-void continue_resume(FrameLoop& loop, GlView& view, Session& session) {
+void continue_resume(FrameLoop& loop, Session& session) {
   try {
     if (!loop.resume().advance(25.0)) return;
   } catch (const Error& e) {
@@ -138,7 +131,6 @@ void continue_resume(FrameLoop& loop, GlView& view, Session& session) {
                             ? "resumed at " + std::to_string(k) + ": re-simulation DIFFERS from the kept frames from frame " +
                                   std::to_string(*loop.resume().divergence())
                             : "resumed at " + std::to_string(k) + " (re-simulated frames matched the kept ones)";
-  view.on_frame_shown(loop);
   session.paused = false;
   session.play_direction = 1;
 }

@@ -8,12 +8,14 @@
 
 namespace nbscope {
 
-// Applies the UI frame's requests, at the top of the next frame (once a step in flight was adopted).
+// Applies the UI frame's requests, at the top of the next frame (once a step in flight was adopted);
+// the view learns what they did from the loop (GlView::follow), not from here.
 void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Session& session);
-// One step forwards (adopting the step begun last frame, if any); false, paused, when it failed.
+// One step forwards (adopting the step begun last frame, if any), followed by the view; false,
+// paused, when it failed.
 bool step_forwards(FrameLoop& loop, GlView& view, Session& session);
 // One slice of a resume in progress (the window stays responsive); when it arrives the simulation
 // plays on from the resumed frame.
-void continue_resume(FrameLoop& loop, GlView& view, Session& session);
+void continue_resume(FrameLoop& loop, Session& session);
 
 }  // namespace nbscope

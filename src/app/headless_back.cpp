@@ -25,10 +25,7 @@ void go_to_violation(FrameLoop& loop, std::int64_t n, HeadlessView* view) {
   if (!loop.history().can_show(v.frame))
     throw Error("--violation: its frame " + std::to_string(v.frame) + " is no longer kept (a larger --history-mb keeps more)");
   loop.show_frame(v.frame);
-  if (view != nullptr) {
-    view->on_rewound(loop);
-    view->focus_violation(loop, v);
-  }
+  if (view != nullptr) view->focus_violation(loop, v);  // (follows the frame shown first)
 }
 
 void rewind_for_flag(FrameLoop& loop, const HeadlessOptions::Rewind& r, RunReport& report) {

@@ -22,11 +22,10 @@ class OffscreenView final : public HeadlessView {
     session_.scene_path = loop.source().scene().path;
     session_.scene_files = bundled_scene_files();
     if (loop.source().has_scene()) view_.check_selection(loop);  // (a world that stopped at load has no elements to select)
-    view_.on_scene_loaded(loop);
+    view_.follow(loop);  // the scene as loaded: the camera fits it
   }
 
-  void after_step(const FrameLoop& loop) override { view_.after_step(loop); }
-  void on_rewound(const FrameLoop& loop) override { view_.on_frame_shown(loop); }
+  void follow(const FrameLoop& loop) override { view_.follow(loop); }
   void focus_violation(const FrameLoop& loop, const Violation& violation) override {
     view_.focus_violation(loop, violation);
   }

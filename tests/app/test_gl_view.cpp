@@ -1,8 +1,10 @@
 // The window's view under OSMesa, driven as the window drives it: the stepper and the lists overlay
 // hold the same trace of a frame, the overlay shows the lists as they stand at the stepper's
-// operation (and the finished lists at the end), and a selection survives a restart but not a
-// change of scene.
+// operation (and the finished lists at the end), a selection survives a restart but not a change
+// of scene, and the view follows the loop's changes (GlView::follow) without being told of each.
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 #include "app/gl_view.hpp"
 #include "physics/box2d_detector.hpp"
@@ -29,7 +31,7 @@ struct ViewRig {
     session.scene_path = loop.source().scene().path;
     session.paused = true;
     view = std::make_unique<GlView>(*context, nullptr, options);
-    view->on_scene_loaded(loop);
+    view->follow(loop);
   }
   void frames(int n) {
     for (int k = 0; k < n; ++k) view->frame(loop, session, false, 1.0f / 60.0f);
@@ -96,11 +98,147 @@ TEST(GlView, ASelectionSurvivesARestartButNotAnotherScene) {
   EXPECT_EQ(rig.view->state().selected, 5) << "--select chose it for the first scene";
   rig.loop.step();
   rig.loop.restart();
-  rig.view->on_scene_loaded(rig.loop, false);
+  rig.view->follow(rig.loop);
   EXPECT_EQ(rig.view->state().selected, 5) << "a restart shows the same bodies";
   load_scene_file(rig.loop, scene("pile.json"));
-  rig.view->on_scene_loaded(rig.loop);
+  rig.view->follow(rig.loop);
   EXPECT_EQ(rig.view->state().selected, -1) << "element 5 of another scene is another body";
+}
+
+// Element k's position in the frame shown, as the trail keeps it.
+render::Vec2 position(const FrameLoop& loop, ElementId k) {
+  const Elements& e = loop.source().elements();
+  return {static_cast<float>(e.x[k]), static_cast<float>(e.y[k])};
+}
+
+bool any_flash(const GlView& view) {
+  return std::any_of(view.flashes().begin(), view.flashes().end(), [](float f) { return f > 0; });
+}
+
+// Followed after every step: one trail point a step, and the elements whose cell changed flash.
+TEST(GlViewFollow, EachStepFollowedAddsItsTrailPointAndFlashes) {
+  ViewOptions o;
+  o.select = 12;
+  ViewRig rig(o, "default.json");
+  EXPECT_TRUE(rig.view->trails().empty()) << "a new scene starts without a trail";
+  bool flashed = false;
+  for (int k = 1; k <= 20; ++k) {
+    rig.loop.step();
+    rig.view->follow(rig.loop);
+    ASSERT_EQ(rig.view->trails().size(), 1u);
+    ASSERT_EQ(rig.view->trails().front().size(), static_cast<std::size_t>(k)) << "one point a step";
+    EXPECT_EQ(rig.view->trails().front().back(), position(rig.loop, 12));
+    flashed = flashed || any_flash(*rig.view);
+  }
+  EXPECT_TRUE(flashed) << "20 frames of the default scene move some element to another cell";
+}
+
+// A view that missed changes (N steps, followed once at the end) still catches up: the trail comes
+// from the history, and the flashes start again as after a jump (no cell change is known).
+TEST(GlViewFollow, StepsFollowedOnlyAtTheEndGiveTheTrailFromTheHistoryAndNoFlashes) {
+  ViewOptions o;
+  o.select = 12;
+  ViewRig rig(o, "default.json");
+  std::vector<render::Vec2> path{position(rig.loop, 12)};
+  for (int k = 1; k <= 20; ++k) {
+    rig.loop.step();
+    path.push_back(position(rig.loop, 12));
+  }
+  rig.view->follow(rig.loop);
+  ASSERT_EQ(rig.view->trails().size(), 1u);
+  EXPECT_EQ(rig.view->trails().front(), path) << "frames 0..20 from the history";
+  EXPECT_FALSE(any_flash(*rig.view)) << "a jump starts the flashes again";
+  // A restart then steps, missed alike: the new run's trail only.
+  rig.loop.restart();
+  rig.loop.step();
+  rig.loop.step();
+  rig.view->follow(rig.loop);
+  ASSERT_EQ(rig.view->trails().size(), 1u);
+  EXPECT_EQ(rig.view->trails().front(), std::vector<render::Vec2>(path.begin(), path.begin() + 3));
+  EXPECT_FALSE(any_flash(*rig.view));
+}
+
+// Nothing changed since the last follow(): nothing moves, not even the flashes' fading; a redetect
+// (same frame) changes nothing seen either.
+TEST(GlViewFollow, NoChangeAndARedetectLeaveTrailsAndFlashesAlone) {
+  ViewOptions o;
+  o.select = 12;
+  ViewRig rig(o, "default.json");
+  for (int k = 0; k < 60 && !any_flash(*rig.view); ++k) {
+    rig.loop.step();
+    rig.view->follow(rig.loop);
+  }
+  ASSERT_TRUE(any_flash(*rig.view));
+  const std::vector<float> flashes = rig.view->flashes();
+  const auto trails = rig.view->trails();
+  rig.view->follow(rig.loop);
+  rig.frames(2);  // frame() follows too
+  EXPECT_EQ(rig.view->flashes(), flashes) << "no change: the flashes did not fade";
+  EXPECT_EQ(rig.view->trails(), trails);
+  rig.loop.redetect();
+  rig.loop.pipeline().set_algorithm("sort");
+  rig.view->follow(rig.loop);
+  EXPECT_EQ(rig.view->flashes(), flashes) << "the same frame detected again";
+  EXPECT_EQ(rig.view->trails(), trails);
+  // The next step fades them once.
+  rig.loop.step();
+  rig.view->follow(rig.loop);
+  for (std::size_t k = 0; k < flashes.size(); ++k) {
+    const float now = rig.view->flashes()[k];
+    if (flashes[k] > 0) {
+      EXPECT_TRUE(now == 1.0f || now < flashes[k]) << "element " << k << ": faded, or its cell changed again";
+    }
+  }
+  EXPECT_EQ(rig.view->trails().front().size(), trails.front().size() + 1);
+}
+
+// Going back one kept frame flashes from the neighbour; a jump starts the flashes again; either way
+// the trail is the history's up to the frame shown.
+TEST(GlViewFollow, AFrameShownRebuildsTheTrailFromTheHistory) {
+  ViewOptions o;
+  o.select = 12;
+  ViewRig rig(o, "default.json");
+  std::vector<render::Vec2> path{position(rig.loop, 12)};
+  for (int k = 1; k <= 30; ++k) {
+    rig.loop.step();
+    rig.view->follow(rig.loop);
+    path.push_back(position(rig.loop, 12));
+  }
+  rig.loop.show_frame(10);
+  rig.view->follow(rig.loop);
+  EXPECT_EQ(rig.view->trails().front(), std::vector<render::Vec2>(path.begin(), path.begin() + 11));
+  EXPECT_FALSE(any_flash(*rig.view)) << "a jump";
+  ASSERT_TRUE(rig.loop.step_back());
+  rig.view->follow(rig.loop);
+  EXPECT_EQ(rig.view->trails().front(), std::vector<render::Vec2>(path.begin(), path.begin() + 10));
+}
+
+// The camera is the view's to fit: a new scene is fitted, a restart (the same scene) keeps where
+// the user looked.
+TEST(GlViewFollow, ANewSceneFitsTheCameraARestartKeepsIt) {
+  ViewRig rig(ViewOptions{}, "default.json");
+  rig.frames(GlView::kSettleFrames);
+  const Eigen::Vector2d looked(3.25, -1.5);
+  rig.view->camera().set(looked, 7.0);
+  rig.loop.step();
+  rig.loop.restart();
+  rig.view->follow(rig.loop);
+  EXPECT_EQ(rig.view->camera().centre(), looked) << "a restart keeps the camera";
+  EXPECT_EQ(rig.view->camera().pixels_per_metre(), 7.0);
+  load_scene_file(rig.loop, scene("pile.json"));
+  rig.view->follow(rig.loop);
+  EXPECT_NE(rig.view->camera().pixels_per_metre(), 7.0) << "another scene is fitted";
+}
+
+// (One view at a time: each holds the ImGui context.)
+TEST(GlViewFollow, TheCameraOptionWinsOverTheFit) {
+  ViewOptions fixed;
+  fixed.camera = std::array<double, 3>{1.0, 2.0, 50.0};
+  ViewRig pinned(fixed, "default.json");
+  EXPECT_EQ(pinned.view->camera().pixels_per_metre(), 50.0) << "--camera over the fit";
+  load_scene_file(pinned.loop, scene("pile.json"));
+  pinned.view->follow(pinned.loop);
+  EXPECT_EQ(pinned.view->camera().pixels_per_metre(), 50.0) << "--camera over the fit of a new scene too";
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "app/frame_loop.hpp"
 #include "core/brute.hpp"
 #include "core/error.hpp"
+#include "io/recording.hpp"
 #include "io/scene_json.hpp"
 #include "physics/box2d_detector.hpp"
 
@@ -33,40 +34,88 @@ TEST(FrameLoop, EmptyUntilASceneIsLoaded) {
   EXPECT_FALSE(loop.drag().begin(0, 0));
 }
 
-// The generation moves whenever the frame shown (or what was found in it) changes, and only then:
-// the views derive trails, flashes and caches from it.
+// The generation moves whenever the frame shown (or what was found in it) changes, and only then,
+// with the kind of change: the views derive trails, flashes and the camera from it.
 TEST(FrameLoop, GenerationCountsEveryChangeOfTheShownFrame) {
   ASSERT_TRUE(kRegistered);
+  using Kind = FrameChange::Kind;
   FrameLoop loop;
-  const std::uint64_t empty = loop.generation();
+  const std::uint64_t empty = loop.change().generation;
+  EXPECT_EQ(loop.change().kind, Kind::none);
   load_scene_file(loop, scene("default"));
-  std::uint64_t g = loop.generation();
+  std::uint64_t g = loop.change().generation;
   EXPECT_GT(g, empty);
-  const auto moved = [&] {
-    const bool m = loop.generation() > g;
-    g = loop.generation();
+  EXPECT_EQ(loop.change().kind, Kind::loaded);
+  EXPECT_EQ(loop.change().loaded_at, g);
+  const auto moved = [&](Kind kind) {
+    const bool m = loop.change().generation == g + 1 && loop.change().kind == kind && loop.change().frame == loop.source().frame();
+    g = loop.change().generation;
     return m;
   };
   loop.step();
-  EXPECT_TRUE(moved()) << "step";
+  EXPECT_TRUE(moved(Kind::stepped)) << "step";
   loop.begin_step();
-  EXPECT_FALSE(moved()) << "a step begun shows the same frame";
+  EXPECT_EQ(loop.change().generation, g) << "a step begun shows the same frame";
   loop.step();
-  EXPECT_TRUE(moved()) << "the step adopted";
+  EXPECT_TRUE(moved(Kind::stepped)) << "the step adopted";
   EXPECT_EQ(loop.result().frame, 2);
   loop.show_frame(1);
-  EXPECT_TRUE(moved()) << "a past frame shown";
+  EXPECT_TRUE(moved(Kind::shown)) << "a past frame shown";
+  loop.step();
+  EXPECT_TRUE(moved(Kind::stepped)) << "forwards through the kept frames is a step";
+  EXPECT_TRUE(loop.step_back());
+  EXPECT_TRUE(moved(Kind::shown)) << "step_back";
   loop.resume().begin();
   while (!loop.resume().advance(1000)) {
   }
-  EXPECT_TRUE(moved()) << "resumed";
+  EXPECT_TRUE(moved(Kind::shown)) << "resumed";
+  EXPECT_EQ(loop.change().moved_at, g);
   loop.redetect();
-  EXPECT_TRUE(moved()) << "redetect";
+  EXPECT_TRUE(moved(Kind::redetected)) << "redetect";
   loop.pipeline().set_algorithm("sort");
-  EXPECT_TRUE(moved()) << "algorithm";
+  EXPECT_TRUE(moved(Kind::redetected)) << "algorithm";
+  EXPECT_EQ(loop.change().moved_at, g - 2) << "a redetect does not move the frame shown";
+  loop.begin_step();
+  loop.redetect();
+  EXPECT_TRUE(moved(Kind::stepped)) << "a redetect adopts the step in flight";
   loop.restart();
-  EXPECT_TRUE(moved()) << "restart";
-  EXPECT_FALSE(moved()) << "nothing happened";
+  EXPECT_TRUE(moved(Kind::loaded)) << "restart";
+  EXPECT_EQ(loop.change().loaded_at, g);
+  EXPECT_EQ(loop.change().frame, 0);
+  loop.show_frame(0);
+  EXPECT_EQ(loop.change().generation, g) << "nothing happened";
+}
+
+// A frame whose detection throws is not published: the views stay on the last whole frame. A load
+// whose first detection threw is carried by the next change published, so no view misses it.
+TEST(FrameLoop, AChangeIsPublishedOnlyOnceTheFrameIsDetected) {
+  using Kind = FrameChange::Kind;
+  // Two recorded frames; the second spreads its elements past any grid's cell limit at cell size 1.
+  Recording rec;
+  rec.path = "spread.nbsrec";
+  rec.grid.cell_size = 1.0;
+  RecordedFrame near, far;
+  far.number = 1;
+  far.time = 0.1;
+  near.elements.push_back(0, 0, 0, 0.25);
+  near.elements.push_back(2, 0, 0, 0.25);
+  far.elements.push_back(0, 0, 0, 0.25);
+  far.elements.push_back(1e12, 0, 0, 0.25);
+  rec.frames = {near, far, near};
+  FrameLoop loop;
+  loop.load_recording(rec);
+  const FrameChange loaded = loop.change();
+  EXPECT_EQ(loaded.kind, Kind::loaded);
+  EXPECT_THROW(loop.step(), Error);
+  EXPECT_EQ(loop.change().generation, loaded.generation) << "the frame that could not be detected";
+  // Starting from the far frame: the load's own detection throws; the next change carries the load.
+  rec.frames = {far, near};
+  EXPECT_THROW(loop.load_recording(rec), Error);
+  EXPECT_EQ(loop.change().generation, loaded.generation);
+  loop.step();
+  EXPECT_EQ(loop.change().kind, Kind::stepped);
+  EXPECT_EQ(loop.change().generation, loaded.generation + 1);
+  EXPECT_EQ(loop.change().loaded_at, loop.change().generation) << "a new source, to the views";
 }
 
 TEST(FrameLoop, EveryFrameIsConsistent) {
