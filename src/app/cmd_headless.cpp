@@ -360,7 +360,7 @@ int run_headless_loop(const HeadlessOptions& o) {
       if (writer) writer->add_frame(r, f);
     };
     add(0, loop.result().report());
-    for (std::size_t r = 0; r < loop.pipeline().comparison_reports().size(); ++r) add(r + 1, loop.pipeline().comparison_reports()[r]);
+    for (std::size_t lane = 1; lane < loop.result().lanes.size(); ++lane) add(lane, loop.result().lanes[lane].report);
   };
   // --rewind FROM:TO: the report as it stood after frame TO (restored at FROM, as if the frames after
   // TO had not run), and the first pass's element hashes of frames TO+1..FROM to compare the second with.

@@ -65,7 +65,6 @@ void LoopPipeline::set_comparison_algorithms(const std::vector<std::string>& nam
   s_->redetect();
 }
 const std::vector<std::string>& LoopPipeline::comparison_algorithms() const { return s_->pipeline.comparison_algorithms(); }
-const std::vector<FrameReport>& LoopPipeline::comparison_reports() const { return s_->pipeline.comparison_reports(); }
 const Detector& LoopPipeline::detector() const { return s_->pipeline.detector(); }
 
 std::shared_ptr<const FrameTrace> LoopPipeline::frame_trace() {

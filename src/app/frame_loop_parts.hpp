@@ -97,8 +97,6 @@ class LoopPipeline {
   void set_comparison_algorithms(const std::vector<std::string>& names);
   // The comparison detectors, in the order given.
   [[nodiscard]] const std::vector<std::string>& comparison_algorithms() const;
-  // This frame's report of each comparison algorithm, in the order given.
-  [[nodiscard]] const std::vector<FrameReport>& comparison_reports() const;
   // The detector in use (for its name, own_bytes(), pseudocode()).
   [[nodiscard]] const Detector& detector() const;
   // The current detector's traced run on the elements it was given this frame (faults not

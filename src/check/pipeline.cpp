@@ -49,7 +49,6 @@ void Pipeline::set_comparison_algorithms(const std::vector<std::string>& names, 
     result_.lanes.emplace_back().algorithm = names[k];
   }
   comparison_names_ = names;
-  comparison_reports_.clear();
 }
 
 bool Pipeline::has_recorded_lane() const {
@@ -147,8 +146,6 @@ const FrameResult& Pipeline::run(const FrameInput& in) {
   }
   result_.hash = hash_elements(now);
   for (LaneResult& lane : result_.lanes) lane.report.hash = result_.hash;
-  comparison_reports_.clear();
-  for (std::size_t k = 1; k < result_.lanes.size(); ++k) comparison_reports_.push_back(result_.lanes[k].report);
   return result_;
 }
 

@@ -81,8 +81,6 @@ class Pipeline {
   const FrameResult& run(const FrameInput& in);
   // The last run's result.
   [[nodiscard]] const FrameResult& result() const { return result_; }
-  // Each comparison lane's report of the last run, in the order given.
-  [[nodiscard]] const std::vector<FrameReport>& comparison_reports() const { return comparison_reports_; }
   // Lane 0's traced run on what it was given this frame (`source` is the frame's, as at run()):
   // made on the first request and kept in the result until the next run.
   std::shared_ptr<const FrameTrace> trace(const FrameSource& source);
@@ -101,7 +99,6 @@ class Pipeline {
   DetectOptions detect_options_;
   std::vector<Lane> lanes_;                      // parallel to result_.lanes
   std::vector<std::string> comparison_names_;
-  std::vector<FrameReport> comparison_reports_;
   FrameChecker checker_;
   FrameResult result_;
   Elements stale_;               // the elements of the frame before stale_for_ (stale-positions fault)
