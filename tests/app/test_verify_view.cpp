@@ -114,7 +114,7 @@ TEST(PanelsView, TheSimViewPointsAtTheFrameLoopsOwnResult) {
   o.width = 800;
   o.height = 500;
   GlView view(*context, nullptr, o);
-  view.on_scene_loaded(loop);
+  view.follow(loop);
   const FrameResult* seen = nullptr;
   std::int64_t number = -1;
   view.host().add_panel(std::make_unique<FrameProbe>(&seen, &number));
