@@ -101,7 +101,10 @@ TEST(FrameLoop, AChangeIsPublishedOnlyOnceTheFrameIsDetected) {
   near.elements.push_back(2, 0, 0, 0.25);
   far.elements.push_back(0, 0, 0, 0.25);
   far.elements.push_back(1e12, 0, 0, 0.25);
-  rec.frames = {near, far, near};
+  RecordedFrame near_again = near;  // frame numbers increase, as the recording reader demands
+  near_again.number = 2;
+  near_again.time = 0.2;
+  rec.frames = {near, far, near_again};
   FrameLoop loop;
   loop.load_recording(rec);
   const FrameChange loaded = loop.change();
@@ -109,7 +112,12 @@ TEST(FrameLoop, AChangeIsPublishedOnlyOnceTheFrameIsDetected) {
   EXPECT_THROW(loop.step(), Error);
   EXPECT_EQ(loop.change().generation, loaded.generation) << "the frame that could not be detected";
   // Starting from the far frame: the load's own detection throws; the next change carries the load.
-  rec.frames = {far, near};
+  RecordedFrame far_first = far, near_second = near;
+  far_first.number = 0;
+  far_first.time = 0;
+  near_second.number = 1;
+  near_second.time = 0.1;
+  rec.frames = {far_first, near_second};
   EXPECT_THROW(loop.load_recording(rec), Error);
   EXPECT_EQ(loop.change().generation, loaded.generation);
   loop.step();
