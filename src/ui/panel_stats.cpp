@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
-#include <vector>
 
 #include "io/plural.hpp"
 #include "ui/panels.hpp"
@@ -32,23 +31,6 @@ std::string format_bytes(std::size_t bytes) {
   else if (bytes < 10 * 1024 * 1024) std::snprintf(buf, sizeof buf, "%.1f KB", double(bytes) / 1024.0);
   else std::snprintf(buf, sizeof buf, "%.1f MB", double(bytes) / (1024.0 * 1024.0));
   return buf;
-}
-
-// One row of the cost table: the chosen algorithm, then the check (its reference detector's).
-struct AlgorithmStat {
-  std::string name;
-  double ms = 0;
-  std::size_t bytes = 0;  // the detector's own arrays
-  std::size_t pairs = 0;
-};
-
-std::vector<AlgorithmStat> algorithm_stats(const SimView& s) {
-  std::vector<AlgorithmStat> rows;
-  if (s.frame == nullptr) return rows;
-  const FrameReport& report = s.frame->report();
-  rows.push_back({s.algorithm, report.timings.detection_ms, s.detector_bytes, s.frame->selected().pairs.size()});
-  if (report.checked) rows.push_back({"check (R: " + report.reference + ")", report.timings.check_ms, 0, s.frame->reference.size()});
-  return rows;
 }
 
 // At most this many of a frame's violations are spelled out in the panel; the Violations panel lists all.
@@ -100,24 +82,27 @@ class StatsPanel final : public Panel {
   }
 
  private:
+  // The cost table: the chosen algorithm, then the check (its reference detector's), read from the frame.
   static void draw_costs(const SimView& s) {
-    const std::vector<AlgorithmStat> rows = algorithm_stats(s);
-    if (rows.empty() || !ImGui::BeginTable("algos", 4, ImGuiTableFlags_BordersInnerH)) return;
+    if (s.frame == nullptr || !ImGui::BeginTable("algos", 4, ImGuiTableFlags_BordersInnerH)) return;
     ImGui::TableSetupColumn("algorithm");
     ImGui::TableSetupColumn("ms");
     ImGui::TableSetupColumn("own bytes");
     ImGui::TableSetupColumn("pairs");
     ImGui::TableHeadersRow();
-    for (const AlgorithmStat& a : rows) {
+    const auto row = [&s](const std::string& name, double ms, std::size_t bytes, std::size_t pairs) {
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(a.name.c_str());
+      ImGui::TextUnformatted(name.c_str());
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(format_ms(s, a.ms).c_str());
+      ImGui::TextUnformatted(format_ms(s, ms).c_str());
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(format_bytes(a.bytes).c_str());
+      ImGui::TextUnformatted(format_bytes(bytes).c_str());
       ImGui::TableNextColumn();
-      ImGui::Text("%zu", a.pairs);
-    }
+      ImGui::Text("%zu", pairs);
+    };
+    const FrameReport& report = s.frame->report();
+    row(s.algorithm, report.timings.detection_ms, s.detector_bytes, s.frame->selected().pairs.size());
+    if (report.checked) row("check (R: " + report.reference + ")", report.timings.check_ms, 0, s.frame->reference.size());
     ImGui::EndTable();
   }
 
