@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/cells.hpp"
 #include "core/elements.hpp"
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
@@ -40,6 +41,10 @@ class Detector {
   [[nodiscard]] virtual std::size_t own_bytes() const = 0;
   // The grid of the last detection, or nullptr for detectors without one.
   [[nodiscard]] virtual const Grid* last_grid() const { return nullptr; }
+  // The cells of the last 2D detection as the detector itself integerised them, or nullptr when it
+  // uses the grid's own integerisation (every built-in does): a plugin that reports its cells, which
+  // the checks compare with the grid's (docs/architecture.md "Invariants").
+  [[nodiscard]] virtual const std::vector<CellIndex>* own_cells() const { return nullptr; }
   // The detector's loops in the book's wording for elements of dimension `dim`, one line each;
   // TraceEvent::line of a traced run indexes this list. Empty for detectors without a trace.
   [[nodiscard]] virtual const std::vector<const char*>& pseudocode(int dim) const;
