@@ -254,7 +254,8 @@ bool GlView::panel_open(std::string_view title) const {
 bool GlView::stepper_open() const { return panel_open(ui::kStepperTitle); }
 
 bool GlView::animating() const {
-  return (stepper_->stepper().playing() && stepper_panels_open()) || scaling_->running();  // a Scaling run fills its plots
+  return (stepper_->stepper().playing() && stepper_panels_open()) || scaling_->running() ||  // a Scaling run fills its plots
+         input_.pending();  // taps given one frame each
 }
 
 bool GlView::stepper_panels_open() const {
@@ -319,7 +320,8 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   t0 = Clock::now();
   fill_panels_view(loop, session, trace, sim);
 
-  imgui_->new_frame(live_input, context_.width(), context_.height(), dt);
+  imgui_->new_frame(live_input, context_.width(), context_.height(), dt,
+                    live_input ? std::function<void()>([this] { input_.apply(); }) : std::function<void()>());
   host_.frame(ctx, live_input);
   if (!panel_open(ui::kScalingTitle)) scaling_->cancel();  // a closed panel's run stops
   renderer_->emit_labels(ImGui::GetBackgroundDrawList());
