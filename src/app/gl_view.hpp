@@ -124,6 +124,9 @@ class GlView {
   void stepped(const FrameLoop& loop);
   void frame_shown(const FrameLoop& loop);
   void rebuild_trail(const FrameLoop& loop);
+  // The Stepper just opened: it goes to the operation of the violation chosen before (as if it had
+  // been open when the violation was chosen).
+  void aim_stepper_at_chosen_violation(const FrameLoop& loop);
   // True when the panel titled `title` is open.
   [[nodiscard]] bool panel_open(std::string_view title) const;
   [[nodiscard]] bool stepper_open() const;
@@ -164,6 +167,7 @@ class GlView {
   std::string loaded_scene_;         // the scene last loaded: a selection survives a restart, not a new scene
   bool showed_scene_ = false;        // the last source followed had a scene (not a world stopped at load)
   std::optional<std::uint64_t> followed_;  // the loop's generation last followed (none: never)
+  bool stepper_was_open_ = false;          // the Stepper was open in the last frame()
 
   // Trails and flashes, advanced per change followed.
   ElementId trail_element_ = -1;

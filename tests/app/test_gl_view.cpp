@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "app/gl_view.hpp"
+#include "app/gui_requests.hpp"
 #include "physics/box2d_detector.hpp"
 #include "render/gl_context.hpp"
 #include "core/traced_lists.hpp"
@@ -22,7 +23,7 @@ struct ViewRig {
   FrameLoop loop;
   Session session;
   std::unique_ptr<GlView> view;
-  explicit ViewRig(ViewOptions options, const char* file) {
+  explicit ViewRig(ViewOptions options, const char* file, const FrameLoopOptions& loop_options = {}) : loop(loop_options) {
     register_physics_detectors();
     options.width = 800;
     options.height = 500;
@@ -76,6 +77,40 @@ TEST(GlView, ADetectorWithoutATraceSaysSoInTheStepperPanels) {
   EXPECT_NE(s.message().find("box2d records no operations"), std::string::npos) << s.message();
   EXPECT_EQ(ui::idle_message(s), s.message());
   EXPECT_TRUE(rig.view->lists().empty());
+}
+
+// A violation chosen with the Stepper closed (a click in Violations or Stats, or ]): opening the
+// Stepper afterwards goes to the operation that decided the pair, as if it had been open.
+TEST(GlView, AStepperOpenedAfterAViolationWasChosenGoesToItsOperation) {
+  FrameLoopOptions faulty;
+  faulty.fault = Fault::DropPair;
+  ViewRig rig(ViewOptions{}, "book-fig-3-15.json", faulty);
+  rig.frames(1);
+  ASSERT_FALSE(rig.loop.history().violation_log().listed().empty()) << "drop-pair loses a pair on frame 0";
+  ui::UiRequests choose;
+  choose.go_to_violation = 0;
+  apply_requests(choose, rig.loop, *rig.view, rig.session);
+  rig.frames(2);
+  const ui::StepperSession& s = rig.view->stepper();
+  EXPECT_FALSE(s.target_location().has_value()) << "the Stepper is closed";
+  rig.view->state().panel_open[ui::kStepperTitle] = true;
+  rig.frames(3);
+  ASSERT_TRUE(s.has_capture()) << s.message();
+  ASSERT_TRUE(s.target_location().has_value()) << "the Stepper opened at operation " << s.stepper().position();
+  ASSERT_TRUE(s.target_location()->event.has_value());
+  EXPECT_EQ(s.stepper().position(), *s.target_location()->event + 1);
+  EXPECT_GT(s.stepper().position(), 0u);
+}
+
+// A key tap the window queued (press and release between two frames) acts on the next live frame.
+TEST(GlView, ATapQueuedBetweenTwoFramesActs) {
+  ViewRig rig(ViewOptions{}, "book-fig-3-15.json");
+  rig.frames(1);
+  const render::InputEvent tap[] = {{render::InputEvent::Kind::Key, render::InputEvent::Action::Press, 'P'},
+                                    {render::InputEvent::Kind::Key, render::InputEvent::Action::Release, 'P'}};
+  rig.view->queue_input(tap);
+  EXPECT_TRUE(rig.view->frame(rig.loop, rig.session, true, 1.0f / 60.0f).toggle_pause);
+  EXPECT_FALSE(rig.view->frame(rig.loop, rig.session, true, 1.0f / 60.0f).toggle_pause);
 }
 
 // The Arrays panel alone (the Stepper closed) still gets the frame's trace.
