@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "core/cells.hpp"
+#include "io/plural.hpp"
 #include "ui/panels.hpp"
 #include "ui/window_input.hpp"
 
@@ -15,6 +16,7 @@ namespace nbscope::ui {
 
 namespace {
 constexpr float kGap = 6.0f;
+constexpr const char* kRestartPopup = "Restart the run?";
 // The columns together take at most this share of the display's width and the bottom dock this
 // share of the height below the menu bar, so that the scene keeps about half of each (the panels
 // wrap their rows or scroll); a column is never narrower than kMinColumnWidth.
@@ -298,6 +300,30 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
     handle_keys(ctx);
     handle_mouse(ctx);
   }
+  confirm_restart(ctx);
+}
+
+void UiHost::confirm_restart(UiContext& ctx) {
+  // A restart (R, the Controls button) drops the run's frames and violations: asked first when it
+  // has any. A recording's frames stay (its restart only goes back to its first).
+  const SimView& s = ctx.sim;
+  if (ctx.requests.restart && !s.replaying && (s.newest_frame > 0 || s.violations_total > 0)) {
+    ctx.requests.restart = false;
+    restart_loses_ = {s.newest_frame, s.violations_total};
+    ImGui::OpenPopup(kRestartPopup);
+  }
+  if (!ImGui::BeginPopupModal(kRestartPopup, nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) return;
+  ImGui::Text("Restart from frame 0? The run's %s and %s are dropped.",
+              plural(static_cast<long long>(restart_loses_[0]), "frame").c_str(),
+              plural(static_cast<long long>(restart_loses_[1]), "violation").c_str());
+  const auto key = [](ImGuiKey k) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(k), false); };
+  if (ImGui::Button("Restart (Enter)") || key(ImGuiKey_Enter) || key(ImGuiKey_KeyPadEnter)) {
+    ctx.requests.restart = true;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel (Esc)") || key(ImGuiKey_Escape)) ImGui::CloseCurrentPopup();
+  ImGui::EndPopup();
 }
 
 float UiHost::draw_fault_banner(const UiContext& ctx, float x0, float x1, float top) {
