@@ -4,12 +4,19 @@
 // of scene, and the view follows the loop's changes (GlView::follow) without being told of each.
 #include <gtest/gtest.h>
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 
 #include "app/gl_view.hpp"
 #include "app/gui_requests.hpp"
 #include "physics/box2d_detector.hpp"
 #include "render/gl_context.hpp"
+#include "render/gl_window.hpp"
 #include "core/traced_lists.hpp"
 #include "ui/stepper_panels.hpp"
 
@@ -111,6 +118,45 @@ TEST(GlView, ATapQueuedBetweenTwoFramesActs) {
   rig.view->queue_input(tap);
   EXPECT_TRUE(rig.view->frame(rig.loop, rig.session, true, 1.0f / 60.0f).toggle_pause);
   EXPECT_FALSE(rig.view->frame(rig.loop, rig.session, true, 1.0f / 60.0f).toggle_pause);
+}
+
+// Through GLFW's own callbacks in a real window (under Xvfb: without a display the test runs itself
+// under xvfb-run): ImGui's backend, which chains to the window's callback, still sees the key, and
+// the window queues it, so a press and release before the next frame still act on it.
+TEST(GlViewWindow, ATapThroughGlfwsCallbacksActs) {
+  const char* display = std::getenv("DISPLAY");
+  if (display == nullptr || *display == '\0') {
+    if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
+    const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+    const std::string cmd = "xvfb-run -a -s '-screen 0 1280x720x24' '" + self +
+                            "' --gtest_filter=GlViewWindow.ATapThroughGlfwsCallbacksActs >/dev/null 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    return;
+  }
+  register_physics_detectors();
+  render::GlfwWindow window(800, 500, "nbscope test");
+  FrameLoop loop;
+  load_scene_file(loop, scene("book-fig-3-15.json"));
+  Session session;
+  session.paused = true;
+  ViewOptions o;
+  o.width = 800;
+  o.height = 500;
+  o.shader_dir = NBSCOPE_SHADER_DIR;
+  GlView view(window, window.handle(), o);
+  view.follow(loop);
+  view.frame(loop, session, true, 1.0f / 60.0f);
+  // The key callback GLFW calls now: ImGui's, installed after the window's.
+  const GLFWkeyfun key = glfwSetKeyCallback(window.handle(), nullptr);
+  glfwSetKeyCallback(window.handle(), key);
+  ASSERT_NE(key, nullptr);
+  key(window.handle(), GLFW_KEY_P, 0, GLFW_PRESS, 0);
+  EXPECT_TRUE(ImGui::GetIO().KeysDown[GLFW_KEY_P]) << "ImGui's backend no longer gets the keys";
+  key(window.handle(), GLFW_KEY_P, 0, GLFW_RELEASE, 0);
+  view.queue_input(window.take_input());
+  EXPECT_TRUE(view.frame(loop, session, true, 1.0f / 60.0f).toggle_pause) << "the tap between two frames was lost";
+  view.queue_input(window.take_input());
+  EXPECT_FALSE(view.frame(loop, session, true, 1.0f / 60.0f).toggle_pause);
 }
 
 // The Arrays panel alone (the Stepper closed) still gets the frame's trace.
