@@ -54,11 +54,12 @@ float button_width(const char* label) { return ImGui::CalcTextSize(label, nullpt
 std::span<const char* const> help_lines() {
   static constexpr const char* kLines[] = {
       "P play/pause   O single step (held: repeats)   R restart   Home: fit the scene",
-      "1..9 algorithm   Esc: clear the selection",
+      "1..9 algorithm   Esc: clear the selection   (R asks first when the run has frames or violations)",
       "",
       "Timeline: , / . one frame back / forward (held: repeats; Shift: 10)   J play backwards",
       "          P on a past frame plays on through the kept frames; Resume here re-simulates",
-      "Violations: [ previous   ] next   Shift+[ the first",
+      "Violations: [ previous   ] next   Shift+[ the first   (none chosen: from the frame on screen)",
+      "            a violation line in Stats chooses it too",
       "",
       "Stepper (a paused frame; View -> Stepper):",
       "  -> / <-  one operation forward / back (held: repeats)",
