@@ -19,13 +19,20 @@ constexpr const char* kSelectionTitle = "Selection";
 
 const ImGuiWindow* window(const char* title) { return ImGui::FindWindowByName(title); }
 
-// A frame whose check failed with eight violations (the Stats panel lists six and "+2 more").
+// A frame whose check failed with eight violations (the Stats panel lists six and "+2 more"), the
+// detector's cells the true ones.
 void fail_check(BookFrame& f) {
   FrameReport& report = f.result.lanes.front().report;
   report.checked = true;
   report.reference = "brute";
   report.violations.clear();
-  for (int k = 0; k < 8; ++k) report.violations.push_back(Violation{0, Invariant::AEqualsR, Pair{k, k + 1}, {1, 2}, {3, 4}, "missing from A"});
+  for (int k = 0; k < 8; ++k) {
+    Violation v{0, Invariant::AEqualsR, Pair{k, k + 1}, {}, {}, "missing from A"};
+    const auto cells = grid_cells(f.sim, v);  // the detector's cells right: one line each
+    v.cell_i = (*cells)[0];
+    v.cell_j = (*cells)[1];
+    report.violations.push_back(v);
+  }
   report.broken = {8, 0, 0, 0};
 }
 
@@ -104,6 +111,21 @@ TEST(PanelLayout, ACollapsedPanelOpensWithOneClickOnItsTitleBar) {
   io.MouseDown[0] = false;
   frames(host, f, 3);
   EXPECT_FALSE(collapsed->Collapsed) << collapsed->Name << " stayed collapsed after a click on its title bar";
+}
+
+// A Stats line's cells are the detector's; where the grid's differ (off-by-one-cell), a line more gives them.
+TEST(PanelLayout, StatsAddsTheTrueCellsWhereTheDetectorsDiffer) {
+  ImGuiScope scope;
+  UiHost host;
+  BookFrame f;
+  fail_check(f);
+  frames(host, f, 4);
+  const ImGuiWindow* stats = window(kStatsTitle);
+  ASSERT_NE(stats, nullptr);
+  const float right = stats->Size.y;
+  ++f.result.lanes.front().report.violations[0].cell_i.ix;  // the detector put element 0 one cell right
+  frames(host, f, 4);
+  EXPECT_GE(stats->Size.y, right + ImGui::GetTextLineHeight()) << "no line for the true cells";
 }
 
 // The panels cover the scene: their background is opaque (the scene's lines never show through).
