@@ -125,8 +125,16 @@ class ViolationsPanel final : public Panel {
     ImGui::TableSetupColumn("frame");
     ImGui::TableSetupColumn("check");
     ImGui::TableSetupColumn("pair");
-    ImGui::TableSetupColumn("detector's cells", ImGuiTableColumnFlags_WidthStretch);
-    ImGui::TableHeadersRow();
+    ImGui::TableSetupColumn("detector's", ImGuiTableColumnFlags_WidthStretch);
+    // The headers one by one: the cells column's says whose cells it lists (its name fits the narrow column).
+    ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+    for (int column = 0; column < 4; ++column) {
+      ImGui::TableSetColumnIndex(column);
+      ImGui::TableHeader(ImGui::TableGetColumnName(column));
+      if (column == 3 && ImGui::IsItemHovered())
+        ImGui::SetTooltip("the cells the detector put the pair's elements in; for the frame on screen, a line\n"
+                          "\"true\" below gives the grid's own cells (what Selection and the picture show) where they differ");
+    }
     ImGuiListClipper clipper;
     clipper.Begin(static_cast<int>(rows_.size()));
     // Keep the chosen row in view after a jump (a key, a button, the app going to one).
@@ -153,14 +161,15 @@ class ViolationsPanel final : public Panel {
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe_violation(v, book).c_str());
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(invariant_name(v.invariant));
-        ImGui::TableNextColumn();
-        ImGui::Text("%lld, %lld", static_cast<long long>(shown(v.pair.i, book)), static_cast<long long>(shown(v.pair.j, book)));
-        ImGui::TableNextColumn();
         const auto truth = grid_cells(c.sim, v);
         const bool wrong = truth && !same_cells(v, *truth);
+        ImGui::TableNextColumn();
+        ImGui::Text("%lld, %lld", static_cast<long long>(shown(v.pair.i, book)), static_cast<long long>(shown(v.pair.j, book)));
+        if (wrong) ImGui::TextDisabled("true");  // under the pair, beside the grid's cells
+        ImGui::TableNextColumn();
         if (wrong) ImGui::TextColored(kOrange, "%s", cell_pair_text(v.cell_i, v.cell_j, book).c_str());
         else ImGui::TextUnformatted(cell_pair_text(v.cell_i, v.cell_j, book).c_str());
-        if (wrong) ImGui::TextDisabled("true %s", cell_pair_text((*truth)[0], (*truth)[1], book).c_str());
+        if (wrong) ImGui::TextDisabled("%s", cell_pair_text((*truth)[0], (*truth)[1], book).c_str());
         else if (two_lines) ImGui::TextUnformatted("");
       }
     }
