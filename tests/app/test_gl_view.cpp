@@ -7,6 +7,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -26,14 +27,15 @@ namespace {
 std::string scene(const char* name) { return std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/" + name; }
 
 struct ViewRig {
-  std::unique_ptr<render::GlContext> context = render::make_offscreen_context(800, 500, "osmesa");
+  std::unique_ptr<render::GlContext> context;
   FrameLoop loop;
   Session session;
   std::unique_ptr<GlView> view;
-  explicit ViewRig(ViewOptions options, const char* file, const FrameLoopOptions& loop_options = {}) : loop(loop_options) {
+  explicit ViewRig(ViewOptions options, const char* file, const FrameLoopOptions& loop_options = {}, int width = 800, int height = 500)
+      : context(render::make_offscreen_context(width, height, "osmesa")), loop(loop_options) {
     register_physics_detectors();
-    options.width = 800;
-    options.height = 500;
+    options.width = width;
+    options.height = height;
     options.shader_dir = NBSCOPE_SHADER_DIR;
     load_scene_file(loop, scene(file));
     session.scene_path = loop.source().scene().path;
@@ -157,6 +159,40 @@ TEST(GlViewWindow, ATapThroughGlfwsCallbacksActs) {
   EXPECT_TRUE(view.frame(loop, session, true, 1.0f / 60.0f).toggle_pause) << "the tap between two frames was lost";
   view.queue_input(window.take_input());
   EXPECT_FALSE(view.frame(loop, session, true, 1.0f / 60.0f).toggle_pause);
+}
+
+// Choosing a violation in the window (1280x720, the default scene with a fault) collapses no panel
+// and moves none that was already shown: the Selection panel comes below the others.
+TEST(GlView, ChoosingAViolationLeavesThePanelsWhereTheyAre) {
+  FrameLoopOptions faulty;
+  faulty.fault = Fault::DropMaskCell;
+  ViewRig rig(ViewOptions{}, "default.json", faulty, 1280, 720);
+  for (int k = 0; k < 40 && rig.loop.history().violation_log().listed().size() < 3; ++k) {
+    rig.loop.step();
+    rig.frames(1);
+  }
+  ASSERT_GE(rig.loop.history().violation_log().listed().size(), 3u);
+  rig.frames(GlView::kSettleFrames);
+  struct Shown {
+    const ImGuiWindow* window;
+    ImVec2 pos;
+    bool collapsed;
+  };
+  std::vector<Shown> before;
+  for (const auto& p : rig.view->host().panels())
+    if (const ImGuiWindow* w = ImGui::FindWindowByName(p->title()); w != nullptr && w->Active)
+      before.push_back({w, w->Pos, w->Collapsed});
+  ASSERT_GE(before.size(), 5u);
+  ui::UiRequests choose;
+  choose.go_to_violation = 1;
+  apply_requests(choose, rig.loop, *rig.view, rig.session);
+  rig.frames(GlView::kSettleFrames);
+  ASSERT_GE(rig.view->state().selected, 0);
+  for (const Shown& s : before) {
+    EXPECT_EQ(s.window->Collapsed, s.collapsed) << s.window->Name;
+    EXPECT_EQ(s.window->Pos.x, s.pos.x) << s.window->Name;
+    EXPECT_EQ(s.window->Pos.y, s.pos.y) << s.window->Name;
+  }
 }
 
 // The Arrays panel alone (the Stepper closed) still gets the frame's trace.
