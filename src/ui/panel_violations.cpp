@@ -116,7 +116,8 @@ class ViolationsPanel final : public Panel {
       }
     }
     const float line_h = ImGui::GetTextLineHeightWithSpacing();
-    const float row_h = two_lines ? line_h + ImGui::GetTextLineHeight() : line_h;
+    // A row is its lines plus the cell padding, which equals one line's spacing: two lines, twice a line's height.
+    const float row_h = two_lines ? 2.0f * line_h : line_h;
     const float height = std::min(8.0f, static_cast<float>(rows_.size())) * row_h + line_h + 6.0f;
     const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                                   ImGuiTableFlags_SizingFixedFit;
