@@ -37,10 +37,10 @@ class Watchdog {
     static Watchdog* watchdog = new Watchdog();  // never destroyed: its thread runs until the process ends
     return *watchdog;
   }
-  // Ends the process with `message` unless disarm() comes within `seconds`.
-  void arm(double seconds, const std::string& message) {
+  // Ends the process with `message` (which stays valid until disarm()) unless disarm() comes within `seconds`.
+  void arm(double seconds, const char* message) {
     const std::lock_guard<std::mutex> lock(mutex_);
-    std::snprintf(message_, sizeof message_, "%s", message.c_str());
+    message_ = message;
     deadline_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
     armed_ = true;
     if (idle_) wake_.notify_one();
@@ -76,7 +76,7 @@ class Watchdog {
   bool armed_ = false;
   bool idle_ = false;
   Clock::time_point deadline_{};
-  char message_[4096] = {};
+  const char* message_ = "";
 };
 
 // Brackets a plugin's nbscope_detect: the crash report and the watchdog, their lines prepared here.
@@ -87,13 +87,15 @@ class PluginGuard final : public PluginCallGuard {
         crash_head_(who_ + "crashed with "),
         timeout_(timeout) {}
   void enter(std::int64_t frame) override {
-    crash_tail_ = " in frame " + std::to_string(frame) + "\n";
-    arm_crash_report(crash_head_.c_str(), crash_tail_.c_str());
-    if (timeout_ > 0) {
+    if (frame != frame_ || crash_tail_.empty()) {  // the lines change with the frame only
+      frame_ = frame;
+      crash_tail_ = " in frame " + std::to_string(frame) + "\n";
       char seconds[32];
       std::snprintf(seconds, sizeof seconds, "%g", timeout_);
-      Watchdog::instance().arm(timeout_, who_ + "did not return within " + seconds + " s" + crash_tail_);
+      hang_line_ = who_ + "did not return within " + seconds + " s" + crash_tail_;
     }
+    arm_crash_report(crash_head_.c_str(), crash_tail_.c_str());
+    if (timeout_ > 0) Watchdog::instance().arm(timeout_, hang_line_.c_str());
   }
   void leave() override {
     if (timeout_ > 0) Watchdog::instance().disarm();
@@ -101,7 +103,8 @@ class PluginGuard final : public PluginCallGuard {
   }
 
  private:
-  std::string who_, crash_head_, crash_tail_;
+  std::string who_, crash_head_, crash_tail_, hang_line_;
+  std::int64_t frame_ = 0;
   double timeout_;
 };
 

@@ -32,7 +32,7 @@ void install_stop_handlers();
 // signal's name and `tail` to stderr, removes the live temporaries and _exit(2)s: a detector plugin's
 // crash as one error line (io/plugin_library.hpp, io/signals_crash.cpp). Both strings outlive the arming.
 void arm_crash_report(const char* head, const char* tail);
-// Puts back the actions arm_crash_report() replaced.
+// Ends the report: from now on these signals go to the actions arm_crash_report() replaced.
 void disarm_crash_report();
 
 // While it lives, SIGINT, SIGTERM and SIGHUP only note the stop (an ignored SIGHUP, as under
