@@ -39,6 +39,37 @@ TEST(PluginCli, GoodPluginRunsAsTheAlgorithmAndAsAComparisonLane) {
   EXPECT_EQ(r.out, builtin.out);
 }
 
+TEST(PluginCli, GoodPluginReplaysAndScales) {
+  const std::string lib = plugin("good");
+  const std::string dir = testcli::scratch_dir("plugin_replay");
+  auto r = run("headless --scene '" + scene("default") + "' --frames 5 --record '" + dir + "/r.nbsrec'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run("replay '" + dir + "/r.nbsrec' --headless --detector-lib '" + lib + "' --algorithm nbs,test-good");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("nbs,test-good"), std::string::npos) << r.out;
+  r = run("scaling --detector-lib '" + lib + "' --algorithm test-good --n 1e3..1e3 --quiet");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("test-good loose"), std::string::npos) << r.out;
+}
+
+#ifdef NBSCOPE_TEST_GUI
+// The window (under xvfb-run): the plugin is an algorithm of the window, and its breach ends a
+// --frames run as headless's does.
+TEST(PluginCli, WindowRunsThePluginAndStopsOnItsBreach) {
+  const std::string dir = testcli::scratch_dir("plugin_window");
+  std::string lib = plugin("good");
+  auto r = run("gui --scene '" + scene("default") + "' --frames 3 --screenshot '" + dir + "/good.png' --detector-lib '" + lib +
+                   "' --algorithm test-good",
+               testcli::xvfb_run());
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  lib = plugin("self_pair");
+  r = run("gui --scene '" + scene("default") + "' --frames 3 --screenshot '" + dir + "/bad.png' --detector-lib '" + lib +
+              "' --algorithm test-self-pair",
+          testcli::xvfb_run());
+  expect_error(r, lib + " (test-self-pair): frame 0: add_pair(0, 0): an element paired with itself");
+}
+#endif
+
 TEST(PluginCli, AlgorithmsListsThePlugin) {
   const auto r = run("algorithms --detector-lib '" + plugin("good") + "'");
   EXPECT_EQ(r.exit_code, 0) << r.err;
