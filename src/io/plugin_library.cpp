@@ -160,7 +160,11 @@ std::string load_detector_plugin(const std::string& path) {
   for (const auto& [name, found] : {std::pair{"nbscope_detector_describe", symbols.describe != nullptr},
                                     std::pair{"nbscope_detect", symbols.detect != nullptr}})
     if (!found) throw Error(path + ": no symbol " + name + " (plugin API version 1 requires it)");
+  // Its first call: a crash here is named as one in a frame would be.
+  const std::string crash_head = "nbscope: error: " + printable_line(path) + ": crashed with ";
+  arm_crash_report(crash_head.c_str(), " in nbscope_detector_describe()\n");
   const nbscope_detector_info* info = symbols.describe();
+  disarm_crash_report();
   try {
     check_plugin_info(info);
   } catch (const Error& e) {

@@ -138,6 +138,11 @@ TEST(PluginCli, CrashIsOneLineNamingTheLibraryAndFrame) {
                lib + " (test-crash): crashed with SIGSEGV in frame 3");
 }
 
+TEST(PluginCli, CrashWhileDescribingItselfIsNamedToo) {
+  const std::string lib = plugin("describe_crash");
+  expect_error(run("algorithms --detector-lib '" + lib + "'"), lib + ": crashed with SIGSEGV in nbscope_detector_describe()");
+}
+
 TEST(PluginCli, HangIsStoppedByTheWatchdog) {
   const std::string lib = plugin("hang");
   expect_error(run("headless --scene '" + scene("default") + "' --frames 30 --detector-timeout 1 --detector-lib '" + lib +
