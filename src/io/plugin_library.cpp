@@ -79,6 +79,10 @@ class Watchdog {
   const char* message_ = "";
 };
 
+// Held during every plugin call: detector.h promises a library one thread at a time (the window's
+// Scaling panel detects on a thread of its own), and the crash report and watchdog serve one call.
+std::mutex g_plugin_call;
+
 // Brackets a plugin's nbscope_detect: the crash report and the watchdog, their lines prepared here.
 class PluginGuard final : public PluginCallGuard {
  public:
@@ -87,6 +91,7 @@ class PluginGuard final : public PluginCallGuard {
         crash_head_(who_ + "crashed with "),
         timeout_(timeout) {}
   void enter(std::int64_t frame) override {
+    g_plugin_call.lock();  // unlocked by leave(), on this thread
     if (frame != frame_ || crash_tail_.empty()) {  // the lines change with the frame only
       frame_ = frame;
       crash_tail_ = " in frame " + std::to_string(frame) + "\n";
@@ -100,6 +105,7 @@ class PluginGuard final : public PluginCallGuard {
   void leave() override {
     if (timeout_ > 0) Watchdog::instance().disarm();
     disarm_crash_report();
+    g_plugin_call.unlock();
   }
 
  private:
