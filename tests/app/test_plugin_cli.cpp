@@ -75,6 +75,11 @@ TEST(PluginCli, AlgorithmsListsThePlugin) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("test-good"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("the test plugin: brute force"), std::string::npos) << r.out;
+  // Repeatable: two libraries, two algorithms, run side by side (the wrong one fails its checks).
+  const auto both = run("headless --scene '" + scene("default") + "' --frames 5 --detector-lib '" + plugin("good") +
+                        "' --detector-lib '" + plugin("drop_pair") + "' --algorithm test-good,test-drop-pair");
+  EXPECT_EQ(both.exit_code, 1) << both.out << both.err;
+  EXPECT_NE(both.out.find("test-good,test-drop-pair"), std::string::npos) << both.out;
 }
 
 TEST(PluginCli, WrongButWellFormedPluginFailsItsChecks) {
