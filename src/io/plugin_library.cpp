@@ -120,6 +120,12 @@ std::map<std::string, std::string>& plugin_libraries() {
   return libraries;
 }
 
+// The name each library already loaded registered, by its dlopen handle (one file, one handle).
+std::map<void*, std::string>& loaded_handles() {
+  static std::map<void*, std::string> handles;
+  return handles;
+}
+
 void* open_library(const std::string& path) {
   // A name without a slash is a file here, not a search of the system's library paths.
   const std::string opened = path.find('/') == std::string::npos ? "./" + path : path;
@@ -152,6 +158,8 @@ void set_detector_timeout(double seconds) { g_timeout_seconds = seconds; }
 
 std::string load_detector_plugin(const std::string& path) {
   void* handle = open_library(path);  // never closed: pseudocode and names live as long as the process
+  // The same file again (--detector-lib given twice, or also saved in the window's settings): loaded once.
+  if (const auto again = loaded_handles().find(handle); again != loaded_handles().end()) return again->second;
   const auto* version = symbol<const std::uint32_t*>(handle, "nbscope_api_version");
   if (version == nullptr) throw Error(path + ": no symbol nbscope_api_version: not an nbscope detector plugin");
   if (*version != NBSCOPE_DETECTOR_API_VERSION)
@@ -181,6 +189,7 @@ std::string load_detector_plugin(const std::string& path) {
   symbols.guard = std::make_shared<PluginGuard>(path, name, g_timeout_seconds);
   register_detector(plugin_detector_info(symbols, *info));
   plugin_libraries()[name] = path;
+  loaded_handles()[handle] = name;
   return name;
 }
 

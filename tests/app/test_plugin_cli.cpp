@@ -100,9 +100,12 @@ TEST(PluginCli, LibrariesThatAreNotPluginsAreRefusedAtLoad) {
   expect_error(run("algorithms --detector-lib '" + lib + "'"), lib + ": its name 'Test Plugin!' is not 1 to 64 of [a-z0-9_-]");
   lib = plugin("nbs_name");
   expect_error(run("algorithms --detector-lib '" + lib + "'"), lib + ": its name 'nbs' is a built-in detector's");
+  lib = plugin("good_twin");  // another file, the same name
+  expect_error(run("algorithms --detector-lib '" + plugin("good") + "' --detector-lib '" + lib + "'"),
+               lib + ": its name 'test-good' is taken by " + plugin("good") + ", loaded before it");
   lib = plugin("good");
-  expect_error(run("algorithms --detector-lib '" + lib + "' --detector-lib '" + lib + "'"),
-               lib + ": its name 'test-good' is taken by " + lib + ", loaded before it");
+  const auto twice = run("algorithms --detector-lib '" + lib + "' --detector-lib '" + lib + "'");  // one file: loaded once
+  EXPECT_EQ(twice.exit_code, 0) << twice.err;
   const auto missing = run("headless --scene '" + scene("default") + "' --detector-lib /nonexistent/x.so");
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_EQ(missing.err.rfind("nbscope: error: /nonexistent/x.so: cannot load: ", 0), 0u) << missing.err;
