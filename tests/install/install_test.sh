@@ -13,6 +13,7 @@ cpack="$(dirname "$cmake")/cpack" ctest="$(dirname "$cmake")/ctest"
 
 fail() { printf 'install test (%s): %s\n' "$stage" "$*" >&2; exit 1; }
 work="$(mktemp -d "${TMPDIR:-/tmp}/nbscope-install-$stage.XXXXXX")"
+work="$(cd "$work" && pwd -P)"  # as /proc/self/exe will name it
 trap 'rm -rf "$work"' EXIT
 case "$work" in "$source"/*) fail "the scratch directory $work is inside the source tree" ;; esac
 prefix="$work/prefix"
@@ -42,6 +43,10 @@ stage_tree() {
   # A bundled scene by its name alone, from a directory that has no such file.
   "$prefix/bin/nbscope" headless --scene default.json --frames 5 --quiet --report report.json || fail "headless --scene default.json failed"
   grep -q "\"path\": *\"$prefix/share/nbscope/assets/scenes/default.json\"" report.json || fail "the report names another scene: $(head -c 600 report.json)"
+  # The built binary (not installed) still reads the source tree, from any directory.
+  version="$("$build/src/app/nbscope" --version)" || fail "the built nbscope --version failed"
+  [[ "$version" == *"data: $source (build tree)"* ]] || fail "the built binary does not read the source tree: $version"
+  "$build/src/app/nbscope" headless --scene assets/scenes/pile.json --frames 1 --quiet || fail "the built binary misses assets/scenes/pile.json"
   # Shaders: the window's frame drawn off-screen (no display) by the installed binary.
   "$prefix/bin/nbscope" gui --scene default.json --frames 3 --screenshot shot.png >"$work/gui.log" 2>&1 || fail "gui --screenshot failed: $(cat "$work/gui.log")"
   [ "$(head -c 8 shot.png | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] || fail "shot.png is not a PNG"
@@ -92,6 +97,12 @@ stage_deb() {
               ./usr/include/nbscope/detector.h /cmake/nbscope/nbscopeConfig.cmake; do
     grep -q -- "$path" <<<"$files" || fail "the package lacks $path"
   done
+  # Unpacked anywhere, the packaged (stripped) binary runs and reads the packaged data.
+  dpkg-deb -x "$deb" root || fail "dpkg-deb -x $deb failed"
+  local version
+  version="$(root/usr/bin/nbscope --version)" || fail "the packaged nbscope --version failed"
+  [[ "$version" == *"data: $work/cwd/root/usr/share/nbscope (installed)"* ]] || fail "the packaged binary reads other data: $version"
+  root/usr/bin/nbscope headless --scene default.json --frames 2 --quiet || fail "the packaged binary cannot run default.json"
   echo "install test (deb): $(basename "$deb"), Depends: $depends"
 }
 
