@@ -43,6 +43,11 @@ stage_tree() {
   # A bundled scene by its name alone, from a directory that has no such file.
   "$prefix/bin/nbscope" headless --scene default.json --frames 5 --quiet --report report.json || fail "headless --scene default.json failed"
   grep -q "\"path\": *\"$prefix/share/nbscope/assets/scenes/default.json\"" report.json || fail "the report names another scene: $(head -c 600 report.json)"
+  # A file of that name in the current directory wins over the bundled one.
+  cp "$prefix/share/nbscope/assets/scenes/pile.json" default.json
+  "$prefix/bin/nbscope" headless --scene default.json --frames 1 --quiet --report own.json || fail "headless --scene ./default.json failed"
+  grep -q '"path": *"default.json"' own.json || fail "./default.json lost to the bundled one: $(head -c 600 own.json)"
+  rm default.json
   # The built binary (not installed) still reads the source tree, from any directory.
   version="$("$build/src/app/nbscope" --version)" || fail "the built nbscope --version failed"
   [[ "$version" == *"data: $source (build tree)"* ]] || fail "the built binary does not read the source tree: $version"
