@@ -73,6 +73,10 @@ stage_plugin() {
   done
   # Hidden visibility: nothing but the API leaves the plugin.
   [ "$(grep -cv '^nbscope_' <<<"$exported" || true)" -eq 0 ] || fail "$so exports more than the API: $(tr '\n' ' ' <<<"$exported")"
+  # README's one line, with the compiler alone against the installed header.
+  "$cc" -std=c99 -Wall -Wextra -Wpedantic -Werror -shared -fPIC -I"$prefix/include" \
+    "$source/tests/install/plugin_project/brute_plugin.c" -o one_line.so || fail "the one-line cc build failed"
+  nm -D --defined-only one_line.so | grep -q ' nbscope_detect$' || fail "one_line.so does not export nbscope_detect"
   # The plugin project's own tests run the installed binary (nbscope_EXECUTABLE, nbscope::nbscope);
   # loading a plugin needs --detector-lib, which only a binary that has it can do.
   local tests=version
