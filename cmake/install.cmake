@@ -2,6 +2,8 @@
 #   bin/nbscope                       the binary; it finds ../share/nbscope itself (src/io/data_dir.cpp)
 #   share/nbscope/assets/{scenes,examples}, share/nbscope/shaders   what it reads at run time
 #   include/nbscope/detector.h        the plugin API
+#   share/doc/nbscope/examples/       the example plugins' sources (examples/), to copy from (their
+#                                     CMakeLists.txt build in this tree only: not installed)
 #   lib/cmake/nbscope/                find_package(nbscope): nbscope::detector_api, nbscope_add_detector(),
 #                                     nbscope_EXECUTABLE
 include(CMakePackageConfigHelpers)
@@ -25,6 +27,8 @@ target_include_directories(nbscope_detector_api INTERFACE $<BUILD_INTERFACE:${PR
 set_target_properties(nbscope_detector_api PROPERTIES EXPORT_NAME detector_api)
 install(TARGETS nbscope_detector_api EXPORT nbscopeTargets)
 install(FILES "${PROJECT_SOURCE_DIR}/include/nbscope/detector.h" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/nbscope")
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/examples/" DESTINATION "${CMAKE_INSTALL_DOCDIR}/examples"
+        FILES_MATCHING PATTERN "*.c" PATTERN "*.h" PATTERN "*.md")
 install(EXPORT nbscopeTargets NAMESPACE nbscope:: DESTINATION "${NBSCOPE_INSTALL_CMAKEDIR}")
 
 configure_package_config_file("${CMAKE_CURRENT_LIST_DIR}/nbscopeConfig.cmake.in"

@@ -77,6 +77,17 @@ stage_plugin() {
   "$cc" -std=c99 -Wall -Wextra -Wpedantic -Werror -shared -fPIC -I"$prefix/include" \
     "$source/tests/install/plugin_project/brute_plugin.c" -o one_line.so || fail "the one-line cc build failed"
   nm -D --defined-only one_line.so | grep -q ' nbscope_detect$' || fail "one_line.so does not export nbscope_detect"
+  # The example plugins installed as documentation build the same way from the installed copy: each
+  # file that defines nbscope_detect, with the .c files of its folder that do not (shared helpers).
+  local example count=0 c helpers
+  while IFS= read -r example; do
+    helpers=()
+    for c in "$(dirname "$example")"/*.c; do grep -q 'int nbscope_detect(' "$c" || helpers+=("$c"); done
+    "$cc" -std=c99 -Wall -Wextra -Wpedantic -Werror -shared -fPIC -I"$prefix/include" "$example" "${helpers[@]}" \
+      -o example.so || fail "the installed example $example does not build against the installed header"
+    count=$((count + 1))
+  done < <(grep -rl 'int nbscope_detect(' "$prefix/share/doc/nbscope/examples" --include='*.c')
+  [ "$count" -gt 0 ] || fail "no example plugin was installed under share/doc/nbscope/examples"
   # The plugin project's own tests run the installed binary (nbscope_EXECUTABLE, nbscope::nbscope):
   # its --version, and headless --detector-lib on the plugin (exit 0: every frame held).
   (cd plugin-build && "$ctest" --output-on-failure >"$work/plugin-ctest.log" 2>&1) ||
