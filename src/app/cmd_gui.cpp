@@ -33,6 +33,7 @@
 #include "io/atomic_file.hpp"
 #include "io/data_dir.hpp"
 #include "io/excerpt.hpp"
+#include "io/plugin_library.hpp"
 #include "io/plural.hpp"
 #include "io/scene_json.hpp"
 #include "render/gl_window.hpp"
@@ -215,6 +216,7 @@ void save_settings(ui::Settings& settings, GlView& view, const FrameLoop& loop, 
   settings.panels = view.state().panel_open;
   settings.last_scene = absolute_path(session.scene_path);  // the next start may be elsewhere
   settings.algorithm = loop.pipeline().algorithm();
+  settings.detector_libs = loaded_detector_libraries();  // --detector-lib and the ones the settings loaded
   settings.camera = ui::camera_to_save(view.camera());
   settings.speed = session.speed;
   settings.history_mb = view.state().history_budget_mb;
@@ -378,7 +380,9 @@ int run_gui(Args& args) {
   std::optional<ui::Settings> settings;
   std::vector<std::string> ignored;
   const std::string settings_file = ui::settings_path();
-  if (!scripted && have_display()) settings = ui::load_settings(settings_file, ignored);
+  // The detector libraries the last session had loaded come first, so its algorithm is found again.
+  if (!scripted && have_display())
+    settings = ui::load_settings(settings_file, ignored, [](const std::string& library) { load_detector_plugin(library); });
 
   FrameLoopOptions loop_options;
   loop_options.fault = o.fault;

@@ -9,6 +9,7 @@
 #include <condition_variable>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -120,6 +121,12 @@ std::map<std::string, std::string>& plugin_libraries() {
   return libraries;
 }
 
+// The libraries loaded, as absolute paths, in load order.
+std::vector<std::string>& loaded_paths() {
+  static std::vector<std::string> paths;
+  return paths;
+}
+
 // The name each library already loaded registered, by its dlopen handle (one file, one handle).
 std::map<void*, std::string>& loaded_handles() {
   static std::map<void*, std::string> handles;
@@ -190,7 +197,12 @@ std::string load_detector_plugin(const std::string& path) {
   register_detector(plugin_detector_info(symbols, *info));
   plugin_libraries()[name] = path;
   loaded_handles()[handle] = name;
+  std::error_code ec;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+  loaded_paths().push_back(ec ? path : absolute.lexically_normal().string());
   return name;
 }
+
+std::vector<std::string> loaded_detector_libraries() { return loaded_paths(); }
 
 }  // namespace nbscope

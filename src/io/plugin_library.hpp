@@ -4,6 +4,7 @@
 // docs/plugins.md is the guide; docs/limits.md "Detector plugins" says what is refused and what it costs.
 #pragma once
 #include <string>
+#include <vector>
 
 namespace nbscope {
 
@@ -15,6 +16,9 @@ inline constexpr double kDefaultDetectorTimeout = 60;
 // detector's name. The same file loaded again is not loaded twice: its name is returned. Throws Error
 // "PATH: what" for anything amiss (docs/limits.md "Detector plugins").
 std::string load_detector_plugin(const std::string& path);
+
+// The absolute paths of the libraries loaded so far, in load order (the window's settings keep them).
+std::vector<std::string> loaded_detector_libraries();
 
 // The seconds a plugin's nbscope_detect may run before the process ends with an error line and exit 2
 // (0: no limit); for plugins loaded from now on.
