@@ -178,6 +178,26 @@ TEST(GuiSettings, AnUnknownAlgorithmAndWrongTypesAreIgnoredAndTheWindowOpens) {
   EXPECT_EQ(saved.at("overlays").at("ids"), true);
 }
 
+// A plugin chosen in the window is chosen again at the next start: its library is saved with it and
+// loaded before the saved algorithm is looked up (else the algorithm would be ignored as unknown).
+TEST(GuiSettings, ADetectorLibraryIsRememberedWithItsAlgorithm) {
+  SKIP_WITHOUT_WINDOW();
+  const std::string dir = scratch_dir("gui_settings_detector_lib");
+  const std::string library = std::string(NBSCOPE_PLUGIN_DIR) + "/test_plugin_good.so";
+  const auto first = window_with_settings(dir, R"({"version": 1})", " --detector-lib '" + library + "' --algorithm test-good");
+  EXPECT_EQ(first.exit_code, 124) << first.err;
+  auto saved = nlohmann::json::parse(testcli::read_text(dir + "/nbscope/settings.json"));
+  EXPECT_EQ(saved.at("algorithm"), "test-good");
+  ASSERT_EQ(saved.at("detector_libs").size(), 1u);
+  EXPECT_EQ(std::filesystem::path(saved.at("detector_libs")[0].get<std::string>()), std::filesystem::canonical(library));
+
+  const auto second = run("gui", testcli::xvfb_run() + " env XDG_CONFIG_HOME='" + dir + "' timeout -s TERM 4");
+  EXPECT_EQ(second.exit_code, 124) << second.err;
+  EXPECT_EQ(second.err, "");  // nothing ignored: the library loaded, so its algorithm was known
+  saved = nlohmann::json::parse(testcli::read_text(dir + "/nbscope/settings.json"));
+  EXPECT_EQ(saved.at("algorithm"), "test-good");
+}
+
 TEST(GuiSettings, ALastSceneThatNoLongerReadsFallsBackToTheDefaultScene) {
   SKIP_WITHOUT_WINDOW();
   const std::string dir = scratch_dir("gui_settings_last_scene");
