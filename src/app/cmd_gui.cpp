@@ -271,6 +271,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
     view.queue_input(window.take_input());  // every key and button event, in order (GlView::queue_input)
     const auto now = Clock::now();
     session.frame_ms = std::chrono::duration<double, std::milli>(now - last).count();
+    session.split = pacer.split();
     last = now;
     if (scripted) {
       // Frames 1..N each step once, then --back K goes back one kept frame a frame; then the last
@@ -324,7 +325,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       times.print(o, loop, rendered);
       break;
     }
-    window.present();
+    pacer.present(window, view.last_cost(), loop);  // the swap, timed for the frame split
     ++fps_frames;
     if (window.time() - fps_window_start >= 0.5) {
       session.fps = fps_frames / (window.time() - fps_window_start);

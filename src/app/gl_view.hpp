@@ -42,6 +42,7 @@ struct Session {
   std::string error;
   double fps = 0;
   double frame_ms = 0;
+  ui::DrawTimings split;  // the window loop's frame split, averaged (app/window_pacing.hpp); off-screen: not measured
 };
 
 // Every scene file in the bundled assets/scenes directory, sorted.

@@ -65,11 +65,10 @@ void GlView::describe_lists(const FrameLoop& loop, const std::shared_ptr<const F
     const LoopVars v = st.loop_vars();
     if (v.phase_index >= 0 || v.iy >= 0) stepper_row = v.phase_index >= 0 ? v.phase_index : v.iy;
   }
-  // The row whose lists the Row filter keeps (and whose row-below copies are drawn): hovered, else
-  // the stepper's, else the selected element's.
-  if (state_.hovered_cell) scene.focus_row = (*state_.hovered_cell)[1];
-  else if (stepper_row) scene.focus_row = stepper_row;
-  else if (state_.selected >= 0 && state_.selected < e.size()) scene.focus_row = loop.result().selected().grid.cell(e.y[state_.selected], 1);
+  // The row whose lists the Row filter keeps (render::list_focus_row: the stepper's mid-frame first).
+  std::optional<std::int32_t> selected_row;
+  if (state_.selected >= 0 && state_.selected < e.size()) selected_row = loop.result().selected().grid.cell(e.y[state_.selected], 1);
+  scene.focus_row = render::list_focus_row(stepper_row, state_.hovered_cell, selected_row);
   if (!state_.overlays.lists) return;
   auto& caption = scene.lists_caption;
   if (!trace || lists_.empty()) {
@@ -104,7 +103,7 @@ void GlView::describe_lists(const FrameLoop& loop, const std::shared_ptr<const F
     case render::ListFilter::Row:
       caption.push_back(scene.focus_row ? "lists of row " + num(*scene.focus_row) + " (filter 'row': hover a row)"
                                         : e.size() <= render::kAllListsUpTo ? "all lists: hover a row or click an element for one row's"
-                                                                            : "lists: hover a row or click an element");
+                                                                            : "no lists drawn: hover a row or click an element to choose one");
       break;
   }
 }

@@ -56,9 +56,9 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
                                      : "Open the Stepper (View menu) to see the operation that decided this pair.";
   sim.scene_insets = host_.insets(state_);
   sim.hide_timings = hide_timings_;
-  sim.drawing = cost_;  // its ui_ms is last frame's: this one is being measured
+  sim.drawing = session.split.measured ? session.split : cost_;  // a window's whole frame split, else this view's parts
   sim.drawing.physics_overlapped = loop.source().physics_overlapped();
-  sim.drawing.frame_ms = session.frame_ms;
+  if (!session.split.measured) sim.drawing.frame_ms = session.frame_ms;
   sim.fps = session.fps;
   sim.frame_history_ms = frame_history_;
   sim.render_stats = &renderer_->stats();

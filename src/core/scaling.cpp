@@ -116,8 +116,6 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
                           const std::atomic<bool>* cancel) {
   check_scaling_plan(plan);
   const std::vector<std::int64_t> sizes = scaling_sizes(plan.n_min, plan.n_max, plan.points_per_decade);
-  std::vector<std::unique_ptr<Detector>> detectors;
-  for (const std::string& name : plan.algorithms) detectors.push_back(make_detector(name));
   ScalingResult result;
   ScalingProgress p;
   p.total = plan.algorithms.size() * plan.layouts.size() * sizes.size();
@@ -131,14 +129,14 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
   };
   for (Layout layout : plan.layouts) {
     // Per detector: its last measured N in this layout and the seconds of its best run there.
-    std::vector<std::pair<std::int64_t, double>> last(detectors.size(), {0, 0.0});
+    std::vector<std::pair<std::int64_t, double>> last(plan.algorithms.size(), {0, 0.0});
     for (std::int64_t n : sizes) {
       if (cancelled(cancel)) {
         result.cancelled = true;
         return result;
       }
       const Elements elements = make_layout(layout, n, 2, plan.seed);  // once for every detector
-      for (std::size_t a = 0; a < detectors.size(); ++a) {
+      for (std::size_t a = 0; a < plan.algorithms.size(); ++a) {
         const std::string& name = plan.algorithms[a];
         const std::string point = point_name(name, layout, n);
         if (name == "brute" && n > plan.brute_max_n) {
@@ -152,7 +150,7 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
             const Elements pilot = make_layout(layout, kPilotN, 2, plan.seed);
             PairList pairs;
             const auto t0 = std::chrono::steady_clock::now();
-            detectors[a]->detect(pilot, DetectOptions{}, pairs);
+            make_detector(name)->detect(pilot, DetectOptions{}, pairs);
             last[a] = {kPilotN, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
           } catch (const Error&) {
             // the point itself reports what is wrong
@@ -170,7 +168,10 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
         }
         ScalingRow row{name, layout_name(layout), n, 0, 0, 0, 0};
         try {
-          if (!measure(*detectors[a], elements, plan, cancel, row)) {
+          // A fresh detector per point: one kept across points keeps the arrays of the biggest run
+          // before it, and its bytes per element would be that run's, not this point's own need.
+          const std::unique_ptr<Detector> detector = make_detector(name);
+          if (!measure(*detector, elements, plan, cancel, row)) {
             result.cancelled = true;
             return result;
           }

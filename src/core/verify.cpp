@@ -300,6 +300,7 @@ class Checker {
     std::array<bool, 3> fixes{false, false, false};
     for (const UserList& l : f.lists)
       for (int a = 0; a < 3; ++a) fixes[a] = fixes[a] || l.cell[a] >= 0;
+    std::map<int, std::vector<ElementId>> cut_off;  // per cut list: its cell's elements on no list
     for (ElementId k : members(f.scope)) {
       if (owner_[static_cast<std::size_t>(k)] != -1) continue;
       if (!cells_.surely_in(k, f.scope)) continue;
@@ -308,8 +309,12 @@ class Checker {
         if (!fixes[a]) key[a] = -1;
       std::string text = pre + "element " + el(k) + " is on no list, but lies in " + place(k, f, key);
       const auto it = list_of_cell.find(key);
-      // Behind a cycle or a bad index the rest of a list is unknown: that problem says it already.
-      if (it != list_of_cell.end() && cut_[static_cast<std::size_t>(it->second)]) continue;
+      // Behind a cycle, a repeat or a bad index the rest of a list is unknown: its elements on no
+      // list are named once, together, as cut off that list (report_cut_off).
+      if (it != list_of_cell.end() && cut_[static_cast<std::size_t>(it->second)]) {
+        cut_off[it->second].push_back(k);
+        continue;
+      }
       if (it == list_of_cell.end()) {
         text += fixes[0] || fixes[1] || fixes[2] ? ", whose list is empty" : "";
       } else {
@@ -318,6 +323,24 @@ class Checker {
       }
       add({ProblemKind::NotListed, text, f.next_path, {k}, {}, fi, it == list_of_cell.end() ? -1 : it->second});
     }
+    for (auto& [li, ids] : cut_off) report_cut_off(f, fi, li, pre, std::move(ids));
+  }
+
+  // "C[4][6]: 2 elements after the cut, 0 and 1, are on no list": the elements of a cut list's cell
+  // that no list holds, named (the first few) so that the walk's stop does not hide them.
+  void report_cut_off(const ListFamily& f, int fi, int li, const std::string& pre, std::vector<ElementId> ids) {
+    constexpr std::size_t kNamed = 8;
+    const std::size_t n = ids.size();
+    std::string names;
+    for (std::size_t i = 0; i < std::min(n, kNamed); ++i) {
+      const bool last = i + 1 == n;
+      names += (i == 0 ? "" : last ? " and " : ", ") + el(ids[i]);
+    }
+    if (n > kNamed) names += " and " + std::to_string(n - kNamed) + " more";
+    const UserList& l = f.lists[static_cast<std::size_t>(li)];
+    const std::string count = n == 1 ? "1 element" : std::to_string(n) + " elements";
+    add({ProblemKind::NotListed, pre + slot_name(f, l.slot, user_.base) + ": " + count + " after the cut, " + names +
+         (n == 1 ? ", is" : ", are") + " on no list", f.next_path, std::move(ids), {}, fi, li});
   }
 
   // The elements whose cell matches `scope` on every axis it fixes: all, or one bucket of an

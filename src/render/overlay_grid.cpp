@@ -154,33 +154,49 @@ void draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts& coun
     const Vec2 half = v2(0.5 * title_w / ppm + 2.0 / ppm, 0.5 * kLinePx / ppm + 1.0 / ppm);
     sink.rect(Layer::Top, title_at - half, title_at + half, palette::kLabelBack);
   }
-  // Column and row numbers when cells are large enough: below and left of the grid (rows leave a
-  // gap for the y-lists' heads), or along the bottom and left edges of the free view when those
-  // edges are out of it (zoomed in). Their bands are then reserved: no id goes among them.
-  if (cell_px < 18.0) return;
+  // Column and row numbers: every cell's when cells are large enough, else (the overview) at the
+  // major lines. Below and left of the grid (rows leave a gap for the y-lists' heads), or along the
+  // bottom and left edges of the free view when those edges are out of it (zoomed in). Their bands
+  // are then reserved along the whole line, so no id sits among them or beside their ends.
+  const std::int64_t every = cell_px >= 18.0 ? 1 : major_step(cell_px);
+  if (double(every) * cell_px < 18.0) return;
+  // Cell centres, or the major lines themselves (the overview's numbers name the line).
+  const double at_of = every == 1 ? 0.5 : 0.0;
   const bool book = s.book_numbering;
   const double col_y = std::clamp(y0 - 9.0 / ppm, free.min.y() + 8.0 / ppm, std::max(free.min.y() + 8.0 / ppm, free.max.y() - 8.0 / ppm));
-  for (std::int64_t ix = lo_x; ix < hi_x; ++ix) {
-    const double cx = x0 + d * (double(ix) + 0.5);
+  const auto first = [every](std::int64_t lo) { return (lo + every - 1) / every * every; };
+  const std::int64_t last_x = every == 1 ? hi_x - 1 : std::min(hi_x, g.n[0]);
+  for (std::int64_t ix = first(lo_x); ix <= last_x; ix += every) {
+    const double cx = x0 + d * (double(ix) + at_of);
     if (cx < free.min.x() || cx > free.max.x()) continue;
     std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(book ? ix + 1 : ix));
     put(v2(cx, col_y), buf);
   }
-  const double band = 0.5 * kLinePx / ppm + 1.0 / ppm;
-  labels.reserve_world(v2(std::max(x0, free.min.x()), col_y - band), v2(std::min(x1, free.max.x()), col_y + band));
-  double row_lo = x0;
-  for (std::int64_t iy = lo_y; iy < hi_y; ++iy) {
-    const double cy = y0 + d * (double(iy) + 0.5);
+  // The column numbers' line and a line's height above and below it: a row number or an id there
+  // reads as one more column number ("41 0 1 2 3" zoomed in on mixed-sizes.json), so none goes there.
+  const double band = 0.5 * kLinePx / ppm + 1.0 / ppm, beside = (kLinePx + 2.0) / ppm;
+  labels.reserve_world(v2(free.min.x(), col_y - band - beside), v2(free.max.x(), col_y + band + beside));
+  double row_lo = x0, row_hi = std::min(x0, free.max.x()), row_bottom = HUGE_VAL, row_top = -HUGE_VAL;
+  const std::int64_t last_y = every == 1 ? hi_y - 1 : std::min(hi_y, g.n[1]);
+  for (std::int64_t iy = first(lo_y); iy <= last_y; iy += every) {
+    const double cy = y0 + d * (double(iy) + at_of);
     // Rows reading as one number with the column numbers beside them are left out.
     if (cy < col_y + 15.0 / ppm || cy > free.max.y()) continue;
     std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(book ? iy + 1 : iy));
     const double half_w = 0.5 * label_width(std::strlen(buf)) / ppm;
     const double row_lo_x = free.min.x() + 3.0 / ppm + half_w;
     const double row_x = std::clamp(x0 - kHeadGapPx / ppm - half_w, row_lo_x, std::max(row_lo_x, free.max.x() - half_w));
-    put(v2(row_x, cy), buf);
+    if (!put(v2(row_x, cy), buf)) continue;
     row_lo = std::min(row_lo, row_x - half_w);
+    row_hi = std::max(row_hi, row_x + half_w);
+    row_bottom = std::min(row_bottom, cy);
+    row_top = std::max(row_top, cy);
   }
-  labels.reserve_world(v2(row_lo, std::max(y0, col_y + band)), v2(std::min(x0, free.max.x()), std::min(y1, free.max.y())));
+  // The row numbers' column, a line past its ends too (an id there reads as one more row number).
+  if (row_bottom <= row_top) {
+    const double past = (1.5 * kLinePx + 2.0) / ppm;
+    labels.reserve_world(v2(row_lo, std::max(col_y + band + beside, row_bottom - past)), v2(row_hi, std::min(free.max.y(), row_top + past)));
+  }
 }
 
 void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& stats, const ViewFrame& v,
@@ -202,6 +218,7 @@ void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& 
   if (grid && stats.heat_map && stats.max_cell > 0) {
     lines.push_back({{{"elements per cell 1 .. " + std::to_string(std::max(1, stats.max_cell)) + " (its list's length)"}}, 5, true});
     lines.push_back({{{"bars: elements per row (its y-list), up to " + std::to_string(stats.max_row)}}});
+    if (f.pairs || f.checks || f.broadphase) lines.push_back({{{"pairs not drawn over the heat map: zoom in"}}});
   } else if (grid && !stats.heat_map) {
     lines.push_back({{{"elements per cell 1 .. " + std::to_string(palette::kCellShadeSaturation) + "+"}}, palette::kCellShadeSaturation});
   }

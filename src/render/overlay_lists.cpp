@@ -4,6 +4,7 @@
 // filter keeps all lists, the selected element's, or one row's; the stepper's list and pair stand out.
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "render/overlay_parts.hpp"
 
@@ -68,9 +69,13 @@ void draw_end(Vec2 from, Vec2 to, bool cut, Rgba colour, float width, double ppm
 // A y-list longer than this is drawn as a rail: its arcs would run together.
 constexpr std::size_t kMaxArcLinks = 12;
 
+// A rail's slot is at least this wide (px): room for its number, never a solid band of slots.
+constexpr double kMinSlotPx = 10.0;
+
 // A long y-list as the book writes it, along its row's band: head -> slot -> slot -> ... -> end,
 // evenly spaced left to right in list order, each slot joined to its element by a thin leader
 // (bold for the selected element). The order reads off the rail; the leaders say where each is.
+// A list with more slots than fit shows its two ends, numbered, and "... 790 more ..." between.
 // `wrong(from, to)` names the problem whose wrong link that is (-1: none; from -1: the head).
 template <class WrongLink>
 void draw_rail(const OverlayScene& s, const TracedList& l, const ViewFrame& v, Rgba colour, float width, bool active,
@@ -83,18 +88,52 @@ void draw_rail(const OverlayScene& s, const TracedList& l, const ViewFrame& v, R
   const Vec2 head = head_anchor(l, s.grid, e, v.free, ppm);
   const Vec2 start = v2(head.x(), y);
   sink.rect(Layer::Overlay, start - Vec2::Constant(float(3.0 / ppm)), start + Vec2::Constant(float(3.0 / ppm)), colour);
-  const double step = (x1 - x0) / double(l.chain.size());
+  // The slots shown: all when they fit, else the first and last `ends` each, with the gap between.
+  const std::size_t count = l.chain.size();
+  char id[16];
+  const int widest = std::snprintf(id, sizeof id, "%d", static_cast<int>(e.size()) + (s.book_numbering ? 1 : 0));
+  const double slot_px = std::max(kMinSlotPx, label_width(static_cast<std::size_t>(widest)) + 2.0);
+  const double rail_px = (x1 - x0) * ppm;
+  std::size_t ends = count;  // slots at each end when cut; count: not cut
+  std::string gap_text;
+  if (double(count) * slot_px > rail_px) {
+    gap_text = "... " + std::to_string(count) + " more ...";  // the widest it can be
+    const double gap_px = label_width(gap_text.size()) + 8.0;
+    ends = static_cast<std::size_t>(std::max(1.0, std::floor((rail_px - gap_px) / slot_px / 2.0)));
+    ends = std::min(ends, (count - 1) / 2);
+    gap_text = "... " + std::to_string(count - 2 * ends) + " more ...";
+  }
+  const bool cut_middle = ends < count;
+  const double gap = cut_middle ? std::max(0.0, rail_px - 2.0 * double(ends) * slot_px) / ppm : 0.0;
+  const double step = cut_middle ? slot_px / ppm : (x1 - x0) / double(count);
+  // Where chain position i sits along the rail (cut: the first `ends` from the left, the last from the right).
+  const auto slot_at = [&](std::size_t i) {
+    if (!cut_middle) return v2(x0 + step * (double(i) + 0.5), y);
+    if (i < ends) return v2(x0 + step * (double(i) + 0.5), y);
+    return v2(x1 - step * (double(count - i) - 0.5), y);
+  };
   Vec2 prev = start;
-  for (std::size_t i = 0; i < l.chain.size(); ++i) {
+  for (std::size_t i = 0; i < count; ++i) {
+    if (cut_middle && i == ends) {
+      // The hidden middle: a thin line under "... N more ...", then on to the tail's first slot.
+      i = count - ends;
+      const Vec2 next = slot_at(i);
+      const Vec2 mid = v2(0.5 * (double(prev.x()) + double(next.x())), y);
+      if (segment_in_view(v.view, prev, next)) sink.line(Layer::Overlay, prev, next, colour.with_alpha(static_cast<std::uint8_t>(colour.a / 2)), 1.0f);
+      const Vec2 text_at = mid + Vec2(0.0f, float((0.5 * kLinePx + 3.0) / ppm));
+      if (gap * ppm >= label_width(gap_text.size()) && label_inside(v.free, text_at, label_width(gap_text.size()), kLinePx, ppm))
+        labels.text(text_at, gap_text.c_str(), colour, sink);
+      prev = next - Vec2(float(step), 0.0f);
+    }
     const ElementId k = l.chain[i];
-    const Vec2 slot = v2(x0 + step * (double(i) + 0.5), y);
+    const Vec2 slot = slot_at(i);
     const bool bold = k == s.selected;
-    const Vec2 gap = Vec2(float(std::min(3.0 / ppm, 0.3 * step)), 0.0f);
+    const Vec2 gap_px = Vec2(float(std::min(3.0 / ppm, 0.3 * step)), 0.0f);
     if (segment_in_view(v.view, prev, slot)) {
       const int bad = wrong(i == 0 ? ElementId{-1} : l.chain[i - 1], k);
-      if (active) sink.line(Layer::Overlay, prev + gap, slot - gap, palette::kActiveList, 7.0f);
-      if (bad >= 0) draw_wrong_link(s, bad, prev + gap, slot - gap, true, sink);
-      else sink.arrow(Layer::Overlay, prev + gap, slot - gap, colour, width);
+      if (active) sink.line(Layer::Overlay, prev + gap_px, slot - gap_px, palette::kActiveList, 7.0f);
+      if (bad >= 0) draw_wrong_link(s, bad, prev + gap_px, slot - gap_px, true, sink);
+      else sink.arrow(Layer::Overlay, prev + gap_px, slot - gap_px, colour, width);
     }
     const Vec2 c = centre_of(e, k);
     if (segment_in_view(v.view, slot, c))
@@ -103,7 +142,6 @@ void draw_rail(const OverlayScene& s, const TracedList& l, const ViewFrame& v, R
     sink.circle(Layer::Overlay, slot, float(0.5 / ppm), colour, colour, 1.0f, bold ? 3.5f : 2.0f);
     // The element's number under its slot when the slots are wide enough: the list reads as the
     // book writes it (y_heads[iy] -> 69 -> 14 -> ... -> -1).
-    char id[16];
     const int digits = std::snprintf(id, sizeof id, "%d", s.book_numbering ? k + 1 : k);
     if (step * ppm >= label_width(static_cast<std::size_t>(digits)) + 2.0) {
       const Vec2 at = slot - Vec2(0.0f, float((0.5 * kLinePx + 3.0) / ppm));

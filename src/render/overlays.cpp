@@ -235,6 +235,14 @@ void draw_flashes(const Elements& e, std::span<const std::pair<ElementId, float>
 
 }  // namespace
 
+std::optional<std::int32_t> list_focus_row(std::optional<std::int32_t> stepper_row,
+                                           std::optional<std::array<std::int32_t, 2>> hovered_cell,
+                                           std::optional<std::int32_t> selected_row) {
+  if (stepper_row) return stepper_row;
+  if (hovered_cell) return (*hovered_cell)[1];
+  return selected_row;
+}
+
 // ---- draw_scene -------------------------------------------------------------------------------
 
 void draw_scene(const OverlayScene& s, const OverlayFlags& f, const Camera& camera, DrawSink& sink) {
@@ -268,10 +276,13 @@ void draw_scene(const OverlayScene& s, const OverlayFlags& f, const Camera& came
   if (f.elements) draw_elements(e, view, ppm, sink);
   if (f.trails) draw_trails(s.trails, sink);
   if (f.flash) draw_flashes(e, s.flashes, view, sink);
-  if (f.broadphase && s.checks != nullptr)
+  // The overview's heat map is the picture at that scale: pair segments a few pixels long would
+  // bury it (large.json settled: 40,000 of them); violations are still drawn, and zooming in shows pairs.
+  const bool overview = counts.stats.heat_map;
+  if (f.broadphase && s.checks != nullptr && !overview)
     draw_pair_list(e, s.checks->broadphase_only, view, ppm, palette::kBroadphaseOnly, 1.0f, Layer::Overlay, sink);
-  const bool confirmed = f.checks && s.checks != nullptr && !s.checks->confirmed.empty();
-  if (f.pairs && s.pairs != nullptr) {
+  const bool confirmed = f.checks && s.checks != nullptr && !s.checks->confirmed.empty() && !overview;
+  if (f.pairs && s.pairs != nullptr && !overview) {
     // A confirmed pair is drawn once, in the check's colour; the rest of A in the pairs' colour.
     if (confirmed) {
       PairList unconfirmed;

@@ -84,9 +84,10 @@ enum class ListFilter : std::uint8_t {
 inline constexpr const char* kListFilterNames[] = {"all", "selected", "row"};
 // Elements above which the filter defaults to Row: past it all lists together are a tangle.
 inline constexpr std::int64_t kRowFilterAbove = 300;
-// Row with no row hovered, stepped or selected draws every list up to this many elements, none
-// beyond (20,000 elements' lists cost more to draw than they show).
-inline constexpr std::int64_t kAllListsUpTo = 2000;
+// Row with no row hovered, stepped or selected draws every list up to this many elements (where
+// the filter starts on All anyway), none beyond: pile.json's 1,621 elements' lists all at once are a
+// hairball, and the legend says how to choose a row instead.
+inline constexpr std::int64_t kAllListsUpTo = kRowFilterAbove;
 // Cells narrower than this on screen (pixels) switch the grid to its overview: major lines and a
 // heat map of elements per cell, drawn over the bodies.
 inline constexpr double kHeatMapBelowPx = 6.0;
@@ -122,6 +123,13 @@ struct OverlayScene {
   // problems found, drawn in red over them (wrong links, elements ringed, cut lists' ends).
   const VerifyMarks* verify = nullptr;
 };
+
+// The row whose lists the Row filter keeps (and whose row-below copies are drawn): the stepper's row
+// while it is mid-frame (the lists it is building must not jump to wherever the mouse is), else the
+// hovered cell's, else the selected element's; none when none of them is given.
+[[nodiscard]] std::optional<std::int32_t> list_focus_row(std::optional<std::int32_t> stepper_row,
+                                                         std::optional<std::array<std::int32_t, 2>> hovered_cell,
+                                                         std::optional<std::int32_t> selected_row);
 
 // The colour of a list of kind `kind` ("y-list", "x-list", "cell list", ...), or of the row below's
 // copies (NBS's B[1]); the stepper's scene overlay uses the same.

@@ -41,6 +41,13 @@ struct DrawTimings {
   double render_ms = 0;   // submitting the scene to GL
   double ui_ms = 0;       // ImGui panels and their draw data
   double frame_ms = 0;    // wall time of the whole frame
+  // A window's loop fills the rest (app/window_pacing.hpp: FrameSplitClock), averaged over about half
+  // a second as FPS is, so that the parts sum to frame_ms; off-screen, `measured` stays false.
+  bool measured = false;  // the fields below and every part above are of the same frames
+  bool idle = false;      // paused with nothing moving: the loop sleeps until input comes
+  double wait_ms = 0;     // waiting for input at the top of the frame (the idle sleep included)
+  double swap_ms = 0;     // presenting the frame: the buffer swap (vsync)
+  double physics_ms = 0, detection_ms = 0, check_ms = 0;  // the pipeline's runs on these frames (physics: not overlapped)
 };
 
 // The facts of the current frame that panels show. Pointers may be null (nothing loaded yet).

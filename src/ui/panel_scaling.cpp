@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <map>
@@ -23,6 +24,7 @@ constexpr std::int64_t kSizes[] = {100, 1'000, 10'000, 100'000, 1'000'000, 10'00
 constexpr const char* kSizeLabels[] = {"1e2", "1e3", "1e4", "1e5", "1e6", "1e7"};
 constexpr const char* kPerDecadeLabels[] = {"1", "2", "3", "4", "5"};
 constexpr std::size_t kNotesShown = 20;  // in the tooltip
+constexpr float kMinPlotWidth = 300.0f;  // a plot narrower than this is hard to read: stacked instead
 
 // The index of the decade closest to n (from below).
 int size_index(std::int64_t n) {
@@ -35,14 +37,14 @@ int size_index(std::int64_t n) {
 class ScalingPanel final : public Panel {
  public:
   explicit ScalingPanel(std::shared_ptr<ScalingRunner> runner) : runner_(std::move(runner)) {
-    std::snprintf(export_path_, sizeof export_path_, "%s", "scaling.csv");
+    std::snprintf(export_path_, sizeof export_path_, "%s", kScalingExportDefault);
     for (const char* name : {"brute", "tree", "sort", "screen", "nbs"}) chosen_algorithms_[name] = true;
     chosen_layouts_.assign(scaling_layouts().size(), false);
     chosen_layouts_[0] = true;  // loose
   }
 
   [[nodiscard]] const char* title() const override { return kScalingTitle; }
-  [[nodiscard]] PanelPlace place() const override { return PanelPlace::Floating; }
+  [[nodiscard]] PanelPlace place() const override { return PanelPlace::Bottom; }
   [[nodiscard]] bool open_by_default() const override { return false; }
   [[nodiscard]] float width() const override { return 640.0f; }
 
@@ -51,11 +53,24 @@ class ScalingPanel final : public Panel {
     if (s.generation != seen_generation_) adopt(s);
     draw_choices(c.sim, s.running);
     draw_progress(c.sim, s);
-    // Both plots and the rest (~420 px) within the display; 150 px each at 720 px.
-    const float plot_h = std::clamp((ImGui::GetIO().DisplaySize.y - 420.0f) * 0.5f, 80.0f, 150.0f);
-    draw_scaling_plot("ns per element (time of one detection / N)", ScalingQuantity::NsPerElement, s.result.rows, plot_h);
-    draw_scaling_plot("bytes per element (the detector's own arrays / N)", ScalingQuantity::BytesPerElement, s.result.rows,
-                      plot_h);
+    // Docked under the scene (at most 45% of the display, host.cpp): the plots side by side where
+    // the dock is wide enough, and as tall as the dock leaves beside the ~8 lines of the rest.
+    const float line = ImGui::GetFrameHeightWithSpacing();
+    const bool side_by_side = ImGui::GetContentRegionAvail().x >= 2.0f * kMinPlotWidth;
+    const float rest = line * (side_by_side ? 8.0f : 10.0f);
+    const float plot_h = std::clamp((0.45f * ImGui::GetIO().DisplaySize.y - rest) / (side_by_side ? 1.0f : 2.0f), 80.0f, 150.0f);
+    const char* ns_title = "ns per element (time of one detection / N)";
+    const char* bytes_title = "bytes per element (the detector's own arrays / N)";
+    if (side_by_side && ImGui::BeginTable("##plots", 2)) {
+      ImGui::TableNextColumn();
+      draw_scaling_plot(ns_title, ScalingQuantity::NsPerElement, s.result.rows, plot_h);
+      ImGui::TableNextColumn();
+      draw_scaling_plot(bytes_title, ScalingQuantity::BytesPerElement, s.result.rows, plot_h);
+      ImGui::EndTable();
+    } else {
+      draw_scaling_plot(ns_title, ScalingQuantity::NsPerElement, s.result.rows, plot_h);
+      draw_scaling_plot(bytes_title, ScalingQuantity::BytesPerElement, s.result.rows, plot_h);
+    }
     std::vector<std::string> algorithms, layouts;
     for (const ScalingRow& r : s.result.rows) {
       if (std::find(algorithms.begin(), algorithms.end(), r.algorithm) == algorithms.end()) algorithms.push_back(r.algorithm);
@@ -184,8 +199,11 @@ class ScalingPanel final : public Panel {
     ImGui::BeginDisabled(s.running || s.result.rows.empty());
     if (ImGui::Button("Export CSV")) {
       try {
-        write_scaling_csv(std::string(export_path_), s.result.rows);
-        export_message_ = "wrote " + plural(static_cast<long long>(s.result.rows.size()), "row") + " to " + export_path_;
+        const std::string path = resolve_export_path(export_path_);
+        if (path.empty()) throw Error(std::string(export_path_) + ": HOME is not set");
+        if (const auto dir = std::filesystem::path(path).parent_path(); !dir.empty()) std::filesystem::create_directories(dir);
+        write_scaling_csv(path, s.result.rows);
+        export_message_ = "wrote " + plural(static_cast<long long>(s.result.rows.size()), "row") + " to " + path;
         export_failed_ = false;
       } catch (const std::exception& e) {  // Error, or the file system's own (never out of the window's frame)
         export_message_ = e.what();
@@ -214,6 +232,24 @@ class ScalingPanel final : public Panel {
 };
 
 }  // namespace
+
+std::string resolve_export_path(const std::string& typed) {
+  const auto env = [](const char* name) {
+    const char* v = std::getenv(name);
+    return std::string(v != nullptr ? v : "");
+  };
+  const std::string xdg = "$XDG_DATA_HOME";
+  if (typed.compare(0, xdg.size(), xdg) == 0) {
+    std::string base = env("XDG_DATA_HOME");
+    if (base.empty()) {
+      if (env("HOME").empty()) return "";
+      base = env("HOME") + "/.local/share";
+    }
+    return base + typed.substr(xdg.size());
+  }
+  if (typed.compare(0, 2, "~/") == 0) return env("HOME").empty() ? "" : env("HOME") + typed.substr(1);
+  return typed;
+}
 
 std::unique_ptr<Panel> make_scaling_panel(std::shared_ptr<ScalingRunner> runner) {
   return std::make_unique<ScalingPanel>(std::move(runner));

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "io/plural.hpp"
+#include "ui/frame_split.hpp"
 #include "ui/panels.hpp"
 
 namespace nbscope::ui {
@@ -59,23 +60,15 @@ class StatsPanel final : public Panel {
       ImGui::TextDisabled("timings hidden (--no-timings)");
       return;
     }
-    if (s.fps > 0)
-      ImGui::Text("%.1f FPS   frame %s ms", s.fps, format_ms(s, s.drawing.frame_ms).c_str());
-    else
-      ImGui::TextUnformatted("off-screen frame (no FPS)");
+    // Every part of the frame named (ui/frame_split.hpp): in a window they add up to the frame time.
+    ImGui::TextUnformatted(frame_rate_line(s.drawing, s.fps).c_str());
     const FrameTimings timings = s.report() != nullptr ? s.report()->timings : FrameTimings{};
     if (ImGui::BeginTable("split", 2)) {
-      const std::pair<const char*, double> rows[] = {
-          {"physics", timings.physics_ms}, {"detection", timings.detection_ms}, {"check", timings.check_ms},
-          {"trace (lists)", s.drawing.trace_ms}, {"overlays", s.drawing.overlay_ms}, {"render", s.drawing.render_ms},
-          {"panels", s.drawing.ui_ms}};
-      for (const auto& [name, ms] : rows) {
+      for (const FrameSplitRow& row : frame_split_rows(s.drawing, timings)) {
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(name);
+        ImGui::TextUnformatted(row.name.c_str());
         ImGui::TableNextColumn();
-        // Physics stepped on a worker thread while the frame before was drawn: not in this frame's sum.
-        const bool overlapped = &ms == &rows[0].second && s.drawing.physics_overlapped;
-        ImGui::Text("%s ms%s", format_ms(s, ms).c_str(), overlapped ? " (overlapped)" : "");
+        ImGui::Text("%s ms%s", format_ms(s, row.ms).c_str(), row.note.empty() ? "" : (" (" + row.note + ")").c_str());
       }
       ImGui::EndTable();
     }

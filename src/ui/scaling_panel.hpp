@@ -39,7 +39,15 @@ class ScalingRunner {
   [[nodiscard]] virtual ScalingStatus status() const = 0;
 };
 
-// The Scaling panel on `runner` (floating, closed by default).
+// The Export box's default: the user's data directory, never a source tree (the cwd of a run from a
+// checkout is one). Shown as typed, so the panel looks the same on every machine.
+inline constexpr const char* kScalingExportDefault = "$XDG_DATA_HOME/nbscope/scaling.csv";
+// The file an Export path names: a leading "$XDG_DATA_HOME" is that variable, or ~/.local/share when
+// it is unset or empty (the XDG default); a leading "~/" is $HOME; any other path as typed. "" when
+// the variable it needs is unset.
+std::string resolve_export_path(const std::string& typed);
+
+// The Scaling panel on `runner` (docked at the bottom, closed by default).
 std::unique_ptr<Panel> make_scaling_panel(std::shared_ptr<ScalingRunner> runner);
 
 }  // namespace nbscope::ui

@@ -2,6 +2,8 @@
 // rows arrive in the status; Cancel stops it; rows shown from a CSV replace it. No timing values.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include "app/scaling_job.hpp"
 
 namespace nbscope {
@@ -68,6 +70,25 @@ TEST(ScalingJob, ShownRowsReplaceTheRun) {
   EXPECT_EQ(s.source, "fixture.csv");
   EXPECT_EQ(s.plan.algorithms, std::vector<std::string>{"nbs"});
   EXPECT_EQ(s.generation, 1u);
+}
+
+TEST(ScalingPanel, ExportDefaultsToTheUsersDataDirectoryNeverTheSourceTree) {
+  const char* old_xdg = std::getenv("XDG_DATA_HOME");
+  const std::string kept_xdg = old_xdg != nullptr ? old_xdg : "";
+  ::setenv("XDG_DATA_HOME", "/data/of/user", 1);
+  EXPECT_EQ(ui::resolve_export_path(ui::kScalingExportDefault), "/data/of/user/nbscope/scaling.csv");
+  ::unsetenv("XDG_DATA_HOME");
+  const std::string home = std::getenv("HOME") != nullptr ? std::getenv("HOME") : "";
+  if (!home.empty()) {
+    EXPECT_EQ(ui::resolve_export_path(ui::kScalingExportDefault), home + "/.local/share/nbscope/scaling.csv");
+  }
+  // The default is no path relative to the working directory (a run from a checkout would write into it).
+  EXPECT_EQ(std::string(ui::kScalingExportDefault).rfind("$XDG_DATA_HOME/", 0), 0u);
+  if (!home.empty()) {
+    EXPECT_EQ(ui::resolve_export_path("~/x.csv"), home + "/x.csv");
+  }
+  EXPECT_EQ(ui::resolve_export_path("out/x.csv"), "out/x.csv");
+  if (old_xdg != nullptr) ::setenv("XDG_DATA_HOME", kept_xdg.c_str(), 1);
 }
 
 }  // namespace

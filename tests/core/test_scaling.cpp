@@ -3,6 +3,7 @@
 // bad CSVs refused with their line. No assertion on a timing value: speed lives in the benchmarks.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <sstream>
 #include <tuple>
@@ -81,6 +82,33 @@ TEST(Scaling, OneRowPerDetectorLayoutAndSizeBruteSkippedAboveItsCap) {
 
 // A detector whose run at the next N would pass max_run_seconds (projected from its last run) is
 // skipped there and the note says why: here every run is "too long" after the first size.
+TEST(Scaling, BytesPerElementOfAPointDoNotDependOnWhatRanBeforeIt) {
+  // Dense at N=1000 measured alone, and after a loose run up to N=1e5: the same bytes per element
+  // (a detector kept across points reported the capacity of the bigger run before, 4,063 B/el for
+  // 17.4 alone).
+  ScalingPlan alone;
+  alone.algorithms = {"nbs", "screen", "sort"};
+  alone.layouts = {Layout::Dense};
+  alone.n_min = alone.n_max = 1000;
+  alone.min_seconds = alone.max_seconds = 0;
+  ScalingPlan after = alone;
+  after.layouts = {Layout::Loose, Layout::Dense};
+  after.n_max = 100'000;
+  after.points_per_decade = 1;
+  const ScalingResult a = run_scaling(alone, {}, nullptr);
+  const ScalingResult b = run_scaling(after, {}, nullptr);
+  for (const ScalingRow& first : a.rows) {
+    SCOPED_TRACE(first.algorithm);
+    const auto same = std::find_if(b.rows.begin(), b.rows.end(), [&](const ScalingRow& r) {
+      return r.algorithm == first.algorithm && r.layout == first.layout && r.n == first.n;
+    });
+    ASSERT_NE(same, b.rows.end());
+    EXPECT_GT(first.bytes_per_element, 0);
+    EXPECT_EQ(same->bytes_per_element, first.bytes_per_element);
+  }
+  EXPECT_EQ(a.rows.size(), 3u);
+}
+
 TEST(Scaling, APointThatWouldRunTooLongIsSkipped) {
   ScalingPlan plan = quick_plan();
   plan.algorithms = {"nbs"};

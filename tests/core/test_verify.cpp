@@ -103,7 +103,19 @@ TEST_F(ScreenBugs, ACycleIsFoundNotFollowed) {
   EXPECT_EQ(c.first().kind, ProblemKind::Cycle);
   EXPECT_EQ(c.first().text, "C[4][6] -> 3 -> 1 -> 3: a cycle (E[1] = 3 leads back)");
   EXPECT_EQ(c.first().where, "$.next[1]");
-  EXPECT_EQ(c.verdict.problem_count, 1);  // 0, behind the cycle, is not reported dropped as well
+  // 0, behind the cycle, is named once as cut off C[4][6], not as a dropped element of its own.
+  EXPECT_TRUE(c.has(ProblemKind::NotListed, "C[4][6]: 1 element after the cut, 0, is on no list")) << c.all();
+  EXPECT_EQ(c.verdict.problem_count, 2);
+}
+
+TEST_F(ScreenBugs, ElementsCutOffAListByARepeatAreNamed) {
+  d["next"][3] = 8;  // C[4][6] -> 3 -> 8, but 8 heads C[1][6], walked before it: 1 and 0 are cut off
+  const Checked c = check(e, d);
+  EXPECT_TRUE(c.has(ProblemKind::TwoLists, "E[3] = 8, but element 8 is already on C[1][6]'s list")) << c.all();
+  EXPECT_TRUE(c.has(ProblemKind::NotListed, "C[4][6]: 2 elements after the cut, 0 and 1, are on no list")) << c.all();
+  EXPECT_EQ(c.verdict.problem_count, 2) << c.all();
+  for (const verify::Problem& p : c.verdict.problems)
+    if (p.kind == ProblemKind::NotListed) { EXPECT_EQ(p.elements, (std::vector<ElementId>{0, 1})); }
 }
 
 TEST_F(ScreenBugs, AnIndexOutOfRangeIsNamed) {
