@@ -4,8 +4,8 @@
  * The programmer resets every head at the start of the frame and thinks the per-row clearing an
  * optimisation. It is not: the next row's x-lists start from this row's heads, so an element is
  * tested against the row below twice (from its own list and from B[1]) and against elements two
- * rows away where a column stays empty. nbscope: A==R (the pair given twice in A), the Stepper at
- * the first of the two tests.
+ * rows away where a column stays empty. nbscope: the pair is given twice, which the API forbids:
+ * the run stops with exit 2, naming the frame and the pair.
  *
  * (Leaving B[1] uncleared instead only lengthens the lists within a frame: each B[1] list is pushed
  * in the same order on top of older chains, so no pair is lost or doubled and no invariant can
