@@ -69,7 +69,7 @@ typedef struct nbscope_output {
    * nonzero when the pair limit is reached (stop and return nonzero from nbscope_detect). */
   int (*add_pair)(void *ctx, int32_t i, int32_t j);
   /* n * dim integers: cells[k * dim + a] is element k's integerised coordinate on axis a, as the
-   * plugin computed it (NBSCOPE_CAP_CELLS). Prefilled with -1. */
+   * plugin computed it. Prefilled with -1; NULL unless the plugin declares NBSCOPE_CAP_CELLS. */
   int32_t *cells;
   /* Says why nbscope_detect failed (copied); call before returning nonzero. */
   void (*fail)(void *ctx, const char *message);

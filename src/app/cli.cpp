@@ -36,6 +36,22 @@ std::optional<std::string> Args::value(const std::string& name) {
   return std::nullopt;
 }
 
+std::vector<std::string> Args::values(const std::string& name) {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < args_.size(); ++i) {
+    if (used_[i]) continue;
+    if (args_[i] == name) {
+      if (i + 1 >= args_.size()) throw Error(name + ": missing value");
+      used_[i] = used_[i + 1] = true;
+      out.push_back(args_[++i]);
+    } else if (args_[i].rfind(name + "=", 0) == 0) {
+      used_[i] = true;
+      out.push_back(args_[i].substr(name.size() + 1));
+    }
+  }
+  return out;
+}
+
 bool Args::has(const std::string& name) const {
   for (std::size_t i = 0; i < args_.size(); ++i)
     if (!used_[i] && (args_[i] == name || args_[i].rfind(name + "=", 0) == 0)) return true;

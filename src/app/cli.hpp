@@ -21,6 +21,8 @@ class Args {
   bool flag(const std::string& name);
   // The value of `--name VALUE` or `--name=VALUE`; Error when the value is missing.
   std::optional<std::string> value(const std::string& name);
+  // Every value of a repeatable `--name VALUE` (or `--name=VALUE`), in order; Error when one is missing.
+  std::vector<std::string> values(const std::string& name);
   // True when `--name` or `--name=VALUE` is among the arguments not yet taken; takes nothing.
   [[nodiscard]] bool has(const std::string& name) const;
   // Like value(), parsed as an integer in [min, max] ("1e6" is one too); Error names the flag otherwise.
@@ -43,6 +45,10 @@ class Args {
   std::vector<bool> used_;
   std::string command_;
 };
+
+// Loads the detector plugins of every --detector-lib (after --detector-timeout) when `command` takes
+// them, before the command resolves an algorithm name (app/cli_plugins.cpp).
+void load_detector_libs(Args& args, const std::string& command);
 
 // The names of a comma-separated list ("nbs,sort"); Error naming `flag` for an empty or repeated name.
 std::vector<std::string> split_names(const std::string& flag, const std::string& text);

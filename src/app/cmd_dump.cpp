@@ -8,6 +8,7 @@
 #include "app/grid_flags.hpp"
 #include "core/detector.hpp"
 #include "core/error.hpp"
+#include "core/plugin_detector.hpp"
 #include "io/csv.hpp"
 #include "io/dump_json.hpp"
 
@@ -38,6 +39,8 @@ int run_dump(Args& args) {
   PairList pairs;
   try {
     detector->detect_traced(elements, options, pairs, trace);
+  } catch (const PluginError&) {
+    throw;  // names its library and frame
   } catch (const Error& e) {
     throw Error(*input + ": " + e.what());  // where: the grid or the pairs of this file
   }

@@ -9,6 +9,7 @@
 #include "app/grid_flags.hpp"
 #include "core/detector.hpp"
 #include "core/error.hpp"
+#include "core/plugin_detector.hpp"
 #include "io/atomic_file.hpp"
 #include "io/csv.hpp"
 #include "io/plural.hpp"
@@ -40,6 +41,8 @@ int run_pairs(Args& args) {
     const auto t0 = std::chrono::steady_clock::now();
     try {
       detector->detect(elements, options, pairs);
+    } catch (const PluginError&) {
+      throw;  // names its library and frame
     } catch (const Error& e) {
       throw Error(*input + ": " + e.what());  // where: the grid or the pairs of this file
     }

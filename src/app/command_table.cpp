@@ -39,6 +39,16 @@ const std::vector<OptionSpec>& grid_options() {
   return options;
 }
 
+const std::vector<OptionSpec>& plugin_options() {
+  static const std::vector<OptionSpec> options = {
+      {"--detector-lib", "PATH.so", "",
+       "loads a detector plugin (include/nbscope/detector.h), named then as a built-in; repeatable. One that breaks the API, "
+       "crashes or hangs stops the run: exit 2, naming it and the frame"},
+      {"--detector-timeout", "SECONDS", "60", "how long one detection of a plugin may take before the run stops (0: no limit)"},
+  };
+  return options;
+}
+
 OptionSpec gl_option() {
   return {"--gl", "osmesa|egl|auto", "auto",
           "the off-screen GL of --screenshot: OSMesa or EGL (surfaceless); auto takes OSMesa when libOSMesa.so.8 is there, else EGL"};
@@ -100,7 +110,8 @@ CommandSpec gui_command() {
                                          "rendering goes)"},
          {"--size", "WxH", "", "the window's (and the screenshot's) size in pixels"}}},
        {"your arrays (gui --input ELEMENTS.csv --arrays ARRAYS.json)", arrays},
-       {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()}},
+       {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()},
+       {kPluginOptionsTitle, plugin_options()}},
       {"nbscope", "nbscope --scene assets/scenes/gas.json --algorithm sort",
        "xvfb-run nbscope gui --scene assets/scenes/pile.json --frames 60 --screenshot pile.png",
        "nbscope gui --input assets/examples/nine.csv --arrays assets/examples/nine_screen_bug.json"},
@@ -171,7 +182,8 @@ CommandSpec headless_command() {
          {"--n", "MIN..MAX", "1000..1000000", "with --scaling run: the sizes, as nbscope scaling --n"},
          {"--points-per-decade", "K", "2", "with --scaling run: sizes a decade, as nbscope scaling --points-per-decade"}}},
        {"screenshot (no display needed)", output},
-       {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()}},
+       {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()},
+       {kPluginOptionsTitle, plugin_options()}},
       {"nbscope headless --scene assets/scenes/default.json --frames 120 --algorithm all",
        "nbscope headless --scene assets/scenes/pile.json --inject-fault drop-pair --stop-at-violation --screenshot v.png",
        "nbscope headless --scene assets/scenes/gas.json --record gas.nbsrec --report gas.json"},
@@ -216,7 +228,8 @@ CommandSpec replay_command() {
          {"--screenshot", "OUT.png", "", "headless: renders the last frame off-screen, as headless --screenshot"},
          {"--size", "WxH", "", "the window's or the screenshot's size in pixels"},
          gl_option()}},
-       {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()}},
+       {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()},
+       {kPluginOptionsTitle, plugin_options()}},
       {"nbscope replay gas.nbsrec", "nbscope replay gas.nbsrec --headless --algorithm all --report replay.json"},
       "0 every check passed, 1 a check failed, 2 bad input (one line on stderr)",
   };

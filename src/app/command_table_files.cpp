@@ -29,7 +29,8 @@ CommandSpec pairs_command() {
                               {"--output", "PAIRS.csv", "stdout", "where the pairs go"},
                               {"--repeat", "K", "1", "runs detection K times and checks that every run agrees"},
                               {"--max-pairs", "M", "50,000,000: 400 MB of pairs, about 600 MB at the peak while the list grows",
-                               "stops with an error past M pairs"}})}},
+                               "stops with an error past M pairs"}})},
+       {kPluginOptionsTitle, plugin_options()}},
       {"nbscope pairs --input assets/examples/nine.csv", "nbscope pairs --input big.csv --algorithm sort --output pairs.csv --repeat 3"},
       "0 pairs written, 2 bad input (one line on stderr)",
   };
@@ -48,7 +49,8 @@ CommandSpec dump_command() {
        "and next; sort: sorted cell keys and order; brute, box2d: counts only."},
       {{"options", with_grid({{"--input", "ELEMENTS.csv", "", "the elements (required)"},
                               {"--algorithm", "NAME", "", "the detector whose arrays are written (required)"},
-                              {"--format", "json", "json", "the output format (JSON is the only one)"}})}},
+                              {"--format", "json", "json", "the output format (JSON is the only one)"}})},
+       {kPluginOptionsTitle, plugin_options()}},
       {"nbscope dump --input assets/examples/nine.csv --algorithm screen --cell-size 1 --origin 0,0 --cells 10,10"},
       "0 arrays written, 2 bad input (one line on stderr)",
   };
@@ -115,16 +117,22 @@ CommandSpec scaling_command() {
                     {"--n", "MIN..MAX", "1000..1000000", "the range of N (1e3-style powers too)"},
                     {"--points-per-decade", "K", "2", "sizes a decade, on a log scale"},
                     {"--output", "OUT.csv", "", "writes the table as CSV"},
-                    {"--quiet", "", "", "no progress bar"}}}},
+                    {"--quiet", "", "", "no progress bar"}}},
+       {kPluginOptionsTitle, plugin_options()}},
       {"nbscope scaling --algorithm nbs,sort --n 1e3..1e5 --output scaling.csv"},
       "0 measured, 2 bad input (one line on stderr)",
   };
 }
 
 CommandSpec algorithms_command() {
-  return {"algorithms", run_algorithms, "lists the detectors", {"nbscope algorithms"},
-          {"One line per detector: its name, the dimensions it handles (2D, 3D) and what it is."}, {}, {"nbscope algorithms"},
-          "0"};
+  return {"algorithms",
+          run_algorithms,
+          "lists the detectors",
+          {"nbscope algorithms [--detector-lib PATH.so ...]"},
+          {"One line per detector: its name, the dimensions it handles (2D, 3D) and what it is; a plugin's (--detector-lib) too."},
+          {{kPluginOptionsTitle, plugin_options()}},
+          {"nbscope algorithms", "nbscope algorithms --detector-lib ./my_nbs.so"},
+          "0, 2 bad input (one line on stderr)"};
 }
 
 }  // namespace

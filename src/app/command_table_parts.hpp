@@ -11,6 +11,10 @@ namespace nbscope {
 const std::vector<OptionSpec>& rendering_options();
 // --cell-size, --origin, --cells: the grid pins of pairs, dump, verify and gui --arrays (app/grid_flags.cpp).
 const std::vector<OptionSpec>& grid_options();
+// --detector-lib, --detector-timeout: the detector plugins of gui, headless, replay, pairs, dump, scaling, algorithms.
+const std::vector<OptionSpec>& plugin_options();
+// Their heading on every page that lists them.
+inline constexpr const char* kPluginOptionsTitle = "detector plugins (gui, headless, replay, pairs, dump, scaling, algorithms)";
 // --gl: the off-screen GL of a screenshot (headless, replay, verify).
 OptionSpec gl_option();
 // The rows of pairs, dump, verify, scaling and algorithms, in --help order.

@@ -37,6 +37,7 @@ int dispatch(const std::string& command, const std::vector<std::string>& rest) {
     return 0;
   }
   nbscope::Args args(rest, command);
+  nbscope::load_detector_libs(args, command);  // before any algorithm name is resolved
   return spec->run(args);
 }
 

@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "core/error.hpp"
+#include "core/plugin_detector.hpp"
 
 namespace nbscope {
 
@@ -85,6 +86,8 @@ void Pipeline::detect(Lane& lane, LaneResult& out, const Elements& input, const 
     }
     apply_output_fault(options_.fault, out.grid, out.cells, out.pairs);
     out.report.timings.detection_ms = ms_since(t0);
+  } catch (const PluginError&) {
+    throw;  // already names the library, the plugin and the frame
   } catch (const Error& e) {
     throw Error(where + out.algorithm + ": " + e.what());
   }
@@ -109,6 +112,7 @@ const FrameResult& Pipeline::run(const FrameInput& in) {
     detected_on_source_ = false;
   }
   const Elements& input = detector_input(source);
+  detect_options_.frame = frame;  // for a plugin's messages
   result_.trace.reset();  // made again on request, for this frame and detector
   result_.frame = frame;
   result_.time = source.time();

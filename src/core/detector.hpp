@@ -20,6 +20,7 @@ namespace nbscope {
 struct DetectOptions {
   GridOptions grid;                        // cell size / origin overrides (defaults: docs/architecture.md "Cells")
   std::size_t max_pairs = kDefaultMaxPairs;  // past this detection throws Error
+  std::int64_t frame = 0;                    // the frame detected, for a plugin's messages (core/plugin_detector.hpp)
 };
 
 // A contact-detection algorithm. Instances keep their arrays between calls (as a simulation

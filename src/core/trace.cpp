@@ -34,6 +34,12 @@ void TraceLog::phase(std::uint8_t line, const char* label, std::int32_t index, s
 
 void TraceLog::push(std::uint8_t line, const char* kind, int heads, std::int64_t list_index, int next, ElementId k,
                     std::int32_t old_head, std::int32_t old_next, std::int32_t ix, std::int32_t iy, std::int32_t iz) {
+  push_written(line, kind, heads, list_index, next, k, old_head, old_next, k, old_head, ix, iy, iz);
+}
+
+void TraceLog::push_written(std::uint8_t line, const char* kind, int heads, std::int64_t list_index, int next,
+                            ElementId k, std::int32_t old_head, std::int32_t old_next, std::int32_t new_head,
+                            std::int32_t new_next, std::int32_t ix, std::int32_t iy, std::int32_t iz) {
   TraceEvent e;
   e.op = TraceOp::Push;
   e.line = line;
@@ -44,19 +50,24 @@ void TraceLog::push(std::uint8_t line, const char* kind, int heads, std::int64_t
   e.cell[1] = iy;
   e.cell[2] = iz;
   e.write_count = 2;
-  e.writes[0] = ArrayWrite{next, old_next, old_head, k};
-  e.writes[1] = ArrayWrite{heads, old_head, k, list_index};
+  e.writes[0] = ArrayWrite{next, old_next, new_next, k};
+  e.writes[1] = ArrayWrite{heads, old_head, new_head, list_index};
   record(e);
 }
 
 void TraceLog::clear(std::uint8_t line, const char* kind, int heads, std::int64_t list_index, std::int32_t old_head) {
+  clear_written(line, kind, heads, list_index, old_head, -1);
+}
+
+void TraceLog::clear_written(std::uint8_t line, const char* kind, int heads, std::int64_t list_index,
+                             std::int32_t old_head, std::int32_t new_head) {
   TraceEvent e;
   e.op = TraceOp::Clear;
   e.line = line;
   e.label = kind;
   e.index = static_cast<std::int32_t>(list_index);
   e.write_count = 1;
-  e.writes[0] = ArrayWrite{heads, old_head, -1, list_index};
+  e.writes[0] = ArrayWrite{heads, old_head, new_head, list_index};
   record(e);
 }
 

@@ -72,8 +72,16 @@ class TraceLog {
   // Element k pushed onto list `list_index` of heads array `heads`, linking through array `next`.
   void push(std::uint8_t line, const char* kind, int heads, std::int64_t list_index, int next, ElementId k,
             std::int32_t old_head, std::int32_t old_next, std::int32_t ix, std::int32_t iy, std::int32_t iz);
+  // As push(), with the values the detector really wrote (a plugin's buggy push may write next[k] =
+  // -1): next[k] from old_next to new_next, heads[list] from old_head to new_head.
+  void push_written(std::uint8_t line, const char* kind, int heads, std::int64_t list_index, int next, ElementId k,
+                    std::int32_t old_head, std::int32_t old_next, std::int32_t new_head, std::int32_t new_next,
+                    std::int32_t ix, std::int32_t iy, std::int32_t iz);
   // Head `list_index` of array `heads` reset from old_head to -1.
   void clear(std::uint8_t line, const char* kind, int heads, std::int64_t list_index, std::int32_t old_head);
+  // As clear(), with the value the detector really wrote (a plugin's buggy clear may not write -1).
+  void clear_written(std::uint8_t line, const char* kind, int heads, std::int64_t list_index, std::int32_t old_head,
+                     std::int32_t new_head);
   // Cell (ix, iy, iz) visited under the contact mask of element k.
   void visit_cell(std::uint8_t line, ElementId k, std::int32_t ix, std::int32_t iy, std::int32_t iz);
   // Pair (k, other) tested; contact is the result.

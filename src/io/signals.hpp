@@ -28,6 +28,13 @@ void install_stop_handlers();
 // "SIGINT", "SIGTERM", "SIGHUP", else "a signal".
 [[nodiscard]] const char* signal_name(int sig);
 
+// Until disarm_crash_report(), a crash (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT) writes `head`, the
+// signal's name and `tail` to stderr, removes the live temporaries and _exit(2)s: a detector plugin's
+// crash as one error line (io/plugin_library.hpp, io/signals_crash.cpp). Both strings outlive the arming.
+void arm_crash_report(const char* head, const char* tail);
+// Ends the report: from now on these signals go to the actions arm_crash_report() replaced.
+void disarm_crash_report();
+
 // While it lives, SIGINT, SIGTERM and SIGHUP only note the stop (an ignored SIGHUP, as under
 // nohup, stays ignored); the actions before it come back when it ends. Clears the noted stop.
 class StopOnSignals {

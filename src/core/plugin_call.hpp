@@ -1,0 +1,58 @@
+// nbscope core: one call of a plugin's nbscope_detect as its callbacks see it (the ctx of the output
+// and trace tables). Private to plugin_detector.cpp and plugin_trace.cpp.
+#pragma once
+#include <nbscope/detector.h>
+
+#include <cstdint>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "core/pairs.hpp"
+#include "core/trace.hpp"
+
+namespace nbscope {
+
+// What the callbacks of one nbscope_detect call share; the first breach stops every later callback.
+struct PluginCall {
+  // One declared array: where the plugin keeps it and what nbscope last knew it to hold.
+  struct Array {
+    const std::int32_t* live = nullptr;
+    std::vector<std::int32_t> shadow;  // contents before the writes the plugin has not yet described
+  };
+
+  PairList* pairs = nullptr;
+  std::int64_t n = 0;
+  std::size_t max_pairs = 0;
+  bool limit_hit = false;
+  std::string failure;            // fail()'s message
+  std::string breach;             // the first broken rule, in words ("" while none)
+  std::exception_ptr exception;   // an exception of nbscope's own (out of memory, a trace consumer's)
+  TraceLog* log = nullptr;        // null when untraced
+  std::int32_t lines = 0;         // the plugin's pseudocode lines in this dimension
+  std::vector<Array> arrays;
+
+  // True once a breach or an exception ended the call's useful work.
+  [[nodiscard]] bool stopped() const { return !breach.empty() || exception; }
+  // Keeps `what` as the breach unless one is already kept (never throws).
+  void breach_with(const std::string& what) noexcept {
+    if (stopped()) return;
+    try {
+      breach = what;
+    } catch (...) {
+      exception = std::current_exception();
+    }
+  }
+  // Keeps the exception being handled (inside a catch block), unless one is already kept.
+  void keep_exception() noexcept {
+    if (!exception) exception = std::current_exception();
+  }
+};
+
+// The trace table whose ctx is `call` (plugin_trace.cpp).
+nbscope_trace plugin_trace_table(PluginCall& call);
+
+// `text` (a plugin's label or kind; may be null) as a string that lives as long as the process.
+const char* intern_plugin_label(const char* text);
+
+}  // namespace nbscope

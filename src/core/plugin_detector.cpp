@@ -1,0 +1,247 @@
+// nbscope core: a detector plugin's C tables as a Detector (plugin_detector.hpp). The trace table's
+// callbacks live in plugin_trace.cpp; both write into one PluginCall (plugin_call.hpp).
+#include "core/plugin_detector.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <new>
+
+#include "core/plugin_call.hpp"
+
+namespace nbscope {
+
+namespace {
+
+bool plugin_name_ok(const char* name) {
+  if (name == nullptr || *name == '\0') return false;
+  std::size_t length = 0;
+  for (const char* c = name; *c != '\0'; ++c, ++length) {
+    const bool ok = (*c >= 'a' && *c <= 'z') || (*c >= '0' && *c <= '9') || *c == '_' || *c == '-';
+    if (!ok || length >= 64) return false;
+  }
+  return true;
+}
+
+void check_pseudocode(const char* const* lines, std::int32_t count, const char* dim) {
+  const std::string where = std::string("pseudocode_") + dim;
+  if (count < 0 || count > kMaxPluginPseudocodeLines)
+    throw Error(where + "_lines is " + std::to_string(count) + ", not from 0 to " + std::to_string(kMaxPluginPseudocodeLines));
+  if (count > 0 && lines == nullptr) throw Error(where + " is NULL but " + where + "_lines is " + std::to_string(count));
+  for (std::int32_t i = 0; i < count; ++i)
+    if (lines[i] == nullptr) throw Error(where + "[" + std::to_string(i) + "] is NULL");
+}
+
+}  // namespace
+
+// The output table's callbacks. C linkage: the plugin calls them through C function pointers. They
+// never throw: a breach is kept in the PluginCall and the answer is "stop".
+extern "C" {
+static int nbscope_plugin_add_pair(void* ctx, std::int32_t i, std::int32_t j) {
+  auto& call = *static_cast<PluginCall*>(ctx);
+  if (call.stopped()) return 1;
+  if (i < 0 || i >= call.n || j < 0 || j >= call.n) {
+    const std::int32_t bad = (i < 0 || i >= call.n) ? i : j;
+    call.breach_with("add_pair(" + std::to_string(i) + ", " + std::to_string(j) + "): element " + std::to_string(bad) +
+                     " is out of range [0, " + std::to_string(call.n) + ")");
+    return 1;
+  }
+  if (i == j) {
+    call.breach_with("add_pair(" + std::to_string(i) + ", " + std::to_string(j) + "): an element paired with itself");
+    return 1;
+  }
+  if (call.pairs->size() >= call.max_pairs) {
+    call.limit_hit = true;
+    return 1;
+  }
+  try {
+    call.pairs->push_back(i < j ? Pair{i, j} : Pair{j, i});
+  } catch (...) {
+    call.keep_exception();
+    return 1;
+  }
+  return 0;
+}
+
+static void nbscope_plugin_fail(void* ctx, const char* message) {
+  auto& call = *static_cast<PluginCall*>(ctx);
+  try {
+    call.failure = message != nullptr ? std::string(message) : std::string();
+  } catch (...) {
+    call.keep_exception();
+  }
+}
+}  // extern "C"
+
+void check_plugin_info(const nbscope_detector_info* info) {
+  if (info == nullptr) throw Error("nbscope_detector_describe() returned NULL");
+  if (info->api_version != NBSCOPE_DETECTOR_API_VERSION)
+    throw Error("nbscope_detector_describe() says plugin API version " + std::to_string(info->api_version) +
+                "; this nbscope speaks " + std::to_string(NBSCOPE_DETECTOR_API_VERSION));
+  if (!plugin_name_ok(info->name))
+    throw Error(info->name == nullptr ? std::string("its name is NULL")
+                                      : "its name '" + printable_line(std::string(info->name).substr(0, 64)) +
+                                            "' is not 1 to 64 of [a-z0-9_-]");
+  if ((info->capabilities & (NBSCOPE_CAP_2D | NBSCOPE_CAP_3D)) == 0)
+    throw Error("its capabilities name neither NBSCOPE_CAP_2D nor NBSCOPE_CAP_3D");
+  check_pseudocode(info->pseudocode_2d, info->pseudocode_2d_lines, "2d");
+  check_pseudocode(info->pseudocode_3d, info->pseudocode_3d_lines, "3d");
+}
+
+DetectorInfo plugin_detector_info(const PluginSymbols& symbols, const nbscope_detector_info& info) {
+  DetectorInfo entry;
+  entry.name = info.name;
+  entry.summary = info.summary != nullptr ? info.summary : "";
+  entry.summary += (entry.summary.empty() ? "" : " ") + std::string("(plugin ") + symbols.library + ")";
+  entry.dim2 = (info.capabilities & NBSCOPE_CAP_2D) != 0;
+  entry.dim3 = (info.capabilities & NBSCOPE_CAP_3D) != 0;
+  entry.traces = (info.capabilities & NBSCOPE_CAP_TRACES) != 0;
+  entry.has_lists = (info.capabilities & NBSCOPE_CAP_LISTS) != 0;
+  const nbscope_detector_info* described = &info;  // lives as long as the library: never unloaded
+  entry.make = [symbols, described]() -> std::unique_ptr<Detector> {
+    return std::make_unique<PluginDetector>(symbols, *described);
+  };
+  return entry;
+}
+
+PluginDetector::PluginDetector(PluginSymbols symbols, const nbscope_detector_info& info)
+    : symbols_(std::move(symbols)), name_(info.name), capabilities_(info.capabilities) {
+  pseudocode_[0].assign(info.pseudocode_2d, info.pseudocode_2d + info.pseudocode_2d_lines);
+  pseudocode_[1].assign(info.pseudocode_3d, info.pseudocode_3d + info.pseudocode_3d_lines);
+}
+
+PluginDetector::~PluginDetector() {
+  if (symbols_.release != nullptr && state_ != nullptr) symbols_.release(state_);
+}
+
+bool PluginDetector::supports_dim(int dim) const {
+  if (dim == 2) return (capabilities_ & NBSCOPE_CAP_2D) != 0;
+  if (dim == 3) return (capabilities_ & NBSCOPE_CAP_3D) != 0;
+  return false;
+}
+
+void PluginDetector::detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) {
+  run(elements, options, out_pairs, nullptr);
+}
+
+void PluginDetector::detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs,
+                                   TraceLog& out_trace) {
+  out_trace.reset();
+  run(elements, options, out_pairs, &out_trace);
+}
+
+std::size_t PluginDetector::own_bytes() const {
+  return symbols_.own_bytes != nullptr ? symbols_.own_bytes(state_) : 0;
+}
+
+const std::vector<CellIndex>* PluginDetector::own_cells() const { return has_cells_ ? &cells_ : nullptr; }
+
+const std::vector<const char*>& PluginDetector::pseudocode(int dim) const { return pseudocode_[dim == 3 ? 1 : 0]; }
+
+void PluginDetector::run(const Elements& elements, const DetectOptions& options, PairList& out_pairs, TraceLog* trace) {
+  const std::string where = symbols_.library + " (" + name_ + "): frame " + std::to_string(options.frame) + ": ";
+  if (!supports_dim(elements.dim))
+    throw Error(name_ + ": " + std::to_string(elements.dim) + "D elements are not supported by this detector");
+  grid_ = make_grid(elements, options.grid);
+  has_cells_ = false;
+  const bool cells_wanted = (capabilities_ & NBSCOPE_CAP_CELLS) != 0;
+  if (cells_wanted) raw_cells_.assign(static_cast<std::size_t>(elements.size() * elements.dim), -1);
+
+  nbscope_frame frame{};
+  frame.frame = options.frame;
+  frame.n = elements.size();
+  frame.dim = elements.dim;
+  frame.x = elements.x.data();
+  frame.y = elements.y.data();
+  frame.z = elements.dim == 3 ? elements.z.data() : nullptr;
+  frame.r = elements.r.data();
+  frame.d = grid_.cell_size;
+  for (int a = 0; a < 3; ++a) {
+    frame.origin[a] = a < elements.dim ? grid_.origin[a] : 0.0;
+    frame.cells[a] = a < elements.dim ? grid_.n[a] : 1;
+  }
+  frame.max_pairs = static_cast<std::int64_t>(
+      std::min<std::size_t>(options.max_pairs, static_cast<std::size_t>(std::numeric_limits<std::int64_t>::max())));
+
+  out_pairs.clear();
+  PluginCall call;
+  call.pairs = &out_pairs;
+  call.n = elements.size();
+  call.max_pairs = options.max_pairs;
+  call.log = trace;
+  call.lines = static_cast<std::int32_t>(pseudocode(elements.dim).size());
+  const nbscope_output output{&call, nbscope_plugin_add_pair, cells_wanted ? raw_cells_.data() : nullptr,
+                              nbscope_plugin_fail};
+  const nbscope_trace table = plugin_trace_table(call);
+
+  if (symbols_.guard) symbols_.guard->enter(options.frame);
+  const int status = symbols_.detect(&state_, &frame, &output, trace != nullptr ? &table : nullptr);
+  if (symbols_.guard) symbols_.guard->leave();
+
+  if (call.exception) std::rethrow_exception(call.exception);
+  if (!call.breach.empty()) throw PluginError(where + call.breach);
+  if (call.limit_hit) throw_pair_limit(options.max_pairs);  // told to stop: not the plugin's fault
+  if (status != 0)
+    throw PluginError(where + "nbscope_detect returned " + std::to_string(status) +
+                      (call.failure.empty() ? " without a reason (fail() not called)" : ": " + printable_line(call.failure)));
+  const std::int64_t repeat = first_repeated_pair(out_pairs, elements.size(), scratch_, seen_);
+  if (repeat >= 0) {
+    const Pair p = out_pairs[static_cast<std::size_t>(repeat)];
+    throw PluginError(where + "add_pair: pair (" + std::to_string(p.i) + ", " + std::to_string(p.j) + ") given twice");
+  }
+  if (cells_wanted && elements.dim == 2) check_cells(elements, where);
+}
+
+void PluginDetector::check_cells(const Elements& elements, const std::string& where) {
+  const auto n = static_cast<std::size_t>(elements.size());
+  cells_.resize(n);
+  static const char* const axis_names[2] = {"x", "y"};
+  for (std::size_t k = 0; k < n; ++k) {
+    for (int a = 0; a < 2; ++a) {
+      const std::int32_t v = raw_cells_[k * 2 + a];
+      if (v == -1)
+        throw PluginError(where + "cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] +
+                          " was not written (still -1)");
+      if (v < 0 || v >= grid_.n[a])
+        throw PluginError(where + "cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] + " is " +
+                          std::to_string(v) + ", outside [0, " + std::to_string(grid_.n[a]) + ")");
+    }
+    cells_[k] = CellIndex{raw_cells_[k * 2], raw_cells_[k * 2 + 1]};
+  }
+  has_cells_ = true;
+}
+
+std::int64_t first_repeated_pair(const PairList& pairs, std::int64_t n, std::vector<std::uint32_t>& scratch,
+                                 std::vector<std::int32_t>& seen) {
+  if (pairs.size() < 2) return -1;
+  if (pairs.size() >= std::numeric_limits<std::uint32_t>::max()) {  // positions would not fit: sort a copy
+    std::vector<std::pair<Pair, std::size_t>> sorted(pairs.size());
+    for (std::size_t k = 0; k < pairs.size(); ++k) sorted[k] = {pairs[k], k};
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t k = 1; k < sorted.size(); ++k)
+      if (sorted[k].first == sorted[k - 1].first) return static_cast<std::int64_t>(sorted[k].second);
+    return -1;
+  }
+  const auto count = static_cast<std::size_t>(n);
+  // scratch: [0, n] the bucket starts by smaller element i, then the pairs' positions bucketed.
+  scratch.assign(count + 1 + pairs.size(), 0);
+  std::uint32_t* start = scratch.data();
+  std::uint32_t* position = scratch.data() + count + 1;
+  for (const Pair& p : pairs) ++start[p.i + 1];
+  for (std::size_t i = 0; i < count; ++i) start[i + 1] += start[i];
+  for (std::size_t k = 0; k < pairs.size(); ++k) position[start[pairs[k].i]++] = static_cast<std::uint32_t>(k);
+  // Each bucket now ends where the next began; stamp its partners with i + 1.
+  seen.assign(count, 0);
+  std::uint32_t begin = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::uint32_t end = start[i];
+    for (std::uint32_t b = begin; b < end; ++b) {
+      const std::int32_t j = pairs[position[b]].j;
+      if (seen[static_cast<std::size_t>(j)] == static_cast<std::int32_t>(i) + 1) return position[b];
+      seen[static_cast<std::size_t>(j)] = static_cast<std::int32_t>(i) + 1;
+    }
+    begin = end;
+  }
+  return -1;
+}
+
+}  // namespace nbscope

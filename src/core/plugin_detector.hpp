@@ -1,0 +1,113 @@
+// nbscope core: a detector plugin's C tables (include/nbscope/detector.h) as a Detector. No dlopen
+// here (core opens no files): io/plugin_library.hpp finds the symbols and hands them over.
+//
+// Index: PluginError | PluginCallGuard | PluginSymbols | check_plugin_info | PluginDetector.
+//
+// Everything the plugin says is checked (docs/limits.md "Detector plugins"): pairs in range, never
+// i == j, never twice; trace calls that name declared arrays, entries inside their shapes, lines of
+// the plugin's pseudocode; cells it reports inside the grid. A breach is a PluginError naming the
+// library, the plugin and the frame. The callbacks never throw through the plugin's C frames: the
+// first breach is kept, the callback answers "stop", and it is thrown once nbscope_detect returns.
+#pragma once
+#include <nbscope/detector.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/detector.hpp"
+#include "core/error.hpp"
+
+namespace nbscope {
+
+// A plugin broke the contract of include/nbscope/detector.h; what() is "LIBRARY (NAME): frame N: what".
+class PluginError : public Error {
+ public:
+  using Error::Error;
+};
+
+// Brackets every call into a plugin's nbscope_detect (io installs crash handlers and a watchdog
+// there: io/plugin_library.hpp); core itself needs none.
+class PluginCallGuard {
+ public:
+  virtual ~PluginCallGuard() = default;
+  // Called just before nbscope_detect runs on frame `frame`.
+  virtual void enter(std::int64_t frame) = 0;
+  // Called as soon as it returns.
+  virtual void leave() = 0;
+};
+
+// The symbols of one plugin library and where it came from.
+struct PluginSymbols {
+  std::string library;                       // its path, for messages
+  nbscope_describe_fn describe = nullptr;    // required
+  nbscope_detect_fn detect = nullptr;        // required
+  nbscope_release_fn release = nullptr;      // optional
+  nbscope_own_bytes_fn own_bytes = nullptr;  // optional
+  std::shared_ptr<PluginCallGuard> guard;    // optional: brackets each detect call
+};
+
+// Most pseudocode lines a plugin may declare per dimension (TraceEvent::line is 8 bits).
+inline constexpr std::int32_t kMaxPluginPseudocodeLines = 256;
+
+// Throws Error (without the library's name: the loader adds it) when `info` is not a usable
+// description: null, another API version, a name not [a-z0-9_-]+ (at most 64), no dimension,
+// pseudocode counts out of [0, kMaxPluginPseudocodeLines] or with a null line.
+void check_plugin_info(const nbscope_detector_info* info);
+
+// The registry entry of a plugin whose info check_plugin_info() accepted: capabilities as
+// DetectorInfo's, `make` building a PluginDetector over `symbols`.
+DetectorInfo plugin_detector_info(const PluginSymbols& symbols, const nbscope_detector_info& info);
+
+// One instance of a plugin: its state pointer lives as long as the instance (nbscope_release frees it).
+class PluginDetector final : public Detector {
+ public:
+  // `info` must have passed check_plugin_info(); its strings live as long as the library.
+  PluginDetector(PluginSymbols symbols, const nbscope_detector_info& info);
+  ~PluginDetector() override;
+  PluginDetector(const PluginDetector&) = delete;
+  PluginDetector& operator=(const PluginDetector&) = delete;
+
+  // The plugin's registry name.
+  [[nodiscard]] std::string_view name() const override { return name_; }
+  // True when the plugin declared NBSCOPE_CAP_2D (dim 2) or NBSCOPE_CAP_3D (dim 3).
+  [[nodiscard]] bool supports_dim(int dim) const override;
+  // Calls nbscope_detect untraced (trace = NULL); throws PluginError on any breach of the contract.
+  void detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) override;
+  // Calls nbscope_detect with the trace table, every call mapped into `out_trace`.
+  void detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs,
+                     TraceLog& out_trace) override;
+  // nbscope_own_bytes(state) when the plugin exports it, else 0.
+  [[nodiscard]] std::size_t own_bytes() const override;
+  // The grid the plugin was given (make_grid, as every built-in fits it).
+  [[nodiscard]] const Grid* last_grid() const override { return &grid_; }
+  // The cells the plugin wrote (NBSCOPE_CAP_CELLS, 2D), else nullptr.
+  [[nodiscard]] const std::vector<CellIndex>* own_cells() const override;
+  // The plugin's pseudocode lines for `dim`.
+  [[nodiscard]] const std::vector<const char*>& pseudocode(int dim) const override;
+
+ private:
+  void run(const Elements& elements, const DetectOptions& options, PairList& out_pairs, TraceLog* trace);
+  void check_cells(const Elements& elements, const std::string& where);
+
+  PluginSymbols symbols_;
+  std::string name_;
+  std::uint32_t capabilities_ = 0;
+  std::vector<const char*> pseudocode_[2];  // 2D, 3D
+  void* state_ = nullptr;
+  Grid grid_;
+  std::vector<std::int32_t> raw_cells_;  // what the plugin wrote: n * dim, prefilled -1
+  std::vector<CellIndex> cells_;
+  bool has_cells_ = false;               // the last detection was 2D with NBSCOPE_CAP_CELLS
+  std::vector<std::uint32_t> scratch_;   // the repeated-pair check's buffers (kept between frames)
+  std::vector<std::int32_t> seen_;
+};
+
+// The check that no pair is given twice, in time O(pairs + n): pairs bucketed by their smaller
+// element, then each bucket's partners stamped. Returns the index of the first repeat, or -1.
+// `scratch` and `seen` are reused between calls. Pairs must already be in range and i < j.
+std::int64_t first_repeated_pair(const PairList& pairs, std::int64_t n, std::vector<std::uint32_t>& scratch,
+                                 std::vector<std::int32_t>& seen);
+
+}  // namespace nbscope

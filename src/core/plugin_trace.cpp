@@ -1,0 +1,189 @@
+// nbscope core: a plugin's trace table mapped into the TraceLog (plugin_call.hpp). The header's model
+// is "call after the write": each declared array has a shadow copy, so a call that names entries
+// reads their new values from the plugin's live array and their old ones from the shadow, records
+// the write as it really happened (a buggy push that wrote next[k] = -1 is recorded so), and then
+// updates the shadow. Every callback checks what it is told and never throws.
+#include <mutex>
+#include <set>
+#include <string_view>
+
+#include "core/plugin_call.hpp"
+
+namespace nbscope {
+
+namespace {
+
+// Most entries one declared array may have (int32 indices in TraceEvent; within memory).
+constexpr std::int64_t kMaxDeclaredEntries = std::int64_t{1} << 30;
+
+std::string number(std::int64_t v) { return std::to_string(v); }
+
+PluginCall& call_of(void* ctx) { return *static_cast<PluginCall*>(ctx); }
+
+// The line as the TraceLog keeps it, or a breach when it is not one of the plugin's lines.
+bool line_ok(PluginCall& call, const char* what, std::int32_t line) {
+  if (line >= 0 && line < call.lines) return true;
+  call.breach_with(std::string("trace ") + what + ": line " + number(line) + " is not one of the " + number(call.lines) +
+                   " pseudocode lines");
+  return false;
+}
+
+bool array_ok(PluginCall& call, const char* what, std::int32_t array) {
+  if (array >= 0 && static_cast<std::size_t>(array) < call.arrays.size()) return true;
+  call.breach_with(std::string("trace ") + what + ": array " + number(array) + " was not declared (" +
+                   number(static_cast<std::int64_t>(call.arrays.size())) + " declared)");
+  return false;
+}
+
+bool entry_ok(PluginCall& call, const char* what, const char* role, std::int32_t array, std::int64_t index) {
+  const auto size = static_cast<std::int64_t>(call.arrays[static_cast<std::size_t>(array)].shadow.size());
+  if (index >= 0 && index < size) return true;
+  call.breach_with(std::string("trace ") + what + ": " + role + " " + number(index) + " is outside array " +
+                   number(array) + " of " + number(size) + " entries");
+  return false;
+}
+
+bool element_ok(PluginCall& call, const char* what, std::int32_t k, bool none_allowed) {
+  if ((k >= 0 && k < call.n) || (none_allowed && k == -1)) return true;
+  call.breach_with(std::string("trace ") + what + ": element " + number(k) + " is out of range [0, " + number(call.n) + ")");
+  return false;
+}
+
+// The write of entry `index` of `array`: old (the shadow) and new (live); the shadow takes the new.
+std::pair<std::int32_t, std::int32_t> take_write(PluginCall& call, std::int32_t array, std::int64_t index) {
+  PluginCall::Array& a = call.arrays[static_cast<std::size_t>(array)];
+  const auto i = static_cast<std::size_t>(index);
+  const std::int32_t old_value = a.shadow[i];
+  a.shadow[i] = a.live[i];
+  return {old_value, a.shadow[i]};
+}
+
+// Runs `record` unless the call already stopped, keeping any exception it throws.
+template <class F>
+void guarded(PluginCall& call, F&& record) {
+  if (call.stopped() || call.log == nullptr) return;
+  try {
+    record();
+  } catch (...) {
+    call.keep_exception();
+  }
+}
+
+}  // namespace
+
+const char* intern_plugin_label(const char* text) {
+  if (text == nullptr) return "";
+  static std::mutex mutex;
+  static std::set<std::string, std::less<>> labels;  // nodes never move: c_str() stays valid
+  const std::lock_guard<std::mutex> lock(mutex);
+  const std::string_view view(text);
+  auto found = labels.find(view);
+  if (found == labels.end()) found = labels.emplace(view).first;
+  return found->c_str();
+}
+
+extern "C" {
+static int nbscope_plugin_declare_array(void* ctx, const char* name, std::int32_t rank, const std::int64_t* shape,
+                                        const std::int32_t* data) {
+  PluginCall& call = call_of(ctx);
+  if (call.stopped()) return -1;
+  if (rank < 1 || rank > 3 || shape == nullptr) {
+    call.breach_with("trace declare_array: rank " + number(rank) + (shape == nullptr ? " with no shape" : "") +
+                     " (from 1 to 3, with a shape)");
+    return -1;
+  }
+  std::int64_t size = 1;
+  for (std::int32_t a = 0; a < rank; ++a) {
+    if (shape[a] < 0 || shape[a] > kMaxDeclaredEntries || size * shape[a] > kMaxDeclaredEntries) {
+      call.breach_with("trace declare_array: shape entry " + number(a) + " is " + number(shape[a]) +
+                       ", or the array is over " + number(kMaxDeclaredEntries) + " entries");
+      return -1;
+    }
+    size *= shape[a];
+  }
+  if (size > 0 && data == nullptr) {
+    call.breach_with("trace declare_array: data is NULL for " + number(size) + " entries");
+    return -1;
+  }
+  int id = -1;
+  guarded(call, [&] {
+    const std::span<const std::int32_t> contents(data, static_cast<std::size_t>(size));
+    id = call.log->declare_array(name != nullptr ? name : "", std::vector<std::int64_t>(shape, shape + rank), contents);
+    call.arrays.push_back(PluginCall::Array{data, std::vector<std::int32_t>(contents.begin(), contents.end())});
+  });
+  return call.stopped() ? -1 : id;
+}
+
+static void nbscope_plugin_phase(void* ctx, std::int32_t line, const char* label, std::int32_t index) {
+  PluginCall& call = call_of(ctx);
+  if (call.stopped() || !line_ok(call, "phase", line)) return;
+  guarded(call, [&] { call.log->phase(static_cast<std::uint8_t>(line), intern_plugin_label(label), index); });
+}
+
+static void nbscope_plugin_push(void* ctx, std::int32_t line, const char* kind, std::int32_t heads, std::int64_t list,
+                                std::int32_t next, std::int32_t k, std::int32_t ix, std::int32_t iy, std::int32_t iz) {
+  PluginCall& call = call_of(ctx);
+  if (call.stopped() || !line_ok(call, "push", line) || !array_ok(call, "push", heads) || !array_ok(call, "push", next) ||
+      !entry_ok(call, "push", "list", heads, list) || !element_ok(call, "push", k, false) ||
+      !entry_ok(call, "push", "element", next, k))
+    return;
+  guarded(call, [&] {
+    const auto [old_next, new_next] = take_write(call, next, k);
+    const auto [old_head, new_head] = take_write(call, heads, list);
+    call.log->push_written(static_cast<std::uint8_t>(line), intern_plugin_label(kind), heads, list, next, k, old_head,
+                           old_next, new_head, new_next, ix, iy, iz);
+  });
+}
+
+static void nbscope_plugin_clear(void* ctx, std::int32_t line, const char* kind, std::int32_t heads, std::int64_t list) {
+  PluginCall& call = call_of(ctx);
+  if (call.stopped() || !line_ok(call, "clear", line) || !array_ok(call, "clear", heads) ||
+      !entry_ok(call, "clear", "list", heads, list))
+    return;
+  guarded(call, [&] {
+    const auto [old_head, new_head] = take_write(call, heads, list);
+    call.log->clear_written(static_cast<std::uint8_t>(line), intern_plugin_label(kind), heads, list, old_head, new_head);
+  });
+}
+
+static void nbscope_plugin_visit_cell(void* ctx, std::int32_t line, std::int32_t k, std::int32_t ix, std::int32_t iy,
+                                      std::int32_t iz) {
+  PluginCall& call = call_of(ctx);
+  if (call.stopped() || !line_ok(call, "visit_cell", line) || !element_ok(call, "visit_cell", k, false)) return;
+  guarded(call, [&] { call.log->visit_cell(static_cast<std::uint8_t>(line), k, ix, iy, iz); });
+}
+
+static void nbscope_plugin_test_pair(void* ctx, std::int32_t line, std::int32_t k, std::int32_t other,
+                                     std::int32_t contact) {
+  PluginCall& call = call_of(ctx);
+  if (call.stopped() || !line_ok(call, "test_pair", line) || !element_ok(call, "test_pair", k, false) ||
+      !element_ok(call, "test_pair", other, false))
+    return;
+  guarded(call, [&] { call.log->test_pair(static_cast<std::uint8_t>(line), k, other, contact != 0); });
+}
+
+static void nbscope_plugin_set(void* ctx, std::int32_t line, const char* label, std::int32_t array, std::int64_t index,
+                               std::int32_t k) {
+  PluginCall& call = call_of(ctx);
+  if (call.stopped() || !line_ok(call, "set", line) || !array_ok(call, "set", array) ||
+      !entry_ok(call, "set", "index", array, index) || !element_ok(call, "set", k, true))
+    return;
+  guarded(call, [&] {
+    const auto [old_value, new_value] = take_write(call, array, index);
+    call.log->set(static_cast<std::uint8_t>(line), intern_plugin_label(label), array, index, old_value, new_value, k);
+  });
+}
+}  // extern "C"
+
+nbscope_trace plugin_trace_table(PluginCall& call) {
+  return nbscope_trace{&call,
+                       nbscope_plugin_declare_array,
+                       nbscope_plugin_phase,
+                       nbscope_plugin_push,
+                       nbscope_plugin_clear,
+                       nbscope_plugin_visit_cell,
+                       nbscope_plugin_test_pair,
+                       nbscope_plugin_set};
+}
+
+}  // namespace nbscope

@@ -1,0 +1,177 @@
+// Loading detector plugins (plugin_library.hpp), and the guard around each call into one: the crash
+// report of io/signals.hpp and one watchdog thread, armed per call.
+#include "io/plugin_library.hpp"
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "check/recorded_lane.hpp"
+#include "core/error.hpp"
+#include "core/plugin_detector.hpp"
+#include "io/atomic_file.hpp"
+#include "io/signals.hpp"
+
+namespace nbscope {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double g_timeout_seconds = kDefaultDetectorTimeout;
+
+// One thread that ends the process when a plugin's call outlives its deadline. Arming costs two
+// uncontended locks: the thread is woken only when it sleeps without a deadline, and otherwise wakes
+// at the deadline it last saw, finds the call over (or a later deadline) and sleeps again.
+class Watchdog {
+ public:
+  static Watchdog& instance() {
+    static Watchdog* watchdog = new Watchdog();  // never destroyed: its thread runs until the process ends
+    return *watchdog;
+  }
+  // Ends the process with `message` (which stays valid until disarm()) unless disarm() comes within `seconds`.
+  void arm(double seconds, const char* message) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    message_ = message;
+    deadline_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+    armed_ = true;
+    if (idle_) wake_.notify_one();
+  }
+  // The call returned in time.
+  void disarm() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    armed_ = false;
+  }
+
+ private:
+  Watchdog() { std::thread([this] { watch(); }).detach(); }
+  void watch() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (;;) {
+      while (!armed_) {
+        idle_ = true;
+        wake_.wait(lock);
+        idle_ = false;
+      }
+      wake_.wait_until(lock, deadline_);
+      if (armed_ && Clock::now() >= deadline_) {
+        const ssize_t written = ::write(STDERR_FILENO, message_, std::strlen(message_));
+        (void)written;  // nothing better to do: the process ends either way
+        remove_live_temporaries();
+        ::_exit(2);
+      }
+    }
+  }
+
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool armed_ = false;
+  bool idle_ = false;
+  Clock::time_point deadline_{};
+  const char* message_ = "";
+};
+
+// Brackets a plugin's nbscope_detect: the crash report and the watchdog, their lines prepared here.
+class PluginGuard final : public PluginCallGuard {
+ public:
+  PluginGuard(const std::string& library, const std::string& name, double timeout)
+      : who_("nbscope: error: " + printable_line(library) + " (" + name + "): "),
+        crash_head_(who_ + "crashed with "),
+        timeout_(timeout) {}
+  void enter(std::int64_t frame) override {
+    if (frame != frame_ || crash_tail_.empty()) {  // the lines change with the frame only
+      frame_ = frame;
+      crash_tail_ = " in frame " + std::to_string(frame) + "\n";
+      char seconds[32];
+      std::snprintf(seconds, sizeof seconds, "%g", timeout_);
+      hang_line_ = who_ + "did not return within " + seconds + " s" + crash_tail_;
+    }
+    arm_crash_report(crash_head_.c_str(), crash_tail_.c_str());
+    if (timeout_ > 0) Watchdog::instance().arm(timeout_, hang_line_.c_str());
+  }
+  void leave() override {
+    if (timeout_ > 0) Watchdog::instance().disarm();
+    disarm_crash_report();
+  }
+
+ private:
+  std::string who_, crash_head_, crash_tail_, hang_line_;
+  std::int64_t frame_ = 0;
+  double timeout_;
+};
+
+// Which library registered each plugin name (a clash names both).
+std::map<std::string, std::string>& plugin_libraries() {
+  static std::map<std::string, std::string> libraries;
+  return libraries;
+}
+
+void* open_library(const std::string& path) {
+  // A name without a slash is a file here, not a search of the system's library paths.
+  const std::string opened = path.find('/') == std::string::npos ? "./" + path : path;
+  void* handle = ::dlopen(opened.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (handle != nullptr) return handle;
+  std::string why = ::dlerror();
+  if (why.rfind(opened + ": ", 0) == 0) why = why.substr(opened.size() + 2);  // dlerror names the file too
+  throw Error(path + ": cannot load: " + why);
+}
+
+template <class T>
+T symbol(void* handle, const char* name) {
+  return reinterpret_cast<T>(::dlsym(handle, name));
+}
+
+void check_name_free(const std::string& path, const std::string& name) {
+  if (name == "all" || name == kRecordedAlgorithm)
+    throw Error(path + ": its name '" + name + "' is reserved (--algorithm " + name + " means something else)");
+  for (const DetectorInfo& known : detector_infos()) {
+    if (known.name != name) continue;
+    const auto other = plugin_libraries().find(name);
+    if (other == plugin_libraries().end()) throw Error(path + ": its name '" + name + "' is a built-in detector's");
+    throw Error(path + ": its name '" + name + "' is taken by " + other->second + ", loaded before it");
+  }
+}
+
+}  // namespace
+
+void set_detector_timeout(double seconds) { g_timeout_seconds = seconds; }
+
+std::string load_detector_plugin(const std::string& path) {
+  void* handle = open_library(path);  // never closed: pseudocode and names live as long as the process
+  const auto* version = symbol<const std::uint32_t*>(handle, "nbscope_api_version");
+  if (version == nullptr) throw Error(path + ": no symbol nbscope_api_version: not an nbscope detector plugin");
+  if (*version != NBSCOPE_DETECTOR_API_VERSION)
+    throw Error(path + ": built for plugin API version " + std::to_string(*version) + "; this nbscope speaks " +
+                std::to_string(NBSCOPE_DETECTOR_API_VERSION));
+  PluginSymbols symbols;
+  symbols.library = path;
+  symbols.describe = symbol<nbscope_describe_fn>(handle, "nbscope_detector_describe");
+  symbols.detect = symbol<nbscope_detect_fn>(handle, "nbscope_detect");
+  symbols.release = symbol<nbscope_release_fn>(handle, "nbscope_release");
+  symbols.own_bytes = symbol<nbscope_own_bytes_fn>(handle, "nbscope_own_bytes");
+  for (const auto& [name, found] : {std::pair{"nbscope_detector_describe", symbols.describe != nullptr},
+                                    std::pair{"nbscope_detect", symbols.detect != nullptr}})
+    if (!found) throw Error(path + ": no symbol " + name + " (plugin API version 1 requires it)");
+  const nbscope_detector_info* info = symbols.describe();
+  try {
+    check_plugin_info(info);
+  } catch (const Error& e) {
+    throw Error(path + ": " + e.what());
+  }
+  const std::string name = info->name;
+  check_name_free(path, name);
+  symbols.guard = std::make_shared<PluginGuard>(path, name, g_timeout_seconds);
+  register_detector(plugin_detector_info(symbols, *info));
+  plugin_libraries()[name] = path;
+  return name;
+}
+
+}  // namespace nbscope

@@ -1,0 +1,22 @@
+// nbscope io: detector plugins (include/nbscope/detector.h) loaded from shared libraries with
+// --detector-lib PATH.so: dlopen, the symbols, the checks, registration as a detector like the
+// built-ins; and the guard around every call into one (a crash or a hang is one error line, exit 2).
+// docs/plugins.md is the guide; docs/limits.md "Detector plugins" says what is refused and what it costs.
+#pragma once
+#include <string>
+
+namespace nbscope {
+
+// Default of --detector-timeout: the seconds one nbscope_detect call may take.
+inline constexpr double kDefaultDetectorTimeout = 60;
+
+// Opens the library at `path` (RTLD_NOW | RTLD_LOCAL; never closed: its strings live on), checks its
+// version symbol, its required symbols and its description, and registers its detector; returns the
+// detector's name. Throws Error "PATH: what" for anything amiss (docs/limits.md "Detector plugins").
+std::string load_detector_plugin(const std::string& path);
+
+// The seconds a plugin's nbscope_detect may run before the process ends with an error line and exit 2
+// (0: no limit); for plugins loaded from now on.
+void set_detector_timeout(double seconds);
+
+}  // namespace nbscope

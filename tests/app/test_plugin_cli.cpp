@@ -1,0 +1,120 @@
+// --detector-lib through the nbscope binary with the test plugins of tests/plugins/: a good plugin runs
+// and compares like a built-in, a wrong but well-formed one fails its checks (exit 1), and every bad
+// plugin (refused at load, breaking the API in a frame, crashing, hanging) is one error line naming the
+// library (and the frame), exit 2.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "support/paths.hpp"
+#include "support/run_cli.hpp"
+
+namespace nbscope {
+namespace {
+
+using testcli::run;
+using testpaths::nine_csv;
+using testpaths::scene;
+
+// The test plugin library built with -DPLUGIN_<VARIANT> (tests/plugins/CMakeLists.txt).
+std::string plugin(const std::string& variant) { return std::string(NBSCOPE_PLUGIN_DIR) + "/test_plugin_" + variant + ".so"; }
+
+// The one error line the run should end with, and nothing else on stderr.
+void expect_error(const testcli::Result& r, const std::string& line) {
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_EQ(r.err, "nbscope: error: " + line + "\n");
+}
+
+TEST(PluginCli, GoodPluginRunsAsTheAlgorithmAndAsAComparisonLane) {
+  const std::string lib = plugin("good");
+  auto r = run("headless --scene '" + scene("default") + "' --frames 30 --detector-lib '" + lib + "' --algorithm test-good");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("test-good"), std::string::npos) << r.out;
+  r = run("headless --scene '" + scene("default") + "' --frames 30 --detector-lib '" + lib + "' --algorithm nbs,test-good");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  r = run("pairs --input '" + nine_csv() + "' --detector-lib='" + lib + "' --algorithm test-good");
+  const auto builtin = run("pairs --input '" + nine_csv() + "' --algorithm nbs");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, builtin.out);
+}
+
+TEST(PluginCli, AlgorithmsListsThePlugin) {
+  const auto r = run("algorithms --detector-lib '" + plugin("good") + "'");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("test-good"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("the test plugin: brute force"), std::string::npos) << r.out;
+}
+
+TEST(PluginCli, WrongButWellFormedPluginFailsItsChecks) {
+  const auto r = run("headless --scene '" + scene("default") + "' --frames 30 --detector-lib '" + plugin("drop_pair") +
+                     "' --algorithm test-drop-pair");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("A==R"), std::string::npos) << r.out;
+}
+
+TEST(PluginCli, LibrariesThatAreNotPluginsAreRefusedAtLoad) {
+  std::string lib = plugin("no_version");
+  expect_error(run("algorithms --detector-lib '" + lib + "'"), lib + ": no symbol nbscope_api_version: not an nbscope detector plugin");
+  lib = plugin("version_2");
+  expect_error(run("algorithms --detector-lib '" + lib + "'"), lib + ": built for plugin API version 2; this nbscope speaks 1");
+  lib = plugin("no_detect");
+  expect_error(run("algorithms --detector-lib '" + lib + "'"), lib + ": no symbol nbscope_detect (plugin API version 1 requires it)");
+  lib = plugin("bad_name");
+  expect_error(run("algorithms --detector-lib '" + lib + "'"), lib + ": its name 'Test Plugin!' is not 1 to 64 of [a-z0-9_-]");
+  lib = plugin("nbs_name");
+  expect_error(run("algorithms --detector-lib '" + lib + "'"), lib + ": its name 'nbs' is a built-in detector's");
+  lib = plugin("good");
+  expect_error(run("algorithms --detector-lib '" + lib + "' --detector-lib '" + lib + "'"),
+               lib + ": its name 'test-good' is taken by " + lib + ", loaded before it");
+  const auto missing = run("headless --scene '" + scene("default") + "' --detector-lib /nonexistent/x.so");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_EQ(missing.err.rfind("nbscope: error: /nonexistent/x.so: cannot load: ", 0), 0u) << missing.err;
+  expect_error(run("verify --input '" + nine_csv() + "' --detector-lib '" + lib + "'"),
+               "verify: --detector-lib is not an option of verify (it is one of gui, headless, replay, pairs, dump, scaling, "
+               "algorithms)");
+}
+
+TEST(PluginCli, BrokenPairsAreNamedWithTheFrame) {
+  for (const auto& [variant, what] :
+       {std::pair<std::string, std::string>{"pair_range", "add_pair(0, 9): element 9 is out of range [0, 9)"},
+        {"self_pair", "add_pair(0, 0): an element paired with itself"},
+        {"pair_twice", "add_pair: pair (0, 1) given twice"}}) {
+    const std::string lib = plugin(variant);
+    std::string name = "test-" + variant;
+    std::replace(name.begin(), name.end(), '_', '-');
+    expect_error(run("pairs --input '" + nine_csv() + "' --detector-lib '" + lib + "' --algorithm " + name),
+                 lib + " (" + name + "): frame 0: " + what);
+  }
+  // In a headless run the frame is the scene's.
+  const std::string lib = plugin("self_pair");
+  expect_error(run("headless --scene '" + scene("default") + "' --frames 3 --detector-lib '" + lib + "' --algorithm test-self-pair"),
+               lib + " (test-self-pair): frame 0: add_pair(0, 0): an element paired with itself");
+}
+
+TEST(PluginCli, BrokenTraceCallsAreNamed) {
+  std::string lib = plugin("undeclared");
+  expect_error(run("dump --input '" + nine_csv() + "' --detector-lib '" + lib + "' --algorithm test-undeclared"),
+               lib + " (test-undeclared): frame 0: trace set: array 7 was not declared (1 declared)");
+  lib = plugin("index_shape");
+  expect_error(run("dump --input '" + nine_csv() + "' --detector-lib '" + lib + "' --algorithm test-index-shape"),
+               lib + " (test-index-shape): frame 0: trace set: index 23 is outside array 0 of 18 entries");
+}
+
+TEST(PluginCli, CrashIsOneLineNamingTheLibraryAndFrame) {
+  const std::string lib = plugin("crash");
+  expect_error(run("headless --scene '" + scene("default") + "' --frames 30 --detector-lib '" + lib + "' --algorithm test-crash"),
+               lib + " (test-crash): crashed with SIGSEGV in frame 3");
+}
+
+TEST(PluginCli, HangIsStoppedByTheWatchdog) {
+  const std::string lib = plugin("hang");
+  expect_error(run("headless --scene '" + scene("default") + "' --frames 30 --detector-timeout 1 --detector-lib '" + lib +
+                   "' --algorithm test-hang"),
+               lib + " (test-hang): did not return within 1 s in frame 2");
+  expect_error(run("headless --scene '" + scene("default") + "' --detector-timeout -1"),
+               "--detector-timeout: the seconds must be from 0 (no limit) to 1e6");
+}
+
+}  // namespace
+}  // namespace nbscope
