@@ -21,7 +21,8 @@ std::string settings_path() {
   return "";
 }
 
-Settings load_settings(const std::string& path, std::vector<std::string>& ignored) {
+Settings load_settings(const std::string& path, std::vector<std::string>& ignored,
+                       const std::function<void(const std::string&)>& load_library) {
   Settings s;
   ignored.clear();
   std::error_code ec;
@@ -42,6 +43,14 @@ Settings load_settings(const std::string& path, std::vector<std::string>& ignore
     if (const auto it = v.overlays.find(o.name); it != v.overlays.end()) s.overlays.*o.flag = it->second;
   s.panels = std::move(v.panels);
   s.last_scene = std::move(v.last_scene);
+  for (std::string& library : v.detector_libs) {
+    try {
+      if (load_library) load_library(library);
+      s.detector_libs.push_back(std::move(library));
+    } catch (const Error& e) {
+      ignored.push_back("detector_libs \"" + excerpt(library) + "\" (" + e.what() + ")");
+    }
+  }
   if (v.algorithm) {
     // Registered at start-up (box2d too) before any window: the names this nbscope has now.
     const auto& infos = detector_infos();
@@ -75,7 +84,7 @@ bool restore_camera(const Settings& s, const std::string& scene, render::Camera&
 
 void save_settings(const std::string& path, const Settings& s) {
   if (path.empty()) throw Error("settings: no config directory (neither XDG_CONFIG_HOME nor HOME is set)");
-  SettingsValues values{{}, s.panels, s.last_scene, s.algorithm, s.camera, s.speed, s.history_mb};
+  SettingsValues values{{}, s.panels, s.last_scene, s.algorithm, s.detector_libs, s.camera, s.speed, s.history_mb};
   for (const render::OverlayInfo& o : render::overlay_infos()) values.overlays[o.name] = s.overlays.*o.flag;
   const std::string text = settings_json_text(values);
   std::error_code ec;

@@ -3,6 +3,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -18,6 +19,9 @@ struct Settings {
   std::map<std::string, bool> panels;
   std::optional<std::string> last_scene;
   std::optional<std::string> algorithm;
+  // Detector plugin libraries (--detector-lib) the window had loaded, absolute paths: loaded again at the
+  // next start before the algorithm is looked up, so a plugin chosen last time is chosen again.
+  std::vector<std::string> detector_libs;
   // Centre x, y and pixels per metre, for last_scene: only a camera the user panned or zoomed (a
   // fitted one is fitted again at the next start, into the panels that start opens).
   std::optional<std::array<double, 3>> camera;
@@ -31,7 +35,10 @@ std::string settings_path();
 // not keep the window from opening: what cannot be used keeps its default and is named in `ignored`
 // — the whole file (unreadable, not JSON, another version) or single keys (a wrong type, a value out
 // of range, an algorithm this nbscope does not have, e.g. "bogus").
-Settings load_settings(const std::string& path, std::vector<std::string>& ignored);
+// `load_library` (when given) loads one saved detector library before the algorithm is looked up; an
+// Error it throws (the file is gone, another plugin API) drops that library with its reason in `ignored`.
+Settings load_settings(const std::string& path, std::vector<std::string>& ignored,
+                       const std::function<void(const std::string&)>& load_library = {});
 // The one line that says so: "<path>: ignored <what>, <what>; the rest is used" ("" when nothing was).
 std::string settings_note(const std::string& path, const std::vector<std::string>& ignored);
 // The camera to save: none while it is where the last fit (or Home) put it, so that the next start

@@ -85,6 +85,13 @@ SettingsValues parse_settings_json(std::string_view text, std::span<const std::s
     if (it->is_string() && !it->get_ref<const std::string&>().empty()) out.algorithm = it->get<std::string>();
     else ignored.push_back(phrase("algorithm", *it, "not a name"));
   }
+  if (const auto it = j.find("detector_libs"); it != j.end()) {
+    const bool good = it->is_array() && std::all_of(it->begin(), it->end(), [](const Json& p) {
+      return p.is_string() && !p.get_ref<const std::string&>().empty();
+    });
+    if (good) out.detector_libs = it->get<std::vector<std::string>>();
+    else ignored.push_back(phrase("detector_libs", *it, "not a list of file names"));
+  }
   if (const auto it = j.find("camera"); it != j.end()) {
     bool good = it->is_array() && it->size() == 3;
     std::array<double, 3> c{};
@@ -117,6 +124,7 @@ std::string settings_json_text(const SettingsValues& values) {
   j["panels"] = values.panels;
   if (values.last_scene) j["last_scene"] = *values.last_scene;
   if (values.algorithm) j["algorithm"] = *values.algorithm;
+  if (!values.detector_libs.empty()) j["detector_libs"] = values.detector_libs;
   if (values.camera) j["camera"] = *values.camera;
   j["speed"] = values.speed;
   j["history_mb"] = values.history_mb;

@@ -23,6 +23,7 @@ struct SettingsValues {
   std::map<std::string, bool> panels;    // panel title -> open
   std::optional<std::string> last_scene;
   std::optional<std::string> algorithm;  // a non-empty string; whether nbscope has it is the caller's check
+  std::vector<std::string> detector_libs;  // plugin libraries (--detector-lib), non-empty paths; loading them is the caller's
   std::optional<std::array<double, 3>> camera;  // finite centre x, y and pixels per metre > 0
   double speed = 1.0;                           // in (0, 100]
   std::int64_t history_mb = 256;                // in [0, 1,000,000]

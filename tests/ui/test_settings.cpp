@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/detector.hpp"
 #include "core/error.hpp"
 #include "render/overlays.hpp"
 #include "ui/settings.hpp"
@@ -109,6 +110,50 @@ TEST(Settings, AnUnknownAlgorithmIsIgnoredAndTheNoteNamesTheFile) {
   std::ofstream(path) << R"({"version": 1, "algorithm": "tree"})";
   EXPECT_EQ(load_settings(path, ignored).algorithm, "tree");
   EXPECT_TRUE(ignored.empty());
+}
+
+TEST(SettingsJson, DetectorLibrariesRoundTripAndAWrongListIsNamed) {
+  std::vector<std::string> ignored;
+  SettingsValues v = parse(R"({"version": 1, "detector_libs": ["/a/nbs_mine.so", "/b/tree.so"]})", ignored);
+  EXPECT_TRUE(ignored.empty());
+  EXPECT_EQ(v.detector_libs, (std::vector<std::string>{"/a/nbs_mine.so", "/b/tree.so"}));
+  EXPECT_EQ(parse(settings_json_text(v), ignored).detector_libs, v.detector_libs);
+  for (const char* bad : {R"({"version": 1, "detector_libs": "/a.so"})", R"({"version": 1, "detector_libs": ["/a.so", 3]})",
+                          R"({"version": 1, "detector_libs": [""]})"}) {
+    ignored.clear();
+    v = parse(bad, ignored);
+    EXPECT_TRUE(v.detector_libs.empty()) << bad;
+    ASSERT_EQ(ignored.size(), 1u) << bad;
+    EXPECT_TRUE(mentions(ignored, "(not a list of file names)")) << ignored[0];
+  }
+}
+
+// A plugin chosen last time is chosen again: its library is loaded before the algorithm is looked up,
+// and a library that no longer loads is dropped with its reason while the rest is used.
+TEST(Settings, SavedDetectorLibrariesAreLoadedBeforeTheAlgorithmIsLookedUp) {
+  const std::string dir = std::string(NBSCOPE_TEST_OUT) + "/settings_detector_libs";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string path = dir + "/settings.json";
+  std::ofstream(path) << R"({"version": 1, "algorithm": "settings_plugin", "detector_libs": ["/gone.so", "/here.so"]})";
+  std::vector<std::string> loaded;
+  const auto load = [&](const std::string& library) {
+    if (library == "/gone.so") throw Error("/gone.so: cannot open shared object file");
+    loaded.push_back(library);
+    register_detector(DetectorInfo{"settings_plugin", "a plugin the settings test registers", true, false, false, false,
+                                   [] { return make_detector("brute"); }});
+  };
+  std::vector<std::string> ignored;
+  Settings s = load_settings(path, ignored, load);
+  EXPECT_EQ(loaded, (std::vector<std::string>{"/here.so"}));
+  EXPECT_EQ(s.detector_libs, (std::vector<std::string>{"/here.so"}));
+  EXPECT_EQ(s.algorithm, "settings_plugin");  // found: the library was loaded first
+  ASSERT_EQ(ignored.size(), 1u);
+  EXPECT_EQ(ignored[0], "detector_libs \"/gone.so\" (/gone.so: cannot open shared object file)");
+
+  save_settings(path, s);
+  s = load_settings(path, ignored);  // no loader: the names are kept as they are
+  EXPECT_EQ(s.detector_libs, (std::vector<std::string>{"/here.so"}));
 }
 
 }  // namespace
