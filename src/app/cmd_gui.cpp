@@ -31,6 +31,7 @@
 #include "check/faults.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/data_dir.hpp"
 #include "io/excerpt.hpp"
 #include "io/plural.hpp"
 #include "io/scene_json.hpp"
@@ -57,7 +58,7 @@ struct GuiOptions {
 
 GuiOptions parse_gui_options(Args& args) {
   GuiOptions o;
-  o.scene = args.value("--scene");
+  if (auto s = args.value("--scene")) o.scene = resolve_scene_path(*s);  // bundled names too (io/data_dir.hpp)
   o.algorithm = args.value("--algorithm");
   if (auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);
   if (auto n = args.integer("--frames", 0, kMaxFrames)) o.frames = *n;

@@ -20,6 +20,7 @@
 #include "check/recorded_lane.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/data_dir.hpp"
 #include "io/plural.hpp"
 #include "io/recording.hpp"
 #include "io/report_json.hpp"
@@ -232,7 +233,7 @@ HeadlessOptions parse_headless_options(Args& args) {
     if (name == kRecordedAlgorithm)
       throw Error("--algorithm recorded: the pairs a recording carries (nbscope replay FILE.nbsrec); a scene has none");
   if (o.scaling) check_headless_scaling(*o.scaling, o.view);
-  o.scene = *scene;
+  o.scene = resolve_scene_path(*scene);  // `--scene pile.json`: the bundled one, from any directory
   if (o.rewind && o.rewind->from > o.frames)
     throw Error("--rewind: FROM " + std::to_string(o.rewind->from) + " is past the end of the run (--frames " +
                 std::to_string(o.frames) + ")");

@@ -24,7 +24,8 @@ const std::vector<OptionSpec>& rendering_options() {
                           "of one algorithm that records them (not box2d); K past its last operation is an error (headless: needs "
                           "--screenshot)"},
       {"--book-numbering", "", "", "number elements and cells from 1 everywhere, as the book does"},
-      {"--shader-dir", "DIR", "$NBSCOPE_SHADER_DIR if set, else $NBSCOPE_DATA_DIR/shaders, else the source tree's shaders/",
+      {"--shader-dir", "DIR", "$NBSCOPE_SHADER_DIR if set, else $NBSCOPE_DATA_DIR/shaders, else an installed share/nbscope/shaders "
+                              "beside the binary, else the source tree's shaders/ (nbscope --version says which)",
        "GLSL sources"},
   };
   return options;

@@ -15,6 +15,7 @@
 #include <tuple>
 
 #include "core/error.hpp"
+#include "io/data_dir.hpp"
 #include "render/overlays.hpp"
 #include "render/shader.hpp"
 #include "ui/panels.hpp"
@@ -24,11 +25,6 @@
 namespace nbscope {
 
 namespace {
-
-std::string data_dir() {
-  const char* env = std::getenv("NBSCOPE_DATA_DIR");
-  return env != nullptr && *env != '\0' ? env : NBSCOPE_DATA_DIR;
-}
 
 constexpr std::size_t kTrailPoints = 240;
 constexpr float kFlashDecay = 0.8f;  // per frame: a flash fades over ~10 frames
@@ -43,13 +39,13 @@ constexpr double kLegendReservePx = 44.0;
 std::vector<std::string> bundled_scene_files() {
   std::vector<std::string> files;
   std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(data_dir() + "/assets/scenes", ec))
+  for (const auto& entry : std::filesystem::directory_iterator(data_dir().path + "/assets/scenes", ec))
     if (entry.path().extension() == ".json") files.push_back(entry.path().string());
   std::sort(files.begin(), files.end());
   return files;
 }
 
-std::string default_scene_path() { return data_dir() + "/assets/scenes/default.json"; }
+std::string default_scene_path() { return data_dir().path + "/assets/scenes/default.json"; }
 
 // ---- GlView -----------------------------------------------------------------------------------
 

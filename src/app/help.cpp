@@ -69,7 +69,7 @@ std::string help_summary() {
   }
   out += "\nglobal options:\n"
          "  --help, -h, help [COMMAND]   this summary, or one command's options\n"
-         "  --version                    the version\n\n"
+         "  --version                    the version, and where scenes and shaders are read from\n\n"
          "nbscope COMMAND --help for its options; docs/cli.md for the reference.\n"
          "exit codes: " + std::string(kExitCodes) + ".\n";
   return out;
@@ -111,7 +111,8 @@ std::string cli_markdown() {
       "| command | what it does |\n|---|---|\n";
   for (const CommandSpec& c : command_table())
     out += "| [`" + std::string(c.name) + "`](#nbscope-" + c.name + ") | " + cell(c.summary) + " |\n";
-  out += "\nGlobal options: `--help`, `-h` or `help [COMMAND]` (this summary, or one command's options); `--version`.\n\n"
+  out += "\nGlobal options: `--help`, `-h` or `help [COMMAND]` (this summary, or one command's options); `--version` (and "
+         "where the bundled scenes and shaders are read from).\n\n"
          "Exit codes: " + std::string(kExitCodes) + ".\n";
   for (const CommandSpec& c : command_table()) {
     out += "\n## nbscope " + std::string(c.name) + "\n\n" + c.summary + ".\n\n```\n";

@@ -11,6 +11,7 @@
 #include "app/help.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/data_dir.hpp"
 #include "physics/box2d_detector.hpp"
 #include "physics/box2d_memory.hpp"
 
@@ -27,6 +28,7 @@ int dispatch(const std::string& command, const std::vector<std::string>& rest) {
     nbscope::Args args(rest, command);
     args.finish();
     std::printf("nbscope %s\n", nbscope::kVersion);
+    std::fputs(nbscope::data_dirs_text().c_str(), stdout);  // which scenes and shaders it reads
     return 0;
   }
   const nbscope::CommandSpec* spec = nbscope::find_command(command);

@@ -79,6 +79,10 @@ class Watchdog {
   const char* message_ = "";
 };
 
+// Held during every plugin call: detector.h promises a library one thread at a time (the window's
+// Scaling panel detects on a thread of its own), and the crash report and watchdog serve one call.
+std::mutex g_plugin_call;
+
 // Brackets a plugin's nbscope_detect: the crash report and the watchdog, their lines prepared here.
 class PluginGuard final : public PluginCallGuard {
  public:
@@ -87,6 +91,7 @@ class PluginGuard final : public PluginCallGuard {
         crash_head_(who_ + "crashed with "),
         timeout_(timeout) {}
   void enter(std::int64_t frame) override {
+    g_plugin_call.lock();  // unlocked by leave(), on this thread
     if (frame != frame_ || crash_tail_.empty()) {  // the lines change with the frame only
       frame_ = frame;
       crash_tail_ = " in frame " + std::to_string(frame) + "\n";
@@ -100,6 +105,7 @@ class PluginGuard final : public PluginCallGuard {
   void leave() override {
     if (timeout_ > 0) Watchdog::instance().disarm();
     disarm_crash_report();
+    g_plugin_call.unlock();
   }
 
  private:
@@ -112,6 +118,12 @@ class PluginGuard final : public PluginCallGuard {
 std::map<std::string, std::string>& plugin_libraries() {
   static std::map<std::string, std::string> libraries;
   return libraries;
+}
+
+// The name each library already loaded registered, by its dlopen handle (one file, one handle).
+std::map<void*, std::string>& loaded_handles() {
+  static std::map<void*, std::string> handles;
+  return handles;
 }
 
 void* open_library(const std::string& path) {
@@ -146,6 +158,8 @@ void set_detector_timeout(double seconds) { g_timeout_seconds = seconds; }
 
 std::string load_detector_plugin(const std::string& path) {
   void* handle = open_library(path);  // never closed: pseudocode and names live as long as the process
+  // The same file again (--detector-lib given twice, or also saved in the window's settings): loaded once.
+  if (const auto again = loaded_handles().find(handle); again != loaded_handles().end()) return again->second;
   const auto* version = symbol<const std::uint32_t*>(handle, "nbscope_api_version");
   if (version == nullptr) throw Error(path + ": no symbol nbscope_api_version: not an nbscope detector plugin");
   if (*version != NBSCOPE_DETECTOR_API_VERSION)
@@ -160,7 +174,11 @@ std::string load_detector_plugin(const std::string& path) {
   for (const auto& [name, found] : {std::pair{"nbscope_detector_describe", symbols.describe != nullptr},
                                     std::pair{"nbscope_detect", symbols.detect != nullptr}})
     if (!found) throw Error(path + ": no symbol " + name + " (plugin API version 1 requires it)");
+  // Its first call: a crash here is named as one in a frame would be.
+  const std::string crash_head = "nbscope: error: " + printable_line(path) + ": crashed with ";
+  arm_crash_report(crash_head.c_str(), " in nbscope_detector_describe()\n");
   const nbscope_detector_info* info = symbols.describe();
+  disarm_crash_report();
   try {
     check_plugin_info(info);
   } catch (const Error& e) {
@@ -171,6 +189,7 @@ std::string load_detector_plugin(const std::string& path) {
   symbols.guard = std::make_shared<PluginGuard>(path, name, g_timeout_seconds);
   register_detector(plugin_detector_info(symbols, *info));
   plugin_libraries()[name] = path;
+  loaded_handles()[handle] = name;
   return name;
 }
 

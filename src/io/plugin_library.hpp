@@ -12,7 +12,8 @@ inline constexpr double kDefaultDetectorTimeout = 60;
 
 // Opens the library at `path` (RTLD_NOW | RTLD_LOCAL; never closed: its strings live on), checks its
 // version symbol, its required symbols and its description, and registers its detector; returns the
-// detector's name. Throws Error "PATH: what" for anything amiss (docs/limits.md "Detector plugins").
+// detector's name. The same file loaded again is not loaded twice: its name is returned. Throws Error
+// "PATH: what" for anything amiss (docs/limits.md "Detector plugins").
 std::string load_detector_plugin(const std::string& path);
 
 // The seconds a plugin's nbscope_detect may run before the process ends with an error line and exit 2

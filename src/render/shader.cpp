@@ -1,12 +1,12 @@
 #include "render/shader.hpp"
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
 
 #include "core/error.hpp"
+#include "io/data_dir.hpp"
 
 namespace nbscope::render {
 
@@ -51,13 +51,7 @@ GLuint compile(GLenum kind, const std::string& path) {
 
 std::string resolve_shader_dir(const std::string& override_dir) {
   std::string dir = override_dir;
-  const auto env = [](const char* name) {
-    const char* v = std::getenv(name);
-    return v != nullptr && *v != '\0' ? std::string(v) : std::string();
-  };
-  if (dir.empty()) dir = env("NBSCOPE_SHADER_DIR");
-  if (dir.empty() && !env("NBSCOPE_DATA_DIR").empty()) dir = env("NBSCOPE_DATA_DIR") + "/shaders";  // moves scenes and shaders together
-  if (dir.empty()) dir = NBSCOPE_SHADER_DIR;
+  if (dir.empty()) dir = default_shader_dir().path;  // $NBSCOPE_SHADER_DIR, else the data directory's
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec))
     throw Error("shaders: " + dir + ": no such directory (use --shader-dir, NBSCOPE_SHADER_DIR or NBSCOPE_DATA_DIR)");

@@ -7,7 +7,7 @@
 namespace nbscope::render {
 
 // The shader directory: `override_dir` if not empty, else $NBSCOPE_SHADER_DIR, else
-// $NBSCOPE_DATA_DIR/shaders, else the one baked in at build time. Error("shaders: DIR: ...") when it
+// $NBSCOPE_DATA_DIR/shaders, else the installed one beside the binary, else the source tree's. Error("shaders: DIR: ...") when it
 // is not a directory holding circle.vert.
 std::string resolve_shader_dir(const std::string& override_dir);
 

@@ -43,18 +43,19 @@ const std::vector<ParserFile>& parser_files() {
       {"grid_flags.cpp", {"pairs", "dump", "verify", "gui"}, {}},
       {"view_options.cpp", {"headless", "replay", "verify", "gui"}, {"--gl"}},
       {"scaling_flags.cpp", {"scaling", "headless"}, {}},
+      {"cli_plugins.cpp", {"gui", "headless", "replay", "pairs", "dump", "scaling", "algorithms"}, {}},  // from main
       {"help.cpp", {}, {}},  // `help --markdown`, hidden: not a command's option
   };
   return files;
 }
 
-// The option names `source` hands to Args: the "--name" literal of every args.value/flag/integer/
-// number/has call. No std::regex: GCC 12's -O1 sanitizer build warns inside it (maybe-uninitialized),
+// The option names `source` hands to Args: the "--name" literal of every args.value/values/flag/
+// integer/number/has call. No std::regex: GCC 12's -O1 sanitizer build warns inside it (maybe-uninitialized),
 // and CI builds -Werror.
 std::set<std::string> options_taken(const std::string& source) {
   std::set<std::string> out;
   const auto word_char = [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-'; };
-  for (const char* call : {".value(\"--", ".flag(\"--", ".integer(\"--", ".number(\"--", ".has(\"--"}) {
+  for (const char* call : {".value(\"--", ".values(\"--", ".flag(\"--", ".integer(\"--", ".number(\"--", ".has(\"--"}) {
     const std::string needle = call;
     for (std::size_t i = source.find(needle); i != std::string::npos; i = source.find(needle, i + 1)) {
       std::size_t begin = i + needle.size() - 2, end = begin + 2;

@@ -39,11 +39,47 @@ TEST(PluginCli, GoodPluginRunsAsTheAlgorithmAndAsAComparisonLane) {
   EXPECT_EQ(r.out, builtin.out);
 }
 
+TEST(PluginCli, GoodPluginReplaysAndScales) {
+  const std::string lib = plugin("good");
+  const std::string dir = testcli::scratch_dir("plugin_replay");
+  auto r = run("headless --scene '" + scene("default") + "' --frames 5 --record '" + dir + "/r.nbsrec'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run("replay '" + dir + "/r.nbsrec' --headless --detector-lib '" + lib + "' --algorithm nbs,test-good");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("nbs,test-good"), std::string::npos) << r.out;
+  r = run("scaling --detector-lib '" + lib + "' --algorithm test-good --n 1e3..1e3 --quiet");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("test-good loose"), std::string::npos) << r.out;
+}
+
+#ifdef NBSCOPE_TEST_GUI
+// The window (under xvfb-run): the plugin is an algorithm of the window, and its breach ends a
+// --frames run as headless's does.
+TEST(PluginCli, WindowRunsThePluginAndStopsOnItsBreach) {
+  const std::string dir = testcli::scratch_dir("plugin_window");
+  std::string lib = plugin("good");
+  auto r = run("gui --scene '" + scene("default") + "' --frames 3 --screenshot '" + dir + "/good.png' --detector-lib '" + lib +
+                   "' --algorithm test-good",
+               testcli::xvfb_run());
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  lib = plugin("self_pair");
+  r = run("gui --scene '" + scene("default") + "' --frames 3 --screenshot '" + dir + "/bad.png' --detector-lib '" + lib +
+              "' --algorithm test-self-pair",
+          testcli::xvfb_run());
+  expect_error(r, lib + " (test-self-pair): frame 0: add_pair(0, 0): an element paired with itself");
+}
+#endif
+
 TEST(PluginCli, AlgorithmsListsThePlugin) {
   const auto r = run("algorithms --detector-lib '" + plugin("good") + "'");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("test-good"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("the test plugin: brute force"), std::string::npos) << r.out;
+  // Repeatable: two libraries, two algorithms, run side by side (the wrong one fails its checks).
+  const auto both = run("headless --scene '" + scene("default") + "' --frames 5 --detector-lib '" + plugin("good") +
+                        "' --detector-lib '" + plugin("drop_pair") + "' --algorithm test-good,test-drop-pair");
+  EXPECT_EQ(both.exit_code, 1) << both.out << both.err;
+  EXPECT_NE(both.out.find("test-good,test-drop-pair"), std::string::npos) << both.out;
 }
 
 TEST(PluginCli, WrongButWellFormedPluginFailsItsChecks) {
@@ -64,9 +100,12 @@ TEST(PluginCli, LibrariesThatAreNotPluginsAreRefusedAtLoad) {
   expect_error(run("algorithms --detector-lib '" + lib + "'"), lib + ": its name 'Test Plugin!' is not 1 to 64 of [a-z0-9_-]");
   lib = plugin("nbs_name");
   expect_error(run("algorithms --detector-lib '" + lib + "'"), lib + ": its name 'nbs' is a built-in detector's");
+  lib = plugin("good_twin");  // another file, the same name
+  expect_error(run("algorithms --detector-lib '" + plugin("good") + "' --detector-lib '" + lib + "'"),
+               lib + ": its name 'test-good' is taken by " + plugin("good") + ", loaded before it");
   lib = plugin("good");
-  expect_error(run("algorithms --detector-lib '" + lib + "' --detector-lib '" + lib + "'"),
-               lib + ": its name 'test-good' is taken by " + lib + ", loaded before it");
+  const auto twice = run("algorithms --detector-lib '" + lib + "' --detector-lib '" + lib + "'");  // one file: loaded once
+  EXPECT_EQ(twice.exit_code, 0) << twice.err;
   const auto missing = run("headless --scene '" + scene("default") + "' --detector-lib /nonexistent/x.so");
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_EQ(missing.err.rfind("nbscope: error: /nonexistent/x.so: cannot load: ", 0), 0u) << missing.err;
@@ -105,6 +144,11 @@ TEST(PluginCli, CrashIsOneLineNamingTheLibraryAndFrame) {
   const std::string lib = plugin("crash");
   expect_error(run("headless --scene '" + scene("default") + "' --frames 30 --detector-lib '" + lib + "' --algorithm test-crash"),
                lib + " (test-crash): crashed with SIGSEGV in frame 3");
+}
+
+TEST(PluginCli, CrashWhileDescribingItselfIsNamedToo) {
+  const std::string lib = plugin("describe_crash");
+  expect_error(run("algorithms --detector-lib '" + lib + "'"), lib + ": crashed with SIGSEGV in nbscope_detector_describe()");
 }
 
 TEST(PluginCli, HangIsStoppedByTheWatchdog) {

@@ -7,7 +7,7 @@
  *   PLUGIN_PAIR_RANGE a pair (0, n)                     PLUGIN_SELF_PAIR   a pair (0, 0)
  *   PLUGIN_PAIR_TWICE the pair (0, 1) twice             PLUGIN_UNDECLARED  a trace call on array 7
  *   PLUGIN_INDEX_SHAPE a trace set past its array       PLUGIN_CRASH       writes through NULL on frame 3
- *   PLUGIN_HANG       never returns on frame 2
+ *   PLUGIN_HANG       never returns on frame 2        PLUGIN_DESCRIBE_CRASH  crashes when asked what it is
  * PLUGIN_NAME is the detector's registry name. */
 #include <nbscope/detector.h>
 #include <stdlib.h>
@@ -43,7 +43,12 @@ static const nbscope_detector_info info = {
     3,
 };
 
-NBSCOPE_EXPORT const nbscope_detector_info *nbscope_detector_describe(void) { return &info; }
+NBSCOPE_EXPORT const nbscope_detector_info *nbscope_detector_describe(void) {
+#if defined(PLUGIN_DESCRIBE_CRASH)
+  *(volatile int *)NULL = 1;
+#endif
+  return &info;
+}
 
 /* The plugin's own arrays, kept between frames as a simulation would. */
 typedef struct state {
