@@ -266,6 +266,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
     // Paused with nothing moving: wait for input rather than draw the same frame again.
     pacer.pace(window, scripted || !session.paused || loop.resume().active() || loop.source().step_pending() || loop.drag().active() ||
                            view.animating() || !(requests == ui::UiRequests{}));
+    view.queue_input(window.take_input());  // every key and button event, in order (GlView::queue_input)
     const auto now = Clock::now();
     session.frame_ms = std::chrono::duration<double, std::milli>(now - last).count();
     last = now;

@@ -241,6 +241,15 @@ void GlView::focus_violation(const FrameLoop& loop, const Violation& v, bool ope
   if (stepper_open()) stepper_->set_target(ui::StepperSession::PairTarget{v.frame, v.pair, v.invariant, v.what});
 }
 
+void GlView::aim_stepper_at_chosen_violation(const FrameLoop& loop) {
+  // Still chosen: listed, on the frame shown, its pair still the one marked (no click since).
+  const auto& log = loop.history().violation_log().listed();
+  if (state_.current_violation < 0 || static_cast<std::size_t>(state_.current_violation) >= log.size()) return;
+  const Violation& v = log[static_cast<std::size_t>(state_.current_violation)];
+  if (v.frame != loop.source().frame() || state_.selected_pair != v.pair) return;
+  stepper_->set_target(ui::StepperSession::PairTarget{v.frame, v.pair, v.invariant, v.what});
+}
+
 bool GlView::panel_open(std::string_view title) const {
   for (const auto& p : host_.panels())
     if (p->title() == title) return ui::UiHost::is_open(*p, state_);
@@ -250,7 +259,8 @@ bool GlView::panel_open(std::string_view title) const {
 bool GlView::stepper_open() const { return panel_open(ui::kStepperTitle); }
 
 bool GlView::animating() const {
-  return (stepper_->stepper().playing() && stepper_panels_open()) || scaling_->running();  // a Scaling run fills its plots
+  return (stepper_->stepper().playing() && stepper_panels_open()) || scaling_->running() ||  // a Scaling run fills its plots
+         input_.pending();  // taps given one frame each
 }
 
 bool GlView::stepper_panels_open() const {
@@ -260,6 +270,9 @@ bool GlView::stepper_panels_open() const {
 ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_input, float dt) {
   const auto frame_start = Clock::now();
   follow(loop);
+  const bool stepper_now_open = stepper_open();
+  if (stepper_now_open && !stepper_was_open_) aim_stepper_at_chosen_violation(loop);
+  stepper_was_open_ = stepper_now_open;
   camera_.set_viewport(context_.width(), context_.height());
   const Elements& e = loop.source().elements();
   if (state_.selected >= e.size()) state_.selected = -1;
@@ -315,7 +328,8 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   t0 = Clock::now();
   fill_panels_view(loop, session, trace, sim);
 
-  imgui_->new_frame(live_input, context_.width(), context_.height(), dt);
+  imgui_->new_frame(live_input, context_.width(), context_.height(), dt,
+                    live_input ? std::function<void()>([this] { input_.apply(); }) : std::function<void()>());
   host_.frame(ctx, live_input);
   if (!panel_open(ui::kScalingTitle)) scaling_->cancel();  // a closed panel's run stops
   renderer_->emit_labels(ImGui::GetBackgroundDrawList());

@@ -6,6 +6,7 @@
 #pragma once
 #include <chrono>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,6 +22,7 @@
 #include "render/renderer.hpp"
 #include "ui/host.hpp"
 #include "ui/stepper_session.hpp"
+#include "ui/window_input.hpp"
 
 struct GLFWwindow;
 
@@ -82,8 +84,12 @@ class GlView {
   // user asked for. `live_input` lets keys and mouse act (the window, not scripted runs).
   ui::UiRequests frame(FrameLoop& loop, const Session& session, bool live_input, float dt);
   // True while the view changes without input (the stepper playing through a frame's operations, a
-  // Scaling run filling its plots), so the window must keep drawing even when paused.
+  // Scaling run filling its plots, key taps still to be given to the panels), so the window must
+  // keep drawing even when paused.
   [[nodiscard]] bool animating() const;
+  // The window's key and mouse-button events since the last frame, in order: live frames give them
+  // to the panels one change of a key or button a frame (ui::InputReplay), so no tap is lost.
+  void queue_input(std::span<const render::InputEvent> events) { input_.add(events); }
   // The framebuffer as an image (after frame(), before presenting).
   [[nodiscard]] Image screenshot() const { return context_.read_pixels(); }
 
@@ -118,6 +124,9 @@ class GlView {
   void stepped(const FrameLoop& loop);
   void frame_shown(const FrameLoop& loop);
   void rebuild_trail(const FrameLoop& loop);
+  // The Stepper just opened: it goes to the operation of the violation chosen before (as if it had
+  // been open when the violation was chosen).
+  void aim_stepper_at_chosen_violation(const FrameLoop& loop);
   // True when the panel titled `title` is open.
   [[nodiscard]] bool panel_open(std::string_view title) const;
   [[nodiscard]] bool stepper_open() const;
@@ -139,6 +148,7 @@ class GlView {
   // Home (the scene fitted, or --camera's view on load), a violation's pair kept in view, the refit
   // when the panels change the free space.
   render::CameraFraming framing_;
+  ui::InputReplay input_;  // the window's key and button events, given to ImGui in order
   std::string gl_description_;
   Cost cost_;
 
@@ -157,6 +167,7 @@ class GlView {
   std::string loaded_scene_;         // the scene last loaded: a selection survives a restart, not a new scene
   bool showed_scene_ = false;        // the last source followed had a scene (not a world stopped at load)
   std::optional<std::uint64_t> followed_;  // the loop's generation last followed (none: never)
+  bool stepper_was_open_ = false;          // the Stepper was open in the last frame()
 
   // Trails and flashes, advanced per change followed.
   ElementId trail_element_ = -1;

@@ -17,6 +17,21 @@ void remember_error(int code, const char* description) {
 }
 
 void* glfw_proc(const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); }
+
+InputEvent::Action action_of(int glfw_action) {
+  if (glfw_action == GLFW_PRESS) return InputEvent::Action::Press;
+  return glfw_action == GLFW_RELEASE ? InputEvent::Action::Release : InputEvent::Action::Repeat;
+}
+
+// GLFW's callbacks: queue the event on the window that owns the handle (its user pointer).
+void on_key(GLFWwindow* handle, int key, int /*scancode*/, int action, int /*mods*/) {
+  if (auto* w = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(handle)))
+    w->queue_input(InputEvent{InputEvent::Kind::Key, action_of(action), key});
+}
+void on_mouse_button(GLFWwindow* handle, int button, int action, int /*mods*/) {
+  if (auto* w = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(handle)))
+    w->queue_input(InputEvent{InputEvent::Kind::MouseButton, action_of(action), button});
+}
 }  // namespace
 
 GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
@@ -34,6 +49,10 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
     throw Error("window: cannot open: " + why);
   }
   glfwMakeContextCurrent(window_);
+  // Installed before ImGui's GLFW backend, which chains to these from its own callbacks.
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetKeyCallback(window_, &on_key);
+  glfwSetMouseButtonCallback(window_, &on_mouse_button);
   try {
     load_gl(&glfw_proc, "window");
   } catch (...) {
@@ -72,5 +91,17 @@ bool GlfwWindow::wait_events(double timeout_seconds) {
 }
 void GlfwWindow::set_vsync(bool on) { glfwSwapInterval(on ? 1 : 0); }
 double GlfwWindow::time() const { return glfwGetTime(); }
+
+std::vector<InputEvent> GlfwWindow::take_input() {
+  std::vector<InputEvent> events;
+  events.swap(input_);
+  return events;
+}
+
+void GlfwWindow::queue_input(const InputEvent& event) {
+  // A loop that never takes them (the verify window) keeps only the newest.
+  if (input_.size() >= kMaxQueuedInput) input_.erase(input_.begin());
+  input_.push_back(event);
+}
 
 }  // namespace nbscope::render

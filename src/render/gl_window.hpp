@@ -1,13 +1,25 @@
 // nbscope render: a GLFW window with a GL 3.3 core context. Only the windowed loop creates one;
 // the headless path never touches GLFW (glfwInit fails without a display).
 #pragma once
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "render/gl_context.hpp"
 
 struct GLFWwindow;
 
 namespace nbscope::render {
+
+// One key or mouse-button event as GLFW reported it, in arrival order (ui::InputReplay applies them).
+struct InputEvent {
+  enum class Kind : std::uint8_t { Key, MouseButton };
+  enum class Action : std::uint8_t { Press, Release, Repeat };
+  Kind kind = Kind::Key;
+  Action action = Action::Press;
+  int code = 0;  // GLFW_KEY_* (ImGui's io.KeysDown index) or GLFW_MOUSE_BUTTON_* (io.MouseDown's)
+  friend bool operator==(const InputEvent&, const InputEvent&) = default;
+};
 
 class GlfwWindow final : public GlContext {
  public:
@@ -36,9 +48,17 @@ class GlfwWindow final : public GlContext {
   void set_vsync(bool on);
   // Seconds since the window opened (GLFW's clock).
   [[nodiscard]] double time() const;
+  // The key and mouse-button events since the last call, oldest first (then forgotten). The window
+  // queues them from GLFW's callbacks, which ImGui's GLFW backend chains to its own, so a tap that
+  // starts and ends between two frames is kept, not lost between two polls of the keys' state.
+  [[nodiscard]] std::vector<InputEvent> take_input();
+  // Queues one event, as GLFW's callbacks do (at most kMaxQueuedInput wait; the oldest go first).
+  void queue_input(const InputEvent& event);
+  static constexpr std::size_t kMaxQueuedInput = 1024;
 
  private:
   GLFWwindow* window_ = nullptr;
+  std::vector<InputEvent> input_;
 };
 
 }  // namespace nbscope::render

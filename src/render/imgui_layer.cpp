@@ -36,7 +36,7 @@ ImGuiLayer::~ImGuiLayer() {
   ImGui::DestroyContext();
 }
 
-void ImGuiLayer::new_frame(bool live_input, int width, int height, float dt) {
+void ImGuiLayer::new_frame(bool live_input, int width, int height, float dt, const std::function<void()>& input) {
   ImGui_ImplOpenGL3_NewFrame();
   if (live_input && platform_) {
     ImGui_ImplGlfw_NewFrame();
@@ -48,6 +48,7 @@ void ImGuiLayer::new_frame(bool live_input, int width, int height, float dt) {
     io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
     for (bool& down : io.MouseDown) down = false;
   }
+  if (input) input();
   ImGui::NewFrame();
 }
 

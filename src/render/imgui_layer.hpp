@@ -2,6 +2,7 @@
 // window, ImGui's GLFW platform backend feeds it input; headless (or scripted) frames get their
 // display size and time step set directly, so the same panels render identically in both.
 #pragma once
+#include <functional>
 
 struct GLFWwindow;
 
@@ -17,8 +18,9 @@ class ImGuiLayer {
   ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 
   // Starts a frame. `live_input` takes size, time and input from the window; otherwise the frame
-  // is `width` x `height` with time step `dt` and no input (headless and scripted runs).
-  void new_frame(bool live_input, int width, int height, float dt);
+  // is `width` x `height` with time step `dt` and no input (headless and scripted runs). `input`,
+  // when given, sets the frame's keys and buttons after the platform backend's (ui::InputReplay).
+  void new_frame(bool live_input, int width, int height, float dt, const std::function<void()>& input = {});
   // Ends the frame and draws it into the current framebuffer.
   void render();
   // Vertices and indices ImGui drew in the last frame.

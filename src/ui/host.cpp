@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "core/cells.hpp"
+#include "io/plural.hpp"
 #include "ui/panels.hpp"
 #include "ui/window_input.hpp"
 
@@ -15,6 +16,7 @@ namespace nbscope::ui {
 
 namespace {
 constexpr float kGap = 6.0f;
+constexpr const char* kRestartPopup = "Restart the run?";
 // The columns together take at most this share of the display's width and the bottom dock this
 // share of the height below the menu bar, so that the scene keeps about half of each (the panels
 // wrap their rows or scroll); a column is never narrower than kMinColumnWidth.
@@ -52,11 +54,12 @@ float button_width(const char* label) { return ImGui::CalcTextSize(label, nullpt
 std::span<const char* const> help_lines() {
   static constexpr const char* kLines[] = {
       "P play/pause   O single step (held: repeats)   R restart   Home: fit the scene",
-      "1..9 algorithm   Esc: clear the selection",
+      "1..9 algorithm   Esc: clear the selection   (R asks first when the run has frames or violations)",
       "",
       "Timeline: , / . one frame back / forward (held: repeats; Shift: 10)   J play backwards",
       "          P on a past frame plays on through the kept frames; Resume here re-simulates",
-      "Violations: [ previous   ] next   Shift+[ the first",
+      "Violations: [ previous   ] next   Shift+[ the first   (none chosen: from the frame on screen)",
+      "            a violation line in Stats chooses it too",
       "",
       "Stepper (a paused frame; View -> Stepper):",
       "  -> / <-  one operation forward / back (held: repeats)",
@@ -155,7 +158,7 @@ void UiHost::fit_column(PanelPlace place, const std::vector<std::size_t>& shown,
   float total = 0;
   std::vector<std::size_t> candidates;
   for (const std::size_t i : shown) {
-    if (panels_[i]->place() != place) continue;
+    if (panels_[i]->place() != place || panels_[i]->takes_room_left()) continue;
     Slot& s = slots_[i];
     s.collapsed = s.pin == Slot::Pin::Collapsed;
     total += (s.collapsed ? title : std::max(s.expanded_height, title)) + kGap;
@@ -168,6 +171,25 @@ void UiHost::fit_column(PanelPlace place, const std::vector<std::size_t>& shown,
     if (total <= available) break;
     total -= std::max(slots_[i].expanded_height, title) - title;
     slots_[i].collapsed = true;
+  }
+}
+
+void UiHost::fit_columns_on_change(const std::vector<std::size_t>& shown, float available) {
+  constexpr int kRefitFrames = 4;  // an auto-sized window knows its height by its second or third frame
+  std::vector<int> key{static_cast<int>(available)};
+  for (const std::size_t i : shown) {
+    const Panel& p = *panels_[i];
+    if ((p.place() == PanelPlace::Left || p.place() == PanelPlace::Right) && !p.takes_room_left())
+      key.push_back(static_cast<int>(i) * 3 + static_cast<int>(slots_[i].pin));
+  }
+  if (key != layout_key_) {
+    layout_key_ = std::move(key);
+    refit_frames_ = kRefitFrames;
+  }
+  if (refit_frames_ > 0) {
+    --refit_frames_;
+    fit_column(PanelPlace::Left, shown, available);
+    fit_column(PanelPlace::Right, shown, available);
   }
 }
 
@@ -189,8 +211,7 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
   cap_column_widths(display.x, left_w, right_w);
   std::stable_sort(shown.begin(), shown.end(),
                    [&](std::size_t a, std::size_t b) { return panels_[a]->column_order() < panels_[b]->column_order(); });
-  fit_column(PanelPlace::Left, shown, display.y - top);
-  fit_column(PanelPlace::Right, shown, display.y - top);
+  fit_columns_on_change(shown, display.y - top);
   // The bottom dock spans the space between the columns, under the scene, and leaves the scene at
   // least 55% of the height below the menu (its panels scroll).
   const float dock_x0 = left_w > 0 ? left_w + 2 * kGap : kGap;
@@ -198,6 +219,12 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
   const float dock_max_h = kDockMaxShare * (display.y - top);
   float y_left = top, y_right = top, dock_y = display.y - kGap, dock_h = 0;
   covered_.assign(1, render::PixelRect{0, 0, display.x, menu});
+  // Opaque panels and title bars: the scene under them (a heat map, pair lines) never shows through the text.
+  const ImVec4* colors = ImGui::GetStyle().Colors;
+  const auto opaque = [](ImVec4 c) { return ImVec4(c.x, c.y, c.z, 1.0f); };
+  ImGui::PushStyleColor(ImGuiCol_WindowBg, opaque(colors[ImGuiCol_WindowBg]));
+  ImGui::PushStyleColor(ImGuiCol_PopupBg, opaque(colors[ImGuiCol_PopupBg]));
+  ImGui::PushStyleColor(ImGuiCol_TitleBgCollapsed, opaque(colors[ImGuiCol_TitleBg]));
   for (const std::size_t i : shown) {
     Panel& p = *panels_[i];
     Slot& slot = slots_[i];
@@ -221,7 +248,10 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
         column_y = left ? &y_left : &y_right;
         const float w = left ? left_w : right_w;
         ImGui::SetNextWindowPos(ImVec2(left ? kGap : display.x - kGap - w, *column_y), ImGuiCond_Always);
-        ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0), ImVec2(w, FLT_MAX));
+        // No lower than the display: a panel that grew (or came) after the collapses were decided scrolls.
+        const float room = std::max(display.y - *column_y - kGap, 3.0f * ImGui::GetFrameHeight());
+        ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0), ImVec2(w, room));
+        if (p.takes_room_left()) slot.collapsed = slot.pin == Slot::Pin::Collapsed;  // the host never collapses it
         ImGui::SetNextWindowCollapsed(slot.collapsed, ImGuiCond_Always);
         flags |= ImGuiWindowFlags_NoMove;
         if (w < p.width()) flags |= ImGuiWindowFlags_HorizontalScrollbar;  // a narrowed column scrolls sideways
@@ -229,15 +259,23 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
       }
     }
     bool open = true;
-    if (ImGui::Begin(p.title(), &open, flags)) p.draw(ctx);
+    float natural_height = 0;  // the height its contents ask for, above a smaller `room`
+    if (ImGui::Begin(p.title(), &open, flags)) {
+      p.draw(ctx);
+      const ImGuiStyle& style = ImGui::GetStyle();
+      natural_height = ImGui::GetCursorPosY() - style.ItemSpacing.y + style.WindowPadding.y;
+    }
     const ImVec2 size = ImGui::GetWindowSize();
     const ImVec2 pos = ImGui::GetWindowPos();
     covered_.push_back(render::PixelRect{pos.x, pos.y, pos.x + size.x, pos.y + size.y});
     if (column_y != nullptr) {
-      // A title bar clicked since the last frame: the user's choice stays.
+      // The collapse arrow or a double-click since the last frame, or one click on the title bar of
+      // a collapsed panel (which ImGui ignores): the user's choice stays.
       const bool collapsed = ImGui::IsWindowCollapsed();
+      const bool title_clicked = collapsed && ImGui::IsWindowHovered() && ImGui::IsMouseClicked(0) && !ImGui::IsAnyItemHovered();
       if (collapsed != slot.collapsed) slot.pin = collapsed ? Slot::Pin::Collapsed : Slot::Pin::Expanded;
-      if (!collapsed) slot.expanded_height = size.y;
+      else if (title_clicked) slot.pin = Slot::Pin::Expanded;
+      if (!collapsed) slot.expanded_height = std::max(size.y, natural_height);
       *column_y += size.y + kGap;
     } else if (p.place() == PanelPlace::Bottom) {
       dock_y -= size.y + kGap;
@@ -249,6 +287,7 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
       slot.pin = Slot::Pin::None;
     }
   }
+  ImGui::PopStyleColor(3);
   double bottom = dock_h > 0 ? dock_h + kGap : 0.0;
   // Live, the dock's reserved height only grows while it stays open, so the scene does not jump
   // when a wrapped line comes or goes between two steps; scripted frames reserve what the last
@@ -262,6 +301,30 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
     handle_keys(ctx);
     handle_mouse(ctx);
   }
+  confirm_restart(ctx);
+}
+
+void UiHost::confirm_restart(UiContext& ctx) {
+  // A restart (R, the Controls button) drops the run's frames and violations: asked first when it
+  // has any. A recording's frames stay (its restart only goes back to its first).
+  const SimView& s = ctx.sim;
+  if (ctx.requests.restart && !s.replaying && (s.newest_frame > 0 || s.violations_total > 0)) {
+    ctx.requests.restart = false;
+    restart_loses_ = {s.newest_frame, s.violations_total};
+    ImGui::OpenPopup(kRestartPopup);
+  }
+  if (!ImGui::BeginPopupModal(kRestartPopup, nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) return;
+  ImGui::Text("Restart from frame 0? The run's %s and %s are dropped.",
+              plural(static_cast<long long>(restart_loses_[0]), "frame").c_str(),
+              plural(static_cast<long long>(restart_loses_[1]), "violation").c_str());
+  const auto key = [](ImGuiKey k) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(k), false); };
+  if (ImGui::Button("Restart (Enter)") || key(ImGuiKey_Enter) || key(ImGuiKey_KeyPadEnter)) {
+    ctx.requests.restart = true;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel (Esc)") || key(ImGuiKey_Escape)) ImGui::CloseCurrentPopup();
+  ImGui::EndPopup();
 }
 
 float UiHost::draw_fault_banner(const UiContext& ctx, float x0, float x1, float top) {

@@ -7,6 +7,8 @@
 //
 // Index: UiHost (panels, frame, insets) | private: column fitting, keys, mouse, menu.
 #pragma once
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <span>
@@ -52,8 +54,14 @@ class UiHost {
     Pin pin = Pin::None;        // the user's own click on its title bar wins over the host
   };
   void fit_column(PanelPlace place, const std::vector<std::size_t>& shown, float available);
+  // Decides the columns' collapses again only when the panels they show (but Selection), the
+  // user's pins or the display's height change, and for a few frames after (new panels size
+  // themselves): never because a panel's contents grew, a violation was chosen or an element clicked.
+  void fit_columns_on_change(const std::vector<std::size_t>& shown, float available);
   void handle_keys(UiContext& ctx);
   void handle_mouse(UiContext& ctx);
+  // Holds back a restart of a run with frames or violations until the user confirms it in a popup.
+  void confirm_restart(UiContext& ctx);
   void draw_menu(UiContext& ctx);
   // The banner of an injected fault between the columns under the menu bar; returns its height
   // (0 without a fault).
@@ -62,6 +70,9 @@ class UiHost {
   std::vector<Slot> slots_;
   std::optional<render::ScreenInsets> insets_;
   std::vector<render::PixelRect> covered_;
+  std::array<std::int64_t, 2> restart_loses_{};  // the frames and violations the asked restart drops
+  std::vector<int> layout_key_;  // what the columns' collapses were last decided for
+  int refit_frames_ = 0;         // frames left to decide them again in
 };
 
 }  // namespace nbscope::ui

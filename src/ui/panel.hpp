@@ -36,6 +36,9 @@ class Panel {
   [[nodiscard]] virtual int column_order() const { return 100; }
   // False hides the window this frame even when open (e.g. Selection with nothing selected).
   [[nodiscard]] virtual bool visible(const UiContext&) const { return true; }
+  // True: coming and going never collapses another panel; it takes the room left below the others
+  // and scrolls (Selection, shown by a click: the panels the user reads stay as they are).
+  [[nodiscard]] virtual bool takes_room_left() const { return false; }
   // Draws the window's contents (the host has called Begin).
   virtual void draw(UiContext& ctx) = 0;
   // Adds to the scene, drawn after the overlays (the stepper highlights its current event).

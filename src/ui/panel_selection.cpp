@@ -21,6 +21,7 @@ class SelectionPanel final : public Panel {
   [[nodiscard]] PanelPlace place() const override { return PanelPlace::Right; }
   [[nodiscard]] float width() const override { return 290.0f; }
   [[nodiscard]] int priority() const override { return 10; }
+  [[nodiscard]] bool takes_room_left() const override { return true; }
   [[nodiscard]] bool visible(const UiContext& c) const override {
     return c.sim.elements != nullptr && c.state.selected >= 0 && c.state.selected < c.sim.elements->size();
   }

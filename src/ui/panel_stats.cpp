@@ -125,8 +125,21 @@ class StatsPanel final : public Panel {
       ImGui::TextColored(ImVec4(1.0f, 0.3f, 0.3f, 1.0f), "check FAILED: %s", plural(static_cast<long long>(count), "violation").c_str());
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.5f, 0.5f, 1.0f));
       const std::size_t lines = std::min(report->violations.size(), kViolationLines);
-      for (std::size_t i = 0; i < lines; ++i)
+      for (std::size_t i = 0; i < lines; ++i) {
         ImGui::TextWrapped("%s", violation_line(report->violations[i], c.state.book_numbering).c_str());
+        // One click from "check FAILED" to the violation: chosen as a click in the Violations panel chooses it.
+        if (ImGui::IsItemHovered()) {
+          ImGui::GetWindowDrawList()->AddRectFilled(ImGui::GetItemRectMin(), ImGui::GetItemRectMax(), IM_COL32(255, 90, 90, 40));
+          ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
+        }
+        if (ImGui::IsItemClicked()) {
+          if (const auto index = violation_index(s, report->violations[i])) c.requests.go_to_violation = *index;
+        }
+        // The line's cells are the detector's; where the grid puts the elements elsewhere, say so.
+        const Violation& v = report->violations[i];
+        if (const auto truth = grid_cells(s, v); truth && !(v.cell_i == (*truth)[0] && v.cell_j == (*truth)[1]))
+          ImGui::TextDisabled("  true cells (the grid's): %s", cell_pair_text((*truth)[0], (*truth)[1], c.state.book_numbering).c_str());
+      }
       ImGui::PopStyleColor();
       // Never cut silently: say how many more, and where they all are.
       if (count > lines) {

@@ -91,8 +91,11 @@ class TimelinePanel final : public Panel {
                   s.replaying ? " (recorded)" : " (live)");
     }
     if (!s.resume_note.empty()) {
-      ImGui::SameLine();
+      // Whole: after the frame text when it fits there, else on its own lines, wrapped.
+      same_line_if_fits(ImGui::CalcTextSize(s.resume_note.c_str()).x);
+      ImGui::PushTextWrapPos(0.0f);
       ImGui::TextDisabled("%s", s.resume_note.c_str());
+      ImGui::PopTextWrapPos();
     }
     // The memory the kept frames take, and the budget (a click opens the setting).
     char mem[96];

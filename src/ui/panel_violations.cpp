@@ -16,6 +16,10 @@ namespace nbscope::ui {
 namespace {
 
 const ImVec4 kRed(1.0f, 0.4f, 0.4f, 1.0f);
+const ImVec4 kOrange(1.0f, 0.65f, 0.3f, 1.0f);
+
+// True when the violation's cells (the detector's) are `truth`.
+bool same_cells(const Violation& v, const std::array<CellIndex, 2>& truth) { return v.cell_i == truth[0] && v.cell_j == truth[1]; }
 
 class ViolationsPanel final : public Panel {
  public:
@@ -77,6 +81,10 @@ class ViolationsPanel final : public Panel {
       ImGui::Separator();
       ImGui::PushTextWrapPos(0.0f);
       ImGui::TextColored(kRed, "%s", describe_violation(v, book).c_str());
+      const auto truth = grid_cells(s, v);
+      if (truth && !same_cells(v, *truth))
+        ImGui::TextColored(kOrange, "The grid puts them in %s: the detector's cells are not the true ones.",
+                           cell_pair_text((*truth)[0], (*truth)[1], book).c_str());
       if (!s.locate_status.empty()) ImGui::TextWrapped("%s", s.locate_status.c_str());
       ImGui::PopTextWrapPos();
     }
@@ -96,8 +104,21 @@ class ViolationsPanel final : public Panel {
   }
 
   void draw_table(UiContext& c, const std::vector<Violation>& all, bool book) {
-    const float row_h = ImGui::GetTextLineHeightWithSpacing();
-    const float height = std::min(8.0f, static_cast<float>(rows_.size()) + 1.0f) * row_h + 6.0f;
+    // Rows take two lines while a violation of the frame on screen has detector's cells that are not
+    // the grid's (a wrong integerisation): the second line gives the true ones. (The clipper needs
+    // rows of one height.)
+    bool two_lines = false;
+    for (const std::size_t k : rows_) {
+      const auto truth = grid_cells(c.sim, all[k]);
+      if (truth && !same_cells(all[k], *truth)) {
+        two_lines = true;
+        break;
+      }
+    }
+    const float line_h = ImGui::GetTextLineHeightWithSpacing();
+    // A row is its lines plus the cell padding, which equals one line's spacing: two lines, twice a line's height.
+    const float row_h = two_lines ? 2.0f * line_h : line_h;
+    const float height = std::min(8.0f, static_cast<float>(rows_.size())) * row_h + line_h + 6.0f;
     const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                                   ImGuiTableFlags_SizingFixedFit;
     if (!ImGui::BeginTable("violations", 4, flags, ImVec2(0, height))) return;
@@ -105,8 +126,16 @@ class ViolationsPanel final : public Panel {
     ImGui::TableSetupColumn("frame");
     ImGui::TableSetupColumn("check");
     ImGui::TableSetupColumn("pair");
-    ImGui::TableSetupColumn("cells", ImGuiTableColumnFlags_WidthStretch);
-    ImGui::TableHeadersRow();
+    ImGui::TableSetupColumn("detector's", ImGuiTableColumnFlags_WidthStretch);
+    // The headers one by one: the cells column's says whose cells it lists (its name fits the narrow column).
+    ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+    for (int column = 0; column < 4; ++column) {
+      ImGui::TableSetColumnIndex(column);
+      ImGui::TableHeader(ImGui::TableGetColumnName(column));
+      if (column == 3 && ImGui::IsItemHovered())
+        ImGui::SetTooltip("the cells the detector put the pair's elements in; for the frame on screen, a line\n"
+                          "\"true\" below gives the grid's own cells (what Selection and the picture show) where they differ");
+    }
     ImGuiListClipper clipper;
     clipper.Begin(static_cast<int>(rows_.size()));
     // Keep the chosen row in view after a jump (a key, a button, the app going to one).
@@ -133,12 +162,16 @@ class ViolationsPanel final : public Panel {
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe_violation(v, book).c_str());
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(invariant_name(v.invariant));
+        const auto truth = grid_cells(c.sim, v);
+        const bool wrong = truth && !same_cells(v, *truth);
         ImGui::TableNextColumn();
         ImGui::Text("%lld, %lld", static_cast<long long>(shown(v.pair.i, book)), static_cast<long long>(shown(v.pair.j, book)));
+        if (wrong) ImGui::TextDisabled("true");  // under the pair, beside the grid's cells
         ImGui::TableNextColumn();
-        ImGui::Text("(%lld,%lld) (%lld,%lld)", static_cast<long long>(shown(v.cell_i.ix, book)),
-                    static_cast<long long>(shown(v.cell_i.iy, book)), static_cast<long long>(shown(v.cell_j.ix, book)),
-                    static_cast<long long>(shown(v.cell_j.iy, book)));
+        if (wrong) ImGui::TextColored(kOrange, "%s", cell_pair_text(v.cell_i, v.cell_j, book).c_str());
+        else ImGui::TextUnformatted(cell_pair_text(v.cell_i, v.cell_j, book).c_str());
+        if (wrong) ImGui::TextDisabled("%s", cell_pair_text((*truth)[0], (*truth)[1], book).c_str());
+        else if (two_lines) ImGui::TextUnformatted("");
       }
     }
     ImGui::EndTable();
@@ -171,10 +204,22 @@ std::optional<std::size_t> step_violation(const SimView& sim, const UiState& sta
   const std::vector<Violation>& all = *sim.violations;
   const auto listed = [&](std::size_t k) { return state.violation_filter[static_cast<std::size_t>(all[k].invariant)]; };
   const std::int64_t n = static_cast<std::int64_t>(all.size());
-  if (direction == 0 || state.current_violation < 0 || state.current_violation >= n) {
-    // The first listed one (also where Next/Prev start when none is chosen yet).
+  if (direction == 0) {
     for (std::size_t k = 0; k < all.size(); ++k)
       if (listed(k)) return k;
+    return std::nullopt;
+  }
+  if (state.current_violation < 0 || state.current_violation >= n) {
+    // None chosen yet: from the frame on screen, the first listed at or after it (Next, ]) or the
+    // last at or before it (Prev, [) — not the run's first, which may be far behind.
+    const std::int64_t here = sim.frame_number();
+    if (direction > 0) {
+      for (std::size_t k = 0; k < all.size(); ++k)
+        if (all[k].frame >= here && listed(k)) return k;
+    } else {
+      for (std::size_t k = all.size(); k-- > 0;)
+        if (all[k].frame <= here && listed(k)) return k;
+    }
     return std::nullopt;
   }
   for (std::int64_t k = state.current_violation + direction; k >= 0 && k < n; k += direction)
@@ -182,11 +227,36 @@ std::optional<std::size_t> step_violation(const SimView& sim, const UiState& sta
   return std::nullopt;
 }
 
+std::optional<std::size_t> violation_index(const SimView& sim, const Violation& v) {
+  if (sim.violations == nullptr) return std::nullopt;
+  const std::vector<Violation>& all = *sim.violations;
+  // The log is in frame order: its frame's violations, then the one with the same pair and invariant.
+  auto it = std::partition_point(all.begin(), all.end(), [&](const Violation& w) { return w.frame < v.frame; });
+  for (; it != all.end() && it->frame == v.frame; ++it)
+    if (it->pair == v.pair && it->invariant == v.invariant) return static_cast<std::size_t>(it - all.begin());
+  return std::nullopt;
+}
+
 std::string describe_violation(const Violation& v, bool book) {
   const auto id = [&](std::int64_t k) { return std::to_string(shown(k, book)); };
   return std::string(invariant_name(v.invariant)) + " in frame " + std::to_string(v.frame) + ": (" + id(v.pair.i) + ", " +
-         id(v.pair.j) + ") " + v.what + "; cells (" + id(v.cell_i.ix) + "," + id(v.cell_i.iy) + ") and (" + id(v.cell_j.ix) +
-         "," + id(v.cell_j.iy) + ")";
+         id(v.pair.j) + ") " + v.what + "; the detector's cells (" + id(v.cell_i.ix) + "," + id(v.cell_i.iy) + ") and (" +
+         id(v.cell_j.ix) + "," + id(v.cell_j.iy) + ")";
+}
+
+std::optional<std::array<CellIndex, 2>> grid_cells(const SimView& sim, const Violation& v) {
+  const Grid* grid = sim.grid();
+  if (grid == nullptr || sim.elements == nullptr || v.frame != sim.frame_number()) return std::nullopt;
+  const Elements& e = *sim.elements;
+  if (v.pair.i < 0 || v.pair.j < 0 || v.pair.i >= e.size() || v.pair.j >= e.size()) return std::nullopt;
+  // The grid's own integerisation (core/cells.hpp integerise_cells), as the Selection panel and the picture show it.
+  const auto cell = [&](ElementId k) { return CellIndex{grid->cell(e.x[k], 0), grid->cell(e.y[k], 1)}; };
+  return std::array<CellIndex, 2>{cell(v.pair.i), cell(v.pair.j)};
+}
+
+std::string cell_pair_text(const CellIndex& a, const CellIndex& b, bool book) {
+  const auto id = [&](std::int64_t k) { return std::to_string(shown(k, book)); };
+  return "(" + id(a.ix) + "," + id(a.iy) + ") (" + id(b.ix) + "," + id(b.iy) + ")";
 }
 
 std::unique_ptr<Panel> make_violations_panel() { return std::make_unique<ViolationsPanel>(); }

@@ -1,5 +1,6 @@
 // nbscope ui: the standard panels (one file each).
 #pragma once
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -33,10 +34,21 @@ inline constexpr const char* kViolationsTitle = "Violations";
 inline constexpr const char* kStatsTitle = "Stats";
 
 // The violation to go to from the current one (UiState::current_violation) among those the filter
-// lists: direction 0 the first, +1 the next, -1 the previous; nullopt when there is none.
+// lists: direction 0 the first, +1 the next, -1 the previous; with none chosen, +1 the first at or
+// after the frame on screen, -1 the last at or before it; nullopt when there is none.
 std::optional<std::size_t> step_violation(const SimView& sim, const UiState& state, int direction);
-// "A==R in frame 3: (4, 6) missing from A (in R); cells (5,6) and (4,7)", in the chosen numbering.
+// The index in SimView::violations (the run's log) of `violation`, one of a frame's report, or
+// nullopt when the log does not list it.
+std::optional<std::size_t> violation_index(const SimView& sim, const Violation& violation);
+// "A==R in frame 3: (4, 6) missing from A (in R); the detector's cells (5,6) and (4,7)", in the
+// chosen numbering.
 std::string describe_violation(const Violation& violation, bool book);
+// The cells the grid gives the violation's two elements (core/cells.hpp's integerisation: what the
+// Selection panel and the picture show), to hold against the detector's (Violation::cell_i, cell_j);
+// nullopt unless the violation is of the frame on screen (only its elements are at hand).
+std::optional<std::array<CellIndex, 2>> grid_cells(const SimView& sim, const Violation& violation);
+// "(5,6) (4,7)": two cells in the chosen numbering.
+std::string cell_pair_text(const CellIndex& a, const CellIndex& b, bool book);
 // The Stats panel's line for one of the frame's violations: "A==R: (4, 6) missing from A (in R),
 // cells (5,6) (4,7)", in the chosen numbering.
 std::string violation_line(const Violation& violation, bool book);

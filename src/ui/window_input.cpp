@@ -1,6 +1,8 @@
 #include "ui/window_input.hpp"
 
 #include <imgui.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 
 #include <cmath>
 
@@ -31,6 +33,37 @@ void toggle_overlays_by_key(render::OverlayFlags& flags, std::string_view letter
   for (const render::OverlayInfo& o : render::overlay_infos())
     if ((letters.empty() || letters.find(o.key) != std::string_view::npos) && ImGui::IsKeyPressed(o.key, false))
       flags.*o.flag = !(flags.*o.flag);
+}
+
+void InputReplay::add(std::span<const render::InputEvent> events) { queue_.insert(queue_.end(), events.begin(), events.end()); }
+
+void InputReplay::apply() {
+  using Kind = render::InputEvent::Kind;
+  std::array<bool, kKeys> key_changed{};
+  std::array<bool, kButtons> button_changed{};
+  while (!queue_.empty()) {
+    const render::InputEvent e = queue_.front();
+    const bool key = e.kind == Kind::Key;
+    // A repeat changes nothing (ImGui repeats a held key itself); an unknown code is dropped.
+    if (e.action == render::InputEvent::Action::Repeat || e.code < 0 || e.code >= (key ? kKeys : kButtons)) {
+      queue_.pop_front();
+      continue;
+    }
+    const auto k = static_cast<std::size_t>(e.code);
+    bool& changed = key ? key_changed[k] : button_changed[k];
+    if (changed) break;  // its second change this frame: from here on, the next frame's
+    changed = true;
+    (key ? keys_[k] : buttons_[k]) = e.action == render::InputEvent::Action::Press;
+    queue_.pop_front();
+  }
+  ImGuiIO& io = ImGui::GetIO();
+  for (int k = 0; k < kKeys; ++k) io.KeysDown[k] = keys_[static_cast<std::size_t>(k)];
+  for (int b = 0; b < kButtons; ++b) io.MouseDown[b] = buttons_[static_cast<std::size_t>(b)];
+  const auto down = [&](int a, int b) { return keys_[static_cast<std::size_t>(a)] || keys_[static_cast<std::size_t>(b)]; };
+  io.KeyCtrl = down(GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL);
+  io.KeyShift = down(GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT);
+  io.KeyAlt = down(GLFW_KEY_LEFT_ALT, GLFW_KEY_RIGHT_ALT);
+  io.KeySuper = down(GLFW_KEY_LEFT_SUPER, GLFW_KEY_RIGHT_SUPER);
 }
 
 }  // namespace nbscope::ui

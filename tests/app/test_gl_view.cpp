@@ -4,11 +4,20 @@
 // of scene, and the view follows the loop's changes (GlView::follow) without being told of each.
 #include <gtest/gtest.h>
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_internal.h>
+
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 
 #include "app/gl_view.hpp"
+#include "app/gui_requests.hpp"
 #include "physics/box2d_detector.hpp"
 #include "render/gl_context.hpp"
+#include "render/gl_window.hpp"
 #include "core/traced_lists.hpp"
 #include "ui/stepper_panels.hpp"
 
@@ -18,14 +27,15 @@ namespace {
 std::string scene(const char* name) { return std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/" + name; }
 
 struct ViewRig {
-  std::unique_ptr<render::GlContext> context = render::make_offscreen_context(800, 500, "osmesa");
+  std::unique_ptr<render::GlContext> context;
   FrameLoop loop;
   Session session;
   std::unique_ptr<GlView> view;
-  explicit ViewRig(ViewOptions options, const char* file) {
+  explicit ViewRig(ViewOptions options, const char* file, const FrameLoopOptions& loop_options = {}, int width = 800, int height = 500)
+      : context(render::make_offscreen_context(width, height, "osmesa")), loop(loop_options) {
     register_physics_detectors();
-    options.width = 800;
-    options.height = 500;
+    options.width = width;
+    options.height = height;
     options.shader_dir = NBSCOPE_SHADER_DIR;
     load_scene_file(loop, scene(file));
     session.scene_path = loop.source().scene().path;
@@ -76,6 +86,113 @@ TEST(GlView, ADetectorWithoutATraceSaysSoInTheStepperPanels) {
   EXPECT_NE(s.message().find("box2d records no operations"), std::string::npos) << s.message();
   EXPECT_EQ(ui::idle_message(s), s.message());
   EXPECT_TRUE(rig.view->lists().empty());
+}
+
+// A violation chosen with the Stepper closed (a click in Violations or Stats, or ]): opening the
+// Stepper afterwards goes to the operation that decided the pair, as if it had been open.
+TEST(GlView, AStepperOpenedAfterAViolationWasChosenGoesToItsOperation) {
+  FrameLoopOptions faulty;
+  faulty.fault = Fault::DropPair;
+  ViewRig rig(ViewOptions{}, "book-fig-3-15.json", faulty);
+  rig.frames(1);
+  ASSERT_FALSE(rig.loop.history().violation_log().listed().empty()) << "drop-pair loses a pair on frame 0";
+  ui::UiRequests choose;
+  choose.go_to_violation = 0;
+  apply_requests(choose, rig.loop, *rig.view, rig.session);
+  rig.frames(2);
+  const ui::StepperSession& s = rig.view->stepper();
+  EXPECT_FALSE(s.target_location().has_value()) << "the Stepper is closed";
+  rig.view->state().panel_open[ui::kStepperTitle] = true;
+  rig.frames(3);
+  ASSERT_TRUE(s.has_capture()) << s.message();
+  ASSERT_TRUE(s.target_location().has_value()) << "the Stepper opened at operation " << s.stepper().position();
+  ASSERT_TRUE(s.target_location()->event.has_value());
+  EXPECT_EQ(s.stepper().position(), *s.target_location()->event + 1);
+  EXPECT_GT(s.stepper().position(), 0u);
+}
+
+// A key tap the window queued (press and release between two frames) acts on the next live frame.
+TEST(GlView, ATapQueuedBetweenTwoFramesActs) {
+  ViewRig rig(ViewOptions{}, "book-fig-3-15.json");
+  rig.frames(1);
+  const render::InputEvent tap[] = {{render::InputEvent::Kind::Key, render::InputEvent::Action::Press, 'P'},
+                                    {render::InputEvent::Kind::Key, render::InputEvent::Action::Release, 'P'}};
+  rig.view->queue_input(tap);
+  EXPECT_TRUE(rig.view->frame(rig.loop, rig.session, true, 1.0f / 60.0f).toggle_pause);
+  EXPECT_FALSE(rig.view->frame(rig.loop, rig.session, true, 1.0f / 60.0f).toggle_pause);
+}
+
+// Through GLFW's own callbacks in a real window (under Xvfb: without a display the test runs itself
+// under xvfb-run): ImGui's backend, which chains to the window's callback, still sees the key, and
+// the window queues it, so a press and release before the next frame still act on it.
+TEST(GlViewWindow, ATapThroughGlfwsCallbacksActs) {
+  const char* display = std::getenv("DISPLAY");
+  if (display == nullptr || *display == '\0') {
+    if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
+    const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+    const std::string cmd = "xvfb-run -a -s '-screen 0 1280x720x24' '" + self +
+                            "' --gtest_filter=GlViewWindow.ATapThroughGlfwsCallbacksActs >/dev/null 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    return;
+  }
+  register_physics_detectors();
+  render::GlfwWindow window(800, 500, "nbscope test");
+  FrameLoop loop;
+  load_scene_file(loop, scene("book-fig-3-15.json"));
+  Session session;
+  session.paused = true;
+  ViewOptions o;
+  o.width = 800;
+  o.height = 500;
+  o.shader_dir = NBSCOPE_SHADER_DIR;
+  GlView view(window, window.handle(), o);
+  view.follow(loop);
+  view.frame(loop, session, true, 1.0f / 60.0f);
+  // The key callback GLFW calls now: ImGui's, installed after the window's.
+  const GLFWkeyfun key = glfwSetKeyCallback(window.handle(), nullptr);
+  glfwSetKeyCallback(window.handle(), key);
+  ASSERT_NE(key, nullptr);
+  key(window.handle(), GLFW_KEY_P, 0, GLFW_PRESS, 0);
+  EXPECT_TRUE(ImGui::GetIO().KeysDown[GLFW_KEY_P]) << "ImGui's backend no longer gets the keys";
+  key(window.handle(), GLFW_KEY_P, 0, GLFW_RELEASE, 0);
+  view.queue_input(window.take_input());
+  EXPECT_TRUE(view.frame(loop, session, true, 1.0f / 60.0f).toggle_pause) << "the tap between two frames was lost";
+  view.queue_input(window.take_input());
+  EXPECT_FALSE(view.frame(loop, session, true, 1.0f / 60.0f).toggle_pause);
+}
+
+// Choosing a violation in the window (1280x720, the default scene with a fault) collapses no panel
+// and moves none that was already shown: the Selection panel comes below the others.
+TEST(GlView, ChoosingAViolationLeavesThePanelsWhereTheyAre) {
+  FrameLoopOptions faulty;
+  faulty.fault = Fault::DropMaskCell;
+  ViewRig rig(ViewOptions{}, "default.json", faulty, 1280, 720);
+  for (int k = 0; k < 40 && rig.loop.history().violation_log().listed().size() < 3; ++k) {
+    rig.loop.step();
+    rig.frames(1);
+  }
+  ASSERT_GE(rig.loop.history().violation_log().listed().size(), 3u);
+  rig.frames(GlView::kSettleFrames);
+  struct Shown {
+    const ImGuiWindow* window;
+    ImVec2 pos;
+    bool collapsed;
+  };
+  std::vector<Shown> before;
+  for (const auto& p : rig.view->host().panels())
+    if (const ImGuiWindow* w = ImGui::FindWindowByName(p->title()); w != nullptr && w->Active)
+      before.push_back({w, w->Pos, w->Collapsed});
+  ASSERT_GE(before.size(), 5u);
+  ui::UiRequests choose;
+  choose.go_to_violation = 1;
+  apply_requests(choose, rig.loop, *rig.view, rig.session);
+  rig.frames(GlView::kSettleFrames);
+  ASSERT_GE(rig.view->state().selected, 0);
+  for (const Shown& s : before) {
+    EXPECT_EQ(s.window->Collapsed, s.collapsed) << s.window->Name;
+    EXPECT_EQ(s.window->Pos.x, s.pos.x) << s.window->Name;
+    EXPECT_EQ(s.window->Pos.y, s.pos.y) << s.window->Name;
+  }
 }
 
 // The Arrays panel alone (the Stepper closed) still gets the frame's trace.

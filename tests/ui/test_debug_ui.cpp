@@ -4,6 +4,7 @@
 // the camera kept on a point.
 #include <gtest/gtest.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <deque>
 
@@ -143,7 +144,56 @@ TEST(Violations, FirstNextPreviousFollowTheFilter) {
   EXPECT_EQ(step_violation(v.sim, v.state, 0), 0u);
   v.state.violation_filter = {false, false, false, false};
   EXPECT_EQ(step_violation(v.sim, v.state, 0), std::nullopt);
-  EXPECT_EQ(describe_violation(v.all[2], true), "A==R in frame 2: (3, 4) x; cells (1,1) and (1,1)");
+  EXPECT_EQ(describe_violation(v.all[2], true), "A==R in frame 2: (3, 4) x; the detector's cells (1,1) and (1,1)");
+}
+
+// With none chosen, ] and [ start from the frame on screen, not from the run's first violation.
+TEST(Violations, NothingChosenStartsFromTheFrameOnScreen) {
+  ViolationsFixture v;  // frames 1, 1, 2, 2, 3
+  FrameResult shown;
+  v.sim.frame = &shown;
+  shown.frame = 2;
+  EXPECT_EQ(step_violation(v.sim, v.state, +1), 2u) << "the first at or after frame 2";
+  EXPECT_EQ(step_violation(v.sim, v.state, -1), 3u) << "the last at or before frame 2";
+  EXPECT_EQ(step_violation(v.sim, v.state, 0), 0u) << "Shift+[ is still the run's first";
+  shown.frame = 4;
+  EXPECT_EQ(step_violation(v.sim, v.state, +1), std::nullopt) << "none after the last";
+  EXPECT_EQ(step_violation(v.sim, v.state, -1), 4u);
+  shown.frame = 0;
+  EXPECT_EQ(step_violation(v.sim, v.state, -1), std::nullopt) << "none before the first";
+  v.state.violation_filter[static_cast<std::size_t>(Invariant::AEqualsR)] = false;
+  shown.frame = 2;
+  EXPECT_EQ(step_violation(v.sim, v.state, +1), 3u) << "through the filter";
+}
+
+// The Violations panel's cells are the detector's; for the frame on screen the grid's true cells
+// are at hand too, and differ under a wrong integerisation (off-by-one-cell: element 0 in (4,6)
+// reported in (5,6), element 1 likewise).
+TEST(Violations, TheTrueCellsBesideTheDetectorsOnTheFrameOnScreen) {
+  BookFrame f;  // Fig. 3.15 on unit cells: elements 0 and 1 at (4.75, 6.45) and (4.9, 6.5), both in (4,6)
+  f.result.frame = 7;
+  const Violation off{7, Invariant::AEqualsR, Pair{0, 1}, {5, 6}, {5, 6}, "missing from A (in R)"};
+  const auto truth = grid_cells(f.sim, off);
+  ASSERT_TRUE(truth.has_value());
+  EXPECT_EQ((*truth)[0], (CellIndex{4, 6}));
+  EXPECT_EQ((*truth)[1], (CellIndex{4, 6}));
+  EXPECT_EQ(cell_pair_text((*truth)[0], (*truth)[1], true), "(5,7) (5,7)");
+  Violation other = off;
+  other.frame = 6;
+  EXPECT_EQ(grid_cells(f.sim, other), std::nullopt) << "another frame's elements are not at hand";
+  other = off;
+  other.pair = Pair{0, 99};
+  EXPECT_EQ(grid_cells(f.sim, other), std::nullopt);
+  // The panel draws it (two-line rows) without trouble.
+  ImGuiScope scope;
+  UiHost host;
+  std::vector<Violation> log{off};
+  f.sim.violations = &log;
+  f.sim.violations_total = 1;
+  f.sim.violations_by_invariant = {1, 0, 0, 0};
+  f.state.current_violation = 0;
+  EXPECT_NO_THROW(run_frame(host, f));
+  EXPECT_NO_THROW(run_frame(host, f));
 }
 
 // The host's keys ask for frames and violations; the panels draw from the run's data.
@@ -181,7 +231,7 @@ TEST(DebugPanels, KeysAskForFramesPlaybackAndViolations) {
   press(']');
   run_frame(host, f);
   release();
-  EXPECT_EQ(f.requests.go_to_violation, 0u);
+  EXPECT_EQ(f.requests.go_to_violation, 4u) << "none chosen: the first at or after frame 3, on screen";
   f.state.current_violation = 3;
   press('[');
   run_frame(host, f);
@@ -240,6 +290,105 @@ TEST(DebugPanels, ReadTheFrameResultAndCopeWithNone) {
   EXPECT_EQ(f.sim.grid(), nullptr);
   EXPECT_EQ(f.sim.report(), nullptr);
   EXPECT_NO_THROW(run_frame(host, f));
+}
+
+// A click on one of the Stats panel's violation lines chooses it as the Violations panel does: the
+// request names its index in the run's log (here after another frame's violation).
+TEST(DebugPanels, AViolationLineInStatsIsOneClickFromItsViolation) {
+  ImGuiScope scope;
+  UiHost host;
+  BookFrame f;
+  f.result.frame = 5;
+  FrameReport& report = f.result.lanes.front().report;
+  report.checked = true;
+  report.reference = "brute";
+  std::vector<Violation> log{Violation{3, Invariant::TInA, Pair{0, 1}, {}, {}, "earlier"}};
+  for (int k = 0; k < 3; ++k) {
+    report.violations.push_back(Violation{5, Invariant::AEqualsR, Pair{k, k + 1}, {1, 2}, {3, 4}, "missing from A"});
+    log.push_back(report.violations.back());
+  }
+  report.broken[0] = 3;
+  f.sim.violations = &log;
+  f.sim.violations_total = 4;
+  ImGuiIO& io = ImGui::GetIO();
+  run_frame(host, f);
+  run_frame(host, f);
+  const ImGuiWindow* stats = ImGui::FindWindowByName(kStatsTitle);
+  ASSERT_NE(stats, nullptr);
+  // Down the panel 7 pixels at a time (farther than a double-click reaches), a click each: the first
+  // line that answers is the first violation's.
+  std::optional<std::size_t> chosen;
+  for (float y = stats->Pos.y + 2; y < stats->Pos.y + stats->Size.y && !chosen; y += 7) {
+    io.MousePos = ImVec2(stats->Pos.x + 40, y);
+    run_frame(host, f);
+    io.MouseDown[0] = true;
+    run_frame(host, f);
+    io.MouseDown[0] = false;
+    chosen = f.requests.go_to_violation;
+    run_frame(host, f);
+  }
+  ASSERT_TRUE(chosen.has_value()) << "no violation line in Stats answers a click";
+  EXPECT_EQ(*chosen, 1u);
+  EXPECT_EQ(violation_index(f.sim, report.violations[2]), 3u);
+  EXPECT_EQ(violation_index(f.sim, Violation{5, Invariant::TInA, Pair{0, 1}, {}, {}, ""}), std::nullopt);
+}
+
+// Resume here's result is shown whole: wrapped inside the Timeline, not cut at its edge.
+TEST(DebugPanels, TheResumeNoteIsShownWhole) {
+  ImGuiScope scope;
+  UiHost host;
+  BookFrame f;
+  std::deque<FrameSummary> timeline;
+  for (int k = 0; k <= 3; ++k) timeline.push_back(FrameSummary{k, k / 60.0, 0, true, true, 9, 1, 0, 0, 0.1f, 0});
+  f.sim.timeline = &timeline;
+  f.sim.newest_frame = 209;
+  f.sim.resume_note = "resumed at 209 (re-simulated frames matched the kept ones)";
+  const auto timeline_window = [&] {
+    for (int k = 0; k < 3; ++k) run_frame(host, f);
+    const ImGuiWindow* w = ImGui::FindWindowByName(kTimelineTitle);
+    EXPECT_NE(w, nullptr);
+    return w;
+  };
+  ImGui::GetIO().DisplaySize = ImVec2(900, 600);  // a narrow dock between the columns
+  const ImGuiWindow* w = timeline_window();
+  ASSERT_NE(w, nullptr);
+  EXPECT_LE(w->ContentSize.x, w->Size.x - 2 * ImGui::GetStyle().WindowPadding.x + 1) << "the note runs past the dock's edge";
+  const float one_line = w->Size.y;
+  f.sim.resume_note += ", and more words after it so that it needs more than one line in any dock at all";
+  w = timeline_window();
+  ASSERT_NE(w, nullptr);
+  EXPECT_LE(w->ContentSize.x, w->Size.x - 2 * ImGui::GetStyle().WindowPadding.x + 1);
+  EXPECT_GT(w->Size.y, one_line) << "a longer note takes more lines";
+}
+
+// Restart drops the run: asked first when there are past frames or violations; Enter confirms.
+TEST(DebugPanels, RestartOfARunWithHistoryAsksFirst) {
+  ImGuiScope scope;
+  ImGui::GetIO().KeyMap[ImGuiKey_Enter] = 257;
+  UiHost host;
+  BookFrame f;
+  ImGui::GetIO().MousePos = ImVec2(640, 360);
+  run_frame(host, f);
+  press('R');
+  run_frame(host, f);
+  release();
+  EXPECT_TRUE(f.requests.restart) << "nothing to lose (frame 0, no violation): at once";
+  run_frame(host, f);
+  f.sim.newest_frame = 120;
+  press('R');
+  run_frame(host, f);
+  release();
+  EXPECT_FALSE(f.requests.restart) << "120 frames would be dropped: asked first";
+  run_frame(host, f);
+  EXPECT_FALSE(f.requests.restart);
+  press('R');
+  run_frame(host, f);
+  release();
+  EXPECT_FALSE(f.requests.restart) << "keys do not reach the scene under the question";
+  press(257);
+  run_frame(host, f);
+  release();
+  EXPECT_TRUE(f.requests.restart) << "Enter confirms";
 }
 
 TEST(CameraFollow, KeepsAPointInsideTheFreeView) {

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "render/camera_framing.hpp"
+#include "support/ui_fixture.hpp"
 #include "ui/window_input.hpp"
 
 namespace nbscope {
@@ -18,6 +19,7 @@ class FakeMouse {
   FakeMouse() {
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // no imgui.ini left in the working directory
     unsigned char* pixels = nullptr;
     int w = 0, h = 0;
     io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
@@ -126,6 +128,69 @@ TEST(CameraFraming, AtHomeTheCameraRefitsToThePanelsAndAFixedViewIsHomeUntilABox
   framing.set_home_box({{0, 0}, {10, 10}});
   framing.go_home(camera, {});
   EXPECT_NE(camera.pixels_per_metre(), 30);
+}
+
+// Key taps shorter than a frame (press and release between two frames: at 9 FPS, most taps) reach
+// the panels: each change of a key is given to ImGui on a frame of its own, in order.
+using Event = render::InputEvent;
+constexpr Event tap_down(int key) { return Event{Event::Kind::Key, Event::Action::Press, key}; }
+constexpr Event tap_up(int key) { return Event{Event::Kind::Key, Event::Action::Release, key}; }
+constexpr int kLeftShift = 340;  // GLFW_KEY_LEFT_SHIFT
+
+TEST(InputReplay, ATapWithinOneFrameIsSeenAndTwoAreSeenTwice) {
+  ui::testui::ImGuiScope scope;
+  ui::UiHost host;
+  ui::testui::BookFrame f;
+  ImGui::GetIO().MousePos = ImVec2(640, 360);
+  ui::InputReplay input;
+  const auto frame = [&] {
+    input.apply();
+    ui::testui::run_frame(host, f);
+    return f.requests.toggle_pause;
+  };
+  frame();
+  const Event one_tap[] = {tap_down('P'), tap_up('P')};
+  input.add(one_tap);
+  EXPECT_TRUE(frame()) << "P pressed and released before the frame: the tap is lost";
+  EXPECT_FALSE(frame()) << "released on the next frame";
+  EXPECT_FALSE(input.pending());
+  // Two taps between two frames: two toggles, on frames of their own.
+  const Event two_taps[] = {tap_down('P'), tap_up('P'), Event{Event::Kind::Key, Event::Action::Repeat, 'P'}, tap_down('P'), tap_up('P')};
+  input.add(two_taps);
+  int toggles = 0;
+  for (int k = 0; k < 6; ++k) toggles += frame() ? 1 : 0;
+  EXPECT_EQ(toggles, 2);
+  EXPECT_FALSE(input.pending());
+}
+
+TEST(InputReplay, KeepsTheOrderOfAModifierAndAKey) {
+  ui::testui::ImGuiScope scope;
+  ui::UiHost host;
+  ui::testui::BookFrame f;
+  std::vector<Violation> log{Violation{0, Invariant::AEqualsR, Pair{0, 1}, {}, {}, "x"},
+                             Violation{0, Invariant::AEqualsR, Pair{2, 3}, {}, {}, "x"}};
+  f.sim.violations = &log;
+  f.sim.violations_total = 2;
+  f.state.current_violation = 1;
+  ui::InputReplay input;
+  input.apply();
+  ui::testui::run_frame(host, f);
+  // Shift+[ (the first violation) typed within one frame: Shift is still down when [ goes down.
+  const Event shift_bracket[] = {tap_down(kLeftShift), tap_down('['), tap_up('['), tap_up(kLeftShift)};
+  input.add(shift_bracket);
+  input.apply();
+  ui::testui::run_frame(host, f);
+  EXPECT_EQ(f.requests.go_to_violation, 0u) << "Shift+[ goes to the first";
+  input.apply();
+  ui::testui::run_frame(host, f);
+  EXPECT_FALSE(ImGui::GetIO().KeyShift);
+  // A mouse button's click within one frame is down for a frame too.
+  const Event click[] = {Event{Event::Kind::MouseButton, Event::Action::Press, 0}, Event{Event::Kind::MouseButton, Event::Action::Release, 0}};
+  input.add(click);
+  input.apply();
+  EXPECT_TRUE(ImGui::GetIO().MouseDown[0]);
+  input.apply();
+  EXPECT_FALSE(ImGui::GetIO().MouseDown[0]);
 }
 
 }  // namespace
