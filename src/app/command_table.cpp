@@ -153,7 +153,8 @@ CommandSpec headless_command() {
          {"--report", "OUT.json", "", "writes per-frame counts, timings and every violation as JSON"},
          {"--inject-fault", "NAME", "",
           "drop-mask-cell | off-by-one-cell | stale-positions | drop-pair | drop-box2d-contact breaks the detection (or Box2D's "
-          "side) on purpose, to see the checks catch it"},
+          "side) on purpose: proofs that each invariant can fail. Bugs in a detector's own code, to follow to the operation that "
+          "lost a pair, are the plugins of examples/detectors/ (--detector-lib)"},
          {"--brute-limit", "N", "2000", "the elements up to which brute force is the reference R (sort above)"},
          {"--quiet", "", "", "no progress bar"},
          {"--record", "OUT.nbsrec", "", "writes every frame's elements (frame 0 too) and the scene's pinned grid"},

@@ -225,6 +225,20 @@ void FrameChecker::check(const CheckInput& in, FrameReport& out) {
   for_each_missing(a, r, [&](const Pair& p) { report(Invariant::AEqualsR, p, extra); });
   invariant_ms(Invariant::AEqualsR) += lap(t);
 
+  // cells: the detector's own integerisation equals the grid's, element by element.
+  if (in.grid_cells != nullptr) {
+    const std::vector<CellIndex>& grid = *in.grid_cells;
+    for (ElementId k = 0; k < n; ++k) {
+      const CellIndex own = cell_of(k);
+      const CellIndex want = static_cast<std::size_t>(k) < grid.size() ? grid[static_cast<std::size_t>(k)] : CellIndex{-1, -1};
+      if (own == want) continue;
+      ++out.broken[static_cast<std::size_t>(Invariant::Cells)];
+      if (out.violations.size() < kMaxListedViolationsPerFrame)
+        out.violations.push_back({frame, Invariant::Cells, Pair{k, k}, own, want, "on the list of another cell (the detector's cell, not the grid's)"});
+    }
+  }
+  invariant_ms(Invariant::Cells) += lap(t);
+
   if (world_ == nullptr) return;  // recorded frames: the rest needs Box2D's world
   const Box2dFrame& world = *world_;
 

@@ -14,7 +14,9 @@
 //   T-in-A         T ⊆ A;
 //   AABB-in-cells  every pair of G lies in the same or neighbouring cells of the detector's
 //                  integerisation (pairs whose elements' exact boxes do not overlap — Box2D's float
-//                  AABBs touching by rounding — are counted, not flagged).
+//                  AABBs touching by rounding — are counted, not flagged);
+//   cells          a detector that integerises by itself (a plugin's own_cells()) gives every
+//                  element the grid's cell (eq. 3.76); each other element is a violation (k, k).
 #pragma once
 #include <memory>
 #include <string>
@@ -37,6 +39,9 @@ struct CheckInput {
   std::string_view algorithm;                   // name of the detector under test
   const PairList* pairs = nullptr;              // A, sorted
   const std::vector<CellIndex>* cells = nullptr;  // the detector's cell of every element
+  // The grid's cell of every element, when the detector integerised its own (`cells` are then the
+  // detector's); null when `cells` are the grid's, which holds `cells` by construction.
+  const std::vector<CellIndex>* grid_cells = nullptr;
   bool drop_box2d_contact = false;              // the drop-box2d-contact fault (check/faults.hpp)
   bool recorded = false;  // A is a recording's own pairs, not a detector's: violations of A say so in their words
 };

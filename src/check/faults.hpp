@@ -1,7 +1,8 @@
 // nbscope check: fault injection (`--inject-fault NAME`), so that tests can prove every invariant
 // can fail. Faults never touch a detector's hot loop: stale-positions changes what the detector is
 // given (the frame loop keeps last frame's elements), the others post-process what it returned —
-// each one producing exactly the pairs a detector with that bug would return.
+// each one producing exactly the pairs a detector with that bug would return. They prove the checks;
+// bugs in an algorithm's own code, with a trace to follow, are the plugins of examples/detectors/.
 #pragma once
 #include <string>
 #include <string_view>

@@ -77,6 +77,13 @@ void Pipeline::detect(Lane& lane, LaneResult& out, const Elements& input, const 
     const Grid* own = lane.detector->last_grid();
     out.grid = own != nullptr ? *own : make_grid(input, detect_options_.grid);
     integerise_cells(input, out.grid, out.cells);
+    lane.grid_cells.clear();
+    if (const std::vector<CellIndex>* own = lane.detector->own_cells()) {
+      // A plugin's own integerisation becomes the lane's cells (AABB-in-cells, the Violations panel);
+      // the grid's are kept for the cells check.
+      lane.grid_cells.swap(out.cells);
+      out.cells = *own;
+    }
     apply_output_fault(options_.fault, out.grid, out.cells, out.pairs);
     out.report.timings.detection_ms = ms_since(t0);
   } catch (const PluginError&) {
@@ -139,6 +146,7 @@ const FrameResult& Pipeline::run(const FrameInput& in) {
       check.algorithm = lanes_[k].detector->name();
       check.pairs = &lane.pairs;
       check.cells = &lane.cells;
+      check.grid_cells = lanes_[k].detector->own_cells() != nullptr ? &lanes_[k].grid_cells : nullptr;
       check.drop_box2d_contact = options_.fault == Fault::DropBox2dContact;
       check.recorded = lanes_[k].recorded != nullptr;
       checker_.check(check, lane.report);

@@ -3,7 +3,7 @@
 // the cross-check (check/check.hpp), and returns one FrameResult (check/frame_result.hpp).
 //
 //   source elements -> [stale-positions: last frame's positions] -> each lane: detect, sort, grid,
-//   cells, output fault -> checker: F, G, T (Box2D's side, when the source has one), R, invariants
+//   cells (the detector's own when it has them, then the grid's kept for the cells check), output fault -> checker: F, G, T (Box2D's side, when the source has one), R, invariants
 //   -> FrameResult (hash, lanes, sets)
 //
 // The pipeline is the one owner of the stale-positions fault's cache: the positions of the frame
@@ -89,6 +89,7 @@ class Pipeline {
   struct Lane {
     std::unique_ptr<Detector> detector;
     RecordedPairsDetector* recorded = nullptr;  // `detector` when it reads a recording's pairs
+    std::vector<CellIndex> grid_cells;          // the grid's cells when the detector has its own (the cells check)
     explicit Lane(std::string_view algorithm);
   };
   void detect(Lane& lane, LaneResult& out, const Elements& input, const std::string& where);

@@ -8,6 +8,7 @@ const char* invariant_name(Invariant invariant) {
     case Invariant::AInF: return "A-in-F";
     case Invariant::TInA: return "T-in-A";
     case Invariant::AabbInCells: return "AABB-in-cells";
+    case Invariant::Cells: return "cells";
   }
   return "?";
 }
@@ -23,6 +24,9 @@ const char* invariant_description(Invariant invariant) {
     case Invariant::AabbInCells:
       return "every pair whose tight AABBs overlap (b2TestOverlap, inclusive) lies in the same or neighbouring cells of the "
              "detector's integerisation";
+    case Invariant::Cells:
+      return "every element's cell as the detector integerised it (a plugin that reports its cells) equals the grid's "
+             "(eq. 3.76); detectors that use the grid's own integerisation hold it by construction";
   }
   return "?";
 }

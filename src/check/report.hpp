@@ -18,27 +18,29 @@
 
 namespace nbscope {
 
-// The four per-frame invariants of docs/architecture.md "Invariants".
+// The five per-frame invariants of docs/architecture.md "Invariants".
 enum class Invariant : std::uint8_t {
   AEqualsR,     // "A==R": the algorithm's pairs equal the reference's
   AInF,         // "A-in-F": the pairs of A in Box2D's scope are all in Box2D's contact list
   TInA,         // "T-in-A": every pair of shapes touching now is in A
   AabbInCells,  // "AABB-in-cells": every tight-AABB pair lies in neighbouring cells of the detector's grid
+  Cells,        // "cells": a detector's own integerisation (a plugin's) gives every element the grid's cell
 };
-inline constexpr int kInvariantCount = 4;
-// Short name used in reports, summaries and test expectations ("A==R", "A-in-F", "T-in-A", "AABB-in-cells").
+inline constexpr int kInvariantCount = 5;
+// Short name used in reports, summaries and test expectations ("A==R", "A-in-F", "T-in-A", "AABB-in-cells", "cells").
 const char* invariant_name(Invariant invariant);
 
 // One sentence saying what the invariant checks.
 const char* invariant_description(Invariant invariant);
 
 
-// One broken invariant for one pair in one frame.
+// One broken invariant for one pair in one frame. A `cells` violation names one element k as the
+// pair (k, k), cell_i the detector's cell of k and cell_j the grid's.
 struct Violation {
   std::int64_t frame = 0;
   Invariant invariant = Invariant::AEqualsR;
   Pair pair;
-  CellIndex cell_i, cell_j;  // cells of pair.i and pair.j
+  CellIndex cell_i, cell_j;  // cells of pair.i and pair.j (cells: the detector's, then the grid's)
   const char* what = "";     // static text: "missing from A", "extra in A", "not in Box2D's contact list", ...
 };
 
@@ -62,7 +64,7 @@ struct FrameCounts {
 struct FrameTimings {
   double physics_ms = 0;    // Box2D step(s), emitters, elements and AABBs at the new transforms
   double detection_ms = 0;  // the chosen algorithm (and any injected fault)
-  double check_ms = 0;      // reference detection, Box2D's sets, the four invariants
+  double check_ms = 0;      // reference detection, Box2D's sets, the five invariants
 };
 
 // Where one frame's check time (FrameTimings::check_ms) went, in milliseconds: the sets, then each
@@ -212,7 +214,9 @@ struct RunReport {
 };
 
 // The invariants that need Box2D's world (A-in-F, T-in-A, AABB-in-cells), and why recorded frames skip them.
-[[nodiscard]] inline bool needs_box2d(Invariant invariant) { return invariant != Invariant::AEqualsR; }
+[[nodiscard]] inline bool needs_box2d(Invariant invariant) {
+  return invariant != Invariant::AEqualsR && invariant != Invariant::Cells;
+}
 inline constexpr const char* kNoBox2dReason =
     "recorded frames have no Box2D world: A-in-F, T-in-A and AABB-in-cells are not available (not passed: not checked)";
 

@@ -1,6 +1,7 @@
 #include "core/locate.hpp"
 
 #include <cstdlib>
+#include <tuple>
 
 #include "core/cells.hpp"
 
@@ -20,6 +21,20 @@ bool in_mask_of(const Cell& a, const Cell& b, int dim) {
 
 bool same_cell(const TraceEvent& e, const Cell& c, int dim) {
   return e.cell[0] == c[0] && e.cell[1] == c[1] && (dim != 3 || e.cell[2] == c[2]);
+}
+
+// The first push of element k onto a list keyed to a cell other than `own` (an axis the list is not
+// keyed on, -1, is not compared).
+std::optional<std::size_t> first_wrong_push(std::span<const TraceEvent> events, std::int32_t k, const Cell& own, int dim) {
+  for (std::size_t n = 0; n < events.size(); ++n) {
+    const TraceEvent& e = events[n];
+    if (e.op != TraceOp::Push || e.element != k) continue;
+    for (int a = 0; a < dim; ++a) {
+      const auto axis = static_cast<std::size_t>(a);
+      if (e.cell[axis] >= 0 && e.cell[axis] != own[axis]) return n;
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -46,7 +61,21 @@ PairLocation locate_pair(std::span<const TraceEvent> events, std::int32_t i, std
     }
   }
 
-  // 2. Which element's mask reaches the other's cell (in the same cell either one tests the other).
+  // 2. An element on the list of a cell that is not its own: every later miss follows from that push.
+  for (const auto& [k, other, own] : {std::tuple{i, j, cells.i}, std::tuple{j, i, cells.j}}) {
+    if (const std::optional<std::size_t> wrong = first_wrong_push(events, k, own, dim)) {
+      out.finding = PairFinding::WrongList;
+      out.event = wrong;
+      out.scanner = k;
+      out.other = other;
+      const TraceEvent& e = events[*wrong];
+      out.cell = {e.cell[0], e.cell[1], dim == 3 ? e.cell[2] : -1};
+      return out;
+    }
+  }
+  if (i == j) return out;  // NotInTrace: no push of the element at all, or none onto a wrong list
+
+  // 3. Which element's mask reaches the other's cell (in the same cell either one tests the other).
   const bool same = cells.i[0] == cells.j[0] && cells.i[1] == cells.j[1] && (dim != 3 || cells.i[2] == cells.j[2]);
   if (same || in_mask_of(cells.i, cells.j, dim)) {
     out.scanner = i;
@@ -65,7 +94,7 @@ PairLocation locate_pair(std::span<const TraceEvent> events, std::int32_t i, std
     return out;
   }
 
-  // 3. A visit of that cell under the scanner's mask (in the same cell: under either one's).
+  // 4. A visit of that cell under the scanner's mask (in the same cell: under either one's).
   std::optional<std::size_t> last_visit;
   for (std::size_t n = 0; n < events.size(); ++n) {
     const TraceEvent& e = events[n];
@@ -81,7 +110,7 @@ PairLocation locate_pair(std::span<const TraceEvent> events, std::int32_t i, std
     if (e.element == out.scanner) last_visit = n;
   }
 
-  // 4. Never visited: show where the scanner's mask was walked, or where it was put in its list.
+  // 5. Never visited: show where the scanner's mask was walked, or where it was put in its list.
   const std::optional<std::size_t> pushed = out.scanner == i ? first_about_i : first_about_j;
   if (!last_visit && !pushed) {
     out.finding = PairFinding::NotInTrace;

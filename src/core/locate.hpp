@@ -1,7 +1,9 @@
 // nbscope core: where in one detection's trace a pair was decided — the operation a debugger shows
 // for a check's violation. A pair the detector reported was tested somewhere; a pair it missed was
 // either tested and found apart, or its cells met under a contact mask that skipped the other
-// element, or the mask that should have reached the other element's cell never visited it.
+// element, or the mask that should have reached the other element's cell never visited it, or one
+// of the two was pushed onto the list of a cell that is not its own (as is any element whose cell
+// the detector integerised wrongly: a `cells` violation names it as the pair (k, k)).
 //
 // Index: PairFinding (what was found) | locate_pair (the search, O(events)).
 #pragma once
@@ -21,6 +23,8 @@ enum class PairFinding : std::uint8_t {
   CellVisited,     // never tested, but `event` visits the other element's cell under `scanner`'s mask
   CellNotVisited,  // never tested, and `scanner`'s mask never visits the other's cell; `event` is the
                    // last mask visit of `scanner` (where that visit should have been), or its push
+  WrongList,       // never tested (or i == j), and `event` pushes `scanner` onto a list keyed to `cell`,
+                   // which is not its own cell
   NotNeighbours,   // the two cells are not neighbours: no mask relates them; `event` pushes `first`
   NotInTrace,      // the trace says nothing about either element
 };
@@ -42,8 +46,9 @@ struct PairCells {
 };
 
 // Finds the operation of `events` (one detection, dimension `dim`) that decided pair (i, j), given
-// both elements' cells. Deterministic: the first test of the pair, else the first visit of the
-// other's cell by the scanning element, else its last mask visit.
+// both elements' cells under the grid. Deterministic: the first test of the pair, else the first
+// push of i (then j) onto a list of another cell, else the first visit of the other's cell by the
+// scanning element, else its last mask visit. With i == j: the first push of i onto a wrong list.
 [[nodiscard]] PairLocation locate_pair(std::span<const TraceEvent> events, std::int32_t i, std::int32_t j,
                                        const PairCells& cells, int dim);
 

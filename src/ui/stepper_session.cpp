@@ -88,18 +88,23 @@ void StepperSession::apply_target(const SimView& sim) {
     case PairFinding::Tested:
       target_status_ = op + "k=" + id(at.scanner) + " tested against " + id(at.other) + ": " + (at.contact ? "contact" : "no contact") + ". ";
       if (missing && at.contact) target_status_ += "The detector found this contact here; it was lost after detection (an output fault), not by the lists.";
-      else if (missing) target_status_ += "The detector's test says no contact where the reference (or Box2D) says contact.";
+      else if (missing) target_status_ += "The detector's test answered apart where the reference (or Box2D) says contact: the contact test is wrong.";
+      else if (std::string(t.what).find("twice") != std::string::npos) target_status_ += "This is the first of the pair's tests; the detector tested and reported it again later (a list that holds it twice, or stale).";
       else if (t.invariant == Invariant::AInF) target_status_ += "The detector found this contact here; Box2D's contact list does not have it.";
       else if (t.invariant == Invariant::AabbInCells) target_status_ += "The detector's own cells " + cell_text(cells.i) + " and " + cell_text(cells.j) + " are neighbours; the cells the check saw are not.";
       else target_status_ += "The detector reported the pair from this test; the reference does not have it.";
       break;
     case PairFinding::CellVisited:
       target_status_ = op + "the mask of k=" + id(at.scanner) + " visits cell " + cell_text(at.cell) + ", which holds " + id(at.other) +
-                       ", but the pair is never tested there.";
+                       ", but the walk of that cell's list never reaches it: the list no longer holds it (a push or a clear cut it).";
       break;
     case PairFinding::CellNotVisited:
       target_status_ = op + "cell " + cell_text(at.cell) + " of " + id(at.other) + " is in the contact mask of k=" + id(at.scanner) +
-                       " but is never visited; this is the last cell k's mask visits, where that visit was due.";
+                       " but is never visited: the contact mask leaves it out; this is the last cell k's mask visits, where that visit was due.";
+      break;
+    case PairFinding::WrongList:
+      target_status_ = op + "k=" + id(at.scanner) + " is pushed onto the list of cell " + cell_text(at.cell) + ", but its cell under the grid is " +
+                       cell_text(at.scanner == t.pair.i ? cells.i : cells.j) + ": the detector integerised it wrongly, and every mask that visits its own cell misses it.";
       break;
     case PairFinding::NotNeighbours:
       target_status_ = op + id(t.pair.i) + " lies in cell " + cell_text(cells.i) + " and " + id(t.pair.j) + " in " + cell_text(cells.j) +

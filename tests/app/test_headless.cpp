@@ -27,7 +27,7 @@ TEST(Headless, DefaultScenePassesAndReportsEveryFrame) {
   EXPECT_EQ(r.err, "");  // stderr is not a terminal here: no progress bar
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1);
   EXPECT_NE(r.out.find("headless: default, nbs, 90 frames"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("all 4 invariants held in every frame (reference brute)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("all 5 invariants held in every frame (reference brute)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("ms per frame: physics"), std::string::npos);
 
   const json rep = json::parse(read_text(dir + "/r.json"));

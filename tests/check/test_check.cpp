@@ -83,12 +83,15 @@ class CheckerTest : public ::testing::Test {
     integerise_cells(world_.elements(), grid_, cells_);
   }
 
-  FrameReport run(const PairList& pairs, const std::vector<CellIndex>& cells, bool drop_box2d_contact = false) {
+  // `grid_cells`: the grid's cells when `cells` are a detector's own (the cells check runs).
+  FrameReport run(const PairList& pairs, const std::vector<CellIndex>& cells, bool drop_box2d_contact = false,
+                  const std::vector<CellIndex>* grid_cells = nullptr) {
     checker_.begin_frame(world_, DetectOptions{});
     CheckInput in;
     in.algorithm = "nbs";
     in.pairs = &pairs;
     in.cells = &cells;
+    in.grid_cells = grid_cells;
     in.drop_box2d_contact = drop_box2d_contact;
     FrameReport out;
     checker_.check(in, out);
@@ -163,6 +166,25 @@ TEST_F(CheckerTest, WrongCellsBreakAabbInCells) {
   EXPECT_EQ(r.broken[static_cast<int>(Invariant::AabbInCells)], 1);
   EXPECT_EQ(r.violations[0].pair, (Pair{1, 2}));
   EXPECT_EQ(r.violations[0].cell_j, cells[2]);
+}
+
+// A detector that integerises by itself (a plugin) and puts one element in the next column: the
+// cells check names that element as (k, k), its cell and the grid's; its own cells equal to the
+// grid's hold it.
+TEST_F(CheckerTest, ADetectorsOwnWrongCellBreaksCells) {
+  EXPECT_TRUE(run(correct_, cells_, false, &cells_).ok());
+  std::vector<CellIndex> own = cells_;
+  own[3].ix += 1;  // element 3, alone far right: no pair changes, only its cell
+  const FrameReport r = run(correct_, own, false, &cells_);
+  EXPECT_EQ(r.broken[static_cast<int>(Invariant::Cells)], 1);
+  EXPECT_EQ(r.violation_count(), 1);
+  ASSERT_EQ(r.violations.size(), 1u);
+  EXPECT_EQ(r.violations[0].invariant, Invariant::Cells);
+  EXPECT_EQ(r.violations[0].pair, (Pair{3, 3}));
+  EXPECT_EQ(r.violations[0].cell_i, own[3]);
+  EXPECT_EQ(r.violations[0].cell_j, cells_[3]);
+  // Without the grid's cells (a built-in: its cells are the grid's) the same cells are not compared.
+  EXPECT_EQ(run(correct_, own, false).broken[static_cast<int>(Invariant::Cells)], 0);
 }
 
 TEST_F(CheckerTest, ALostBox2dContactBreaksAInF) {

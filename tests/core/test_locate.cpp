@@ -3,6 +3,7 @@
 // visit when a cell visit was lost, the pushes of two elements in cells that are not neighbours.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 #include "core/detector.hpp"
@@ -121,6 +122,57 @@ TEST(LocatePair, FindsWhereAMissedPairShouldHaveBeenTested) {
       if (++cases == 10) break;
     }
     EXPECT_GT(cases, 0);
+  }
+}
+
+// Every built-in pushes each element onto lists of its own cell only: no element is ever located
+// on a wrong list (so WrongList never stands in for another finding).
+TEST(LocatePair, NoBuiltInPushesOntoAnotherCellsList) {
+  for (const DetectorInfo& info : detector_infos()) {
+    if (info.name == "box2d") continue;
+    for (const int dim : {2, 3}) {
+      if ((dim == 2 && !info.dim2) || (dim == 3 && !info.dim3)) continue;
+      SCOPED_TRACE(info.name + " " + std::to_string(dim) + "D");
+      const Traced t = traced(info.name, Layout::Clustered, 60, dim, 7);
+      for (std::int32_t k = 0; k < t.e.size(); ++k) {
+        const PairCells c = cells_of(t.grid, t.e, k, k);
+        EXPECT_NE(locate_pair(t.log.events(), k, k, c, dim).finding, PairFinding::WrongList) << k;
+      }
+    }
+  }
+}
+
+// An element pushed onto the list of the next column (as a detector with its own, wrong
+// integerisation does): the element alone (a cells violation) and every untested pair of it are
+// located at that push; a tested pair stays at its test.
+TEST(LocatePair, FindsThePushOntoAWrongList) {
+  const Traced t = traced("nbs", Layout::Dense, 80, 2, 11);
+  std::vector<TraceEvent> events = t.log.events();
+  const auto push = std::find_if(events.begin(), events.end(), [](const TraceEvent& e) { return e.op == TraceOp::Push && e.cell[0] >= 0; });
+  ASSERT_NE(push, events.end());
+  const std::int32_t k = push->element;
+  push->cell[0] += 1;
+  const auto at_push = static_cast<std::size_t>(push - events.begin());
+  const PairCells alone = cells_of(t.grid, t.e, k, k);
+  const PairLocation wrong = locate_pair(events, k, k, alone, 2);
+  ASSERT_EQ(wrong.finding, PairFinding::WrongList);
+  EXPECT_EQ(wrong.event, at_push);
+  EXPECT_EQ(wrong.scanner, k);
+  EXPECT_EQ(wrong.cell[0], alone.i[0] + 1);
+  EXPECT_EQ(wrong.cell[1], alone.i[1]);
+  EXPECT_EQ(wrong.cell[2], -1);
+  EXPECT_EQ(locate_pair(t.log.events(), k, k, alone, 2).finding, PairFinding::NotInTrace);  // the true trace
+
+  const std::int32_t other = k == 0 ? 1 : 0;
+  std::erase_if(events, [&](const TraceEvent& e) {
+    return e.op == TraceOp::TestPair && ((e.element == k && e.other == other) || (e.element == other && e.other == k));
+  });
+  for (const auto& [i, j] : {std::pair{k, other}, std::pair{other, k}}) {
+    const PairLocation missed = locate_pair(events, i, j, cells_of(t.grid, t.e, i, j), 2);
+    EXPECT_EQ(missed.finding, PairFinding::WrongList);
+    EXPECT_EQ(missed.event, at_push);
+    EXPECT_EQ(missed.scanner, k);
+    EXPECT_EQ(missed.other, other);
   }
 }
 

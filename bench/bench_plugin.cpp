@@ -1,0 +1,71 @@
+// nbscope_bench: BM_PluginVsBook/<plugin|book>/<layout>/<N> — the example plugin nbs_reference.so
+// (examples/detectors/, loaded as --detector-lib loads it) against the built-in book loops it copies
+// (NbsDetector::detect_book), untraced, on the same frames. The plugin pays a call through a C
+// function pointer for every pair and writes its cells; the book loops append to a vector. Target:
+// plugin within 1.3x of book. Counters as BM_Detect: ns_per_element, pairs.
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "core/nbs.hpp"
+#include "io/plugin_library.hpp"
+#include "support/generators.hpp"
+
+namespace nbscope {
+namespace {
+
+using testdata::Layout;
+
+const Elements& plugin_layout(Layout layout, std::int64_t n) {
+  static std::map<std::pair<int, std::int64_t>, std::unique_ptr<Elements>> cache;
+  auto& slot = cache[{static_cast<int>(layout), n}];
+  if (!slot) slot = std::make_unique<Elements>(testdata::make_layout(layout, n, 2, 42));
+  return *slot;
+}
+
+// The reference plugin's detector (loaded on first use), or null when the library is missing.
+std::unique_ptr<Detector> reference_plugin() {
+  static const std::string name = [] {
+    try {
+      return load_detector_plugin(NBSCOPE_EXAMPLES_DIR "/nbs_reference.so");
+    } catch (const std::exception&) {
+      return std::string();
+    }
+  }();
+  return name.empty() ? nullptr : make_detector(name);
+}
+
+void bm_plugin_vs_book(benchmark::State& state, bool plugin, Layout layout, std::int64_t n) {
+  const Elements& e = plugin_layout(layout, n);
+  std::unique_ptr<Detector> detector = plugin ? reference_plugin() : nullptr;
+  if (plugin && !detector) {
+    state.SkipWithError("examples/detectors/nbs_reference.so is not built");
+    return;
+  }
+  NbsDetector book;
+  PairList pairs;
+  for (auto _ : state) {
+    if (plugin) detector->detect(e, DetectOptions{}, pairs);
+    else book.detect_book(e, DetectOptions{}, pairs);
+    benchmark::DoNotOptimize(pairs.data());
+    benchmark::ClobberMemory();
+  }
+  state.counters["ns_per_element"] =
+      benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["pairs"] = static_cast<double>(pairs.size());
+}
+
+[[maybe_unused]] const bool registered = [] {
+  for (const bool plugin : {false, true})
+    for (const Layout layout : {Layout::Dense, Layout::Clustered})
+      for (const std::int64_t n : {1'000, 10'000, 100'000}) {
+        const std::string name = std::string("BM_PluginVsBook/") + (plugin ? "plugin/" : "book/") + testdata::layout_name(layout) + "/" + std::to_string(n);
+        benchmark::RegisterBenchmark(name.c_str(), bm_plugin_vs_book, plugin, layout, n)->Unit(benchmark::kMicrosecond);
+      }
+  return true;
+}();
+
+}  // namespace
+}  // namespace nbscope

@@ -1,0 +1,125 @@
+/* examples/detectors/nbs_reference.c: Munjiza-NBS in 2D as chapter 3 writes it (book pp.102-104),
+ * the reference the five bug plugins beside it are copies of. Every element goes onto the y-list of
+ * its row; then, for each non-empty row iy, the x-lists of row iy (heads B[0]) and of row iy-1
+ * (heads B[1]) are built with one next array X, each element of row iy is checked against its cell
+ * (only the elements after it) and the half mask (ix-1,iy), (ix-1,iy-1), (ix,iy-1), (ix+1,iy-1),
+ * and the heads that were set are cleared. Same pairs, in the same order, as nbscope's built-in nbs.
+ *
+ * Build: cc -std=c99 -shared -fPIC -I<nbscope>/include nbs_reference.c -o nbs_reference.so
+ * Run:   nbscope headless --scene assets/scenes/pile.json --detector-lib ./nbs_reference.so */
+#include "nbs_plugin.h"
+
+NBS_PLUGIN_INFO("nbs-reference", "Munjiza-NBS 2D as the book writes it (a plugin: the reference of the examples)")
+
+/* Checks k against every element of the x-list that starts at m; nonzero when the pair limit is reached. */
+static int test_list(const nbscope_frame *f, const nbscope_output *out, const nbscope_trace *t, const int32_t *X,
+                     int32_t k, int32_t m) {
+  for (; m != -1; m = X[m]) {
+    const int contact = nbs_in_contact(f, k, m);
+    nbs_tested(t, k, m, contact);
+    if (contact && out->add_pair(out->ctx, k, m) != 0) return 1;
+  }
+  return 0;
+}
+
+NBSCOPE_EXPORT int nbscope_detect(void **state, const nbscope_frame *f, const nbscope_output *out,
+                                  const nbscope_trace *t) {
+  nbs_arrays *s = nbs_prepare(state, f, out);
+  nbs_ids id;
+  double scale;
+  int32_t n, nx, ny, k, ix, iy, jx, *yh, *Y, *B0, *B1, *X;
+  if (s == NULL) return 1;
+  n = (int32_t)f->n;
+  nx = (int32_t)f->cells[0];
+  ny = (int32_t)f->cells[1];
+  yh = s->y_heads;
+  Y = s->Y;
+  B0 = s->B;
+  B1 = s->B + nx;
+  X = s->X;
+  scale = nbs_cell_scale(f);
+  id = nbs_declare(t, s);
+
+  /* 1. y-lists: every element onto the list of its row. */
+  nbs_phase(t, NBS_LOOP_ALL, "y-lists", -1);
+  for (k = 0; k < n; ++k) {
+    iy = nbs_int(f->y[k], f->origin[1], scale, ny);
+    out->cells[2 * k + 1] = iy;
+    Y[k] = yh[iy];
+    yh[iy] = k;
+    nbs_push(t, NBS_PUSH_Y, "y-list", id.y_heads, iy, id.Y, k, -1, iy);
+  }
+
+  /* 2. rows: x-lists of row iy (B[0]) and iy-1 (B[1]), the contact mask, then clearing. */
+  for (iy = 0; iy < ny; ++iy) {
+    int below;
+    if (yh[iy] == -1) continue;
+    below = iy > 0 && yh[iy - 1] != -1;
+    nbs_phase(t, NBS_LOOP_ROWS, "x-lists of row", iy);
+    for (k = yh[iy]; k != -1; k = Y[k]) {
+      ix = nbs_int(f->x[k], f->origin[0], scale, nx);
+      out->cells[2 * k] = ix;
+      X[k] = B0[ix];
+      B0[ix] = k;
+      nbs_push(t, NBS_PUSH_X0, "x-list", id.B, ix, id.X, k, ix, iy);
+    }
+    if (below) {
+      for (k = yh[iy - 1]; k != -1; k = Y[k]) {
+        ix = nbs_int(f->x[k], f->origin[0], scale, nx);
+        X[k] = B1[ix];
+        B1[ix] = k;
+        nbs_push(t, NBS_PUSH_X1, "x-list", id.B, (int64_t)nx + ix, id.X, k, ix, iy - 1);
+      }
+    }
+
+    nbs_phase(t, NBS_LOOP_ROW, "contacts of row", iy);
+    for (k = yh[iy]; k != -1; k = Y[k]) {
+      ix = nbs_int(f->x[k], f->origin[0], scale, nx);
+      nbs_visit(t, k, ix, iy);
+      if (test_list(f, out, t, X, k, X[k])) goto full; /* own cell: only the elements after k */
+      if (ix > 0) {
+        nbs_visit(t, k, ix - 1, iy);
+        if (test_list(f, out, t, X, k, B0[ix - 1])) goto full;
+      }
+      if (below) {
+        for (jx = ix > 0 ? ix - 1 : 0; jx <= ix + 1 && jx < nx; ++jx) {
+          nbs_visit(t, k, jx, iy - 1);
+          if (test_list(f, out, t, X, k, B1[jx])) goto full;
+        }
+      }
+    }
+
+    nbs_phase(t, NBS_CLEAR_X, "clear x-lists of row", iy);
+    for (k = yh[iy]; k != -1; k = Y[k]) {
+      ix = nbs_int(f->x[k], f->origin[0], scale, nx);
+      if (B0[ix] != -1) {
+        B0[ix] = -1;
+        nbs_clear(t, NBS_CLEAR_X, "x-list", id.B, ix);
+      }
+    }
+    if (below) {
+      for (k = yh[iy - 1]; k != -1; k = Y[k]) {
+        ix = nbs_int(f->x[k], f->origin[0], scale, nx);
+        if (B1[ix] != -1) {
+          B1[ix] = -1;
+          nbs_clear(t, NBS_CLEAR_X, "x-list", id.B, (int64_t)nx + ix);
+        }
+      }
+    }
+  }
+
+  /* 3. clear the y heads that were set. */
+  nbs_phase(t, NBS_CLEAR_Y, "clear y-lists", -1);
+  for (k = 0; k < n; ++k) {
+    iy = nbs_int(f->y[k], f->origin[1], scale, ny);
+    if (yh[iy] != -1) {
+      yh[iy] = -1;
+      nbs_clear(t, NBS_CLEAR_Y, "y-list", id.y_heads, iy);
+    }
+  }
+  return 0;
+
+full:
+  nbs_reset_heads(s);
+  return 1;
+}
