@@ -13,29 +13,13 @@
 
 #include "core/elements.hpp"
 #include "differential.hpp"
+#include "fuzz_bytes.hpp"
 #include "physics/box2d_detector.hpp"
 
 namespace {
 
 using nbscope::Elements;
-
-// Reads the input a byte at a time; zeros once it is used up.
-class Bytes {
- public:
-  Bytes(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
-  std::uint8_t u8() { return pos_ < size_ ? data_[pos_++] : 0; }
-  std::uint32_t u32() {
-    std::uint32_t v = 0;
-    for (int k = 0; k < 4; ++k) v = (v << 8) | u8();
-    return v;
-  }
-  [[nodiscard]] bool done() const { return pos_ >= size_; }
-
- private:
-  const std::uint8_t* data_;
-  std::size_t size_;
-  std::size_t pos_ = 0;
-};
+using nbscope::fuzz::Bytes;
 
 // A radius: table values (binary fractions, extremes, the previous radius) or an arbitrary one.
 double decode_radius(Bytes& in, double previous) {

@@ -17,24 +17,13 @@
 #include <vector>
 
 #include "core/plugin_detector.hpp"
+#include "fuzz_bytes.hpp"
 #include "fuzz_check.hpp"
 
 namespace {
 
 using nbscope::Pair;
-
-// Reads the input a byte at a time; zeros once it is used up.
-class Bytes {
- public:
-  Bytes(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
-  std::uint8_t u8() { return pos_ < size_ ? data_[pos_++] : 0; }
-  [[nodiscard]] bool done() const { return pos_ >= size_; }
-
- private:
-  const std::uint8_t* data_;
-  std::size_t size_;
-  std::size_t pos_ = 0;
-};
+using nbscope::fuzz::Bytes;
 
 // An index for something of `size` entries: mostly inside, sometimes just outside or extreme.
 std::int64_t index_for(Bytes& in, std::int64_t size) {

@@ -138,7 +138,6 @@ const std::vector<CellIndex>* PluginDetector::own_cells() const { return has_cel
 const std::vector<const char*>& PluginDetector::pseudocode(int dim) const { return pseudocode_[dim == 3 ? 1 : 0]; }
 
 void PluginDetector::run(const Elements& elements, const DetectOptions& options, PairList& out_pairs, TraceLog* trace) {
-  const std::string where = symbols_.library + " (" + name_ + "): frame " + std::to_string(options.frame) + ": ";
   if (!supports_dim(elements.dim))
     throw Error(name_ + ": " + std::to_string(elements.dim) + "D elements are not supported by this detector");
   grid_ = make_grid(elements, options.grid);
@@ -178,20 +177,24 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   if (symbols_.guard) symbols_.guard->leave();
 
   if (call.exception) std::rethrow_exception(call.exception);
-  if (!call.breach.empty()) throw PluginError(where + call.breach);
+  if (!call.breach.empty()) throw PluginError(where(options.frame) + call.breach);
   if (call.limit_hit) throw_pair_limit(options.max_pairs);  // told to stop: not the plugin's fault
   if (status != 0)
-    throw PluginError(where + "nbscope_detect returned " + std::to_string(status) +
+    throw PluginError(where(options.frame) + "nbscope_detect returned " + std::to_string(status) +
                       (call.failure.empty() ? " without a reason (fail() not called)" : ": " + printable_line(call.failure)));
   const std::int64_t repeat = first_repeated_pair(out_pairs, elements.size(), scratch_, seen_);
   if (repeat >= 0) {
     const Pair p = out_pairs[static_cast<std::size_t>(repeat)];
-    throw PluginError(where + "add_pair: pair (" + std::to_string(p.i) + ", " + std::to_string(p.j) + ") given twice");
+    throw PluginError(where(options.frame) + "add_pair: pair (" + std::to_string(p.i) + ", " + std::to_string(p.j) + ") given twice");
   }
-  if (cells_wanted && elements.dim == 2) check_cells(elements, where);
+  if (cells_wanted && elements.dim == 2) check_cells(elements, options.frame);
 }
 
-void PluginDetector::check_cells(const Elements& elements, const std::string& where) {
+std::string PluginDetector::where(std::int64_t frame) const {
+  return symbols_.library + " (" + name_ + "): frame " + std::to_string(frame) + ": ";
+}
+
+void PluginDetector::check_cells(const Elements& elements, std::int64_t frame) {
   const auto n = static_cast<std::size_t>(elements.size());
   cells_.resize(n);
   static const char* const axis_names[2] = {"x", "y"};
@@ -199,10 +202,10 @@ void PluginDetector::check_cells(const Elements& elements, const std::string& wh
     for (int a = 0; a < 2; ++a) {
       const std::int32_t v = raw_cells_[k * 2 + a];
       if (v == -1)
-        throw PluginError(where + "cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] +
+        throw PluginError(where(frame) + "cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] +
                           " was not written (still -1)");
       if (v < 0 || v >= grid_.n[a])
-        throw PluginError(where + "cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] + " is " +
+        throw PluginError(where(frame) + "cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] + " is " +
                           std::to_string(v) + ", outside [0, " + std::to_string(grid_.n[a]) + ")");
     }
     cells_[k] = CellIndex{raw_cells_[k * 2], raw_cells_[k * 2 + 1]};

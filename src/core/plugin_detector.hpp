@@ -89,7 +89,9 @@ class PluginDetector final : public Detector {
 
  private:
   void run(const Elements& elements, const DetectOptions& options, PairList& out_pairs, TraceLog* trace);
-  void check_cells(const Elements& elements, const std::string& where);
+  // "LIBRARY (NAME): frame N: ", the head of every breach's message: built only when one is thrown.
+  [[nodiscard]] std::string where(std::int64_t frame) const;
+  void check_cells(const Elements& elements, std::int64_t frame);
 
   PluginSymbols symbols_;
   std::string name_;
