@@ -1,18 +1,18 @@
-/* examples/detectors/nbs_bug_stale.c: Munjiza-NBS 2D that does not clear the heads B[0] of a
- * row's x-lists before the next row. Otherwise nbs_reference.c, line for line; the bug is marked BUG.
+/* examples/detectors/nbs_bug_stale.c: Munjiza-NBS 2D that never clears the heads B[1] of the row
+ * below. Otherwise nbs_reference.c, line for line; the bug is marked BUG.
  *
- * The programmer resets every head at the start of the frame and thinks the per-row clearing an
- * optimisation. It is not: the next row's x-lists start from this row's heads, so an element is
- * tested against the row below twice (from its own list and from B[1]) and against elements two
- * rows away where a column stays empty. nbscope: the pair is given twice, which the API forbids:
- * the run stops with exit 2, naming the frame and the pair.
- *
- * (Leaving B[1] uncleared instead only lengthens the lists within a frame: each B[1] list is pushed
- * in the same order on top of older chains, so no pair is lost or doubled and no invariant can
- * fail; across frames, without the reset, stale chains close into cycles and the run never ends.) */
+ * The programmer resets every head at the start of the frame and thinks clearing B[1] after each
+ * row is not needed, since B[1] is "rebuilt" for the next row. It is not rebuilt: a push prepends,
+ * X[k] = B[1][ix]; B[1][ix] = k, so the next row's lists of the row below run on into the stale
+ * chains of the rows under it, and every mask visit of (jx, iy-1) walks elements two or more rows
+ * away. The pairs stay right (those elements are never in contact); the work grows with the rows
+ * (a column of m rows walks m(m-1)/2 stale elements), and without the reset at the start of the
+ * frame the stale chains close into cycles in the next frame and the detection never ends.
+ * nbscope: `cells`: an element tested from the list of a cell it does not lie in; the Stepper
+ * stops at the push that linked the list to it (the head still held it: a stale list). */
 #include "nbs_plugin.h"
 
-NBS_PLUGIN_INFO("nbs-bug-stale", "NBS 2D that never clears a row's x-list heads B[0] before the next row (an example bug)")
+NBS_PLUGIN_INFO("nbs-bug-stale", "NBS 2D that never clears the row-below heads B[1] between rows (an example bug)")
 
 /* Checks k against every element of the x-list that starts at m; nonzero when the pair limit is reached. */
 static int test_list(const nbscope_frame *f, const nbscope_output *out, const nbscope_trace *t, const int32_t *X,
@@ -41,7 +41,7 @@ NBSCOPE_EXPORT int nbscope_detect(void **state, const nbscope_frame *f, const nb
   B1 = s->B + nx;
   X = s->X;
   scale = nbs_cell_scale(f);
-  nbs_reset_heads(s); /* every head -1 at the start of the frame, so stale heads live one frame only */
+  nbs_reset_heads(s); /* every head -1 at the start of the frame: stale chains live one frame only */
   id = nbs_declare(t, s);
 
   /* 1. y-lists: every element onto the list of its row. */
@@ -94,16 +94,14 @@ NBSCOPE_EXPORT int nbscope_detect(void **state, const nbscope_frame *f, const nb
     }
 
     nbs_phase(t, NBS_CLEAR_X, "clear x-lists of row", iy);
-    /* BUG: the heads of B[0] (this row's x-lists) are not cleared: the next row's lists start from them */
-    if (below) {
-      for (k = yh[iy - 1]; k != -1; k = Y[k]) {
-        ix = nbs_int(f->x[k], f->origin[0], scale, nx);
-        if (B1[ix] != -1) {
-          B1[ix] = -1;
-          nbs_clear(t, NBS_CLEAR_X, "x-list", id.B, (int64_t)nx + ix);
-        }
+    for (k = yh[iy]; k != -1; k = Y[k]) {
+      ix = nbs_int(f->x[k], f->origin[0], scale, nx);
+      if (B0[ix] != -1) {
+        B0[ix] = -1;
+        nbs_clear(t, NBS_CLEAR_X, "x-list", id.B, ix);
       }
     }
+    /* BUG: the heads B[1] of the row below are not cleared: the next row's B[1] lists start from them */
   }
 
   /* 3. clear the y heads that were set. */
