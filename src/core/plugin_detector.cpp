@@ -154,6 +154,7 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   frame.z = elements.dim == 3 ? elements.z.data() : nullptr;
   frame.r = elements.r.data();
   frame.d = grid_.cell_size;
+  frame.inv_d = grid_.inv_cell_size;
   for (int a = 0; a < 3; ++a) {
     frame.origin[a] = a < elements.dim ? grid_.origin[a] : 0.0;
     frame.cells[a] = a < elements.dim ? grid_.n[a] : 1;

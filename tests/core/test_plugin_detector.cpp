@@ -148,6 +148,7 @@ TEST(PluginDetector, SeesTheGridTheBuiltInsFit) {
   EXPECT_EQ(seen.dim, 2);
   EXPECT_EQ(seen.z, nullptr);
   EXPECT_EQ(seen.d, grid.cell_size);
+  EXPECT_EQ(seen.inv_d, grid.inv_cell_size);  // the plugins integerise with it, so cells agree bit for bit
   EXPECT_EQ(seen.origin[0], grid.origin[0]);
   EXPECT_EQ(seen.origin[1], grid.origin[1]);
   EXPECT_EQ(seen.cells[0], grid.n[0]);
