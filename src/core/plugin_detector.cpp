@@ -3,8 +3,10 @@
 #include "core/plugin_detector.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <new>
+#include <type_traits>
 
 #include "core/plugin_call.hpp"
 
@@ -29,6 +31,34 @@ void check_pseudocode(const char* const* lines, std::int32_t count, const char* 
   if (count > 0 && lines == nullptr) throw Error(where + " is NULL but " + where + "_lines is " + std::to_string(count));
   for (std::int32_t i = 0; i < count; ++i)
     if (lines[i] == nullptr) throw Error(where + "[" + std::to_string(i) + "] is NULL");
+}
+
+// Throws the breach of the first entry of `raw` (2D cells as a plugin wrote them) outside `grid`.
+[[noreturn]] void throw_bad_cell(const std::vector<std::int32_t>& raw, const Grid& grid, const std::string& where) {
+  static const char* const axis_names[2] = {"x", "y"};
+  for (std::size_t k = 0; k < raw.size() / 2; ++k) {
+    for (int a = 0; a < 2; ++a) {
+      const std::int32_t v = raw[k * 2 + a];
+      if (v == -1)
+        throw PluginError(where + "cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] +
+                          " was not written (still -1)");
+      if (v < 0 || v >= grid.n[a])
+        throw PluginError(where + "cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] + " is " +
+                          std::to_string(v) + ", outside [0, " + std::to_string(grid.n[a]) + ")");
+    }
+  }
+  throw PluginError(where + "cells: an entry is outside the grid");  // not reached: the caller saw one
+}
+
+// Where (i, j) occurs for the second time in `pairs` (it does: first_repeated_pair found it twice).
+std::int64_t second_position(const PairList& pairs, std::int32_t i, std::int32_t j) {
+  bool once = false;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    if (pairs[k].i != i || pairs[k].j != j) continue;
+    if (once) return static_cast<std::int64_t>(k);
+    once = true;
+  }
+  return -1;
 }
 
 }  // namespace
@@ -197,20 +227,18 @@ std::string PluginDetector::where(std::int64_t frame) const {
 
 void PluginDetector::check_cells(const Elements& elements, std::int64_t frame) {
   const auto n = static_cast<std::size_t>(elements.size());
+  // One branch-free pass first (-1, negative and too large alike fail the unsigned compare); the
+  // words of the first bad entry are found only when there is one.
+  const auto nx = static_cast<std::uint64_t>(grid_.n[0]);
+  const auto ny = static_cast<std::uint64_t>(grid_.n[1]);
+  const std::int32_t* raw = raw_cells_.data();
+  bool inside = true;
+  for (std::size_t k = 0; k < n; ++k)
+    inside &= (static_cast<std::uint32_t>(raw[2 * k]) < nx) & (static_cast<std::uint32_t>(raw[2 * k + 1]) < ny);
+  if (!inside) throw_bad_cell(raw_cells_, grid_, where(frame));
+  static_assert(sizeof(CellIndex) == 2 * sizeof(std::int32_t) && std::is_trivially_copyable_v<CellIndex>);
   cells_.resize(n);
-  static const char* const axis_names[2] = {"x", "y"};
-  for (std::size_t k = 0; k < n; ++k) {
-    for (int a = 0; a < 2; ++a) {
-      const std::int32_t v = raw_cells_[k * 2 + a];
-      if (v == -1)
-        throw PluginError(where(frame) + "cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] +
-                          " was not written (still -1)");
-      if (v < 0 || v >= grid_.n[a])
-        throw PluginError(where(frame) + "cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] + " is " +
-                          std::to_string(v) + ", outside [0, " + std::to_string(grid_.n[a]) + ")");
-    }
-    cells_[k] = CellIndex{raw_cells_[k * 2], raw_cells_[k * 2 + 1]};
-  }
+  if (n > 0) std::memcpy(static_cast<void*>(cells_.data()), raw, n * sizeof(CellIndex));  // {ix, iy} as written
   has_cells_ = true;
 }
 
@@ -226,22 +254,24 @@ std::int64_t first_repeated_pair(const PairList& pairs, std::int64_t n, std::vec
     return -1;
   }
   const auto count = static_cast<std::size_t>(n);
-  // scratch: [0, n] the bucket starts by smaller element i, then the pairs' positions bucketed.
-  scratch.assign(count + 1 + pairs.size(), 0);
+  // scratch: [0, n] the bucket starts by smaller element i, then the partners j bucketed by i in the
+  // order given (a stable counting sort). Partners, not positions: no second random read of `pairs`.
+  if (scratch.size() < count + 1 + pairs.size()) scratch.resize(count + 1 + pairs.size());
   std::uint32_t* start = scratch.data();
-  std::uint32_t* position = scratch.data() + count + 1;
+  std::uint32_t* partner = scratch.data() + count + 1;
+  std::fill_n(start, count + 1, 0u);
   for (const Pair& p : pairs) ++start[p.i + 1];
   for (std::size_t i = 0; i < count; ++i) start[i + 1] += start[i];
-  for (std::size_t k = 0; k < pairs.size(); ++k) position[start[pairs[k].i]++] = static_cast<std::uint32_t>(k);
+  for (const Pair& p : pairs) partner[start[p.i]++] = static_cast<std::uint32_t>(p.j);
   // Each bucket now ends where the next began; stamp its partners with i + 1.
   seen.assign(count, 0);
   std::uint32_t begin = 0;
   for (std::size_t i = 0; i < count; ++i) {
     const std::uint32_t end = start[i];
     for (std::uint32_t b = begin; b < end; ++b) {
-      const std::int32_t j = pairs[position[b]].j;
-      if (seen[static_cast<std::size_t>(j)] == static_cast<std::int32_t>(i) + 1) return position[b];
-      seen[static_cast<std::size_t>(j)] = static_cast<std::int32_t>(i) + 1;
+      const std::uint32_t j = partner[b];
+      if (seen[j] == static_cast<std::int32_t>(i) + 1) return second_position(pairs, static_cast<std::int32_t>(i), static_cast<std::int32_t>(j));
+      seen[j] = static_cast<std::int32_t>(i) + 1;
     }
     begin = end;
   }

@@ -313,6 +313,9 @@ TEST(PluginDetector, OwnCellsAreThePluginsAndChecked) {
   EXPECT_EQ(plugin_error(write_cells(5, -1), caps), kWhere + "cells: element 2's cell on y was not written (still -1)");
   const std::string nx = std::to_string(make_grid(nine(), GridOptions{}).n[0]);
   EXPECT_EQ(plugin_error(write_cells(4, 99), caps), kWhere + "cells: element 2's cell on x is 99, outside [0, " + nx + ")");
+  EXPECT_EQ(plugin_error(write_cells(0, -7), caps), kWhere + "cells: element 0's cell on x is -7, outside [0, " + nx + ")");
+  const std::string ny = std::to_string(make_grid(nine(), GridOptions{}).n[1]);
+  EXPECT_EQ(plugin_error(write_cells(17, 99), caps), kWhere + "cells: element 8's cell on y is 99, outside [0, " + ny + ")");
   g_body = write_cells(-1, 0);
   PluginDetector detector(test_symbols(), test_info(caps));
   PairList pairs;
@@ -403,6 +406,19 @@ TEST(PluginDetector, FirstRepeatedPairFindsRepeatsAnywhere) {
   EXPECT_EQ(first_repeated_pair({{0, 1}, {0, 2}, {1, 2}}, 3, scratch, seen), -1);
   EXPECT_EQ(first_repeated_pair({{1, 2}, {0, 1}, {0, 2}, {1, 2}}, 3, scratch, seen), 3);
   EXPECT_EQ(first_repeated_pair({{3, 4}, {0, 1}, {3, 4}}, 5, scratch, seen), 2);
+  // After a larger call the buffers hold its leftovers: a smaller one must still see only its own pairs.
+  EXPECT_EQ(first_repeated_pair({{0, 1}, {2, 3}, {4, 5}, {6, 7}, {1, 2}, {0, 7}}, 8, scratch, seen), -1);
+  EXPECT_EQ(first_repeated_pair({{1, 2}, {0, 1}, {1, 2}, {0, 1}}, 3, scratch, seen), 3);  // bucket 0 is read first
+  EXPECT_EQ(first_repeated_pair({{0, 2}, {1, 2}}, 3, scratch, seen), -1);
+}
+
+TEST(PluginDetector, RefusesARepeatedPairOnEveryCall) {
+  g_body = [](void**, const nbscope_frame*, const nbscope_output* o, const nbscope_trace*) {
+    return o->add_pair(o->ctx, 3, 8) + o->add_pair(o->ctx, 0, 1) + o->add_pair(o->ctx, 8, 3);
+  };
+  PluginDetector detector(test_symbols(), test_info(kAll));
+  PairList pairs;
+  for (int call = 0; call < 3; ++call) EXPECT_THROW(detector.detect(nine(), DetectOptions{}, pairs), PluginError);
 }
 
 }  // namespace
