@@ -12,7 +12,7 @@ NBS_PLUGIN_INFO("nbs-bug-mask", "NBS 2D with a contact mask that leaves out the 
 /* Checks k against every element of the x-list that starts at m; nonzero when the pair limit is reached.
  * The arrays and k's disc are read once: add_pair is a call the compiler cannot see into, so it would
  * otherwise load them again through f after every pair. */
-static int test_list(const nbscope_frame *f, const nbscope_output *out, const nbscope_trace *t, const int32_t *X,
+static inline int test_list(const nbscope_frame *f, const nbscope_output *out, const nbscope_trace *t, const int32_t *X,
                      int32_t k, int32_t m) {
   const double *x = f->x, *y = f->y, *r = f->r;
   const double xk = x[k], yk = y[k], rk = r[k];

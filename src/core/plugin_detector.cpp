@@ -3,6 +3,7 @@
 #include "core/plugin_detector.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <limits>
 #include <new>
@@ -48,17 +49,6 @@ void check_pseudocode(const char* const* lines, std::int32_t count, const char* 
     }
   }
   throw PluginError(where + "cells: an entry is outside the grid");  // not reached: the caller saw one
-}
-
-// Where (i, j) occurs for the second time in `pairs` (it does: first_repeated_pair found it twice).
-std::int64_t second_position(const PairList& pairs, std::int32_t i, std::int32_t j) {
-  bool once = false;
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    if (pairs[k].i != i || pairs[k].j != j) continue;
-    if (once) return static_cast<std::int64_t>(k);
-    once = true;
-  }
-  return -1;
 }
 
 }  // namespace
@@ -213,7 +203,7 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   if (status != 0)
     throw PluginError(where(options.frame) + "nbscope_detect returned " + std::to_string(status) +
                       (call.failure.empty() ? " without a reason (fail() not called)" : ": " + printable_line(call.failure)));
-  const std::int64_t repeat = first_repeated_pair(out_pairs, elements.size(), scratch_, seen_);
+  const std::int64_t repeat = first_repeated_pair(out_pairs, pair_table_);
   if (repeat >= 0) {
     const Pair p = out_pairs[static_cast<std::size_t>(repeat)];
     throw PluginError(where(options.frame) + "add_pair: pair (" + std::to_string(p.i) + ", " + std::to_string(p.j) + ") given twice");
@@ -242,38 +232,40 @@ void PluginDetector::check_cells(const Elements& elements, std::int64_t frame) {
   has_cells_ = true;
 }
 
-std::int64_t first_repeated_pair(const PairList& pairs, std::int64_t n, std::vector<std::uint32_t>& scratch,
-                                 std::vector<std::int32_t>& seen) {
-  if (pairs.size() < 2) return -1;
-  if (pairs.size() >= std::numeric_limits<std::uint32_t>::max()) {  // positions would not fit: sort a copy
-    std::vector<std::pair<Pair, std::size_t>> sorted(pairs.size());
-    for (std::size_t k = 0; k < pairs.size(); ++k) sorted[k] = {pairs[k], k};
-    std::sort(sorted.begin(), sorted.end());
-    for (std::size_t k = 1; k < sorted.size(); ++k)
-      if (sorted[k].first == sorted[k - 1].first) return static_cast<std::int64_t>(sorted[k].second);
-    return -1;
+std::int64_t first_repeated_pair_sorted(const PairList& pairs) {
+  std::vector<std::pair<Pair, std::size_t>> sorted(pairs.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k) sorted[k] = {pairs[k], k};
+  std::sort(sorted.begin(), sorted.end());
+  std::int64_t first = -1;  // the smallest position among the repeats, as the hash table finds it
+  for (std::size_t k = 1; k < sorted.size(); ++k) {
+    const auto position = static_cast<std::int64_t>(sorted[k].second);
+    if (sorted[k].first == sorted[k - 1].first && (first < 0 || position < first)) first = position;
   }
-  const auto count = static_cast<std::size_t>(n);
-  // scratch: [0, n] the bucket starts by smaller element i, then the partners j bucketed by i in the
-  // order given (a stable counting sort). Partners, not positions: no second random read of `pairs`.
-  if (scratch.size() < count + 1 + pairs.size()) scratch.resize(count + 1 + pairs.size());
-  std::uint32_t* start = scratch.data();
-  std::uint32_t* partner = scratch.data() + count + 1;
-  std::fill_n(start, count + 1, 0u);
-  for (const Pair& p : pairs) ++start[p.i + 1];
-  for (std::size_t i = 0; i < count; ++i) start[i + 1] += start[i];
-  for (const Pair& p : pairs) partner[start[p.i]++] = static_cast<std::uint32_t>(p.j);
-  // Each bucket now ends where the next began; stamp its partners with i + 1.
-  seen.assign(count, 0);
-  std::uint32_t begin = 0;
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::uint32_t end = start[i];
-    for (std::uint32_t b = begin; b < end; ++b) {
-      const std::uint32_t j = partner[b];
-      if (seen[j] == static_cast<std::int32_t>(i) + 1) return second_position(pairs, static_cast<std::int32_t>(i), static_cast<std::int32_t>(j));
-      seen[j] = static_cast<std::int32_t>(i) + 1;
+  return first;
+}
+
+std::int64_t first_repeated_pair(const PairList& pairs, std::vector<std::uint32_t>& table) {
+  if (pairs.size() < 2) return -1;
+  if (pairs.size() > (std::size_t{1} << 28)) return first_repeated_pair_sorted(pairs);  // the table would not fit
+  // Open addressing at most half full; a slot is (i, j) in two entries, i = kEmpty when free (i < n
+  // never reaches it). Fibonacci hashing of the key i:j spreads pairs that share i.
+  constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
+  std::size_t slots = 16;
+  while (slots < 2 * pairs.size()) slots <<= 1;
+  table.assign(2 * slots, kEmpty);
+  const int shift = 64 - std::countr_zero(slots);
+  std::size_t budget = 8 * pairs.size();  // extra probes; a half-full table needs about one per two pairs
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const auto i = static_cast<std::uint32_t>(pairs[k].i);
+    const auto j = static_cast<std::uint32_t>(pairs[k].j);
+    std::size_t slot = static_cast<std::size_t>(((std::uint64_t{i} << 32 | j) * 0x9E3779B97F4A7C15ull) >> shift);
+    while (table[2 * slot] != kEmpty) {
+      if (table[2 * slot] == i && table[2 * slot + 1] == j) return static_cast<std::int64_t>(k);
+      if (budget-- == 0) return first_repeated_pair_sorted(pairs);  // colliding pairs: keep the time bounded
+      slot = (slot + 1) & (slots - 1);
     }
-    begin = end;
+    table[2 * slot] = i;
+    table[2 * slot + 1] = j;
   }
   return -1;
 }

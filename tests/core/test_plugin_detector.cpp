@@ -401,15 +401,27 @@ TEST(PluginDetector, RegistryEntryCarriesTheCapabilities) {
 }
 
 TEST(PluginDetector, FirstRepeatedPairFindsRepeatsAnywhere) {
-  std::vector<std::uint32_t> scratch;
-  std::vector<std::int32_t> seen;
-  EXPECT_EQ(first_repeated_pair({{0, 1}, {0, 2}, {1, 2}}, 3, scratch, seen), -1);
-  EXPECT_EQ(first_repeated_pair({{1, 2}, {0, 1}, {0, 2}, {1, 2}}, 3, scratch, seen), 3);
-  EXPECT_EQ(first_repeated_pair({{3, 4}, {0, 1}, {3, 4}}, 5, scratch, seen), 2);
-  // After a larger call the buffers hold its leftovers: a smaller one must still see only its own pairs.
-  EXPECT_EQ(first_repeated_pair({{0, 1}, {2, 3}, {4, 5}, {6, 7}, {1, 2}, {0, 7}}, 8, scratch, seen), -1);
-  EXPECT_EQ(first_repeated_pair({{1, 2}, {0, 1}, {1, 2}, {0, 1}}, 3, scratch, seen), 3);  // bucket 0 is read first
-  EXPECT_EQ(first_repeated_pair({{0, 2}, {1, 2}}, 3, scratch, seen), -1);
+  std::vector<std::uint32_t> table;
+  EXPECT_EQ(first_repeated_pair({{0, 1}, {0, 2}, {1, 2}}, table), -1);
+  EXPECT_EQ(first_repeated_pair({{1, 2}, {0, 1}, {0, 2}, {1, 2}}, table), 3);
+  EXPECT_EQ(first_repeated_pair({{3, 4}, {0, 1}, {3, 4}}, table), 2);
+  // After a larger call the table holds its leftovers: a smaller one must still see only its own pairs.
+  EXPECT_EQ(first_repeated_pair({{0, 1}, {2, 3}, {4, 5}, {6, 7}, {1, 2}, {0, 7}}, table), -1);
+  EXPECT_EQ(first_repeated_pair({{1, 2}, {0, 1}, {0, 1}, {1, 2}}, table), 2);  // the first pair given before
+  EXPECT_EQ(first_repeated_pair({{0, 2}, {1, 2}}, table), -1);
+  // Thousands of pairs sharing elements, one repeat far from the pair it repeats.
+  PairList many;
+  for (std::int32_t i = 0; i < 60; ++i)
+    for (std::int32_t j = i + 1; j < 60; ++j) many.push_back({i, j});
+  EXPECT_EQ(first_repeated_pair(many, table), -1);
+  many.push_back({1, 7});
+  many.push_back({2, 3});
+  EXPECT_EQ(first_repeated_pair(many, table), static_cast<std::int64_t>(many.size()) - 2);
+  EXPECT_EQ(first_repeated_pair_sorted(many), static_cast<std::int64_t>(many.size()) - 2);
+  many.pop_back();
+  many.pop_back();
+  EXPECT_EQ(first_repeated_pair_sorted(many), -1);
+  EXPECT_EQ(first_repeated_pair_sorted({{1, 2}, {0, 1}, {0, 1}, {1, 2}}), 2);
 }
 
 TEST(PluginDetector, RefusesARepeatedPairOnEveryCall) {
