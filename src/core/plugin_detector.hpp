@@ -108,8 +108,8 @@ class PluginDetector final : public Detector {
 // The check that no pair is given twice: each pair looked up in, then added to, a hash table of those
 // before it (`table`, reused between calls), expected time O(pairs). Pairs that collide past a probe
 // budget are sorted instead, O(pairs log pairs) whatever they are. Returns the index of the first pair
-// given before, or -1. Pairs must already be in range and i < j.
-std::int64_t first_repeated_pair(const PairList& pairs, std::vector<std::uint32_t>& table);
+// given before, or -1. Pairs must already be in range [0, n) and i < j.
+std::int64_t first_repeated_pair(const PairList& pairs, std::int64_t n, std::vector<std::uint32_t>& table);
 // The same answer by sorting a copy of the pairs (the fallback of first_repeated_pair).
 std::int64_t first_repeated_pair_sorted(const PairList& pairs);
 
