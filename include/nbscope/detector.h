@@ -77,7 +77,9 @@ typedef struct nbscope_output {
   void (*fail)(void *ctx, const char *message);
 } nbscope_output;
 
-/* The trace table: NULL when the frame is not traced (then make no call). Each call describes
+/* The trace table: NULL when the frame is not traced (then make no call). A plugin declaring
+ * NBSCOPE_CAP_TRACES | NBSCOPE_CAP_LISTS gets it on every checked frame too (its walks are checked,
+ * nothing is recorded), so trace the same way whenever it is given. Each call describes
  * writes the plugin has just made (call after the write), so nbscope reads the new values from the
  * declared arrays and keeps the old ones itself. `line` indexes the plugin's pseudocode lines. */
 typedef struct nbscope_trace {
@@ -93,7 +95,9 @@ typedef struct nbscope_trace {
                int32_t ix, int32_t iy, int32_t iz);
   /* Head `list` of array `heads` was reset to -1. */
   void (*clear)(void *ctx, int32_t line, const char *kind, int32_t heads, int64_t list);
-  /* Cell (ix, iy, iz) is visited under the contact mask of element k (iz = -1 in 2D). */
+  /* Cell (ix, iy, iz) is visited under the contact mask of element k (iz = -1 in 2D). The tests of k
+   * that follow, until its next visit, walk that cell's list: with NBSCOPE_CAP_LISTS nbscope checks
+   * that each element they name lies in that cell (a stale or wrong list is a `cells` violation). */
   void (*visit_cell)(void *ctx, int32_t line, int32_t k, int32_t ix, int32_t iy, int32_t iz);
   /* Pair (k, other) was tested; contact is the answer (nonzero: in contact). */
   void (*test_pair)(void *ctx, int32_t line, int32_t k, int32_t other, int32_t contact);

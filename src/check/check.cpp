@@ -237,6 +237,15 @@ void FrameChecker::check(const CheckInput& in, FrameReport& out) {
         out.violations.push_back({frame, Invariant::Cells, Pair{k, k}, own, want, "on the list of another cell (the detector's cell, not the grid's)"});
     }
   }
+  // cells: the lists the detector walked hold only their cell's elements.
+  if (in.walks != nullptr) {
+    out.broken[static_cast<std::size_t>(Invariant::Cells)] += in.walks->count;
+    for (const StrayTest& s : in.walks->first) {
+      if (out.violations.size() >= kMaxListedViolationsPerFrame) break;
+      out.violations.push_back({frame, Invariant::Cells, Pair{s.stray, s.finder}, s.list_cell, s.own_cell,
+                                "tested from the list of a cell it does not lie in (a stale list)"});
+    }
+  }
   invariant_ms(Invariant::Cells) += lap(t);
 
   if (world_ == nullptr) return;  // recorded frames: the rest needs Box2D's world

@@ -17,6 +17,9 @@
 //                  AABBs touching by rounding — are counted, not flagged);
 //   cells          a detector that integerises by itself (a plugin's own_cells()) gives every
 //                  element the grid's cell (eq. 3.76); each other element is a violation (k, k).
+//                  And the lists it walks hold only their cell's elements (a plugin's
+//                  walk_check()): each element tested from another cell's list is a violation
+//                  (stray, finder), cells the list's and the stray's own.
 #pragma once
 #include <memory>
 #include <string>
@@ -42,6 +45,7 @@ struct CheckInput {
   // The grid's cell of every element, when the detector integerised its own (`cells` are then the
   // detector's); null when `cells` are the grid's, which holds `cells` by construction.
   const std::vector<CellIndex>* grid_cells = nullptr;
+  const WalkCheck* walks = nullptr;             // the detector's walk check, or null when not checked
   bool drop_box2d_contact = false;              // the drop-box2d-contact fault (check/faults.hpp)
   bool recorded = false;  // A is a recording's own pairs, not a detector's: violations of A say so in their words
 };

@@ -113,6 +113,7 @@ const FrameResult& Pipeline::run(const FrameInput& in) {
   }
   const Elements& input = detector_input(source);
   detect_options_.frame = frame;  // for a plugin's messages
+  detect_options_.check_walks = options_.checks;  // a plugin's lists, on the frames that are checked
   result_.trace.reset();  // made again on request, for this frame and detector
   result_.frame = frame;
   result_.time = source.time();
@@ -147,6 +148,7 @@ const FrameResult& Pipeline::run(const FrameInput& in) {
       check.pairs = &lane.pairs;
       check.cells = &lane.cells;
       check.grid_cells = lanes_[k].detector->own_cells() != nullptr ? &lanes_[k].grid_cells : nullptr;
+      check.walks = lanes_[k].detector->walk_check();
       check.drop_box2d_contact = options_.fault == Fault::DropBox2dContact;
       check.recorded = lanes_[k].recorded != nullptr;
       checker_.check(check, lane.report);

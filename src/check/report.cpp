@@ -26,7 +26,8 @@ const char* invariant_description(Invariant invariant) {
              "detector's integerisation";
     case Invariant::Cells:
       return "every element's cell as the detector integerised it (a plugin that reports its cells) equals the grid's "
-             "(eq. 3.76); detectors that use the grid's own integerisation hold it by construction";
+             "(eq. 3.76), and every list the detector walks (a plugin that traces its lists) holds only elements of its "
+             "cell; detectors that use the grid's own integerisation and lists hold it by construction";
   }
   return "?";
 }

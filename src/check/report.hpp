@@ -35,7 +35,8 @@ const char* invariant_description(Invariant invariant);
 
 
 // One broken invariant for one pair in one frame. A `cells` violation names one element k as the
-// pair (k, k), cell_i the detector's cell of k and cell_j the grid's.
+// pair (k, k), cell_i the detector's cell of k and cell_j the grid's; or, for a stray on a walked
+// list, the pair (stray, finder), cell_i the cell whose list held the stray and cell_j its own.
 struct Violation {
   std::int64_t frame = 0;
   Invariant invariant = Invariant::AEqualsR;

@@ -21,6 +21,26 @@ struct DetectOptions {
   GridOptions grid;                        // cell size / origin overrides (defaults: docs/architecture.md "Cells")
   std::size_t max_pairs = kDefaultMaxPairs;  // past this detection throws Error
   std::int64_t frame = 0;                    // the frame detected, for a plugin's messages (core/plugin_detector.hpp)
+  // Check the lists a plugin walks on this untraced detection (the checked frames of a run): a
+  // plugin that traces and builds lists gets its trace table, each test checked against the cell
+  // the walk visited (Detector::walk_check). Off: untraced means no trace call at all.
+  bool check_walks = false;
+};
+
+// A test of element `stray` from the list of a cell it does not lie in: the list held an element
+// of another cell (a head not cleared, a list built on a stale one), found by the walk of `finder`.
+struct StrayTest {
+  std::int32_t finder = -1;  // the element whose mask visit walked the list
+  std::int32_t stray = -1;   // the element found on it
+  CellIndex list_cell;       // the cell visited, whose list held `stray`
+  CellIndex own_cell;        // the cell `stray` lies in (the detector's own integerisation when it reports one)
+};
+
+// What the walk check of one detection found (DetectOptions::check_walks).
+struct WalkCheck {
+  static constexpr std::size_t kKept = 64;  // stray tests kept in `first`; `count` counts them all
+  std::vector<StrayTest> first;
+  std::int64_t count = 0;
 };
 
 // A contact-detection algorithm. Instances keep their arrays between calls (as a simulation
@@ -46,6 +66,9 @@ class Detector {
   // uses the grid's own integerisation (every built-in does): a plugin that reports its cells, which
   // the checks compare with the grid's (docs/architecture.md "Invariants").
   [[nodiscard]] virtual const std::vector<CellIndex>* own_cells() const { return nullptr; }
+  // What the walk check of the last detection found, or nullptr when it was not checked (built-ins:
+  // their lists are nbscope's own; plugins: DetectOptions::check_walks, 2D, traces and lists).
+  [[nodiscard]] virtual const WalkCheck* walk_check() const { return nullptr; }
   // The detector's loops in the book's wording for elements of dimension `dim`, one line each;
   // TraceEvent::line of a traced run indexes this list. Empty for detectors without a trace.
   [[nodiscard]] virtual const std::vector<const char*>& pseudocode(int dim) const;

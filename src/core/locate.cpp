@@ -121,4 +121,50 @@ PairLocation locate_pair(std::span<const TraceEvent> events, std::int32_t i, std
   return out;
 }
 
+PairLocation locate_stray(std::span<const TraceEvent> events, std::int32_t stray, std::int32_t finder, const Cell& stray_cell,
+                          int dim) {
+  PairLocation out;
+  out.scanner = finder;
+  out.other = stray;
+  // The first test of finder against stray, the visit whose walk made it, and the element before it.
+  std::optional<std::size_t> visit, previous, test;
+  for (std::size_t n = 0; n < events.size() && !test; ++n) {
+    const TraceEvent& e = events[n];
+    if (e.op == TraceOp::VisitCell && e.element == finder) {
+      visit = n;
+      previous.reset();
+    } else if (e.op == TraceOp::TestPair && e.element == finder && visit) {
+      if (e.other == stray) test = n;
+      else previous = n;
+    }
+  }
+  if (!test) return out;  // NotInTrace
+  const TraceEvent& walked = events[*visit];
+  out.cell = {walked.cell[0], walked.cell[1], dim == 3 ? walked.cell[2] : -1};
+  out.finding = PairFinding::Tested;
+  out.event = test;
+  out.contact = events[*test].contact;
+  if (same_cell(walked, stray_cell, dim)) return out;  // the list is stray's own: no stray
+  // The last push onto this cell's list before the test of p (whose next led to stray), or of stray
+  // itself when it heads the list.
+  const std::int32_t p = previous ? events[*previous].other : -1;
+  const std::int32_t pushed = p >= 0 ? p : stray;
+  for (std::size_t n = *test; n-- > 0;) {
+    const TraceEvent& e = events[n];
+    if (e.op != TraceOp::Push || e.element != pushed || !same_cell(e, out.cell, dim)) continue;
+    if (p >= 0 && e.write_count > 0 && e.writes[0].new_value == stray) {
+      out.finding = PairFinding::StaleLink;
+      out.event = n;
+      out.scanner = p;
+    } else if (p < 0) {
+      out.finding = PairFinding::WrongList;
+      out.event = n;
+      out.scanner = stray;
+      out.other = finder;
+    }
+    break;  // a later write (a set) linked it otherwise: the test is what the trace can show
+  }
+  return out;
+}
+
 }  // namespace nbscope

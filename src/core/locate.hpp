@@ -26,6 +26,8 @@ enum class PairFinding : std::uint8_t {
   WrongList,       // never tested (or i == j), and `event` pushes `scanner` onto a list keyed to `cell`,
                    // which is not its own cell
   NotNeighbours,   // the two cells are not neighbours: no mask relates them; `event` pushes `first`
+  StaleLink,       // (locate_stray) `event` pushes `scanner` onto the list of `cell` while that list
+                   // ran on into `other`, an element of another cell: next[scanner] = other
   NotInTrace,      // the trace says nothing about either element
 };
 
@@ -44,6 +46,15 @@ struct PairCells {
   std::array<std::int32_t, 3> i{-1, -1, -1};
   std::array<std::int32_t, 3> j{-1, -1, -1};
 };
+
+// Finds the operation that put `stray` on a list the walk of `finder` tested it from (a `cells`
+// violation (stray, finder): a list holding an element of another cell). The first test of finder
+// against stray; in the same walk the element tested just before it, p; the push of p that linked
+// next[p] = stray (StaleLink, `scanner` p, `cell` the list's). With no such p (stray heads the list):
+// its push onto that list (WrongList); else, or when the visited cell is `stray_cell` (no stray at
+// all), the test itself (Tested).
+[[nodiscard]] PairLocation locate_stray(std::span<const TraceEvent> events, std::int32_t stray, std::int32_t finder,
+                                        const std::array<std::int32_t, 3>& stray_cell, int dim);
 
 // Finds the operation of `events` (one detection, dimension `dim`) that decided pair (i, j), given
 // both elements' cells under the grid. Deterministic: the first test of the pair, else the first

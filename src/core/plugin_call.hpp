@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/detector.hpp"
 #include "core/pairs.hpp"
 #include "core/trace.hpp"
 
@@ -18,7 +19,17 @@ struct PluginCall {
   // One declared array: where the plugin keeps it and what nbscope last knew it to hold.
   struct Array {
     const std::int32_t* live = nullptr;
-    std::vector<std::int32_t> shadow;  // contents before the writes the plugin has not yet described
+    std::int64_t size = 0;
+    std::vector<std::int32_t> shadow;  // traced: contents before the writes the plugin has not yet described
+  };
+
+  // The walk check (DetectOptions::check_walks): each test against the cell its walk visited.
+  struct Walks {
+    WalkCheck* out = nullptr;                           // null: not checked
+    const std::vector<CellIndex>* grid_cells = nullptr;  // the grid's cell of every element
+    const std::int32_t* own_cells = nullptr;             // the plugin's out->cells (n * 2), or null
+    std::int32_t visitor = -1;                           // the element of the last visit_cell
+    CellIndex visited;                                   // and the cell it visited
   };
 
   PairList* pairs = nullptr;
@@ -31,6 +42,19 @@ struct PluginCall {
   TraceLog* log = nullptr;        // null when untraced
   std::int32_t lines = 0;         // the plugin's pseudocode lines in this dimension
   std::vector<Array> arrays;
+  Walks walks;
+
+  // Notes a test of `other` by `k` that does not lie in the cell k's last visit walked (never throws).
+  void check_walk(std::int32_t k, std::int32_t other) noexcept {
+    if (walks.out == nullptr || walks.visitor != k) return;
+    const auto at = static_cast<std::size_t>(other);
+    CellIndex own = (*walks.grid_cells)[at];
+    if (walks.own_cells != nullptr && walks.own_cells[2 * at] >= 0 && walks.own_cells[2 * at + 1] >= 0)
+      own = CellIndex{walks.own_cells[2 * at], walks.own_cells[2 * at + 1]};
+    if (own == walks.visited) return;
+    ++walks.out->count;
+    if (walks.out->first.size() < WalkCheck::kKept) walks.out->first.push_back(StrayTest{k, other, walks.visited, own});
+  }
 
   // True once a breach or an exception ended the call's useful work.
   [[nodiscard]] bool stopped() const { return !breach.empty() || exception; }

@@ -9,6 +9,7 @@
 #include <new>
 #include <type_traits>
 
+#include "core/cells.hpp"
 #include "core/plugin_call.hpp"
 
 namespace nbscope {
@@ -192,9 +193,20 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   const nbscope_output output{&call, nbscope_plugin_add_pair, cells_wanted ? raw_cells_.data() : nullptr,
                               nbscope_plugin_fail};
   const nbscope_trace table = plugin_trace_table(call);
+  const bool walk = wants_walk_check(elements, options, trace != nullptr);
+  walks_checked_ = false;
+  walks_.first.clear();
+  walks_.count = 0;
+  if (walk) {
+    integerise_cells(elements, grid_, walk_cells_);
+    walks_.first.reserve(WalkCheck::kKept);  // check_walk() never allocates
+    call.walks.out = &walks_;
+    call.walks.grid_cells = &walk_cells_;
+    call.walks.own_cells = cells_wanted ? raw_cells_.data() : nullptr;
+  }
 
   if (symbols_.guard) symbols_.guard->enter(options.frame);
-  const int status = symbols_.detect(&state_, &frame, &output, trace != nullptr ? &table : nullptr);
+  const int status = symbols_.detect(&state_, &frame, &output, trace != nullptr || walk ? &table : nullptr);
   if (symbols_.guard) symbols_.guard->leave();
 
   if (call.exception) std::rethrow_exception(call.exception);
@@ -209,7 +221,15 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
     throw PluginError(where(options.frame) + "add_pair: pair (" + std::to_string(p.i) + ", " + std::to_string(p.j) + ") given twice");
   }
   if (cells_wanted && elements.dim == 2) check_cells(elements, options.frame);
+  walks_checked_ = walk;
 }
+
+bool PluginDetector::wants_walk_check(const Elements& elements, const DetectOptions& options, bool traced) const {
+  constexpr std::uint32_t kWalks = NBSCOPE_CAP_TRACES | NBSCOPE_CAP_LISTS;
+  return (traced || options.check_walks) && elements.dim == 2 && (capabilities_ & kWalks) == kWalks;
+}
+
+const WalkCheck* PluginDetector::walk_check() const { return walks_checked_ ? &walks_ : nullptr; }
 
 std::string PluginDetector::where(std::int64_t frame) const {
   return symbols_.library + " (" + name_ + "): frame " + std::to_string(frame) + ": ";

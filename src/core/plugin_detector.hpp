@@ -8,6 +8,11 @@
 // the plugin's pseudocode; cells it reports inside the grid. A breach is a PluginError naming the
 // library, the plugin and the frame. The callbacks never throw through the plugin's C frames: the
 // first breach is kept, the callback answers "stop", and it is thrown once nbscope_detect returns.
+//
+// Well-formed but wrong is not a breach: wrong pairs and cells are the checks' business, and so are
+// the lists a plugin walks. On the checked frames of a run (DetectOptions::check_walks) a plugin
+// that traces its lists gets the trace table, and every test is held against the cell the walk
+// visited (WalkCheck): an element of another cell on a cell's list is a stale or wrong list.
 #pragma once
 #include <nbscope/detector.h>
 
@@ -84,6 +89,9 @@ class PluginDetector final : public Detector {
   [[nodiscard]] const Grid* last_grid() const override { return &grid_; }
   // The cells the plugin wrote (NBSCOPE_CAP_CELLS, 2D), else nullptr.
   [[nodiscard]] const std::vector<CellIndex>* own_cells() const override;
+  // What the walk check of the last detection found (traced, or DetectOptions::check_walks; 2D
+  // plugins declaring NBSCOPE_CAP_TRACES and NBSCOPE_CAP_LISTS), else nullptr.
+  [[nodiscard]] const WalkCheck* walk_check() const override;
   // The plugin's pseudocode lines for `dim`.
   [[nodiscard]] const std::vector<const char*>& pseudocode(int dim) const override;
 
@@ -92,6 +100,8 @@ class PluginDetector final : public Detector {
   // "LIBRARY (NAME): frame N: ", the head of every breach's message: built only when one is thrown.
   [[nodiscard]] std::string where(std::int64_t frame) const;
   void check_cells(const Elements& elements, std::int64_t frame);
+  // True when this detection's walks are checked: traced or asked, 2D, a plugin that traces its lists.
+  [[nodiscard]] bool wants_walk_check(const Elements& elements, const DetectOptions& options, bool traced) const;
 
   PluginSymbols symbols_;
   std::string name_;
@@ -103,6 +113,9 @@ class PluginDetector final : public Detector {
   std::vector<CellIndex> cells_;
   bool has_cells_ = false;               // the last detection was 2D with NBSCOPE_CAP_CELLS
   std::vector<std::uint32_t> pair_table_;  // the repeated-pair check's hash table (kept between frames)
+  WalkCheck walks_;                      // the last detection's walk check
+  bool walks_checked_ = false;
+  std::vector<CellIndex> walk_cells_;    // the grid's cell of every element, for the walk check
 };
 
 // The check that no pair is given twice: each pair looked up in, then added to, a hash table of those

@@ -3,6 +3,10 @@
 // reads their new values from the plugin's live array and their old ones from the shadow, records
 // the write as it really happened (a buggy push that wrote next[k] = -1 is recorded so), and then
 // updates the shadow. Every callback checks what it is told and never throws.
+//
+// The same table serves the walk check of an untraced checked frame (PluginCall::walks, log null):
+// every call is still validated, visits and tests feed the check, and nothing is recorded.
+#include <cassert>
 #include <mutex>
 #include <set>
 #include <string_view>
@@ -36,7 +40,7 @@ bool array_ok(PluginCall& call, const char* what, std::int32_t array) {
 }
 
 bool entry_ok(PluginCall& call, const char* what, const char* role, std::int32_t array, std::int64_t index) {
-  const auto size = static_cast<std::int64_t>(call.arrays[static_cast<std::size_t>(array)].shadow.size());
+  const std::int64_t size = call.arrays[static_cast<std::size_t>(array)].size;
   if (index >= 0 && index < size) return true;
   call.breach_with(std::string("trace ") + what + ": " + role + " " + number(index) + " is outside array " +
                    number(array) + " of " + number(size) + " entries");
@@ -105,12 +109,20 @@ static int nbscope_plugin_declare_array(void* ctx, const char* name, std::int32_
     call.breach_with("trace declare_array: data is NULL for " + number(size) + " entries");
     return -1;
   }
-  int id = -1;
-  guarded(call, [&] {
-    const std::span<const std::int32_t> contents(data, static_cast<std::size_t>(size));
-    id = call.log->declare_array(name != nullptr ? name : "", std::vector<std::int64_t>(shape, shape + rank), contents);
-    call.arrays.push_back(PluginCall::Array{data, std::vector<std::int32_t>(contents.begin(), contents.end())});
-  });
+  const auto id = static_cast<int>(call.arrays.size());
+  try {
+    PluginCall::Array array{data, size, {}};
+    if (call.log != nullptr) {
+      const std::span<const std::int32_t> contents(data, static_cast<std::size_t>(size));
+      const int logged = call.log->declare_array(name != nullptr ? name : "", std::vector<std::int64_t>(shape, shape + rank), contents);
+      assert(logged == id && "a plugin's arrays and the trace's are declared in step");
+      (void)logged;
+      array.shadow.assign(contents.begin(), contents.end());
+    }
+    call.arrays.push_back(std::move(array));
+  } catch (...) {
+    call.keep_exception();
+  }
   return call.stopped() ? -1 : id;
 }
 
@@ -150,6 +162,8 @@ static void nbscope_plugin_visit_cell(void* ctx, std::int32_t line, std::int32_t
                                       std::int32_t iz) {
   PluginCall& call = call_of(ctx);
   if (call.stopped() || !line_ok(call, "visit_cell", line) || !element_ok(call, "visit_cell", k, false)) return;
+  call.walks.visitor = k;
+  call.walks.visited = CellIndex{ix, iy};
   guarded(call, [&] { call.log->visit_cell(static_cast<std::uint8_t>(line), k, ix, iy, iz); });
 }
 
@@ -159,6 +173,7 @@ static void nbscope_plugin_test_pair(void* ctx, std::int32_t line, std::int32_t 
   if (call.stopped() || !line_ok(call, "test_pair", line) || !element_ok(call, "test_pair", k, false) ||
       !element_ok(call, "test_pair", other, false))
     return;
+  call.check_walk(k, other);
   guarded(call, [&] { call.log->test_pair(static_cast<std::uint8_t>(line), k, other, contact != 0); });
 }
 

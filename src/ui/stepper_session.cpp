@@ -76,7 +76,9 @@ void StepperSession::apply_target(const SimView& sim) {
     cells.i[static_cast<std::size_t>(a)] = trace_->grid.cell(e.axis(a)[t.pair.i], a);
     cells.j[static_cast<std::size_t>(a)] = trace_->grid.cell(e.axis(a)[t.pair.j], a);
   }
-  const PairLocation at = locate_pair(stepper_.events(), t.pair.i, t.pair.j, cells, e.dim);
+  const bool stray = t.invariant == Invariant::Cells && t.pair.i != t.pair.j;  // (stray, finder): a walked list
+  const PairLocation at = stray ? locate_stray(stepper_.events(), t.pair.i, t.pair.j, cells.i, e.dim)
+                                : locate_pair(stepper_.events(), t.pair.i, t.pair.j, cells, e.dim);
   target_location_ = at;
   if (at.event) stepper_.seek(*at.event + 1);
   focus_element = t.pair.i;
@@ -87,7 +89,8 @@ void StepperSession::apply_target(const SimView& sim) {
   switch (at.finding) {
     case PairFinding::Tested:
       target_status_ = op + "k=" + id(at.scanner) + " tested against " + id(at.other) + ": " + (at.contact ? "contact" : "no contact") + ". ";
-      if (missing && at.contact) target_status_ += "The detector found this contact here; it was lost after detection (an output fault), not by the lists.";
+      if (stray) target_status_ += id(at.other) + " lies in " + cell_text(cells.i) + ", not in " + cell_text(at.cell) + ", whose list k's mask walked here: the list holds an element of another cell.";
+      else if (missing && at.contact) target_status_ += "The detector found this contact here; it was lost after detection (an output fault), not by the lists.";
       else if (missing) target_status_ += "The detector's test answered apart where the reference (or Box2D) says contact: the contact test is wrong.";
       else if (std::string(t.what).find("twice") != std::string::npos) target_status_ += "This is the first of the pair's tests; the detector tested and reported it again later (a list that holds it twice, or stale).";
       else if (t.invariant == Invariant::AInF) target_status_ += "The detector found this contact here; Box2D's contact list does not have it.";
@@ -105,6 +108,11 @@ void StepperSession::apply_target(const SimView& sim) {
     case PairFinding::WrongList:
       target_status_ = op + "k=" + id(at.scanner) + " is pushed onto the list of cell " + cell_text(at.cell) + ", but its cell under the grid is " +
                        cell_text(at.scanner == t.pair.i ? cells.i : cells.j) + ": the detector integerised it wrongly, and every mask that visits its own cell misses it.";
+      break;
+    case PairFinding::StaleLink:
+      target_status_ = op + id(at.scanner) + " is pushed onto the list of cell " + cell_text(at.cell) + " while its head still held " + id(at.other) +
+                       " of cell " + cell_text(cells.i) + ": that head was not cleared after its last use, so the list runs on into a stale chain, which k=" +
+                       id(t.pair.j) + "'s mask walks.";
       break;
     case PairFinding::NotNeighbours:
       target_status_ = op + id(t.pair.i) + " lies in cell " + cell_text(cells.i) + " and " + id(t.pair.j) + " in " + cell_text(cells.j) +

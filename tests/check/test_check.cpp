@@ -85,13 +85,14 @@ class CheckerTest : public ::testing::Test {
 
   // `grid_cells`: the grid's cells when `cells` are a detector's own (the cells check runs).
   FrameReport run(const PairList& pairs, const std::vector<CellIndex>& cells, bool drop_box2d_contact = false,
-                  const std::vector<CellIndex>* grid_cells = nullptr) {
+                  const std::vector<CellIndex>* grid_cells = nullptr, const WalkCheck* walks = nullptr) {
     checker_.begin_frame(world_, DetectOptions{});
     CheckInput in;
     in.algorithm = "nbs";
     in.pairs = &pairs;
     in.cells = &cells;
     in.grid_cells = grid_cells;
+    in.walks = walks;
     in.drop_box2d_contact = drop_box2d_contact;
     FrameReport out;
     checker_.check(in, out);
@@ -185,6 +186,24 @@ TEST_F(CheckerTest, ADetectorsOwnWrongCellBreaksCells) {
   EXPECT_EQ(r.violations[0].cell_j, cells_[3]);
   // Without the grid's cells (a built-in: its cells are the grid's) the same cells are not compared.
   EXPECT_EQ(run(correct_, own, false).broken[static_cast<int>(Invariant::Cells)], 0);
+}
+
+// A plugin's walk check that found strays: each kept one is a `cells` violation (stray, finder) with
+// the walked list's cell and the stray's own; the count is the walk check's, not the kept ones'.
+TEST_F(CheckerTest, StrayTestsOnAWalkedListBreakCells) {
+  WalkCheck clean;
+  EXPECT_TRUE(run(correct_, cells_, false, nullptr, &clean).ok());
+  WalkCheck walks;
+  walks.first.push_back(StrayTest{4, 2, CellIndex{cells_[2].ix, cells_[2].iy + 1}, cells_[2]});
+  walks.count = 3;  // two more found than kept
+  const FrameReport r = run(correct_, cells_, false, nullptr, &walks);
+  EXPECT_EQ(r.broken[static_cast<int>(Invariant::Cells)], 3);
+  ASSERT_EQ(r.violations.size(), 1u);
+  EXPECT_EQ(r.violations[0].invariant, Invariant::Cells);
+  EXPECT_EQ(r.violations[0].pair, (Pair{2, 4}));
+  EXPECT_EQ(r.violations[0].cell_i, (CellIndex{cells_[2].ix, cells_[2].iy + 1}));
+  EXPECT_EQ(r.violations[0].cell_j, cells_[2]);
+  EXPECT_NE(std::string(r.violations[0].what).find("stale list"), std::string::npos);
 }
 
 TEST_F(CheckerTest, ALostBox2dContactBreaksAInF) {

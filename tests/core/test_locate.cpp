@@ -181,5 +181,57 @@ TEST(LocatePair, SaysWhenTheTraceKnowsNothing) {
   EXPECT_EQ(locate_pair({}, 1, 2, c, 2).finding, PairFinding::NotInTrace);
 }
 
+// A hand-made trace of a stale list: 5 pushed onto the list of cell (2,0); then 3 pushed onto the
+// list of (2,1) while its head still held 5 (never cleared), then 4. The walk of (2,1) by 9 tests
+// 4, 3 and then 5, which lies in (2,0): located at the push of 3 that linked next[3] = 5.
+TEST(LocateStray, FindsThePushThatLinkedTheListOnToTheStray) {
+  TraceLog log;
+  const std::vector<std::int32_t> heads(4, -1), next(10, -1);
+  const int b = log.declare_array("B", {4}, heads);
+  const int x = log.declare_array("X", {10}, next);
+  log.push(0, "x-list", b, 2, x, 5, -1, -1, 2, 0, -1);
+  log.push(0, "x-list", b, 3, x, 3, 5, -1, 2, 1, -1);  // head 3 still held 5
+  log.push(0, "x-list", b, 3, x, 4, 3, -1, 2, 1, -1);
+  log.push(0, "x-list", b, 1, x, 7, -1, -1, 1, 1, -1);  // 7 heads the list of (1,1)
+  log.visit_cell(1, 9, 2, 1, -1);
+  log.test_pair(2, 9, 4, false);
+  log.test_pair(2, 9, 3, false);
+  log.test_pair(2, 9, 5, false);
+  log.visit_cell(1, 9, 1, 1, -1);
+  log.test_pair(2, 9, 7, false);
+  const std::span<const TraceEvent> events = log.events();
+
+  const PairLocation stale = locate_stray(events, 5, 9, {2, 0, -1}, 2);
+  EXPECT_EQ(stale.finding, PairFinding::StaleLink);
+  ASSERT_TRUE(stale.event.has_value());
+  EXPECT_EQ(*stale.event, 1u);
+  EXPECT_EQ(stale.scanner, 3);
+  EXPECT_EQ(stale.other, 5);
+  EXPECT_EQ(stale.cell[0], 2);
+  EXPECT_EQ(stale.cell[1], 1);
+
+  // A stray at the head of the walked list: its own push onto that list.
+  const PairLocation head = locate_stray(events, 7, 9, {0, 1, -1}, 2);  // 7 lies in (0,1)
+  EXPECT_EQ(head.finding, PairFinding::WrongList);
+  ASSERT_TRUE(head.event.has_value());
+  EXPECT_EQ(*head.event, 3u);
+
+  // Never tested by that finder: nothing to show.
+  EXPECT_EQ(locate_stray(events, 5, 8, {2, 0, -1}, 2).finding, PairFinding::NotInTrace);
+}
+
+// On a correct detector's trace every test names an element of the visited cell's list: asked
+// about one, locate_stray finds only its test (no link is stale, no push wrong).
+TEST(LocateStray, AnElementRightlyOnTheListIsOnlyItsTest) {
+  const Traced t = traced("nbs", Layout::Dense, 80, 2, 3);
+  const std::span<const TraceEvent> events = t.log.events();
+  const auto test = std::find_if(events.begin(), events.end(), [](const TraceEvent& e) { return e.op == TraceOp::TestPair; });
+  ASSERT_NE(test, events.end());
+  const PairCells c = cells_of(t.grid, t.e, test->other, test->element);
+  const PairLocation at = locate_stray(events, test->other, test->element, c.i, 2);
+  EXPECT_EQ(at.finding, PairFinding::Tested);
+  EXPECT_EQ(*at.event, static_cast<std::size_t>(test - events.begin()));
+}
+
 }  // namespace
 }  // namespace nbscope

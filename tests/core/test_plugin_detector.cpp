@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/brute.hpp"
+#include "core/cells.hpp"
 #include "core/plugin_detector.hpp"
 #include "support/generators.hpp"
 
@@ -437,6 +438,57 @@ TEST(PluginDetector, RefusesARepeatedPairOnEveryCall) {
   PluginDetector detector(test_symbols(), test_info(kAll));
   PairList pairs;
   for (int call = 0; call < 3; ++call) EXPECT_THROW(detector.detect(nine(), DetectOptions{}, pairs), PluginError);
+}
+
+// The walk check: a plugin that traces its lists gets the table on a checked, untraced frame and
+// each test is held against its walk's visited cell. This "plugin" visits element 0's cell and then
+// tests 0 against every element: each one of another cell is a stray. Without check_walks, or
+// without NBSCOPE_CAP_LISTS, the frame stays untraced (no table) and nothing is checked.
+TEST(PluginDetector, TheWalkCheckFindsEveryElementTestedFromAnotherCellsList) {
+  const Elements e = nine();
+  int tables = 0;
+  g_body = [&](void**, const nbscope_frame* f, const nbscope_output* out, const nbscope_trace* t) {
+    if (t == nullptr) return 0;
+    ++tables;
+    const auto cell = [&](std::int64_t k, int a) {
+      return static_cast<std::int32_t>(((a == 0 ? f->x : f->y)[k] - f->origin[a]) / f->d);
+    };
+    t->visit_cell(t->ctx, 1, 0, cell(0, 0), cell(0, 1), -1);
+    for (std::int32_t j = 1; j < f->n; ++j) t->test_pair(t->ctx, 2, 0, j, 0);
+    (void)out;
+    return 0;
+  };
+  constexpr std::uint32_t kLists = NBSCOPE_CAP_2D | NBSCOPE_CAP_TRACES | NBSCOPE_CAP_LISTS;
+  PluginDetector detector(test_symbols(), test_info(kLists));
+  DetectOptions options;
+  PairList pairs;
+  detector.detect(e, options, pairs);  // not asked: no table, no check
+  EXPECT_EQ(tables, 0);
+  EXPECT_EQ(detector.walk_check(), nullptr);
+
+  options.check_walks = true;
+  detector.detect(e, options, pairs);
+  EXPECT_EQ(tables, 1);
+  ASSERT_NE(detector.walk_check(), nullptr);
+  std::vector<CellIndex> cells;
+  integerise_cells(e, *detector.last_grid(), cells);
+  std::int64_t others = 0;
+  for (std::size_t j = 1; j < cells.size(); ++j) others += cells[j] == cells[0] ? 0 : 1;
+  ASSERT_GT(others, 0);
+  const WalkCheck& walks = *detector.walk_check();
+  EXPECT_EQ(walks.count, others);
+  ASSERT_FALSE(walks.first.empty());
+  for (const StrayTest& s : walks.first) {
+    EXPECT_EQ(s.finder, 0);
+    EXPECT_EQ(s.list_cell, cells[0]);
+    EXPECT_EQ(s.own_cell, cells[static_cast<std::size_t>(s.stray)]);
+    EXPECT_NE(s.own_cell, s.list_cell);
+  }
+
+  PluginDetector no_lists(test_symbols(), test_info(NBSCOPE_CAP_2D | NBSCOPE_CAP_TRACES));
+  no_lists.detect(e, options, pairs);
+  EXPECT_EQ(tables, 1);
+  EXPECT_EQ(no_lists.walk_check(), nullptr);
 }
 
 }  // namespace
