@@ -225,6 +225,7 @@ void FrameChecker::check(const CheckInput& in, FrameReport& out) {
   for_each_missing(a, r, [&](const Pair& p) { report(Invariant::AEqualsR, p, extra); });
   invariant_ms(Invariant::AEqualsR) += lap(t);
 
+  out.cells_checked = in.grid_cells != nullptr || in.walks != nullptr;
   // cells: the detector's own integerisation equals the grid's, element by element.
   if (in.grid_cells != nullptr) {
     const std::vector<CellIndex>& grid = *in.grid_cells;
@@ -242,7 +243,7 @@ void FrameChecker::check(const CheckInput& in, FrameReport& out) {
     out.broken[static_cast<std::size_t>(Invariant::Cells)] += in.walks->count;
     for (const StrayTest& s : in.walks->first) {
       if (out.violations.size() >= kMaxListedViolationsPerFrame) break;
-      out.violations.push_back({frame, Invariant::Cells, Pair{s.stray, s.finder}, s.list_cell, s.own_cell,
+      out.violations.push_back({frame, Invariant::Cells, Pair{s.stray, s.finder}, s.list_cell, s.finder_cell,
                                 "tested from the list of a cell it does not lie in (a stale list)"});
     }
   }

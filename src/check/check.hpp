@@ -19,7 +19,7 @@
 //                  element the grid's cell (eq. 3.76); each other element is a violation (k, k).
 //                  And the lists it walks hold only their cell's elements (a plugin's
 //                  walk_check()): each element tested from another cell's list is a violation
-//                  (stray, finder), cells the list's and the stray's own.
+//                  (stray, finder), cells the list's (where the detector had it) and the finder's.
 #pragma once
 #include <memory>
 #include <string>

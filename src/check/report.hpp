@@ -36,7 +36,8 @@ const char* invariant_description(Invariant invariant);
 
 // One broken invariant for one pair in one frame. A `cells` violation names one element k as the
 // pair (k, k), cell_i the detector's cell of k and cell_j the grid's; or, for a stray on a walked
-// list, the pair (stray, finder), cell_i the cell whose list held the stray and cell_j its own.
+// list, the pair (stray, finder), cell_i the cell whose list held the stray (where the detector had
+// it) and cell_j the finder's.
 struct Violation {
   std::int64_t frame = 0;
   Invariant invariant = Invariant::AEqualsR;
@@ -99,6 +100,7 @@ struct FrameReport {
   bool checked = false;          // the invariants ran (off in the GUI when the user turns checks off)
   bool box2d_stepped = false;    // A-in-F needs Box2D's contact list, which exists only after a step
   bool box2d_checks = true;      // A-in-F, T-in-A, AABB-in-cells ran: false for recorded frames (no Box2D world)
+  bool cells_checked = false;    // `cells` applied: the detector's own cells or walked lists (a plugin's)
   std::string reference;         // detector that computed R ("brute", "nbs", "box2d")
   FrameCounts counts;
   FrameTimings timings;

@@ -34,6 +34,7 @@ struct StrayTest {
   std::int32_t stray = -1;   // the element found on it
   CellIndex list_cell;       // the cell visited, whose list held `stray`
   CellIndex own_cell;        // the cell `stray` lies in (the detector's own integerisation when it reports one)
+  CellIndex finder_cell;     // the cell `finder` lies in (likewise)
 };
 
 // What the walk check of one detection found (DetectOptions::check_walks).

@@ -47,13 +47,17 @@ struct PluginCall {
   // Notes a test of `other` by `k` that does not lie in the cell k's last visit walked (never throws).
   void check_walk(std::int32_t k, std::int32_t other) noexcept {
     if (walks.out == nullptr || walks.visitor != k) return;
-    const auto at = static_cast<std::size_t>(other);
-    CellIndex own = (*walks.grid_cells)[at];
-    if (walks.own_cells != nullptr && walks.own_cells[2 * at] >= 0 && walks.own_cells[2 * at + 1] >= 0)
-      own = CellIndex{walks.own_cells[2 * at], walks.own_cells[2 * at + 1]};
+    const CellIndex own = cell_of(other);
     if (own == walks.visited) return;
     ++walks.out->count;
-    if (walks.out->first.size() < WalkCheck::kKept) walks.out->first.push_back(StrayTest{k, other, walks.visited, own});
+    if (walks.out->first.size() < WalkCheck::kKept) walks.out->first.push_back(StrayTest{k, other, walks.visited, own, cell_of(k)});
+  }
+  // Element k's cell for the walk check: the plugin's own when it wrote one, else the grid's.
+  [[nodiscard]] CellIndex cell_of(std::int32_t k) const noexcept {
+    const auto at = static_cast<std::size_t>(k);
+    if (walks.own_cells != nullptr && walks.own_cells[2 * at] >= 0 && walks.own_cells[2 * at + 1] >= 0)
+      return CellIndex{walks.own_cells[2 * at], walks.own_cells[2 * at + 1]};
+    return (*walks.grid_cells)[at];
   }
 
   // True once a breach or an exception ended the call's useful work.

@@ -189,12 +189,15 @@ TEST_F(CheckerTest, ADetectorsOwnWrongCellBreaksCells) {
 }
 
 // A plugin's walk check that found strays: each kept one is a `cells` violation (stray, finder) with
-// the walked list's cell and the stray's own; the count is the walk check's, not the kept ones'.
+// the walked list's cell and the finder's; the count is the walk check's, not the kept ones'.
 TEST_F(CheckerTest, StrayTestsOnAWalkedListBreakCells) {
+  EXPECT_FALSE(run(correct_, cells_).cells_checked);  // a built-in: nothing for `cells` to compare
   WalkCheck clean;
-  EXPECT_TRUE(run(correct_, cells_, false, nullptr, &clean).ok());
+  const FrameReport held = run(correct_, cells_, false, nullptr, &clean);
+  EXPECT_TRUE(held.ok());
+  EXPECT_TRUE(held.cells_checked);  // Stats counts it among the invariants that held
   WalkCheck walks;
-  walks.first.push_back(StrayTest{4, 2, CellIndex{cells_[2].ix, cells_[2].iy + 1}, cells_[2]});
+  walks.first.push_back(StrayTest{4, 2, CellIndex{cells_[2].ix, cells_[2].iy + 1}, cells_[2], cells_[4]});
   walks.count = 3;  // two more found than kept
   const FrameReport r = run(correct_, cells_, false, nullptr, &walks);
   EXPECT_EQ(r.broken[static_cast<int>(Invariant::Cells)], 3);
@@ -202,7 +205,7 @@ TEST_F(CheckerTest, StrayTestsOnAWalkedListBreakCells) {
   EXPECT_EQ(r.violations[0].invariant, Invariant::Cells);
   EXPECT_EQ(r.violations[0].pair, (Pair{2, 4}));
   EXPECT_EQ(r.violations[0].cell_i, (CellIndex{cells_[2].ix, cells_[2].iy + 1}));
-  EXPECT_EQ(r.violations[0].cell_j, cells_[2]);
+  EXPECT_EQ(r.violations[0].cell_j, cells_[4]);
   EXPECT_NE(std::string(r.violations[0].what).find("stale list"), std::string::npos);
 }
 

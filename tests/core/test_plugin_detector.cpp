@@ -482,6 +482,7 @@ TEST(PluginDetector, TheWalkCheckFindsEveryElementTestedFromAnotherCellsList) {
     EXPECT_EQ(s.finder, 0);
     EXPECT_EQ(s.list_cell, cells[0]);
     EXPECT_EQ(s.own_cell, cells[static_cast<std::size_t>(s.stray)]);
+    EXPECT_EQ(s.finder_cell, cells[0]);
     EXPECT_NE(s.own_cell, s.list_cell);
   }
 

@@ -3,6 +3,7 @@
 // invariant (and for the cells check, the element and both cells); the reference passes.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -60,15 +61,15 @@ TEST(ExampleCli, TheCellsViolationNamesTheElementAndBothCells) {
   EXPECT_EQ(v["cells"][0][1], v["cells"][1][1]) << v.dump();
 }
 
-// A stale list names the stray and the element whose walk found it, the list's cell and then the
-// stray's own: the same column, rows below (B[1] of the row below ran on into older rows).
+// A stale list names the stray and the element whose walk found it, the list's cell (where the
+// detector had the stray) and the finder's: the row below the finder's, within one column.
 TEST(ExampleCli, TheStaleListViolationNamesTheStrayAndBothCells) {
   int exit_code = -1;
   const json v = first_violation("nbs_bug_stale", "nbs-bug-stale", "pile", exit_code);
   ASSERT_TRUE(v.is_object());
   EXPECT_NE(v["pair"][0], v["pair"][1]) << v.dump();
-  EXPECT_EQ(v["cells"][0][0], v["cells"][1][0]) << v.dump();
-  EXPECT_GT(v["cells"][0][1].get<int>(), v["cells"][1][1].get<int>()) << v.dump();
+  EXPECT_LE(std::abs(v["cells"][0][0].get<int>() - v["cells"][1][0].get<int>()), 1) << v.dump();
+  EXPECT_EQ(v["cells"][0][1].get<int>() + 1, v["cells"][1][1].get<int>()) << v.dump();
   EXPECT_NE(v["what"].get<std::string>().find("stale list"), std::string::npos) << v.dump();
 }
 

@@ -73,6 +73,7 @@ struct Caught {
   Violation first;
   PairLocation at;
   TraceEvent event;  // the located operation
+  CellIndex stray_cell;  // pair.i's cell under the grid
 };
 
 std::optional<Caught> first_violation(const std::string& scene, const std::string& algorithm, int frames) {
@@ -91,6 +92,7 @@ std::optional<Caught> first_violation(const std::string& scene, const std::strin
       cells.i[static_cast<std::size_t>(a)] = trace->grid.cell(trace->elements.axis(a)[c.first.pair.i], a);
       cells.j[static_cast<std::size_t>(a)] = trace->grid.cell(trace->elements.axis(a)[c.first.pair.j], a);
     }
+    c.stray_cell = CellIndex{cells.i[0], cells.i[1]};
     const bool stray = c.first.invariant == Invariant::Cells && c.first.pair.i != c.first.pair.j;  // as the Stepper
     c.at = stray ? locate_stray(trace->log.events(), c.first.pair.i, c.first.pair.j, cells.i, 2)
                  : locate_pair(trace->log.events(), c.first.pair.i, c.first.pair.j, cells, 2);
@@ -203,9 +205,10 @@ TEST_P(BugPlugin, IsCaughtAndLocatedAtTheOperationThatLostThePair) {
       EXPECT_EQ(caught->event.writes[0].new_value, caught->first.pair.i);
       EXPECT_EQ(caught->event.cell[0], caught->first.cell_i.ix);
       EXPECT_EQ(caught->event.cell[1], caught->first.cell_i.iy);
-      // The stale B[1] chain: the same column, a lower row than the list's.
-      EXPECT_EQ(caught->first.cell_j.ix, caught->first.cell_i.ix);
-      EXPECT_LT(caught->first.cell_j.iy, caught->first.cell_i.iy);
+      // The stale B[1] chain: the stray lies in the list's column, a row lower; the finder two rows up.
+      EXPECT_EQ(caught->stray_cell.ix, caught->first.cell_i.ix);
+      EXPECT_EQ(caught->stray_cell.iy, caught->first.cell_i.iy - 1);
+      EXPECT_EQ(caught->first.cell_j.iy, caught->stray_cell.iy + 2);
       break;
     default: ADD_FAILURE() << "no such case";
   }
