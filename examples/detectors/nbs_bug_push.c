@@ -25,8 +25,9 @@ static inline int test_list(const nbscope_frame *f, const nbscope_output *out, c
   return 0;
 }
 
-NBSCOPE_EXPORT int nbscope_detect(void **state, const nbscope_frame *f, const nbscope_output *out,
-                                  const nbscope_trace *t) {
+/* The loops, once: nbscope_detect below makes two copies of them, one for t == NULL. */
+static NBS_INLINE int detect_frame(void **state, const nbscope_frame *f, const nbscope_output *out,
+                                   const nbscope_trace *t) {
   nbs_arrays *s = nbs_prepare(state, f, out);
   nbs_ids id;
   const double *x, *y;
@@ -131,4 +132,12 @@ NBSCOPE_EXPORT int nbscope_detect(void **state, const nbscope_frame *f, const nb
 full:
   nbs_reset_heads(s);
   return 1;
+}
+
+/* Untraced frames run a copy of the loops in which t is a constant NULL, so every trace call and
+ * its `t != NULL` test compile away (as C++ would with a template); traced frames run the other. */
+NBSCOPE_EXPORT int nbscope_detect(void **state, const nbscope_frame *f, const nbscope_output *out,
+                                  const nbscope_trace *t) {
+  if (t == NULL) return detect_frame(state, f, out, NULL);
+  return detect_frame(state, f, out, t);
 }

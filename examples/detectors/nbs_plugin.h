@@ -12,6 +12,14 @@
 
 #include "nbscope/detector.h"
 
+/* Asks the compiler to inline a function into each caller (the loops, into an untraced and a traced
+ * copy); plain `inline` elsewhere. */
+#if defined(__GNUC__)
+#define NBS_INLINE __attribute__((always_inline)) inline
+#else
+#define NBS_INLINE inline
+#endif
+
 /* Pseudocode lines (the trace's `line`), the built-in nbs detector's wording. */
 enum {
   NBS_LOOP_ALL = 0,
