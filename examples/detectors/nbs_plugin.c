@@ -1,5 +1,5 @@
-/* examples/detectors/nbs_plugin.c: the shared plumbing of nbs_plugin.h (arrays, grid scale, trace
- * declarations), compiled into each example plugin. */
+/* examples/detectors/nbs_plugin.c: the shared plumbing of nbs_plugin.h (arrays, trace declarations),
+ * compiled into each example plugin. */
 #include "nbs_plugin.h"
 
 #include <stdlib.h>
@@ -60,36 +60,6 @@ void nbs_reset_heads(nbs_arrays *s) {
   int64_t k;
   for (k = 0; k < s->ny; ++k) s->y_heads[k] = -1;
   for (k = 0; k < 2 * s->nx; ++k) s->B[k] = -1;
-}
-
-/* The factor of Int((v - origin) * factor), exactly as nbscope's grid computes it: 1/d, or 1/(D +
- * guard) when d is the largest diameter D itself, where rounding could put two touching centres two
- * cells apart (src/core/grid.cpp). Computing it the same way keeps the cells equal to nbscope's. */
-double nbs_cell_scale(const nbscope_frame *f) {
-  double lo[2], hi[2], rmax = 0, reach = f->d, diameter, guard, cell;
-  const double *axis[2];
-  int64_t k;
-  int a;
-  if (f->n == 0) return 1.0 / f->d;
-  axis[0] = f->x;
-  axis[1] = f->y;
-  for (a = 0; a < 2; ++a) {
-    lo[a] = hi[a] = axis[a][0];
-    for (k = 1; k < f->n; ++k) {
-      if (axis[a][k] < lo[a]) lo[a] = axis[a][k];
-      if (axis[a][k] > hi[a]) hi[a] = axis[a][k];
-    }
-    if (hi[a] - f->origin[a] > reach) reach = hi[a] - f->origin[a];
-    if (f->origin[a] - hi[a] > reach) reach = f->origin[a] - hi[a];
-    if (lo[a] - f->origin[a] > reach) reach = lo[a] - f->origin[a];
-    if (f->origin[a] - lo[a] > reach) reach = f->origin[a] - lo[a];
-  }
-  for (k = 0; k < f->n; ++k)
-    if (f->r[k] > rmax) rmax = f->r[k];
-  diameter = 2.0 * rmax;
-  guard = 8.0 * 2.220446049250313080847263336181640625e-16 * reach; /* 8 * DBL_EPSILON * reach */
-  cell = diameter + guard > f->d ? diameter + guard : f->d;
-  return 1.0 / cell;
 }
 
 /* Declares the four arrays when traced, as the built-in nbs names and shapes them. */

@@ -3,14 +3,22 @@
  * between frames, the grid's integerisation and contact test exactly as nbscope computes them (so
  * that touching pairs and cell borders agree bit for bit), the trace calls, and the info block.
  *
- * Index: pseudocode lines | nbs_arrays (y_heads, Y, B[2][nx], X) | nbs_cell_scale, nbs_int |
- * nbs_in_contact | trace helpers | NBS_PLUGIN_INFO. */
+ * Index: pseudocode lines | nbs_arrays (y_heads, Y, B[2][nx], X) | nbs_int | nbs_in_contact |
+ * trace helpers | NBS_PLUGIN_INFO. */
 #ifndef NBSCOPE_EXAMPLE_NBS_PLUGIN_H
 #define NBSCOPE_EXAMPLE_NBS_PLUGIN_H
 
 #include <stddef.h>
 
 #include "nbscope/detector.h"
+
+/* Asks the compiler to inline a function into each caller (the loops, into an untraced and a traced
+ * copy); plain `inline` elsewhere. */
+#if defined(__GNUC__)
+#define NBS_INLINE __attribute__((always_inline)) inline
+#else
+#define NBS_INLINE inline
+#endif
 
 /* Pseudocode lines (the trace's `line`), the built-in nbs detector's wording. */
 enum {
@@ -72,27 +80,18 @@ size_t nbs_bytes(const nbs_arrays *s);
 nbs_arrays *nbs_prepare(void **state, const nbscope_frame *f, const nbscope_output *out);
 /* Every head back to -1 (after a run stopped at the pair limit). */
 void nbs_reset_heads(nbs_arrays *s);
-/* The factor of Int((v - origin) * factor), exactly as nbscope's grid computes it: 1/d, or 1/(D +
- * guard) when d is the largest diameter D itself, where rounding could put two touching centres two
- * cells apart (src/core/grid.cpp). Computing it the same way keeps the cells equal to nbscope's. */
-double nbs_cell_scale(const nbscope_frame *f);
-
-/* Int((v - origin) * scale) clamped into [0, n): nbscope's Grid::cell (eq. 3.76). */
-static inline int32_t nbs_int(double v, double origin, double scale, int64_t n) {
-  const double c = (v - origin) * scale;
+/* Int((v - origin) * inv_d) clamped into [0, n): nbscope's Grid::cell (eq. 3.76); pass the frame's inv_d,
+ * so that the cells are nbscope's bit for bit. */
+static inline int32_t nbs_int(double v, double origin, double inv_d, int64_t n) {
+  const double c = (v - origin) * inv_d;
   if (!(c >= 0)) return 0;
   if (c >= (double)n) return (int32_t)(n - 1);
   return (int32_t)c;
 }
 
-/* The contact test of nbscope's core (in_contact), the same expression: touching counts. */
-static inline int nbs_in_contact(const nbscope_frame *f, int32_t i, int32_t j) {
-  const double dx = f->x[i] - f->x[j];
-  const double dy = f->y[i] - f->y[j];
-  const double dz = 0.0;
-  const double rr = f->r[i] + f->r[j];
-  return dx * dx + dy * dy + dz * dz <= rr * rr;
-}
+/* The contact test of nbscope's core (in_contact) on dx = x_i - x_j, dy = y_i - y_j, rr = r_i + r_j, the
+ * same expression: touching counts. */
+static inline int nbs_in_contact(double dx, double dy, double rr) { return dx * dx + dy * dy <= rr * rr; }
 
 /* Trace ids of the four arrays (-1 untraced). */
 typedef struct nbs_ids {

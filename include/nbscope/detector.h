@@ -58,8 +58,10 @@ typedef struct nbscope_frame {
   const double *r;      /* radii */
   double d;             /* cell size (the book's d: at least the largest diameter) */
   double origin[3];     /* lower corner of cell (0, 0, 0); origin[2] = 0 in 2D */
-  int64_t cells[3];     /* nx, ny, nz (nz = 1 in 2D); cell (ix, iy, iz) = Int((x - origin) / d) clamped into [0, n) */
+  int64_t cells[3];     /* nx, ny, nz (nz = 1 in 2D); cell (ix, iy, iz) = Int((x - origin) * inv_d) clamped into [0, n) */
   int64_t max_pairs;    /* add_pair refuses pairs beyond this many */
+  double inv_d;         /* ix = Int((x - origin[0]) * inv_d), as nbscope integerises: 1/d, or a hair less where
+                         * rounding could put two touching centres two cells apart */
 } nbscope_frame;
 
 /* Where the plugin puts its answer. */

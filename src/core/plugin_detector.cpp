@@ -3,8 +3,11 @@
 #include "core/plugin_detector.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
 #include <limits>
 #include <new>
+#include <type_traits>
 
 #include "core/cells.hpp"
 #include "core/plugin_call.hpp"
@@ -30,6 +33,23 @@ void check_pseudocode(const char* const* lines, std::int32_t count, const char* 
   if (count > 0 && lines == nullptr) throw Error(where + " is NULL but " + where + "_lines is " + std::to_string(count));
   for (std::int32_t i = 0; i < count; ++i)
     if (lines[i] == nullptr) throw Error(where + "[" + std::to_string(i) + "] is NULL");
+}
+
+// Throws the breach of the first entry of `raw` (2D cells as a plugin wrote them) outside `grid`.
+[[noreturn]] void throw_bad_cell(const std::vector<std::int32_t>& raw, const Grid& grid, const std::string& where) {
+  static const char* const axis_names[2] = {"x", "y"};
+  for (std::size_t k = 0; k < raw.size() / 2; ++k) {
+    for (int a = 0; a < 2; ++a) {
+      const std::int32_t v = raw[k * 2 + a];
+      if (v == -1)
+        throw PluginError(where + "cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] +
+                          " was not written (still -1)");
+      if (v < 0 || v >= grid.n[a])
+        throw PluginError(where + "cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] + " is " +
+                          std::to_string(v) + ", outside [0, " + std::to_string(grid.n[a]) + ")");
+    }
+  }
+  throw PluginError(where + "cells: an entry is outside the grid");  // not reached: the caller saw one
 }
 
 }  // namespace
@@ -155,6 +175,7 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   frame.z = elements.dim == 3 ? elements.z.data() : nullptr;
   frame.r = elements.r.data();
   frame.d = grid_.cell_size;
+  frame.inv_d = grid_.inv_cell_size;
   for (int a = 0; a < 3; ++a) {
     frame.origin[a] = a < elements.dim ? grid_.origin[a] : 0.0;
     frame.cells[a] = a < elements.dim ? grid_.n[a] : 1;
@@ -194,7 +215,7 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   if (status != 0)
     throw PluginError(where(options.frame) + "nbscope_detect returned " + std::to_string(status) +
                       (call.failure.empty() ? " without a reason (fail() not called)" : ": " + printable_line(call.failure)));
-  const std::int64_t repeat = first_repeated_pair(out_pairs, elements.size(), scratch_, seen_);
+  const std::int64_t repeat = first_repeated_pair(out_pairs, elements.size(), pair_table_);
   if (repeat >= 0) {
     const Pair p = out_pairs[static_cast<std::size_t>(repeat)];
     throw PluginError(where(options.frame) + "add_pair: pair (" + std::to_string(p.i) + ", " + std::to_string(p.j) + ") given twice");
@@ -216,53 +237,59 @@ std::string PluginDetector::where(std::int64_t frame) const {
 
 void PluginDetector::check_cells(const Elements& elements, std::int64_t frame) {
   const auto n = static_cast<std::size_t>(elements.size());
+  // One branch-free pass first (-1, negative and too large alike fail the unsigned compare); the
+  // words of the first bad entry are found only when there is one.
+  const auto nx = static_cast<std::uint64_t>(grid_.n[0]);
+  const auto ny = static_cast<std::uint64_t>(grid_.n[1]);
+  const std::int32_t* raw = raw_cells_.data();
+  bool inside = true;
+  for (std::size_t k = 0; k < n; ++k)
+    inside &= (static_cast<std::uint32_t>(raw[2 * k]) < nx) & (static_cast<std::uint32_t>(raw[2 * k + 1]) < ny);
+  if (!inside) throw_bad_cell(raw_cells_, grid_, where(frame));
+  static_assert(sizeof(CellIndex) == 2 * sizeof(std::int32_t) && std::is_trivially_copyable_v<CellIndex>);
   cells_.resize(n);
-  static const char* const axis_names[2] = {"x", "y"};
-  for (std::size_t k = 0; k < n; ++k) {
-    for (int a = 0; a < 2; ++a) {
-      const std::int32_t v = raw_cells_[k * 2 + a];
-      if (v == -1)
-        throw PluginError(where(frame) + "cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] +
-                          " was not written (still -1)");
-      if (v < 0 || v >= grid_.n[a])
-        throw PluginError(where(frame) + "cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] + " is " +
-                          std::to_string(v) + ", outside [0, " + std::to_string(grid_.n[a]) + ")");
-    }
-    cells_[k] = CellIndex{raw_cells_[k * 2], raw_cells_[k * 2 + 1]};
-  }
+  if (n > 0) std::memcpy(static_cast<void*>(cells_.data()), raw, n * sizeof(CellIndex));  // {ix, iy} as written
   has_cells_ = true;
 }
 
-std::int64_t first_repeated_pair(const PairList& pairs, std::int64_t n, std::vector<std::uint32_t>& scratch,
-                                 std::vector<std::int32_t>& seen) {
-  if (pairs.size() < 2) return -1;
-  if (pairs.size() >= std::numeric_limits<std::uint32_t>::max()) {  // positions would not fit: sort a copy
-    std::vector<std::pair<Pair, std::size_t>> sorted(pairs.size());
-    for (std::size_t k = 0; k < pairs.size(); ++k) sorted[k] = {pairs[k], k};
-    std::sort(sorted.begin(), sorted.end());
-    for (std::size_t k = 1; k < sorted.size(); ++k)
-      if (sorted[k].first == sorted[k - 1].first) return static_cast<std::int64_t>(sorted[k].second);
-    return -1;
+std::int64_t first_repeated_pair_sorted(const PairList& pairs) {
+  std::vector<std::pair<Pair, std::size_t>> sorted(pairs.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k) sorted[k] = {pairs[k], k};
+  std::sort(sorted.begin(), sorted.end());
+  std::int64_t first = -1;  // the smallest position among the repeats, as the hash table finds it
+  for (std::size_t k = 1; k < sorted.size(); ++k) {
+    const auto position = static_cast<std::int64_t>(sorted[k].second);
+    if (sorted[k].first == sorted[k - 1].first && (first < 0 || position < first)) first = position;
   }
-  const auto count = static_cast<std::size_t>(n);
-  // scratch: [0, n] the bucket starts by smaller element i, then the pairs' positions bucketed.
-  scratch.assign(count + 1 + pairs.size(), 0);
-  std::uint32_t* start = scratch.data();
-  std::uint32_t* position = scratch.data() + count + 1;
-  for (const Pair& p : pairs) ++start[p.i + 1];
-  for (std::size_t i = 0; i < count; ++i) start[i + 1] += start[i];
-  for (std::size_t k = 0; k < pairs.size(); ++k) position[start[pairs[k].i]++] = static_cast<std::uint32_t>(k);
-  // Each bucket now ends where the next began; stamp its partners with i + 1.
-  seen.assign(count, 0);
-  std::uint32_t begin = 0;
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::uint32_t end = start[i];
-    for (std::uint32_t b = begin; b < end; ++b) {
-      const std::int32_t j = pairs[position[b]].j;
-      if (seen[static_cast<std::size_t>(j)] == static_cast<std::int32_t>(i) + 1) return position[b];
-      seen[static_cast<std::size_t>(j)] = static_cast<std::int32_t>(i) + 1;
+  return first;
+}
+
+std::int64_t first_repeated_pair(const PairList& pairs, std::int64_t n, std::vector<std::uint32_t>& table) {
+  if (pairs.size() < 2) return -1;
+  if (pairs.size() > (std::size_t{1} << 28)) return first_repeated_pair_sorted(pairs);  // the table would not fit
+  // Open addressing at most half full, Fibonacci hashing of the key i:j (it spreads pairs that share
+  // i). Up to 65535 elements the key i * n + j fits one entry, else (i, j) takes two; a free slot
+  // holds kEmpty, which no key reaches. Fewer bytes than the frame's own arrays: they stay in cache.
+  constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
+  const bool narrow = n <= 65535;
+  const std::size_t width = narrow ? 1 : 2;
+  std::size_t slots = 16;
+  while (slots < 2 * pairs.size()) slots <<= 1;
+  table.assign(width * slots, kEmpty);
+  const int shift = 64 - std::countr_zero(slots);
+  std::size_t budget = 8 * pairs.size();  // extra probes; a half-full table needs about one per two pairs
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const auto i = static_cast<std::uint32_t>(pairs[k].i);
+    const auto j = static_cast<std::uint32_t>(pairs[k].j);
+    const std::uint32_t first = narrow ? i * static_cast<std::uint32_t>(n) + j : i;  // < n * n <= kEmpty - 1
+    std::size_t slot = static_cast<std::size_t>(((std::uint64_t{i} << 32 | j) * 0x9E3779B97F4A7C15ull) >> shift);
+    while (table[width * slot] != kEmpty) {
+      if (table[width * slot] == first && (narrow || table[2 * slot + 1] == j)) return static_cast<std::int64_t>(k);
+      if (budget-- == 0) return first_repeated_pair_sorted(pairs);  // colliding pairs: keep the time bounded
+      slot = (slot + 1) & (slots - 1);
     }
-    begin = end;
+    table[width * slot] = first;
+    if (!narrow) table[2 * slot + 1] = j;
   }
   return -1;
 }

@@ -112,17 +112,18 @@ class PluginDetector final : public Detector {
   std::vector<std::int32_t> raw_cells_;  // what the plugin wrote: n * dim, prefilled -1
   std::vector<CellIndex> cells_;
   bool has_cells_ = false;               // the last detection was 2D with NBSCOPE_CAP_CELLS
-  std::vector<std::uint32_t> scratch_;   // the repeated-pair check's buffers (kept between frames)
-  std::vector<std::int32_t> seen_;
+  std::vector<std::uint32_t> pair_table_;  // the repeated-pair check's hash table (kept between frames)
   WalkCheck walks_;                      // the last detection's walk check
   bool walks_checked_ = false;
   std::vector<CellIndex> walk_cells_;    // the grid's cell of every element, for the walk check
 };
 
-// The check that no pair is given twice, in time O(pairs + n): pairs bucketed by their smaller
-// element, then each bucket's partners stamped. Returns the index of the first repeat, or -1.
-// `scratch` and `seen` are reused between calls. Pairs must already be in range and i < j.
-std::int64_t first_repeated_pair(const PairList& pairs, std::int64_t n, std::vector<std::uint32_t>& scratch,
-                                 std::vector<std::int32_t>& seen);
+// The check that no pair is given twice: each pair looked up in, then added to, a hash table of those
+// before it (`table`, reused between calls), expected time O(pairs). Pairs that collide past a probe
+// budget are sorted instead, O(pairs log pairs) whatever they are. Returns the index of the first pair
+// given before, or -1. Pairs must already be in range [0, n) and i < j.
+std::int64_t first_repeated_pair(const PairList& pairs, std::int64_t n, std::vector<std::uint32_t>& table);
+// The same answer by sorting a copy of the pairs (the fallback of first_repeated_pair).
+std::int64_t first_repeated_pair_sorted(const PairList& pairs);
 
 }  // namespace nbscope

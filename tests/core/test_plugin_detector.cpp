@@ -149,6 +149,7 @@ TEST(PluginDetector, SeesTheGridTheBuiltInsFit) {
   EXPECT_EQ(seen.dim, 2);
   EXPECT_EQ(seen.z, nullptr);
   EXPECT_EQ(seen.d, grid.cell_size);
+  EXPECT_EQ(seen.inv_d, grid.inv_cell_size);  // the plugins integerise with it, so cells agree bit for bit
   EXPECT_EQ(seen.origin[0], grid.origin[0]);
   EXPECT_EQ(seen.origin[1], grid.origin[1]);
   EXPECT_EQ(seen.cells[0], grid.n[0]);
@@ -313,6 +314,9 @@ TEST(PluginDetector, OwnCellsAreThePluginsAndChecked) {
   EXPECT_EQ(plugin_error(write_cells(5, -1), caps), kWhere + "cells: element 2's cell on y was not written (still -1)");
   const std::string nx = std::to_string(make_grid(nine(), GridOptions{}).n[0]);
   EXPECT_EQ(plugin_error(write_cells(4, 99), caps), kWhere + "cells: element 2's cell on x is 99, outside [0, " + nx + ")");
+  EXPECT_EQ(plugin_error(write_cells(0, -7), caps), kWhere + "cells: element 0's cell on x is -7, outside [0, " + nx + ")");
+  const std::string ny = std::to_string(make_grid(nine(), GridOptions{}).n[1]);
+  EXPECT_EQ(plugin_error(write_cells(17, 99), caps), kWhere + "cells: element 8's cell on y is 99, outside [0, " + ny + ")");
   g_body = write_cells(-1, 0);
   PluginDetector detector(test_symbols(), test_info(caps));
   PairList pairs;
@@ -398,11 +402,42 @@ TEST(PluginDetector, RegistryEntryCarriesTheCapabilities) {
 }
 
 TEST(PluginDetector, FirstRepeatedPairFindsRepeatsAnywhere) {
-  std::vector<std::uint32_t> scratch;
-  std::vector<std::int32_t> seen;
-  EXPECT_EQ(first_repeated_pair({{0, 1}, {0, 2}, {1, 2}}, 3, scratch, seen), -1);
-  EXPECT_EQ(first_repeated_pair({{1, 2}, {0, 1}, {0, 2}, {1, 2}}, 3, scratch, seen), 3);
-  EXPECT_EQ(first_repeated_pair({{3, 4}, {0, 1}, {3, 4}}, 5, scratch, seen), 2);
+  std::vector<std::uint32_t> table;
+  EXPECT_EQ(first_repeated_pair({{0, 1}, {0, 2}, {1, 2}}, 3, table), -1);
+  EXPECT_EQ(first_repeated_pair({{1, 2}, {0, 1}, {0, 2}, {1, 2}}, 3, table), 3);
+  EXPECT_EQ(first_repeated_pair({{3, 4}, {0, 1}, {3, 4}}, 5, table), 2);
+  // After a larger call the table holds its leftovers: a smaller one must still see only its own pairs.
+  EXPECT_EQ(first_repeated_pair({{0, 1}, {2, 3}, {4, 5}, {6, 7}, {1, 2}, {0, 7}}, 8, table), -1);
+  EXPECT_EQ(first_repeated_pair({{1, 2}, {0, 1}, {0, 1}, {1, 2}}, 3, table), 2);  // the first pair given before
+  EXPECT_EQ(first_repeated_pair({{0, 2}, {1, 2}}, 3, table), -1);
+  // Thousands of pairs sharing elements, one repeat far from the pair it repeats.
+  PairList many;
+  for (std::int32_t i = 0; i < 60; ++i)
+    for (std::int32_t j = i + 1; j < 60; ++j) many.push_back({i, j});
+  // One key per slot (n <= 65535, i * n + j), and two (i, j) past it.
+  for (const std::int64_t n : {std::int64_t{60}, std::int64_t{65535}, std::int64_t{65536}, std::int64_t{1} << 30})
+    EXPECT_EQ(first_repeated_pair(many, n, table), -1) << n;
+  many.push_back({1, 7});
+  many.push_back({2, 3});
+  for (const std::int64_t n : {std::int64_t{60}, std::int64_t{65535}, std::int64_t{65536}, std::int64_t{1} << 30})
+    EXPECT_EQ(first_repeated_pair(many, n, table), static_cast<std::int64_t>(many.size()) - 2) << n;
+  // Keys at the top of the narrow range: (65533, 65534) is the largest pair of 65535 elements.
+  EXPECT_EQ(first_repeated_pair({{65533, 65534}, {0, 65534}, {65533, 65534}}, 65535, table), 2);
+  EXPECT_EQ(first_repeated_pair({{65533, 65534}, {65532, 65534}, {0, 1}}, 65535, table), -1);
+  EXPECT_EQ(first_repeated_pair_sorted(many), static_cast<std::int64_t>(many.size()) - 2);
+  many.pop_back();
+  many.pop_back();
+  EXPECT_EQ(first_repeated_pair_sorted(many), -1);
+  EXPECT_EQ(first_repeated_pair_sorted({{1, 2}, {0, 1}, {0, 1}, {1, 2}}), 2);
+}
+
+TEST(PluginDetector, RefusesARepeatedPairOnEveryCall) {
+  g_body = [](void**, const nbscope_frame*, const nbscope_output* o, const nbscope_trace*) {
+    return o->add_pair(o->ctx, 3, 8) + o->add_pair(o->ctx, 0, 1) + o->add_pair(o->ctx, 8, 3);
+  };
+  PluginDetector detector(test_symbols(), test_info(kAll));
+  PairList pairs;
+  for (int call = 0; call < 3; ++call) EXPECT_THROW(detector.detect(nine(), DetectOptions{}, pairs), PluginError);
 }
 
 // The walk check: a plugin that traces its lists gets the table on a checked, untraced frame and
