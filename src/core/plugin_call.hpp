@@ -38,6 +38,7 @@ struct PluginCall {
   bool limit_hit = false;
   std::string failure;            // fail()'s message
   std::string breach;             // the first broken rule, in words ("" while none)
+  std::size_t pairs_at_breach = 0;  // pairs given before it (checked after the call: one may break first)
   std::exception_ptr exception;   // an exception of nbscope's own (out of memory, a trace consumer's)
   TraceLog* log = nullptr;        // null when untraced
   std::int32_t lines = 0;         // the plugin's pseudocode lines in this dimension
@@ -65,6 +66,7 @@ struct PluginCall {
   // Keeps `what` as the breach unless one is already kept (never throws).
   void breach_with(const std::string& what) noexcept {
     if (stopped()) return;
+    pairs_at_breach = pairs != nullptr ? pairs->size() : 0;
     try {
       breach = what;
     } catch (...) {

@@ -57,25 +57,17 @@ void check_pseudocode(const char* const* lines, std::int32_t count, const char* 
 // The output table's callbacks. C linkage: the plugin calls them through C function pointers. They
 // never throw: a breach is kept in the PluginCall and the answer is "stop".
 extern "C" {
+// Kept as given: range, i == j and the order i < j are checked after the call, in one pass over the
+// pairs (check_pairs), so the call per pair a plugin pays is a store.
 static int nbscope_plugin_add_pair(void* ctx, std::int32_t i, std::int32_t j) {
   auto& call = *static_cast<PluginCall*>(ctx);
   if (call.stopped()) return 1;
-  if (i < 0 || i >= call.n || j < 0 || j >= call.n) {
-    const std::int32_t bad = (i < 0 || i >= call.n) ? i : j;
-    call.breach_with("add_pair(" + std::to_string(i) + ", " + std::to_string(j) + "): element " + std::to_string(bad) +
-                     " is out of range [0, " + std::to_string(call.n) + ")");
-    return 1;
-  }
-  if (i == j) {
-    call.breach_with("add_pair(" + std::to_string(i) + ", " + std::to_string(j) + "): an element paired with itself");
-    return 1;
-  }
   if (call.pairs->size() >= call.max_pairs) {
     call.limit_hit = true;
     return 1;
   }
   try {
-    call.pairs->push_back(i < j ? Pair{i, j} : Pair{j, i});
+    call.pairs->push_back(Pair{i, j});
   } catch (...) {
     call.keep_exception();
     return 1;
@@ -184,6 +176,7 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
       std::min<std::size_t>(options.max_pairs, static_cast<std::size_t>(std::numeric_limits<std::int64_t>::max())));
 
   out_pairs.clear();
+  grid_elements_ = elements.size();
   PluginCall call;
   call.pairs = &out_pairs;
   call.n = elements.size();
@@ -210,6 +203,7 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   if (symbols_.guard) symbols_.guard->leave();
 
   if (call.exception) std::rethrow_exception(call.exception);
+  check_pairs(out_pairs, call.breach.empty() ? out_pairs.size() : call.pairs_at_breach, options.frame);
   if (!call.breach.empty()) throw PluginError(where(options.frame) + call.breach);
   if (call.limit_hit) throw_pair_limit(options.max_pairs);  // told to stop: not the plugin's fault
   if (status != 0)
@@ -230,6 +224,33 @@ bool PluginDetector::wants_walk_check(const Elements& elements, const DetectOpti
 }
 
 const WalkCheck* PluginDetector::walk_check() const { return walks_checked_ ? &walks_ : nullptr; }
+
+void PluginDetector::check_pairs(PairList& pairs, std::size_t given_before_breach, std::int64_t frame) const {
+  // One branch-free pass over the pairs given before any other breach (every element in [0, n) and
+  // i != j), then each as i < j; the words of the first bad pair are built only when there is one.
+  const auto n = static_cast<std::uint32_t>(grid_elements_);
+  bool fine = true;
+  for (std::size_t k = 0; k < given_before_breach; ++k) {
+    const Pair p = pairs[k];
+    fine &= (static_cast<std::uint32_t>(p.i) < n) & (static_cast<std::uint32_t>(p.j) < n) & (p.i != p.j);
+  }
+  if (!fine) {
+    for (std::size_t k = 0; k < given_before_breach; ++k) {
+      const Pair p = pairs[k];
+      const std::string call = "add_pair(" + std::to_string(p.i) + ", " + std::to_string(p.j) + "): ";
+      if (static_cast<std::uint32_t>(p.i) >= n || static_cast<std::uint32_t>(p.j) >= n) {
+        const std::int32_t bad = static_cast<std::uint32_t>(p.i) >= n ? p.i : p.j;
+        throw PluginError(where(frame) + call + "element " + std::to_string(bad) + " is out of range [0, " +
+                          std::to_string(n) + ")");
+      }
+      if (p.i == p.j) throw PluginError(where(frame) + call + "an element paired with itself");
+    }
+  }
+  for (Pair& p : pairs) {
+    const std::int32_t lo = std::min(p.i, p.j), hi = std::max(p.i, p.j);
+    p = Pair{lo, hi};
+  }
+}
 
 std::string PluginDetector::where(std::int64_t frame) const {
   return symbols_.library + " (" + name_ + "): frame " + std::to_string(frame) + ": ";
