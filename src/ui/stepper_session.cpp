@@ -89,7 +89,8 @@ void StepperSession::apply_target(const SimView& sim) {
   switch (at.finding) {
     case PairFinding::Tested:
       target_status_ = op + "k=" + id(at.scanner) + " tested against " + id(at.other) + ": " + (at.contact ? "contact" : "no contact") + ". ";
-      if (stray) target_status_ += id(at.other) + " lies in " + cell_text(cells.i) + ", not in " + cell_text(at.cell) + ", whose list k's mask walked here: the list holds an element of another cell.";
+      if (stray && at.cell == cells.i) target_status_ += "That list is " + id(at.other) + "'s own cell's: this trace walks it rightly.";
+      else if (stray) target_status_ += id(at.other) + " lies in " + cell_text(cells.i) + ", not in " + cell_text(at.cell) + ", whose list k's mask walked here: the list holds an element of another cell.";
       else if (missing && at.contact) target_status_ += "The detector found this contact here; it was lost after detection (an output fault), not by the lists.";
       else if (missing) target_status_ += "The detector's test answered apart where the reference (or Box2D) says contact: the contact test is wrong.";
       else if (std::string(t.what).find("twice") != std::string::npos) target_status_ += "This is the first of the pair's tests; the detector tested and reported it again later (a list that holds it twice, or stale).";
