@@ -176,7 +176,6 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
       std::min<std::size_t>(options.max_pairs, static_cast<std::size_t>(std::numeric_limits<std::int64_t>::max())));
 
   out_pairs.clear();
-  grid_elements_ = elements.size();
   PluginCall call;
   call.pairs = &out_pairs;
   call.n = elements.size();
@@ -203,7 +202,7 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   if (symbols_.guard) symbols_.guard->leave();
 
   if (call.exception) std::rethrow_exception(call.exception);
-  check_pairs(out_pairs, call.breach.empty() ? out_pairs.size() : call.pairs_at_breach, options.frame);
+  check_pairs(out_pairs, call.breach.empty() ? out_pairs.size() : call.pairs_at_breach, elements.size(), options.frame);
   if (!call.breach.empty()) throw PluginError(where(options.frame) + call.breach);
   if (call.limit_hit) throw_pair_limit(options.max_pairs);  // told to stop: not the plugin's fault
   if (status != 0)
@@ -225,10 +224,11 @@ bool PluginDetector::wants_walk_check(const Elements& elements, const DetectOpti
 
 const WalkCheck* PluginDetector::walk_check() const { return walks_checked_ ? &walks_ : nullptr; }
 
-void PluginDetector::check_pairs(PairList& pairs, std::size_t given_before_breach, std::int64_t frame) const {
+void PluginDetector::check_pairs(PairList& pairs, std::size_t given_before_breach, std::int64_t elements,
+                                 std::int64_t frame) const {
   // One branch-free pass over the pairs given before any other breach (every element in [0, n) and
   // i != j), then each as i < j; the words of the first bad pair are built only when there is one.
-  const auto n = static_cast<std::uint32_t>(grid_elements_);
+  const auto n = static_cast<std::uint32_t>(elements);
   bool fine = true;
   for (std::size_t k = 0; k < given_before_breach; ++k) {
     const Pair p = pairs[k];

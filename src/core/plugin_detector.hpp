@@ -101,8 +101,8 @@ class PluginDetector final : public Detector {
   [[nodiscard]] std::string where(std::int64_t frame) const;
   void check_cells(const Elements& elements, std::int64_t frame);
   // Throws the breach of the first of `pairs`' first `given_before_breach` that names an element out
-  // of range or pairs one with itself; then puts every pair as i < j.
-  void check_pairs(PairList& pairs, std::size_t given_before_breach, std::int64_t frame) const;
+  // of [0, elements) or pairs one with itself; then puts every pair as i < j.
+  void check_pairs(PairList& pairs, std::size_t given_before_breach, std::int64_t elements, std::int64_t frame) const;
   // True when this detection's walks are checked: traced or asked, 2D, a plugin that traces its lists.
   [[nodiscard]] bool wants_walk_check(const Elements& elements, const DetectOptions& options, bool traced) const;
 
@@ -112,7 +112,6 @@ class PluginDetector final : public Detector {
   std::vector<const char*> pseudocode_[2];  // 2D, 3D
   void* state_ = nullptr;
   Grid grid_;
-  std::int64_t grid_elements_ = 0;       // N of the last detection
   std::vector<std::int32_t> raw_cells_;  // what the plugin wrote: n * dim, prefilled -1
   std::vector<CellIndex> cells_;
   bool has_cells_ = false;               // the last detection was 2D with NBSCOPE_CAP_CELLS
