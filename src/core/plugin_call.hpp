@@ -34,8 +34,8 @@ struct PluginCall {
 
   PairList* pairs = nullptr;
   std::int64_t n = 0;
-  std::size_t max_pairs = 0;
   bool limit_hit = false;
+  std::size_t room = 0;           // pairs add_pair still takes: max_pairs - given, 0 once stopped
   std::string failure;            // fail()'s message
   std::string breach;             // the first broken rule, in words ("" while none)
   std::size_t pairs_at_breach = 0;  // pairs given before it (checked after the call: one may break first)
@@ -66,6 +66,7 @@ struct PluginCall {
   // Keeps `what` as the breach unless one is already kept (never throws).
   void breach_with(const std::string& what) noexcept {
     if (stopped()) return;
+    room = 0;
     pairs_at_breach = pairs != nullptr ? pairs->size() : 0;
     try {
       breach = what;
@@ -75,6 +76,7 @@ struct PluginCall {
   }
   // Keeps the exception being handled (inside a catch block), unless one is already kept.
   void keep_exception() noexcept {
+    room = 0;
     if (!exception) exception = std::current_exception();
   }
 };

@@ -61,11 +61,11 @@ extern "C" {
 // pairs (check_pairs), so the call per pair a plugin pays is a store.
 static int nbscope_plugin_add_pair(void* ctx, std::int32_t i, std::int32_t j) {
   auto& call = *static_cast<PluginCall*>(ctx);
-  if (call.stopped()) return 1;
-  if (call.pairs->size() >= call.max_pairs) {
-    call.limit_hit = true;
+  if (call.room == 0) {  // stopped, or at the pair limit: one test for both
+    if (!call.stopped()) call.limit_hit = true;
     return 1;
   }
+  --call.room;
   try {
     call.pairs->push_back(Pair{i, j});
   } catch (...) {
@@ -179,7 +179,7 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   PluginCall call;
   call.pairs = &out_pairs;
   call.n = elements.size();
-  call.max_pairs = options.max_pairs;
+  call.room = options.max_pairs;
   call.log = trace;
   call.lines = static_cast<std::int32_t>(pseudocode(elements.dim).size());
   const nbscope_output output{&call, nbscope_plugin_add_pair, cells_wanted ? raw_cells_.data() : nullptr,
@@ -226,29 +226,27 @@ const WalkCheck* PluginDetector::walk_check() const { return walks_checked_ ? &w
 
 void PluginDetector::check_pairs(PairList& pairs, std::size_t given_before_breach, std::int64_t elements,
                                  std::int64_t frame) const {
-  // One branch-free pass over the pairs given before any other breach (every element in [0, n) and
-  // i != j), then each as i < j; the words of the first bad pair are built only when there is one.
+  // One branch-free pass: every element in [0, n) and i != j, each such pair put as i < j (a bad one
+  // stays as given, for its message). Only when one failed are the pairs given before any other
+  // breach searched for the first, to name it.
   const auto n = static_cast<std::uint32_t>(elements);
   bool fine = true;
+  for (Pair& p : pairs) {
+    const bool ok = (static_cast<std::uint32_t>(p.i) < n) & (static_cast<std::uint32_t>(p.j) < n) & (p.i != p.j);
+    fine &= ok;
+    const bool swap = ok & (p.i > p.j);
+    p = swap ? Pair{p.j, p.i} : p;
+  }
+  if (fine) return;
   for (std::size_t k = 0; k < given_before_breach; ++k) {
     const Pair p = pairs[k];
-    fine &= (static_cast<std::uint32_t>(p.i) < n) & (static_cast<std::uint32_t>(p.j) < n) & (p.i != p.j);
-  }
-  if (!fine) {
-    for (std::size_t k = 0; k < given_before_breach; ++k) {
-      const Pair p = pairs[k];
-      const std::string call = "add_pair(" + std::to_string(p.i) + ", " + std::to_string(p.j) + "): ";
-      if (static_cast<std::uint32_t>(p.i) >= n || static_cast<std::uint32_t>(p.j) >= n) {
-        const std::int32_t bad = static_cast<std::uint32_t>(p.i) >= n ? p.i : p.j;
-        throw PluginError(where(frame) + call + "element " + std::to_string(bad) + " is out of range [0, " +
-                          std::to_string(n) + ")");
-      }
-      if (p.i == p.j) throw PluginError(where(frame) + call + "an element paired with itself");
+    const std::string call = "add_pair(" + std::to_string(p.i) + ", " + std::to_string(p.j) + "): ";
+    if (static_cast<std::uint32_t>(p.i) >= n || static_cast<std::uint32_t>(p.j) >= n) {
+      const std::int32_t bad = static_cast<std::uint32_t>(p.i) >= n ? p.i : p.j;
+      throw PluginError(where(frame) + call + "element " + std::to_string(bad) + " is out of range [0, " +
+                        std::to_string(n) + ")");
     }
-  }
-  for (Pair& p : pairs) {
-    const std::int32_t lo = std::min(p.i, p.j), hi = std::max(p.i, p.j);
-    p = Pair{lo, hi};
+    if (p.i == p.j) throw PluginError(where(frame) + call + "an element paired with itself");
   }
 }
 
