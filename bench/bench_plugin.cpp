@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/nbs.hpp"
+#include "core/pair_scan.hpp"
 #include "io/plugin_library.hpp"
 #include "support/generators.hpp"
 
@@ -57,6 +58,24 @@ void bm_plugin_vs_book(benchmark::State& state, bool plugin, Layout layout, std:
   state.counters["pairs"] = static_cast<double>(pairs.size());
 }
 
+// The checks of a plugin's pairs after its call (scan_pairs: range, order, repeats) on the pairs the
+// book loops find, as the plugin gives them.
+void bm_scan_pairs(benchmark::State& state, Layout layout, std::int64_t n) {
+  const Elements& e = plugin_layout(layout, n);
+  NbsDetector book;
+  PairList given;
+  book.detect_book(e, DetectOptions{}, given);
+  PairList pairs;
+  PairScanScratch scratch;
+  for (auto _ : state) {
+    pairs = given;
+    const PairScan scan = scan_pairs(pairs, n, scratch);
+    benchmark::DoNotOptimize(scan);
+  }
+  state.counters["ns_per_pair"] =
+      benchmark::Counter(static_cast<double>(given.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 [[maybe_unused]] const bool registered = [] {
   for (const bool plugin : {false, true})
     for (const Layout layout : {Layout::Dense, Layout::Clustered})
@@ -64,6 +83,11 @@ void bm_plugin_vs_book(benchmark::State& state, bool plugin, Layout layout, std:
         const std::string name = std::string("BM_PluginVsBook/") + (plugin ? "plugin/" : "book/") + testdata::layout_name(layout) + "/" + std::to_string(n);
         benchmark::RegisterBenchmark(name.c_str(), bm_plugin_vs_book, plugin, layout, n)->Unit(benchmark::kMicrosecond);
       }
+  for (const Layout layout : {Layout::Dense, Layout::Clustered})
+    for (const std::int64_t n : {1000, 100000}) {
+      const std::string name = std::string("BM_ScanPairs/") + testdata::layout_name(layout) + "/" + std::to_string(n);
+      benchmark::RegisterBenchmark(name.c_str(), bm_scan_pairs, layout, n)->Unit(benchmark::kMicrosecond);
+    }
   return true;
 }();
 

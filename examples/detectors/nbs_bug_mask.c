@@ -91,8 +91,8 @@ static NBS_INLINE int detect_frame(void **state, const nbscope_frame *f, const n
         if (test_list(f, out, t, X, k, B0[ix - 1])) goto full;
       }
       if (below) {
-        /* BUG: the mask stops at (ix, iy-1); the book's goes on to (ix+1, iy-1) */
-        for (jx = ix > 0 ? ix - 1 : 0; jx <= ix && jx < nx; ++jx) {
+        const int32_t last = ix; /* BUG: the mask stops at (ix, iy-1); the book's goes on to (ix+1, iy-1) */
+        for (jx = ix > 0 ? ix - 1 : 0; jx <= last; ++jx) {
           nbs_visit(t, k, jx, iy - 1);
           if (test_list(f, out, t, X, k, B1[jx])) goto full;
         }

@@ -99,7 +99,8 @@ static NBS_INLINE int detect_frame(void **state, const nbscope_frame *f, const n
         if (test_list(f, out, t, X, k, B0[ix - 1])) goto full;
       }
       if (below) {
-        for (jx = ix > 0 ? ix - 1 : 0; jx <= ix + 1 && jx < nx; ++jx) {
+        const int32_t last = ix + 1 < nx ? ix + 1 : nx - 1; /* the bound once, as the book loops take it */
+        for (jx = ix > 0 ? ix - 1 : 0; jx <= last; ++jx) {
           nbs_visit(t, k, jx, iy - 1);
           if (test_list(f, out, t, X, k, B1[jx])) goto full;
         }

@@ -32,10 +32,15 @@ struct PluginCall {
     CellIndex visited;                                   // and the cell it visited
   };
 
+  // add_pair writes at `next` into `pairs`, sized to its capacity for the call (then cut to given()).
+  // One test per pair: at `stop` (the end of the buffer, the pair limit, or `next` once stopped) a
+  // call goes the slow way, which grows the buffer or says stop.
   PairList* pairs = nullptr;
+  Pair* next = nullptr;
+  Pair* stop = nullptr;
+  std::size_t max_pairs = 0;
   std::int64_t n = 0;
   bool limit_hit = false;
-  std::size_t room = 0;           // pairs add_pair still takes: max_pairs - given, 0 once stopped
   std::string failure;            // fail()'s message
   std::string breach;             // the first broken rule, in words ("" while none)
   std::size_t pairs_at_breach = 0;  // pairs given before it (checked after the call: one may break first)
@@ -61,13 +66,15 @@ struct PluginCall {
     return (*walks.grid_cells)[at];
   }
 
+  // The pairs given so far.
+  [[nodiscard]] std::size_t given() const { return pairs != nullptr ? static_cast<std::size_t>(next - pairs->data()) : 0; }
   // True once a breach or an exception ended the call's useful work.
   [[nodiscard]] bool stopped() const { return !breach.empty() || exception; }
   // Keeps `what` as the breach unless one is already kept (never throws).
   void breach_with(const std::string& what) noexcept {
     if (stopped()) return;
-    room = 0;
-    pairs_at_breach = pairs != nullptr ? pairs->size() : 0;
+    stop = next;
+    pairs_at_breach = given();
     try {
       breach = what;
     } catch (...) {
@@ -76,7 +83,7 @@ struct PluginCall {
   }
   // Keeps the exception being handled (inside a catch block), unless one is already kept.
   void keep_exception() noexcept {
-    room = 0;
+    stop = next;
     if (!exception) exception = std::current_exception();
   }
 };

@@ -3,11 +3,8 @@
 #include "core/plugin_detector.hpp"
 
 #include <algorithm>
-#include <bit>
-#include <cstring>
 #include <limits>
 #include <new>
-#include <type_traits>
 
 #include "core/cells.hpp"
 #include "core/plugin_call.hpp"
@@ -57,21 +54,34 @@ void check_pseudocode(const char* const* lines, std::int32_t count, const char* 
 // The output table's callbacks. C linkage: the plugin calls them through C function pointers. They
 // never throw: a breach is kept in the PluginCall and the answer is "stop".
 extern "C" {
-// Kept as given: range, i == j and the order i < j are checked after the call, in one pass over the
-// pairs (check_pairs), so the call per pair a plugin pays is a store.
-static int nbscope_plugin_add_pair(void* ctx, std::int32_t i, std::int32_t j) {
-  auto& call = *static_cast<PluginCall*>(ctx);
-  if (call.room == 0) {  // stopped, or at the pair limit: one test for both
-    if (!call.stopped()) call.limit_hit = true;
+// Past the room add_pair had: stopped, at the pair limit, or a full buffer (grown here). Out of line,
+// so that add_pair itself stays a leaf that saves no register.
+[[gnu::noinline]] static int nbscope_plugin_add_pair_slow(PluginCall& call, std::int32_t i, std::int32_t j) {
+  if (call.stopped()) return 1;
+  const std::size_t given = call.given();
+  if (given >= call.max_pairs) {
+    call.limit_hit = true;
     return 1;
   }
-  --call.room;
   try {
-    call.pairs->push_back(Pair{i, j});
+    call.pairs->resize(std::max<std::size_t>(2 * call.pairs->size(), 1024));
   } catch (...) {
     call.keep_exception();
     return 1;
   }
+  call.next = call.pairs->data() + given;
+  call.stop = call.pairs->data() + std::min(call.pairs->size(), call.max_pairs);
+  *call.next++ = Pair{i, j};
+  return 0;
+}
+
+// Kept as given: range, i == j and the order i < j are checked after the call, in one pass over the
+// pairs (scan_pairs), so the call per pair a plugin pays is a compare and a store.
+static int nbscope_plugin_add_pair(void* ctx, std::int32_t i, std::int32_t j) {
+  auto& call = *static_cast<PluginCall*>(ctx);
+  if (call.next == call.stop) [[unlikely]]
+    return nbscope_plugin_add_pair_slow(call, i, j);
+  *call.next++ = Pair{i, j};
   return 0;
 }
 
@@ -175,11 +185,13 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   frame.max_pairs = static_cast<std::int64_t>(
       std::min<std::size_t>(options.max_pairs, static_cast<std::size_t>(std::numeric_limits<std::int64_t>::max())));
 
-  out_pairs.clear();
+  out_pairs.resize(std::max<std::size_t>(out_pairs.capacity(), 1024));  // written through call.next
   PluginCall call;
   call.pairs = &out_pairs;
+  call.next = out_pairs.data();
+  call.max_pairs = options.max_pairs;
+  call.stop = out_pairs.data() + std::min(out_pairs.size(), options.max_pairs);
   call.n = elements.size();
-  call.room = options.max_pairs;
   call.log = trace;
   call.lines = static_cast<std::int32_t>(pseudocode(elements.dim).size());
   const nbscope_output output{&call, nbscope_plugin_add_pair, cells_wanted ? raw_cells_.data() : nullptr,
@@ -200,17 +212,22 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   if (symbols_.guard) symbols_.guard->enter(options.frame);
   const int status = symbols_.detect(&state_, &frame, &output, trace != nullptr || walk ? &table : nullptr);
   if (symbols_.guard) symbols_.guard->leave();
+  out_pairs.resize(call.given());
 
   if (call.exception) std::rethrow_exception(call.exception);
-  check_pairs(out_pairs, call.breach.empty() ? out_pairs.size() : call.pairs_at_breach, elements.size(), options.frame);
+  // Every pair checked and put as i < j, and the first repeat found, in one pass; the breaches are
+  // then told in the order they happened: a bad pair given before the first broken rule, that rule, the
+  // pair limit, a failure, a repeat.
+  const PairScan scan = scan_pairs(out_pairs, elements.size(), pair_scan_);
+  if (!scan.all_valid)
+    throw_bad_pair(out_pairs, call.breach.empty() ? out_pairs.size() : call.pairs_at_breach, elements.size(), options.frame);
   if (!call.breach.empty()) throw PluginError(where(options.frame) + call.breach);
   if (call.limit_hit) throw_pair_limit(options.max_pairs);  // told to stop: not the plugin's fault
   if (status != 0)
     throw PluginError(where(options.frame) + "nbscope_detect returned " + std::to_string(status) +
                       (call.failure.empty() ? " without a reason (fail() not called)" : ": " + printable_line(call.failure)));
-  const std::int64_t repeat = first_repeated_pair(out_pairs, elements.size(), pair_table_);
-  if (repeat >= 0) {
-    const Pair p = out_pairs[static_cast<std::size_t>(repeat)];
+  if (scan.first_repeat >= 0) {
+    const Pair p = out_pairs[static_cast<std::size_t>(scan.first_repeat)];
     throw PluginError(where(options.frame) + "add_pair: pair (" + std::to_string(p.i) + ", " + std::to_string(p.j) + ") given twice");
   }
   if (cells_wanted && elements.dim == 2) check_cells(elements, options.frame);
@@ -224,20 +241,9 @@ bool PluginDetector::wants_walk_check(const Elements& elements, const DetectOpti
 
 const WalkCheck* PluginDetector::walk_check() const { return walks_checked_ ? &walks_ : nullptr; }
 
-void PluginDetector::check_pairs(PairList& pairs, std::size_t given_before_breach, std::int64_t elements,
-                                 std::int64_t frame) const {
-  // One branch-free pass: every element in [0, n) and i != j, each such pair put as i < j (a bad one
-  // stays as given, for its message). Only when one failed are the pairs given before any other
-  // breach searched for the first, to name it.
+void PluginDetector::throw_bad_pair(const PairList& pairs, std::size_t given_before_breach, std::int64_t elements,
+                                    std::int64_t frame) const {
   const auto n = static_cast<std::uint32_t>(elements);
-  bool fine = true;
-  for (Pair& p : pairs) {
-    const bool ok = (static_cast<std::uint32_t>(p.i) < n) & (static_cast<std::uint32_t>(p.j) < n) & (p.i != p.j);
-    fine &= ok;
-    const bool swap = ok & (p.i > p.j);
-    p = swap ? Pair{p.j, p.i} : p;
-  }
-  if (fine) return;
   for (std::size_t k = 0; k < given_before_breach; ++k) {
     const Pair p = pairs[k];
     const std::string call = "add_pair(" + std::to_string(p.i) + ", " + std::to_string(p.j) + "): ";
@@ -256,61 +262,32 @@ std::string PluginDetector::where(std::int64_t frame) const {
 
 void PluginDetector::check_cells(const Elements& elements, std::int64_t frame) {
   const auto n = static_cast<std::size_t>(elements.size());
-  // One branch-free pass first (-1, negative and too large alike fail the unsigned compare); the
-  // words of the first bad entry are found only when there is one.
-  const auto nx = static_cast<std::uint64_t>(grid_.n[0]);
-  const auto ny = static_cast<std::uint64_t>(grid_.n[1]);
+  // Checks and copies ({ix, iy} as written) without a branch on the data: -1, negative and too large
+  // alike fail the unsigned compare. Four elements a step, each lane with its own flag, so the
+  // compiler can do a step in a few vector instructions; the words of the first bad entry are found
+  // only when there is one.
+  const auto nx = static_cast<std::uint32_t>(grid_.n[0]);
+  const auto ny = static_cast<std::uint32_t>(grid_.n[1]);
+  const std::uint32_t bound[8] = {nx, ny, nx, ny, nx, ny, nx, ny};
   const std::int32_t* raw = raw_cells_.data();
-  bool inside = true;
-  for (std::size_t k = 0; k < n; ++k)
-    inside &= (static_cast<std::uint32_t>(raw[2 * k]) < nx) & (static_cast<std::uint32_t>(raw[2 * k + 1]) < ny);
-  if (!inside) throw_bad_cell(raw_cells_, grid_, where(frame));
-  static_assert(sizeof(CellIndex) == 2 * sizeof(std::int32_t) && std::is_trivially_copyable_v<CellIndex>);
   cells_.resize(n);
-  if (n > 0) std::memcpy(static_cast<void*>(cells_.data()), raw, n * sizeof(CellIndex));  // {ix, iy} as written
+  CellIndex* const cells = cells_.data();
+  std::uint32_t outside[8] = {};
+  std::size_t k = 0;
+  for (; k + 4 <= n; k += 4) {
+    const std::int32_t* const step = raw + 2 * k;
+    for (int lane = 0; lane < 8; ++lane) outside[lane] |= static_cast<std::uint32_t>(step[lane]) >= bound[lane] ? 1u : 0u;
+    for (int e = 0; e < 4; ++e) cells[k + e] = CellIndex{step[2 * e], step[2 * e + 1]};
+  }
+  for (; k < n; ++k) {
+    outside[0] |= static_cast<std::uint32_t>(raw[2 * k]) >= nx ? 1u : 0u;
+    outside[1] |= static_cast<std::uint32_t>(raw[2 * k + 1]) >= ny ? 1u : 0u;
+    cells[k] = CellIndex{raw[2 * k], raw[2 * k + 1]};
+  }
+  std::uint32_t any = 0;
+  for (const std::uint32_t lane : outside) any |= lane;
+  if (any != 0) throw_bad_cell(raw_cells_, grid_, where(frame));
   has_cells_ = true;
-}
-
-std::int64_t first_repeated_pair_sorted(const PairList& pairs) {
-  std::vector<std::pair<Pair, std::size_t>> sorted(pairs.size());
-  for (std::size_t k = 0; k < pairs.size(); ++k) sorted[k] = {pairs[k], k};
-  std::sort(sorted.begin(), sorted.end());
-  std::int64_t first = -1;  // the smallest position among the repeats, as the hash table finds it
-  for (std::size_t k = 1; k < sorted.size(); ++k) {
-    const auto position = static_cast<std::int64_t>(sorted[k].second);
-    if (sorted[k].first == sorted[k - 1].first && (first < 0 || position < first)) first = position;
-  }
-  return first;
-}
-
-std::int64_t first_repeated_pair(const PairList& pairs, std::int64_t n, std::vector<std::uint32_t>& table) {
-  if (pairs.size() < 2) return -1;
-  if (pairs.size() > (std::size_t{1} << 28)) return first_repeated_pair_sorted(pairs);  // the table would not fit
-  // Open addressing at most half full, Fibonacci hashing of the key i:j (it spreads pairs that share
-  // i). Up to 65535 elements the key i * n + j fits one entry, else (i, j) takes two; a free slot
-  // holds kEmpty, which no key reaches. Fewer bytes than the frame's own arrays: they stay in cache.
-  constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
-  const bool narrow = n <= 65535;
-  const std::size_t width = narrow ? 1 : 2;
-  std::size_t slots = 16;
-  while (slots < 2 * pairs.size()) slots <<= 1;
-  table.assign(width * slots, kEmpty);
-  const int shift = 64 - std::countr_zero(slots);
-  std::size_t budget = 8 * pairs.size();  // extra probes; a half-full table needs about one per two pairs
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const auto i = static_cast<std::uint32_t>(pairs[k].i);
-    const auto j = static_cast<std::uint32_t>(pairs[k].j);
-    const std::uint32_t first = narrow ? i * static_cast<std::uint32_t>(n) + j : i;  // < n * n <= kEmpty - 1
-    std::size_t slot = static_cast<std::size_t>(((std::uint64_t{i} << 32 | j) * 0x9E3779B97F4A7C15ull) >> shift);
-    while (table[width * slot] != kEmpty) {
-      if (table[width * slot] == first && (narrow || table[2 * slot + 1] == j)) return static_cast<std::int64_t>(k);
-      if (budget-- == 0) return first_repeated_pair_sorted(pairs);  // colliding pairs: keep the time bounded
-      slot = (slot + 1) & (slots - 1);
-    }
-    table[width * slot] = first;
-    if (!narrow) table[2 * slot + 1] = j;
-  }
-  return -1;
 }
 
 }  // namespace nbscope

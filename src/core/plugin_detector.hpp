@@ -23,6 +23,7 @@
 
 #include "core/detector.hpp"
 #include "core/error.hpp"
+#include "core/pair_scan.hpp"
 
 namespace nbscope {
 
@@ -101,8 +102,9 @@ class PluginDetector final : public Detector {
   [[nodiscard]] std::string where(std::int64_t frame) const;
   void check_cells(const Elements& elements, std::int64_t frame);
   // Throws the breach of the first of `pairs`' first `given_before_breach` that names an element out
-  // of [0, elements) or pairs one with itself; then puts every pair as i < j.
-  void check_pairs(PairList& pairs, std::size_t given_before_breach, std::int64_t elements, std::int64_t frame) const;
+  // of [0, elements) or pairs one with itself; returns when none of them does.
+  void throw_bad_pair(const PairList& pairs, std::size_t given_before_breach, std::int64_t elements,
+                      std::int64_t frame) const;
   // True when this detection's walks are checked: traced or asked, 2D, a plugin that traces its lists.
   [[nodiscard]] bool wants_walk_check(const Elements& elements, const DetectOptions& options, bool traced) const;
 
@@ -115,18 +117,10 @@ class PluginDetector final : public Detector {
   std::vector<std::int32_t> raw_cells_;  // what the plugin wrote: n * dim, prefilled -1
   std::vector<CellIndex> cells_;
   bool has_cells_ = false;               // the last detection was 2D with NBSCOPE_CAP_CELLS
-  std::vector<std::uint32_t> pair_table_;  // the repeated-pair check's hash table (kept between frames)
+  PairScanScratch pair_scan_;             // scan_pairs' memory (kept between frames)
   WalkCheck walks_;                      // the last detection's walk check
   bool walks_checked_ = false;
   std::vector<CellIndex> walk_cells_;    // the grid's cell of every element, for the walk check
 };
-
-// The check that no pair is given twice: each pair looked up in, then added to, a hash table of those
-// before it (`table`, reused between calls), expected time O(pairs). Pairs that collide past a probe
-// budget are sorted instead, O(pairs log pairs) whatever they are. Returns the index of the first pair
-// given before, or -1. Pairs must already be in range [0, n) and i < j.
-std::int64_t first_repeated_pair(const PairList& pairs, std::int64_t n, std::vector<std::uint32_t>& table);
-// The same answer by sorting a copy of the pairs (the fallback of first_repeated_pair).
-std::int64_t first_repeated_pair_sorted(const PairList& pairs);
 
 }  // namespace nbscope

@@ -401,36 +401,6 @@ TEST(PluginDetector, RegistryEntryCarriesTheCapabilities) {
   EXPECT_EQ(entry.make()->name(), "inproc");
 }
 
-TEST(PluginDetector, FirstRepeatedPairFindsRepeatsAnywhere) {
-  std::vector<std::uint32_t> table;
-  EXPECT_EQ(first_repeated_pair({{0, 1}, {0, 2}, {1, 2}}, 3, table), -1);
-  EXPECT_EQ(first_repeated_pair({{1, 2}, {0, 1}, {0, 2}, {1, 2}}, 3, table), 3);
-  EXPECT_EQ(first_repeated_pair({{3, 4}, {0, 1}, {3, 4}}, 5, table), 2);
-  // After a larger call the table holds its leftovers: a smaller one must still see only its own pairs.
-  EXPECT_EQ(first_repeated_pair({{0, 1}, {2, 3}, {4, 5}, {6, 7}, {1, 2}, {0, 7}}, 8, table), -1);
-  EXPECT_EQ(first_repeated_pair({{1, 2}, {0, 1}, {0, 1}, {1, 2}}, 3, table), 2);  // the first pair given before
-  EXPECT_EQ(first_repeated_pair({{0, 2}, {1, 2}}, 3, table), -1);
-  // Thousands of pairs sharing elements, one repeat far from the pair it repeats.
-  PairList many;
-  for (std::int32_t i = 0; i < 60; ++i)
-    for (std::int32_t j = i + 1; j < 60; ++j) many.push_back({i, j});
-  // One key per slot (n <= 65535, i * n + j), and two (i, j) past it.
-  for (const std::int64_t n : {std::int64_t{60}, std::int64_t{65535}, std::int64_t{65536}, std::int64_t{1} << 30})
-    EXPECT_EQ(first_repeated_pair(many, n, table), -1) << n;
-  many.push_back({1, 7});
-  many.push_back({2, 3});
-  for (const std::int64_t n : {std::int64_t{60}, std::int64_t{65535}, std::int64_t{65536}, std::int64_t{1} << 30})
-    EXPECT_EQ(first_repeated_pair(many, n, table), static_cast<std::int64_t>(many.size()) - 2) << n;
-  // Keys at the top of the narrow range: (65533, 65534) is the largest pair of 65535 elements.
-  EXPECT_EQ(first_repeated_pair({{65533, 65534}, {0, 65534}, {65533, 65534}}, 65535, table), 2);
-  EXPECT_EQ(first_repeated_pair({{65533, 65534}, {65532, 65534}, {0, 1}}, 65535, table), -1);
-  EXPECT_EQ(first_repeated_pair_sorted(many), static_cast<std::int64_t>(many.size()) - 2);
-  many.pop_back();
-  many.pop_back();
-  EXPECT_EQ(first_repeated_pair_sorted(many), -1);
-  EXPECT_EQ(first_repeated_pair_sorted({{1, 2}, {0, 1}, {0, 1}, {1, 2}}), 2);
-}
-
 TEST(PluginDetector, RefusesARepeatedPairOnEveryCall) {
   g_body = [](void**, const nbscope_frame*, const nbscope_output* o, const nbscope_trace*) {
     return o->add_pair(o->ctx, 3, 8) + o->add_pair(o->ctx, 0, 1) + o->add_pair(o->ctx, 8, 3);
