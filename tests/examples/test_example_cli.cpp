@@ -21,7 +21,9 @@ std::string lib(const std::string& name) { return std::string(NBSCOPE_EXAMPLES_D
 
 // headless --stop-at-violation with the plugin as the algorithm; the first violation of the report.
 json first_violation(const std::string& plugin, const std::string& algorithm, const std::string& on, int& exit_code) {
-  const std::string dir = testcli::scratch_dir("example_cli_" + plugin);
+  // One folder per test and plugin: ctest runs tests side by side, and two of them run nbs_bug_trunc.
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::string dir = testcli::scratch_dir("example_cli_" + test + "_" + plugin);
   const auto r = run("headless --scene '" + scene(on) + "' --frames 120 --detector-lib '" + lib(plugin) + "' --algorithm " + algorithm +
                      " --stop-at-violation --quiet --report '" + dir + "/r.json'");
   exit_code = r.exit_code;
