@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "core/detector.hpp"
+#include "core/elements.hpp"
+#include "core/grid.hpp"
 #include "core/pairs.hpp"
 #include "core/trace.hpp"
 
@@ -26,7 +28,8 @@ struct PluginCall {
   // The walk check (DetectOptions::check_walks): each test against the cell its walk visited.
   struct Walks {
     WalkCheck* out = nullptr;                           // null: not checked
-    const std::vector<CellIndex>* grid_cells = nullptr;  // the grid's cell of every element
+    const Grid* grid = nullptr;                         // the grid's cell of an element, when asked
+    const Elements* elements = nullptr;
     const std::int32_t* own_cells = nullptr;             // the plugin's out->cells (n * 2), or null
     std::int32_t visitor = -1;                           // the element of the last visit_cell
     CellIndex visited;                                   // and the cell it visited
@@ -63,7 +66,8 @@ struct PluginCall {
     const auto at = static_cast<std::size_t>(k);
     if (walks.own_cells != nullptr && walks.own_cells[2 * at] >= 0 && walks.own_cells[2 * at + 1] >= 0)
       return CellIndex{walks.own_cells[2 * at], walks.own_cells[2 * at + 1]};
-    return (*walks.grid_cells)[at];
+    const auto i = static_cast<Eigen::Index>(at);
+    return CellIndex{walks.grid->cell(walks.elements->x[i], 0), walks.grid->cell(walks.elements->y[i], 1)};
   }
 
   // The pairs given so far.

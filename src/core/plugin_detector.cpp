@@ -202,10 +202,10 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   walks_.first.clear();
   walks_.count = 0;
   if (walk) {
-    integerise_cells(elements, grid_, walk_cells_);
     walks_.first.reserve(WalkCheck::kKept);  // check_walk() never allocates
     call.walks.out = &walks_;
-    call.walks.grid_cells = &walk_cells_;
+    call.walks.grid = &grid_;
+    call.walks.elements = &elements;
     call.walks.own_cells = cells_wanted ? raw_cells_.data() : nullptr;
   }
 

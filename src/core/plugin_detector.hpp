@@ -120,7 +120,6 @@ class PluginDetector final : public Detector {
   PairScanScratch pair_scan_;             // scan_pairs' memory (kept between frames)
   WalkCheck walks_;                      // the last detection's walk check
   bool walks_checked_ = false;
-  std::vector<CellIndex> walk_cells_;    // the grid's cell of every element, for the walk check
 };
 
 }  // namespace nbscope
