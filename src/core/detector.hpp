@@ -21,6 +21,7 @@ struct DetectOptions {
   GridOptions grid;                        // cell size / origin overrides (defaults: docs/architecture.md "Cells")
   std::size_t max_pairs = kDefaultMaxPairs;  // past this detection throws Error
   std::int64_t frame = 0;                    // the frame detected, for a plugin's messages (core/plugin_detector.hpp)
+  Touching touching = Touching::inclusive;   // whether a pair at exactly zero gap is a contact (core/pairs.hpp)
   // Check the lists a plugin walks on this untraced detection (the checked frames of a run): a
   // plugin that traces and builds lists gets its trace table, each test checked against the cell
   // the walk visited (Detector::walk_check). Off: untraced means no trace call at all.

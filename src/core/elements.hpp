@@ -24,10 +24,24 @@ struct Bounds {
   double max[3] = {0, 0, 0};
 };
 
+// The box of a periodic frame (a LAMMPS `pp` boundary, or --periodic with --box): on each periodic
+// axis a the space repeats with period hi[a] - lo[a], centres lie in [lo[a], hi[a]) (wrap_into_box,
+// core/pairs.hpp) and contacts are measured by the minimum image. No periodic axis: an open space.
+struct PeriodicBox {
+  bool periodic[3] = {false, false, false};
+  double lo[3] = {0, 0, 0};
+  double hi[3] = {0, 0, 0};
+  // True when at least one axis is periodic.
+  [[nodiscard]] bool any() const { return periodic[0] || periodic[1] || periodic[2]; }
+  // The period of axis a, hi - lo.
+  [[nodiscard]] double length(int a) const { return hi[a] - lo[a]; }
+};
+
 // N bounding circles (dim 2: x, y, r) or spheres (dim 3: x, y, z, r); z is empty in 2D.
 struct Elements {
   int dim = 2;
   Eigen::ArrayXd x, y, z, r;
+  PeriodicBox box;  // the frame's periodic axes (none: open space)
 
   // Number of elements.
   [[nodiscard]] std::int64_t size() const { return x.size(); }

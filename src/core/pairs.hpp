@@ -9,6 +9,10 @@
 
 namespace nbscope {
 
+// Which pairs at exactly zero gap are contacts: `inclusive` (|c_i - c_j| <= r_i + r_j, nbscope's
+// default) or `strict` (<, as LAMMPS and LIGGGHTS test rsq < radsum*radsum). --touching on every command.
+enum class Touching : std::uint8_t { inclusive, strict };
+
 // A contact between elements i < j.
 struct Pair {
   ElementId i = 0;

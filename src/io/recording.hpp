@@ -43,6 +43,11 @@ struct RecordedFrame {
   double time = 0;
   Elements elements;
   PairList pairs;  // the `pairs` block: 0-based, as given (order within a pair, i == j, repeats kept)
+  // The element of each row as its source names it (a dump's atom ids, ascending); empty: the row itself.
+  std::vector<std::int64_t> ids;
+  // Largest error the file's printed digits allow in a pair's gap |c_i - c_j| - (r_i + r_j) (0: exact,
+  // as a .nbsrec's round-trip numbers are): disagreements within it are at the boundary, not violations.
+  double precision = 0;
 };
 
 // A whole recording as read.

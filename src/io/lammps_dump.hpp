@@ -1,0 +1,111 @@
+// nbscope io: frames and contact lists from LAMMPS and LIGGGHTS dumps, text or gzip (docs/dem.md).
+//
+//   dump custom  ITEM: TIMESTEP, [ITEM: TIME,] ITEM: NUMBER OF ATOMS, ITEM: BOX BOUNDS pp pp ff,
+//                ITEM: ATOMS id type x y z radius ... (columns by name; frames one after another)
+//   dump local   ITEM: TIMESTEP, ITEM: NUMBER OF ENTRIES, ITEM: BOX BOUNDS ..., ITEM: ENTRIES c_pgl[1] ...
+//
+// An element *is* its atom id: each frame's rows are its atoms in ascending id order, `ids` says
+// which, and every message names ids, never rows. Numbers are parsed with std::from_chars.
+// Index: options | DumpFrame, DumpContacts | reading | to a Recording.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/elements.hpp"
+#include "io/recording.hpp"
+
+namespace nbscope {
+
+// How `dump custom` columns become elements (the command line's --radius, --type-radius, --2d, ...).
+struct DumpOptions {
+  std::optional<double> radius;                // --radius R: every atom's, when the dump has no radius/diameter column
+  std::map<std::int64_t, double> type_radius;  // --type-radius 1:0.0015,2:0.00225: by the `type` column
+  bool force_2d = false;                       // --2d: drop z (LIGGGHTS's `dimension 2` writes z = 0)
+  std::optional<double> tolerance;             // --tolerance L: the precision band, in place of the printed digits'
+  // --periodic x,y[,z]: these axes periodic whatever BOX BOUNDS says (with the dump's box as the period).
+  std::optional<std::array<bool, 3>> periodic;
+  std::int64_t max_frames = std::numeric_limits<std::int64_t>::max();  // --frames N: the first N frames (by timestep)
+};
+
+// ITEM: BOX BOUNDS as read.
+struct DumpBox {
+  double lo[3] = {0, 0, 0};
+  double hi[3] = {0, 0, 0};
+  std::array<std::string, 3> flags;  // per axis as printed ("pp", "ff", "fm", ...; LIGGGHTS's unit suffix dropped)
+};
+
+// One `dump custom` frame.
+struct DumpFrame {
+  std::int64_t timestep = 0;
+  std::optional<double> time;        // ITEM: TIME, when the dump has it
+  DumpBox box;
+  // Rows in ascending id order; dim 2 without a z column or with --2d; elements.box holds the
+  // periodic axes (`pp`, or DumpOptions::periodic) and their centres are wrapped into [lo, hi).
+  Elements elements;
+  std::vector<std::int64_t> ids;     // row -> atom id, ascending, unique
+  std::vector<std::int32_t> types;   // row -> `type` column (empty without one)
+  // Bound on the error of a pair's gap |c_i - c_j| - (r_i + r_j) from the digits printed in this frame
+  // (half a unit of the last printed digit, the largest over its coordinates and radii, scaled by the
+  // box for xs ys zs), or DumpOptions::tolerance. 0 only when every number is exact.
+  double precision = 0;
+  std::string where;                 // "<path>:<line>" of its ITEM: TIMESTEP, for messages
+};
+
+// Which two columns of a `dump local` file hold a contact's ids.
+struct ContactColumns {
+  std::optional<std::array<int, 2>> numbers;          // --contact-ids 7,8: 1-based column numbers
+  std::optional<std::array<std::string, 2>> names;    // --contact-ids c_pgl[7],c_pgl[8]: ENTRIES names
+  // Neither: `id1 id2` (or `i j`, `atom1 atom2`) by name, else LIGGGHTS's compute pair/gran/local order
+  // `pos id ...` (columns 7, 8) when the file's values fit it; else an Error asking for --contact-ids.
+};
+
+// One `dump local` frame: the contacts of one timestep as pairs of atom ids, in file order.
+struct DumpContacts {
+  std::int64_t timestep = 0;
+  std::vector<std::array<std::int64_t, 2>> ids;
+  std::vector<std::int64_t> lines;   // the file line of each pair, for messages
+  std::string path;                  // the file it came from
+  std::string where;                 // "<path>:<line>" of its ITEM: TIMESTEP
+};
+
+// The files `spec` names: a path, or a glob (`post/atoms.*.dump`, quoted on the command line).
+// Error "<flag>: '<spec>': no file matches" for a glob matching nothing, or a path that does not exist.
+std::vector<std::string> expand_dump_spec(const std::string& flag, const std::string& spec);
+
+// Every `dump custom` frame of `paths` (text, or gzip: read through zlib either way), ordered by
+// timestep across the files (not by name), at most options.max_frames. Throws Error("<path>:<line>:
+// <what>") on: a missing ITEM, an ATOMS line without an `id` column or without x y [z] / xs ys [zs] /
+// xu yu [zu], no radius (no radius/diameter column, --radius or --type-radius for that type), a
+// triclinic box ("xy xz yz": refused by name), a frame with fewer rows than NUMBER OF ATOMS or a row
+// with another column count, a non-number, NaN/Inf, r <= 0, a repeated id (naming it and both lines),
+// timesteps out of order within one file, a timestep in two files, more than kMaxElements atoms.
+std::vector<DumpFrame> read_dump_frames(const std::vector<std::string>& paths, const DumpOptions& options);
+// The same from memory (text); `where` names it in messages.
+std::vector<DumpFrame> parse_dump_frames(const std::string& text, const std::string& where, const DumpOptions& options);
+
+// Every `dump local` frame of `paths` (text or gzip), ordered by timestep. Throws Error on a missing
+// ITEM, fewer rows than NUMBER OF ENTRIES, a row with another column count, an id that is not an
+// integer (`2753` and `2753.0` are; `2753.5` is refused), columns that cannot be found.
+std::vector<DumpContacts> read_dump_contacts(const std::vector<std::string>& paths, const ContactColumns& columns);
+// The same from memory (text); `where` names it in messages.
+std::vector<DumpContacts> parse_dump_contacts(const std::string& text, const std::string& where, const ContactColumns& columns);
+
+// The contacts of `frame` as 0-based rows (order within a pair and repeats kept as given: the check
+// names those); Error "<path>:<line>: contact (17, 99): atom 99 is not in the frame of timestep 500
+// (<where>)" for an id the frame does not have.
+PairList contacts_as_rows(const DumpFrame& frame, const DumpContacts& contacts);
+
+// The frames as a Recording (io/recording.hpp) that replay, the pipeline and the window use unchanged:
+// frame number = timestep; time = ITEM: TIME, else dt x timestep when `dt` is given, else the
+// timestep; ids and precision carried over; `contacts` (empty: none) become each frame's pairs, one
+// contact frame per dump frame by timestep (Error naming the timestep that has no contact frame, or a
+// contact frame no dump frame has). `path` names the recording in reports.
+Recording recording_from_dumps(std::vector<DumpFrame> frames, const std::vector<DumpContacts>& contacts,
+                               std::optional<double> dt, const std::string& path);
+
+}  // namespace nbscope
