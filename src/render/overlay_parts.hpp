@@ -4,6 +4,7 @@
 // (overlay_verify.cpp).
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -73,5 +74,17 @@ Vec2 head_anchor(const TracedList& l, const Grid* grid, const Elements& e, const
 // drawn and the lists caption; its box is reserved in `labels`.
 void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& stats, const ViewFrame& v,
                  LabelSpace& labels, DrawSink& sink);
+
+// Periodic frames (overlay_periodic.cpp). c_j - c_i by the minimum image on the periodic axes of
+// e.box (x and y; the overlays are 2D).
+Eigen::Vector2d min_image_delta(const Elements& e, ElementId i, ElementId j);
+// The segments that draw pair (i, j): one, centre to centre; or, when its minimum image crosses the
+// box, two half-links from each centre towards the other's nearest image, ending at the box's edge.
+int pair_segments(const Elements& e, ElementId i, ElementId j, std::array<std::array<Vec2, 2>, 2>& out);
+// The elements within one cell of a periodic edge again at their images across it (corners: both
+// axes), faded; picking never sees them.
+void draw_ghosts(const OverlayScene& s, const WorldRect& view, DrawSink& sink);
+// The box's periodic edges, dashed, along the box (or the elements) on the other axis.
+void draw_box_edges(const Elements& e, const WorldRect& view, double ppm, DrawSink& sink);
 
 }  // namespace nbscope::render::detail

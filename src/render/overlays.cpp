@@ -1,6 +1,7 @@
-// Index: overlay table | picking helpers | bodies and elements | labels (ids; one space: no label
+// Index: overlay table | picking helpers | bodies and elements | labels (ids, a dump's atom ids; one space: no label
 // over another) | mask | pairs and checks | selection, trails, flashes | draw_scene. The grid and the
-// legend are in overlay_grid.cpp, the lists in overlay_lists.cpp.
+// legend are in overlay_grid.cpp, the lists in overlay_lists.cpp, periodic ghosts, half-links and box
+// edges in overlay_periodic.cpp.
 #include "render/overlays.hpp"
 
 #include "core/cells.hpp"
@@ -111,13 +112,16 @@ void draw_elements(const Elements& e, const WorldRect& view, double ppm, DrawSin
 // Element ids: inside the circle when they fit, else just above it; only for circles at least
 // kMinIdRadiusPx on screen, only where the view shows them (no panel over them: those are reserved
 // in `space`), never over another label.
-void draw_ids(const Elements& e, const WorldRect& view, double ppm, ElementId selected, bool book, LabelSpace& space,
-              DrawSink& sink) {
-  char buf[16];
+void draw_ids(const Elements& e, const WorldRect& view, double ppm, ElementId selected, bool book,
+              const std::vector<std::int64_t>* ids, LabelSpace& space, DrawSink& sink) {
+  char buf[24];
+  if (ids != nullptr && ids->size() != static_cast<std::size_t>(e.size())) ids = nullptr;  // not this frame's
   // The selected element's id first: it must never be the one left out.
   auto place = [&](ElementId k) {
     if (e.r[k] * ppm < kMinIdRadiusPx || !in_view(view, e.x[k], e.y[k], e.r[k])) return;
-    const int digits = std::snprintf(buf, sizeof buf, "%d", book ? k + 1 : k);
+    // A dump's atoms by their ids (as every panel names them), else the row.
+    const int digits = ids != nullptr ? std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>((*ids)[static_cast<std::size_t>(k)]))
+                                      : std::snprintf(buf, sizeof buf, "%d", book ? k + 1 : k);
     const double w = label_width(static_cast<std::size_t>(digits));
     const double r_px = e.r[k] * ppm;
     const Vec2 at = 2.0 * r_px >= w ? centre_of(e, k) : v2(e.x[k], e.y[k] + (r_px + 0.5 * kLinePx + 1.0) / ppm);
@@ -148,26 +152,38 @@ void draw_mask(const Grid& g, std::array<std::int32_t, 2> cell, DrawSink& sink) 
 void draw_pair_list(const Elements& e, const PairList& pairs, const WorldRect& view, double ppm, Rgba colour,
                     float width, Layer layer, DrawSink& sink) {
   const auto n = static_cast<ElementId>(e.size());
+  std::array<std::array<Vec2, 2>, 2> segments;
   for (const Pair& p : pairs) {
     if (p.i < 0 || p.j < 0 || p.i >= n || p.j >= n) continue;
-    const Vec2 a = centre_of(e, p.i), b = centre_of(e, p.j);
-    if (!segment_in_view(view, a, b)) continue;
-    const double length_px = (b - a).norm() * ppm;
-    const Rgba c = length_px >= 4.0 ? colour
-                                    : colour.with_alpha(static_cast<std::uint8_t>(colour.a * std::max(0.25, length_px / 4.0)));
-    sink.line(layer, a, b, c, width);
+    // Across a periodic edge: two half-links (overlay_periodic.cpp).
+    const int count = pair_segments(e, p.i, p.j, segments);
+    for (int s = 0; s < count; ++s) {
+      const auto [a, b] = segments[static_cast<std::size_t>(s)];
+      if (!segment_in_view(view, a, b)) continue;
+      const double length_px = (b - a).norm() * ppm;
+      const Rgba c = length_px >= 4.0 ? colour
+                                      : colour.with_alpha(static_cast<std::uint8_t>(colour.a * std::max(0.25, length_px / 4.0)));
+      sink.line(layer, a, b, c, width);
+    }
   }
 }
 
 void draw_violations(const Elements& e, const PairList& violations, DrawSink& sink) {
   const auto n = static_cast<ElementId>(e.size());
+  std::array<std::array<Vec2, 2>, 2> segments;
   for (const Pair& p : violations) {
     if (p.i < 0 || p.j < 0 || p.i >= n || p.j >= n) continue;
-    const Vec2 a = centre_of(e, p.i), b = centre_of(e, p.j);
-    sink.line(Layer::Top, a, b, palette::kViolation, 2.5f);
-    // A ring that never shrinks below 9 px, so a violation is found even zoomed far out.
-    sink.circle(Layer::Top, 0.5f * (a + b), 0.5f * (b - a).norm() + static_cast<float>(std::max(e.r[p.i], e.r[p.j])),
-                kNone, palette::kViolation, 2.0f, 9.0f);
+    const float r = static_cast<float>(std::max(e.r[p.i], e.r[p.j]));
+    // Across a periodic edge each half-link gets its ring, around the pair as seen from that side.
+    const int count = pair_segments(e, p.i, p.j, segments);
+    const Vec2 d = count == 1 ? Vec2::Zero() : Vec2(min_image_delta(e, p.i, p.j).cast<float>());
+    for (int s = 0; s < count; ++s) {
+      const auto [a, b] = segments[static_cast<std::size_t>(s)];
+      const Vec2 other = count == 1 ? b : s == 0 ? Vec2(a + d) : Vec2(a - d);  // the other's (nearest image's) centre
+      sink.line(Layer::Top, a, b, palette::kViolation, 2.5f);
+      // A ring that never shrinks below 9 px, so a violation is found even zoomed far out.
+      sink.circle(Layer::Top, 0.5f * (a + other), 0.5f * (other - a).norm() + r, kNone, palette::kViolation, 2.0f, 9.0f);
+    }
   }
 }
 
@@ -207,16 +223,27 @@ void draw_focus_pair(const OverlayScene& s, DrawSink& sink) {
       sink.rect(Layer::Cells, a, a + Vec2::Constant(float(d)), palette::kSelectionCell);
     }
   }
-  const Vec2 a = centre_of(e, p.i), b = centre_of(e, p.j);
-  sink.line(Layer::Top, a, b, palette::kSelection, 3.5f);
-  sink.line(Layer::Top, a, b, palette::kViolation, 1.5f);
+  std::array<std::array<Vec2, 2>, 2> segments;
+  const int count = pair_segments(e, p.i, p.j, segments);
+  for (int k = 0; k < count; ++k) {
+    const auto [a, b] = segments[static_cast<std::size_t>(k)];
+    sink.line(Layer::Top, a, b, palette::kSelection, 3.5f);
+    sink.line(Layer::Top, a, b, palette::kViolation, 1.5f);
+  }
   for (const ElementId k : {p.i, p.j})
     sink.circle(Layer::Top, centre_of(e, k), static_cast<float>(e.r[k]), kNone, palette::kSelection, 2.5f, 9.0f);
 }
 
-void draw_trails(std::span<const std::vector<Vec2>> trails, DrawSink& sink) {
+void draw_trails(std::span<const std::vector<Vec2>> trails, const PeriodicBox& box, DrawSink& sink) {
+  // A step wrapped across a periodic box is a jump of more than half its length: no segment there.
+  const auto wrapped = [&box](Vec2 a, Vec2 b) {
+    for (int k = 0; k < 2; ++k)
+      if (box.periodic[k] && std::abs(double(b[k]) - double(a[k])) > 0.5 * box.length(k)) return true;
+    return false;
+  };
   for (const auto& t : trails) {
     for (std::size_t i = 1; i < t.size(); ++i) {
+      if (wrapped(t[i - 1], t[i])) continue;
       const auto alpha = static_cast<std::uint8_t>(60 + 180 * i / t.size());
       sink.line(Layer::Overlay, t[i - 1], t[i], palette::kTrail.with_alpha(alpha), 1.5f);
     }
@@ -273,8 +300,10 @@ void draw_scene(const OverlayScene& s, const OverlayFlags& f, const Camera& came
   if (f.bodies) draw_bodies(s, view, ppm, sink);
   if (!have_elements) return;
   const Elements& e = *s.elements;
+  if (f.bodies || f.elements) draw_ghosts(s, view, sink);  // periodic frames only
+  draw_box_edges(e, view, ppm, sink);
   if (f.elements) draw_elements(e, view, ppm, sink);
-  if (f.trails) draw_trails(s.trails, sink);
+  if (f.trails) draw_trails(s.trails, e.box, sink);
   if (f.flash) draw_flashes(e, s.flashes, view, sink);
   // The overview's heat map is the picture at that scale: pair segments a few pixels long would
   // bury it (large.json settled: 40,000 of them); violations are still drawn, and zooming in shows pairs.
@@ -300,7 +329,7 @@ void draw_scene(const OverlayScene& s, const OverlayFlags& f, const Camera& came
   draw_selection(s, view, ppm, sink);
   if (f.checks && s.checks != nullptr) draw_violations(e, s.checks->violations, sink);
   if (s.focus_pair) draw_focus_pair(s, sink);
-  if (f.ids || f.lists) draw_ids(e, view, ppm, s.selected, s.book_numbering, labels, sink);
+  if (f.ids || f.lists) draw_ids(e, view, ppm, s.selected, s.book_numbering, s.ids, labels, sink);
   if (f.lists && s.lists != nullptr) draw_head_labels(s, v, labels, sink);
   if (s.drag) sink.line(Layer::Top, (*s.drag)[0], (*s.drag)[1], palette::kDragLine, 1.5f);
 }

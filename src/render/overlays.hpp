@@ -119,6 +119,8 @@ struct OverlayScene {
   ScreenInsets insets;         // pixels at the view's edges covered by panels: the grid's numbers and list heads keep clear
   std::span<const PixelRect> covered;  // the panels' windows and the menu bar: no label is drawn under them
   bool book_numbering = false;  // element ids and cell indices drawn from 1, as the book prints them
+  // The atom id of each row (a dump's frame, io/recording.hpp): the ids overlay shows these instead.
+  const std::vector<std::int64_t>* ids = nullptr;
   // Someone's own arrays checked (nbscope verify --arrays): `lists` are theirs, these are the
   // problems found, drawn in red over them (wrong links, elements ringed, cut lists' ends).
   const VerifyMarks* verify = nullptr;
