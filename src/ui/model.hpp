@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -31,6 +32,16 @@ namespace nbscope::ui {
 
 // Shown index of an element id or array index: itself, or one more in book numbering (-1 stays -1).
 [[nodiscard]] inline std::int64_t shown(std::int64_t value, bool book) { return (book && value >= 0) ? value + 1 : value; }
+// How panels number element `row` of a frame whose rows are the atoms `ids` (a dump's; null: none):
+// its atom id, else the row in the chosen numbering.
+[[nodiscard]] inline std::int64_t element_number(std::int64_t row, bool book, const std::vector<std::int64_t>* ids) {
+  return ids != nullptr && row >= 0 && static_cast<std::size_t>(row) < ids->size() ? (*ids)[static_cast<std::size_t>(row)] : shown(row, book);
+}
+// A pair as panels write it: "(4, 6)", or "atoms (2753, 12)" when the frame's rows are atoms.
+[[nodiscard]] inline std::string pair_text(const Pair& p, bool book, const std::vector<std::int64_t>* ids) {
+  return std::string(ids != nullptr ? "atoms (" : "(") + std::to_string(element_number(p.i, book, ids)) + ", " +
+         std::to_string(element_number(p.j, book, ids)) + ")";
+}
 
 // Where the window's own part of a frame's time went, in milliseconds (the pipeline's part, physics,
 // detection and check, is FrameTimings, check/report.hpp).
@@ -61,6 +72,10 @@ struct SimView {
   std::vector<std::string> detectors;   // the registry's 2D detectors (what the Scaling panel can time)
   std::string algorithm;
   std::string error;  // the last failed request (bad scene file, ...), shown in red
+  Touching touching = Touching::inclusive;  // the contact convention (--touching), shown in Stats
+  // The atom ids of recorded frame F's rows (a dump's, LoopSource::element_ids), or null (unset, or
+  // the rows are the elements): every panel names an element by them.
+  std::function<const std::vector<std::int64_t>*(std::int64_t frame)> element_ids;
 
   bool paused = false;
   double time_step = 1.0 / 60.0;
@@ -119,6 +134,10 @@ struct SimView {
   [[nodiscard]] const PairList* pairs() const { return frame != nullptr ? &frame->selected().pairs : nullptr; }
   // The chosen detector's report this frame: counts, timings, check, violations (null with nothing loaded).
   [[nodiscard]] const FrameReport* report() const { return frame != nullptr ? &frame->report() : nullptr; }
+  // The atom ids of frame `f`'s rows, or null when its elements are named by their rows.
+  [[nodiscard]] const std::vector<std::int64_t>* ids_of(std::int64_t f) const { return element_ids ? element_ids(f) : nullptr; }
+  // The atom ids of the shown frame's rows, or null.
+  [[nodiscard]] const std::vector<std::int64_t>* ids() const { return frame != nullptr ? ids_of(frame_number()) : nullptr; }
 };
 
 // Open/closed panels, overlays and interaction state: owned by the app, edited by the UI.

@@ -1,6 +1,7 @@
 // The Selection panel: the clicked element's position, cell, lists (with the next-array entry
 // after it, as the book writes them, and the list from its head named as the Arrays panel names
-// it) and contact pairs, all in the chosen numbering.
+// it) and contact pairs, all in the chosen numbering; a dump's atoms by their ids (the lists, being
+// the arrays' contents, stay rows).
 //
 // Index: SelectionPanel | describe_chain.
 #include <imgui.h>
@@ -32,7 +33,12 @@ class SelectionPanel final : public Panel {
     const Elements& e = *s.elements;
     const bool book = c.state.book_numbering;
     const auto num = [book](std::int64_t v) { return static_cast<long long>(shown(v, book)); };
-    ImGui::Text("element %lld", num(k));
+    // A dump's atom by its id (the row shifts as atoms are lost or inserted), else the row.
+    const std::vector<std::int64_t>* ids = s.ids();
+    if (ids != nullptr && static_cast<std::size_t>(k) < ids->size())
+      ImGui::Text("atom %lld  (row %lld)", static_cast<long long>(element_number(k, book, ids)), num(k));
+    else
+      ImGui::Text("element %lld", num(k));
     ImGui::Text("centre (%.3f, %.3f)  r = %.3f", e.x[k], e.y[k], e.r[k]);
     if (const Grid* grid = s.grid()) ImGui::Text("cell ix = %lld, iy = %lld", num(grid->cell(e.x[k], 0)), num(grid->cell(e.y[k], 1)));
 
@@ -60,10 +66,10 @@ class SelectionPanel final : public Panel {
       std::size_t count = 0;
       for (const Pair& p : *s.pairs()) {
         if (p.i != k && p.j != k) continue;
-        if (++count <= 16) others += (others.empty() ? "" : ", ") + std::to_string(num(p.i == k ? p.j : p.i));
+        if (++count <= 16) others += (others.empty() ? "" : ", ") + std::to_string(element_number(p.i == k ? p.j : p.i, book, ids));
       }
       if (count > 16) others += ", ...";
-      ImGui::TextWrapped("contacts (%zu): %s", count, count == 0 ? "none" : others.c_str());
+      ImGui::TextWrapped("contacts (%zu%s): %s", count, ids != nullptr ? ", atom ids" : "", count == 0 ? "none" : others.c_str());
     }
     ImGui::TextDisabled("Esc clears the selection");
   }

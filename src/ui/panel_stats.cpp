@@ -18,10 +18,14 @@ std::string format_ms(const SimView& sim, double ms) {
   return buf;
 }
 
-std::string violation_line(const Violation& v, bool book) {
+std::string violation_line(const Violation& v, bool book, const std::vector<std::int64_t>* ids) {
   const auto num = [&](std::int64_t value) { return std::to_string(shown(value, book)); };
-  return std::string(invariant_name(v.invariant)) + ": (" + num(v.pair.i) + ", " + num(v.pair.j) + ") " + v.what + ", cells (" +
+  return std::string(invariant_name(v.invariant)) + ": " + pair_text(v.pair, book, ids) + " " + v.what + ", cells (" +
          num(v.cell_i.ix) + "," + num(v.cell_i.iy) + ") (" + num(v.cell_j.ix) + "," + num(v.cell_j.iy) + ")";
+}
+
+std::string touching_line(Touching touching) {
+  return touching == Touching::strict ? "touching: strict (<)" : "touching: inclusive (<=)";
 }
 
 namespace {
@@ -52,6 +56,11 @@ class StatsPanel final : public Panel {
                   static_cast<long long>(grid->cell_count()), grid->cell_size);
     }
     ImGui::Text("pairs %zu", s.pairs() != nullptr ? s.pairs()->size() : std::size_t{0});
+    // The convention decides recorded pairs at zero gap: said for a recording, or when not the default.
+    if (s.replaying || s.touching != Touching::inclusive) ImGui::TextUnformatted(touching_line(s.touching).c_str());
+    if (const FrameReport* r = s.report(); r != nullptr && (r->counts.boundary > 0 || r->counts.ties > 0))
+      ImGui::TextDisabled("at the boundary: %lld within precision, %lld exact %s", static_cast<long long>(r->counts.boundary),
+                          static_cast<long long>(r->counts.ties), r->counts.ties == 1 ? "tie" : "ties");
     draw_costs(s);
     ImGui::Separator();
     draw_check(c);
@@ -121,7 +130,7 @@ class StatsPanel final : public Panel {
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.5f, 0.5f, 1.0f));
       const std::size_t lines = std::min(report->violations.size(), kViolationLines);
       for (std::size_t i = 0; i < lines; ++i) {
-        ImGui::TextWrapped("%s", violation_line(report->violations[i], c.state.book_numbering).c_str());
+        ImGui::TextWrapped("%s", violation_line(report->violations[i], c.state.book_numbering, s.ids()).c_str());
         // One click from "check FAILED" to the violation: chosen as a click in the Violations panel chooses it.
         if (ImGui::IsItemHovered()) {
           ImGui::GetWindowDrawList()->AddRectFilled(ImGui::GetItemRectMin(), ImGui::GetItemRectMax(), IM_COL32(255, 90, 90, 40));

@@ -28,11 +28,17 @@ class ViolationsPanel final : public Panel {
   [[nodiscard]] float width() const override { return 320.0f; }
   // Above the other panels of its column: when the column is short, they collapse first.
   [[nodiscard]] int priority() const override { return 30; }
-  [[nodiscard]] bool visible(const UiContext& c) const override { return c.sim.violations_total > 0; }
+  // Also for a frame whose recorded pairs disagree only at the boundary (listed apart, not violations).
+  [[nodiscard]] bool visible(const UiContext& c) const override { return c.sim.violations_total > 0 || boundary_count(c.sim) > 0; }
 
   void draw(UiContext& c) override {
     const SimView& s = c.sim;
     const bool book = c.state.book_numbering;
+    if (s.violations_total == 0) {
+      ImGui::TextDisabled("no violations");
+      draw_boundary(s, book);
+      return;
+    }
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextColored(kRed, "%s in %s", plural(s.violations_total, "violation").c_str(),
                        plural(s.violation_frames, "frame").c_str());
@@ -80,7 +86,7 @@ class ViolationsPanel final : public Panel {
       const Violation& v = all[static_cast<std::size_t>(c.state.current_violation)];
       ImGui::Separator();
       ImGui::PushTextWrapPos(0.0f);
-      ImGui::TextColored(kRed, "%s", describe_violation(v, book).c_str());
+      ImGui::TextColored(kRed, "%s", describe_violation(v, book, s.ids_of(v.frame)).c_str());
       const auto truth = grid_cells(s, v);
       if (truth && !same_cells(v, *truth))
         ImGui::TextColored(kOrange, "The grid puts them in %s: the detector's cells are not the true ones.",
@@ -88,9 +94,31 @@ class ViolationsPanel final : public Panel {
       if (!s.locate_status.empty()) ImGui::TextWrapped("%s", s.locate_status.c_str());
       ImGui::PopTextWrapPos();
     }
+    draw_boundary(s, book);
   }
 
  private:
+  // The shown frame's recorded pairs at the boundary (exact count), never mixed with the violations.
+  static std::int64_t boundary_count(const SimView& s) {
+    const FrameReport* r = s.report();
+    return r != nullptr ? r->counts.boundary + r->counts.ties : 0;
+  }
+
+  // Their own section, collapsed: one line each (FrameReport::boundary lists the first 200).
+  static void draw_boundary(const SimView& s, bool book) {
+    const std::int64_t n = boundary_count(s);
+    if (n == 0) return;
+    char title[64];
+    std::snprintf(title, sizeof title, "At the boundary (%lld)###boundary", static_cast<long long>(n));
+    if (!ImGui::CollapsingHeader(title)) return;
+    ImGui::PushTextWrapPos(0.0f);
+    const std::vector<std::int64_t>* ids = s.ids();
+    for (const BoundaryPair& b : s.report()->boundary) ImGui::TextUnformatted(boundary_line(b, book, ids).c_str());
+    const std::int64_t unlisted = n - static_cast<std::int64_t>(s.report()->boundary.size());
+    if (unlisted > 0) ImGui::TextDisabled("+%lld more counted, not listed", static_cast<long long>(unlisted));
+    ImGui::PopTextWrapPos();
+  }
+
   // Rows of the filtered list (indices into `all`), rebuilt only when the log or the filter changes.
   void refresh_rows(const UiContext& c, const std::vector<Violation>& all) {
     if (c.sim.violations_generation != rows_generation_ || &all != rows_source_ || c.state.violation_filter != rows_filter_) {
@@ -159,13 +187,15 @@ class ViolationsPanel final : public Panel {
         std::snprintf(frame, sizeof frame, "%lld##v%zu", static_cast<long long>(v.frame), index);
         const bool current = static_cast<std::int64_t>(index) == c.state.current_violation;
         if (ImGui::Selectable(frame, current, ImGuiSelectableFlags_SpanAllColumns)) go(c, index);
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe_violation(v, book).c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe_violation(v, book, c.sim.ids_of(v.frame)).c_str());
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(invariant_name(v.invariant));
         const auto truth = grid_cells(c.sim, v);
         const bool wrong = truth && !same_cells(v, *truth);
         ImGui::TableNextColumn();
-        ImGui::Text("%lld, %lld", static_cast<long long>(shown(v.pair.i, book)), static_cast<long long>(shown(v.pair.j, book)));
+        const std::vector<std::int64_t>* ids = c.sim.ids_of(v.frame);  // a dump's frame: its atoms' ids
+        ImGui::Text("%lld, %lld", static_cast<long long>(element_number(v.pair.i, book, ids)),
+                    static_cast<long long>(element_number(v.pair.j, book, ids)));
         if (wrong) ImGui::TextDisabled("true");  // under the pair, beside the grid's cells
         ImGui::TableNextColumn();
         if (wrong) ImGui::TextColored(kOrange, "%s", cell_pair_text(v.cell_i, v.cell_j, book).c_str());
@@ -237,11 +267,15 @@ std::optional<std::size_t> violation_index(const SimView& sim, const Violation& 
   return std::nullopt;
 }
 
-std::string describe_violation(const Violation& v, bool book) {
+std::string describe_violation(const Violation& v, bool book, const std::vector<std::int64_t>* ids) {
   const auto id = [&](std::int64_t k) { return std::to_string(shown(k, book)); };
-  return std::string(invariant_name(v.invariant)) + " in frame " + std::to_string(v.frame) + ": (" + id(v.pair.i) + ", " +
-         id(v.pair.j) + ") " + v.what + "; the detector's cells (" + id(v.cell_i.ix) + "," + id(v.cell_i.iy) + ") and (" +
-         id(v.cell_j.ix) + "," + id(v.cell_j.iy) + ")";
+  return std::string(invariant_name(v.invariant)) + " in frame " + std::to_string(v.frame) + ": " + pair_text(v.pair, book, ids) + " " +
+         v.what + "; the detector's cells (" + id(v.cell_i.ix) + "," + id(v.cell_i.iy) + ") and (" + id(v.cell_j.ix) + "," +
+         id(v.cell_j.iy) + ")";
+}
+
+std::string boundary_line(const BoundaryPair& b, bool book, const std::vector<std::int64_t>* ids) {
+  return pair_text(b.pair, book, ids) + ": " + boundary_text(b) + (b.in_r ? " (R has it, A not)" : " (A has it, R not)");
 }
 
 std::optional<std::array<CellIndex, 2>> grid_cells(const SimView& sim, const Violation& v) {

@@ -41,8 +41,8 @@ std::optional<std::size_t> step_violation(const SimView& sim, const UiState& sta
 // nullopt when the log does not list it.
 std::optional<std::size_t> violation_index(const SimView& sim, const Violation& violation);
 // "A==R in frame 3: (4, 6) missing from A (in R); the detector's cells (5,6) and (4,7)", in the
-// chosen numbering.
-std::string describe_violation(const Violation& violation, bool book);
+// chosen numbering; its elements named "atoms (2753, 12)" by `ids` (its frame's, SimView::ids_of) when given.
+std::string describe_violation(const Violation& violation, bool book, const std::vector<std::int64_t>* ids = nullptr);
 // The cells the grid gives the violation's two elements (core/cells.hpp's integerisation: what the
 // Selection panel and the picture show), to hold against the detector's (Violation::cell_i, cell_j);
 // nullopt unless the violation is of the frame on screen (only its elements are at hand).
@@ -50,8 +50,12 @@ std::optional<std::array<CellIndex, 2>> grid_cells(const SimView& sim, const Vio
 // "(5,6) (4,7)": two cells in the chosen numbering.
 std::string cell_pair_text(const CellIndex& a, const CellIndex& b, bool book);
 // The Stats panel's line for one of the frame's violations: "A==R: (4, 6) missing from A (in R),
-// cells (5,6) (4,7)", in the chosen numbering.
-std::string violation_line(const Violation& violation, bool book);
+// cells (5,6) (4,7)", in the chosen numbering; its elements named by `ids` when given.
+std::string violation_line(const Violation& violation, bool book, const std::vector<std::int64_t>* ids = nullptr);
+// The Violations panel's line for a pair at the boundary: "atoms (2753, 12): at the boundary, within ... (R has it, A not)".
+std::string boundary_line(const BoundaryPair& b, bool book, const std::vector<std::int64_t>* ids);
+// The Stats panel's line for the contact convention: "touching: inclusive (<=)" or "touching: strict (<)".
+std::string touching_line(Touching touching);
 
 // The Selection panel's line for list `l` around element k: "B[1][8]: 11 -> [12] -> 191 -> ... ",
 // the head named as the Arrays panel names it, every number from 1 with `book`.

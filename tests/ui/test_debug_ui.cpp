@@ -292,6 +292,46 @@ TEST(DebugPanels, ReadTheFrameResultAndCopeWithNone) {
   EXPECT_NO_THROW(run_frame(host, f));
 }
 
+// A dump's frame names its atoms by their ids everywhere a panel names an element (book numbering
+// does not apply to ids); its pairs at the boundary are listed apart, in the Violations panel, which
+// shows for them even when nothing broke; the Stats panel names the touching convention.
+TEST(DebugPanels, AtomsAreNamedByTheirIdsAndBoundaryPairsAreListedApart) {
+  ImGuiScope scope;
+  UiHost host;
+  BookFrame f;
+  const std::vector<std::int64_t> ids{2753, 12, 99, 100, 101, 102, 103, 104, 105};
+  const Violation v{0, Invariant::AEqualsR, Pair{2, 3}, {1, 2}, {3, 4}, "missing from A"};
+  EXPECT_EQ(violation_line(v, true, &ids), "A==R: atoms (99, 100) missing from A, cells (2,3) (4,5)");
+  EXPECT_EQ(describe_violation(v, false, &ids),
+            "A==R in frame 0: atoms (99, 100) missing from A; the detector's cells (1,2) and (3,4)");
+  EXPECT_EQ(describe_violation(v, false), "A==R in frame 0: (2, 3) missing from A; the detector's cells (1,2) and (3,4)");
+  BoundaryPair tie{Pair{0, 1}, 0.0, 0.0, true, true};
+  EXPECT_EQ(boundary_line(tie, false, &ids),
+            "atoms (2753, 12): an exact tie (gap 0): a contact under --touching inclusive, not under strict (R has it, A not)");
+  EXPECT_EQ(touching_line(Touching::strict), "touching: strict (<)");
+  EXPECT_EQ(touching_line(Touching::inclusive), "touching: inclusive (<=)");
+  // The frame's ids reach the panels through SimView::element_ids, per frame.
+  f.sim.element_ids = [&ids](std::int64_t frame) { return frame == 0 ? &ids : nullptr; };
+  EXPECT_EQ(f.sim.ids(), &ids);
+  EXPECT_EQ(f.sim.ids_of(1), nullptr);
+  // No violation, one tie: the Violations panel shows, for its boundary section.
+  FrameReport& report = f.result.lanes.front().report;
+  report.checked = true;
+  report.boundary.push_back(tie);
+  const Panel* violations = nullptr;
+  for (const auto& panel : host.panels())
+    if (std::string(panel->title()) == kViolationsTitle) violations = panel.get();
+  ASSERT_NE(violations, nullptr);
+  UiContext ctx{f.sim, f.state, f.requests, f.camera};
+  EXPECT_FALSE(violations->visible(ctx)) << "counted in FrameCounts, not yet";
+  report.counts.ties = 1;
+  EXPECT_TRUE(violations->visible(ctx));
+  f.state.selected = 0;
+  f.sim.replaying = true;
+  for (const auto& panel : host.panels()) f.state.panel_open[panel->title()] = true;
+  EXPECT_NO_THROW(run_frame(host, f));
+}
+
 // A click on one of the Stats panel's violation lines chooses it as the Violations panel does: the
 // request names its index in the run's log (here after another frame's violation).
 TEST(DebugPanels, AViolationLineInStatsIsOneClickFromItsViolation) {
