@@ -53,13 +53,23 @@ void LoopHistory::element_path(ElementId k, std::int64_t from, std::int64_t to, 
   const auto& summaries = m.history.summaries();
   const auto first = std::lower_bound(summaries.begin(), summaries.end(), from,
                                       [](const FrameSummary& f, std::int64_t n) { return f.frame < n; });
+  // A dump's rows shift as atoms come and go: the atom at row k of frame `to` is followed by its id.
+  const std::vector<std::int64_t>* ids_to = m.replay ? &m.replay->recording().frames[m.replay->index_of(to)].ids : nullptr;
+  const bool by_atom = ids_to != nullptr && static_cast<std::size_t>(k) < ids_to->size();
+  const std::int64_t atom = by_atom ? (*ids_to)[static_cast<std::size_t>(k)] : -1;
   for (auto i = static_cast<std::size_t>(first - summaries.begin()); i < m.history.size(); ++i) {
     const FrameSummary& f = m.history.at(i);
     if (f.frame > to) break;
-    if (k >= f.elements) continue;
     if (m.replay) {
-      const Elements& e = m.replay->recording().frames[m.replay->index_of(f.frame)].elements;
-      out.push_back({e.x[k], e.y[k]});
+      const RecordedFrame& rf = m.replay->recording().frames[m.replay->index_of(f.frame)];
+      std::int64_t row = k;
+      if (by_atom) {
+        const auto it = std::lower_bound(rf.ids.begin(), rf.ids.end(), atom);  // ascending (io/recording.hpp)
+        row = it != rf.ids.end() && *it == atom ? it - rf.ids.begin() : -1;     // -1: not in that frame
+      }
+      if (row >= 0 && row < rf.elements.size()) out.push_back({rf.elements.x[row], rf.elements.y[row]});
+    } else if (k >= f.elements) {
+      continue;
     } else if (const auto& state = m.history.state(i)) {
       std::array<double, 2> p{};
       m.live->world().element_centre(*state, k, p[0], p[1]);

@@ -92,6 +92,8 @@ class LoopPipeline {
   void set_checks_enabled(bool on);
   // True when the cross-check runs.
   [[nodiscard]] bool checks_enabled() const;
+  // Whether a pair at exactly zero gap is a contact (--touching), for every lane and the check.
+  [[nodiscard]] Touching touching() const;
   // How R is chosen, in words (for the UI and reports).
   [[nodiscard]] std::string reference_policy() const;
   // Which pairs A-in-F applies to, in words.

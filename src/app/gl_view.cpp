@@ -32,6 +32,16 @@ constexpr std::size_t kFrameHistory = 240;
 // A fit leaves this much below the scene for the legend (render::draw_scene's lower right corner).
 constexpr double kLegendReservePx = 44.0;
 
+// The row in `after` of the atom at `row` in `before` (two frames' atom ids): -1 when it is gone.
+ElementId row_of_atom(const std::vector<std::int64_t>& before, const std::vector<std::int64_t>& after, ElementId row) {
+  if (row < 0 || static_cast<std::size_t>(row) >= before.size()) return -1;
+  const std::int64_t id = before[static_cast<std::size_t>(row)];
+  if (static_cast<std::size_t>(row) < after.size() && after[static_cast<std::size_t>(row)] == id) return row;
+  const auto sorted = std::lower_bound(after.begin(), after.end(), id);  // a dump's ids ascend (io/recording.hpp)
+  const auto it = sorted != after.end() && *sorted == id ? sorted : std::find(after.begin(), after.end(), id);
+  return it == after.end() ? -1 : static_cast<ElementId>(it - after.begin());
+}
+
 }  // namespace
 
 // ---- scene files ------------------------------------------------------------------------------
@@ -136,8 +146,10 @@ void GlView::follow(const FrameLoop& loop) {
     source_loaded(loop, !showed_scene_ || loaded_scene_ != loop.source().scene().path);
     if (c.moved_at > c.loaded_at) frame_shown(loop);  // steps missed after the load: a jump
   } else if (moved && one_change && c.kind == FrameChange::Kind::stepped) {
+    follow_atoms(loop);
     stepped(loop);
   } else if (moved) {
+    follow_atoms(loop);
     frame_shown(loop);  // a frame of the history, or several changes at once: as a jump unless a neighbour
   }
   // Only redetected: the same frame, nothing seen changes (the lists follow the trace, update_lists).
@@ -170,6 +182,36 @@ void GlView::source_loaded(const FrameLoop& loop, bool fit) {
     framing_.set_home_view(*fixed_camera_);
     framing_.go_home(camera_, host_.insets(state_));
   }
+}
+
+void GlView::follow_atoms(const FrameLoop& loop) {
+  // previous_frame_ is the frame last followed, of the same recording (a new source is not followed here).
+  const std::vector<std::int64_t>* before = loop.source().element_ids(previous_frame_);
+  const std::vector<std::int64_t>* after = loop.source().element_ids(loop.source().frame());
+  if (before == nullptr || after == nullptr || before == after) return;
+  const bool trail_is_selection = trail_element_ == state_.selected;
+  state_.selected = row_of_atom(*before, *after, state_.selected);
+  trail_element_ = trail_is_selection ? state_.selected : row_of_atom(*before, *after, trail_element_);
+  stepper_->focus_element = row_of_atom(*before, *after, stepper_->focus_element);
+  if (state_.selected_pair) {
+    const ElementId i = row_of_atom(*before, *after, state_.selected_pair->i), j = row_of_atom(*before, *after, state_.selected_pair->j);
+    if (i < 0 || j < 0) state_.selected_pair.reset();
+    else state_.selected_pair = Pair{std::min(i, j), std::max(i, j)};
+  }
+  // Cells and flashes by atom, so that a lost or inserted atom does not flash every row after it.
+  std::vector<CellIndex> cells(after->size(), CellIndex{-1, -1});
+  std::vector<float> flash(after->size(), 0.0f);
+  for (std::size_t k = 0; k < before->size() && k < previous_cells_.size(); ++k) {
+    const ElementId row = row_of_atom(*before, *after, static_cast<ElementId>(k));
+    if (row < 0) continue;
+    cells[static_cast<std::size_t>(row)] = previous_cells_[k];
+    if (k < flash_.size()) flash[static_cast<std::size_t>(row)] = flash_[k];
+  }
+  const auto& now = loop.result().selected().cells;
+  for (std::size_t k = 0; k < cells.size() && k < now.size(); ++k)
+    if (cells[k].ix < 0) cells[k] = now[k];  // an atom inserted: no flash
+  previous_cells_ = std::move(cells);
+  flash_ = std::move(flash);
 }
 
 void GlView::stepped(const FrameLoop& loop) {
@@ -308,6 +350,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   scene.insets = host_.insets(state_);  // last frame's panels: labels keep to the part of the view they leave free
   scene.covered = host_.covered();
   scene.book_numbering = state_.book_numbering;
+  scene.ids = loop.source().element_ids(loop.source().frame());  // a dump's atoms are labelled by their ids
   if (loop.drag().active() && state_.selected >= 0 && state_.mouse_world)
     scene.drag = std::array<render::Vec2, 2>{
         render::Vec2(static_cast<float>(e.x[state_.selected]), static_cast<float>(e.y[state_.selected])),

@@ -125,6 +125,9 @@ class GlView {
   void stepped(const FrameLoop& loop);
   void frame_shown(const FrameLoop& loop);
   void rebuild_trail(const FrameLoop& loop);
+  // A dump's frame replaced the one last followed: the selection, a violation's pair, the trail and
+  // the flashes follow their atoms' ids to their new rows (none when the atom is gone).
+  void follow_atoms(const FrameLoop& loop);
   // The Stepper just opened: it goes to the operation of the violation chosen before (as if it had
   // been open when the violation was chosen).
   void aim_stepper_at_chosen_violation(const FrameLoop& loop);

@@ -19,6 +19,8 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
   if (loop.source().carries_pairs()) sim.algorithms.emplace_back(kRecordedAlgorithm);  // the recording's own pairs, last
   sim.algorithm = loop.pipeline().algorithm();
   sim.error = session.error;
+  sim.touching = loop.pipeline().touching();
+  sim.element_ids = [&loop](std::int64_t f) { return loop.source().element_ids(f); };  // a dump's atoms, named by their ids
   sim.paused = session.paused;
   sim.time_step = loop.source().scene().time_step;
   sim.speed = session.speed;

@@ -1,0 +1,144 @@
+// The window's view of a dump's frames (recorded frames with atom ids, some periodic), under OSMesa:
+// the selection, a violation's pair and the trail follow the atom's id across frames whose rows
+// shift as atoms are lost or inserted (nothing selected once the atom is gone), the panels get the
+// ids and the touching convention, and a periodic frame's screenshot is written for a look
+// (NBSCOPE_TEST_OUT/window_periodic.png).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "app/gl_view.hpp"
+#include "io/png.hpp"
+#include "render/gl_context.hpp"
+
+namespace nbscope {
+namespace {
+
+// One atom a frame: x as given, y 0, radius 0.25.
+RecordedFrame dump_frame(std::int64_t number, std::vector<std::int64_t> ids, std::vector<double> xs) {
+  RecordedFrame f;
+  f.number = number;
+  f.time = 0.1 * static_cast<double>(number);
+  f.ids = std::move(ids);
+  for (const double x : xs) f.elements.push_back(x, 0, 0, 0.25);
+  return f;
+}
+
+struct AtomRig {
+  std::unique_ptr<render::GlContext> context = render::make_offscreen_context(800, 500, "osmesa");
+  FrameLoop loop;
+  Session session;
+  std::unique_ptr<GlView> view;
+  explicit AtomRig(Recording rec, ViewOptions options = {}, const FrameLoopOptions& loop_options = {}) : loop(loop_options) {
+    options.width = 800;
+    options.height = 500;
+    options.shader_dir = NBSCOPE_SHADER_DIR;
+    loop.load_recording(std::move(rec));
+    session.paused = true;
+    view = std::make_unique<GlView>(*context, nullptr, options);
+    view->follow(loop);
+  }
+  void frames(int n) {
+    for (int k = 0; k < n; ++k) view->frame(loop, session, false, 1.0f / 60.0f);
+  }
+};
+
+// Atom 30 moves right by 0.1 a frame; atom 20 is lost in frame 1, atom 5 inserted in frame 2, atom
+// 30 gone in frame 3.
+Recording atoms_come_and_go() {
+  Recording rec;
+  rec.path = "atoms.dump";
+  rec.frames = {dump_frame(0, {10, 20, 30}, {0, 2, 4.0}), dump_frame(1, {10, 30}, {0, 4.1}),
+                dump_frame(2, {5, 10, 30}, {-2, 0, 4.2}), dump_frame(3, {5, 10}, {-2, 0})};
+  return rec;
+}
+
+TEST(WindowAtoms, TheSelectionFollowsTheAtomIdAcrossFramesWhoseRowsShift) {
+  AtomRig rig(atoms_come_and_go());
+  rig.frames(1);
+  rig.view->state().selected = 2;  // atom 30, clicked on frame 0
+  rig.frames(1);
+  rig.loop.step();  // atom 20 lost: atom 30 is row 1
+  rig.frames(1);
+  EXPECT_EQ(rig.view->state().selected, 1);
+  rig.loop.step();  // atom 5 inserted: row 2 again
+  rig.frames(1);
+  EXPECT_EQ(rig.view->state().selected, 2);
+  // Its trail is the atom's path, not a row's.
+  ASSERT_EQ(rig.view->trails().size(), 1u);
+  std::vector<float> xs;
+  for (const render::Vec2& p : rig.view->trails().front()) xs.push_back(p.x());
+  EXPECT_EQ(xs, (std::vector<float>{4.1f, 4.2f}));
+  // Back to frame 0 (shown from the history): row 2 again, the trail rebuilt by id.
+  rig.loop.show_frame(1);
+  rig.frames(1);
+  EXPECT_EQ(rig.view->state().selected, 1);
+  ASSERT_EQ(rig.view->trails().size(), 1u);
+  xs.clear();
+  for (const render::Vec2& p : rig.view->trails().front()) xs.push_back(p.x());
+  EXPECT_EQ(xs, (std::vector<float>{4.0f, 4.1f}));
+  // Atom 30 gone in frame 3: nothing selected.
+  rig.loop.show_frame(2);
+  rig.loop.step();
+  rig.frames(1);
+  EXPECT_EQ(rig.view->state().selected, -1);
+}
+
+TEST(WindowAtoms, AViolationsPairFollowsItsAtomsAndIsDroppedWhenOneIsGone) {
+  AtomRig rig(atoms_come_and_go());
+  rig.frames(1);
+  rig.view->state().selected = 0;
+  rig.view->state().selected_pair = Pair{0, 2};  // atoms 10 and 30
+  rig.loop.step();
+  rig.frames(1);
+  ASSERT_TRUE(rig.view->state().selected_pair.has_value());
+  EXPECT_EQ(*rig.view->state().selected_pair, (Pair{0, 1}));
+  rig.loop.step();
+  rig.frames(1);
+  EXPECT_EQ(*rig.view->state().selected_pair, (Pair{1, 2}));
+  rig.loop.step();
+  rig.frames(1);
+  EXPECT_FALSE(rig.view->state().selected_pair.has_value());
+  EXPECT_EQ(rig.view->state().selected, 1) << "atom 10 is still there";
+}
+
+// Rows are the elements when the frames carry no ids: the selection stays on its row.
+TEST(WindowAtoms, WithoutIdsTheSelectionStaysOnItsRow) {
+  Recording rec = atoms_come_and_go();
+  for (RecordedFrame& f : rec.frames) f.ids.clear();
+  AtomRig rig(std::move(rec));
+  rig.frames(1);
+  rig.view->state().selected = 1;
+  rig.loop.step();
+  rig.frames(1);
+  EXPECT_EQ(rig.view->state().selected, 1);
+}
+
+// A periodic frame (x periodic over [0, 10)) with the ids overlay: the picture is written for a look.
+TEST(WindowAtoms, APeriodicFramesScreenshotIsWritten) {
+  Recording rec;
+  rec.path = "periodic.dump";
+  RecordedFrame f = dump_frame(0, {2753, 12, 99, 4}, {0.3, 9.75, 5, 9.4});
+  f.elements.y << 1, 1.2, 1, 2.4;
+  f.elements.r << 0.5, 0.5, 0.5, 0.45;
+  f.elements.box.periodic[0] = true;
+  f.elements.box.lo[0] = 0;
+  f.elements.box.hi[0] = 10;
+  f.pairs = {{0, 1}};  // the dump's own contact: across the edge
+  rec.frames = {f};
+  rec.has_pairs = true;
+  ViewOptions o;
+  o.overlays = "+ids,+elements";
+  o.no_timings = true;
+  FrameLoopOptions recorded;
+  recorded.algorithm = "recorded";
+  AtomRig rig(std::move(rec), o, recorded);
+  rig.view->state().selected = 0;
+  rig.frames(GlView::kSettleFrames);
+  ASSERT_EQ(rig.loop.result().selected().pairs, (PairList{{0, 1}})) << "atoms 2753 and 12 touch across the edge";
+  std::filesystem::create_directories(NBSCOPE_TEST_OUT);
+  write_png(std::string(NBSCOPE_TEST_OUT) + "/window_periodic.png", rig.view->screenshot());
+}
+
+}  // namespace
+}  // namespace nbscope
