@@ -108,7 +108,7 @@ void draw_box_edges(const Elements& e, const WorldRect& view, double ppm, DrawSi
                                      : std::array<double, 2>{b.min[a] - r, b.max[a] + r};
   };
   for (int a = 0; a < 2; ++a) {
-    if (!e.box.periodic[a]) continue;
+    if (!e.box.periodic[a] || e.box.length(a) <= 0) continue;
     const auto along = extent(1 - a);
     for (const double at : {e.box.lo[a], e.box.hi[a]}) {
       const Vec2 p = a == 0 ? v2(at, along[0]) : v2(along[0], at);
