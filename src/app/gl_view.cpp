@@ -114,6 +114,13 @@ void GlView::fit_camera(const FrameLoop& loop) {
 
 void GlView::check_selection(const FrameLoop& loop) const {
   if (select_option_ < 0) return;
+  // A dump's frame shows atom ids: --select names one of them.
+  if (const std::vector<std::int64_t>* ids = loop.source().element_ids(loop.source().frame())) {
+    if (std::find(ids->begin(), ids->end(), select_option_) == ids->end())
+      throw Error("--select: atom " + std::to_string(select_option_) + " is not in frame " + std::to_string(loop.source().frame()) +
+                  " (its elements are named by their atom ids)");
+    return;
+  }
   const std::int64_t n = loop.source().elements().size();
   const bool book = state_.book_numbering;
   if (!(book ? (select_option_ < 1 || select_option_ > n) : select_option_ >= n)) return;
@@ -161,6 +168,12 @@ void GlView::source_loaded(const FrameLoop& loop, bool fit) {
   if (!loaded_scene_.empty() && loaded_scene_ != loop.source().scene().path) {
     state_.selected = -1;
     stepper_->focus_element = -1;
+  }
+  // --select on a dump's first frame names an atom id (as shown), not a row.
+  const std::vector<std::int64_t>* ids = loop.source().element_ids(loop.source().frame());
+  if (loaded_scene_.empty() && select_option_ >= 0 && ids != nullptr) {
+    const auto it = std::find(ids->begin(), ids->end(), select_option_);
+    state_.selected = it == ids->end() ? -1 : static_cast<ElementId>(it - ids->begin());
   }
   loaded_scene_ = loop.source().scene().path;
   showed_scene_ = loop.source().has_scene();

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "app/gl_view.hpp"
+#include "core/error.hpp"
 #include "io/png.hpp"
 #include "render/gl_context.hpp"
 
@@ -100,6 +101,21 @@ TEST(WindowAtoms, AViolationsPairFollowsItsAtomsAndIsDroppedWhenOneIsGone) {
   rig.frames(1);
   EXPECT_FALSE(rig.view->state().selected_pair.has_value());
   EXPECT_EQ(rig.view->state().selected, 1) << "atom 10 is still there";
+}
+
+// --select names an atom id on a dump's frames (what the panels show), and refuses one not there.
+TEST(WindowAtoms, SelectNamesAnAtomId) {
+  ViewOptions o;
+  o.select = 30;
+  {
+    AtomRig rig(atoms_come_and_go(), o);  // (one view, one ImGui context, at a time)
+    EXPECT_NO_THROW(rig.view->check_selection(rig.loop));
+    EXPECT_EQ(rig.view->state().selected, 2);
+  }
+  o.select = 2;  // a row, not an atom of frame 0
+  AtomRig missing(atoms_come_and_go(), o);
+  EXPECT_THROW(missing.view->check_selection(missing.loop), Error);
+  EXPECT_EQ(missing.view->state().selected, -1);
 }
 
 // Rows are the elements when the frames carry no ids: the selection stays on its row.
