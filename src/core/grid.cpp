@@ -56,10 +56,12 @@ void fit_periodic_axis(Grid& g, const Elements& e, const GridOptions& options, i
   g.periodic[a] = true;
   g.period[a] = period;
   const double cells = std::floor(period * g.inv_cell_size);
+  // The cells are a few ulps wider than d when d is the largest diameter (integerisation_scale).
+  const char* widened = "; cells are a few ulps wider than a cell size equal to the largest diameter: give a larger --cell-size";
   if (!(cells >= 3)) {
     throw Error(std::string(axis) + " is periodic over L = " + fmt(period) + " with cell size " + fmt(g.cell_size) +
                 ": " + fmt_count(cells) + " cells; the wrap needs at least 3 (a cell's left and right neighbour " +
-                "would be the same cell)");
+                "would be the same cell)" + (std::floor(period / g.cell_size) >= 3 ? widened : ""));
   }
   if (!(cells <= static_cast<double>(kMaxCellsPerSide))) {
     throw Error(std::string("the grid would need ") + fmt_count(cells) + " cells along periodic " + axis +
