@@ -10,6 +10,7 @@
 #include "core/brute.hpp"
 #include "core/detector.hpp"
 #include "core/error.hpp"
+#include "core/locate.hpp"
 #include "core/nbs.hpp"
 #include "physics/box2d_detector.hpp"
 
@@ -249,6 +250,24 @@ TEST(Periodic, TracedNbsVisitsTheWrappedCells) {
   }
   EXPECT_TRUE(visited);
   EXPECT_TRUE(tested);
+}
+
+TEST(Periodic, LocateKnowsWrappedNeighbours) {
+  // A trace where element 0 (cell (0, 0)) visits cell (9, 9) across both boundaries and tests nothing.
+  std::vector<TraceEvent> events(1);
+  events[0].op = TraceOp::VisitCell;
+  events[0].element = 0;
+  events[0].cell[0] = events[0].cell[1] = 9;
+  PairCells cells;
+  cells.i = {0, 0, -1};
+  cells.j = {9, 9, -1};
+  EXPECT_NE(locate_pair(events, 0, 1, cells, 2).finding, PairFinding::CellVisited);  // open: not neighbours
+  cells.wrap = {10, 10, 0};
+  const PairLocation at = locate_pair(events, 0, 1, cells, 2);
+  EXPECT_EQ(at.finding, PairFinding::CellVisited);
+  EXPECT_EQ(at.scanner, 0);
+  cells.j = {5, 9, -1};  // not a neighbour even wrapped
+  EXPECT_EQ(locate_pair(events, 0, 1, cells, 2).finding, PairFinding::NotInTrace);
 }
 
 TEST(Periodic, WrapIntoBox) {
