@@ -196,8 +196,11 @@ void NbsDetector::run_2d(const Elements& e, const DetectOptions& options, PairLi
 }
 
 void NbsDetector::detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) {
-  // The fast path does not wrap: a periodic frame runs the book's loops, which do.
-  if (elements.box.any()) return detect_book(elements, options, out_pairs);
+  // The fast path does not wrap: a periodic frame runs the book's loops, which do. Only the frame's
+  // own axes count (a 2D LAMMPS dump flags z periodic).
+  bool wraps = false;
+  for (int a = 0; a < elements.dim; ++a) wraps = wraps || elements.box.periodic[a];
+  if (wraps) return detect_book(elements, options, out_pairs);
   if (elements.dim == 3) return run_3d_fast(elements, options, out_pairs);
   run_2d_fast(elements, options, out_pairs);
 }

@@ -228,6 +228,17 @@ TEST(Periodic, OtherDetectorsRefuseByName) {
     }
   }
   EXPECT_GE(refused, 4);  // tree, sort, screen, box2d
+  // A 2D frame whose z is flagged periodic (as LAMMPS writes 2D runs) is open space for everyone.
+  Elements flat;
+  flat.box.periodic[2] = true;
+  flat.box.hi[2] = 1.0;
+  flat.push_back(0.02, 0.1, 0, 0.05);
+  flat.push_back(0.09, 0.1, 0, 0.05);
+  for (const DetectorInfo& info : detector_infos()) {
+    PairList pairs;
+    EXPECT_NO_THROW(info.make()->detect(flat, {}, pairs)) << info.name;
+    EXPECT_EQ(pairs, (PairList{{0, 1}})) << info.name;
+  }
   EXPECT_TRUE(detector_info("nbs").periodic);
   EXPECT_TRUE(detector_info("brute").periodic);
 }
