@@ -8,9 +8,10 @@ arithmetic on the doubles as read, minimum image on the axes BOX BOUNDS flags `p
 
 A pair on which the two disagree is "within the data's precision" when its gap |c_i - c_j| - (r_i + r_j)
 is no larger than the error the printed digits allow (half a unit of each number's last printed digit,
-summed along the pair): a dump printed with %g (6 digits) cannot say which side such a pair is on.
+summed along the pair; see print_errors): a dump printed with %g (6 digits) cannot say which side
+such a pair is on.
 
-Usage: check_contacts.py [--band] 'ATOMS_GLOB' 'CONTACTS_GLOB'
+Usage: check_contacts.py [--band] 'ATOMS_GLOB' 'CONTACTS_GLOB'    (or --self-test: hand-made frames)
   One line per frame (timestep, atoms, contacts, and the pairs that differ), then a summary line.
   Exit 0: every frame's list equals the exact one (with --band: every difference is within the data's
   precision); 1: a difference, each named "timestep T: contact (i, j) ..."; 2: unreadable input.
@@ -18,6 +19,7 @@ Usage: check_contacts.py [--band] 'ATOMS_GLOB' 'CONTACTS_GLOB'
 import glob
 import math
 import sys
+from decimal import Decimal
 from fractions import Fraction
 
 
@@ -25,11 +27,27 @@ class InputError(Exception):
     """Bad input: reported as `check_contacts: error: <where>: <what>` and exit 2."""
 
 
-def last_digit_half_unit(text):
-    """Half a unit of the last digit `text` prints (0.0015 -> 5e-5, 1.2e-03 -> 5e-5), as a float."""
-    mantissa, _, exponent = text.lower().partition("e")
-    decimals = len(mantissa.partition(".")[2])
-    return 0.5 * 10.0 ** (-decimals + (int(exponent) if exponent else 0))
+def print_errors(texts):
+    """The most each printed number can differ from the value it stands for (half a unit of a digit).
+
+    A %g-style format (LAMMPS's default %g, or %.17g) drops trailing zeros: %.17g prints 0.0015 as
+    `0.0015`, which is exact to 17 digits, not to 4. So when no number of the frame ends its fraction
+    in a zero, each is taken as exact to the most significant digits any of them shows (17 for %.17g, 6
+    for %g; `0` then exact); otherwise (a fixed format, "%.6f") to its own last printed digit.
+    """
+    numbers = [Decimal(text) for text in texts]
+    fixed = any(n.as_tuple().exponent < 0 and n.as_tuple().digits[-1] == 0 and n != 0 for n in numbers)
+    digits = max((len(n.normalize().as_tuple().digits) for n in numbers if n != 0), default=1)
+    errors = []
+    for n in numbers:
+        last = 0.5 * 10.0 ** n.as_tuple().exponent
+        if fixed:
+            errors.append(last)
+        elif n == 0:
+            errors.append(0.0)
+        else:
+            errors.append(min(last, 0.5 * 10.0 ** (n.adjusted() - digits + 1)))
+    return errors
 
 
 def frames_of(path):
@@ -77,7 +95,10 @@ def read_atoms(pattern):
                     raise InputError(f"{where}: atom {atom} twice")
                 texts = [row[c] for c in columns[1:]]
                 floats = [float(t) for t in texts]
-                atoms[atom] = ([Fraction(f) for f in floats], [last_digit_half_unit(t) for t in texts], floats)
+                atoms[atom] = [[Fraction(f) for f in floats], texts, floats]
+            errors = print_errors([t for data in atoms.values() for t in data[1]])
+            for index, data in enumerate(atoms.values()):
+                data[1] = errors[4 * index:4 * index + 4]
             frames[timestep] = (box, atoms)
     if not frames:
         raise InputError(f"'{pattern}': no file matches")
@@ -196,8 +217,62 @@ def check_frame(timestep, box, atoms, listed, band):
     return messages, outside, inside, len(exact)
 
 
+def frame_text(bounds, rows):
+    """A one-frame `dump custom` (bounds "pp pp ff" and the rows "id x y z r") for the self-test."""
+    lines = ["ITEM: TIMESTEP", "500", "ITEM: NUMBER OF ATOMS", str(len(rows)), f"ITEM: BOX BOUNDS {bounds}",
+             "0 10", "0 10", "0 10", "ITEM: ATOMS id type x y z radius"]
+    return "\n".join(lines + [f"{r.split()[0]} 1 {' '.join(r.split()[1:])}" for r in rows]) + "\n"
+
+
+def contacts_text(pairs):
+    """A one-frame `dump local` of pair/gran/local pos id for the self-test."""
+    lines = ["ITEM: TIMESTEP", "500", "ITEM: NUMBER OF ENTRIES", str(len(pairs)), "ITEM: BOX BOUNDS ff ff ff",
+             "0 10", "0 10", "0 10", "ITEM: ENTRIES c_pgl[1] c_pgl[2] c_pgl[3] c_pgl[4] c_pgl[5] c_pgl[6] "
+             "c_pgl[7] c_pgl[8] c_pgl[9]"]
+    return "\n".join(lines + [f"0 0 0 0 0 0 {i} {j} 0" for i, j in pairs]) + "\n"
+
+
+def self_test():
+    """Hand-made frames with known answers: strictness, the minimum image, the precision band."""
+    import contextlib
+    import io
+    import os
+    import tempfile
+    touching_at_zero_gap = ["1 0 5 5 0.5", "2 1 5 5 0.5"]             # |c1 - c2| = r1 + r2 exactly
+    across_x = ["1 0.125 5 5 0.25", "2 9.875 5 5 0.25"]                # 0.25 apart through x = 0
+    printed_g = ["1 0 5 5 0.5", "2 1.00001 5 5 0.500008"]              # gap 2e-6, %g's error 6e-6
+    cases = [  # (name, bounds, rows, listed pairs, --band, expected exit)
+        ("zero gap is no strict contact", "ff ff ff", touching_at_zero_gap, [], False, 0),
+        ("zero gap listed is an extra pair", "ff ff ff", touching_at_zero_gap, [(1, 2)], False, 1),
+        ("periodic pair found by minimum image", "pp pp ff", across_x, [(2, 1)], False, 0),
+        ("periodic pair missing is named", "pp pp ff", across_x, [], False, 1),
+        ("no image without pp", "ff ff ff", across_x, [], False, 0),
+        ("%g pair within the data's precision", "ff ff ff", printed_g, [(1, 2)], True, 0),
+        ("%g pair without --band", "ff ff ff", printed_g, [(1, 2)], False, 1),
+        ("exact digits leave no band", "ff ff ff", ["1 0 5 5 0.5", "2 1.0000020000000001 5 5 0.5"],
+         [(1, 2)], True, 1),
+    ]
+    failed = 0
+    with tempfile.TemporaryDirectory() as folder:
+        for name, bounds, rows, pairs, band, want in cases:
+            atoms, contacts = os.path.join(folder, "atoms.dump"), os.path.join(folder, "contacts.dump")
+            with open(atoms, "w", encoding="ascii") as handle:
+                handle.write(frame_text(bounds, rows))
+            with open(contacts, "w", encoding="ascii") as handle:
+                handle.write(contacts_text(pairs))
+            with contextlib.redirect_stdout(io.StringIO()) as out:
+                got = main((["--band"] if band else []) + [atoms, contacts])
+            if got != want:
+                failed += 1
+                print(f"self-test FAILED: {name}: exit {got}, expected {want}\n{out.getvalue()}")
+    print(f"self-test: {len(cases) - failed} of {len(cases)} cases hold")
+    return 1 if failed else 0
+
+
 def main(argv):
     """Check every frame; print a line per frame and difference; exit 0, 1 or 2 (see the module doc)."""
+    if argv == ["--self-test"]:
+        return self_test()
     band = "--band" in argv
     args = [a for a in argv if a != "--band"]
     if len(args) != 2:
