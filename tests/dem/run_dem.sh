@@ -39,7 +39,8 @@ start=$(date +%s%N)
 "$liggghts" -in "$here/$case.in" -log log.liggghts -echo none -screen /dev/null >liggghts.out 2>&1 ||
   { tail -20 log.liggghts liggghts.out >&2 || true; fail "liggghts exited non-zero (see $out/log.liggghts)"; }
 ms=$(( ($(date +%s%N) - start) / 1000000 ))
-frames=$(ls atoms.*.dump | wc -l)
+dumps=(atoms.*.dump)
+frames=${#dumps[@]}
 echo "--- $case: liggghts ran in $ms ms, $frames frames"
 [ "$frames" -ge 2 ] || fail "expected several frames, found $frames"
 
@@ -60,7 +61,7 @@ names() {  # names FILE I J T: one line of FILE names both ids I and J, and FILE
 
 # A copy of the contacts with one contact deleted: a periodic one when the case has them (9th column
 # 1), so the check must find it across the boundary; from the middle frame.
-middle=$(ls contacts.*.dump | sort -t. -k2,2n | sed -n "$(( (frames + 1) / 2 ))p")
+middle=$(printf '%s\n' contacts.*.dump | sort -t. -k2,2n | sed -n "$(( (frames + 1) / 2 ))p")
 mkdir -p removed && cp contacts.*.dump removed/
 line=$(awk 'NR > 9 && $9 == 1 { print NR; exit }' "$middle")
 line=${line:-14}
@@ -82,7 +83,7 @@ names oracle_removed.txt "$id1" "$id2" "$timestep"
 # 3. nbscope
 help=$("$nbscope" replay --help 2>&1 || true)
 [[ "$help" == *--dump* ]] || skip "this nbscope has no 'replay --dump' yet (the oracle above passed)"
-replay=("$nbscope" replay --touching strict --algorithm recorded,nbs,brute)
+replay=("$nbscope" replay --touching strict --algorithm "recorded,nbs,brute")
 if [ "$case" = pour2d ]; then replay+=(--2d); fi  # LIGGGHTS's `dimension 2` writes z = 0: discs
 expect 0 nbscope_full.txt "${replay[@]}" --dump "$out/atoms*.dump" --contacts "$out/contacts*.dump"
 holds nbscope_full.txt "A==R held in every frame"
