@@ -8,7 +8,8 @@
 # 2. check_contacts.py (exact arithmetic, independent of nbscope) holds LIGGGHTS's lists to the exact
 #    strict contacts: equal at %.17g; at %g equal but for pairs within the data's precision; and a
 #    copy of the contacts with one line deleted fails, naming both ids and the timestep.
-# 3. nbscope replay --dump/--contacts --touching strict --algorithm recorded,nbs,brute does the same:
+# 3. nbscope replay --headless --dump/--contacts --touching strict --algorithm recorded,nbs,brute
+#    does the same:
 #    exit 0 and "A==R held in every frame" (at %g: the pairs "within the data's precision" said so,
 #    when step 2 found any), and exit 1 naming the deleted contact's ids and timestep.
 # Exit 77 (CTest's skip) when liggghts is missing or nbscope has no `replay --dump` yet, unless
@@ -83,7 +84,8 @@ names oracle_removed.txt "$id1" "$id2" "$timestep"
 # 3. nbscope
 help=$("$nbscope" replay --help 2>&1 || true)
 [[ "$help" == *--dump* ]] || skip "this nbscope has no 'replay --dump' yet (the oracle above passed)"
-replay=("$nbscope" replay --touching strict --algorithm "recorded,nbs,brute")
+# --headless: no window even when a display is there.
+replay=("$nbscope" replay --headless --touching strict --algorithm "recorded,nbs,brute")
 if [ "$case" = pour2d ]; then replay+=(--2d); fi  # LIGGGHTS's `dimension 2` writes z = 0: discs
 expect 0 nbscope_full.txt "${replay[@]}" --dump "$out/atoms*.dump" --contacts "$out/contacts*.dump"
 holds nbscope_full.txt "A==R held in every frame"
