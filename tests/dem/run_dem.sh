@@ -22,6 +22,8 @@ nbscope=$1 src=$2 out=$3 case=$4
 here="$src/tests/dem"
 python=${PYTHON:-python3}
 [ -f "$here/$case.in" ] || { echo "run_dem.sh: error: no case '$case' ($here/$case.in)" >&2; exit 2; }
+[ -x "$nbscope" ] || { echo "run_dem.sh: error: '$nbscope' is not an executable" >&2; exit 2; }
+nbscope=$(realpath "$nbscope")  # the checks run from OUT_DIR
 
 fail() { echo "FAIL ($case): $*" >&2; exit 1; }
 skip() {  # skip WHY: exit 77 for CTest, or fail under CI=true
