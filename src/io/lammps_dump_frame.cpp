@@ -1,0 +1,126 @@
+#include "io/lammps_dump_frame.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace nbscope::dump {
+
+void RawAtoms::reserve(std::int64_t n) {
+  const auto k = static_cast<std::size_t>(std::min<std::int64_t>(n, std::int64_t{1} << 24));
+  ids.reserve(k);
+  if (with_types) types.reserve(k);
+  x.reserve(k);
+  y.reserve(k);
+  if (dim == 3) z.reserve(k);
+  r.reserve(k);
+}
+
+namespace {
+
+[[noreturn]] void repeated(const RawAtoms& raw, const DumpFrame& frame, std::uint32_t a, std::uint32_t b) {
+  const std::size_t la = raw.first_line + std::min(a, b), lb = raw.first_line + std::max(a, b);
+  const std::string path = frame.where.substr(0, frame.where.rfind(':'));
+  throw Error(path + ":" + std::to_string(lb) + ": atom id " + std::to_string(raw.ids[a]) + " appears twice in the frame of timestep " +
+              std::to_string(frame.timestep) + " (lines " + std::to_string(la) + " and " + std::to_string(lb) + ")");
+}
+
+// Row order by ascending id: a slot per id when the ids are dense (LAMMPS's 1..N with gaps), else
+// a sort of (id, row). Repeated ids are refused either way.
+std::vector<std::uint32_t> id_order(const RawAtoms& raw, const DumpFrame& where) {
+  const std::size_t n = raw.ids.size();
+  std::vector<std::uint32_t> order;
+  if (n == 0) return order;
+  const auto [lo_it, hi_it] = std::minmax_element(raw.ids.begin(), raw.ids.end());
+  const std::int64_t lo = *lo_it, hi = *hi_it;
+  constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
+  if (hi - lo < static_cast<std::int64_t>(2 * n + 1024) && hi - lo >= 0) {
+    std::vector<std::uint32_t> slot(static_cast<std::size_t>(hi - lo) + 1, kEmpty);
+    for (std::size_t k = 0; k < n; ++k) {
+      std::uint32_t& s = slot[static_cast<std::size_t>(raw.ids[k] - lo)];
+      if (s != kEmpty) repeated(raw, where, s, static_cast<std::uint32_t>(k));
+      s = static_cast<std::uint32_t>(k);
+    }
+    order.reserve(n);
+    for (std::uint32_t s : slot)
+      if (s != kEmpty) order.push_back(s);
+    return order;
+  }
+  std::vector<std::pair<std::int64_t, std::uint32_t>> keyed(n);
+  for (std::size_t k = 0; k < n; ++k) keyed[k] = {raw.ids[k], static_cast<std::uint32_t>(k)};
+  std::sort(keyed.begin(), keyed.end());
+  for (std::size_t k = 1; k < n; ++k)
+    if (keyed[k].first == keyed[k - 1].first) repeated(raw, where, keyed[k - 1].second, keyed[k].second);
+  order.resize(n);
+  for (std::size_t k = 0; k < n; ++k) order[k] = keyed[k].second;
+  return order;
+}
+
+// `column` in `order`, the source's memory freed.
+template <class T>
+Eigen::ArrayXd gather(std::vector<T>& column, const std::vector<std::uint32_t>& order) {
+  Eigen::ArrayXd out(static_cast<Eigen::Index>(order.size()));
+  for (std::size_t k = 0; k < order.size(); ++k) out[static_cast<Eigen::Index>(k)] = static_cast<double>(column[order[k]]);
+  std::vector<T>().swap(column);
+  return out;
+}
+
+// v moved by whole periods into [lo, hi).
+double wrap(double v, double lo, double hi) {
+  const double length = hi - lo;
+  if (v >= lo && v < hi) return v;
+  double w = v - length * std::floor((v - lo) / length);
+  if (w >= hi || w < lo) w = lo;  // rounding at the edge: x == hi is the image of lo
+  return w;
+}
+
+}  // namespace
+
+void finish_frame(RawAtoms& raw, DumpFrame& frame, const DumpOptions& options, bool scaled, double box_half, bool from_diameter) {
+  const std::vector<std::uint32_t> order = id_order(raw, frame);
+  Elements& e = frame.elements;
+  e.dim = raw.dim;
+  double length_max = 0;
+  for (int a = 0; a < raw.dim; ++a) length_max = std::max(length_max, frame.box.hi[a] - frame.box.lo[a]);
+  std::vector<double>* columns[3] = {&raw.x, &raw.y, &raw.z};
+  for (int a = 0; a < raw.dim; ++a) {
+    Eigen::ArrayXd c = gather(*columns[a], order);
+    const double lo = frame.box.lo[a], hi = frame.box.hi[a];
+    if (scaled) c = lo + c * (hi - lo);
+    const bool periodic = options.periodic ? (*options.periodic)[static_cast<std::size_t>(a)] : frame.box.flags[static_cast<std::size_t>(a)] == "pp";
+    if (periodic) {
+      if (!(hi > lo)) throw Error(frame.where + ": a periodic axis with an empty box (lo == hi)");
+      for (Eigen::Index k = 0; k < c.size(); ++k) c[k] = wrap(c[k], lo, hi);
+      e.box.periodic[a] = true;
+      e.box.lo[a] = lo;
+      e.box.hi[a] = hi;
+    }
+    if (c.size() > 0 && c.abs().maxCoeff() > kMaxCoordinate)
+      throw Error(frame.where + ": a coordinate outside the supported -1e100 to 1e100");
+    (a == 0 ? e.x : a == 1 ? e.y : e.z) = std::move(c);
+  }
+  e.r = gather(raw.r, order);
+  frame.ids.resize(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) frame.ids[k] = raw.ids[order[k]];
+  std::vector<std::int64_t>().swap(raw.ids);
+  if (raw.with_types) {
+    frame.types.resize(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) frame.types[k] = raw.types[order[k]];
+  }
+  if (options.tolerance) {
+    frame.precision = *options.tolerance;
+    return;
+  }
+  // One format prints a frame's floats (dump_modify format float/line): the most digits any shows
+  // is theirs, also for a radius whose %.17g trailing zeros were dropped (0.0015).
+  const int digits = std::max(raw.position_digits.significant, raw.radius_digits.significant);
+  double position_half = raw.position_digits.half_unit(digits);
+  if (scaled) position_half = position_half * length_max + box_half;
+  const double radius_half = raw.radius_digits.half_unit(digits) / (from_diameter ? 2 : 1);
+  frame.precision = 2 * std::sqrt(static_cast<double>(raw.dim)) * position_half + 2 * radius_half;
+}
+
+}  // namespace nbscope::dump
