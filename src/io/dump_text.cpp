@@ -1,5 +1,7 @@
 #include "io/dump_text.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
 #include <zlib.h>
 
 #include <cerrno>
@@ -26,10 +28,22 @@ DumpText::DumpText(const std::string& path) : path_(path) {
   if (path.empty()) throw Error("dump file: an empty path");
   if (!std::filesystem::exists(path, ec)) throw Error(path + ": no such file");
   if (std::filesystem::is_directory(path, ec)) throw Error(path + ": a directory, not a dump file");
-  gzFile gz = gzopen(path.c_str(), "rb");
-  if (gz == nullptr) throw Error(path + ": cannot open: " + std::strerror(errno));
-  gzbuffer(gz, 1U << 20);
-  gz_ = gz;
+  fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd_ < 0) throw Error(path + ": cannot open: " + std::strerror(errno));
+  unsigned char magic[2] = {0, 0};
+  const bool gzip = ::pread(fd_, magic, 2, 0) == 2 && magic[0] == 0x1f && magic[1] == 0x8b;
+  if (gzip) {
+    gzFile gz = gzdopen(fd_, "rb");  // owns fd_ from here
+    if (gz == nullptr) {
+      ::close(fd_);
+      throw Error(path + ": cannot open: " + std::strerror(errno));
+    }
+    fd_ = -1;
+    gzbuffer(gz, 1U << 20);
+    gz_ = gz;
+  }
+  capacity_ = kChunk + kMaxLineBytes + 2;
+  buf_ = std::make_unique_for_overwrite<char[]>(capacity_);
 }
 
 DumpText::DumpText(const std::string& text, const std::string& where) : path_(where), data_(text), end_(true) {
@@ -38,6 +52,7 @@ DumpText::DumpText(const std::string& text, const std::string& where) : path_(wh
 
 DumpText::~DumpText() {
   if (gz_ != nullptr) gzclose(static_cast<gzFile>(gz_));
+  if (fd_ >= 0) ::close(fd_);
 }
 
 // A NUL byte in data_[from..] is refused with its line and byte.
@@ -52,24 +67,30 @@ void DumpText::check_chunk(std::size_t from) {
 
 bool DumpText::fill() {
   if (end_) return false;
-  buf_.erase(0, begin_);
+  const std::size_t rest = data_.size() - begin_;
+  std::memmove(buf_.get(), data_.data() + begin_, rest);
   base_ += begin_;
   begin_ = 0;
-  const std::size_t old = buf_.size();
-  buf_.resize(old + kChunk);
-  const int got = gzread(static_cast<gzFile>(gz_), buf_.data() + old, static_cast<unsigned>(kChunk));
-  if (got < 0) {
-    int code = 0;
-    const char* what = gzerror(static_cast<gzFile>(gz_), &code);
-    throw Error(path_ + ": cannot read the dump file: " + (code == Z_ERRNO ? std::strerror(errno) : what));
+  const std::size_t room = capacity_ - rest;
+  long got = 0;
+  if (gz_ != nullptr) {
+    got = gzread(static_cast<gzFile>(gz_), buf_.get() + rest, static_cast<unsigned>(room));
+    if (got < 0) {
+      int code = 0;
+      const char* what = gzerror(static_cast<gzFile>(gz_), &code);
+      throw Error(path_ + ": cannot read the dump file: " + (code == Z_ERRNO ? std::strerror(errno) : what));
+    }
+  } else {
+    do got = ::read(fd_, buf_.get() + rest, room);
+    while (got < 0 && errno == EINTR);
+    if (got < 0) throw Error(path_ + ": cannot read the dump file: " + std::strerror(errno));
   }
-  buf_.resize(old + static_cast<std::size_t>(got));
-  data_ = buf_;
+  data_ = std::string_view(buf_.get(), rest + static_cast<std::size_t>(got));
   if (got == 0) {
     end_ = true;
     return false;
   }
-  check_chunk(old);
+  check_chunk(rest);
   return true;
 }
 

@@ -2,6 +2,7 @@
 // zlib (gzip or plain text alike), with the text readers' checks (io/input_file.hpp).
 #pragma once
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -33,8 +34,10 @@ class DumpText {
   void check_chunk(std::size_t from);
 
   std::string path_;
-  void* gz_ = nullptr;      // gzFile, or null for memory
-  std::string buf_;         // a file's unread bytes start at begin_
+  void* gz_ = nullptr;      // gzFile for a gzip file
+  int fd_ = -1;             // a plain file, read as it is (no copy through zlib)
+  std::unique_ptr<char[]> buf_;  // a file's bytes: unread from begin_ (not zero-filled: no memset per chunk)
+  std::size_t capacity_ = 0;
   std::string_view data_;   // the text being cut into lines (buf_ or the caller's)
   std::size_t begin_ = 0;
   std::size_t base_ = 0;    // offset in the input of data_[0]

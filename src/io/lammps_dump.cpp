@@ -192,7 +192,10 @@ class CustomReader {
       const Column role = lay.roles[c];
       if (role == Column::kOther) continue;
       if (role == Column::kId || role == Column::kType) {
-        const std::int64_t v = dump::parse_integer(w, text_.at(), kColumnName[static_cast<int>(role)], false);
+        std::int64_t v = 0;
+        const auto [end_int, ec_int] = std::from_chars(w.data(), w.data() + w.size(), v);
+        if (ec_int != std::errc() || end_int != w.data() + w.size())  // the message's path
+          v = dump::parse_integer(w, text_.at(), kColumnName[static_cast<int>(role)], false);
         (role == Column::kId ? id : type) = v;
         continue;
       }

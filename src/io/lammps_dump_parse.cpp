@@ -2,21 +2,23 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstring>
 
 #include "io/excerpt.hpp"
 
 namespace nbscope::dump {
 
 void Digits::add(std::string_view word, double value) {
-  int count = 0;
-  bool leading = true;
-  for (char ch : word) {
-    if (ch == 'e' || ch == 'E') break;
-    if (ch < '0' || ch > '9') continue;
-    if (leading && ch == '0') continue;
-    leading = false;
-    ++count;
-  }
+  const char* b = word.data();
+  const char* e = b + word.size();
+  for (const char* q = e - 1; q >= b && q + 6 >= e; --q)  // an exponent is in the last few characters
+    if (*q == 'e' || *q == 'E') {
+      e = q;
+      break;
+    }
+  if (b < e && (*b == '-' || *b == '+')) ++b;
+  while (b < e && (*b == '0' || *b == '.')) ++b;  // leading zeros are no significant digits
+  const auto count = static_cast<int>(e - b) - (std::memchr(b, '.', static_cast<std::size_t>(e - b)) != nullptr ? 1 : 0);
   significant = std::max(significant, count);
   largest = std::max(largest, std::abs(value));
 }
@@ -34,15 +36,6 @@ std::string_view item_of(std::string_view line) {
   while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) line.remove_prefix(1);
   while (!line.empty() && (line.back() == ' ' || line.back() == '\t')) line.remove_suffix(1);
   return line.empty() ? std::string_view("", 0) : line;
-}
-
-bool next_word(const char*& p, const char* end, std::string_view& word) {
-  while (p < end && (*p == ' ' || *p == '\t')) ++p;
-  if (p == end) return false;
-  const char* start = p;
-  while (p < end && *p != ' ' && *p != '\t') ++p;
-  word = std::string_view(start, static_cast<std::size_t>(p - start));
-  return true;
 }
 
 std::vector<std::string_view> words_of(std::string_view line) {

@@ -16,7 +16,14 @@ namespace nbscope::dump {
 // "ITEM: NUMBER OF ATOMS" -> "NUMBER OF ATOMS"; a view with a null data() for a line that is no ITEM.
 std::string_view item_of(std::string_view line);
 // The next word of [p, end) (blank-separated) into `word`; false when none is left.
-bool next_word(const char*& p, const char* end, std::string_view& word);
+inline bool next_word(const char*& p, const char* end, std::string_view& word) {
+  while (p < end && (*p == ' ' || *p == '\t')) ++p;
+  if (p == end) return false;
+  const char* start = p;
+  while (p < end && *p != ' ' && *p != '\t') ++p;
+  word = std::string_view(start, static_cast<std::size_t>(p - start));
+  return true;
+}
 // The words of `line`.
 std::vector<std::string_view> words_of(std::string_view line);
 // An integer column: `2753`, or with `allow_float` `2753.0` too (LAMMPS writes local ids as floats);
