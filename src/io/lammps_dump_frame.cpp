@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 
@@ -36,6 +37,11 @@ std::vector<std::uint32_t> id_order(const RawAtoms& raw, const DumpFrame& where)
   if (n == 0) return order;
   const auto [lo_it, hi_it] = std::minmax_element(raw.ids.begin(), raw.ids.end());
   const std::int64_t lo = *lo_it, hi = *hi_it;
+  if (std::adjacent_find(raw.ids.begin(), raw.ids.end(), std::greater_equal<>()) == raw.ids.end()) {
+    order.resize(n);  // `dump_modify sort id`: already in order
+    for (std::size_t k = 0; k < n; ++k) order[k] = static_cast<std::uint32_t>(k);
+    return order;
+  }
   constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
   if (hi - lo < static_cast<std::int64_t>(2 * n + 1024) && hi - lo >= 0) {
     std::vector<std::uint32_t> slot(static_cast<std::size_t>(hi - lo) + 1, kEmpty);
@@ -103,12 +109,12 @@ void finish_frame(RawAtoms& raw, DumpFrame& frame, const DumpOptions& options, b
     (a == 0 ? e.x : a == 1 ? e.y : e.z) = std::move(c);
   }
   e.r = gather(raw.r, order);
-  frame.ids.resize(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) frame.ids[k] = raw.ids[order[k]];
+  frame.ids.reserve(order.size());
+  for (std::uint32_t k : order) frame.ids.push_back(raw.ids[k]);
   std::vector<std::int64_t>().swap(raw.ids);
   if (raw.with_types) {
-    frame.types.resize(order.size());
-    for (std::size_t k = 0; k < order.size(); ++k) frame.types[k] = raw.types[order[k]];
+    frame.types.reserve(order.size());
+    for (std::uint32_t k : order) frame.types.push_back(raw.types[k]);
   }
   if (options.tolerance) {
     frame.precision = *options.tolerance;
