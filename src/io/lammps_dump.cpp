@@ -159,7 +159,8 @@ class CustomReader {
     f.box = header.box;
     const Layout lay = layout_of(names, at, options_);
     dump::RawAtoms raw(lay.has_z ? 3 : 2, lay.has_type);
-    raw.reserve(*header.atoms);
+    // Slots by id only for as many rows as the text left can hold (a row is 8 bytes or more).
+    raw.start(*header.atoms, static_cast<std::uint64_t>(*header.atoms) <= text_.bytes_left() / 8);
     raw.first_line = text_.line_number() + 1;
     for (std::int64_t k = 0; k < *header.atoms; ++k) {
       std::string_view line;

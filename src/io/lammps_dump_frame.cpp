@@ -10,24 +10,70 @@
 
 namespace nbscope::dump {
 
-void RawAtoms::reserve(std::int64_t n) {
-  const auto k = static_cast<std::size_t>(std::min<std::int64_t>(n, std::int64_t{1} << 24));
-  ids.reserve(k);
-  if (with_types) types.reserve(k);
-  x.reserve(k);
-  y.reserve(k);
-  if (dim == 3) z.reserve(k);
-  r.reserve(k);
+void RawAtoms::start(std::int64_t n, bool by_id_allowed) {
+  by_id = by_id_allowed && n > 0 && n <= kMaxElements;
+  if (by_id) {
+    const auto k = static_cast<std::size_t>(n);
+    x.resize(n);
+    y.resize(n);
+    if (dim == 3) z.resize(n);
+    r.resize(n);
+    ids.assign(k, 0);
+    if (with_types) types.assign(k, 0);
+    file_row.assign(k, 0);
+    size = n;
+    return;
+  }
+  grow(std::min<std::int64_t>(n, std::int64_t{1} << 24));
+}
+
+void RawAtoms::grow(Eigen::Index n) {
+  n = std::max(n, size);
+  ids.reserve(static_cast<std::size_t>(n));
+  if (with_types) types.reserve(static_cast<std::size_t>(n));
+  file_row.reserve(static_cast<std::size_t>(n));
+  x.conservativeResize(n);
+  y.conservativeResize(n);
+  if (dim == 3) z.conservativeResize(n);
+  r.conservativeResize(n);
+}
+
+void RawAtoms::leave_by_id() {
+  by_id = false;
+  Eigen::Index kept = 0;
+  for (Eigen::Index k = 0; k < size; ++k) {
+    const auto s = static_cast<std::size_t>(k);
+    if (ids[s] == 0) continue;
+    const auto d = static_cast<std::size_t>(kept);
+    x[kept] = x[k];
+    y[kept] = y[k];
+    if (dim == 3) z[kept] = z[k];
+    r[kept] = r[k];
+    ids[d] = ids[s];
+    if (with_types) types[d] = types[s];
+    file_row[d] = file_row[s];
+    ++kept;
+  }
+  size = kept;
+  const auto n = static_cast<std::size_t>(kept);
+  ids.resize(n);
+  if (with_types) types.resize(n);
+  file_row.resize(n);
 }
 
 namespace {
 
-[[noreturn]] void repeated(const RawAtoms& raw, const DumpFrame& frame, std::uint32_t a, std::uint32_t b) {
-  const std::size_t la = raw.first_line + std::min(a, b), lb = raw.first_line + std::max(a, b);
+}  // namespace
+
+void repeated_id(const RawAtoms& raw, const DumpFrame& frame, std::uint32_t a, std::uint32_t b) {
+  const std::size_t la = raw.first_line + std::min(raw.file_row[a], raw.file_row[b]);
+  const std::size_t lb = raw.first_line + std::max(raw.file_row[a], raw.file_row[b]);
   const std::string path = frame.where.substr(0, frame.where.rfind(':'));
   throw Error(path + ":" + std::to_string(lb) + ": atom id " + std::to_string(raw.ids[a]) + " appears twice in the frame of timestep " +
               std::to_string(frame.timestep) + " (lines " + std::to_string(la) + " and " + std::to_string(lb) + ")");
 }
+
+namespace {
 
 // Row order by ascending id: a slot per id when the ids are dense (LAMMPS's 1..N with gaps), else
 // a sort of (id, row). Repeated ids are refused either way.
@@ -47,7 +93,7 @@ std::vector<std::uint32_t> id_order(const RawAtoms& raw, const DumpFrame& where)
     std::vector<std::uint32_t> slot(static_cast<std::size_t>(hi - lo) + 1, kEmpty);
     for (std::size_t k = 0; k < n; ++k) {
       std::uint32_t& s = slot[static_cast<std::size_t>(raw.ids[k] - lo)];
-      if (s != kEmpty) repeated(raw, where, s, static_cast<std::uint32_t>(k));
+      if (s != kEmpty) repeated_id(raw, where, s, static_cast<std::uint32_t>(k));
       s = static_cast<std::uint32_t>(k);
     }
     order.reserve(n);
@@ -59,19 +105,40 @@ std::vector<std::uint32_t> id_order(const RawAtoms& raw, const DumpFrame& where)
   for (std::size_t k = 0; k < n; ++k) keyed[k] = {raw.ids[k], static_cast<std::uint32_t>(k)};
   std::sort(keyed.begin(), keyed.end());
   for (std::size_t k = 1; k < n; ++k)
-    if (keyed[k].first == keyed[k - 1].first) repeated(raw, where, keyed[k - 1].second, keyed[k].second);
+    if (keyed[k].first == keyed[k - 1].first) repeated_id(raw, where, keyed[k - 1].second, keyed[k].second);
   order.resize(n);
   for (std::size_t k = 0; k < n; ++k) order[k] = keyed[k].second;
   return order;
 }
 
-// `column` in `order`, the source's memory freed.
-template <class T>
-Eigen::ArrayXd gather(std::vector<T>& column, const std::vector<std::uint32_t>& order) {
-  Eigen::ArrayXd out(static_cast<Eigen::Index>(order.size()));
-  for (std::size_t k = 0; k < order.size(); ++k) out[static_cast<Eigen::Index>(k)] = static_cast<double>(column[order[k]]);
-  std::vector<T>().swap(column);
-  return out;
+// The rows put in `order` (order[k]: the row that goes to k) in place, cycle by cycle; `order`
+// becomes the identity.
+void permute(RawAtoms& raw, std::vector<std::uint32_t>& order) {
+  Eigen::ArrayXd* cols[4] = {&raw.x, &raw.y, &raw.r, &raw.z};
+  const int ncols = raw.dim == 3 ? 4 : 3;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (order[i] == i) continue;
+    double saved[4];
+    for (int c = 0; c < ncols; ++c) saved[c] = (*cols[c])[static_cast<Eigen::Index>(i)];
+    const std::int64_t saved_id = raw.ids[i];
+    const std::int32_t saved_type = raw.with_types ? raw.types[i] : 0;
+    std::size_t j = i;
+    for (;;) {
+      const std::size_t k = order[j];
+      order[j] = static_cast<std::uint32_t>(j);
+      const auto dj = static_cast<Eigen::Index>(j), dk = static_cast<Eigen::Index>(k);
+      if (k == i) {
+        for (int c = 0; c < ncols; ++c) (*cols[c])[dj] = saved[c];
+        raw.ids[j] = saved_id;
+        if (raw.with_types) raw.types[j] = saved_type;
+        break;
+      }
+      for (int c = 0; c < ncols; ++c) (*cols[c])[dj] = (*cols[c])[dk];
+      raw.ids[j] = raw.ids[k];
+      if (raw.with_types) raw.types[j] = raw.types[k];
+      j = k;
+    }
+  }
 }
 
 // v moved by whole periods into [lo, hi).
@@ -86,14 +153,19 @@ double wrap(double v, double lo, double hi) {
 }  // namespace
 
 void finish_frame(RawAtoms& raw, DumpFrame& frame, const DumpOptions& options, bool scaled, double box_half, bool from_diameter) {
-  const std::vector<std::uint32_t> order = id_order(raw, frame);
+  if (!raw.by_id) {
+    std::vector<std::uint32_t> order = id_order(raw, frame);
+    permute(raw, order);
+  }
+  std::vector<std::uint32_t>().swap(raw.file_row);
   Elements& e = frame.elements;
   e.dim = raw.dim;
   double length_max = 0;
   for (int a = 0; a < raw.dim; ++a) length_max = std::max(length_max, frame.box.hi[a] - frame.box.lo[a]);
-  std::vector<double>* columns[3] = {&raw.x, &raw.y, &raw.z};
+  Eigen::ArrayXd* columns[3] = {&raw.x, &raw.y, &raw.z};
   for (int a = 0; a < raw.dim; ++a) {
-    Eigen::ArrayXd c = gather(*columns[a], order);
+    Eigen::ArrayXd& c = *columns[a];
+    c.conservativeResize(raw.size);
     const double lo = frame.box.lo[a], hi = frame.box.hi[a];
     if (scaled) c = lo + c * (hi - lo);
     const bool periodic = options.periodic ? (*options.periodic)[static_cast<std::size_t>(a)] : frame.box.flags[static_cast<std::size_t>(a)] == "pp";
@@ -108,14 +180,10 @@ void finish_frame(RawAtoms& raw, DumpFrame& frame, const DumpOptions& options, b
       throw Error(frame.where + ": a coordinate outside the supported -1e100 to 1e100");
     (a == 0 ? e.x : a == 1 ? e.y : e.z) = std::move(c);
   }
-  e.r = gather(raw.r, order);
-  frame.ids.reserve(order.size());
-  for (std::uint32_t k : order) frame.ids.push_back(raw.ids[k]);
-  std::vector<std::int64_t>().swap(raw.ids);
-  if (raw.with_types) {
-    frame.types.reserve(order.size());
-    for (std::uint32_t k : order) frame.types.push_back(raw.types[k]);
-  }
+  raw.r.conservativeResize(raw.size);
+  e.r = std::move(raw.r);
+  frame.ids = std::move(raw.ids);
+  frame.types = std::move(raw.types);
   if (options.tolerance) {
     frame.precision = *options.tolerance;
     return;

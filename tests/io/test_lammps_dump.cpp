@@ -67,6 +67,22 @@ TEST(LammpsDump, AtomsInAnyOrderWithGapsBecomeRowsInIdOrder) {
   EXPECT_TRUE(f.elements.box.periodic[0] && f.elements.box.periodic[2]);
 }
 
+TEST(LammpsDump, IdsOneToNPlacedAsReadAndAnIdPastNMidway) {
+  const auto dense = parse_dump_frames(frame(0, 4, kColumns, "3 1 0.3 0 0 0.01\n1 2 0.1 0 0 0.01\n4 1 0.4 0 0 0.01\n2 1 0.2 0 0 0.01\n"),
+                                       "d.dump", {})[0];
+  EXPECT_EQ(dense.ids, (std::vector<std::int64_t>{1, 2, 3, 4}));
+  EXPECT_EQ(dense.types, (std::vector<std::int32_t>{2, 1, 1, 1}));
+  for (int k = 0; k < 4; ++k) EXPECT_DOUBLE_EQ(dense.elements.x[k], 0.1 * (k + 1));
+  const auto mixed = parse_dump_frames(frame(0, 4, kColumns, "3 1 0.3 0 0 0.01\n1 2 0.1 0 0 0.01\n9 1 0.9 0 0 0.01\n2 1 0.2 0 0 0.01\n"),
+                                       "d.dump", {})[0];
+  EXPECT_EQ(mixed.ids, (std::vector<std::int64_t>{1, 2, 3, 9}));
+  EXPECT_DOUBLE_EQ(mixed.elements.x[3], 0.9);
+  EXPECT_DOUBLE_EQ(mixed.elements.x[1], 0.2);
+  EXPECT_EQ(mixed.types, (std::vector<std::int32_t>{2, 1, 1, 1}));
+  EXPECT_EQ(custom_error(frame(0, 4, kColumns, "3 1 0.3 0 0 0.01\n1 2 0.1 0 0 0.01\n9 1 0.9 0 0 0.01\n3 1 0.2 0 0 0.01\n")),
+            "d.dump:13: atom id 3 appears twice in the frame of timestep 0 (lines 10 and 13)");
+}
+
 TEST(LammpsDump, SparseIdsTakeTheSortedPath) {
   const auto f = parse_dump_frames(frame(0, 3, kColumns, "9000000000 1 0.1 0.1 0.1 0.01\n2 1 0.2 0.2 0.2 0.01\n700 1 0.3 0.3 0.3 0.01\n"),
                                    "d.dump", {})[0];
