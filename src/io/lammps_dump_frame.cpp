@@ -18,7 +18,6 @@ void RawAtoms::start(std::int64_t n, bool by_id_allowed) {
     y.resize(n);
     if (dim == 3) z.resize(n);
     r.resize(n);
-    ids.assign(k, 0);
     if (with_types) types.assign(k, 0);
     file_row.assign(k, 0);
     size = n;
@@ -41,29 +40,25 @@ void RawAtoms::grow(Eigen::Index n) {
 void RawAtoms::leave_by_id() {
   by_id = false;
   Eigen::Index kept = 0;
+  ids.reserve(static_cast<std::size_t>(size));
   for (Eigen::Index k = 0; k < size; ++k) {
     const auto s = static_cast<std::size_t>(k);
-    if (ids[s] == 0) continue;
+    if (file_row[s] == 0) continue;
     const auto d = static_cast<std::size_t>(kept);
     x[kept] = x[k];
     y[kept] = y[k];
     if (dim == 3) z[kept] = z[k];
     r[kept] = r[k];
-    ids[d] = ids[s];
+    ids.push_back(k + 1);
     if (with_types) types[d] = types[s];
-    file_row[d] = file_row[s];
+    file_row[d] = file_row[s] - 1;
     ++kept;
   }
   size = kept;
   const auto n = static_cast<std::size_t>(kept);
-  ids.resize(n);
   if (with_types) types.resize(n);
   file_row.resize(n);
 }
-
-namespace {
-
-}  // namespace
 
 void repeated_id(const RawAtoms& raw, const DumpFrame& frame, std::uint32_t a, std::uint32_t b) {
   const std::size_t la = raw.first_line + std::min(raw.file_row[a], raw.file_row[b]);
@@ -153,7 +148,10 @@ double wrap(double v, double lo, double hi) {
 }  // namespace
 
 void finish_frame(RawAtoms& raw, DumpFrame& frame, const DumpOptions& options, bool scaled, double box_half, bool from_diameter) {
-  if (!raw.by_id) {
+  if (raw.by_id) {  // every slot is filled: NUMBER OF ATOMS rows, each at its own id
+    raw.ids.resize(static_cast<std::size_t>(raw.size));
+    for (std::size_t k = 0; k < raw.ids.size(); ++k) raw.ids[k] = static_cast<std::int64_t>(k) + 1;
+  } else {
     std::vector<std::uint32_t> order = id_order(raw, frame);
     permute(raw, order);
   }

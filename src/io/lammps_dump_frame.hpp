@@ -20,9 +20,10 @@ struct RawAtoms {
   int dim;
   bool with_types;
   Eigen::ArrayXd x, y, z, r;  // rows [0, size), or slots by id while `by_id`
-  std::vector<std::int64_t> ids;  // 0: a slot not yet filled (by_id)
+  std::vector<std::int64_t> ids;  // row -> id (while by_id: empty, slot k is id k + 1)
   std::vector<std::int32_t> types;
-  std::vector<std::uint32_t> file_row;  // each row's place in the file, for messages
+  // Each row's place in the file, for messages; while by_id: place + 1 per slot, 0 for a slot not yet filled.
+  std::vector<std::uint32_t> file_row;
   Eigen::Index size = 0;
   bool by_id = false;
   std::uint32_t rows_read = 0;
@@ -34,20 +35,19 @@ struct RawAtoms {
   // One row.
   void push(std::int64_t id, std::int32_t type, const double (&pos)[3], double radius) {
     Eigen::Index k = 0;
-    if (by_id && id >= 1 && id <= x.size() && ids[static_cast<std::size_t>(id - 1)] == 0) {
+    if (by_id && id >= 1 && id <= x.size() && file_row[static_cast<std::size_t>(id - 1)] == 0) {
       k = static_cast<Eigen::Index>(id - 1);
+      file_row[static_cast<std::size_t>(k)] = rows_read + 1;
     } else {
       if (by_id) leave_by_id();
       if (size == x.size()) grow(std::max<Eigen::Index>(1024, 2 * size));
       k = size++;
-      ids.push_back(0);
+      ids.push_back(id);
       if (with_types) types.push_back(0);
-      file_row.push_back(0);
+      file_row.push_back(rows_read);
     }
-    const auto s = static_cast<std::size_t>(k);
-    ids[s] = id;
-    if (with_types) types[s] = type;
-    file_row[s] = rows_read++;
+    ++rows_read;
+    if (with_types) types[static_cast<std::size_t>(k)] = type;
     x[k] = pos[0];
     y[k] = pos[1];
     if (dim == 3) z[k] = pos[2];
