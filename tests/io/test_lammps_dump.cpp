@@ -214,6 +214,10 @@ TEST(LammpsDump, GzipFilesAndGlobsOrderedByTimestepNotName) {
   write_file(dir + "/atoms.c.dump", frame(500, 2, kColumns, rows));
   EXPECT_EQ(error_of([&] { read_dump_frames(expand_dump_spec("--dump", dir + "/atoms.*"), {}); }),
             dir + "/atoms.c.dump:1: timestep 500 is also in " + dir + "/atoms.b.dump:1 (two dumps of one run?)");
+  write_file(dir + "/bad.gz", std::string("\x1f\x8b\x08\x00garbage, not deflate data", 30));
+  EXPECT_NE(error_of([&] { read_dump_frames({dir + "/bad.gz"}, {}); }).find(dir + "/bad.gz: cannot read the dump file: "), std::string::npos);
+  EXPECT_EQ(error_of([&] { read_dump_frames({dir + "/absent.dump"}, {}); }), dir + "/absent.dump: no such file");
+  EXPECT_EQ(error_of([&] { read_dump_frames({dir}, {}); }), dir + ": a directory, not a dump file");
   EXPECT_EQ(error_of([&] { expand_dump_spec("--dump", dir + "/none.*"); }), "--dump: '" + dir + "/none.*': no file matches");
   EXPECT_EQ(error_of([&] { expand_dump_spec("--dump", dir + "/none"); }), "--dump: '" + dir + "/none': no file matches");
   fs::remove_all(dir);
