@@ -3,8 +3,10 @@
 #include <cerrno>
 #include <cstring>
 #include <iostream>
+#include <limits>
 
 #include "app/commands.hpp"
+#include "app/dump_input.hpp"
 #include "app/grid_flags.hpp"
 #include "core/detector.hpp"
 #include "core/error.hpp"
@@ -19,17 +21,22 @@ int run_dump(Args& args) {
   const auto algorithm = args.value("--algorithm");
   const GridFlags grid_flags = take_grid_flags(args);
   const std::string format = args.value("--format").value_or("json");
+  const Touching touching = take_touching(args);
+  DumpFlags dump_flags = take_dump_flags(args);
+  dump_flags.timestep = args.integer("--timestep", 0, std::numeric_limits<long long>::max());
   args.finish();
   if (!input) throw Error("dump: --input ELEMENTS.csv is required");
   if (!algorithm) throw Error("dump: --algorithm NAME is required (one of: " + detector_names() + ")");
   if (format != "json") throw Error("dump: --format: '" + format + "' is not a known format (json)");
 
   auto detector = make_detector(*algorithm);  // before reading: a bad name fails fast
-  const Elements elements = read_elements_csv(*input);
+  const InputFrame frame = read_input_frame(*input, dump_flags);
+  const Elements& elements = frame.elements;
   if (!detector->supports_dim(elements.dim))
     throw Error(*input + ": algorithm '" + *algorithm + "' does not support " + std::to_string(elements.dim) + "D elements");
 
   DetectOptions options;
+  options.touching = touching;
   options.grid = grid_options_for(grid_flags, elements.dim);
   TraceLog trace;
   trace.set_keep_tests(false);  // the arrays are all a dump needs
@@ -52,6 +59,7 @@ int run_dump(Args& args) {
   source.trace = &trace;
   source.own_bytes = detector->own_bytes();
   source.pairs = pairs.size();
+  source.ids = &frame.ids;
   // Streamed: a document of the whole dump took several times the arrays' memory.
   collector.write(source, std::cout);
   std::cout.flush();

@@ -55,12 +55,14 @@ struct GuiOptions {
   std::optional<std::int64_t> max_contacts;  // --max-contacts N: Box2D contacts a frame may create
   std::int64_t back = 0;  // --back K (scripted): after the frames, K frames back through the history, each drawn
   ViewOptions view;
+  Touching touching = Touching::inclusive;  // --touching
 };
 
 GuiOptions parse_gui_options(Args& args) {
   GuiOptions o;
   if (auto s = args.value("--scene")) o.scene = resolve_scene_path(*s);  // bundled names too (io/data_dir.hpp)
   o.algorithm = args.value("--algorithm");
+  o.touching = take_touching(args);
   if (auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);
   if (auto n = args.integer("--frames", 0, kMaxFrames)) o.frames = *n;
   if (auto mb = args.integer("--history-mb", 0, 1'000'000)) o.history_mb = *mb;
@@ -349,8 +351,11 @@ int run_replay_window(const HeadlessOptions& o) {
   loop_options.algorithm = o.algorithm;
   loop_options.fault = o.fault;
   loop_options.brute_limit = o.brute_limit;
+  loop_options.touching = o.touching;
   FrameLoop loop(loop_options);
-  load_recording_file(loop, *o.replay, o.frames);
+  loop.load_recording(read_replay_input(o));
+  if (loop.source().elements().dim == 3)
+    throw Error(*o.replay + ": the frames are 3D; the window draws 2D frames (replay them with --headless, or read them with --2d)");
   // No --algorithm: a recording that carries the user's pairs opens on them (headless does the same).
   if (o.algorithm_from_recording && loop.source().carries_pairs()) loop.pipeline().set_algorithm(kRecordedAlgorithm);
   check_step_algorithm(o.view, loop.pipeline().algorithm());
@@ -389,6 +394,7 @@ int run_gui(Args& args) {
   loop_options.fault = o.fault;
   loop_options.history_budget = static_cast<std::size_t>(o.history_mb.value_or(settings ? settings->history_mb : 256)) << 20;
   loop_options.max_contacts = o.max_contacts;
+  loop_options.touching = o.touching;
   if (o.algorithm) loop_options.algorithm = *o.algorithm;
   else if (settings && settings->algorithm) loop_options.algorithm = *settings->algorithm;
   FrameLoop loop(loop_options);

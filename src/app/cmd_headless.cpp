@@ -70,14 +70,21 @@ std::string broken_text(const AlgorithmRun& run) {
   return s;
 }
 
-// ": A==R (2, 11) given twice in the recorded pairs" for the first violation `run` lists; a
-// recording whose pairs count from 1 also gets the pair as its file numbers it.
-std::string first_violation_text(const AlgorithmRun& run, int pair_base) {
-  if (!run.first_listed) return "";
-  const Violation& v = *run.first_listed;
+// "A==R (2, 11) given twice in the recorded pairs" for violation `v`; a recording whose pairs count
+// from 1 also gets the pair as its file numbers it, a dump's frame names the atoms by their ids.
+std::string violation_text(const Violation& v, const LoopSource& source) {
   std::string pair = std::to_string(v.pair.i) + ", " + std::to_string(v.pair.j);
-  if (pair_base != 0) pair += "; the file's " + std::to_string(v.pair.i + pair_base) + "," + std::to_string(v.pair.j + pair_base);
-  return std::string(": ") + invariant_name(v.invariant) + " (" + pair + ") " + v.what;
+  if (source.element_ids(v.frame) != nullptr) {
+    pair = "atoms " + std::to_string(source.element_name(v.frame, v.pair.i)) + ", " + std::to_string(source.element_name(v.frame, v.pair.j));
+  } else if (const int base = source.carries_pairs() ? source.pair_base() : 0; base != 0) {
+    pair += "; the file's " + std::to_string(v.pair.i + base) + "," + std::to_string(v.pair.j + base);
+  }
+  return std::string(invariant_name(v.invariant)) + " (" + pair + ") " + v.what;
+}
+
+// ": A==R (2, 11) given twice in the recorded pairs" for the first violation `run` lists.
+std::string first_violation_text(const AlgorithmRun& run, const LoopSource& source) {
+  return run.first_listed ? ": " + violation_text(*run.first_listed, source) : "";
 }
 
 // The one line on stdout: what ran, whether every invariant held, where it broke, the mean timings.
@@ -100,7 +107,7 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
     failures += (failures.empty() ? "" : "; ") + (report.runs.size() > 1 ? run.algorithm + ": " : std::string()) +
                 plural(run.violations, "violation") + " in " + plural(run.frames_with_violations, "frame") + " (" + broken_text(run) +
                 "), first in frame " + std::to_string(run.first_violation_frame.value_or(-1)) +
-                first_violation_text(run, loop.source().carries_pairs() ? loop.source().pair_base() : 0);
+                first_violation_text(run, loop.source());
   }
   const std::string every = report.runs.size() > 1 ? " for every algorithm" : "";
   if (failures.empty() && loop.source().replaying()) {
@@ -111,10 +118,17 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
     s += failures;
   }
   s += " (reference " + refs_text + ")";
+  // Recorded pairs the data cannot decide: named, counted, not violations.
+  for (const AlgorithmRun& run : report.runs) {
+    if (run.boundary == 0 && run.ties == 0) continue;
+    s += "; " + (report.runs.size() > 1 ? run.algorithm + ": " : std::string());
+    if (run.boundary > 0) s += plural(run.boundary, "pair") + " at the boundary, within the data's precision";
+    if (run.ties > 0) s += std::string(run.boundary > 0 ? ", " : "") + plural(run.ties, "exact tie") + " (a contact under --touching inclusive, not strict)";
+  }
+  if (o.touching == Touching::strict) s += "; touching strict (<)";
   if (report.stopped_at) {
     const Violation& v = loop.result().report().violations.front();
-    s += "; stopped at the first violation, frame " + std::to_string(*report.stopped_at) + ": " + invariant_name(v.invariant) +
-         " (" + std::to_string(v.pair.i) + ", " + std::to_string(v.pair.j) + ") " + v.what;
+    s += "; stopped at the first violation, frame " + std::to_string(*report.stopped_at) + ": " + violation_text(v, loop.source());
   } else if (o.stop_at_violation) {
     s += "; no violation to stop at";
   }
@@ -212,6 +226,7 @@ HeadlessOptions parse_headless_options(Args& args) {
   if (const auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);
   o.brute_limit = args.integer("--brute-limit", 0, 1'000'000).value_or(o.brute_limit);
   o.quiet = args.flag("--quiet");
+  o.touching = take_touching(args);
   parse_view_options(args, true, o.view);
   o.record = args.value("--record");
   o.stop_at_violation = args.flag("--stop-at-violation");
@@ -282,6 +297,7 @@ std::unique_ptr<FrameLoop> open_headless_loop(const HeadlessOptions& o, std::vec
   lo.algorithm = o.algorithm == "all" ? "nbs" : names.front();
   lo.fault = o.fault;
   lo.brute_limit = o.brute_limit;
+  lo.touching = o.touching;
   lo.max_contacts = o.max_contacts;
   // Past frames are kept when the run goes back to one, or draws the Timeline as the window would
   // (the window's default budget), or the user asks for a budget; else none.
@@ -298,8 +314,10 @@ std::unique_ptr<FrameLoop> open_headless_loop(const HeadlessOptions& o, std::vec
   FrameLoop& loop = *owned;
   for (const std::string& name : names)
     if (name != kRecordedAlgorithm) make_detector(name);
-  if (o.replay) load_recording_file(loop, *o.replay, o.frames);
+  if (o.replay) loop.load_recording(read_replay_input(o));
   else load_scene_file(loop, o.scene);
+  if (o.replay && o.view.screenshot && loop.source().elements().dim == 3)
+    throw Error("--screenshot: " + *o.replay + ": the frames are 3D; pictures are of 2D frames (check them without --screenshot, or read them with --2d)");
   if (o.algorithm == "all") {
     names = algorithms_of(o.algorithm, loop.source().elements().size(), o.brute_limit, note, loop.source().carries_pairs());
     loop.pipeline().set_algorithm(names.front());
@@ -322,7 +340,8 @@ std::unique_ptr<FrameLoop> open_headless_loop(const HeadlessOptions& o, std::vec
 // The run's report before its first frame: what runs, on what, checked how.
 RunReport start_report(const HeadlessOptions& o, const FrameLoop& loop, const std::vector<std::string>& names, const std::string& note) {
   RunReport report;
-  report.source = o.replay ? "recording" : "scene";
+  report.source = o.dump ? "dump" : o.replay ? "recording" : "scene";
+  report.touching = o.touching == Touching::strict ? "strict" : "inclusive";
   report.scene_path = o.replay ? *o.replay : o.scene;
   report.scene_name = loop.source().scene().name;
   report.fault = fault_name(o.fault);
@@ -358,7 +377,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   const auto add_frame = [&] {
     const auto add = [&](std::size_t r, const FrameReport& f) {
       report.runs[r].add(f);
-      if (writer) writer->add_frame(r, f);
+      if (writer) writer->add_frame(r, f, loop.source().element_ids(f.frame));
     };
     add(0, loop.result().report());
     for (std::size_t lane = 1; lane < loop.result().lanes.size(); ++lane) add(lane, loop.result().lanes[lane].report);

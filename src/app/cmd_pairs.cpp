@@ -4,8 +4,10 @@
 #include <cstring>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 
 #include "app/commands.hpp"
+#include "app/dump_input.hpp"
 #include "app/grid_flags.hpp"
 #include "core/detector.hpp"
 #include "core/error.hpp"
@@ -24,13 +26,17 @@ int run_pairs(Args& args) {
   DetectOptions options;
   options.max_pairs = static_cast<std::size_t>(args.integer("--max-pairs", 0, 1'000'000'000).value_or(kDefaultMaxPairs));
   const GridFlags grid_flags = take_grid_flags(args);
+  options.touching = take_touching(args);
+  DumpFlags dump_flags = take_dump_flags(args);
+  dump_flags.timestep = args.integer("--timestep", 0, std::numeric_limits<long long>::max());
   args.finish();
-  if (!input) throw Error("pairs: --input ELEMENTS.csv is required");
+  if (!input) throw Error("pairs: --input ELEMENTS.csv (or FILE.dump) is required");
 
   auto detector = make_detector(algorithm);  // before reading: a bad name fails fast
   if (output) check_output_path(*output);    // and a bad output path before any detection
   if (output) check_outputs_distinct({{"--input", *input}}, {{"--output", *output}});
-  const Elements elements = read_elements_csv(*input);
+  const InputFrame frame = read_input_frame(*input, dump_flags);
+  const Elements& elements = frame.elements;
   if (!detector->supports_dim(elements.dim))
     throw Error(*input + ": algorithm '" + algorithm + "' does not support " + std::to_string(elements.dim) + "D elements");
   options.grid = grid_options_for(grid_flags, elements.dim);
@@ -60,9 +66,9 @@ int run_pairs(Args& args) {
     }
   }
   if (output) {
-    write_pairs_csv(*output, pairs);
+    write_pairs_csv(*output, pairs, frame.ids);
   } else {
-    write_pairs_csv(std::cout, pairs);
+    write_pairs_csv(std::cout, pairs, frame.ids);
     std::cout.flush();
     if (!std::cout) throw Error(std::string("stdout: cannot write: ") + std::strerror(errno));  // `> /dev/full`
   }
@@ -71,7 +77,10 @@ int run_pairs(Args& args) {
                plural(static_cast<long long>(elements.size()), "element").c_str(), elements.dim,
                plural(static_cast<long long>(pairs.size()), "pair").c_str(), best * 1e3);
   if (repeat > 1) std::fprintf(stderr, " (best of %lld, mean %.3f ms, all runs agree)", repeat, total / repeat * 1e3);
-  std::fprintf(stderr, ", %zu bytes of own arrays\n", detector->own_bytes());
+  std::fprintf(stderr, ", %zu bytes of own arrays", detector->own_bytes());
+  if (options.touching == Touching::strict) std::fprintf(stderr, ", touching strict (<)");
+  if (elements.box.any()) std::fprintf(stderr, ", periodic");
+  std::fputc('\n', stderr);
   return 0;
 }
 

@@ -7,8 +7,14 @@
 #include "app/commands.hpp"
 #include "app/replay.hpp"
 #include "core/error.hpp"
+#include "io/recording.hpp"
 
 namespace nbscope {
+
+Recording read_replay_input(const HeadlessOptions& o) {
+  if (o.dump) return read_dump_recording(*o.dump, o.frames);
+  return read_recording(*o.replay, o.frames);
+}
 
 int run_replay(Args& args) {
   HeadlessOptions o;
@@ -22,16 +28,31 @@ int run_replay(Args& args) {
   o.brute_limit = args.integer("--brute-limit", 0, 1'000'000).value_or(o.brute_limit);
   o.quiet = args.flag("--quiet");
   o.stop_at_violation = args.flag("--stop-at-violation");
+  o.touching = take_touching(args);
+  DumpFlags dump = take_dump_flags(args);
+  dump.dumps = args.values("--dump");
+  dump.contacts = args.values("--contacts");
+  dump.dt = args.number("--dt");
+  if (dump.dt && !(*dump.dt > 0)) throw Error("--dt: must be positive (seconds per timestep)");
   const bool window = !headless && replay_window_available();
   parse_view_options(args, !window, o.view);
   const auto file = args.positional();  // after the flags, so a flag's value is not taken for it
   if (const auto extra = args.positional()) throw Error("replay: " + *extra + ": unexpected argument (one recording at a time)");
   args.finish();
-  if (!file) throw Error("replay: FILE.nbsrec is required (nbscope replay FILE.nbsrec [--headless] ...)");
+  if (!dump.dumps.empty() || !dump.contacts.empty()) {
+    if (file) throw Error("replay: " + *file + ": give the frames either as FILE.nbsrec or with --dump, not both");
+    if (dump.dumps.empty()) throw Error("--contacts: needs --dump FILES (the frames the contacts belong to)");
+    o.replay = dump.dumps.front();
+    o.dump = std::move(dump);
+  } else if (dump.columns.numbers || dump.columns.names || dump.dt || dump.options.radius || !dump.options.type_radius.empty() ||
+             dump.options.force_2d || dump.options.tolerance || dump.options.periodic || dump.box) {
+    throw Error("replay: --contact-ids, --dt, --radius, --type-radius, --2d, --tolerance, --periodic and --box read dumps: they need --dump FILES");
+  }
+  if (!file && !o.dump) throw Error("replay: FILE.nbsrec or --dump FILES is required (nbscope replay FILE.nbsrec [--headless] ...)");
   if (o.fault == Fault::DropBox2dContact)
     throw Error(std::string("--inject-fault ") + fault_name(o.fault) +
                 ": recorded frames have no Box2D contact list (use drop-pair, drop-mask-cell, off-by-one-cell or stale-positions)");
-  o.replay = *file;
+  if (!o.dump) o.replay = *file;
   if (window) {
     if (o.algorithm == "all" || o.algorithm.find(',') != std::string::npos)
       throw Error("--algorithm: the window shows one algorithm at a time (switch with 1..9); several need --headless");

@@ -4,10 +4,16 @@
 // Index: flags | --pairs (summary, then every wrong pair with both cells and distance - radii) |
 // --arrays (the first problem in the book's terms, more, the count) | run_verify.
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <limits>
+#include <optional>
 #include <string>
 
+#include "core/contact_rule_tmp.hpp"  // TEMPORARY
 #include "app/commands.hpp"
+#include "app/dump_input.hpp"
+#include "check/report.hpp"
 #include "app/view_options.hpp"
 #include "app/verify_run.hpp"
 #include "core/detector.hpp"
@@ -38,7 +44,8 @@ struct PairsReport {
   const Elements& e;
   const Grid& grid;
   int base;
-  [[nodiscard]] std::string id(std::int64_t k) const { return std::to_string(k + base); }
+  const std::vector<std::int64_t>& ids;  // a dump's atom ids: elements are named by them
+  [[nodiscard]] std::string id(std::int64_t k) const { return std::to_string(ids.empty() ? k + base : element_name(ids, k)); }
   [[nodiscard]] std::string cell(std::int64_t k) const {
     const auto i = static_cast<ElementId>(k);
     std::array<std::int32_t, 3> c{grid.cell(e.x[i], 0), grid.cell(e.y[i], 1), e.dim == 3 ? grid.cell(e.z[i], 2) : -1};
@@ -47,22 +54,52 @@ struct PairsReport {
   // "cells (4,6) and (4,5), distance - radii = -0.0123 (overlap)"
   [[nodiscard]] std::string facts(std::int64_t i, std::int64_t j) const {
     const auto a = static_cast<ElementId>(i), b = static_cast<ElementId>(j);
-    double d2 = (e.x[a] - e.x[b]) * (e.x[a] - e.x[b]) + (e.y[a] - e.y[b]) * (e.y[a] - e.y[b]);
-    if (e.dim == 3) d2 += (e.z[a] - e.z[b]) * (e.z[a] - e.z[b]);
-    const double gap = std::sqrt(d2) - (e.r[a] + e.r[b]);
+    const double gap = contact_gap(e, a, b);
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.6g", gap);
     return "cells " + cell(i) + " and " + cell(j) + ", distance - radii = " + buf + (gap <= 0 ? " (in contact)" : " (apart)");
   }
+  // A disagreement the data cannot decide: within `precision` of touching, or an exact tie (BoundaryPair).
+  [[nodiscard]] std::optional<BoundaryPair> boundary(std::int64_t i, std::int64_t j, double precision, bool in_r) const {
+    if (i < 0 || j < 0 || i >= e.size() || j >= e.size() || i == j) return std::nullopt;
+    const auto a = static_cast<ElementId>(i), b = static_cast<ElementId>(j);
+    const double gap = contact_gap(e, a, b);
+    const bool tie = in_contact(e, a, b, Touching::inclusive) && !in_contact(e, a, b, Touching::strict);
+    if (!tie && !(std::abs(gap) <= precision)) return std::nullopt;
+    return BoundaryPair{Pair{a, b}, gap, tie ? 0.0 : precision, tie, in_r};
+  }
 };
 
+// The contacts of a dump local file for the frame `frame` (the same timestep), as given pairs of rows.
+std::vector<verify::GivenPair> given_from_contacts(const DumpFrame& frame, const std::string& path, const ContactColumns& columns) {
+  const std::vector<DumpContacts> all = read_dump_contacts({path}, columns);
+  for (const DumpContacts& c : all) {
+    if (c.timestep != frame.timestep) continue;
+    const PairList rows = contacts_as_rows(frame, c);
+    std::vector<verify::GivenPair> given(rows.size());
+    for (std::size_t k = 0; k < rows.size(); ++k) given[k] = {rows[k].i, rows[k].j, k < c.lines.size() ? c.lines[k] : 0};
+    return given;
+  }
+  throw Error(path + ": no contacts of timestep " + std::to_string(frame.timestep) + " (the frame of " + frame.where + ")");
+}
+
 int verify_pairs(const std::string& input, const std::string& pairs_path, const GridFlags& flags, int base,
-                 std::int64_t brute_limit) {
-  const Elements e = read_elements_csv(input);
-  const std::vector<verify::GivenPair> given = read_given_pairs_csv(pairs_path, base);
+                 std::int64_t brute_limit, const DumpFlags& dump, Touching touching) {
+  const InputFrame frame = read_input_frame(input, dump);
+  const Elements& e = frame.elements;
+  std::vector<verify::GivenPair> given;
+  if (is_dump_file(pairs_path)) {
+    if (!frame.dump) throw Error("--pairs: " + pairs_path + " is a dump local file: its atom ids need --input FILE.dump");
+    if (base != 0) throw Error("--base: a dump local file names atoms by their ids");
+    given = given_from_contacts(*frame.dump, pairs_path, dump.columns);
+  } else {
+    given = read_given_pairs_csv(pairs_path, base);
+  }
   DetectOptions options;
+  options.touching = touching;
   options.grid = grid_options_for(flags, e.dim);
-  const std::string reference = e.size() <= brute_limit ? "brute" : "sort";
+  // Above the limit sort; a periodic frame needs a detector that measures by the minimum image.
+  const std::string reference = e.size() <= brute_limit ? "brute" : e.box.any() ? "nbs" : "sort";
   PairList r;
   auto detector = make_detector(reference);
   Grid grid;
@@ -73,8 +110,21 @@ int verify_pairs(const std::string& input, const std::string& pairs_path, const 
     throw Error(input + ": " + err.what());
   }
   sort_pairs(r);
-  const verify::PairsVerdict v = verify::compare_pairs(e.size(), given, r);
-  const PairsReport p{e, grid, base};
+  verify::PairsVerdict v = verify::compare_pairs(e.size(), given, r);
+  const PairsReport p{e, grid, base, frame.ids};
+  // A dump's printed digits bound what it can decide: disagreements within them are at the boundary.
+  std::vector<BoundaryPair> boundary;
+  const double precision = frame.dump ? frame.precision : 0;
+  std::erase_if(v.missing, [&](const Pair& m) {
+    const auto b = p.boundary(m.i, m.j, precision, true);
+    if (b) boundary.push_back(*b);
+    return b.has_value();
+  });
+  std::erase_if(v.extra, [&](const verify::GivenPair& x) {
+    const auto b = p.boundary(std::min(x.i, x.j), std::max(x.i, x.j), precision, false);
+    if (b) boundary.push_back(*b);
+    return b.has_value();
+  });
 
   std::string summary = "nbscope verify: " + pairs_path + ": " + plural(static_cast<long long>(given.size()), "pair") +
                         " given for " + plural(static_cast<long long>(e.size()), "element") + ", the reference (" + reference +
@@ -82,7 +132,12 @@ int verify_pairs(const std::string& input, const std::string& pairs_path, const 
                         std::to_string(v.missing.size()) + " missing, " + std::to_string(v.extra.size()) + " extra, " +
                         std::to_string(v.duplicates.size()) + " duplicated, " + std::to_string(v.self.size()) +
                         " with itself, " + std::to_string(v.out_of_range.size()) + " out of range";
+  if (!boundary.empty()) summary += ", " + std::to_string(boundary.size()) + " at the boundary (not wrong: the data cannot decide them)";
+  if (touching == Touching::strict) summary += " (touching strict: <)";
   print_line(summary + (v.ok() ? ": right" : ": WRONG"));
+  for (const BoundaryPair& b : boundary)
+    print_line(std::string(b.in_r ? "boundary, not given " : "boundary, given ") + p.id(b.pair.i) + "," + p.id(b.pair.j) + ": " +
+               boundary_text(b));
   for (const Pair& m : v.missing) print_line("missing " + p.id(m.i) + "," + p.id(m.j) + ": " + p.facts(m.i, m.j));
   for (const verify::GivenPair& x : v.extra)
     print_line("extra " + p.id(x.i) + "," + p.id(x.j) + " (line " + std::to_string(x.line) + "): " + p.facts(x.i, x.j));
@@ -143,6 +198,9 @@ int run_verify(Args& args) {
   VerifyArraysInputs in = take_verify_inputs(args);
   const auto pairs = args.value("--pairs");
   const std::int64_t brute_limit = args.integer("--brute-limit", 0, 1'000'000).value_or(2000);
+  const Touching touching = take_touching(args);
+  DumpFlags dump = take_dump_flags(args);
+  dump.timestep = args.integer("--timestep", 0, std::numeric_limits<long long>::max());
   ViewOptions view;
   parse_view_options(args, true, view);
   args.finish();
@@ -160,7 +218,7 @@ int run_verify(Args& args) {
     if (in.algorithm) throw Error("--algorithm: only with --arrays (--pairs are checked against brute force, or sort above --brute-limit)");
     if (in.exact) throw Error("--exact: only with --arrays");
     if (view.screenshot) throw Error("--screenshot: only with --arrays (it draws your lists)");
-    return verify_pairs(in.elements_path, *pairs, in.grid_flags, in.base.value_or(0), brute_limit);
+    return verify_pairs(in.elements_path, *pairs, in.grid_flags, in.base.value_or(0), brute_limit, dump, touching);
   }
   const VerifyArraysRun run = run_verify_arrays(in);
   const int status = report_arrays(in, run);

@@ -4,6 +4,7 @@
 
 #include "app/command_table_parts.hpp"
 #include "app/commands.hpp"
+#include "app/dump_input.hpp"
 
 namespace nbscope {
 
@@ -199,6 +200,7 @@ CommandSpec replay_command() {
       run_replay,
       "detects and checks recorded frames (.nbsrec) again, in a window or headless",
       {"nbscope replay FILE.nbsrec [--headless] [--frames N] [--algorithm NAME[,NAME...]|all]",
+       "nbscope replay --dump 'post/atoms*.dump' [--contacts 'post/contacts*.dump'] [--dt S] [--touching strict] ...",
        "               [--report OUT.json] [--inject-fault NAME] [--brute-limit N] [--quiet]",
        "               [--stop-at-violation] [--screenshot OUT.png --size WxH --gl osmesa|egl|auto ...]"},
       {"Detects and checks recorded frames again (the first N with --frames), as headless does (--stop-at-violation too); a window "
@@ -209,6 +211,10 @@ CommandSpec replay_command() {
        "When the frames carry your simulation's pairs, --algorithm recorded checks them (the default then; nbs,recorded compares; all "
        "adds recorded last): a missing, extra, repeated or i == j pair fails (exit 1), named with its frame; of the faults only "
        "drop-pair acts on them.",
+       "--dump reads LAMMPS and LIGGGHTS dump custom files instead (id, x y [z], radius or diameter; any order, ids with gaps, atoms "
+       "lost or inserted: an element is its atom id), ordered by timestep, and --contacts the code's own contact list (dump local of "
+       "LIGGGHTS's compute pair/gran/local pos id) as the recorded pairs. LIGGGHTS counts rsq < radsum^2: compare with --touching "
+       "strict. A disagreement within what the file's printed digits resolve is listed as at the boundary, not a violation.",
        "The format (text; docs/formats.md):",
        "  nbsrec 1                 first line; '#' comments and blank lines anywhere\n"
        "  cell_size D | origin X,Y | cells NX,NY    optional, before the first frame: pin the grid\n"
@@ -243,6 +249,15 @@ const std::vector<CommandSpec>& command_table() {
   static const std::vector<CommandSpec> table = [] {
     std::vector<CommandSpec> t = {gui_command(), headless_command(), replay_command()};
     for (CommandSpec& c : file_commands()) t.push_back(std::move(c));
+    // The contact convention on every command that detects; the dump flags where frames are read.
+    for (CommandSpec& c : t) {
+      const std::string name = c.name;
+      if (name == "algorithms" || name == "scaling") continue;
+      c.groups.front().options.push_back(touching_option());
+      if (name == "replay") c.groups.insert(c.groups.begin() + 1, {"frames from LAMMPS and LIGGGHTS dumps (docs/dem.md)", dump_replay_options()});
+      if (name == "pairs" || name == "dump" || name == "verify")
+        c.groups.insert(c.groups.begin() + 1, {"--input FILE.dump: a LAMMPS or LIGGGHTS dump (docs/dem.md)", dump_input_options()});
+    }
     return t;
   }();
   return table;

@@ -65,6 +65,8 @@ struct FrameLoopOptions {
   // Every frame's violations into violation_log() (the Violations panel, --violation N); the same
   // headless runs log none (each frame's report still lists its own).
   bool log_violations = true;
+  // Whether a pair at exactly zero gap is a contact, for every detector and the check (--touching).
+  Touching touching = Touching::inclusive;
 };
 
 // What the loop last did to the frame shown, with a counter: views compare it with the generation

@@ -23,6 +23,7 @@ void FrameLoopState::detect_and_check(FrameChange::Kind kind) {
   in.source = &source();
   in.first = live ? frame_number() == 0 : replay->index() == 0;
   in.given_pairs = replay ? &replay->current().pairs : nullptr;
+  in.precision = replay ? replay->current().precision : 0;
   in.previous = [this] { return elements_before(frame_number()); };
   in.where = scene.path + ": frame " + std::to_string(frame_number()) + ": ";
   pipeline.run(in);
@@ -99,6 +100,7 @@ void FrameLoopState::accept_recorded() const {
 void FrameLoopState::build(const Scene& s) {
   check_recorded_source(pipeline.has_recorded_lane(), nullptr, s.path);
   DetectOptions opts;
+  opts.touching = options.touching;
   opts.grid = s.grid;
   // No Box2D call beside the worker's; if the new scene is refused, the step in flight stays pending.
   wait_for_worker();
@@ -135,6 +137,7 @@ void FrameLoopState::build(std::shared_ptr<const Recording> rec) {
   check_recorded_source(pipeline.has_recorded_lane(), rec.get(), rec->path);
   discard_step();  // the world it steps goes
   DetectOptions opts;
+  opts.touching = options.touching;
   Scene s;
   s.path = rec->path;
   s.name = std::filesystem::path(rec->path).stem().string();

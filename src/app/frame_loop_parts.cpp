@@ -4,6 +4,8 @@
 // Index: source | pipeline | drag.
 #include "app/frame_loop_impl.hpp"
 
+#include <algorithm>
+
 namespace nbscope {
 
 // ---- source --------------------------------------------------------------------------------
@@ -16,6 +18,16 @@ std::int64_t LoopSource::recorded_frames() const {
 }
 bool LoopSource::carries_pairs() const { return s_->replay && s_->replay->recording().has_pairs; }
 int LoopSource::pair_base() const { return s_->replay ? s_->replay->recording().pair_base : 0; }
+const std::vector<std::int64_t>* LoopSource::element_ids(std::int64_t frame) const {
+  if (!s_->replay) return nullptr;
+  const std::vector<RecordedFrame>& frames = s_->replay->recording().frames;
+  const auto it = std::lower_bound(frames.begin(), frames.end(), frame, [](const RecordedFrame& f, std::int64_t n) { return f.number < n; });
+  return it != frames.end() && it->number == frame && !it->ids.empty() ? &it->ids : nullptr;
+}
+std::int64_t LoopSource::element_name(std::int64_t frame, std::int64_t row) const {
+  const std::vector<std::int64_t>* ids = element_ids(frame);
+  return ids != nullptr && row >= 0 && static_cast<std::size_t>(row) < ids->size() ? (*ids)[static_cast<std::size_t>(row)] : row;
+}
 bool LoopSource::at_end() const { return s_->replay && !s_->replay->can_step(); }
 bool LoopSource::step_pending() const { return s_->pending(); }
 bool LoopSource::physics_overlapped() const { return s_->physics_overlapped; }

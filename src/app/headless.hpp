@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/cli.hpp"
+#include "app/dump_input.hpp"
 #include "app/view_options.hpp"
 #include "check/faults.hpp"
 #include "core/scaling.hpp"
@@ -49,7 +50,13 @@ struct HeadlessOptions {
   std::optional<std::int64_t> history_mb;  // --history-mb N: memory for kept frames (default: 256 with
                                            // --rewind, --back, --violation or --screenshot, else none)
   std::optional<std::int64_t> max_contacts;  // --max-contacts N: Box2D contacts a frame may create
+  Touching touching = Touching::inclusive;   // --touching: whether a pair at zero gap is a contact
+  std::optional<DumpFlags> dump;             // replay --dump: frames from LAMMPS/LIGGGHTS dumps (`replay` names the first)
 };
+
+// The recording `options.replay` names: a .nbsrec, or the dumps of options.dump; at most
+// options.frames frames.
+Recording read_replay_input(const HeadlessOptions& options);
 
 // Error when --stop-at-violation is combined with what it cannot show (several algorithms, --step).
 void check_stop_at_violation(const HeadlessOptions& options);

@@ -48,6 +48,9 @@ struct CheckInput {
   const WalkCheck* walks = nullptr;             // the detector's walk check, or null when not checked
   bool drop_box2d_contact = false;              // the drop-box2d-contact fault (check/faults.hpp)
   bool recorded = false;  // A is a recording's own pairs, not a detector's: violations of A say so in their words
+  // The recorded pairs' precision band (FrameInput::precision): a disagreement of A and R whose gap is
+  // within it, or an exact tie, is a BoundaryPair, not a violation. Negative: no band (a detector's pairs).
+  double precision = -1;
 };
 
 class FrameChecker {
@@ -55,8 +58,9 @@ class FrameChecker {
   explicit FrameChecker(CheckOptions options = {});
   ~FrameChecker();
 
-  // The reference detector for n elements when testing `algorithm` (see the header comment).
-  [[nodiscard]] std::string reference_for(std::int64_t n, std::string_view algorithm) const;
+  // The reference detector for n elements when testing `algorithm` (see the header comment); of a
+  // periodic frame, brute or nbs (the detectors that measure by the minimum image).
+  [[nodiscard]] std::string reference_for(std::int64_t n, std::string_view algorithm, bool periodic = false) const;
   // How the reference is chosen, in words, for reports.
   [[nodiscard]] std::string reference_policy() const;
   // Which pairs A-in-F applies to, in words, for reports.

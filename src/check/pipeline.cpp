@@ -151,6 +151,7 @@ const FrameResult& Pipeline::run(const FrameInput& in) {
       check.walks = lanes_[k].detector->walk_check();
       check.drop_box2d_contact = options_.fault == Fault::DropBox2dContact;
       check.recorded = lanes_[k].recorded != nullptr;
+      if (check.recorded) check.precision = in.precision;
       checker_.check(check, lane.report);
       if (k == 0) result_.reference = checker_.reference_pairs();
       lane.report.timings.check_ms = ms_since(t0);

@@ -37,6 +37,7 @@ struct FrameInput {
   const FrameSource* source = nullptr;
   bool first = false;                     // no frame before it: stale positions are its own
   const PairList* given_pairs = nullptr;  // the frame's own pairs (a recording's) for a `recorded` lane
+  double precision = 0;                   // the given pairs' precision band (RecordedFrame::precision; check/check.hpp)
   std::function<Elements()> previous;     // the frame before's elements, when not remembered
   std::string where;                      // "path: frame K: ", for errors
 };

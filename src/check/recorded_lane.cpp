@@ -27,7 +27,7 @@ const DetectorInfo& recorded_info() {
     d.name = std::string(kRecordedAlgorithm);
     d.summary = "the pairs a recording carries (its frames' pairs blocks), checked as any detector's";
     d.dim2 = true;
-    d.dim3 = false;
+    d.dim3 = true;  // a dump's frames may be 3D
     d.traces = false;
     d.has_lists = false;
     d.make = [] { return std::make_unique<RecordedPairsDetector>(); };

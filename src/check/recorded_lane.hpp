@@ -25,8 +25,8 @@ class RecordedPairsDetector final : public Detector {
  public:
   // "recorded".
   [[nodiscard]] std::string_view name() const override { return kRecordedAlgorithm; }
-  // A recording is 2D.
-  [[nodiscard]] bool supports_dim(int dim) const override { return dim == 2; }
+  // A .nbsrec is 2D; a dump's frames may be 3D.
+  [[nodiscard]] bool supports_dim(int dim) const override { return dim == 2 || dim == 3; }
   // The frame's pairs the next detect() returns, as recorded (they must outlive that call); null: none.
   void set_pairs(const PairList* pairs) { pairs_ = pairs; }
   // The current frame's pairs (the elements are not looked at); Error without a frame that has a
@@ -41,7 +41,7 @@ class RecordedPairsDetector final : public Detector {
   const PairList* pairs_ = nullptr;
 };
 
-// What `recorded` can do, in the registry's terms: 2D, no trace, no lists (as box2d).
+// What `recorded` can do, in the registry's terms: 2D and 3D, no trace, no lists.
 [[nodiscard]] const DetectorInfo& recorded_info();
 // recorded_info() for "recorded", else the registry's entry (Error for an unknown name).
 [[nodiscard]] const DetectorInfo& algorithm_info(std::string_view name);

@@ -1,5 +1,7 @@
 #include "check/report.hpp"
 
+#include <cstdio>
+
 namespace nbscope {
 
 const char* invariant_name(Invariant invariant) {
@@ -30,6 +32,16 @@ const char* invariant_description(Invariant invariant) {
              "cell; detectors that use the grid's own integerisation and lists hold it by construction";
   }
   return "?";
+}
+
+std::string boundary_text(const BoundaryPair& b) {
+  char buf[160];
+  if (b.tie) {
+    std::snprintf(buf, sizeof buf, "an exact tie (gap 0): a contact under --touching inclusive, not under strict");
+  } else {
+    std::snprintf(buf, sizeof buf, "at the boundary, within the data's precision (gap %.3g, resolution %.3g)", b.gap, b.resolution);
+  }
+  return buf;
 }
 
 }  // namespace nbscope

@@ -46,6 +46,22 @@ struct Violation {
   const char* what = "";     // static text: "missing from A", "extra in A", "not in Box2D's contact list", ...
 };
 
+// A pair on which A and R disagree only at the contact boundary: the recorded pairs came from a file,
+// and the gap |c_i - c_j| - (r_i + r_j) is within what its printed digits resolve, or exactly 0 (a tie
+// the two touching conventions decide differently). Listed and counted, never a violation.
+struct BoundaryPair {
+  Pair pair;
+  double gap = 0;         // |c_i - c_j| - (r_i + r_j), minimum image on periodic axes
+  double resolution = 0;  // what the data resolves (FrameInput::precision); 0 for an exact tie
+  bool tie = false;       // gap exactly 0: in contact under --touching inclusive, not under strict
+  bool in_r = false;      // R has it (the recorded pairs do not), else the reverse
+};
+// Most boundary pairs listed per frame; the count stays exact beyond it.
+inline constexpr std::size_t kMaxListedBoundaryPerFrame = 200;
+// "at the boundary, within the data's precision (gap -3.1e-08, resolution 8.7e-08)" or
+// "an exact tie (gap 0): a contact under --touching inclusive, not under strict".
+std::string boundary_text(const BoundaryPair& b);
+
 // Sizes of the frame's sets (see docs/architecture.md "Invariants").
 struct FrameCounts {
   std::int64_t elements = 0;
@@ -60,6 +76,8 @@ struct FrameCounts {
   std::int64_t same_body = 0, no_dynamic = 0, joint = 0, fixture_filter = 0, beyond_aabb = 0;
   // Tight-AABB pairs left out of AABB-in-cells: Box2D's float AABBs touch, the elements' exact boxes do not.
   std::int64_t aabb_float_rounding = 0;
+  // A==R disagreements of recorded pairs at the boundary (BoundaryPair): within the data's precision, exact ties.
+  std::int64_t boundary = 0, ties = 0;
 };
 
 // Wall-clock milliseconds of one frame's three stages.
@@ -107,6 +125,7 @@ struct FrameReport {
   CheckTimings check_timings;                          // check_ms by part (zero when not checked)
   std::array<std::int64_t, kInvariantCount> broken{};  // violations per invariant (exact)
   std::vector<Violation> violations;                   // the first kMaxListedViolationsPerFrame
+  std::vector<BoundaryPair> boundary;                  // the first kMaxListedBoundaryPerFrame (counts.boundary + ties: all)
 
   // Total violations of the frame.
   [[nodiscard]] std::int64_t violation_count() const {
@@ -161,6 +180,7 @@ struct AlgorithmRun {
   std::optional<Violation> first_listed;    // the first violation a frame lists
   std::map<std::string, std::int64_t> references;  // frames per reference detector's name
   std::int64_t last_elements = 0;           // elements of the last frame
+  std::int64_t boundary = 0, ties = 0;      // recorded pairs at the boundary (FrameCounts::boundary, ties), over the frames
   TimingStats physics, detection, check;    // FrameTimings, by stage
   std::array<TimingStats, CheckTimings::kParts> check_parts;  // CheckTimings, by part
 
@@ -176,6 +196,8 @@ struct AlgorithmRun {
     if (!first_listed && !f.violations.empty()) first_listed = f.violations.front();
     ++references[f.reference];
     last_elements = f.counts.elements;
+    boundary += f.counts.boundary;
+    ties += f.counts.ties;
     physics.add(f.timings.physics_ms);
     detection.add(f.timings.detection_ms);
     check.add(f.timings.check_ms);
@@ -194,7 +216,8 @@ struct RunReport {
   std::string reference_policy;      // how R was chosen, in words
   std::string scope_note;            // which pairs A-in-F applies to, in words (Box2D's filters)
   std::string note;                  // anything else the reader should know ("" for nothing)
-  std::string source = "scene";      // where the frames came from: "scene" (Box2D) or "recording" (.nbsrec)
+  std::string touching = "inclusive";  // the contact convention (--touching): "inclusive" or "strict"
+  std::string source = "scene";      // where the frames came from: "scene" (Box2D), "recording" (.nbsrec) or "dump" (LAMMPS/LIGGGHTS)
   std::int64_t frames_requested = 0;
   std::vector<AlgorithmRun> runs;
   // headless --rewind FROM:TO: the run went back from frame FROM to TO and simulated the frames

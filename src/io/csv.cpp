@@ -322,17 +322,18 @@ Elements read_elements_csv(const std::string& path, std::int64_t max_elements, s
   return parser.finish();
 }
 
-void write_pairs_csv(std::ostream& out, const PairList& sorted_pairs) {
+void write_pairs_csv(std::ostream& out, const PairList& sorted_pairs, const std::vector<std::int64_t>& ids) {
   // In chunks: fifty million pairs as one string would take 600 MB more than the pairs themselves.
   constexpr std::size_t kChunk = std::size_t{1} << 16;
   std::string buf = "i,j\n";
   buf.reserve(kChunk + 32);
   char num[32];
   for (const Pair& p : sorted_pairs) {
-    auto r1 = std::to_chars(num, num + sizeof num, p.i);
+    // A dump's rows ascend by id, so pairs sorted by row are sorted by id too.
+    auto r1 = ids.empty() ? std::to_chars(num, num + sizeof num, p.i) : std::to_chars(num, num + sizeof num, ids[static_cast<std::size_t>(p.i)]);
     buf.append(num, r1.ptr);
     buf.push_back(',');
-    auto r2 = std::to_chars(num, num + sizeof num, p.j);
+    auto r2 = ids.empty() ? std::to_chars(num, num + sizeof num, p.j) : std::to_chars(num, num + sizeof num, ids[static_cast<std::size_t>(p.j)]);
     buf.append(num, r2.ptr);
     buf.push_back('\n');
     if (buf.size() >= kChunk) {
@@ -343,8 +344,8 @@ void write_pairs_csv(std::ostream& out, const PairList& sorted_pairs) {
   out.write(buf.data(), static_cast<std::streamsize>(buf.size()));
 }
 
-void write_pairs_csv(const std::string& path, const PairList& sorted_pairs) {
-  write_file_atomically(path, [&](std::ostream& out) { write_pairs_csv(out, sorted_pairs); });
+void write_pairs_csv(const std::string& path, const PairList& sorted_pairs, const std::vector<std::int64_t>& ids) {
+  write_file_atomically(path, [&](std::ostream& out) { write_pairs_csv(out, sorted_pairs, ids); });
 }
 
 }  // namespace nbscope

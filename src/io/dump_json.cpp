@@ -402,6 +402,11 @@ void DumpCollector::write(const DumpSource& src, std::ostream& out) const {
     if (g.dim == 3) j.key("nz").integer(g.n[2]);
   }
   j.key("own_bytes").integer(static_cast<std::int64_t>(src.own_bytes));
+  if (src.ids != nullptr && !src.ids->empty()) {
+    j.key("ids") << "[";
+    for (std::size_t k = 0; k < src.ids->size(); ++k) (k ? text << ", " : text).integer((*src.ids)[k]);
+    text << "]";
+  }
   // Bytes of each array by name (a name declared twice keeps its first place and its last size).
   std::vector<std::pair<std::string, std::int64_t>> bytes;
   for (const TracedArray& a : log.arrays()) {

@@ -3,7 +3,8 @@
 // traced run: the state right before the phase that first uses complete lists).
 //
 // Every index is 0-based and -1 means an empty list or the end of a list. Keys (docs/formats.md "Arrays JSON"):
-//   all:     algorithm, dim, elements, pairs, cell_size, origin, nx, ny (nz in 3D), own_bytes, bytes
+//   all:     algorithm, dim, elements, pairs, cell_size, origin, nx, ny (nz in 3D), own_bytes, bytes;
+//            ids (element k is atom ids[k]) when the elements came from a LAMMPS/LIGGGHTS dump
 //   then the algorithm's arrays, as core/array_schema.hpp lays them out (screen, tree, sort, nbs 2D/3D).
 #pragma once
 #include <cstddef>
@@ -11,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "core/elements.hpp"
 #include "core/grid.hpp"
@@ -26,6 +28,7 @@ struct DumpSource {
   const TraceLog* trace = nullptr;
   std::size_t own_bytes = 0;
   std::size_t pairs = 0;
+  const std::vector<std::int64_t>* ids = nullptr;  // a dump frame's row -> atom id ("ids"), or null
 };
 
 // The dump gathered from a traced run's events as they happen (TraceLog::set_consumer), so that no

@@ -1,5 +1,5 @@
 // The headless report. Keys:
-//   nbscope_report (format version 1), source ("scene" | "recording"), scene {path, name} (a recording's
+//   nbscope_report (format version 1), source ("scene" | "recording" | "dump"), scene {path, name} (a recording's
 //   path and file stem), not_checked {invariants [names], why} (recordings: the Box2D invariants), algorithms [names], fault {name, description},
 //   reference_policy, a_in_f_scope, note, invariants [{name, description}], frames_requested,
 //   rewind (null | {from, to, frames_simulated_again, identical, first_difference}),
@@ -14,7 +14,9 @@
 //               check_ms_parts {R, F, G/T, A==R, A-in-F, T-in-A, AABB-in-cells},
 //               held {invariant: true | false | null (not checked)},
 //               violations [{invariant, pair [i, j], cells [[ix, iy], [ix, iy]], what}],
-//               violations_not_listed}]}].
+//               violations_not_listed, at_boundary {within_precision, exact_ties, listed [{pair, gap, resolution,
+//               tie, in ("R": not recorded, "A": recorded, not in R), what, ids}]}}]}]; with a dump's frames each
+//               violation and boundary pair also has ids [id_i, id_j] (the atoms'). touching ("inclusive" | "strict").
 #include "io/report_json.hpp"
 
 #include <algorithm>
@@ -38,7 +40,12 @@ json check_parts_json(const CheckTimings& t) {
   return parts;
 }
 
-json frame_json(const FrameReport& f) {
+// Element `row` as the frame's source names it: its atom id (a dump's), else the row.
+std::int64_t id_of(const std::vector<std::int64_t>* ids, std::int64_t row) {
+  return ids != nullptr && row >= 0 && static_cast<std::size_t>(row) < ids->size() ? (*ids)[static_cast<std::size_t>(row)] : row;
+}
+
+json frame_json(const FrameReport& f, const std::vector<std::int64_t>* ids) {
   const FrameCounts& c = f.counts;
   json held = json::object();
   for (int k = 0; k < kInvariantCount; ++k) {
@@ -52,6 +59,13 @@ json frame_json(const FrameReport& f) {
                           {"pair", {v.pair.i, v.pair.j}},
                           {"cells", {{v.cell_i.ix, v.cell_i.iy}, {v.cell_j.ix, v.cell_j.iy}}},
                           {"what", v.what}});
+    if (ids != nullptr) violations.back()["ids"] = {id_of(ids, v.pair.i), id_of(ids, v.pair.j)};
+  }
+  json boundary = json::array();
+  for (const BoundaryPair& b : f.boundary) {
+    boundary.push_back({{"pair", {b.pair.i, b.pair.j}}, {"gap", b.gap}, {"resolution", b.resolution}, {"tie", b.tie},
+                        {"in", b.in_r ? "R" : "A"}, {"what", boundary_text(b)}});
+    if (ids != nullptr) boundary.back()["ids"] = {id_of(ids, b.pair.i), id_of(ids, b.pair.j)};
   }
   char hash[24];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(f.hash));
@@ -72,7 +86,8 @@ json frame_json(const FrameReport& f) {
           {"check_ms_parts", check_parts_json(f.check_timings)},
           {"held", held},
           {"violations", violations},
-          {"violations_not_listed", f.violation_count() - static_cast<std::int64_t>(f.violations.size())}};
+          {"violations_not_listed", f.violation_count() - static_cast<std::int64_t>(f.violations.size())},
+          {"at_boundary", {{"within_precision", c.boundary}, {"exact_ties", c.ties}, {"listed", boundary}}}};
 }
 
 json timing_json(const TimingStats& t, std::int64_t frames) {
@@ -120,7 +135,7 @@ std::string head_text(const RunReport& report) {
     total += r.violations;
   }
   json not_checked = json::array();
-  if (report.source == "recording")
+  if (report.source != "scene")
     for (int k = 0; k < kInvariantCount; ++k)
       if (needs_box2d(static_cast<Invariant>(k))) not_checked.push_back(invariant_name(static_cast<Invariant>(k)));
   const json head = {{"nbscope_report", 1},
@@ -132,6 +147,7 @@ std::string head_text(const RunReport& report) {
                      {"reference_policy", report.reference_policy},
                      {"a_in_f_scope", report.scope_note},
                      {"note", report.note},
+                     {"touching", report.touching},
                      {"invariants", invariants},
                      {"frames_requested", report.frames_requested},
                      {"rewind", report.rewind ? json{{"from", report.rewind->from},
@@ -165,7 +181,9 @@ const char* run_tail_text(bool no_frames) { return no_frames ? "]\n    }" : "\n 
 const char* report_tail_text(bool no_runs) { return no_runs ? "]\n}\n" : "\n  ]\n}\n"; }
 
 // One frame's line as it stands in its run's "frames" array, with the separator before it.
-std::string frame_line(const FrameReport& f, bool first) { return (first ? "\n        " : ",\n        ") + frame_json(f).dump(); }
+std::string frame_line(const FrameReport& f, bool first, const std::vector<std::int64_t>* ids = nullptr) {
+  return (first ? "\n        " : ",\n        ") + frame_json(f, ids).dump();
+}
 
 }  // namespace
 
@@ -188,9 +206,9 @@ RunReportWriter::RunReportWriter(std::string path, std::size_t runs) : path_(std
 
 RunReportWriter::~RunReportWriter() = default;
 
-void RunReportWriter::add_frame(std::size_t run, const FrameReport& frame) {
+void RunReportWriter::add_frame(std::size_t run, const FrameReport& frame, const std::vector<std::int64_t>* ids) {
   Spool& spool = spools_.at(run);
-  spool.file->write(frame_line(frame, spool.frames == 0));
+  spool.file->write(frame_line(frame, spool.frames == 0, ids));
   ++spool.frames;
 }
 

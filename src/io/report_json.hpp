@@ -31,8 +31,9 @@ class RunReportWriter {
   RunReportWriter(const RunReportWriter&) = delete;
   RunReportWriter& operator=(const RunReportWriter&) = delete;
 
-  // Appends algorithm `run`'s report of one frame (frames in order); Error when the disk refuses it.
-  void add_frame(std::size_t run, const FrameReport& frame);
+  // Appends algorithm `run`'s report of one frame (frames in order), naming elements also by `ids`
+  // (a dump's atom ids of the frame's rows) when given; Error when the disk refuses it.
+  void add_frame(std::size_t run, const FrameReport& frame, const std::vector<std::int64_t>* ids = nullptr);
   // Where the frames stand now, and going back there (the frames added since are dropped).
   [[nodiscard]] Mark mark() const;
   void back_to(const Mark& mark);

@@ -41,6 +41,8 @@ const std::vector<ParserFile>& parser_files() {
       {"cmd_gui.cpp", {"gui"}, {}},
       {"verify_window.cpp", {"gui"}, {}},
       {"grid_flags.cpp", {"pairs", "dump", "verify", "gui"}, {}},
+      {"dump_input.cpp", {"replay", "pairs", "dump", "verify"}, {}},
+      {"touching_flag.cpp", {"gui", "headless", "replay", "pairs", "dump", "verify"}, {}},
       {"view_options.cpp", {"headless", "replay", "verify", "gui"}, {"--gl"}},
       {"scaling_flags.cpp", {"scaling", "headless"}, {}},
       {"cli_plugins.cpp", {"gui", "headless", "replay", "pairs", "dump", "scaling", "algorithms"}, {}},  // from main

@@ -1,0 +1,230 @@
+#include "core/contact_rule_tmp.hpp"  // TEMPORARY
+#include "app/dump_input.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+#include "core/error.hpp"
+#include "io/csv.hpp"
+
+namespace nbscope {
+
+namespace {
+
+// "A,B" of --contact-ids: two 1-based column numbers, or two ENTRIES names.
+ContactColumns parse_contact_ids(const std::string& text) {
+  const std::vector<std::string> parts = split_names("--contact-ids", text);
+  if (parts.size() != 2) throw Error("--contact-ids: '" + text + "' is not two columns A,B (numbers from 1, or ENTRIES names)");
+  ContactColumns c;
+  const auto number = [](const std::string& s) -> int {
+    if (s.empty() || s.size() > 6 || !std::all_of(s.begin(), s.end(), [](char ch) { return ch >= '0' && ch <= '9'; })) return 0;
+    return std::stoi(s);
+  };
+  const int a = number(parts[0]), b = number(parts[1]);
+  if (a > 0 && b > 0) c.numbers = std::array<int, 2>{a, b};
+  else if (a == 0 && b == 0) c.names = std::array<std::string, 2>{parts[0], parts[1]};
+  else throw Error("--contact-ids: '" + text + "' mixes a column number and a name (give two numbers from 1, or two names)");
+  return c;
+}
+
+// "1:0.0015,2:0.00225" of --type-radius.
+std::map<std::int64_t, double> parse_type_radius(const std::string& text) {
+  std::map<std::int64_t, double> out;
+  for (const std::string& item : split_names("--type-radius", text)) {
+    const auto colon = item.find(':');
+    const auto bad = [&] { return Error("--type-radius: '" + item + "' is not TYPE:RADIUS (e.g. 1:0.0015,2:0.00225)"); };
+    if (colon == std::string::npos) throw bad();
+    std::size_t used = 0;
+    long long type = 0;
+    double r = 0;
+    try {
+      type = std::stoll(item.substr(0, colon), &used);
+      if (used != colon) throw bad();
+      const std::string rs = item.substr(colon + 1);
+      r = std::stod(rs, &used);
+      if (used != rs.size()) throw bad();
+    } catch (const std::logic_error&) {
+      throw bad();
+    }
+    if (!(r >= kMinRadius && r <= kMaxRadius)) throw Error("--type-radius: '" + item + "': the radius must be positive and finite");
+    if (!out.emplace(type, r).second) throw Error("--type-radius: type " + std::to_string(type) + " given twice");
+  }
+  return out;
+}
+
+// "x,y[,z]" of --periodic.
+std::array<bool, 3> parse_periodic(const std::string& text) {
+  std::array<bool, 3> axes{false, false, false};
+  for (const std::string& a : split_names("--periodic", text)) {
+    if (a != "x" && a != "y" && a != "z") throw Error("--periodic: '" + a + "' is not an axis (x, y or z: e.g. --periodic x,y)");
+    axes[static_cast<std::size_t>(a[0] - 'x')] = true;
+  }
+  return axes;
+}
+
+// "XLO:XHI,YLO:YHI[,ZLO:ZHI]" of --box.
+DumpBox parse_box(const std::string& text) {
+  const std::vector<std::string> axes = split_names("--box", text);
+  const auto bad = [&] { return Error("--box: '" + text + "' is not XLO:XHI,YLO:YHI[,ZLO:ZHI] with XLO < XHI (finite numbers)"); };
+  if (axes.size() < 2 || axes.size() > 3) throw bad();
+  DumpBox box;
+  for (std::size_t a = 0; a < axes.size(); ++a) {
+    const auto colon = axes[a].find(':');
+    if (colon == std::string::npos) throw bad();
+    const std::string lo_text = axes[a].substr(0, colon), hi_text = axes[a].substr(colon + 1);
+    double lo = 0, hi = 0;
+    const auto lo_end = std::from_chars(lo_text.data(), lo_text.data() + lo_text.size(), lo);
+    const auto hi_end = std::from_chars(hi_text.data(), hi_text.data() + hi_text.size(), hi);
+    if (lo_end.ec != std::errc() || lo_end.ptr != lo_text.data() + lo_text.size() || hi_end.ec != std::errc() ||
+        hi_end.ptr != hi_text.data() + hi_text.size())
+      throw bad();
+    if (!(lo < hi) || std::abs(lo) > kMaxCoordinate || std::abs(hi) > kMaxCoordinate) throw bad();
+    box.lo[a] = lo;
+    box.hi[a] = hi;
+    box.flags[a] = "pp";
+  }
+  return box;
+}
+
+}  // namespace
+
+DumpFlags take_dump_flags(Args& args) {
+  DumpFlags f;
+  if (const auto c = args.value("--contact-ids")) f.columns = parse_contact_ids(*c);
+  f.options.radius = args.number("--radius");
+  if (f.options.radius && !(*f.options.radius >= kMinRadius && *f.options.radius <= kMaxRadius))
+    throw Error("--radius: must be positive and finite");
+  if (const auto t = args.value("--type-radius")) f.options.type_radius = parse_type_radius(*t);
+  f.options.force_2d = args.flag("--2d");
+  f.options.tolerance = args.number("--tolerance");
+  if (f.options.tolerance && !(*f.options.tolerance >= 0)) throw Error("--tolerance: must be 0 or more (a length)");
+  if (const auto p = args.value("--periodic")) f.options.periodic = parse_periodic(*p);
+  if (const auto b = args.value("--box")) f.box = parse_box(*b);
+  return f;
+}
+
+bool is_dump_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char head[5] = {};
+  in.read(head, sizeof head);
+  const std::streamsize got = in.gcount();
+  if (got >= 2 && static_cast<unsigned char>(head[0]) == 0x1f && static_cast<unsigned char>(head[1]) == 0x8b) return true;
+  return got == 5 && std::string(head, 5) == "ITEM:";
+}
+
+Recording read_dump_recording(const DumpFlags& flags, std::int64_t max_frames) {
+  if (flags.dumps.empty()) throw Error("replay: --dump FILES is required with --contacts");
+  std::vector<std::string> paths, contact_paths;
+  for (const std::string& spec : flags.dumps)
+    for (std::string& p : expand_dump_spec("--dump", spec)) paths.push_back(std::move(p));
+  for (const std::string& spec : flags.contacts)
+    for (std::string& p : expand_dump_spec("--contacts", spec)) contact_paths.push_back(std::move(p));
+  DumpOptions options = flags.options;
+  options.max_frames = max_frames;
+  std::vector<DumpFrame> frames = read_dump_frames(paths, options);
+  std::vector<DumpContacts> contacts;
+  if (!contact_paths.empty()) {
+    contacts = read_dump_contacts(contact_paths, flags.columns);
+    // --frames N keeps the contact frames of the dump frames kept.
+    if (!frames.empty())
+      std::erase_if(contacts, [&](const DumpContacts& c) { return c.timestep > frames.back().timestep; });
+  }
+  return recording_from_dumps(std::move(frames), contacts, flags.dt, flags.dumps.front());
+}
+
+DumpFrame read_dump_input(const std::string& path, const DumpFlags& flags) {
+  std::vector<DumpFrame> frames = read_dump_frames({path}, flags.options);
+  if (frames.empty()) throw Error(path + ": no frames");
+  if (flags.timestep) {
+    for (DumpFrame& f : frames)
+      if (f.timestep == *flags.timestep) return std::move(f);
+    throw Error(path + ": no frame of timestep " + std::to_string(*flags.timestep) + " (its timesteps: " +
+                std::to_string(frames.front().timestep) + ".." + std::to_string(frames.back().timestep) + ", " +
+                std::to_string(frames.size()) + " frames)");
+  }
+  if (frames.size() > 1)
+    throw Error(path + ": " + std::to_string(frames.size()) + " frames (timesteps " + std::to_string(frames.front().timestep) + ".." +
+                std::to_string(frames.back().timestep) + "): choose one with --timestep S");
+  return std::move(frames.front());
+}
+
+void apply_periodic_flags(const DumpFlags& flags, Elements& elements) {
+  if (!flags.options.periodic && !flags.box) return;
+  if (!flags.options.periodic) throw Error("--box: needs --periodic x,y[,z] (which axes of the box repeat)");
+  if (!flags.box) throw Error("--periodic: needs --box XLO:XHI,YLO:YHI[,ZLO:ZHI] (the period of each axis) for elements from a CSV file");
+  const std::array<bool, 3>& axes = *flags.options.periodic;
+  if (axes[2] && elements.dim == 2) throw Error("--periodic: z is periodic, but the elements are 2D");
+  if (elements.dim == 3 && flags.box->flags[2].empty()) throw Error("--box: the elements are 3D: give ZLO:ZHI too");
+  for (int a = 0; a < 3; ++a) {
+    elements.box.periodic[a] = axes[static_cast<std::size_t>(a)];
+    elements.box.lo[a] = flags.box->lo[a];
+    elements.box.hi[a] = flags.box->hi[a];
+  }
+  wrap_into_box(elements);
+}
+
+InputFrame read_input_frame(const std::string& path, const DumpFlags& flags) {
+  InputFrame in;
+  if (is_dump_file(path)) {
+    if (flags.box) throw Error("--box: " + path + " is a dump: its box is its BOX BOUNDS (--periodic x,y[,z] makes axes periodic)");
+    DumpFrame f = read_dump_input(path, flags);
+    in.elements = std::move(f.elements);
+    in.ids = f.ids;
+    in.precision = f.precision;
+    f.elements = Elements();
+    in.dump = std::move(f);
+    return in;
+  }
+  if (flags.timestep || flags.columns.numbers || flags.columns.names || flags.options.radius || !flags.options.type_radius.empty() ||
+      flags.options.force_2d || flags.options.tolerance)
+    throw Error(path + ": not a dump (no ITEM: line first): --timestep, --contact-ids, --radius, --type-radius, --2d and --tolerance "
+                       "read dumps");
+  in.elements = read_elements_csv(path);
+  apply_periodic_flags(flags, in.elements);
+  return in;
+}
+
+std::int64_t element_name(const std::vector<std::int64_t>& ids, std::int64_t row) {
+  return ids.empty() || row < 0 || static_cast<std::size_t>(row) >= ids.size() ? row : ids[static_cast<std::size_t>(row)];
+}
+
+const std::vector<OptionSpec>& dump_input_options() {
+  static const std::vector<OptionSpec> options = {
+      {"--timestep", "S", "the only frame", "with --input FILE.dump: the frame of timestep S (a dump with several frames needs it)"},
+      {"--contact-ids", "A,B", "id1 id2 by name, else LIGGGHTS's pair/gran/local `pos id` order (7,8)",
+       "the two columns of a dump local file holding a contact's atom ids: numbers from 1, or ENTRIES names"},
+      {"--radius", "R", "", "every atom's radius, for a dump without a radius or diameter column"},
+      {"--type-radius", "T:R,...", "", "radii by atom type, for a dump without a radius or diameter column (1:0.0015,2:0.00225)"},
+      {"--2d", "", "2D when the dump has no z column", "read a dump as 2D: z dropped (LIGGGHTS's dimension 2 writes z = 0)"},
+      {"--tolerance", "L", "half a unit of the last printed digit", "the precision band of a dump's contacts: a disagreement whose "
+                                                                   "gap is within L is at the boundary, not a violation"},
+      {"--periodic", "x,y[,z]", "a dump's pp axes", "these axes periodic: contacts by the minimum image (nbs and brute)"},
+      {"--box", "XLO:XHI,YLO:YHI[,ZLO:ZHI]", "a dump's BOX BOUNDS", "the periodic box of elements from a CSV file (with --periodic)"},
+  };
+  return options;
+}
+
+const std::vector<OptionSpec>& dump_replay_options() {
+  static const std::vector<OptionSpec> options = [] {
+    std::vector<OptionSpec> o = {
+        {"--dump", "FILES", "", "LAMMPS/LIGGGHTS dump custom frames (id, x y [z], radius ...): a file or a quoted glob, .gz too; "
+                                "repeatable; frames ordered by timestep"},
+        {"--contacts", "FILES", "", "the code's contact list, dump local (LIGGGHTS compute pair/gran/local pos id): the recorded pairs"},
+        {"--dt", "S", "", "seconds per timestep: a frame's time is S x timestep (ITEM: TIME wins; neither: the timestep)"},
+    };
+    for (const OptionSpec& s : dump_input_options())
+      if (std::string_view(s.name) != "--timestep") o.push_back(s);
+    return o;
+  }();
+  return options;
+}
+
+OptionSpec touching_option() {
+  return {"--touching", "inclusive|strict", "inclusive",
+          "whether a pair at exactly zero gap is a contact: inclusive |c_i - c_j| <= r_i + r_j, or strict < (LAMMPS, LIGGGHTS)"};
+}
+
+}  // namespace nbscope
