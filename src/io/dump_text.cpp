@@ -42,7 +42,9 @@ DumpText::DumpText(const std::string& path) : path_(path) {
     gzbuffer(gz, 1U << 20);
     gz_ = gz;
   }
-  if (!gzip) file_size_ = static_cast<std::size_t>(std::filesystem::file_size(path, ec));
+  file_size_ = static_cast<std::size_t>(std::filesystem::file_size(path, ec));
+  if (ec) file_size_ = 0;
+  if (gzip) file_size_ = file_size_ > (static_cast<std::size_t>(-1) >> 11) ? static_cast<std::size_t>(-1) : file_size_ * 1032;
   capacity_ = kChunk + kMaxLineBytes + 2;
   buf_ = std::make_unique_for_overwrite<char[]>(capacity_);
 }
@@ -52,8 +54,7 @@ DumpText::DumpText(const std::string& text, const std::string& where) : path_(wh
 }
 
 std::size_t DumpText::bytes_left() const {
-  if (gz_ != nullptr) return static_cast<std::size_t>(-1);
-  if (fd_ < 0) return data_.size() - begin_;
+  if (gz_ == nullptr && fd_ < 0) return data_.size() - begin_;
   const std::size_t done = base_ + begin_;
   return file_size_ > done ? file_size_ - done : 0;
 }

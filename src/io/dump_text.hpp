@@ -24,8 +24,8 @@ class DumpText {
   bool next(std::string_view& line);
   // The number of the line next() gave last (1-based).
   [[nodiscard]] std::size_t line_number() const { return line_no_; }
-  // At most how many bytes are left to read (a plain file's or memory's; a gzip file's: unknown, the
-  // largest size_t), so that a reader does not take a header's word for memory the text cannot fill.
+  // At most how many bytes are left to read (a gzip file's: 1032 times its size, deflate's largest
+  // ratio), so that a reader does not take a header's word for memory the text cannot fill.
   [[nodiscard]] std::size_t bytes_left() const;
   // The file's name as messages give it.
   [[nodiscard]] const std::string& path() const { return path_; }
@@ -41,7 +41,7 @@ class DumpText {
   int fd_ = -1;             // a plain file, read as it is (no copy through zlib)
   std::unique_ptr<char[]> buf_;  // a file's bytes: unread from begin_ (not zero-filled: no memset per chunk)
   std::size_t capacity_ = 0;
-  std::size_t file_size_ = 0;  // a plain file's, at open
+  std::size_t file_size_ = 0;  // a plain file's size at open; a gzip file's bound on its text
   std::string_view data_;   // the text being cut into lines (buf_ or the caller's)
   std::size_t begin_ = 0;
   std::size_t base_ = 0;    // offset in the input of data_[0]
