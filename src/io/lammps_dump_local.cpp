@@ -74,7 +74,9 @@ class LocalReader {
       } else if (item.rfind("NUMBER OF", 0) == 0) {
         entries = dump::integer_line(text_, "NUMBER OF ENTRIES");
         has_entries = true;
-        if (entries < 0) throw Error(text_.at() + "NUMBER OF ENTRIES is negative");
+        if (entries < 0 || static_cast<std::uint64_t>(entries) > kDefaultMaxPairs)
+          throw Error(text_.at() + "NUMBER OF ENTRIES " + std::to_string(entries) + " is outside 0 to " +
+                      std::to_string(kDefaultMaxPairs) + ", the most contacts of one frame nbscope reads");
       } else if (item.rfind("BOX BOUNDS", 0) == 0) {
         DumpBox box;
         dump::Digits digits;

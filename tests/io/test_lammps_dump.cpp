@@ -276,6 +276,8 @@ TEST(LammpsDumpLocal, IdColumnsByNameNumberOrGiven) {
             "c.dump:9: which ENTRIES columns hold the contact's atom ids? Give --contact-ids (column numbers 7,8 or names)");
   EXPECT_EQ(local_error(local_frame(0, "id1 id2", "3 4\n", 2)), "c.dump:10: timestep 0 has 1 rows, NUMBER OF ENTRIES says 2");
   EXPECT_EQ(local_error(local_frame(0, "id1 id2", "3 4 5\n", 1)), "c.dump:10: 3 columns; ITEM: ENTRIES names 2");
+  EXPECT_EQ(local_error(local_frame(0, "id1 id2", "3 4\n", 50000001)),
+            "c.dump:4: NUMBER OF ENTRIES 50000001 is outside 0 to 50000000, the most contacts of one frame nbscope reads");
   EXPECT_EQ(local_frame(0, "id1 id2", "", 0).empty(), false);
   EXPECT_TRUE(parse_dump_contacts(local_frame(0, "id1 id2", "", 0), "c.dump", {})[0].ids.empty());
 }
