@@ -62,7 +62,7 @@ void BM_ReadDump(benchmark::State& state) {
     n = frames[0].elements.size();
     benchmark::DoNotOptimize(frames[0].elements.x.data());
   }
-  state.counters["ns_per_atom"] = benchmark::Counter(static_cast<double>(n) * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
+  state.counters["ns_per_atom"] = benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate |
                                                                                       benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_ReadDump)->Unit(benchmark::kMillisecond)->UseRealTime();
@@ -74,7 +74,7 @@ void BM_ReadElementsCsv(benchmark::State& state) {
     n = e.size();
     benchmark::DoNotOptimize(e.x.data());
   }
-  state.counters["ns_per_atom"] = benchmark::Counter(static_cast<double>(n) * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
+  state.counters["ns_per_atom"] = benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate |
                                                                                       benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_ReadElementsCsv)->Unit(benchmark::kMillisecond)->UseRealTime();
