@@ -46,7 +46,7 @@ class PlainNbs {
     PairCollector pairs(out_pairs, kDefaultMaxPairs);
     auto test_list = [&](ElementId k, std::int32_t m) {
       for (; m != -1; m = xn[m])
-        if (in_contact(e, k, m)) pairs.add(k, m);
+        if (in_contact(e, k, m, Touching::inclusive)) pairs.add(k, m);
     };
     for (ElementId k = 0; k < n; ++k) {
       const std::int32_t iy = g.cell(py[k], 1);

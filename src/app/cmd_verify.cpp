@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "core/contact_rule_tmp.hpp"  // TEMPORARY
+#include "core/pairs.hpp"
 #include "app/commands.hpp"
 #include "app/dump_input.hpp"
 #include "check/report.hpp"

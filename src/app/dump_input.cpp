@@ -1,4 +1,4 @@
-#include "core/contact_rule_tmp.hpp"  // TEMPORARY
+#include "core/pairs.hpp"
 #include "app/dump_input.hpp"
 
 #include <algorithm>

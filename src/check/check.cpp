@@ -1,5 +1,6 @@
-#include "core/contact_rule_tmp.hpp"  // TEMPORARY
 #include "check/check.hpp"
+
+#include "core/pairs.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -5,12 +5,13 @@ namespace nbscope {
 namespace {
 template <class Trace>
 void brute_pairs(const Elements& e, const DetectOptions& options, PairList& out, Trace& trace) {
+  check_periodic_box(e, "brute");
   PairCollector pairs(out, options.max_pairs);
   const auto n = static_cast<ElementId>(e.size());
   trace.phase(0, "all pairs", -1);
   for (ElementId i = 0; i < n; ++i) {
     for (ElementId j = i + 1; j < n; ++j) {
-      const bool contact = in_contact(e, i, j);
+      const bool contact = in_contact(e, i, j, options.touching);
       trace.test_pair(1, i, j, contact);
       if (contact) pairs.add(i, j);
     }
@@ -21,7 +22,7 @@ void brute_pairs(const Elements& e, const DetectOptions& options, PairList& out,
 const std::vector<const char*>& BruteDetector::pseudocode(int /*dim*/) const {
   static const std::vector<const char*> lines = {
       "Loop over all discrete elements i, and for each over all discrete elements j > i",
-      "  check i against j: in contact when |c_i - c_j| <= r_i + r_j",
+      "  check i against j: in contact when |c_i - c_j| <= r_i + r_j (strict: <; minimum image on periodic axes)",
   };
   return lines;
 }

@@ -126,6 +126,9 @@ struct DetectorInfo {
   // (TraceOp::Push events), which the lists overlay draws as arrow chains. False for sort (runs
   // of equal cell keys, no lists), brute and box2d (no arrays at all).
   bool has_lists = false;
+  // It finds contacts across a periodic boundary (Elements::box) by the minimum image; false: it
+  // refuses a periodic frame with an Error naming itself (nbs and brute are the two that wrap).
+  bool periodic = false;
   std::function<std::unique_ptr<Detector>()> make;
 };
 

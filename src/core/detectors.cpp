@@ -13,7 +13,7 @@ std::vector<DetectorInfo> builtin_detectors() {
   std::vector<DetectorInfo> d;
   d.push_back({.name = "brute",
                .summary = "direct checking of all N(N-1)/2 pairs (the reference)",
-               .dim2 = true, .dim3 = true, .traces = true, .has_lists = false,
+               .dim2 = true, .dim3 = true, .traces = true, .has_lists = false, .periodic = true,
                .make = [] { return std::make_unique<BruteDetector>(); }});
   d.push_back({.name = "tree",
                .summary = "binary tree of cells, HEAD + next array E at each leaf, neighbour leaves searched (p.85)",
@@ -29,7 +29,7 @@ std::vector<DetectorInfo> builtin_detectors() {
                .make = [] { return std::make_unique<ScreenDetector>(); }});
   d.push_back({.name = "nbs",
                .summary = "Munjiza-NBS: y-lists (3D: z-lists first), then x-lists row by row; O(N) time and memory",
-               .dim2 = true, .dim3 = true, .traces = true, .has_lists = true,
+               .dim2 = true, .dim3 = true, .traces = true, .has_lists = true, .periodic = true,
                .make = [] { return std::make_unique<NbsDetector>(); }});
   return d;
 }

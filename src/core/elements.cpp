@@ -71,6 +71,16 @@ std::uint64_t hash_elements(const Elements& e) {
   column(e.y);
   if (e.dim == 3) column(e.z);
   column(e.r);
+  if (e.box.any()) {  // the same centres in another periodic box are another frame
+    for (int a = 0; a < 3; ++a) {
+      std::uint64_t lo = 0, hi = 0;
+      std::memcpy(&lo, &e.box.lo[a], sizeof lo);
+      std::memcpy(&hi, &e.box.hi[a], sizeof hi);
+      mix(e.box.periodic[a] ? 1 : 0);
+      mix(lo);
+      mix(hi);
+    }
+  }
   return h;
 }
 

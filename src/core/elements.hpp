@@ -60,7 +60,7 @@ struct Elements {
 };
 
 // A 64-bit fingerprint of the set (FNV-1a, a 64-bit word at a time, over dim, N and the bit patterns
-// of every coordinate and radius, column by column): equal sets hash equal, so two runs can be compared frame by frame
+// of every coordinate and radius, column by column, and the periodic box when there is one): equal sets hash equal, so two runs can be compared frame by frame
 // (report "hash", the history's determinism check) without storing the elements.
 [[nodiscard]] std::uint64_t hash_elements(const Elements& elements);
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/pairs.hpp"
 
 namespace nbscope {
 
@@ -32,9 +33,45 @@ std::string fmt_count(double v) {
 double integerisation_scale(const Grid& g, const Bounds& b, double diameter) {
   double reach = g.cell_size;  // largest |v - origin| over the data, per axis
   for (int a = 0; a < g.dim; ++a)
-    reach = std::max({reach, std::abs(b.max[a] - g.origin[a]), std::abs(b.min[a] - g.origin[a])});
+    reach = std::max({reach, std::abs(b.max[a] - g.origin[a]), std::abs(b.min[a] - g.origin[a]),
+                      g.periodic[a] ? std::abs(g.period[a]) : 0.0});
   const double guard = 8.0 * std::numeric_limits<double>::epsilon() * reach;
   return 1.0 / std::max(g.cell_size, diameter + guard);
+}
+
+// A periodic axis a: origin lo and n = floor(L * scale) cells, where 1/scale (>= d) is the width
+// integerisation really uses, so every cell but the last is that wide and the last absorbs the
+// remainder (width in [1/scale, 2/scale)). Why no contact is lost: two centres in contact across the
+// boundary lie within d of lo and of hi, so the one near lo is in cell 0 and the one near hi, at
+// least L - 1/scale >= (n - 1)/scale from lo, in cell n - 1 (clamped there), which the wrapped mask
+// makes cell 0's neighbour; within the box the wider last cell only joins centres, so neighbours
+// stay neighbours. Fewer than 3 cells: refused (a cell's two neighbours would be one cell).
+void fit_periodic_axis(Grid& g, const Elements& e, const GridOptions& options, int a, const char* axis) {
+  const double lo = e.box.lo[a], period = e.box.length(a);
+  if (options.origin && (*options.origin)[a] != lo) {
+    throw Error(std::string(axis) + " is periodic from " + fmt(lo) + ": a pinned grid origin of " +
+                fmt((*options.origin)[a]) + " disagrees with the box");
+  }
+  g.origin[a] = lo;
+  g.periodic[a] = true;
+  g.period[a] = period;
+  const double cells = std::floor(period * g.inv_cell_size);
+  // The cells are a few ulps wider than d when d is the largest diameter (integerisation_scale).
+  const char* widened = "; cells are a few ulps wider than a cell size equal to the largest diameter: give a larger --cell-size";
+  if (!(cells >= 3)) {
+    throw Error(std::string(axis) + " is periodic over L = " + fmt(period) + " with cell size " + fmt(g.cell_size) +
+                ": " + fmt_count(cells) + " cells; the wrap needs at least 3 (a cell's left and right neighbour " +
+                "would be the same cell)" + (std::floor(period / g.cell_size) >= 3 ? widened : ""));
+  }
+  if (!(cells <= static_cast<double>(kMaxCellsPerSide))) {
+    throw Error(std::string("the grid would need ") + fmt_count(cells) + " cells along periodic " + axis +
+                " (limit " + std::to_string(kMaxCellsPerSide) + "): use a larger --cell-size");
+  }
+  if (options.cells && (*options.cells)[a] != static_cast<std::int64_t>(cells)) {
+    throw Error(std::string(axis) + " is periodic over L = " + fmt(period) + ", which holds " + fmt_count(cells) +
+                " cells of size " + fmt(g.cell_size) + ", not the pinned " + std::to_string((*options.cells)[a]));
+  }
+  g.n[a] = static_cast<std::int64_t>(cells);
 }
 
 }  // namespace
@@ -51,6 +88,7 @@ Grid make_grid(const Elements& elements, const GridOptions& options) {
                 " (contacts could span more than one cell)");
   }
   g.cell_size = d;
+  if (elements.box.any()) check_periodic_box(elements, "grid");
   const Bounds b = elements.centre_bounds();
   static const char* axis_name[3] = {"x", "y", "z"};
   for (int a = 0; a < g.dim; ++a) {
@@ -75,7 +113,13 @@ Grid make_grid(const Elements& elements, const GridOptions& options) {
     }
     g.n[a] = static_cast<std::int64_t>(cells);
   }
+  for (int a = 0; a < g.dim; ++a) {
+    g.periodic[a] = elements.box.periodic[a];
+    g.period[a] = elements.box.length(a);
+  }
   g.inv_cell_size = integerisation_scale(g, b, elements.size() == 0 ? 0.0 : diameter);
+  for (int a = 0; a < g.dim; ++a)
+    if (g.periodic[a]) fit_periodic_axis(g, elements, options, a, axis_name[a]);
   return g;
 }
 

@@ -33,6 +33,9 @@ struct Grid {
   double inv_cell_size = 1;  // 1/d, or a hair less where rounding could split a contact (make_grid)
   double origin[3] = {0, 0, 0};
   std::int64_t n[3] = {1, 1, 1};  // cells per axis; n[2] == 1 in 2D
+  // Periodic axes (the frame's box): origin = lo, cells n-1 and 0 are neighbours, n >= 3.
+  bool periodic[3] = {false, false, false};
+  double period[3] = {0, 0, 0};  // L = hi - lo on a periodic axis
 
   // Integerised coordinate Int((v - origin)/d) on axis a (eq. 3.76), clamped into [0, n[a]).
   // Clamping keeps neighbours neighbours (the map is monotone), so an origin pinned inside the
@@ -43,6 +46,14 @@ struct Grid {
     if (!(c >= 0)) return 0;  // also catches NaN
     if (c >= static_cast<double>(n[a])) return static_cast<std::int32_t>(n[a] - 1);
     return static_cast<std::int32_t>(c);
+  }
+  // The cell `offset` (-1, 0 or 1) from cell c along axis a: wrapped on a periodic axis, -1 past an open edge.
+  [[nodiscard]] std::int32_t neighbour(std::int32_t c, std::int32_t offset, int a) const {
+    const std::int32_t m = c + offset;
+    const auto last = static_cast<std::int32_t>(n[a] - 1);
+    if (m >= 0 && m <= last) return m;
+    if (!periodic[a]) return -1;
+    return m < 0 ? last : 0;
   }
   // Total number of cells nx*ny(*nz), as the screen array would need them.
   [[nodiscard]] std::int64_t cell_count() const { return n[0] * n[1] * n[2]; }
@@ -58,7 +69,9 @@ struct Grid {
 // rounding of the largest diameter, integerisation divides by a d a few ulps of the coordinates
 // larger, so that rounding never puts a contact two cells apart. Throws Error when d is not
 // positive and finite, is smaller than the largest diameter (contacts could then skip a cell), or a
-// side would exceed kMaxCellsPerSide (or be below 1).
+// side would exceed kMaxCellsPerSide (or be below 1). On the frame's periodic axes the grid spans
+// the box: origin lo, floor(L/d) cells, the last one wider; Error when that is fewer than 3, or a
+// pinned origin or cell count disagrees with the box.
 Grid make_grid(const Elements& elements, const GridOptions& options);
 
 }  // namespace nbscope

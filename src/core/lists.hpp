@@ -57,12 +57,12 @@ inline void clear_head(Trace& trace, std::uint8_t line, const ListArrays& l, std
   l.heads[list] = -1;
 }
 
-// Checks element k against every element of the list that starts at m (walking `next`).
+// Checks element k against every element of the list that starts at m (walking `next`), under `touching`.
 template <class Trace>
-inline void test_list(Trace& trace, std::uint8_t line, const Elements& e, ElementId k, std::int32_t m,
-                      const std::int32_t* next, PairCollector& pairs) {
+inline void test_list(Trace& trace, std::uint8_t line, const Elements& e, Touching touching, ElementId k,
+                      std::int32_t m, const std::int32_t* next, PairCollector& pairs) {
   for (; m != -1; m = next[m]) {
-    const bool contact = in_contact(e, k, m);
+    const bool contact = in_contact(e, k, m, touching);
     trace.test_pair(line, k, m, contact);
     if (contact) pairs.add(k, m);
   }

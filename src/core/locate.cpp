@@ -11,9 +11,19 @@ namespace {
 
 using Cell = std::array<std::int32_t, 3>;
 
-// True when cell `b` is in the half contact mask of cell `a` (not `a` itself).
-bool in_mask_of(const Cell& a, const Cell& b, int dim) {
-  const std::int32_t dx = b[0] - a[0], dy = b[1] - a[1], dz = dim == 3 ? b[2] - a[2] : 0;
+// The offset from cell index a to b along one axis: folded into (-n/2, n/2] on a periodic axis of n cells.
+std::int32_t cell_offset(std::int32_t a, std::int32_t b, std::int64_t n) {
+  std::int64_t d = std::int64_t{b} - a;
+  if (n > 0 && 2 * d > n) d -= n;
+  if (n > 0 && 2 * d <= -n) d += n;
+  return static_cast<std::int32_t>(d);
+}
+
+// True when cell `b` is in the half contact mask of cell `a` (not `a` itself), wrapped on the
+// periodic axes (`wrap`: their cell counts).
+bool in_mask_of(const Cell& a, const Cell& b, int dim, const std::array<std::int64_t, 3>& wrap) {
+  const std::int32_t dx = cell_offset(a[0], b[0], wrap[0]), dy = cell_offset(a[1], b[1], wrap[1]);
+  const std::int32_t dz = dim == 3 ? cell_offset(a[2], b[2], wrap[2]) : 0;
   if (std::abs(dx) > 1 || std::abs(dy) > 1 || std::abs(dz) > 1) return false;
   if (dx == 0 && dy == 0 && dz == 0) return false;
   return in_half_mask(dx, dy, dz);
@@ -77,11 +87,11 @@ PairLocation locate_pair(std::span<const TraceEvent> events, std::int32_t i, std
 
   // 3. Which element's mask reaches the other's cell (in the same cell either one tests the other).
   const bool same = cells.i[0] == cells.j[0] && cells.i[1] == cells.j[1] && (dim != 3 || cells.i[2] == cells.j[2]);
-  if (same || in_mask_of(cells.i, cells.j, dim)) {
+  if (same || in_mask_of(cells.i, cells.j, dim, cells.wrap)) {
     out.scanner = i;
     out.other = j;
     out.cell = cells.j;
-  } else if (in_mask_of(cells.j, cells.i, dim)) {
+  } else if (in_mask_of(cells.j, cells.i, dim, cells.wrap)) {
     out.scanner = j;
     out.other = i;
     out.cell = cells.i;

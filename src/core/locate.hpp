@@ -45,6 +45,9 @@ struct PairLocation {
 struct PairCells {
   std::array<std::int32_t, 3> i{-1, -1, -1};
   std::array<std::int32_t, 3> j{-1, -1, -1};
+  // The grid's cell count on each periodic axis (Grid::periodic), 0 on an open one: there cells
+  // n-1 and 0 are neighbours, as nbs's wrapped mask visits them.
+  std::array<std::int64_t, 3> wrap{0, 0, 0};
 };
 
 // Finds the operation that put `stray` on a list the walk of `finder` tested it from (a `cells`

@@ -105,7 +105,7 @@ void NbsDetector::run_2d(const Elements& e, const DetectOptions& options, PairLi
   // Tests k against every element of the x list starting at m.
   auto test_list = [&](ElementId k, std::int32_t m) {
     for (; m != -1; m = xn[m]) {
-      const bool contact = in_contact(e, k, m);
+      const bool contact = in_contact(e, k, m, options.touching);
       trace.test_pair(kTestPair, k, m, contact);
       if (contact) pairs.add(k, m);
     }
@@ -124,7 +124,8 @@ void NbsDetector::run_2d(const Elements& e, const DetectOptions& options, PairLi
     // 2. rows: x-lists of row iy (B[0]) and iy-1 (B[1]), the contact mask, then clearing.
     for (std::int32_t iy = 0; iy < ny; ++iy) {
       if (yh[iy] == -1) continue;
-      const bool below = iy > 0 && yh[iy - 1] != -1;
+      const std::int32_t iy_below = g.neighbour(iy, -1, 1);  // on a periodic y, row 0's is row ny-1
+      const bool below = iy_below >= 0 && yh[iy_below] != -1;
       trace.phase(kLoopRows, phase_label::kXListsOfRow, iy);
       for (std::int32_t k = yh[iy]; k != -1; k = yn[k]) {
         const std::int32_t ix = g.cell(px[k], 0);
@@ -133,9 +134,9 @@ void NbsDetector::run_2d(const Elements& e, const DetectOptions& options, PairLi
         b0[ix] = k;
       }
       if (below) {
-        for (std::int32_t k = yh[iy - 1]; k != -1; k = yn[k]) {
+        for (std::int32_t k = yh[iy_below]; k != -1; k = yn[k]) {
           const std::int32_t ix = g.cell(px[k], 0);
-          trace.push(kPushX1, kXList, a_b, std::int64_t{nx} + ix, a_xn, k, b1[ix], xn[k], ix, iy - 1, -1);
+          trace.push(kPushX1, kXList, a_b, std::int64_t{nx} + ix, a_xn, k, b1[ix], xn[k], ix, iy_below, -1);
           xn[k] = b1[ix];
           b1[ix] = k;
         }
@@ -146,13 +147,15 @@ void NbsDetector::run_2d(const Elements& e, const DetectOptions& options, PairLi
         const std::int32_t ix = g.cell(px[k], 0);
         trace.visit_cell(kMaskCell, k, ix, iy, -1);
         test_list(k, xn[k]);  // same cell: only the elements after k, so each pair once
-        if (ix > 0) {
-          trace.visit_cell(kMaskCell, k, ix - 1, iy, -1);
-          test_list(k, b0[ix - 1]);
+        if (const std::int32_t left = g.neighbour(ix, -1, 0); left >= 0) {
+          trace.visit_cell(kMaskCell, k, left, iy, -1);
+          test_list(k, b0[left]);
         }
         if (below) {
-          for (std::int32_t jx = std::max(ix - 1, 0); jx <= std::min(ix + 1, nx - 1); ++jx) {
-            trace.visit_cell(kMaskCell, k, jx, iy - 1, -1);
+          for (std::int32_t dx = -1; dx <= 1; ++dx) {
+            const std::int32_t jx = g.neighbour(ix, dx, 0);
+            if (jx < 0) continue;
+            trace.visit_cell(kMaskCell, k, jx, iy_below, -1);
             test_list(k, b1[jx]);
           }
         }
@@ -167,7 +170,7 @@ void NbsDetector::run_2d(const Elements& e, const DetectOptions& options, PairLi
         }
       }
       if (below) {
-        for (std::int32_t k = yh[iy - 1]; k != -1; k = yn[k]) {
+        for (std::int32_t k = yh[iy_below]; k != -1; k = yn[k]) {
           const std::int32_t ix = g.cell(px[k], 0);
           if (b1[ix] != -1) {
             trace.clear(kClearX, kXList, a_b, std::int64_t{nx} + ix, b1[ix]);
@@ -193,6 +196,11 @@ void NbsDetector::run_2d(const Elements& e, const DetectOptions& options, PairLi
 }
 
 void NbsDetector::detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) {
+  // The fast path does not wrap: a periodic frame runs the book's loops, which do. Only the frame's
+  // own axes count (a 2D LAMMPS dump flags z periodic).
+  bool wraps = false;
+  for (int a = 0; a < elements.dim; ++a) wraps = wraps || elements.box.periodic[a];
+  if (wraps) return detect_book(elements, options, out_pairs);
   if (elements.dim == 3) return run_3d_fast(elements, options, out_pairs);
   run_2d_fast(elements, options, out_pairs);
 }

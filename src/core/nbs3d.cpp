@@ -93,6 +93,7 @@ void NbsDetector::run_3d(const Elements& e, const DetectOptions& options, PairLi
     xl.next_id = trace.declare_array("X", {n}, x_next_);
   }
   const Grid& g = grid_;
+  const Touching touching = options.touching;
   const std::int32_t* const zh = zl.heads;
   const std::int32_t* const zn = zl.next;
   const std::int32_t* const b = yl.heads;
@@ -104,35 +105,39 @@ void NbsDetector::run_3d(const Elements& e, const DetectOptions& options, PairLi
   const double* const pz = e.z.data();
 
   // One row (iy, iz) of layer iz: x-lists of the rows the mask reaches, contacts, clearing.
-  auto process_row = [&](std::int32_t iy, std::int32_t iz, bool below) {
+  auto process_row = [&](std::int32_t iy, std::int32_t iz, std::int32_t iz_below, bool below) {
+    // The five rows (wrapped on a periodic y: row 0's row below is row ny-1), -1 past an open edge.
+    std::int32_t row_y[5];
+    for (int r = 0; r < 5; ++r) row_y[r] = g.neighbour(iy, kRowDy[r], 1);
     std::int32_t source[5];  // first element of each of the five rows' y-lists, -1 for none
-    source[0] = b[iy];
-    source[1] = iy > 0 ? b[iy - 1] : -1;
-    source[2] = below && iy > 0 ? b[ny + iy - 1] : -1;
-    source[3] = below ? b[ny + iy] : -1;
-    source[4] = below && iy + 1 < ny ? b[ny + iy + 1] : -1;
+    for (int r = 0; r < 5; ++r) {
+      const bool reachable = row_y[r] >= 0 && (kRowDz[r] == 0 || below);
+      source[r] = reachable ? b[(kRowDz[r] == 0 ? 0 : std::int64_t{ny}) + row_y[r]] : -1;
+    }
     trace.phase(kLoopRows, phase_label::kXListsOfRow, iy, -1, iy, iz);
     for (int r = 0; r < 5; ++r) {
       for (std::int32_t k = source[r]; k != -1; k = yn[k]) {
         const std::int32_t ix = g.cell(px[k], 0);
-        push_front(trace, kPushX, xl, std::int64_t{r} * nx + ix, k, ix, iy + kRowDy[r], iz + kRowDz[r]);
+        push_front(trace, kPushX, xl, std::int64_t{r} * nx + ix, k, ix, row_y[r], kRowDz[r] == 0 ? iz : iz_below);
       }
     }
     trace.phase(kLoopRow, phase_label::kContactsOfRow, iy, -1, iy, iz);
     for (std::int32_t k = source[0]; k != -1; k = yn[k]) {
       const std::int32_t ix = g.cell(px[k], 0);
       trace.visit_cell(kMaskCell, k, ix, iy, iz);
-      test_list(trace, kTestPair, e, k, xn[k], xn, pairs);  // own cell: the elements after k
-      if (ix > 0) {
-        trace.visit_cell(kMaskCell, k, ix - 1, iy, iz);
-        test_list(trace, kTestPair, e, k, a[ix - 1], xn, pairs);
+      test_list(trace, kTestPair, e, touching, k, xn[k], xn, pairs);  // own cell: the elements after k
+      if (const std::int32_t left = g.neighbour(ix, -1, 0); left >= 0) {
+        trace.visit_cell(kMaskCell, k, left, iy, iz);
+        test_list(trace, kTestPair, e, touching, k, a[left], xn, pairs);
       }
       for (int r = 1; r < 5; ++r) {
         if (source[r] == -1) continue;
         const std::int32_t* const row = a + std::int64_t{r} * nx;
-        for (std::int32_t jx = std::max(ix - 1, 0); jx <= std::min(ix + 1, nx - 1); ++jx) {
-          trace.visit_cell(kMaskCell, k, jx, iy + kRowDy[r], iz + kRowDz[r]);
-          test_list(trace, kTestPair, e, k, row[jx], xn, pairs);
+        for (std::int32_t dx = -1; dx <= 1; ++dx) {
+          const std::int32_t jx = g.neighbour(ix, dx, 0);
+          if (jx < 0) continue;
+          trace.visit_cell(kMaskCell, k, jx, row_y[r], kRowDz[r] == 0 ? iz : iz_below);
+          test_list(trace, kTestPair, e, touching, k, row[jx], xn, pairs);
         }
       }
     }
@@ -155,27 +160,28 @@ void NbsDetector::run_3d(const Elements& e, const DetectOptions& options, PairLi
     // 2. layers: y-lists of layer iz (B[0]) and iz-1 (B[1]), then every non-empty row of layer iz.
     for (std::int32_t iz = 0; iz < nz; ++iz) {
       if (zh[iz] == -1) continue;
-      const bool below = iz > 0 && zh[iz - 1] != -1;
+      const std::int32_t iz_below = g.neighbour(iz, -1, 2);  // on a periodic z, layer 0's is layer nz-1
+      const bool below = iz_below >= 0 && zh[iz_below] != -1;
       trace.phase(kLoopLayers, phase_label::kYListsOfLayer, iz, -1, -1, iz);
       for (std::int32_t k = zh[iz]; k != -1; k = zn[k]) {
         const std::int32_t iy = g.cell(py[k], 1);
         push_front(trace, kPushY0, yl, iy, k, -1, iy, iz);
       }
       if (below) {
-        for (std::int32_t k = zh[iz - 1]; k != -1; k = zn[k]) {
+        for (std::int32_t k = zh[iz_below]; k != -1; k = zn[k]) {
           const std::int32_t iy = g.cell(py[k], 1);
-          push_front(trace, kPushY1, yl, std::int64_t{ny} + iy, k, -1, iy, iz - 1);
+          push_front(trace, kPushY1, yl, std::int64_t{ny} + iy, k, -1, iy, iz_below);
         }
       }
       // Each non-empty row once: when the loop meets the element at its head. O(N), never O(ny nz).
       for (std::int32_t k = zh[iz]; k != -1; k = zn[k]) {
         const std::int32_t iy = g.cell(py[k], 1);
-        if (b[iy] == k) process_row(iy, iz, below);
+        if (b[iy] == k) process_row(iy, iz, iz_below, below);
       }
       trace.phase(kClearY, phase_label::kClearYListsOfLayer, iz, -1, -1, iz);
       for (std::int32_t k = zh[iz]; k != -1; k = zn[k]) clear_head(trace, kClearY, yl, g.cell(py[k], 1));
       if (below) {
-        for (std::int32_t k = zh[iz - 1]; k != -1; k = zn[k])
+        for (std::int32_t k = zh[iz_below]; k != -1; k = zn[k])
           clear_head(trace, kClearY, yl, std::int64_t{ny} + g.cell(py[k], 1));
       }
     }

@@ -124,13 +124,14 @@ void NbsDetector::run_2d_fast(const Elements& e, const DetectOptions& options, P
     b.list = -1;
   };
   PairCursor cursor{pairs.data(), 0, pairs.capacity(), &pairs};
+  const bool inclusive = options.touching == Touching::inclusive;
   // Tests element k against the x-list of `from` that starts at local index j.
   auto test_list = [&](const Slot& k, const Slot* from, std::int32_t j) {
     for (; j != -1; j = from[j].next) {
       const double dx = k.x - from[j].x;
       const double dy = k.y - from[j].y;
       const double rr = k.r + from[j].r;
-      offer_pair(cursor, dx * dx + dy * dy <= rr * rr, k.id, from[j].id);
+      offer_pair(cursor, touches(dx * dx + dy * dy, rr * rr, inclusive), k.id, from[j].id);
     }
   };
 
@@ -241,13 +242,14 @@ void NbsDetector::run_3d_fast(const Elements& e, const DetectOptions& options, P
     b.list = -1;
   };
   PairCursor cursor{pairs.data(), 0, pairs.capacity(), &pairs};
+  const bool inclusive = options.touching == Touching::inclusive;
   auto test_list = [&](const Slot& k, const Slot* from, std::int32_t j) {
     for (; j != -1; j = from[j].xnext) {
       const double dx = k.x - from[j].x;
       const double dy = k.y - from[j].y;
       const double dz = k.z - from[j].z;
       const double rr = k.r + from[j].r;
-      offer_pair(cursor, dx * dx + dy * dy + dz * dz <= rr * rr, k.id, from[j].id);
+      offer_pair(cursor, touches(dx * dx + dy * dy + dz * dz, rr * rr, inclusive), k.id, from[j].id);
     }
   };
 

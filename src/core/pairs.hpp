@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <compare>
 #include <cstdint>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/elements.hpp"
@@ -26,15 +28,63 @@ using PairList = std::vector<Pair>;
 // stops with an Error instead of exhausting memory. Override with DetectOptions::max_pairs.
 inline constexpr std::size_t kDefaultMaxPairs = 50'000'000;
 
-// Contact as in docs/architecture.md: |c_i - c_j| <= r_i + r_j, in double, touching counts. Exact to rounding
-// for elements within the supported magnitudes (elements.hpp), where no square over- or underflows.
-[[nodiscard]] inline bool in_contact(const Elements& e, ElementId i, ElementId j) {
-  const double dx = e.x[i] - e.x[j];
-  const double dy = e.y[i] - e.y[j];
-  const double dz = e.dim == 3 ? e.z[i] - e.z[j] : 0.0;
-  const double rr = e.r[i] + e.r[j];
-  return dx * dx + dy * dy + dz * dz <= rr * rr;
+// The name --touching takes: "inclusive" or "strict".
+[[nodiscard]] const char* touching_name(Touching touching);
+
+// The contact rule on squared distances, without a branch on its data (the detectors' hot loops):
+// strict d2 < rr2; inclusive also d2 == rr2.
+[[nodiscard]] inline bool touches(double d2, double rr2, bool inclusive) {
+  return (d2 < rr2) | (inclusive & (d2 == rr2));
 }
+
+// The difference c_i - c_j along axis a, by the minimum image when the frame is periodic along a
+// (centres in [lo, hi), so one period at most is added or taken away).
+[[nodiscard]] inline double axis_delta(const Elements& e, int a, double d) {
+  if (!e.box.periodic[a]) return d;
+  const double period = e.box.length(a);
+  if (d > 0.5 * period) return d - period;
+  if (d < -0.5 * period) return d + period;
+  return d;
+}
+
+// Squared centre distance of i and j, by the minimum image on the frame's periodic axes.
+[[nodiscard]] inline double centre_distance2(const Elements& e, ElementId i, ElementId j) {
+  double dx = e.x[i] - e.x[j];
+  double dy = e.y[i] - e.y[j];
+  double dz = e.dim == 3 ? e.z[i] - e.z[j] : 0.0;
+  if (e.box.any()) [[unlikely]] {
+    dx = axis_delta(e, 0, dx);
+    dy = axis_delta(e, 1, dy);
+    if (e.dim == 3) dz = axis_delta(e, 2, dz);
+  }
+  return dx * dx + dy * dy + dz * dz;
+}
+
+// Contact as in docs/architecture.md: |c_i - c_j| <= r_i + r_j (inclusive) or < (strict), in double,
+// by the minimum image on periodic axes. Exact to rounding for elements within the supported
+// magnitudes (elements.hpp), where no square over- or underflows.
+[[nodiscard]] inline bool in_contact(const Elements& e, ElementId i, ElementId j, Touching touching) {
+  const double rr = e.r[i] + e.r[j];
+  return touches(centre_distance2(e, i, j), rr * rr, touching == Touching::inclusive);
+}
+
+// Minimum-image |c_i - c_j| - (r_i + r_j): negative for an overlap; for messages.
+[[nodiscard]] double contact_gap(const Elements& e, ElementId i, ElementId j);
+
+// Moves every centre into [lo, hi) on the frame's periodic axes (within its dimension): a centre
+// exactly at hi goes to lo, one far outside by whole periods. Open axes are left alone.
+void wrap_into_box(Elements& e);
+
+// "x, y" for the frame's periodic axes within its dimension; empty when it has none.
+[[nodiscard]] std::string periodic_axes(const Elements& e);
+
+// Throws Error("<detector>: the frame is periodic in x, y; only nbs and brute find contacts across
+// a periodic boundary") when the frame has a periodic axis: the detectors that cannot wrap.
+void refuse_periodic(const Elements& e, std::string_view detector);
+
+// Throws Error when a periodic axis has no positive finite period or a centre outside [lo, hi):
+// the minimum image needs both.
+void check_periodic_box(const Elements& e, std::string_view detector);
 
 // Appends pairs in (min, max) order and refuses to grow past a limit.
 class PairCollector {

@@ -163,6 +163,11 @@ const std::vector<const char*>& PluginDetector::pseudocode(int dim) const { retu
 void PluginDetector::run(const Elements& elements, const DetectOptions& options, PairList& out_pairs, TraceLog* trace) {
   if (!supports_dim(elements.dim))
     throw Error(name_ + ": " + std::to_string(elements.dim) + "D elements are not supported by this detector");
+  refuse_periodic(elements, name_);
+  if (options.touching == Touching::strict) {
+    throw Error(name_ + ": a plugin tests contacts itself, inclusively (plugin API 1), so it cannot follow "
+                "--touching strict");
+  }
   grid_ = make_grid(elements, options.grid);
   has_cells_ = false;
   const bool cells_wanted = (capabilities_ & NBSCOPE_CAP_CELLS) != 0;

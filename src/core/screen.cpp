@@ -75,6 +75,7 @@ std::size_t ScreenDetector::own_bytes() const { return (heads_.size() + next_.si
 template <int D, class Trace>
 void ScreenDetector::run(const Elements& e, const DetectOptions& options, PairList& out_pairs, Trace& trace) {
   if (e.dim != D) throw Error("screen: internal: dimension mismatch");
+  refuse_periodic(e, "screen");
   grid_ = make_grid(e, options.grid);
   check_screen_array_size(grid_, e.size());  // before a single byte of C is allocated
   const auto cells = static_cast<std::size_t>(grid_.cell_count());
@@ -115,12 +116,12 @@ void ScreenDetector::run(const Elements& e, const DetectOptions& options, PairLi
       std::int32_t c[3];
       cell_of(k, c);
       trace.visit_cell(kMaskCell, k, c[0], c[1], iz_of(c));
-      test_list(trace, kTestPair, e, k, next[k], next, pairs);  // own cell: the elements after k
+      test_list(trace, kTestPair, e, options.touching, k, next[k], next, pairs);  // own cell: the elements after k
       for (const CellOffset& o : mask) {
         const std::int32_t jx = c[0] + o.dx, jy = c[1] + o.dy, jz = c[2] + o.dz;
         if (jx < 0 || jy < 0 || jz < 0 || jx >= g.n[0] || jy >= g.n[1] || jz >= g.n[2]) continue;
         trace.visit_cell(kMaskCell, k, jx, jy, D == 3 ? jz : -1);
-        test_list(trace, kTestPair, e, k, heads[g.flat(jx, jy, jz)], next, pairs);
+        test_list(trace, kTestPair, e, options.touching, k, heads[g.flat(jx, jy, jz)], next, pairs);
       }
     }
 

@@ -45,6 +45,7 @@ std::size_t SortDetector::own_bytes() const {
 template <int D, class Trace>
 void SortDetector::run(const Elements& e, const DetectOptions& options, PairList& out_pairs, Trace& trace) {
   if (e.dim != D) throw Error("sort: internal: dimension mismatch");
+  refuse_periodic(e, "sort");
   grid_ = make_grid(e, options.grid);
   const auto n = static_cast<ElementId>(e.size());
   for (int a = 0; a < 3; ++a) cell_[a].resize(a < D ? static_cast<std::size_t>(n) : 0);
@@ -102,7 +103,7 @@ void SortDetector::run(const Elements& e, const DetectOptions& options, PairList
   constexpr const auto& mask = half_mask<D>();
   std::array<ElementId, mask.size()> cursor{};
   auto test = [&](ElementId k, ElementId m) {
-    const bool contact = in_contact(e, k, m);
+    const bool contact = in_contact(e, k, m, options.touching);
     trace.test_pair(kTestPair, k, m, contact);
     if (contact) pairs.add(k, m);
   };

@@ -147,7 +147,7 @@ void TreeDetector::build(const Elements& e, Trace& trace, int child_id, int head
 }
 
 template <int D, class Trace>
-void TreeDetector::search(const Elements& e, Trace& trace, PairCollector& pairs) {
+void TreeDetector::search(const Elements& e, Touching touching, Trace& trace, PairCollector& pairs) {
   const Grid& g = grid_;
   const std::int32_t* const child = child_.data();
   const std::int32_t* const head = head_.data();
@@ -219,10 +219,10 @@ void TreeDetector::search(const Elements& e, Trace& trace, PairCollector& pairs)
     // Every element of the leaf against the rest of its own list and the mask leaves' lists.
     for (std::int32_t k = head[f.node]; k != -1; k = next[k]) {
       trace.visit_cell(kMaskLeaf, k, c[0], c[1], D == 3 ? c[2] : -1);
-      test_list(trace, kTestPair, e, k, next[k], next, pairs);
+      test_list(trace, kTestPair, e, touching, k, next[k], next, pairs);
       for (std::size_t i = 0; i < found; ++i) {
         trace.visit_cell(kMaskLeaf, k, mask[i].cell[0], mask[i].cell[1], D == 3 ? mask[i].cell[2] : -1);
-        test_list(trace, kTestPair, e, k, mask[i].head, next, pairs);
+        test_list(trace, kTestPair, e, touching, k, mask[i].head, next, pairs);
       }
     }
   }
@@ -231,6 +231,7 @@ void TreeDetector::search(const Elements& e, Trace& trace, PairCollector& pairs)
 template <int D, class Trace>
 void TreeDetector::run(const Elements& e, const DetectOptions& options, PairList& out_pairs, Trace& trace) {
   if (e.dim != D) throw Error("tree: internal: dimension mismatch");
+  refuse_periodic(e, "tree");
   grid_ = make_grid(e, options.grid);
   next_.resize(static_cast<std::size_t>(e.size()));
   PairCollector pairs(out_pairs, options.max_pairs);
@@ -254,7 +255,7 @@ void TreeDetector::run(const Elements& e, const DetectOptions& options, PairList
     head_.clear();
     build<D>(e, trace, -1, -1, -1);
   }
-  search<D>(e, trace, pairs);
+  search<D>(e, options.touching, trace, pairs);
 }
 
 template class DimensionalDetector<TreeDetector>;

@@ -46,7 +46,7 @@ class TreeDetector final : public DimensionalDetector<TreeDetector> {
   template <int D, class Trace>
   void build(const Elements& elements, Trace& trace, int child_id, int head_id, int next_id);
   template <int D, class Trace>
-  void search(const Elements& elements, Trace& trace, PairCollector& pairs);
+  void search(const Elements& elements, Touching touching, Trace& trace, PairCollector& pairs);
   template <int D, class Trace>
   void run(const Elements& elements, const DetectOptions& options, PairList& out_pairs, Trace& trace);
   std::int32_t new_node();

@@ -79,6 +79,7 @@ void Box2dDetector::sort_by_morton(const Elements& e) {
 
 void Box2dDetector::detect(const Elements& e, const DetectOptions& options, PairList& out_pairs) {
   if (e.dim != 2) throw Error("box2d: only 2D elements are supported by this detector");
+  refuse_periodic(e, "box2d");
   const std::int64_t n = e.size();
   boxes_.resize(static_cast<std::size_t>(n));
   for (std::int64_t k = 0; k < n; ++k) {
@@ -101,13 +102,14 @@ void Box2dDetector::detect(const Elements& e, const DetectOptions& options, Pair
     const b2DynamicTree* tree;
     const Elements* e;
     PairCollector* pairs;
+    Touching touching;
     ElementId i;
     bool QueryCallback(std::int32_t proxy) {
       const auto j = static_cast<ElementId>(reinterpret_cast<std::uintptr_t>(tree->GetUserData(proxy)));
-      if (j > i && in_contact(*e, i, j)) pairs->add(i, j);
+      if (j > i && in_contact(*e, i, j, touching)) pairs->add(i, j);
       return true;
     }
-  } query{&tree_, &e, &pairs, 0};
+  } query{&tree_, &e, &pairs, options.touching, 0};
   for (const std::int32_t k : order_) {
     query.i = static_cast<ElementId>(k);
     tree_.Query(&query, boxes_[static_cast<std::size_t>(k)]);

@@ -75,6 +75,7 @@ void StepperSession::apply_target(const SimView& sim) {
   for (int a = 0; a < e.dim; ++a) {
     cells.i[static_cast<std::size_t>(a)] = trace_->grid.cell(e.axis(a)[t.pair.i], a);
     cells.j[static_cast<std::size_t>(a)] = trace_->grid.cell(e.axis(a)[t.pair.j], a);
+    if (trace_->grid.periodic[a]) cells.wrap[static_cast<std::size_t>(a)] = trace_->grid.n[a];
   }
   const bool stray = t.invariant == Invariant::Cells && t.pair.i != t.pair.j;  // (stray, finder): a walked list
   const PairLocation at = stray ? locate_stray(stepper_.events(), t.pair.i, t.pair.j, cells.i, e.dim)

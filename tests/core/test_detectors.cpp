@@ -126,13 +126,13 @@ TEST(Generators, CellBordersHoldsContactsAsFarApartAsRoundingAllows) {
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
       const Elements e = testdata::make_layout(Layout::CellBorders, 41, dim, seed);
       for (ElementId i = 1; i + 1 < 41; i += 2) {
-        ASSERT_TRUE(in_contact(e, i, i + 1)) << seed;
+        ASSERT_TRUE(in_contact(e, i, i + 1, Touching::inclusive)) << seed;
         Elements moved = e;
         for (int a = 0; a < dim; ++a) {
           Eigen::ArrayXd& col = a == 0 ? moved.x : (a == 1 ? moved.y : moved.z);
           if (col[i] != col[i + 1]) col[i + 1] = std::nextafter(col[i + 1], HUGE_VAL);
         }
-        EXPECT_FALSE(in_contact(moved, i, i + 1)) << seed;
+        EXPECT_FALSE(in_contact(moved, i, i + 1, Touching::inclusive)) << seed;
       }
     }
 }
@@ -230,7 +230,7 @@ TEST(BruteComparison, CatchesADuplicateAndAnExtraPair) {
   EXPECT_FALSE(same_as_brute(e, dup));
   PairList extra = pairs;
   extra.push_back({0, static_cast<ElementId>(e.size() - 1)});
-  if (!in_contact(e, 0, static_cast<ElementId>(e.size() - 1))) {
+  if (!in_contact(e, 0, static_cast<ElementId>(e.size() - 1), Touching::inclusive)) {
     EXPECT_FALSE(same_as_brute(e, extra));
   }
   PairList reversed = pairs;

@@ -152,7 +152,7 @@ TEST(Grid, RoundingNeverPutsAContactTwoCellsApart) {
   // rounded, (x - xmin)/d put them two cells apart and every grid detector missed the pair.
   const Elements e = make_elements_2d((Eigen::ArrayXd(3) << -569.6134599278031, 189.38654007219682, 189.98654007219676).finished(),
                                       Eigen::ArrayXd::Zero(3), Eigen::ArrayXd::Constant(3, 0.3));
-  ASSERT_TRUE(in_contact(e, 1, 2));
+  ASSERT_TRUE(in_contact(e, 1, 2, Touching::inclusive));
   const Grid g = make_grid(e, {});
   EXPECT_EQ(g.cell_size, 0.6);  // d itself is the book's; only the integerisation is guarded
   EXPECT_LE(std::abs(g.cell(e.x[2], 0) - g.cell(e.x[1], 0)), 1);

@@ -1,0 +1,284 @@
+// LAMMPS/LIGGGHTS dumps through the command line (docs/dem.md): replay --dump --contacts, pairs,
+// dump and verify --input FILE.dump, --touching, the precision band, periodic boxes, and every bad
+// input's one line and exit 2. The dumps are written here; the contacts they list are computed here by
+// an O(N^2) loop of the test's own (strict, minimum image), never by nbscope.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "support/run_cli.hpp"
+
+namespace nbscope::testcli {
+namespace {
+
+struct Atom {
+  long long id;
+  int type;
+  double x, y, z, r;
+};
+
+// A frame of atoms: a jittered lattice so that many pairs overlap a little and many do not; `settled`:
+// no jitter, radii within a millionth of touching their neighbours, as in a settled packing, where a
+// dump's printed digits cannot tell every contact.
+std::vector<Atom> lattice_atoms(int n, unsigned seed, bool three_d, double box, bool settled = false) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> jitter(settled ? 0.0 : -0.15, settled ? 0.0 : 0.15), tiny(-1e-6, 1e-6);
+  std::vector<Atom> atoms;
+  const int side = three_d ? static_cast<int>(std::ceil(std::cbrt(n))) : static_cast<int>(std::ceil(std::sqrt(n)));
+  const double step = box / side;
+  long long id = 1;
+  for (int k = 0; static_cast<int>(atoms.size()) < n; ++k) {
+    const int ix = k % side, iy = (k / side) % side, iz = three_d ? k / (side * side) : 0;
+    id += 1 + static_cast<long long>(rng() % 3);  // ids with gaps
+    const int type = 1 + static_cast<int>(rng() % 2);
+    atoms.push_back({id, type, (ix + 0.5 + jitter(rng)) * step, (iy + 0.5 + jitter(rng)) * step,
+                     three_d ? (iz + 0.5 + jitter(rng)) * step : 0.0,
+                     settled ? step * 0.5 * (1 + tiny(rng)) : step * (type == 1 ? 0.48 : 0.55)});
+  }
+  std::shuffle(atoms.begin(), atoms.end(), rng);  // any order
+  return atoms;
+}
+
+// The dump custom text of one frame, numbers printed with `format` ("%.17g" full, "%g" LIGGGHTS's default).
+std::string dump_frame(long long timestep, const std::vector<Atom>& atoms, double box, const char* format, bool periodic = false,
+                       bool three_d = true) {
+  char b[256];
+  std::string s = "ITEM: TIMESTEP\n" + std::to_string(timestep) + "\nITEM: NUMBER OF ATOMS\n" + std::to_string(atoms.size()) +
+                  "\nITEM: BOX BOUNDS " + (periodic ? "pp pp ff" : "ff ff ff") + "\n";
+  for (int a = 0; a < 3; ++a) {
+    std::snprintf(b, sizeof b, "0 %.17g\n", box);
+    s += b;
+  }
+  s += three_d ? "ITEM: ATOMS id type x y z radius\n" : "ITEM: ATOMS id type x y radius\n";
+  const std::string f = std::string(format);
+  for (const Atom& a : atoms) {
+    const std::string row = three_d ? "%lld %d " + f + " " + f + " " + f + " " + f + "\n" : "%lld %d " + f + " " + f + " " + f + "\n";
+    if (three_d) std::snprintf(b, sizeof b, row.c_str(), a.id, a.type, a.x, a.y, a.z, a.r);
+    else std::snprintf(b, sizeof b, row.c_str(), a.id, a.type, a.x, a.y, a.r);
+    s += b;
+  }
+  return s;
+}
+
+// The atoms as the file gives them back (printed with `format` and read again).
+std::vector<Atom> as_printed(std::vector<Atom> atoms, const char* format) {
+  char b[64];
+  for (Atom& a : atoms)
+    for (double* v : {&a.x, &a.y, &a.z, &a.r}) {
+      std::snprintf(b, sizeof b, format, *v);
+      *v = std::strtod(b, nullptr);
+    }
+  return atoms;
+}
+
+// Every contact rsq < radsum^2 (strict, as LIGGGHTS), minimum image on x and y when periodic.
+std::vector<std::array<long long, 2>> exact_contacts(const std::vector<Atom>& atoms, double box, bool periodic) {
+  std::vector<std::array<long long, 2>> out;
+  for (std::size_t i = 0; i < atoms.size(); ++i)
+    for (std::size_t j = i + 1; j < atoms.size(); ++j) {
+      double dx = atoms[i].x - atoms[j].x, dy = atoms[i].y - atoms[j].y;
+      const double dz = atoms[i].z - atoms[j].z;
+      if (periodic) {
+        if (dx > box / 2) dx -= box;
+        if (dx < -box / 2) dx += box;
+        if (dy > box / 2) dy -= box;
+        if (dy < -box / 2) dy += box;
+      }
+      const double rr = atoms[i].r + atoms[j].r;
+      if (dx * dx + dy * dy + dz * dz < rr * rr) out.push_back({atoms[i].id, atoms[j].id});
+    }
+  return out;
+}
+
+// The dump local text of one frame's contacts, as LIGGGHTS's pair/gran/local `pos id` writes them
+// (x1 y1 z1 x2 y2 z2 id1 id2 periodic-flag; ids printed as floats).
+std::string local_frame(long long timestep, const std::vector<std::array<long long, 2>>& contacts, double box) {
+  std::string s = "ITEM: TIMESTEP\n" + std::to_string(timestep) + "\nITEM: NUMBER OF ENTRIES\n" + std::to_string(contacts.size()) +
+                  "\nITEM: BOX BOUNDS ff ff ff\n";
+  for (int a = 0; a < 3; ++a) s += "0 " + std::to_string(box) + "\n";
+  s += "ITEM: ENTRIES c_pgl[1] c_pgl[2] c_pgl[3] c_pgl[4] c_pgl[5] c_pgl[6] c_pgl[7] c_pgl[8] c_pgl[9]\n";
+  for (const auto& c : contacts) s += "0 0 0 0 0 0 " + std::to_string(c[0]) + ".0 " + std::to_string(c[1]) + ".0 0\n";
+  return s;
+}
+
+// Two frames in one dump, their contacts in one dump local file: the files of one test.
+struct DumpRun {
+  std::string dir, dump, contacts;
+  std::vector<std::vector<std::array<long long, 2>>> lists;
+};
+
+DumpRun write_run(const std::string& test, const char* format, bool periodic = false, bool three_d = true, bool settled = false) {
+  DumpRun run;
+  run.dir = scratch_dir(test);
+  run.dump = run.dir + "/atoms.dump";
+  run.contacts = run.dir + "/contacts.dump";
+  const double box = 0.05;
+  std::string dump, local;
+  for (int f = 0; f < 2; ++f) {
+    std::vector<Atom> atoms = lattice_atoms(f == 0 ? 300 : 290, 7 + static_cast<unsigned>(f), three_d, box, settled);  // 10 atoms lost
+    dump += dump_frame(1000 * f, atoms, box, format, periodic, three_d);
+    run.lists.push_back(exact_contacts(as_printed(atoms, "%.17g"), box, periodic));  // the code's own list: its full-precision state
+    local += local_frame(1000 * f, run.lists.back(), box);
+  }
+  write_text(run.dump, dump);
+  write_text(run.contacts, local);
+  return run;
+}
+
+// Error lines are one line: "nbscope: error: <where>: <what>\n".
+void expect_one_error_line(const Result& r, const std::string& fragment) {
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("nbscope: error: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(fragment), std::string::npos) << "wanted '" << fragment << "' in: " << r.err;
+}
+
+// replay --headless of a run's dump and contacts, the recorded pairs checked beside nbs and brute.
+Result replay(const DumpRun& run, const std::string& extra = "--touching strict", const std::string& contacts = "") {
+  return testcli::run("replay --headless --quiet --dump " + run.dump + " --contacts " + (contacts.empty() ? run.contacts : contacts) +
+                      " --algorithm recorded,nbs,brute " + extra);
+}
+
+TEST(DumpCli, ReplayedContactsEqualAnExactListUnderStrict) {
+  const DumpRun files = write_run("dump_cli_strict", "%.17g");
+  ASSERT_GT(files.lists[0].size(), 50u);  // the lattice has contacts
+  const Result r = replay(files);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("A==R held in every frame"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("2 frames"), std::string::npos) << r.out;
+}
+
+TEST(DumpCli, AContactRemovedFromTheListIsAViolationNamingBothAtomsAndTheFrame) {
+  DumpRun files = write_run("dump_cli_removed", "%.17g");
+  // The list of timestep 1000 without its 5th contact.
+  const auto gone = files.lists[1][4];
+  std::string local;
+  for (int f = 0; f < 2; ++f) {
+    auto list = files.lists[static_cast<std::size_t>(f)];
+    if (f == 1) list.erase(list.begin() + 4);
+    local += local_frame(1000 * f, list, 0.05);
+  }
+  const std::string cut = files.dir + "/cut.dump";
+  write_text(cut, local);
+  const Result r = replay(files, "--touching strict", cut);
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  const std::string atoms = "atoms " + std::to_string(gone[0]) + ", " + std::to_string(gone[1]);
+  EXPECT_NE(r.out.find(atoms), std::string::npos) << "wanted '" << atoms << "' in: " << r.out;
+  EXPECT_NE(r.out.find("first in frame 1000"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("missing from the recorded pairs"), std::string::npos) << r.out;
+}
+
+TEST(DumpCli, ADefaultFormatDumpPassesWithPairsWithinTheDataPrecision) {
+  // %g prints 6 digits: some pairs within ~1e-7 m of touching are decided by digits the file lacks.
+  const DumpRun files = write_run("dump_cli_g", "%g", false, true, true);
+  const Result r = replay(files);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("at the boundary, within the data's precision"), std::string::npos) << r.out;
+  // Without the band (a tolerance of 0) the same disagreements are violations: the band is what passes them.
+  const Result strict = replay(files, "--touching strict --tolerance 0");
+  EXPECT_EQ(strict.exit_code, 1) << strict.out << strict.err;
+}
+
+TEST(DumpCli, ExactTiesAreNamedUnderTheOtherConvention) {
+  // Two atoms exactly touching (0.25 + 0.25 = 0.5 apart, all exact in binary): LIGGGHTS (strict) lists no contact.
+  const std::string dir = scratch_dir("dump_cli_tie");
+  std::vector<Atom> atoms = {{1, 1, 1.0, 1.0, 1.0, 0.25}, {2, 1, 1.5, 1.0, 1.0, 0.25}, {3, 1, 3.0, 3.0, 3.0, 0.25}};
+  write_text(dir + "/a.dump", dump_frame(0, atoms, 4.0, "%.17g"));
+  write_text(dir + "/c.dump", local_frame(0, {}, 4.0));
+  const std::string base = "replay --headless --quiet --dump " + dir + "/a.dump --contacts " + dir + "/c.dump --algorithm recorded";
+  const Result inclusive = run(base);
+  EXPECT_EQ(inclusive.exit_code, 0) << inclusive.out << inclusive.err;
+  EXPECT_NE(inclusive.out.find("1 exact tie"), std::string::npos) << inclusive.out;
+  const Result strict = run(base + " --touching strict");
+  EXPECT_EQ(strict.exit_code, 0) << strict.out << strict.err;
+  EXPECT_EQ(strict.out.find("exact tie"), std::string::npos) << strict.out;
+  // pairs: the same frame under each convention.
+  const Result pi = run("pairs --input " + dir + "/a.dump");
+  EXPECT_NE(pi.out.find("\n1,2\n"), std::string::npos) << pi.out;
+  const Result ps = run("pairs --input " + dir + "/a.dump --touching strict");
+  EXPECT_EQ(ps.out, "i,j\n") << ps.out;
+}
+
+TEST(DumpCli, PairsOfADumpFrameAreNamedByAtomIds) {
+  const DumpRun files = write_run("dump_cli_pairs", "%.17g");
+  const Result r = testcli::run("pairs --input " + files.dump + " --timestep 1000 --touching strict");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::vector<std::array<long long, 2>> want = files.lists[1];
+  for (auto& p : want)
+    if (p[0] > p[1]) std::swap(p[0], p[1]);
+  std::sort(want.begin(), want.end());
+  std::string text = "i,j\n";
+  for (const auto& p : want) text += std::to_string(p[0]) + "," + std::to_string(p[1]) + "\n";
+  EXPECT_EQ(r.out, text);
+  // Several frames and no --timestep: refused, naming them.
+  expect_one_error_line(testcli::run("pairs --input " + files.dump), "choose one with --timestep");
+}
+
+TEST(DumpCli, VerifyTakesADumpAndItsDumpLocalContacts) {
+  const DumpRun files = write_run("dump_cli_verify", "%.17g");
+  const Result r = testcli::run("verify --input " + files.dump + " --timestep 0 --pairs " + files.contacts + " --touching strict");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find(": right"), std::string::npos) << r.out;
+}
+
+TEST(DumpCli, PeriodicContactsAcrossTheBoundaryAreFound) {
+  const DumpRun files = write_run("dump_cli_periodic", "%.17g", true);
+  // Some contact crosses the boundary (the lattice touches its own image): the test's list has one
+  // that only the minimum image gives.
+  const Result r = replay(files);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("A==R held in every frame"), std::string::npos) << r.out;
+}
+
+TEST(DumpCli, TwoDimensionalDumpsReplayInTheirOwnRight) {
+  const DumpRun files = write_run("dump_cli_2d", "%.17g", false, false);
+  const Result r = replay(files);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("A==R held in every frame"), std::string::npos) << r.out;
+}
+
+// ---- bad input: one line, exit 2 ----
+
+TEST(DumpCli, EveryBadDumpIsOneLineAndExitTwo) {
+  const std::string dir = scratch_dir("dump_cli_bad");
+  const std::string head = "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS ff ff ff\n0 1\n0 1\n0 1\n";
+  const auto refused = [&](const std::string& name, const std::string& text, const std::string& fragment) {
+    write_text(dir + "/" + name, text);
+    expect_one_error_line(run("pairs --input " + dir + "/" + name), fragment);
+  };
+  refused("no_radius.dump", head + "ITEM: ATOMS id type x y z\n1 1 0.1 0.1 0.1\n2 1 0.2 0.2 0.2\n", "radius");
+  refused("no_id.dump", head + "ITEM: ATOMS type x y z radius\n1 0.1 0.1 0.1 0.1\n1 0.2 0.2 0.2 0.1\n", "id");
+  refused("short.dump", head + "ITEM: ATOMS id x y z radius\n1 0.1 0.1 0.1 0.1\n", "2");
+  refused("repeated.dump", head + "ITEM: ATOMS id x y z radius\n7 0.1 0.1 0.1 0.1\n7 0.2 0.2 0.2 0.1\n", "7");
+  refused("triclinic.dump",
+          "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS xy xz yz ff ff ff\n0 1 0\n0 1 0\n0 1 0\n"
+          "ITEM: ATOMS id x y z radius\n1 0.1 0.1 0.1 0.1\n",
+          "triclinic");
+  refused("order.dump",
+          "ITEM: TIMESTEP\n5\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS ff ff ff\n0 1\n0 1\n0 1\nITEM: ATOMS id x y z radius\n1 0.1 0.1 0.1 0.1\n"
+          "ITEM: TIMESTEP\n3\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS ff ff ff\n0 1\n0 1\n0 1\nITEM: ATOMS id x y z radius\n1 0.1 0.1 0.1 0.1\n",
+          "3");
+  // A glob matching nothing.
+  expect_one_error_line(run("replay --headless --dump '" + dir + "/nothing*.dump'"), "no file matches");
+}
+
+TEST(DumpCli, EveryBadContactListIsOneLineAndExitTwo) {
+  const std::string dir = scratch_dir("dump_cli_bad_local");
+  std::vector<Atom> atoms = {{1, 1, 1.0, 1.0, 1.0, 0.3}, {2, 1, 1.5, 1.0, 1.0, 0.3}};
+  write_text(dir + "/a.dump", dump_frame(0, atoms, 4.0, "%.17g"));
+  const std::string head = "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ENTRIES\n1\nITEM: BOX BOUNDS ff ff ff\n0 4\n0 4\n0 4\nITEM: ENTRIES c_c[1] c_c[2]\n";
+  write_text(dir + "/half.dump", head + "1 2.5\n");
+  write_text(dir + "/absent.dump", head + "1 99\n");
+  const std::string replay = "replay --headless --dump " + dir + "/a.dump --contact-ids 1,2 --contacts ";
+  expect_one_error_line(run(replay + dir + "/half.dump"), "2.5");
+  expect_one_error_line(run(replay + dir + "/absent.dump"), "99");
+}
+
+}  // namespace
+}  // namespace nbscope::testcli
