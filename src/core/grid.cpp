@@ -81,7 +81,14 @@ Grid make_grid(const Elements& elements, const GridOptions& options) {
   g.dim = elements.dim;
   const double diameter = 2.0 * elements.max_radius();
   double d = options.cell_size.value_or(diameter);
-  if (elements.size() == 0 && !options.cell_size) d = 1.0;
+  if (elements.size() == 0 && !options.cell_size) {
+    d = 1.0;
+    // No elements, nothing to find: cells that fit at least 3 to every period (a dump's first frame
+    // before any atom is inserted), not cells of 1 a small box cannot hold (a quarter: rounding of
+    // the periodic grid's width must not leave fewer than 3).
+    for (int a = 0; a < elements.dim; ++a)
+      if (elements.box.periodic[a] && elements.box.length(a) > 0) d = std::min(d, elements.box.length(a) / 4);
+  }
   if (!std::isfinite(d) || d <= 0) throw Error("cell size must be a positive finite number, got " + fmt(d));
   if (d < diameter) {
     throw Error("cell size " + fmt(d) + " is smaller than the largest diameter " + fmt(diameter) +

@@ -204,6 +204,24 @@ TEST(Periodic, GridSpansTheBoxAndRefusesPinsThatDisagree) {
   EXPECT_THROW(make_detector("brute")->detect(e, {}, pairs), Error);
 }
 
+// A periodic frame with no elements yet (a dump's first frame, before the first insertion) has
+// nothing to find, and a small box must not be refused for cells of the default size 1.
+TEST(Periodic, AnEmptyFrameInASmallPeriodicBoxIsDetected) {
+  for (const double period : {0.04, 0.3, 5.0}) {
+    Elements e;
+    e.dim = 3;
+    e.box.periodic[0] = e.box.periodic[1] = true;
+    e.box.hi[0] = e.box.hi[1] = period;
+    const Grid g = make_grid(e, {});
+    EXPECT_GE(g.n[0], 3) << period;
+    PairList pairs;
+    for (const char* name : {"nbs", "brute"}) {
+      EXPECT_NO_THROW(make_detector(name)->detect(e, {}, pairs)) << name << " " << period;
+      EXPECT_TRUE(pairs.empty());
+    }
+  }
+}
+
 TEST(Periodic, OtherDetectorsRefuseByName) {
   Elements e;
   e.box.periodic[0] = e.box.periodic[1] = true;

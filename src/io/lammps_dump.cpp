@@ -1,0 +1,268 @@
+// The `dump custom` reader: header items, ATOMS columns by name, rows as they stream in; each
+// frame's rows then go to ascending id order (lammps_dump_frame.cpp).
+#include "io/lammps_dump.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <string_view>
+
+#include "core/error.hpp"
+#include "io/dump_text.hpp"
+#include "io/excerpt.hpp"
+#include "io/lammps_dump_frame.hpp"
+#include "io/lammps_dump_parse.hpp"
+
+namespace nbscope {
+
+namespace {
+
+using dump::Digits;
+
+enum class Column : std::uint8_t { kOther, kId, kType, kX, kY, kZ, kRadius, kDiameter };
+const char* const kColumnName[] = {"", "id", "type", "x", "y", "z", "radius", "diameter"};
+
+// The ATOMS line's columns: which one is what, and which position columns (x, xu, xs, xsu).
+struct Layout {
+  std::vector<Column> roles;
+  std::vector<std::string> names;
+  bool scaled = false;
+  bool has_z = false, has_type = false;
+  Column radius = Column::kOther;  // kRadius, kDiameter, or kOther: from the options
+};
+
+Layout layout_of(std::string_view names_line, const std::string& at, const DumpOptions& options) {
+  Layout lay;
+  for (std::string_view w : dump::words_of(names_line)) lay.names.emplace_back(w);
+  lay.roles.assign(lay.names.size(), Column::kOther);
+  const auto find = [&](const std::string& name) {
+    for (std::size_t c = 0; c < lay.names.size(); ++c)
+      if (lay.names[c] == name) return static_cast<int>(c);
+    return -1;
+  };
+  const int id = find("id");
+  if (id < 0) throw Error(at + "ITEM: ATOMS has no `id` column (nbscope names elements by their atom ids)");
+  lay.roles[static_cast<std::size_t>(id)] = Column::kId;
+  if (const int t = find("type"); t >= 0) {
+    lay.roles[static_cast<std::size_t>(t)] = Column::kType;
+    lay.has_type = true;
+  }
+  bool found = false;
+  for (const char* suffix : {"", "u", "s", "su"}) {
+    const int x = find(std::string("x") + suffix), y = find(std::string("y") + suffix), z = find(std::string("z") + suffix);
+    if (x < 0 || y < 0) continue;
+    lay.roles[static_cast<std::size_t>(x)] = Column::kX;
+    lay.roles[static_cast<std::size_t>(y)] = Column::kY;
+    lay.has_z = z >= 0 && !options.force_2d;
+    if (lay.has_z) lay.roles[static_cast<std::size_t>(z)] = Column::kZ;
+    lay.scaled = std::string_view(suffix).find('s') != std::string_view::npos;
+    found = true;
+    break;
+  }
+  if (!found) throw Error(at + "ITEM: ATOMS has no position columns (x y [z], xu yu [zu], xs ys [zs] or xsu ysu [zsu])");
+  for (Column c : {Column::kRadius, Column::kDiameter}) {
+    const int k = find(kColumnName[static_cast<int>(c)]);
+    if (k < 0) continue;
+    lay.roles[static_cast<std::size_t>(k)] = c;
+    lay.radius = c;
+    break;
+  }
+  if (lay.radius == Column::kOther && !options.radius && (options.type_radius.empty() || !lay.has_type))
+    throw Error(at + "no radius: ITEM: ATOMS has no radius or diameter column; give --radius R" +
+                (lay.has_type ? " or --type-radius TYPE:R,..." : ""));
+  return lay;
+}
+
+// One frame's header as its ITEMs arrive.
+struct Header {
+  std::optional<std::int64_t> timestep, atoms;
+  std::optional<double> time;
+  bool has_box = false;
+  DumpBox box;
+  Digits box_digits;
+  std::size_t timestep_line = 0;
+};
+
+class CustomReader {
+ public:
+  CustomReader(DumpText& text, const DumpOptions& options) : text_(text), options_(options) {}
+
+  // Every frame of the text, at most `limit`.
+  std::vector<DumpFrame> read(std::int64_t limit) {
+    std::vector<DumpFrame> frames;
+    Header header;
+    std::string_view line;
+    bool any = false;
+    while (static_cast<std::int64_t>(frames.size()) < limit && text_.next(line)) {
+      if (line.find_first_not_of(" \t") == std::string_view::npos) continue;
+      any = true;
+      const std::string_view item = dump::item_of(line);
+      if (item.data() == nullptr)
+        throw Error(text_.at() + "'" + excerpt(line) + "' where an ITEM line was expected" +
+                    (header.timestep || frames.empty() ? "" : " (more rows than NUMBER OF ATOMS?)"));
+      if (item == "TIMESTEP") {
+        if (header.timestep) throw Error(text_.at() + "a second ITEM: TIMESTEP before ITEM: ATOMS");
+        header.timestep_line = text_.line_number();
+        header.timestep = dump::integer_line(text_, "TIMESTEP");
+      } else if (item == "TIME") {
+        header.time = time_line();
+      } else if (item == "NUMBER OF ATOMS") {
+        header.atoms = dump::integer_line(text_, "NUMBER OF ATOMS");
+        if (*header.atoms < 0 || *header.atoms > kMaxElements)
+          throw Error(text_.at() + "NUMBER OF ATOMS " + std::to_string(*header.atoms) + " is outside 0 to " +
+                      std::to_string(kMaxElements) + ", the most elements nbscope reads");
+      } else if (item.rfind("BOX BOUNDS", 0) == 0) {
+        dump::read_box(text_, item.substr(10), header.box, header.box_digits);
+        header.has_box = true;
+      } else if (item.rfind("ATOMS", 0) == 0) {
+        frames.push_back(frame(header, item.substr(5), frames));
+        header = Header{};
+      } else if (item == "UNITS" || item == "LABEL") {
+        text_.next(line);  // one line of text nbscope does not use
+      } else if (item.rfind("NUMBER OF", 0) == 0 || item.rfind("ENTRIES", 0) == 0) {
+        throw Error(text_.at() + "ITEM: " + excerpt(item) + ": this is a `dump local` file (contacts), not `dump custom` atoms");
+      } else {
+        throw Error(text_.at() + "unknown item 'ITEM: " + excerpt(item) + "'");
+      }
+    }
+    if (!any) throw Error(text_.path() + ":1: empty file (expected a LAMMPS `dump custom` file)");
+    if ((header.timestep || header.atoms || header.has_box) && static_cast<std::int64_t>(frames.size()) < limit)
+      throw Error(text_.at() + "the file ends before ITEM: ATOMS (a frame cut short)");
+    return frames;
+  }
+
+ private:
+  double time_line() {
+    std::string_view line;
+    if (!text_.next(line)) throw Error(text_.at() + "the file ends after ITEM: TIME");
+    std::string_view w;
+    const char* p = line.data();
+    double t = 0;
+    if (dump::next_word(p, line.data() + line.size(), w)) {
+      auto [ptr, ec] = std::from_chars(w.data(), w.data() + w.size(), t);
+      if (ec == std::errc() && ptr == w.data() + w.size() && std::isfinite(t)) return t;
+    }
+    throw Error(text_.at() + "TIME: '" + excerpt(line) + "' is not a finite number");
+  }
+
+  DumpFrame frame(const Header& header, std::string_view names, const std::vector<DumpFrame>& before) {
+    const std::string at = text_.at();
+    if (!header.timestep) throw Error(at + "ITEM: ATOMS before ITEM: TIMESTEP");
+    if (!header.atoms) throw Error(at + "ITEM: ATOMS before ITEM: NUMBER OF ATOMS");
+    if (!header.has_box) throw Error(at + "ITEM: ATOMS before ITEM: BOX BOUNDS");
+    DumpFrame f;
+    f.timestep = *header.timestep;
+    f.where = text_.path() + ":" + std::to_string(header.timestep_line);
+    if (!before.empty() && f.timestep <= before.back().timestep)
+      throw Error(f.where + ": timestep " + std::to_string(f.timestep) + " after timestep " + std::to_string(before.back().timestep) +
+                  " (" + before.back().where + "): timesteps must increase within a file");
+    f.time = header.time;
+    f.box = header.box;
+    const Layout lay = layout_of(names, at, options_);
+    dump::RawAtoms raw(lay.has_z ? 3 : 2, lay.has_type);
+    // Slots by id only for as many rows as the text left can hold (a row is 8 bytes or more).
+    raw.start(*header.atoms, static_cast<std::uint64_t>(*header.atoms) <= text_.bytes_left() / 8);
+    raw.first_line = text_.line_number() + 1;
+    for (std::int64_t k = 0; k < *header.atoms; ++k) {
+      std::string_view line;
+      if (!text_.next(line) || dump::item_of(line).data() != nullptr)
+        throw Error(text_.at() + "timestep " + std::to_string(f.timestep) + " has " + std::to_string(k) +
+                    " rows, NUMBER OF ATOMS says " + std::to_string(*header.atoms));
+      row(line, lay, raw);
+    }
+    const double box_half = header.box_digits.half_unit();
+    dump::finish_frame(raw, f, options_, lay.scaled, box_half, lay.radius == Column::kDiameter);
+    return f;
+  }
+
+  [[noreturn]] void bad_number(std::size_t c, std::string_view w, const Layout& lay, const char* what) {
+    throw Error(text_.at() + lay.names[c] + ": '" + excerpt(w) + "' " + what);
+  }
+
+  // One atom row into `raw`; the fast path parses each number where it stands.
+  void row(std::string_view line, const Layout& lay, dump::RawAtoms& raw) {
+    const char* p = line.data();
+    const char* end = p + line.size();
+    const std::size_t ncols = lay.roles.size();
+    std::size_t c = 0;
+    std::string_view w;
+    double pos[3] = {0, 0, 0};
+    double radius = 0;
+    std::int64_t id = 0, type = 0;
+    for (; dump::next_word(p, end, w); ++c) {
+      if (c >= ncols) continue;
+      const Column role = lay.roles[c];
+      if (role == Column::kOther) continue;
+      if (role == Column::kId || role == Column::kType) {
+        std::int64_t v = 0;
+        const auto [end_int, ec_int] = std::from_chars(w.data(), w.data() + w.size(), v);
+        if (ec_int != std::errc() || end_int != w.data() + w.size())  // the message's path
+          v = dump::parse_integer(w, text_.at(), kColumnName[static_cast<int>(role)], false);
+        (role == Column::kId ? id : type) = v;
+        continue;
+      }
+      double v = 0;
+      const auto [ptr, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
+      if (ec != std::errc() && ec != std::errc::result_out_of_range) bad_number(c, w, lay, "is not a number");
+      if (ptr != w.data() + w.size()) bad_number(c, w, lay, "is not a number");
+      if (ec != std::errc() || !std::isfinite(v)) bad_number(c, w, lay, "is not a finite number");
+      if (role == Column::kRadius || role == Column::kDiameter) {
+        if (!(v > 0)) bad_number(c, w, lay, "is not > 0");
+        radius = role == Column::kDiameter ? v / 2 : v;
+        raw.radius_digits.add(w, v);
+      } else {
+        pos[static_cast<int>(role) - static_cast<int>(Column::kX)] = v;
+        raw.position_digits.add(w, v);
+      }
+    }
+    if (c != ncols)
+      throw Error(text_.at() + std::to_string(c) + " columns; ITEM: ATOMS names " + std::to_string(ncols));
+    if (lay.radius == Column::kOther) radius = radius_of(type, lay);
+    if (radius < kMinRadius || radius > kMaxRadius)
+      throw Error(text_.at() + "radius " + std::to_string(radius) + " is outside the supported radii 1e-100 to 1e100");
+    if (type < INT32_MIN || type > INT32_MAX) throw Error(text_.at() + "type " + std::to_string(type) + " does not fit 32 bits");
+    raw.push(id, static_cast<std::int32_t>(type), pos, radius);
+  }
+
+  double radius_of(std::int64_t type, const Layout& lay) {
+    if (lay.has_type) {
+      const auto it = options_.type_radius.find(type);
+      if (it != options_.type_radius.end()) return it->second;
+    }
+    if (options_.radius) return *options_.radius;
+    throw Error(text_.at() + "no radius for type " + std::to_string(type) + " (--type-radius names no such type)");
+  }
+
+  DumpText& text_;
+  const DumpOptions& options_;
+};
+
+std::vector<DumpFrame> merge(std::vector<std::vector<DumpFrame>> per_file, std::int64_t max_frames) {
+  std::vector<DumpFrame> all;
+  for (auto& frames : per_file)
+    for (auto& f : frames) all.push_back(std::move(f));
+  dump::order_by_timestep(all);
+  if (static_cast<std::int64_t>(all.size()) > max_frames) all.resize(static_cast<std::size_t>(max_frames));
+  if (all.size() > kMaxRecordedFrames) throw Error(all[kMaxRecordedFrames].where + ": more than " +
+                                                   std::to_string(kMaxRecordedFrames) + " frames, the limit for a recording");
+  return all;
+}
+
+}  // namespace
+
+std::vector<DumpFrame> read_dump_frames(const std::vector<std::string>& paths, const DumpOptions& options) {
+  std::vector<std::vector<DumpFrame>> per_file;
+  for (const std::string& path : paths) {
+    DumpText text(path);
+    per_file.push_back(CustomReader(text, options).read(options.max_frames));
+  }
+  return merge(std::move(per_file), options.max_frames);
+}
+
+std::vector<DumpFrame> parse_dump_frames(const std::string& text, const std::string& where, const DumpOptions& options) {
+  DumpText lines(text, where);
+  std::vector<std::vector<DumpFrame>> one;
+  one.push_back(CustomReader(lines, options).read(options.max_frames));
+  return merge(std::move(one), options.max_frames);
+}
+
+}  // namespace nbscope
