@@ -15,7 +15,7 @@ const std::vector<OptionSpec>& rendering_options() {
       {"--panels", "SPEC", "", "the same for panels: controls scenes algorithm overlays stats selection metrics violations timeline "
                                "stepper pseudocode arrays scaling"},
       {"--select", "K", "", "select element K as shown (its cell, lists and pairs highlighted, its trail drawn): from 0, or from 1 with "
-                            "--book-numbering"},
+                            "--book-numbering; on a dump's frames, the atom id K"},
       {"--lists", "FILTER", "row past 300 elements, else all",
        "the lists overlay draws all lists, the selected element's, or one row's (all | selected | row)"},
       {"--camera", "X,Y,PPM", "", "put (X, Y) in the middle of the view the panels leave free, at PPM pixels per metre, instead of fitting "

@@ -61,7 +61,9 @@ void fit_periodic_axis(Grid& g, const Elements& e, const GridOptions& options, i
   if (!(cells >= 3)) {
     throw Error(std::string(axis) + " is periodic over L = " + fmt(period) + " with cell size " + fmt(g.cell_size) +
                 ": " + fmt_count(cells) + " cells; the wrap needs at least 3 (a cell's left and right neighbour " +
-                "would be the same cell)" + (std::floor(period / g.cell_size) >= 3 ? widened : ""));
+                "would be the same cell)" + (std::floor(period / g.cell_size) >= 3 ? widened : "") +
+                // LIGGGHTS's `dimension 2` writes z = 0 in a thin periodic z slab.
+                (a == 2 ? "; a 2D simulation's frames (z = 0) are read as 2D with --2d" : ""));
   }
   if (!(cells <= static_cast<double>(kMaxCellsPerSide))) {
     throw Error(std::string("the grid would need ") + fmt_count(cells) + " cells along periodic " + axis +
