@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""nbscope tests/dem: a second oracle for LIGGGHTS's contact lists, independent of nbscope (docs/dem.md).
+"""nbscope tests/dem: a second oracle for LIGGGHTS's and LAMMPS's contact lists, independent of nbscope (docs/dem.md).
 
 Reads `dump custom` frames (id type x y z radius, any column order, atoms in any order) and the
-`dump local` contacts of `compute pair/gran/local pos id` (ids in columns 7 and 8), and compares each
+`dump local` contacts of LIGGGHTS's `compute pair/gran/local pos id` (ids in columns 7 and 8) or of
+LAMMPS's `compute property/local patom1 patom2` (two columns: the ids), and compares each
 frame's list with the exact strict contacts: |c_i - c_j|^2 < (r_i + r_j)^2 computed in rational
 arithmetic on the doubles as read, minimum image on the axes BOX BOUNDS flags `pp`.
 
@@ -106,15 +107,16 @@ def read_atoms(pattern):
 
 
 def read_contacts(pattern):
-    """{timestep: [(i, j), ...]} from the `dump local` files of compute pair/gran/local pos id."""
+    """{timestep: [(i, j), ...]} from `dump local` files: pair/gran/local pos id, or property/local patom1 patom2."""
     frames = {}
     for path in sorted(glob.glob(pattern)):
         for timestep, _, _, rows, where in frames_of(path):
             pairs = []
             for row in rows:
-                ids = [float(value) for value in row[6:8]]
-                if any(value != math.floor(value) for value in ids):
-                    raise InputError(f"{where}: a contact's id is not an integer: {row[6:8]}")
+                texts = row[0:2] if len(row) == 2 else row[6:8]  # patom1 patom2 alone, else `pos id`
+                ids = [float(value) for value in texts]
+                if len(ids) != 2 or any(value != math.floor(value) for value in ids):
+                    raise InputError(f"{where}: a contact's ids are not two integers: {texts}")
                 pairs.append((int(ids[0]), int(ids[1])))
             frames[timestep] = pairs
     if not frames:
@@ -203,8 +205,8 @@ def check_frame(timestep, box, atoms, listed, band):
             outside += 1
         given.add(pair)
     exact = exact_contacts(box, atoms)
-    for pair, what in [(p, "missing from LIGGGHTS's list") for p in sorted(exact - given)] + \
-                      [(p, "listed by LIGGGHTS, not touching") for p in sorted(given - exact)
+    for pair, what in [(p, "missing from the dump's list") for p in sorted(exact - given)] + \
+                      [(p, "listed in the dump, not touching") for p in sorted(given - exact)
                        if p[0] in atoms and p[1] in atoms]:
         gap, error = gap_and_error(pair[0], pair[1], box, atoms)
         if band and abs(gap) <= error:
@@ -224,11 +226,13 @@ def frame_text(bounds, rows):
     return "\n".join(lines + [f"{r.split()[0]} 1 {' '.join(r.split()[1:])}" for r in rows]) + "\n"
 
 
-def contacts_text(pairs):
-    """A one-frame `dump local` of pair/gran/local pos id for the self-test."""
+def contacts_text(pairs, two_columns=False):
+    """A one-frame `dump local` for the self-test: pair/gran/local pos id, or property/local patom1 patom2."""
     lines = ["ITEM: TIMESTEP", "500", "ITEM: NUMBER OF ENTRIES", str(len(pairs)), "ITEM: BOX BOUNDS ff ff ff",
-             "0 10", "0 10", "0 10", "ITEM: ENTRIES c_pgl[1] c_pgl[2] c_pgl[3] c_pgl[4] c_pgl[5] c_pgl[6] "
-             "c_pgl[7] c_pgl[8] c_pgl[9]"]
+             "0 10", "0 10", "0 10"]
+    if two_columns:
+        return "\n".join(lines + ["ITEM: ENTRIES c_pl[1] c_pl[2]"] + [f"{i} {j}" for i, j in pairs]) + "\n"
+    lines.append("ITEM: ENTRIES c_pgl[1] c_pgl[2] c_pgl[3] c_pgl[4] c_pgl[5] c_pgl[6] c_pgl[7] c_pgl[8] c_pgl[9]")
     return "\n".join(lines + [f"0 0 0 0 0 0 {i} {j} 0" for i, j in pairs]) + "\n"
 
 
@@ -241,6 +245,7 @@ def self_test():
     touching_at_zero_gap = ["1 0 5 5 0.5", "2 1 5 5 0.5"]             # |c1 - c2| = r1 + r2 exactly
     across_x = ["1 0.125 5 5 0.25", "2 9.875 5 5 0.25"]                # 0.25 apart through x = 0
     printed_g = ["1 0 5 5 0.5", "2 1.00001 5 5 0.500008"]              # gap 2e-6, %g's error 6e-6
+    overlapping = ["1 0 5 5 0.5", "2 0.875 5 5 0.5"]
     cases = [  # (name, bounds, rows, listed pairs, --band, expected exit)
         ("zero gap is no strict contact", "ff ff ff", touching_at_zero_gap, [], False, 0),
         ("zero gap listed is an extra pair", "ff ff ff", touching_at_zero_gap, [(1, 2)], False, 1),
@@ -251,6 +256,8 @@ def self_test():
         ("%g pair without --band", "ff ff ff", printed_g, [(1, 2)], False, 1),
         ("exact digits leave no band", "ff ff ff", ["1 0 5 5 0.5", "2 1.0000020000000001 5 5 0.5"],
          [(1, 2)], True, 1),
+        ("LAMMPS patom1 patom2: ids in columns 1 and 2", "ff ff ff", overlapping, [(2, 1)], False, 0),
+        ("LAMMPS patom1 patom2: a missing pair is named", "ff ff ff", overlapping, [], False, 1),
     ]
     failed = 0
     with tempfile.TemporaryDirectory() as folder:
@@ -259,7 +266,7 @@ def self_test():
             with open(atoms, "w", encoding="ascii") as handle:
                 handle.write(frame_text(bounds, rows))
             with open(contacts, "w", encoding="ascii") as handle:
-                handle.write(contacts_text(pairs))
+                handle.write(contacts_text(pairs, two_columns=name.startswith("LAMMPS")))
             with contextlib.redirect_stdout(io.StringIO()) as out:
                 got = main((["--band"] if band else []) + [atoms, contacts])
             if got != want:
@@ -302,10 +309,10 @@ def main(argv):
         print(f"{outside} contact(s) differ from the exact list ({frames} frames)")
         return 1
     if inside:
-        print(f"LIGGGHTS's list equals the exact strict list in every frame but for {inside} pair(s) at the "
+        print(f"The dump's list equals the exact strict list in every frame but for {inside} pair(s) at the "
               f"boundary, within the data's precision ({frames} frames)")
     else:
-        print(f"LIGGGHTS's list equals the exact strict list in every frame ({frames} frames)")
+        print(f"The dump's list equals the exact strict list in every frame ({frames} frames)")
     return 0
 
 
