@@ -14,9 +14,7 @@
 #    does the same:
 #    exit 0 and "A==R held in every frame" (at %g: the pairs "within the data's precision" said so,
 #    when step 2 found any), and exit 1 naming the deleted contact's ids and timestep.
-# Exit 77 (CTest's skip) when liggghts (lmp) is missing or nbscope cannot read dumps yet (no `replay --dump`,
-# or the stand-in readers that say "dumps are not read yet"), unless CI=true: CI must run it, so
-# there both fail.
+# Exit 77 (CTest's skip) when liggghts (lmp) is missing, unless CI=true: CI must run it, so there it fails.
 set -euo pipefail
 
 [ $# -eq 4 ] || { echo "usage: $0 NBSCOPE_BIN SRC_DIR OUT_DIR pour3d|pour2d|periodic|lammps" >&2; exit 2; }
@@ -96,10 +94,6 @@ expect 1 oracle_removed.txt "$python" "$check" 'atoms.*.dump' 'removed/contacts.
 names oracle_removed.txt "$id1" "$id2" "$timestep"
 
 # 3. nbscope
-help=$("$nbscope" replay --help 2>&1 || true)
-[[ "$help" == *--dump* ]] || skip "this nbscope has no 'replay --dump' yet (the oracle above passed)"
-probe=$("$nbscope" replay --headless --frames 1 --dump "$out/${dumps[0]}" 2>&1 || true)
-[[ "$probe" != *"dumps are not read yet"* ]] || skip "this nbscope's dump readers are stand-ins (the oracle above passed)"
 # --headless: no window even when a display is there.
 replay=("$nbscope" replay --headless --touching strict --algorithm "recorded,nbs,brute")
 if [ "$case" = pour2d ]; then replay+=(--2d); fi  # LIGGGHTS's `dimension 2` writes z = 0: discs
