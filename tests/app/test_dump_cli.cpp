@@ -252,10 +252,10 @@ TEST(DumpCli, EveryBadDumpIsOneLineAndExitTwo) {
     write_text(dir + "/" + name, text);
     expect_one_error_line(run("pairs --input " + dir + "/" + name), fragment);
   };
-  refused("no_radius.dump", head + "ITEM: ATOMS id type x y z\n1 1 0.1 0.1 0.1\n2 1 0.2 0.2 0.2\n", "radius");
-  refused("no_id.dump", head + "ITEM: ATOMS type x y z radius\n1 0.1 0.1 0.1 0.1\n1 0.2 0.2 0.2 0.1\n", "id");
-  refused("short.dump", head + "ITEM: ATOMS id x y z radius\n1 0.1 0.1 0.1 0.1\n", "2");
-  refused("repeated.dump", head + "ITEM: ATOMS id x y z radius\n7 0.1 0.1 0.1 0.1\n7 0.2 0.2 0.2 0.1\n", "7");
+  refused("no_radius.dump", head + "ITEM: ATOMS id type x y z\n1 1 0.1 0.1 0.1\n2 1 0.2 0.2 0.2\n", "no radius or diameter column");
+  refused("no_id.dump", head + "ITEM: ATOMS type x y z radius\n1 0.1 0.1 0.1 0.1\n1 0.2 0.2 0.2 0.1\n", "no `id` column");
+  refused("short.dump", head + "ITEM: ATOMS id x y z radius\n1 0.1 0.1 0.1 0.1\n", "has 1 rows, NUMBER OF ATOMS says 2");
+  refused("repeated.dump", head + "ITEM: ATOMS id x y z radius\n7 0.1 0.1 0.1 0.1\n7 0.2 0.2 0.2 0.1\n", "atom id 7 appears twice");
   refused("triclinic.dump",
           "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS xy xz yz ff ff ff\n0 1 0\n0 1 0\n0 1 0\n"
           "ITEM: ATOMS id x y z radius\n1 0.1 0.1 0.1 0.1\n",
@@ -263,7 +263,7 @@ TEST(DumpCli, EveryBadDumpIsOneLineAndExitTwo) {
   refused("order.dump",
           "ITEM: TIMESTEP\n5\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS ff ff ff\n0 1\n0 1\n0 1\nITEM: ATOMS id x y z radius\n1 0.1 0.1 0.1 0.1\n"
           "ITEM: TIMESTEP\n3\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS ff ff ff\n0 1\n0 1\n0 1\nITEM: ATOMS id x y z radius\n1 0.1 0.1 0.1 0.1\n",
-          "3");
+          "timestep 3 after timestep 5");
   // A glob matching nothing.
   expect_one_error_line(run("replay --headless --dump '" + dir + "/nothing*.dump'"), "no file matches");
 }
@@ -276,8 +276,8 @@ TEST(DumpCli, EveryBadContactListIsOneLineAndExitTwo) {
   write_text(dir + "/half.dump", head + "1 2.5\n");
   write_text(dir + "/absent.dump", head + "1 99\n");
   const std::string replay = "replay --headless --dump " + dir + "/a.dump --contact-ids 1,2 --contacts ";
-  expect_one_error_line(run(replay + dir + "/half.dump"), "2.5");
-  expect_one_error_line(run(replay + dir + "/absent.dump"), "99");
+  expect_one_error_line(run(replay + dir + "/half.dump"), "'2.5' is not an integer");
+  expect_one_error_line(run(replay + dir + "/absent.dump"), "atom 99 is not in the frame of timestep 0");
 }
 
 }  // namespace
