@@ -37,10 +37,16 @@ int run_replay(Args& args) {
   const bool window = !headless && replay_window_available();
   parse_view_options(args, !window, o.view);
   const auto file = args.positional();  // after the flags, so a flag's value is not taken for it
-  if (const auto extra = args.positional()) throw Error("replay: " + *extra + ": unexpected argument (one recording at a time)");
+  if (const auto extra = args.positional()) {
+    // `--dump atoms.*.dump` unquoted: the shell made the glob's files into words.
+    if (!dump.dumps.empty() || !dump.contacts.empty())
+      throw Error("replay: " + *extra + ": unexpected argument (a glob the shell expanded? quote it: --dump 'atoms.*.dump')");
+    throw Error("replay: " + *extra + ": unexpected argument (one recording at a time)");
+  }
   args.finish();
   if (!dump.dumps.empty() || !dump.contacts.empty()) {
-    if (file) throw Error("replay: " + *file + ": give the frames either as FILE.nbsrec or with --dump, not both");
+    if (file)
+      throw Error("replay: " + *file + ": give the frames either as FILE.nbsrec or with --dump, not both (a glob the shell expanded? quote it: --dump 'atoms.*.dump')");
     if (dump.dumps.empty()) throw Error("--contacts: needs --dump FILES (the frames the contacts belong to)");
     o.replay = dump.dumps.front();
     o.dump = std::move(dump);

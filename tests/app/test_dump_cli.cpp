@@ -264,6 +264,8 @@ TEST(DumpCli, EveryBadDumpIsOneLineAndExitTwo) {
           "ITEM: TIMESTEP\n5\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS ff ff ff\n0 1\n0 1\n0 1\nITEM: ATOMS id x y z radius\n1 0.1 0.1 0.1 0.1\n"
           "ITEM: TIMESTEP\n3\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS ff ff ff\n0 1\n0 1\n0 1\nITEM: ATOMS id x y z radius\n1 0.1 0.1 0.1 0.1\n",
           "timestep 3 after timestep 5");
+  // A glob the shell expanded (unquoted): its second file is a word of its own.
+  expect_one_error_line(run("replay --headless --dump " + dir + "/short.dump " + dir + "/order.dump"), "quote it");
   // A glob matching nothing.
   expect_one_error_line(run("replay --headless --dump '" + dir + "/nothing*.dump'"), "no file matches");
 }
