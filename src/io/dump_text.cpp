@@ -77,7 +77,7 @@ void DumpText::check_chunk(std::size_t from) {
 bool DumpText::fill() {
   if (end_) return false;
   const std::size_t rest = data_.size() - begin_;
-  std::memmove(buf_.get(), data_.data() + begin_, rest);
+  if (rest > 0) std::memmove(buf_.get(), data_.data() + begin_, rest);  // the first fill has no data_ (null) to move
   base_ += begin_;
   begin_ = 0;
   const std::size_t room = capacity_ - rest;
@@ -105,7 +105,8 @@ bool DumpText::fill() {
 
 bool DumpText::next(std::string_view& line) {
   for (;;) {
-    const void* nl = std::memchr(data_.data() + begin_, '\n', data_.size() - begin_);
+    // Nothing read yet: data_ is empty and its pointer may be null, which memchr must not be given.
+    const void* nl = begin_ < data_.size() ? std::memchr(data_.data() + begin_, '\n', data_.size() - begin_) : nullptr;
     if (nl != nullptr || end_) {
       if (nl == nullptr && begin_ == data_.size()) return false;
       const std::size_t stop = nl == nullptr ? data_.size() : static_cast<std::size_t>(static_cast<const char*>(nl) - data_.data());
