@@ -13,7 +13,7 @@
 #include "core/pairs.hpp"
 #include "app/commands.hpp"
 #include "app/dump_input.hpp"
-#include "check/report.hpp"
+#include "check/check.hpp"
 #include "app/view_options.hpp"
 #include "app/verify_run.hpp"
 #include "core/detector.hpp"
@@ -45,7 +45,7 @@ struct PairsReport {
   const Grid& grid;
   int base;
   const std::vector<std::int64_t>& ids;  // a dump's atom ids: elements are named by them
-  [[nodiscard]] std::string id(std::int64_t k) const { return std::to_string(ids.empty() ? k + base : element_name(ids, k)); }
+  [[nodiscard]] std::string id(std::int64_t k) const { return std::to_string(ids.empty() ? k + base : element_id(&ids, k)); }
   [[nodiscard]] std::string cell(std::int64_t k) const {
     const auto i = static_cast<ElementId>(k);
     std::array<std::int32_t, 3> c{grid.cell(e.x[i], 0), grid.cell(e.y[i], 1), e.dim == 3 ? grid.cell(e.z[i], 2) : -1};
@@ -58,15 +58,6 @@ struct PairsReport {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.6g", gap);
     return "cells " + cell(i) + " and " + cell(j) + ", distance - radii = " + buf + (gap <= 0 ? " (in contact)" : " (apart)");
-  }
-  // A disagreement the data cannot decide: within `precision` of touching, or an exact tie (BoundaryPair).
-  [[nodiscard]] std::optional<BoundaryPair> boundary(std::int64_t i, std::int64_t j, double precision, bool in_r) const {
-    if (i < 0 || j < 0 || i >= e.size() || j >= e.size() || i == j) return std::nullopt;
-    const auto a = static_cast<ElementId>(i), b = static_cast<ElementId>(j);
-    const double gap = contact_gap(e, a, b);
-    const bool tie = in_contact(e, a, b, Touching::inclusive) && !in_contact(e, a, b, Touching::strict);
-    if (!tie && !(std::abs(gap) <= precision)) return std::nullopt;
-    return BoundaryPair{Pair{a, b}, gap, tie ? 0.0 : precision, tie, in_r};
   }
 };
 
@@ -116,12 +107,12 @@ int verify_pairs(const std::string& input, const std::string& pairs_path, const 
   std::vector<BoundaryPair> boundary;
   const double precision = frame.dump ? frame.precision : 0;
   std::erase_if(v.missing, [&](const Pair& m) {
-    const auto b = p.boundary(m.i, m.j, precision, true);
+    const auto b = boundary_pair(e, m.i, m.j, precision, true);
     if (b) boundary.push_back(*b);
     return b.has_value();
   });
   std::erase_if(v.extra, [&](const verify::GivenPair& x) {
-    const auto b = p.boundary(std::min(x.i, x.j), std::max(x.i, x.j), precision, false);
+    const auto b = boundary_pair(e, std::min(x.i, x.j), std::max(x.i, x.j), precision, false);
     if (b) boundary.push_back(*b);
     return b.has_value();
   });

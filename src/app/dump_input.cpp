@@ -187,10 +187,6 @@ InputFrame read_input_frame(const std::string& path, const DumpFlags& flags) {
   return in;
 }
 
-std::int64_t element_name(const std::vector<std::int64_t>& ids, std::int64_t row) {
-  return ids.empty() || row < 0 || static_cast<std::size_t>(row) >= ids.size() ? row : ids[static_cast<std::size_t>(row)];
-}
-
 const std::vector<OptionSpec>& dump_input_options() {
   static const std::vector<OptionSpec> options = {
       {"--timestep", "S", "the only frame", "with --input FILE.dump: the frame of timestep S (a dump with several frames needs it)"},

@@ -48,8 +48,6 @@ struct InputFrame {
 };
 // Reads --input `path` as a dump (is_dump_file) or as ELEMENTS.csv; Error for dump flags on a CSV file.
 InputFrame read_input_frame(const std::string& path, const DumpFlags& flags);
-// The element `row` as messages name it: its atom id, or the row itself.
-std::int64_t element_name(const std::vector<std::int64_t>& ids, std::int64_t row);
 
 // --periodic and --box on elements read from ELEMENTS.csv: the periodic box set and centres wrapped
 // into it; Error for --periodic without --box, or an axis the elements do not have.

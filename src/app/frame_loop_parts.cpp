@@ -25,8 +25,7 @@ const std::vector<std::int64_t>* LoopSource::element_ids(std::int64_t frame) con
   return it != frames.end() && it->number == frame && !it->ids.empty() ? &it->ids : nullptr;
 }
 std::int64_t LoopSource::element_name(std::int64_t frame, std::int64_t row) const {
-  const std::vector<std::int64_t>* ids = element_ids(frame);
-  return ids != nullptr && row >= 0 && static_cast<std::size_t>(row) < ids->size() ? (*ids)[static_cast<std::size_t>(row)] : row;
+  return element_id(element_ids(frame), row);
 }
 bool LoopSource::at_end() const { return s_->replay && !s_->replay->can_step(); }
 bool LoopSource::step_pending() const { return s_->pending(); }

@@ -31,6 +31,15 @@ double lap(Clock::time_point& t) {
 
 }  // namespace
 
+std::optional<BoundaryPair> boundary_pair(const Elements& e, std::int64_t i, std::int64_t j, double precision, bool in_r) {
+  if (i < 0 || j < 0 || i >= e.size() || j >= e.size() || i == j) return std::nullopt;
+  const auto a = static_cast<ElementId>(i), b = static_cast<ElementId>(j);
+  const double gap = contact_gap(e, a, b);
+  const bool tie = in_contact(e, a, b, Touching::inclusive) && !in_contact(e, a, b, Touching::strict);
+  if (!tie && !(std::abs(gap) <= precision)) return std::nullopt;
+  return BoundaryPair{Pair{a, b}, gap, tie ? 0.0 : precision, tie, in_r};
+}
+
 FrameChecker::FrameChecker(CheckOptions options) : options_(options) {}
 FrameChecker::~FrameChecker() = default;
 
@@ -228,12 +237,11 @@ void FrameChecker::check(const CheckInput& in, FrameReport& out) {
   // Recorded pairs come from a file: a pair decided only by digits the file did not print, or an
   // exact tie the other convention decides the other way, is at the boundary, not a violation.
   const auto at_boundary = [&](const Pair& p, bool in_r) {
-    if (in.precision < 0 || p.i < 0 || p.j < 0 || p.i >= n || p.j >= n) return false;
-    const double gap = contact_gap(e, p.i, p.j);
-    const bool tie = in_contact(e, p.i, p.j, Touching::inclusive) && !in_contact(e, p.i, p.j, Touching::strict);
-    if (!tie && !(std::abs(gap) <= in.precision)) return false;
-    ++(tie ? out.counts.ties : out.counts.boundary);
-    if (out.boundary.size() < kMaxListedBoundaryPerFrame) out.boundary.push_back({p, gap, tie ? 0.0 : in.precision, tie, in_r});
+    if (in.precision < 0) return false;
+    const std::optional<BoundaryPair> b = boundary_pair(e, p.i, p.j, in.precision, in_r);
+    if (!b) return false;
+    ++(b->tie ? out.counts.ties : out.counts.boundary);
+    if (out.boundary.size() < kMaxListedBoundaryPerFrame) out.boundary.push_back(*b);
     return true;
   };
   out.boundary.clear();

@@ -22,6 +22,7 @@
 //                  (stray, finder), cells the list's (where the detector had it) and the finder's.
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -52,6 +53,11 @@ struct CheckInput {
   // within it, or an exact tie, is a BoundaryPair, not a violation. Negative: no band (a detector's pairs).
   double precision = -1;
 };
+
+// A pair of `elements` on which a file's pairs and R disagree, when the data cannot decide it: its gap
+// within `precision` of touching, or an exact tie the two touching conventions decide differently
+// (`in_r`: R has it). nullopt for any other pair (a violation), or one naming no two elements.
+[[nodiscard]] std::optional<BoundaryPair> boundary_pair(const Elements& elements, std::int64_t i, std::int64_t j, double precision, bool in_r);
 
 class FrameChecker {
  public:

@@ -50,6 +50,12 @@ struct RecordedFrame {
   double precision = 0;
 };
 
+// Row `row` as its frame names it: the atom id `ids` gives it (a dump's), else the row itself (no
+// ids, or a row outside them).
+[[nodiscard]] inline std::int64_t element_id(const std::vector<std::int64_t>* ids, std::int64_t row) {
+  return ids != nullptr && row >= 0 && static_cast<std::size_t>(row) < ids->size() ? (*ids)[static_cast<std::size_t>(row)] : row;
+}
+
 // A whole recording as read.
 struct Recording {
   std::string path;  // as given

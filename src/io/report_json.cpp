@@ -26,6 +26,7 @@
 #include <utility>
 
 #include "io/atomic_file.hpp"
+#include "io/recording.hpp"
 
 namespace nbscope {
 
@@ -38,11 +39,6 @@ json check_parts_json(const CheckTimings& t) {
   json parts = json::object();
   for (int k = 0; k < CheckTimings::kParts; ++k) parts[CheckTimings::part_name(k)] = t.part(k);
   return parts;
-}
-
-// Element `row` as the frame's source names it: its atom id (a dump's), else the row.
-std::int64_t id_of(const std::vector<std::int64_t>* ids, std::int64_t row) {
-  return ids != nullptr && row >= 0 && static_cast<std::size_t>(row) < ids->size() ? (*ids)[static_cast<std::size_t>(row)] : row;
 }
 
 json frame_json(const FrameReport& f, const std::vector<std::int64_t>* ids) {
@@ -59,13 +55,13 @@ json frame_json(const FrameReport& f, const std::vector<std::int64_t>* ids) {
                           {"pair", {v.pair.i, v.pair.j}},
                           {"cells", {{v.cell_i.ix, v.cell_i.iy}, {v.cell_j.ix, v.cell_j.iy}}},
                           {"what", v.what}});
-    if (ids != nullptr) violations.back()["ids"] = {id_of(ids, v.pair.i), id_of(ids, v.pair.j)};
+    if (ids != nullptr) violations.back()["ids"] = {element_id(ids, v.pair.i), element_id(ids, v.pair.j)};
   }
   json boundary = json::array();
   for (const BoundaryPair& b : f.boundary) {
     boundary.push_back({{"pair", {b.pair.i, b.pair.j}}, {"gap", b.gap}, {"resolution", b.resolution}, {"tie", b.tie},
                         {"in", b.in_r ? "R" : "A"}, {"what", boundary_text(b)}});
-    if (ids != nullptr) boundary.back()["ids"] = {id_of(ids, b.pair.i), id_of(ids, b.pair.j)};
+    if (ids != nullptr) boundary.back()["ids"] = {element_id(ids, b.pair.i), element_id(ids, b.pair.j)};
   }
   char hash[24];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(f.hash));
