@@ -34,6 +34,7 @@ struct ViewOptions {
   std::optional<std::int64_t> step;       // --step K: the stepper shows the state after K trace events
   bool book_numbering = false;            // --book-numbering: the stepper numbers from 1, as the book
   std::string lists;                      // --lists all|selected|row: the lists overlay's filter ("" = by size)
+  std::string layer;                      // --layer K|auto: the layer of a 3D frame shown ("" = the view's choice)
   std::optional<ScalingShown> scaling;    // headless --scaling: the Scaling panel open on these rows
   std::optional<std::int64_t> frames;     // gui --frames N of a scripted window (set by the command, not parse_view_options)
 };

@@ -13,6 +13,7 @@ using State = std::vector<std::vector<std::int32_t>>;
 // An open list: pushed onto since its last capture.
 struct Open {
   std::int32_t phase_index = -1;
+  std::int32_t phase_layer = -1;
   std::int32_t cell[3] = {-1, -1, -1};
   std::string kind;
 };
@@ -82,6 +83,7 @@ std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_co
   std::map<std::pair<int, std::int64_t>, Open> open;
   std::vector<TracedList> out;
   std::int32_t phase_index = -1;
+  std::int32_t phase_layer = -1;
 
   auto capture = [&](int heads, std::int64_t slot, const Open& o) {
     TracedList l;
@@ -90,6 +92,7 @@ std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_co
     l.heads_name = log.arrays()[static_cast<std::size_t>(heads)].name;
     l.slot = slot;
     l.phase_index = o.phase_index;
+    l.phase_layer = o.phase_layer;
     std::copy(std::begin(o.cell), std::end(o.cell), std::begin(l.cell));
     const TracedArray& array = log.arrays()[static_cast<std::size_t>(heads)];
     l.heads_shape = array.shape;
@@ -104,7 +107,10 @@ std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_co
   for (std::size_t i = 0; i < count; ++i) {
     const TraceEvent& e = log.events()[i];
     switch (e.op) {
-      case TraceOp::Phase: phase_index = e.index; break;
+      case TraceOp::Phase:
+        phase_index = e.index;
+        phase_layer = e.cell[2];
+        break;
       case TraceOp::Push: {
         const int heads = e.writes[1].array;
         if (heads >= 0 && e.writes[0].array >= 0) next_of[static_cast<std::size_t>(heads)] = e.writes[0].array;
@@ -112,6 +118,7 @@ std::vector<TracedList> traced_lists(const TraceLog& log, std::size_t element_co
         if (!open.contains(key)) {
           Open o;
           o.phase_index = phase_index;
+          o.phase_layer = phase_layer;
           std::copy(std::begin(e.cell), std::end(e.cell), std::begin(o.cell));
           o.kind = e.label;
           open.emplace(key, std::move(o));

@@ -24,6 +24,7 @@ struct TracedList {
   std::int64_t slot = -1;        // flat index of the head in that array
   std::vector<std::int64_t> heads_shape;  // that array's shape, to name the head as the book does (B[1][8])
   std::int32_t phase_index = -1; // index of the phase it was built in (NBS: row iy of the x-lists)
+  std::int32_t phase_layer = -1; // the layer iz that phase works on (NBS 3D: the layer whose rows are processed; -1: none)
   std::int32_t cell[3] = {-1, -1, -1};  // the cell of its pushes (-1 for an axis the list does not fix)
   bool secondary = false;        // a copy built for a neighbour row (NBS B[1]: x-lists of row iy-1)
   std::vector<ElementId> chain;  // head first, in the order of the next array

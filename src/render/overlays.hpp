@@ -16,6 +16,7 @@
 
 #include "core/elements.hpp"
 #include "core/grid.hpp"
+#include "core/layers.hpp"
 #include "core/pairs.hpp"
 #include "render/camera.hpp"
 #include "render/draw_sink.hpp"
@@ -124,6 +125,10 @@ struct OverlayScene {
   // Someone's own arrays checked (nbscope verify --arrays): `lists` are theirs, these are the
   // problems found, drawn in red over them (wrong links, elements ringed, cut lists' ends).
   const VerifyMarks* verify = nullptr;
+  // A 3D frame is shown one layer of cells at a time (core/layers.hpp): the elements of `layer->layer`
+  // as in 2D, those of the layer below (which the mask reaches) ghosted, the others hidden; lists,
+  // pairs, checks and the mask of this layer and the one below. Null for a 2D frame.
+  const LayerSlice* layer = nullptr;
 };
 
 // The row whose lists the Row filter keeps (and whose row-below copies are drawn): the stepper's row

@@ -84,6 +84,9 @@ struct SimView {
   // The shown frame's source (the FrameResult holds no elements).
   std::int64_t bodies = 0;
   const Elements* elements = nullptr;
+  // The layer of a 3D frame the view shows (core/layers.hpp: every element's layer, the layer's
+  // neighbours), null for a 2D frame.
+  const LayerSlice* layer = nullptr;
   const std::vector<TracedList>* lists = nullptr;  // only while the list overlay is on
   // The frame's FrameResult::trace, handed only when the lists overlay or the stepper asked for it
   // this frame (null otherwise; the stepper then asks for the next frame's, StepperSession::wants_trace).
@@ -155,6 +158,10 @@ struct UiState {
   std::int64_t history_budget_mb = 256;  // the Timeline's memory budget, saved in the settings
   bool book_numbering = false;  // element ids and cell indices shown (and typed) from 1, as the book prints them
   std::optional<std::array<std::int32_t, 2>> hovered_cell;
+  // The layer of a 3D frame the user chose (slider, keys, the side view's band); unset: the view
+  // chooses (the selected element's or pair's layer, else the busiest). Clamped to the frame's layers.
+  std::optional<std::int32_t> layer;
+  bool side_view_yz = false;  // the side view shows y-z instead of x-z
   std::optional<Eigen::Vector2d> mouse_world;
   bool dragging = false;
   std::string open_path;  // the Scenes panel's file field
