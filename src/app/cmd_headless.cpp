@@ -13,9 +13,11 @@
 #include "app/clock.hpp"
 #include "app/commands.hpp"
 #include "app/frame_loop.hpp"
+#include "app/frame_recorder.hpp"
 #include "app/headless.hpp"
 #include "app/headless_view.hpp"
 #include "app/help.hpp"
+#include "app/progress_bar.hpp"
 #include "app/scaling_flags.hpp"
 #include "check/recorded_lane.hpp"
 #include "core/error.hpp"
@@ -30,35 +32,6 @@
 namespace nbscope {
 
 namespace {
-
-// A one-line bar on stderr, redrawn only when it changes; erased when done or when an error
-// unwinds past it, so that the error line starts clean.
-class Progress {
- public:
-  Progress(bool on, std::int64_t total) : on_(on), total_(total) {}
-  Progress(const Progress&) = delete;
-  Progress& operator=(const Progress&) = delete;
-  ~Progress() { finish(); }
-  void update(std::int64_t done) {
-    if (!on_) return;
-    const int width = 40;
-    const int filled = static_cast<int>(width * done / std::max<std::int64_t>(total_, 1));
-    if (filled == last_ && done != total_) return;
-    last_ = filled;
-    std::fprintf(stderr, "\r[%.*s%*s] %lld/%s", filled, "========================================", width - filled, "",
-                 static_cast<long long>(done), plural(total_, "frame").c_str());
-    std::fflush(stderr);
-  }
-  void finish() {
-    if (on_ && last_ != -1) std::fputs("\r\033[K", stderr);
-    last_ = -1;
-  }
-
- private:
-  bool on_;
-  std::int64_t total_;
-  int last_ = -1;
-};
 
 // "A==R 30, T-in-A 7" for the invariants `run` broke.
 std::string broken_text(const AlgorithmRun& run) {
@@ -372,6 +345,9 @@ int run_headless_loop(const HeadlessOptions& o) {
 
   RunReport report = start_report(o, loop, names, note);
   const std::int64_t frames = report.frames_requested;
+  if (o.replay && o.back >= frames)  // before the frames run: a recording's first frame is as far back as it goes
+    throw Error("--back: " + std::to_string(o.back) + " goes before the first recorded frame (" + plural(frames, "frame") + " replayed: at most " +
+                std::to_string(frames - 1) + " back)");
   // Each frame's report is aggregated, and streamed to --report, as it is made: nothing per frame stays in memory.
   std::unique_ptr<RunReportWriter> writer = o.report ? std::make_unique<RunReportWriter>(*o.report, names.size()) : nullptr;
   const auto add_frame = [&] {
@@ -394,17 +370,20 @@ int run_headless_loop(const HeadlessOptions& o) {
   const auto save_at_to = [&] { at_to = AtTo{report.runs, writer ? writer->mark() : RunReportWriter::Mark{}}; };
   if (o.rewind && o.rewind->to == loop.source().frame()) save_at_to();
 
-  // The recording: the scene's pinned grid, then frame 0 (the initial poses, detected before any step) and every step.
-  std::unique_ptr<RecordingWriter> recorder;
+  // The recording: the source's pinned grid, then frame 0 (the initial poses, detected before any step) and every step.
+  std::unique_ptr<FrameRecorder> recorder;
   // Ctrl+C, SIGTERM or SIGHUP while recording: the loop stops at the next frame and throws, so the
   // recording's temporary file is removed and no half recording remains (exit 2, one error line).
   // Without --record nothing needs it: the report's temporary exists only while it is written at the
   // end, and io/signals' handler removes it if a signal comes then.
   std::optional<StopOnSignals> interrupts;
   if (o.record) {
-    recorder = std::make_unique<RecordingWriter>(*o.record, loop.source().scene().grid, std::string("nbscope ") + kVersion + " headless --record: scene " + o.scene);
+    const std::string from = o.dump     ? "replay --record: dumps " + *o.replay
+                             : o.replay ? "replay --record: recording " + *o.replay
+                                        : "headless --record: scene " + o.scene;
+    recorder = std::make_unique<FrameRecorder>(*o.record, loop, std::string("nbscope ") + kVersion + " " + from);
     interrupts.emplace();
-    recorder->write_frame(loop.source().frame(), loop.source().time(), loop.source().elements());
+    if (!o.replay) recorder->write(loop);  // a recording's frame 0 is the loop's first (it runs no step)
   }
   const auto check_interrupt = [&] {
     if (stop_signal() != 0)
@@ -418,7 +397,7 @@ int run_headless_loop(const HeadlessOptions& o) {
     add_frame();
     if (recorder) {
       check_interrupt();
-      recorder->write_frame(loop.source().frame(), loop.source().time(), loop.source().elements());
+      recorder->write(loop);
     }
     if (view) view->follow(loop);  // each frame its trail point and flash fade
     progress.update(k + 1);
@@ -474,6 +453,9 @@ int run_headless_loop(const HeadlessOptions& o) {
                   plural(o.back, "frame").c_str(), static_cast<long long>(loop.source().frame()), back_ms / static_cast<double>(o.back));
     summary += buf;
   }
+  if (o.violation > 0)  // where it went, as the Violations panel would say it
+    summary += "; went to violation " + std::to_string(o.violation) + ", frame " + std::to_string(loop.source().frame()) + ": " +
+               violation_text(loop.history().violation_log().listed()[static_cast<std::size_t>(o.violation - 1)], loop.source());
   std::printf("%s\n", summary.c_str());
   return report.passed() ? 0 : 1;
 }

@@ -28,6 +28,10 @@ int run_replay(Args& args) {
   o.brute_limit = args.integer("--brute-limit", 0, 1'000'000).value_or(o.brute_limit);
   o.quiet = args.flag("--quiet");
   o.stop_at_violation = args.flag("--stop-at-violation");
+  o.record = args.value("--record");
+  o.back = args.integer("--back", 1, 100'000'000).value_or(0);
+  o.violation = args.integer("--violation", 1, 1'000'000'000).value_or(0);
+  if (const auto mb = args.integer("--history-mb", 0, 1'000'000)) o.history_mb = *mb;
   o.touching = take_touching(args);
   DumpFlags dump = take_dump_flags(args);
   dump.dumps = args.values("--dump");
@@ -59,7 +63,13 @@ int run_replay(Args& args) {
     throw Error(std::string("--inject-fault ") + fault_name(o.fault) +
                 ": recorded frames have no Box2D contact list (use drop-pair, drop-mask-cell, off-by-one-cell or stale-positions)");
   if (!o.dump) o.replay = *file;
+  if (o.back > 0 && o.stop_at_violation) throw Error("--back: --stop-at-violation shows the violation's frame itself");
+  if (o.violation > 0 && (o.stop_at_violation || o.back > 0))
+    throw Error("--violation: goes to a violation's own frame; --back and --stop-at-violation choose another");
   if (window) {
+    if (o.record) throw Error("--record: needs --headless (the window writes no recording)");
+    if (o.back > 0 || o.violation > 0)
+      throw Error(std::string(o.back > 0 ? "--back" : "--violation") + ": needs --headless (the window travels with its Timeline and Violations panel)");
     if (o.algorithm == "all" || o.algorithm.find(',') != std::string::npos)
       throw Error("--algorithm: the window shows one algorithm at a time (switch with 1..9); several need --headless");
     if (o.report) throw Error("--report: needs --headless (the window writes no report)");

@@ -202,7 +202,8 @@ CommandSpec replay_command() {
       {"nbscope replay FILE.nbsrec [--headless] [--frames N] [--algorithm NAME[,NAME...]|all]",
        "nbscope replay --dump 'post/atoms*.dump' [--contacts 'post/contacts*.dump'] [--dt S] [--touching strict] ...",
        "               [--report OUT.json] [--inject-fault NAME] [--brute-limit N] [--quiet]",
-       "               [--stop-at-violation] [--screenshot OUT.png --size WxH --gl osmesa|egl|auto ...]"},
+       "               [--stop-at-violation | --back K | --violation N] [--record OUT.nbsrec]",
+       "               [--screenshot OUT.png --size WxH --gl osmesa|egl|auto ...]"},
       {"Detects and checks recorded frames again (the first N with --frames), as headless does (--stop-at-violation too); a window "
        "plays them (P, O, R, the Timeline over every recorded frame, the Violations panel, the stepper on any frame) when there is a "
        "display and no --headless.",
@@ -217,10 +218,11 @@ CommandSpec replay_command() {
        "strict. A disagreement within what the file's printed digits resolve is listed as at the boundary, not a violation.",
        "The format (text; docs/formats.md):",
        "  nbsrec 1                 first line; '#' comments and blank lines anywhere\n"
-       "  cell_size D | origin X,Y | cells NX,NY    optional, before the first frame: pin the grid\n"
+       "  dim 3                    optional, before the first frame: 3D, rows x,y,z,r (dim 2 is the default)\n"
+       "  cell_size D | origin X,Y[,Z] | cells NX,NY[,NZ]    optional, before the first frame: pin the grid\n"
        "  base 1                   optional, before the first frame: pairs count elements from 1\n"
        "  frame NUMBER TIME        NUMBER increasing, TIME (seconds) non-decreasing\n"
-       "  x,y,r                    one element a line, as ELEMENTS.csv (2D only)\n"
+       "  x,y,r                    one element a line, as ELEMENTS.csv (x,y,z,r with dim 3)\n"
        "  pairs                    optional, after the rows: then one contact pair a line, i,j\n"
        "                           (every frame has a pairs block, or none)"},
       {{"options",
@@ -232,6 +234,10 @@ CommandSpec replay_command() {
          {"--brute-limit", "N", "2000", "as headless --brute-limit"},
          {"--quiet", "", "", "no progress bar"},
          {"--stop-at-violation", "", "", "as headless --stop-at-violation"},
+         {"--back", "K", "", "headless: after the last frame goes K frames back (as headless --back)"},
+         {"--violation", "N", "", "headless: goes to the N-th listed violation (as headless --violation)"},
+         {"--history-mb", "N", "256 with --back, --violation or --screenshot", "as headless --history-mb"},
+         {"--record", "OUT.nbsrec", "", "headless: writes the frames replayed (2D or 3D, with their pairs); a recording recorded again is the same file"},
          {"--screenshot", "OUT.png", "", "headless: renders the last frame off-screen, as headless --screenshot"},
          {"--size", "WxH", "", "the window's or the screenshot's size in pixels"},
          gl_option()}},

@@ -17,6 +17,7 @@ std::int64_t LoopSource::recorded_frames() const {
   return s_->replay ? static_cast<std::int64_t>(s_->replay->recording().frames.size()) : 0;
 }
 bool LoopSource::carries_pairs() const { return s_->replay && s_->replay->recording().has_pairs; }
+const Recording* LoopSource::recording() const { return s_->replay ? &s_->replay->recording() : nullptr; }
 int LoopSource::pair_base() const { return s_->replay ? s_->replay->recording().pair_base : 0; }
 const std::vector<std::int64_t>* LoopSource::element_ids(std::int64_t frame) const {
   if (!s_->replay) return nullptr;

@@ -24,6 +24,8 @@ namespace nbscope {
 struct FrameLoopState;
 
 // The frame shown and where it comes from (a Box2D world, or a recording: io/recording.hpp).
+struct Recording;
+
 class LoopSource {
  public:
   // A view of `state` (FrameLoop makes it).
@@ -40,6 +42,8 @@ class LoopSource {
   // True when the recording's frames carry the user's contact pairs (a `pairs` block each), which
   // the algorithm `recorded` (check/recorded_lane.hpp) returns; false for a scene.
   [[nodiscard]] bool carries_pairs() const;
+  // The recording replayed (its header, every frame as read), null for a scene.
+  [[nodiscard]] const Recording* recording() const;
   // The recording's `base`: its pairs number elements from 0 or 1 (0 for a scene). Element ids
   // here stay 0-based rows either way.
   [[nodiscard]] int pair_base() const;

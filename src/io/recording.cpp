@@ -23,7 +23,7 @@ namespace nbscope {
 namespace {
 
 // The header lines, each allowed once ("nbsrec" first).
-constexpr std::array<std::string_view, 5> kHeaderKeys = {"nbsrec", "cell_size", "origin", "cells", "base"};
+constexpr std::array<std::string_view, 6> kHeaderKeys = {"nbsrec", "cell_size", "origin", "cells", "base", "dim"};
 std::size_t header_index(std::string_view key) {
   std::size_t h = 0;
   while (h < kHeaderKeys.size() && kHeaderKeys[h] != key) ++h;
@@ -47,10 +47,10 @@ std::string_view header_value(const std::vector<std::string_view>& words, const 
   return words[1];
 }
 
-// "A,B" into two fields; Error otherwise.
-std::vector<std::string_view> two_fields(std::string_view value, const std::string& at, const char* key, const char* form) {
+// "A,B" or "A,B,C" into its fields (x, y and, in a 3D recording, z); Error otherwise.
+std::vector<std::string_view> axis_fields(std::string_view value, const std::string& at, const char* key, const char* form) {
   std::vector<std::string_view> f = split_fields(value);
-  if (f.size() != 2) throw Error(at + key + ": '" + excerpt(value) + "' is not " + form);
+  if (f.size() != 2 && f.size() != 3) throw Error(at + key + ": '" + excerpt(value) + "' is not " + form);
   return f;
 }
 
@@ -60,12 +60,13 @@ std::string shortest(double v) {
   return std::string(buf, r.ptr);
 }
 
-// Moves the collected columns into the frame's Elements.
-void finish_frame(RecordedFrame& frame, ElementColumns& cols) {
-  frame.elements.dim = 2;
+// Moves the collected columns (x, y, [z,] r) into the frame's Elements of dimension `dim`.
+void finish_frame(RecordedFrame& frame, ElementColumns& cols, int dim) {
+  frame.elements.dim = dim;
   frame.elements.x = cols.take(0);
   frame.elements.y = cols.take(1);
-  frame.elements.r = cols.take(2);
+  if (dim == 3) frame.elements.z = cols.take(2);
+  frame.elements.r = cols.take(dim);
   cols.clear();
 }
 
@@ -131,6 +132,7 @@ class RecordingParser {
   bool line(std::string_view raw, std::size_t line_no) {
     last_line_ = line_no;
     if (!seen_text_ && raw.find_first_not_of(" \t\r") != std::string_view::npos) seen_text_ = true;
+    if (rec_.frames.empty()) keep_comment(raw);
     const std::string_view line = strip_comment(raw);
     if (line.empty()) return true;
     if (plain_element_row(line)) return true;
@@ -163,7 +165,8 @@ class RecordingParser {
       return true;
     }
     if (std::isalpha(static_cast<unsigned char>(key.front())) && line.find(',') == std::string_view::npos)
-      throw Error(at + "unknown line '" + excerpt(line) + "' (expected frame, pairs, cell_size, origin, cells, base or a row x,y,r)");
+      throw Error(at + "unknown line '" + excerpt(line) + "' (expected frame, pairs, dim, cell_size, origin, cells, base or a row " +
+                  (rec_.dim == 3 ? "x,y,z,r)" : "x,y,r)"));
     if (in_header) throw Error(at + "an element row before the first 'frame NUMBER TIME' line");
     if (state_.has_pairs) {
       parse_pair_row(line, at, rec_.pair_base, cols_.size(), rec_.frames.back());
@@ -192,18 +195,29 @@ class RecordingParser {
     if (first_line_[h] != 0)
       throw Error(at + std::string(key) + " given twice (first on line " + std::to_string(first_line_[h]) + ")");
     first_line_[h] = line_no;
-    if (!in_header) throw Error(at + std::string(key) + ": header lines come before the first frame");
+    if (!in_header)
+      throw Error(at + std::string(key) + ": header lines come before the first frame" +
+                  (key == "dim" ? " (the dimension decides how every row reads)" : ""));
     if (key == "cell_size") {
       const double d = parse_finite_number(header_value(words, at, "cell_size D"), at, "cell_size");
       if (!(d > 0)) throw Error(at + "cell_size: must be > 0, got " + excerpt(words[1]));
       rec_.grid.cell_size = d;
     } else if (key == "origin") {
-      const auto f = two_fields(header_value(words, at, "origin X,Y"), at, "origin", "X,Y");
-      rec_.grid.origin = std::array<double, 3>{parse_finite_number(f[0], at, "origin x"), parse_finite_number(f[1], at, "origin y"), 0};
+      const auto f = axis_fields(header_value(words, at, "origin X,Y[,Z]"), at, "origin", "X,Y (2D) or X,Y,Z (3D)");
+      rec_.grid.origin = std::array<double, 3>{parse_finite_number(f[0], at, "origin x"), parse_finite_number(f[1], at, "origin y"),
+                                               f.size() == 3 ? parse_finite_number(f[2], at, "origin z") : 0};
+      axis_counts_[0] = f.size();
     } else if (key == "cells") {
-      const auto f = two_fields(header_value(words, at, "cells NX,NY"), at, "cells", "NX,NY");
-      rec_.grid.cells = std::array<std::int64_t, 3>{parse_integer(f[0], at, "cells nx", 1, std::int64_t{1} << 24),
-                                                    parse_integer(f[1], at, "cells ny", 1, std::int64_t{1} << 24), 1};
+      const auto f = axis_fields(header_value(words, at, "cells NX,NY[,NZ]"), at, "cells", "NX,NY (2D) or NX,NY,NZ (3D)");
+      constexpr std::int64_t kMost = std::int64_t{1} << 24;
+      rec_.grid.cells = std::array<std::int64_t, 3>{parse_integer(f[0], at, "cells nx", 1, kMost), parse_integer(f[1], at, "cells ny", 1, kMost),
+                                                    f.size() == 3 ? parse_integer(f[2], at, "cells nz", 1, kMost) : 1};
+      axis_counts_[1] = f.size();
+    } else if (key == "dim") {
+      const std::string_view d = header_value(words, at, "dim 2|3");
+      if (d != "2" && d != "3")
+        throw Error(at + "dim: '" + excerpt(d) + "': a recording is 2D ('dim 2', the default: rows x,y,r) or 3D ('dim 3': rows x,y,z,r)");
+      rec_.dim = d == "3" ? 3 : 2;
     } else {
       const std::string_view b = header_value(words, at, "base 0|1");
       if (b != "0" && b != "1")
@@ -216,7 +230,10 @@ class RecordingParser {
     if (words.size() != 3) throw Error(at + "expected 'frame NUMBER TIME', got '" + excerpt(line) + "'");
     const std::int64_t number = parse_integer(words[1], at, "frame number", 0, std::numeric_limits<std::int64_t>::max());
     const double time = parse_finite_number(words[2], at, "frame time");
-    if (!rec_.frames.empty()) {
+    if (rec_.frames.empty()) {
+      check_header_axes();
+      cols_ = ElementColumns(rec_.dim + 1);
+    } else {
       const RecordedFrame& last = rec_.frames.back();
       if (number <= last.number)
         throw Error(at + "frame " + std::to_string(number) + " after frame " + std::to_string(last.number) +
@@ -244,33 +261,67 @@ class RecordingParser {
     if (rec_.frames.empty() || state_.has_pairs) return false;
     int count = 0;
     std::array<double, 4> row{};
-    if (!parse_plain_row(line, count, row) || count != 3 || cols_.size() >= kMaxElements) return false;
-    if (rec_.grid.cell_size && 2 * row[2] > *rec_.grid.cell_size) return false;
+    if (!parse_plain_row(line, count, row) || count != rec_.dim + 1 || cols_.size() >= kMaxElements) return false;
+    if (rec_.grid.cell_size && 2 * row[static_cast<std::size_t>(rec_.dim)] > *rec_.grid.cell_size) return false;
     cols_.push(row);
     return true;
   }
 
   void element_row(std::string_view line, const std::string& at) {
     const std::vector<std::string_view> fields = split_fields(line);
-    if (fields.size() == 4) throw Error(at + "4 columns (x,y,z,r): replay is 2D, rows are x,y,r");
-    if (fields.size() == 2) throw Error(at + "2 columns; expected 3 (x,y,r) (a pair i,j? pairs come after the frame's 'pairs' line)");
-    if (fields.size() != 3) throw Error(at + plural(static_cast<long long>(fields.size()), "column") + "; expected 3 (x,y,r)");
+    const std::size_t columns = static_cast<std::size_t>(rec_.dim) + 1;
+    const std::string expected = "; expected " + std::to_string(columns) + (rec_.dim == 3 ? " (x,y,z,r)" : " (x,y,r)");
+    if (rec_.dim == 2 && fields.size() == 4)
+      throw Error(at + "4 columns (x,y,z,r) in a 2D recording: add 'dim 3' before the first frame (without it rows are x,y,r)");
+    if (rec_.dim == 3 && fields.size() == 3)
+      throw Error(at + "3 columns (x,y,r) in a 3D recording ('dim 3' on line " + std::to_string(first_line_[kDimKey]) + "): rows are x,y,z,r");
+    if (fields.size() == 2) throw Error(at + "2 columns" + expected + " (a pair i,j? pairs come after the frame's 'pairs' line)");
+    if (fields.size() != columns) throw Error(at + plural(static_cast<long long>(fields.size()), "column") + expected);
     if (cols_.size() >= kMaxElements) throw Error(at + "more than " + std::to_string(kMaxElements) + " elements in one frame");
     std::array<double, 4> row{};
     parse_element_row(fields, at, row);
-    if (rec_.grid.cell_size && 2 * row[2] > *rec_.grid.cell_size)
-      throw Error(at + "r: diameter " + shortest(2 * row[2]) + " is larger than the header's cell_size " + shortest(*rec_.grid.cell_size) +
+    const double r = row[static_cast<std::size_t>(rec_.dim)];
+    if (rec_.grid.cell_size && 2 * r > *rec_.grid.cell_size)
+      throw Error(at + "r: diameter " + shortest(2 * r) + " is larger than the header's cell_size " + shortest(*rec_.grid.cell_size) +
                   " (contacts could skip a cell)");
     cols_.push(row);
   }
 
   // The frame being read is complete: its elements into place, its pairs block held to the first frame's.
   void end_frame() {
-    finish_frame(rec_.frames.back(), cols_);
+    finish_frame(rec_.frames.back(), cols_, rec_.dim);
     if (rec_.frames.size() == 1) rec_.has_pairs = state_.has_pairs;
     check_all_or_none(rec_, state_, rec_.has_pairs, where_);
   }
 
+  // A whole-line comment of the header into rec_.comment: its text after '#' and one space, up to
+  // kMaxKeptComment bytes (a recording recorded again keeps it, and stays the same file).
+  void keep_comment(std::string_view raw) {
+    const std::size_t start = raw.find_first_not_of(" \t");
+    if (start == std::string_view::npos || raw[start] != '#') return;
+    std::string_view text = raw.substr(start + 1);
+    if (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+    if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+    if (rec_.comment.size() + text.size() + 1 > kMaxKeptComment) return;
+    if (comment_lines_++ > 0) rec_.comment += '\n';
+    rec_.comment += text;
+  }
+
+  // origin and cells give one value per axis of the recording (`dim`, which may come after them):
+  // checked when the first frame starts, naming their own line.
+  void check_header_axes() const {
+    constexpr const char* kKeys[2] = {"origin", "cells"};
+    constexpr const char* kForms[2][2] = {{"X,Y", "X,Y,Z"}, {"NX,NY", "NX,NY,NZ"}};
+    for (std::size_t k = 0; k < 2; ++k) {
+      if (axis_counts_[k] == 0 || axis_counts_[k] == static_cast<std::size_t>(rec_.dim)) continue;
+      const std::string at = where_ + ":" + std::to_string(first_line_[k + 2]) + ": " + kKeys[k] + ": ";
+      if (rec_.dim == 2) throw Error(at + "3 values (" + kForms[k][1] + ") in a 2D recording: add 'dim 3' before the first frame");
+      throw Error(at + "2 values (" + kForms[k][0] + ") in a 3D recording ('dim 3' on line " + std::to_string(first_line_[kDimKey]) +
+                  "): expected " + kForms[k][1]);
+    }
+  }
+
+  static constexpr std::size_t kDimKey = 5;  // kHeaderKeys[5]
   const std::string& where_;
   std::int64_t max_frames_;
   std::size_t frame_limit_;
@@ -282,6 +333,8 @@ class RecordingParser {
   FrameState state_;  // of rec_.frames.back()
   std::size_t first_line_[kHeaderKeys.size()] = {};  // of each header key, 0 until seen ("nbsrec": the version line)
   std::size_t last_line_ = 0;
+  std::size_t comment_lines_ = 0;  // kept in rec_.comment
+  std::size_t axis_counts_[2] = {};  // values given on the origin and cells lines (0: no such line)
 };
 
 }  // namespace
@@ -320,7 +373,8 @@ struct RecordingWriter::Impl {
   std::string buf;
   std::int64_t frames = 0;
   bool with_pairs = false;  // of the first frame: every later one must match (all or none)
-  explicit Impl(const std::string& path) : file(path) {}
+  int dim = 2;              // of every frame: the header says it
+  Impl(const std::string& path, int d) : file(path), dim(d) {}
 
   void append(double v) {
     char num[32];
@@ -335,8 +389,16 @@ struct RecordingWriter::Impl {
   }
 };
 
-RecordingWriter::RecordingWriter(const std::string& path, const GridOptions& grid, const std::string& comment)
-    : impl_(std::make_unique<Impl>(path)) {
+namespace {
+// `dim` when it is 2 or 3; Error (before any file is made) otherwise.
+int recording_dim(int dim) {
+  if (dim != 2 && dim != 3) throw Error("recording: dim " + std::to_string(dim) + ": a recording is 2D or 3D");
+  return dim;
+}
+}  // namespace
+
+RecordingWriter::RecordingWriter(const std::string& path, const GridOptions& grid, const std::string& comment, int dim)
+    : impl_(std::make_unique<Impl>(path, recording_dim(dim))) {
   std::string& b = impl_->buf;
   b = "nbsrec 1\n";
   std::size_t start = 0;
@@ -345,6 +407,7 @@ RecordingWriter::RecordingWriter(const std::string& path, const GridOptions& gri
     b += "# " + comment.substr(start, nl - start) + "\n";
     start = nl + 1;
   }
+  if (dim == 3) b += "dim 3\n";  // 2D is the default: a 2D recording has no dim line
   if (grid.cell_size) {
     b += "cell_size ";
     impl_->append(*grid.cell_size);
@@ -355,16 +418,31 @@ RecordingWriter::RecordingWriter(const std::string& path, const GridOptions& gri
     impl_->append((*grid.origin)[0]);
     b += ",";
     impl_->append((*grid.origin)[1]);
+    if (dim == 3) {
+      b += ",";
+      impl_->append((*grid.origin)[2]);
+    }
     b += "\n";
   }
-  if (grid.cells) b += "cells " + std::to_string((*grid.cells)[0]) + "," + std::to_string((*grid.cells)[1]) + "\n";
+  if (grid.cells) {
+    b += "cells " + std::to_string((*grid.cells)[0]) + "," + std::to_string((*grid.cells)[1]);
+    if (dim == 3) b += "," + std::to_string((*grid.cells)[2]);
+    b += "\n";
+  }
   impl_->flush();
 }
 
 RecordingWriter::~RecordingWriter() = default;
 
 void RecordingWriter::write_frame(std::int64_t number, double time, const Elements& e, const PairList* pairs) {
-  if (e.dim != 2) throw Error("--record: the elements are 3D; a recording holds 2D frames only");
+  const auto dim_name = [](int d) { return std::string(d == 3 ? "3D" : "2D"); };
+  if (e.dim != impl_->dim)
+    throw Error("recording: frame " + std::to_string(number) + " is " + dim_name(e.dim) + ", the recording " + dim_name(impl_->dim) +
+                " (its header says it once for every frame)");
+  // The format has no periodic box: the frame would replay in open space, with other pairs.
+  if (e.box.any())
+    throw Error("recording: frame " + std::to_string(number) +
+                " is periodic (a dump's pp boundary or --periodic): a recording has no periodic box; check it with replay --dump instead");
   // What the reader would refuse is refused here, so that a written recording always reads back.
   if (impl_->frames > 0 && (pairs != nullptr) != impl_->with_pairs)
     throw Error("recording: frame " + std::to_string(number) + (pairs != nullptr ? " has pairs, but the first frame had none" : " has no pairs, but the first frame had some") +
@@ -385,6 +463,10 @@ void RecordingWriter::write_frame(std::int64_t number, double time, const Elemen
     b += ",";
     impl_->append(e.y[k]);
     b += ",";
+    if (impl_->dim == 3) {
+      impl_->append(e.z[k]);
+      b += ",";
+    }
     impl_->append(e.r[k]);
     b += "\n";
   }

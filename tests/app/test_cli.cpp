@@ -218,9 +218,9 @@ TEST(Cli, AnOptionOfAnotherCommandIsNamed) {
     EXPECT_EQ(r.err, "nbscope: error: gui: --report is not an option of gui (it is one of headless, replay)\n") << args;
   }
 #endif
-  auto r = run("replay --record out.nbsrec in.nbsrec");
+  auto r = run("replay --rewind 5:2 in.nbsrec");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err, "nbscope: error: replay: --record is not an option of replay (it is one of headless)\n");
+  EXPECT_EQ(r.err, "nbscope: error: replay: --rewind is not an option of replay (it is one of headless)\n");
   r = run("dump --input in.csv --algorithm nbs --repeat 3");
   EXPECT_EQ(r.err, "nbscope: error: dump: --repeat is not an option of dump (it is one of pairs)\n");
 }

@@ -232,7 +232,7 @@ TEST(Replay, BadRecordingsExit2WithOneLineAndNoFiles) {
       {"nan", head + "nan,1,1\n", "4: x: 'nan' is not a finite number"},
       {"r_zero", head + "1,1,0\n", "4: r: radius must be > 0"},
       {"r_negative", head + "1,1,-1\n", "4: r: radius must be > 0"},
-      {"three_d", head + "1,1,1,1\n", "4: 4 columns (x,y,z,r): replay is 2D"},
+      {"three_d", head + "1,1,1,1\n", "4: 4 columns (x,y,z,r) in a 2D recording: add 'dim 3' before the first frame"},
   };
   for (const Case& c : cases) {
     const std::string dir = scratch_dir(std::string("replay_bad_") + c.name);

@@ -155,7 +155,7 @@ TEST(Recording, BadInputIsNamedByLine) {
       {ok_head + "1,inf,1\n", "bad.nbsrec:3: y: 'inf' is not a finite number"},
       {ok_head + "1,1,0\n", "bad.nbsrec:3: r: radius must be > 0"},
       {ok_head + "1,1,-2\n", "bad.nbsrec:3: r: radius must be > 0"},
-      {ok_head + "1,1,1,1\n", "bad.nbsrec:3: 4 columns (x,y,z,r): replay is 2D"},
+      {ok_head + "1,1,1,1\n", "bad.nbsrec:3: 4 columns (x,y,z,r) in a 2D recording: add 'dim 3' before the first frame"},
       {"nbsrec 1\n1,1,1\n", "bad.nbsrec:2: an element row before the first 'frame"},
       {ok_head + "cell_size 2\n", "bad.nbsrec:3: cell_size: header lines come before the first frame"},
       {"nbsrec 1\ncell_size 0\n", "bad.nbsrec:2: cell_size: must be > 0"},
@@ -277,6 +277,146 @@ TEST(RecordingPairs, BadPairsInputIsNamedByLine) {
     const std::string message = error_of(c.text);
     EXPECT_EQ(message.rfind(c.expected, 0), 0u) << "input:\n" << c.text << "\ngot: " << message << "\nexpected: " << c.expected;
   }
+}
+
+// ---- 3D recordings: `dim 3`, rows x,y,z,r, the grid's z ---------------------------------------
+
+// The whole file at `path`.
+std::string file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream out;
+  out << in.rdbuf();
+  return out.str();
+}
+
+TEST(Recording3d, WriterThenReaderGivesBitIdenticalSpheresGridAndComment) {
+  const std::string dir = temp_dir("roundtrip3d");
+  GridOptions grid;
+  grid.cell_size = 7.0 / 3.0;  // radii below 1: every diameter fits
+  grid.origin = std::array<double, 3>{-0.1, 0.2, -1e-300};
+  grid.cells = std::array<std::int64_t, 3>{4, 5, 6};
+  std::vector<Elements> frames;
+  {
+    RecordingWriter w(dir + "/a.nbsrec", grid, "spheres\n made by hand", 3);
+    for (int f = 0; f < 3; ++f) {
+      Elements e = awkward_elements(static_cast<std::uint64_t>(f) + 7, f == 1 ? 0 : 40);
+      e.dim = 3;
+      const Elements zs = awkward_elements(static_cast<std::uint64_t>(f) + 70, static_cast<int>(e.size()));
+      e.z = zs.x;  // z as awkward as x
+      frames.push_back(e);
+      w.write_frame(f, f * 0.5, e);
+    }
+    w.commit();
+  }
+  const Recording rec = read_recording(dir + "/a.nbsrec");
+  EXPECT_EQ(rec.dim, 3);
+  EXPECT_EQ(rec.comment, "spheres\n made by hand");
+  ASSERT_TRUE(rec.grid.origin && rec.grid.cells);
+  EXPECT_TRUE(same_bits((*rec.grid.origin)[2], -1e-300));
+  EXPECT_EQ((*rec.grid.cells)[2], 6);
+  ASSERT_EQ(rec.frames.size(), frames.size());
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    const Elements& a = frames[f];
+    const Elements& b = rec.frames[f].elements;
+    EXPECT_EQ(b.dim, 3);
+    ASSERT_EQ(a.size(), b.size());
+    ASSERT_EQ(b.z.size(), b.size());
+    for (Eigen::Index k = 0; k < a.size(); ++k)
+      ASSERT_TRUE(same_bits(a.x[k], b.x[k]) && same_bits(a.y[k], b.y[k]) && same_bits(a.z[k], b.z[k]) && same_bits(a.r[k], b.r[k]))
+          << "frame " << f << " element " << k;
+  }
+  // Written again from what was read: the same bytes.
+  {
+    RecordingWriter w(dir + "/b.nbsrec", rec.grid, rec.comment, rec.dim);
+    for (const RecordedFrame& f : rec.frames) w.write_frame(f.number, f.time, f.elements);
+    w.commit();
+  }
+  EXPECT_EQ(file_text(dir + "/a.nbsrec"), file_text(dir + "/b.nbsrec"));
+  fs::remove_all(dir);
+}
+
+TEST(Recording3d, TwoDimensionalFilesHaveNoDimLineAndTwoAxes) {
+  const std::string dir = temp_dir("nodim");
+  GridOptions grid;
+  grid.cell_size = 1;
+  grid.origin = std::array<double, 3>{0, 0, 0};
+  grid.cells = std::array<std::int64_t, 3>{10, 10, 1};
+  {
+    RecordingWriter w(dir + "/a.nbsrec", grid, "c");
+    Elements e;
+    e.push_back(0.5, 0.5, 0, 0.5);
+    w.write_frame(0, 0, e);
+    w.commit();
+  }
+  EXPECT_EQ(file_text(dir + "/a.nbsrec"), "nbsrec 1\n# c\ncell_size 1\norigin 0,0\ncells 10,10\nframe 0 0\n0.5,0.5,0.5\n");
+  fs::remove_all(dir);
+}
+
+TEST(Recording3d, DimMayFollowTheGridLinesAndDim2IsTheDefault) {
+  const Recording rec = parse_recording("nbsrec 1\norigin 0,0,-1\ncells 2,2,3\ndim 3\nframe 0 0\n1,2,3,0.5\n1,2,4,0.25 # two\npairs\n0,1\n", "d.nbsrec");
+  EXPECT_EQ(rec.dim, 3);
+  ASSERT_EQ(rec.frames[0].elements.size(), 2);
+  EXPECT_EQ(rec.frames[0].elements.dim, 3);
+  EXPECT_EQ(rec.frames[0].elements.z[1], 4.0);
+  EXPECT_EQ(rec.frames[0].elements.r[1], 0.25);
+  EXPECT_EQ((*rec.grid.origin)[2], -1.0);
+  EXPECT_EQ((*rec.grid.cells)[2], 3);
+  EXPECT_EQ(rec.frames[0].pairs, (PairList{{0, 1}}));
+  const Recording flat = parse_recording("nbsrec 1\ndim 2\nframe 0 0\n1,2,0.5\n", "f.nbsrec");
+  EXPECT_EQ(flat.dim, 2);
+  EXPECT_EQ(flat.frames[0].elements.dim, 2);
+}
+
+TEST(Recording3d, BadInputIsNamedByLine) {
+  const std::string head3 = "nbsrec 1\ndim 3\nframe 0 0\n";
+  struct Case {
+    std::string text, expected;
+  };
+  const Case cases[] = {
+      {"nbsrec 1\nframe 0 0\n1,1,1,1\n", "bad.nbsrec:3: 4 columns (x,y,z,r) in a 2D recording: add 'dim 3' before the first frame"},
+      {head3 + "1,1,1,1\n1,1,1\n", "bad.nbsrec:5: 3 columns (x,y,r) in a 3D recording ('dim 3' on line 2): rows are x,y,z,r"},
+      {head3 + "1,1\n", "bad.nbsrec:4: 2 columns; expected 4 (x,y,z,r)"},
+      {head3 + "1,1,1,1,1\n", "bad.nbsrec:4: 5 columns; expected 4 (x,y,z,r)"},
+      {head3 + "1,1,1,0\n", "bad.nbsrec:4: r: radius must be > 0"},
+      {head3 + "1,1,nan,1\n", "bad.nbsrec:4: z: 'nan' is not a finite number"},
+      {"nbsrec 1\ndim 3\ndim 3\n", "bad.nbsrec:3: dim given twice (first on line 2)"},
+      {"nbsrec 1\ndim 4\n", "bad.nbsrec:2: dim: '4': a recording is 2D ('dim 2', the default: rows x,y,r) or 3D ('dim 3': rows x,y,z,r)"},
+      {"nbsrec 1\ndim\n", "bad.nbsrec:2: dim: expected 'dim 2|3'"},
+      {"nbsrec 1\nframe 0 0\ndim 3\n", "bad.nbsrec:3: dim: header lines come before the first frame"},
+      {"nbsrec 1\norigin 0,0,0\nframe 0 0\n", "bad.nbsrec:2: origin: 3 values (X,Y,Z) in a 2D recording: add 'dim 3' before the first frame"},
+      {"nbsrec 1\ndim 3\ncells 2,2\nframe 0 0\n", "bad.nbsrec:3: cells: 2 values (NX,NY) in a 3D recording ('dim 3' on line 2): expected NX,NY,NZ"},
+      {"nbsrec 1\norigin 1,2,3,4\n", "bad.nbsrec:2: origin: '1,2,3,4' is not X,Y (2D) or X,Y,Z (3D)"},
+      {"nbsrec 1\ndim 3\ncells 2,2,0\n", "bad.nbsrec:3: cells nz: 0 is out of range"},
+      {"nbsrec 1\ndim 3\ncell_size 1\nframe 0 0\n0,0,0,0.6\n", "bad.nbsrec:5: r: diameter 1.2 is larger than the header's cell_size 1"},
+      {head3 + "0,0,0,1\npairs\n0,0,0,1\n", "bad.nbsrec:6: an element row after frame 0's 'pairs' line"},
+  };
+  for (const Case& c : cases) {
+    const std::string message = error_of(c.text);
+    EXPECT_EQ(message.rfind(c.expected, 0), 0u) << "input:\n" << c.text << "\ngot: " << message << "\nexpected: " << c.expected;
+  }
+}
+
+TEST(Recording3d, WriterRefusesFramesTheHeaderDoesNotDescribe) {
+  const std::string dir = temp_dir("refuse3d");
+  Elements flat = awkward_elements(3, 5);
+  Elements solid = flat;
+  solid.dim = 3;
+  solid.z = flat.x;
+  {
+    RecordingWriter w(dir + "/a.nbsrec", {}, "", 3);
+    EXPECT_THROW(w.write_frame(0, 0, flat), Error) << "a 2D frame in a 3D recording";
+    Elements periodic = solid;
+    periodic.box.periodic[2] = true;
+    periodic.box.hi[2] = 1;
+    EXPECT_THROW(w.write_frame(0, 0, periodic), Error) << "the format has no periodic box";
+  }
+  {
+    RecordingWriter w(dir + "/b.nbsrec", {}, "");
+    EXPECT_THROW(w.write_frame(0, 0, solid), Error) << "a 3D frame in a 2D recording";
+  }
+  EXPECT_THROW(RecordingWriter(dir + "/c.nbsrec", {}, "", 4), Error);
+  EXPECT_TRUE(fs::is_empty(dir));
+  fs::remove_all(dir);
 }
 
 }  // namespace
