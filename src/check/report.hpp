@@ -115,6 +115,7 @@ inline constexpr std::size_t kMaxListedViolationsPerFrame = 200;
 struct FrameReport {
   std::int64_t frame = 0;
   std::uint64_t hash = 0;        // hash_elements() of the frame's elements (core/elements.hpp)
+  int dim = 2;                   // of the frame's elements: in 3D a violation's cells have their iz
   bool checked = false;          // the invariants ran (off in the GUI when the user turns checks off)
   bool box2d_stepped = false;    // A-in-F needs Box2D's contact list, which exists only after a step
   bool box2d_checks = true;      // A-in-F, T-in-A, AABB-in-cells ran: false for recorded frames (no Box2D world)

@@ -20,7 +20,7 @@ void integerise_cells(const Elements& e, const Grid& grid, std::vector<CellIndex
   cells.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     const auto i = static_cast<Eigen::Index>(k);
-    cells[k] = {grid.cell(e.x[i], 0), grid.cell(e.y[i], 1)};
+    cells[k] = {grid.cell(e.x[i], 0), grid.cell(e.y[i], 1), grid.dim == 3 && e.dim == 3 ? grid.cell(e.z[i], 2) : 0};
   }
 }
 

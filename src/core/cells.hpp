@@ -69,6 +69,7 @@ template <int D>
 struct CellIndex {
   std::int32_t ix = 0;
   std::int32_t iy = 0;
+  std::int32_t iz = 0;  // 3D frames only (0 in 2D)
   friend bool operator==(const CellIndex&, const CellIndex&) = default;
 };
 

@@ -53,7 +53,8 @@ json frame_json(const FrameReport& f, const std::vector<std::int64_t>* ids) {
   for (const Violation& v : f.violations) {
     violations.push_back({{"invariant", invariant_name(v.invariant)},
                           {"pair", {v.pair.i, v.pair.j}},
-                          {"cells", {{v.cell_i.ix, v.cell_i.iy}, {v.cell_j.ix, v.cell_j.iy}}},
+                          {"cells", f.dim == 3 ? json{{v.cell_i.ix, v.cell_i.iy, v.cell_i.iz}, {v.cell_j.ix, v.cell_j.iy, v.cell_j.iz}}
+                                               : json{{v.cell_i.ix, v.cell_i.iy}, {v.cell_j.ix, v.cell_j.iy}}},
                           {"what", v.what}});
     if (ids != nullptr) violations.back()["ids"] = {element_id(ids, v.pair.i), element_id(ids, v.pair.j)};
   }

@@ -284,7 +284,7 @@ std::optional<std::array<CellIndex, 2>> grid_cells(const SimView& sim, const Vio
   const Elements& e = *sim.elements;
   if (v.pair.i < 0 || v.pair.j < 0 || v.pair.i >= e.size() || v.pair.j >= e.size()) return std::nullopt;
   // The grid's own integerisation (core/cells.hpp integerise_cells), as the Selection panel and the picture show it.
-  const auto cell = [&](ElementId k) { return CellIndex{grid->cell(e.x[k], 0), grid->cell(e.y[k], 1)}; };
+  const auto cell = [&](ElementId k) { return CellIndex{grid->cell(e.x[k], 0), grid->cell(e.y[k], 1), grid->dim == 3 && e.dim == 3 ? grid->cell(e.z[k], 2) : 0}; };
   return std::array<CellIndex, 2>{cell(v.pair.i), cell(v.pair.j)};
 }
 

@@ -206,6 +206,18 @@ TEST_F(Pour, StopAtViolationViolationAndBackTravelThroughTheSpheres) {
   EXPECT_EQ(far.err, "nbscope: error: --back: 2 goes before the first recorded frame (2 frames replayed: at most 1 back)\n");
 }
 
+TEST_F(Pour, ReportNamesTheCellsOfAThreeDimensionalViolation) {
+  const std::string report = *dir_ + "/mask.json";
+  const auto r = run("replay '" + rec() + "' --headless --quiet --inject-fault drop-mask-cell --report '" + report + "'");
+  ASSERT_EQ(r.exit_code, 1) << r.err;
+  const auto j = nlohmann::json::parse(read_text(report));
+  const auto& v = j.at("runs").at(0).at("frames").at(0).at("violations").at(0);
+  ASSERT_EQ(v.at("cells").size(), 2u);
+  for (const auto& cell : v.at("cells")) EXPECT_EQ(cell.size(), 3u) << "(ix, iy, iz): " << v.dump();
+  // The cells are those of the pair's centres: both lie below the top of the pour (z >= 0 from the floor).
+  EXPECT_GE(v.at("cells").at(0).at(2).get<int>(), 0);
+}
+
 // ---- bad input ---------------------------------------------------------------------------------
 
 TEST(Replay3d, BadThreeDimensionalInputExits2WithOneLine) {
