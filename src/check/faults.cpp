@@ -28,8 +28,8 @@ const char* fault_description(Fault fault) {
   switch (fault) {
     case Fault::None: return "";
     case Fault::DropMaskCell:
-      return "the contact mask leaves out the neighbour cell (ix-1, iy-1): the pairs whose cells are diagonal "
-             "neighbours that way are removed from A, exactly what nbs returns without that mask cell";
+      return "the contact mask leaves out the neighbour cell (ix-1, iy-1) (in 3D (ix-1, iy-1, iz), of the same layer): the pairs "
+             "whose cells are diagonal neighbours that way are removed from A, exactly what nbs returns without that mask cell";
     case Fault::OffByOneCell:
       return "the integerisation is shifted by one cell (ix + 1) for every element from the grid's middle column "
              "on: the detector's cells are shifted so, and the pairs whose shifted cells are no longer neighbours "
@@ -68,7 +68,7 @@ void apply_output_fault(Fault fault, const Grid& grid, std::vector<CellIndex>& c
       std::erase_if(pairs, [&](const Pair& p) {
         const CellIndex a = cell_of(p.i), b = cell_of(p.j);
         const int dx = b.ix - a.ix, dy = b.iy - a.iy;
-        return (dx == -1 && dy == -1) || (dx == 1 && dy == 1);
+        return ((dx == -1 && dy == -1) || (dx == 1 && dy == 1)) && a.iz == b.iz;  // iz: 0 in 2D
       });
       return;
     }

@@ -214,8 +214,17 @@ TEST_F(Pour, ReportNamesTheCellsOfAThreeDimensionalViolation) {
   const auto& v = j.at("runs").at(0).at("frames").at(0).at("violations").at(0);
   ASSERT_EQ(v.at("cells").size(), 2u);
   for (const auto& cell : v.at("cells")) EXPECT_EQ(cell.size(), 3u) << "(ix, iy, iz): " << v.dump();
-  // The cells are those of the pair's centres: both lie below the top of the pour (z >= 0 from the floor).
-  EXPECT_GE(v.at("cells").at(0).at(2).get<int>(), 0);
+  // Every pair the fault dropped lies in cells (ix, iy, iz) and (ix-1, iy-1, iz): the one mask cell of the same layer.
+  std::size_t seen = 0;
+  for (const auto& frame : j.at("runs").at(0).at("frames"))
+    for (const auto& violation : frame.at("violations")) {
+      const auto& c = violation.at("cells");
+      const int dx = c[1][0].get<int>() - c[0][0].get<int>(), dy = c[1][1].get<int>() - c[0][1].get<int>();
+      EXPECT_TRUE(dx == dy && (dx == 1 || dx == -1)) << violation.dump();
+      EXPECT_EQ(c[0][2], c[1][2]) << "same layer: " << violation.dump();
+      ++seen;
+    }
+  EXPECT_GT(seen, 10u);
 }
 
 // ---- bad input ---------------------------------------------------------------------------------
