@@ -302,7 +302,10 @@ class RecordingParser {
     std::string_view text = raw.substr(start + 1);
     if (!text.empty() && text.front() == ' ') text.remove_prefix(1);
     if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
-    if (rec_.comment.size() + text.size() + 1 > kMaxKeptComment) return;
+    if (comment_full_ || rec_.comment.size() + text.size() + 1 > kMaxKeptComment) {
+      comment_full_ = true;  // the first lines kept, none after: the comment stays a prefix of the file's
+      return;
+    }
     if (comment_lines_++ > 0) rec_.comment += '\n';
     rec_.comment += text;
   }
@@ -334,6 +337,7 @@ class RecordingParser {
   std::size_t first_line_[kHeaderKeys.size()] = {};  // of each header key, 0 until seen ("nbsrec": the version line)
   std::size_t last_line_ = 0;
   std::size_t comment_lines_ = 0;  // kept in rec_.comment
+  bool comment_full_ = false;      // kMaxKeptComment reached
   std::size_t axis_counts_[2] = {};  // values given on the origin and cells lines (0: no such line)
 };
 

@@ -335,6 +335,19 @@ TEST(Recording3d, WriterThenReaderGivesBitIdenticalSpheresGridAndComment) {
   fs::remove_all(dir);
 }
 
+TEST(Recording3d, HeaderCommentIsKeptAsItsFirstLinesUpToTheLimit) {
+  std::string text = "#  two spaces\n#\nnbsrec 1 # not whole-line\n";
+  const std::string long_line(1000, 'c');
+  for (int k = 0; k < 80; ++k) text += "# " + std::to_string(k) + long_line + "\n";
+  text += "# short\nframe 0 0\n# after the first frame\n";
+  const Recording rec = parse_recording(text, "c.nbsrec");
+  EXPECT_LE(rec.comment.size(), kMaxKeptComment);
+  EXPECT_GT(rec.comment.size(), kMaxKeptComment - 2000);
+  EXPECT_EQ(rec.comment.rfind(" two spaces\n\n0" + long_line + "\n1" + long_line + "\n", 0), 0u);
+  EXPECT_EQ(rec.comment.find("short"), std::string::npos) << "no line after the first one left out";
+  EXPECT_EQ(rec.comment.find("after"), std::string::npos);
+}
+
 TEST(Recording3d, TwoDimensionalFilesHaveNoDimLineAndTwoAxes) {
   const std::string dir = temp_dir("nodim");
   GridOptions grid;
