@@ -160,6 +160,20 @@ TEST_F(Recorded, FramesLimitsTheReplay) {
   EXPECT_NE(r.out.find("replay: run, screen, 7 frames"), std::string::npos) << r.out;
 }
 
+// A 2D recording recorded again (replay --record) is the same file: no `dim` line, the scene's comment kept.
+TEST_F(Recorded, RecordedAgainIsTheSameFile) {
+  const std::string again = *dir_ + "/again.nbsrec";
+  const auto r = run("replay '" + rec() + "' --headless --quiet --record '" + again + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const std::string text = read_text(rec());
+  EXPECT_EQ(text.find("\ndim"), std::string::npos) << "2D is the default";
+  EXPECT_NE(text.find("headless --record: scene "), std::string::npos);
+  EXPECT_TRUE(read_text(again) == text);
+  const auto part = run("replay '" + rec() + "' --headless --quiet --frames 7 --record '" + *dir_ + "/part.nbsrec'");
+  ASSERT_EQ(part.exit_code, 0) << part.err;
+  EXPECT_EQ(frames_of(read_text(*dir_ + "/part.nbsrec")).size(), 7u) << "the frames replayed";
+}
+
 // `replay --frames N` reads N frames: from a simulation's pipe (a FIFO fed by awk here) it replays
 // them and stops. The pipe's 5 MB of frames end in a NUL byte, which a reader of the whole input
 // refuses (exit 2): read whole first, an endless pipe ran to the 2 GB limit.
