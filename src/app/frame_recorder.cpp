@@ -17,7 +17,7 @@ std::string comment_of(const FrameLoop& loop, const std::string& fallback) {
 }  // namespace
 
 FrameRecorder::FrameRecorder(const std::string& path, const FrameLoop& loop, const std::string& comment)
-    : writer_(path, loop.source().scene().grid, comment_of(loop, comment), loop.source().elements().dim) {}
+    : writer_(path, loop.source().scene().grid, comment_of(loop, comment), loop.source().elements().dim, loop.source().pair_base()) {}
 
 void FrameRecorder::write(const FrameLoop& loop) {
   const LoopSource& source = loop.source();

@@ -11,8 +11,9 @@ namespace nbscope {
 
 class FrameRecorder {
  public:
-  // Opens `path` (it appears only at commit()) for `loop`'s source: its pinned grid and dimension; a
-  // recording keeps its own header comment, anything else gets `comment`. Error when it cannot be created.
+  // Opens `path` (it appears only at commit()) for `loop`'s source: its pinned grid, dimension and
+  // pairs' base; a recording keeps its own header comment, anything else gets `comment`. Error when
+  // it cannot be created.
   FrameRecorder(const std::string& path, const FrameLoop& loop, const std::string& comment);
   // Appends the frame `loop` shows, with its recorded pairs when the source carries them.
   void write(const FrameLoop& loop);

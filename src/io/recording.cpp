@@ -378,7 +378,8 @@ struct RecordingWriter::Impl {
   std::int64_t frames = 0;
   bool with_pairs = false;  // of the first frame: every later one must match (all or none)
   int dim = 2;              // of every frame: the header says it
-  Impl(const std::string& path, int d) : file(path), dim(d) {}
+  int base = 0;             // `base`: pairs are written numbered from it
+  Impl(const std::string& path, int d, int b) : file(path), dim(d), base(b) {}
 
   void append(double v) {
     char num[32];
@@ -394,15 +395,15 @@ struct RecordingWriter::Impl {
 };
 
 namespace {
-// `dim` when it is 2 or 3; Error (before any file is made) otherwise.
-int recording_dim(int dim) {
-  if (dim != 2 && dim != 3) throw Error("recording: dim " + std::to_string(dim) + ": a recording is 2D or 3D");
-  return dim;
+// `v` when it is `a` or `b`; Error (before any file is made) otherwise.
+int either(int v, int a, int b, const char* what) {
+  if (v != a && v != b) throw Error(std::string("recording: ") + what + " " + std::to_string(v) + ": " + std::to_string(a) + " or " + std::to_string(b));
+  return v;
 }
 }  // namespace
 
-RecordingWriter::RecordingWriter(const std::string& path, const GridOptions& grid, const std::string& comment, int dim)
-    : impl_(std::make_unique<Impl>(path, recording_dim(dim))) {
+RecordingWriter::RecordingWriter(const std::string& path, const GridOptions& grid, const std::string& comment, int dim, int pair_base)
+    : impl_(std::make_unique<Impl>(path, either(dim, 2, 3, "dim"), either(pair_base, 0, 1, "base"))) {
   std::string& b = impl_->buf;
   b = "nbsrec 1\n";
   std::size_t start = 0;
@@ -433,6 +434,7 @@ RecordingWriter::RecordingWriter(const std::string& path, const GridOptions& gri
     if (dim == 3) b += "," + std::to_string((*grid.cells)[2]);
     b += "\n";
   }
+  if (pair_base == 1) b += "base 1\n";
   impl_->flush();
 }
 
@@ -476,7 +478,7 @@ void RecordingWriter::write_frame(std::int64_t number, double time, const Elemen
   }
   if (pairs != nullptr) {
     b += "pairs\n";
-    for (const Pair& p : *pairs) b += std::to_string(p.i) + "," + std::to_string(p.j) + "\n";
+    for (const Pair& p : *pairs) b += std::to_string(p.i + impl_->base) + "," + std::to_string(p.j + impl_->base) + "\n";
   }
   impl_->flush();
 }

@@ -101,9 +101,9 @@ Recording parse_recording(const std::string& text, const std::string& where,
 class RecordingWriter {
  public:
   // Creates the temporary and writes the "nbsrec 1" line, `comment` (one '#' line per line), `dim 3`
-  // for 3D frames (a 2D recording has no dim line) and the header lines of `grid` (its x and y, and z
-  // in 3D). Error when the file cannot be created.
-  RecordingWriter(const std::string& path, const GridOptions& grid, const std::string& comment, int dim = 2);
+  // for 3D frames (a 2D recording has no dim line), the header lines of `grid` (its x and y, and z
+  // in 3D) and `base 1` when `pair_base` is 1 (pairs written from 1). Error when the file cannot be created.
+  RecordingWriter(const std::string& path, const GridOptions& grid, const std::string& comment, int dim = 2, int pair_base = 0);
   ~RecordingWriter();
   RecordingWriter(const RecordingWriter&) = delete;
   RecordingWriter& operator=(const RecordingWriter&) = delete;

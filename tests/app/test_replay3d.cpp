@@ -142,21 +142,21 @@ TEST(Replay3d, HandWrittenSpheresWithPairsRoundTripByteForByte) {
   const Elements e = make_layout(Layout::Loose, 1500, 3, 11);
   const PairList pairs = testdata::brute_pairs(e);
   ASSERT_GT(pairs.size(), 10u);
-  std::string text = "# spheres by hand\nnbsrec 1\ndim 3\nframe 0 0.5\n";
+  std::string text = "# spheres by hand\nnbsrec 1\ndim 3\nbase 1\nframe 0 0.5\n";  // pairs numbered from 1
   char buf[128];
   for (Eigen::Index k = 0; k < e.size(); ++k) {
     std::snprintf(buf, sizeof buf, "%.17g, %.17g, %.17g, %.17g\n", e.x[k], e.y[k], e.z[k], e.r[k]);
     text += buf;
   }
   text += "pairs\n";
-  for (const Pair& p : pairs) text += std::to_string(p.j) + "," + std::to_string(p.i) + "\n";  // either order
+  for (const Pair& p : pairs) text += std::to_string(p.j + 1) + "," + std::to_string(p.i + 1) + "\n";  // either order
   write_text(dir + "/hand.nbsrec", text);
   // Its pairs are right: `recorded` (the default when the frames carry pairs) passes.
   const auto first = run("replay '" + dir + "/hand.nbsrec' --headless --quiet --record '" + dir + "/one.nbsrec'");
   ASSERT_EQ(first.exit_code, 0) << first.out << first.err;
   EXPECT_EQ(first.out.rfind("replay: hand, recorded, 1 frame, 1500 elements: A==R held", 0), 0u) << first.out;
   const std::string one = read_text(dir + "/one.nbsrec");
-  EXPECT_EQ(one.rfind("nbsrec 1\n# spheres by hand\ndim 3\nframe 0 0.5\n", 0), 0u) << one.substr(0, 200);
+  EXPECT_EQ(one.rfind("nbsrec 1\n# spheres by hand\ndim 3\nbase 1\nframe 0 0.5\n", 0), 0u) << one.substr(0, 200);
   const std::vector<TestFrame> got = frames_of(one);
   ASSERT_EQ(got.size(), 1u);
   ASSERT_EQ(got[0].rows.size(), 1500u);
@@ -164,8 +164,8 @@ TEST(Replay3d, HandWrittenSpheresWithPairsRoundTripByteForByte) {
     const Row& r = got[0].rows[static_cast<std::size_t>(k)];
     ASSERT_TRUE(same_bits(r.v[0], e.x[k]) && same_bits(r.v[1], e.y[k]) && same_bits(r.v[2], e.z[k]) && same_bits(r.v[3], e.r[k])) << k;
   }
-  EXPECT_NE(one.find("\npairs\n" + std::to_string(pairs[0].j) + "," + std::to_string(pairs[0].i) + "\n"), std::string::npos)
-      << "the pairs block is kept as given";
+  EXPECT_NE(one.find("\npairs\n" + std::to_string(pairs[0].j + 1) + "," + std::to_string(pairs[0].i + 1) + "\n"), std::string::npos)
+      << "the pairs block is kept as given, numbered from 1";
   const auto second = run("replay '" + dir + "/one.nbsrec' --headless --quiet --record '" + dir + "/two.nbsrec'");
   ASSERT_EQ(second.exit_code, 0) << second.out << second.err;
   EXPECT_TRUE(read_text(dir + "/two.nbsrec") == one);

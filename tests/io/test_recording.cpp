@@ -237,6 +237,20 @@ TEST(RecordingPairs, WriterRoundTripsPairsAndRefusesWhatTheReaderWould) {
     w.write_frame(0, 0, e);
     EXPECT_THROW(w.write_frame(1, 0, e, &given), Error) << "pairs after a frame without";
   }
+  {
+    RecordingWriter w(dir + "/one.nbsrec", {}, "", 2, 1);  // numbered from 1, as the file it came from
+    w.write_frame(0, 0, e, &given);
+    w.commit();
+  }
+  const Recording one = read_recording(dir + "/one.nbsrec");
+  EXPECT_EQ(one.pair_base, 1);
+  EXPECT_EQ(one.frames[0].pairs, given);
+  std::ifstream in(dir + "/one.nbsrec");
+  std::ostringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("\nbase 1\nframe 0 0\n"), std::string::npos);
+  EXPECT_NE(text.str().find("\npairs\n4,1\n2,2\n1,4\n3,4\n"), std::string::npos) << text.str();
+  EXPECT_THROW(RecordingWriter(dir + "/two.nbsrec", {}, "", 2, 2), Error);
   fs::remove_all(dir);
 }
 
