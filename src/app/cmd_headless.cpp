@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "app/clock.hpp"
@@ -23,6 +24,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/data_dir.hpp"
+#include "io/lammps_dump.hpp"
 #include "io/plural.hpp"
 #include "io/recording.hpp"
 #include "io/report_json.hpp"
@@ -255,6 +257,12 @@ void check_headless_paths(const HeadlessOptions& o) {
     if (o.record) outputs.push_back({"--record", *o.record});
     if (o.view.screenshot) outputs.push_back({"--screenshot", *o.view.screenshot});
     std::vector<NamedPath> inputs{o.replay ? NamedPath{"recording", *o.replay} : NamedPath{"--scene", o.scene}};
+    if (o.dump) {  // every file a glob names: `--record atoms.1000.dump` must not overwrite one
+      inputs.clear();
+      for (const auto& [flag, specs] : {std::pair{"--dump", &o.dump->dumps}, std::pair{"--contacts", &o.dump->contacts}})
+        for (const std::string& spec : *specs)
+          for (std::string& p : expand_dump_spec(flag, spec)) inputs.push_back({flag, std::move(p)});
+    }
     if (o.scaling && *o.scaling != "run") inputs.push_back({"--scaling", *o.scaling});
     check_outputs_distinct(inputs, outputs);
   }

@@ -271,5 +271,19 @@ TEST(Replay3d, PeriodicDumpIsNotRecordedWithoutItsBox) {
   EXPECT_EQ(run("replay --headless --quiet --dump '" + dir + "/p.dump'").exit_code, 0);
 }
 
+TEST(Replay3d, OutputsNeverOverwriteADumpTheGlobNames) {
+  const std::string dir = scratch_dir("replay3d_own_dump");
+  const std::string src = std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/pour3d/";
+  for (const char* step : {"6000", "7500"}) fs::copy_file(src + "atoms." + step + ".dump", dir + "/atoms." + step + ".dump");
+  const std::string before = read_text(dir + "/atoms.7500.dump");
+  for (const char* flag : {"--record", "--report"}) {
+    const auto r = run("replay --headless --quiet --dump '" + dir + "/atoms.*.dump' " + flag + " '" + dir + "/atoms.7500.dump'");
+    EXPECT_EQ(r.exit_code, 2) << flag << ": " << r.out;
+    EXPECT_EQ(r.err, "nbscope: error: " + dir + "/atoms.7500.dump: cannot write: it is also the --dump\n") << flag;
+    EXPECT_TRUE(read_text(dir + "/atoms.7500.dump") == before) << flag;
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace nbscope
