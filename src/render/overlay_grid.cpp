@@ -243,15 +243,19 @@ void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& 
   if (f.lists && s.lists != nullptr && !s.lists->empty()) {
     std::set<std::string> kinds;
     bool below = false;
-    for (const TracedList& l : *s.lists) {
-      if (l.secondary) below = true;
-      else kinds.insert(l.kind);
+    const std::vector<std::int8_t> styles = list_layer_styles(s);  // 3D: the layer view's lists only
+    for (std::size_t i = 0; i < s.lists->size(); ++i) {
+      const TracedList& l = (*s.lists)[i];
+      if (!styles.empty() && styles[i] < 0) continue;
+      if (l.secondary && styles.empty()) below = true;
+      else if (styles.empty() || styles[i] == static_cast<std::int8_t>(ListLayerStyle::Here)) kinds.insert(l.kind);
+      else below = true;
     }
     Line keys;
     for (const std::string& k : kinds)
       keys.keys.push_back({k, k == "y-list" || k == "z-list" ? palette::kYList : palette::kXList, true});
     if (below && s.layer == nullptr) keys.keys.push_back({"row below (B[1])", palette::kXListBelow, true});
-    if (s.layer != nullptr) keys.keys.push_back({"layer below (iz-1)", kBelowOutline, true});
+    if (below && s.layer != nullptr) keys.keys.push_back({"layer below (iz-1)", kBelowOutline, true});
     lines.push_back(std::move(keys));
   }
   if (s.layer != nullptr) layer_legend(s, f, lines);

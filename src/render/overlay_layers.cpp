@@ -62,6 +62,9 @@ constexpr int kDashes = 10;
 constexpr double kMinDashedPx = 6.0;
 // Half the width of a cross-layer pair's chevron (px).
 constexpr double kChevronPx = 5.0;
+// Marks in view beyond which the chevrons go without their "iz-1" labels (a settled pack has a
+// mark at most contacts: the labels would bury it; the legend says what the chevrons mean).
+constexpr int kMaxLabelledMarks = 40;
 // A mask cell of the layer below is this much smaller than its cell on each side (fraction of d).
 constexpr double kBelowCellInset = 0.2;
 }  // namespace
@@ -95,19 +98,27 @@ void draw_layer_marks(const Elements& e, const PairList& pairs, const LayerSlice
   const auto n = static_cast<ElementId>(std::min<std::size_t>(slice.element_layer.size(), static_cast<std::size_t>(e.size())));
   const float s = static_cast<float>(kChevronPx / v.ppm);
   char text[24];
+  // The marks in view, each partner's end once per pair.
+  const auto marked = [&](ElementId k, ElementId other) {
+    return slice.place(k) != LayerPlace::Here && slice.place(other) == LayerPlace::Here && in_view(v.view, e.x[k], e.y[k], s);
+  };
+  int in_view_count = 0;
+  for (const Pair& p : pairs)
+    if (p.i >= 0 && p.j >= 0 && p.i < n && p.j < n) in_view_count += (marked(p.i, p.j) ? 1 : 0) + (marked(p.j, p.i) ? 1 : 0);
+  const bool labelled = in_view_count <= kMaxLabelledMarks;
   for (const Pair& p : pairs) {
     if (p.i < 0 || p.j < 0 || p.i >= n || p.j >= n) continue;
     for (const auto& [k, other] : {std::pair{p.i, p.j}, std::pair{p.j, p.i}}) {
+      if (!marked(k, other)) continue;
       const LayerPlace place = slice.place(k);
-      if (place == LayerPlace::Here || slice.place(other) != LayerPlace::Here) continue;
       const Vec2 c = centre_of(e, k);
-      if (!in_view(v.view, c.x(), c.y(), s)) continue;
       // The chevron points to the partner's layer: "v" down to the layer below, "^" up.
       const std::int32_t iz = slice.element_layer[static_cast<std::size_t>(k)];
       const bool down = place == LayerPlace::Below || (place == LayerPlace::Other && iz < slice.layer);
       const float tip = down ? -0.6f * s : 0.6f * s;
       sink.line(layer, c + Vec2(-s, -tip), c + Vec2(0.0f, tip), colour, 2.0f);
       sink.line(layer, c + Vec2(0.0f, tip), c + Vec2(s, -tip), colour, 2.0f);
+      if (!labelled) continue;
       // Beside it, the layer as the loop names it (a periodic z's wrap is still "iz-1").
       const int offset = place == LayerPlace::Below ? -1 : place == LayerPlace::Above ? 1 : iz - slice.layer;
       std::snprintf(text, sizeof text, "iz%+d", offset);

@@ -72,10 +72,11 @@ void draw_bodies(const OverlayScene& s, const WorldRect& view, double ppm, DrawS
     const LayerPlace place = body_place(s, b);
     if (place == LayerPlace::Above || place == LayerPlace::Other) continue;
     if (place == LayerPlace::Below) {
-      // A ghost of the layer below: a faint fill under a dashed purple outline, no spoke.
+      // A ghost of the layer below: a faint fill under a dashed purple outline, no spoke; under the
+      // layer's bodies (drawn with the cells: within a draw layer lines come after every circle).
       if (!b.is_circle || !in_view(view, b.centre.x(), b.centre.y(), b.radius)) continue;
-      sink.circle(Layer::Bodies, b.centre, b.radius, kBelowFill, kNone, 0.0f);
-      dashed_circle(Layer::Bodies, b.centre, b.radius, kBelowOutline, ppm, sink);
+      sink.circle(Layer::Cells, b.centre, b.radius, kBelowFill, kNone, 0.0f);
+      dashed_circle(Layer::Cells, b.centre, b.radius, kBelowOutline, ppm, sink);
       continue;
     }
     const Rgba fill = b.motion == Motion::Static      ? palette::kStaticFill
@@ -109,7 +110,7 @@ void draw_elements(const Elements& e, const LayerSlice* layer, const WorldRect& 
     // A bounding circle under ~2 px would only repaint its body's pixels.
     if (e.r[k] * ppm < 0.5 * kMinDetailPx || !in_view(view, e.x[k], e.y[k], e.r[k])) continue;
     const LayerPlace place = layer != nullptr ? layer->place(k) : LayerPlace::Here;
-    if (place == LayerPlace::Below) dashed_circle(Layer::Overlay, centre_of(e, k), static_cast<float>(e.r[k]), kBelowBoundingCircle, ppm, sink);
+    if (place == LayerPlace::Below) dashed_circle(Layer::Cells, centre_of(e, k), static_cast<float>(e.r[k]), kBelowBoundingCircle, ppm, sink);
     if (place != LayerPlace::Here) continue;
     sink.circle(Layer::Overlay, centre_of(e, k), static_cast<float>(e.r[k]), kNone, palette::kBoundingCircle, 1.0f);
   }
