@@ -145,6 +145,12 @@ TEST(LayerView, TheLayerBelowIsGhostedApartAndTheLayersAboveAreNotDrawn) {
   ASSERT_EQ(below.size(), 1u) << "the faint fill only: its outlines are dashes";
   EXPECT_LT(below[0].fill.a, 100);
   EXPECT_EQ(below[0].outline.a, 0);
+  // Under the layer's bodies, dashes included (within a draw layer every line comes after every circle).
+  EXPECT_LT(static_cast<int>(below[0].layer), static_cast<int>(here[0].layer));
+  for (const auto& l : rec.lines)
+    if (std::abs((l.from - at(col.e, 1)).norm() - 0.3f) < 1e-4f) {
+      EXPECT_LT(static_cast<int>(l.layer), static_cast<int>(Layer::Bodies));
+    }
   EXPECT_GE(rec.dashes_around(at(col.e, 1), 0.3f), 2 * 6);
   // Above (3) and two below (0): nothing at all, not even a line ending there.
   for (const ElementId k : {0, 3}) {
@@ -332,6 +338,43 @@ TEST(LayerView, TheGridNamesItsLayerAndShadesOnlyItsElements) {
   EXPECT_EQ(shaded, (std::set<std::pair<int, int>>{{2, 2}, {2, 0}})) << "the layer's two cells only";
 }
 
+// A settled pack has a cross-layer mark at most contacts: past a few dozen in view the chevrons
+// stay and their labels go (the legend says what they mean).
+TEST(LayerView, ManyCrossLayerMarksGoWithoutTheirLabels) {
+  Elements e;
+  e.dim = 3;
+  PairList pairs;
+  for (int k = 0; k < 60; ++k) {
+    e.push_back(0.5 + (k % 10), 0.5 + (k / 10), 1.5, 0.4);  // layer 1
+    e.push_back(0.85 + (k % 10), 0.5 + (k / 10), 0.7, 0.4);  // layer 0, under it
+    pairs.push_back({2 * k, 2 * k + 1});
+  }
+  const Grid g = make_grid(e, unit_cells(10, 6, 2));
+  const LayerSlice slice = slice_layer(e, g, 1);
+  const auto draw = [&](std::size_t count) {
+    const PairList some(pairs.begin(), pairs.begin() + static_cast<std::ptrdiff_t>(count));
+    OverlayScene s;
+    s.elements = &e;
+    s.grid = &g;
+    s.pairs = &some;
+    s.layer = &slice;
+    OverlayFlags f;
+    f.grid = false;
+    Recorder rec;
+    draw_scene(s, f, camera_over(-0.5, 10.5), rec);
+    std::size_t labels = 0, strokes = 0;
+    for (const auto& t : rec.texts) labels += t.text == "iz-1" ? 1 : 0;
+    for (const auto& l : rec.lines) strokes += l.colour == palette::kPair && (l.to - l.from).norm() < 0.2f ? 1 : 0;
+    return std::pair{labels, strokes};
+  };
+  const auto [few_labels, few_strokes] = draw(10);
+  EXPECT_EQ(few_labels, 10u);
+  EXPECT_EQ(few_strokes, 20u);
+  const auto [many_labels, many_strokes] = draw(60);
+  EXPECT_EQ(many_labels, 0u);
+  EXPECT_EQ(many_strokes, 120u) << "every chevron still drawn";
+}
+
 // ---- lists: the 3D twin of Overlays.ListsMidTraceAreTheStepperArraysAtThatOperation ---------------
 
 // Forty spheres of radius 0.45 scattered in a 4 x 4 x 4 grid of unit cells: pairs within and across layers.
@@ -515,6 +558,8 @@ TEST(LayerView, TheListsDrawnAreExactlyTheListsKept) {
       draw_scene(s, f, camera, rec);
       EXPECT_FALSE(expected.empty()) << "operation " << p;
       EXPECT_EQ(drawn_heads(rec, sc.grid, camera.pixels_per_metre()), expected) << "operation " << p << ", layer " << layer;
+      // The legend names the kinds drawn, never the z-lists (the Layers panel's).
+      EXPECT_FALSE(std::any_of(rec.texts.begin(), rec.texts.end(), [](const auto& t) { return t.text == "z-list"; }));
     }
   }
 }
