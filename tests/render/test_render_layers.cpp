@@ -175,6 +175,34 @@ TEST(LayerView, TheLayerBelowIsGhostedApartAndTheLayersAboveAreNotDrawn) {
   EXPECT_EQ(rec2.circles_at(at(col.e, 2)).size(), 3u) << "body, bounding circle, flash";
 }
 
+// A periodic x: the images across the edge are the layer's elements' only.
+TEST(LayerView, PeriodicImagesAreTheLayersOnly) {
+  Elements e;
+  e.dim = 3;
+  e.push_back(0.3, 0.5, 0.5, 0.3);  // 0: layer 0, near x's edge
+  e.push_back(0.3, 3.0, 2.5, 0.3);  // 1: layer 2, near x's edge
+  e.push_back(5.0, 1.5, 1.5, 0.3);  // 2: layer 1
+  e.box.periodic[0] = true;
+  e.box.lo[0] = 0.0;
+  e.box.hi[0] = 10.0;
+  GridOptions o;
+  o.cell_size = 1.0;
+  const Grid g = make_grid(e, o);
+  ASSERT_EQ(g.n[2], 3);
+  const LayerSlice slice = slice_layer(e, g, 0);
+  OverlayScene s;
+  s.elements = &e;
+  s.grid = &g;
+  s.layer = &slice;
+  OverlayFlags f;
+  f.elements = true;
+  f.grid = false;
+  Recorder rec;
+  draw_scene(s, f, camera_over(-1.0, 11.0), rec);
+  EXPECT_FALSE(rec.circles_at({10.3f, 0.5f}).empty()) << "the layer's element, again across the edge";
+  EXPECT_TRUE(rec.circles_at({10.3f, 3.0f}).empty()) << "an element two layers up has no image either";
+}
+
 TEST(LayerView, PickingSeesOnlyTheLayerShown) {
   Elements e;
   e.dim = 3;
