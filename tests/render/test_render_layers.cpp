@@ -592,6 +592,52 @@ TEST(LayerView, TheListsDrawnAreExactlyTheListsKept) {
   }
 }
 
+// The row filter in a layer: the lists NBS 3D uses for that row — its y-list and the one of the row
+// under it in the layer below, and the x-lists built for the row: the cells of rows iy and iy-1 of
+// the layer, and of rows iy-1..iy+1 of the layer below (ghosted).
+TEST(LayerView, TheRowFilterKeepsTheListsOfOneRowsPass) {
+  const Scatter sc;
+  DetectOptions o;
+  o.grid = sc.options;
+  PairList pairs;
+  TraceLog log;
+  make_detector("nbs")->detect_traced(sc.e, o, pairs, log);
+  const auto lists = traced_lists(log, static_cast<std::size_t>(sc.e.size()));
+  const Grid& g = sc.grid;
+  std::map<std::pair<std::int32_t, std::int32_t>, std::set<std::int32_t>> cells;  // (layer, row) -> columns
+  for (ElementId k = 0; k < static_cast<ElementId>(sc.e.size()); ++k)
+    cells[{g.cell(sc.e.z[k], 2), g.cell(sc.e.y[k], 1)}].insert(g.cell(sc.e.x[k], 0));
+  const Camera camera = camera_over(-1.0, 5.0);
+  std::size_t rows_checked = 0;
+  for (std::int32_t layer = 1; layer < 4; ++layer)
+    for (std::int32_t row = 0; row < 4; ++row) {
+      if (cells[{layer, row}].empty() || cells[{layer - 1, row}].empty()) continue;
+      ++rows_checked;
+      std::multiset<HeadKey> expected{{0, row, -1}, {1, row, -1}};
+      for (const std::int32_t r : {row, row - 1})
+        for (const std::int32_t ix : cells[{layer, r}]) expected.insert({0, r, ix});
+      for (const std::int32_t r : {row - 1, row, row + 1})
+        for (const std::int32_t ix : cells[{layer - 1, r}]) expected.insert({1, r, ix});
+      const LayerSlice slice = slice_layer(sc.e, g, layer);
+      OverlayScene s;
+      s.elements = &sc.e;
+      s.grid = &g;
+      s.lists = &lists;
+      s.layer = &slice;
+      s.list_filter = ListFilter::Row;
+      s.focus_row = row;
+      OverlayFlags f;
+      f.lists = true;
+      f.grid = false;
+      f.mask = false;
+      f.pairs = false;
+      Recorder rec;
+      draw_scene(s, f, camera, rec);
+      EXPECT_EQ(drawn_heads(rec, g, camera.pixels_per_metre()), expected) << "layer " << layer << ", row " << row;
+    }
+  EXPECT_GT(rows_checked, 2u);
+}
+
 // NBS 3D rebuilds a head A[r][ix] for each row of a layer's pass, not in row order: the list the
 // stepper is writing is highlighted along the build of its row, never an older build of the head.
 TEST(LayerView, TheStepperListIsTheBuildOfItsRow) {
