@@ -227,8 +227,9 @@ void draw_selection(const OverlayScene& s, const ViewFrame& v, LabelSpace& label
 }
 
 // The pair of a violation gone to: both cells outlined, both elements ringed (never smaller than
-// 9 px, so the pair is found zoomed out), joined by a dashed-looking double segment.
-void draw_focus_pair(const OverlayScene& s, DrawSink& sink) {
+// 9 px, so the pair is found zoomed out), joined by a dashed-looking double segment; in a 3D
+// frame's layer view, a partner in another layer is marked with its layer.
+void draw_focus_pair(const OverlayScene& s, const ViewFrame& v, LabelSpace& labels, DrawSink& sink) {
   const Elements& e = *s.elements;
   const Pair p = *s.focus_pair;
   const auto n = static_cast<ElementId>(e.size());
@@ -250,6 +251,7 @@ void draw_focus_pair(const OverlayScene& s, DrawSink& sink) {
   }
   for (const ElementId k : {p.i, p.j})
     sink.circle(Layer::Top, centre_of(e, k), static_cast<float>(e.r[k]), kNone, palette::kSelection, 2.5f, 9.0f);
+  if (s.layer != nullptr) draw_layer_marks(e, PairList{p}, *s.layer, palette::kSelection, Layer::Top, v, labels, sink);
 }
 
 void draw_trails(std::span<const std::vector<Vec2>> trails, const PeriodicBox& box, DrawSink& sink) {
@@ -387,7 +389,7 @@ void draw_scene(const OverlayScene& scene, const OverlayFlags& f, const Camera& 
   draw_selection(s, v, labels, sink);
   // A violation keeps its red in the layer view (its partner in another layer marked above).
   if (violations) draw_violations(e, s.layer != nullptr ? violations_here : s.checks->violations, sink);
-  if (s.focus_pair) draw_focus_pair(s, sink);
+  if (s.focus_pair) draw_focus_pair(s, v, labels, sink);
   if (f.ids || f.lists) draw_ids(e, s.layer, view, ppm, s.selected, s.book_numbering, s.ids, labels, sink);
   if (f.lists && s.lists != nullptr) draw_head_labels(s, v, labels, sink);
   if (s.drag) sink.line(Layer::Top, (*s.drag)[0], (*s.drag)[1], palette::kDragLine, 1.5f);

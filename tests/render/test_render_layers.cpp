@@ -276,6 +276,15 @@ TEST(LayerView, APairAcrossLayersIsDrawnInBothWithItsPartnersLayerMarked) {
   EXPECT_EQ(segment_in(red, 1, 2, palette::kViolation), 1);
   EXPECT_TRUE(chevron(red, 1, true, palette::kViolation));
   EXPECT_TRUE(std::any_of(red.texts.begin(), red.texts.end(), [](const auto& t) { return t.text == "iz-1" && t.colour == palette::kViolation; }));
+  // A violation gone to (the focus pair): its partner's end marked too, in the focus's white.
+  s.checks = nullptr;
+  s.pairs = nullptr;
+  s.focus_pair = Pair{1, 2};
+  Recorder focus;
+  draw_scene(s, f, camera_over(-0.5, 4.5), focus);
+  EXPECT_TRUE(chevron(focus, 1, true, palette::kSelection));
+  s.focus_pair.reset();
+  s.pairs = &pairs;
   // Seen from layer 3: (2, 3) with a "v" at 2, and (0, 3), a wrong pair three layers apart, with
   // "iz-3"; (1, 2) is not drawn (neither element is in layer 3).
   const LayerSlice three = slice_layer(e, col.grid, 3);
