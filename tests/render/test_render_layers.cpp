@@ -20,6 +20,7 @@
 #include "core/stepper.hpp"
 #include "core/traced_lists.hpp"
 #include "render/overlays.hpp"
+#include "support/ui_fixture.hpp"
 
 namespace nbscope::render {
 namespace {
@@ -219,6 +220,35 @@ TEST(LayerView, PickingSeesOnlyTheLayerShown) {
   EXPECT_EQ(element_at(e, {3.0, 1.0}, &two), -1) << "a ghost of the layer below";
   const LayerSlice one = slice_layer(e, g, 1);
   EXPECT_EQ(element_at(e, {3.0, 1.0}, &one), 3);
+}
+
+// The window's click (ui/host.cpp) picks through the layer shown.
+TEST(LayerView, AClickInTheWindowPicksOnlyTheLayersElement) {
+  ui::testui::ImGuiScope scope;
+  ui::UiHost host;
+  ui::testui::BookFrame f;
+  Elements e;
+  e.dim = 3;
+  e.push_back(5.0, 5.0, 2.5, 0.4);  // 0: layer 2, hidden in layer 1's view
+  e.push_back(6.0, 5.0, 1.5, 0.4);  // 1: layer 1
+  const Grid g = make_grid(e, unit_cells(10, 10, 4));
+  const LayerSlice slice = slice_layer(e, g, 1);
+  f.elements = e;
+  f.sim.layer = &slice;
+  ImGuiIO& io = ImGui::GetIO();
+  const auto click = [&](double x, double y) {
+    const Eigen::Vector2d px = f.camera.to_screen({x, y});
+    io.MousePos = ImVec2(static_cast<float>(px.x()), static_cast<float>(px.y()));
+    io.MouseDown[0] = false;
+    ui::testui::run_frame(host, f);
+    io.MouseDown[0] = true;
+    ui::testui::run_frame(host, f);
+    io.MouseDown[0] = false;
+    ui::testui::run_frame(host, f);
+    return f.state.selected;
+  };
+  EXPECT_EQ(click(6.0, 5.0), 1);
+  EXPECT_EQ(click(5.0, 5.0), -1) << "an element of the layer above";
 }
 
 TEST(LayerView, APairAcrossLayersIsDrawnInBothWithItsPartnersLayerMarked) {
