@@ -42,6 +42,28 @@ std::int64_t major_step(double cell_px) {
       if (f * p >= 5 && double(f * p) * cell_px >= kMajorSpacingPx) return f * p;
   return std::int64_t{1} << 40;
 }
+
+// One line of the legend: a colour ramp, then texts each behind an optional arrow of its colour.
+struct Key {
+  std::string text;
+  Rgba colour = palette::kTextDim;
+  bool arrow = false;
+};
+struct Line {
+  std::vector<Key> keys;
+  int swatches = 0;  // a colour ramp of this many steps before the text
+  bool heat = false;
+};
+
+// What the layer view of a 3D frame adds to the legend: the ghosts, the cross-layer marks, the mask.
+void layer_legend(const OverlayScene& s, const OverlayFlags& f, std::vector<Line>& lines) {
+  if (s.layer->below >= 0) lines.push_back({{{"dashed: layer iz-1 (the mask reaches it); layers above hidden", kBelowOutline}}});
+  else lines.push_back({{{"no layer below; layers above hidden"}}});
+  if (f.pairs || f.checks || f.broadphase) lines.push_back({{{"v iz-1 / ^ iz+1: a pair's partner in the layer below / above"}}});
+  if (f.mask && (s.hovered_cell || s.selected >= 0) && s.layer->below >= 0)
+    lines.push_back({{{"mask: inner squares = its 9 cells in layer iz-1", kBelowOutline}}});
+}
+
 }  // namespace
 
 GridCounts count_cells(const OverlayScene& s, const ViewFrame& v) {
@@ -62,6 +84,7 @@ GridCounts count_cells(const OverlayScene& s, const ViewFrame& v) {
   out.rows.assign(static_cast<std::size_t>(out.wy), 0);
   const Elements& e = *s.elements;
   for (ElementId k = 0; k < static_cast<ElementId>(e.size()); ++k) {
+    if (s.layer != nullptr && s.layer->place(k) != LayerPlace::Here) continue;  // 3D: the layer shown's cells
     const std::int64_t cx = g.cell(e.x[k], 0) - out.lo_x, cy = g.cell(e.y[k], 1) - out.lo_y;
     if (cy < 0 || cy >= out.wy) continue;
     ++out.rows[static_cast<std::size_t>(cy)];
@@ -142,9 +165,15 @@ void draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts& coun
   };
   // The dimensions above the top-left corner, kept inside the free part of the view (placed first:
   // nothing covers them), on a backdrop so that bodies above the grid never hide them.
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "%lld x %lld cells, d = %.3g%s", static_cast<long long>(g.n[0]),
-                static_cast<long long>(g.n[1]), d, step > 1 ? (", lines every " + std::to_string(step)).c_str() : "");
+  char buf[160];
+  int used = std::snprintf(buf, sizeof buf, "%lld x %lld cells, d = %.3g%s", static_cast<long long>(g.n[0]),
+                           static_cast<long long>(g.n[1]), d, step > 1 ? (", lines every " + std::to_string(step)).c_str() : "");
+  if (s.layer != nullptr && used > 0 && static_cast<std::size_t>(used) < sizeof buf) {
+    // The layer shown and its band of z (the book's layer iz: iz*d <= z - z_min < (iz+1)*d).
+    const int iz = s.layer->layer, shown = s.book_numbering ? iz + 1 : iz;
+    std::snprintf(buf + used, sizeof buf - static_cast<std::size_t>(used), "; layer iz = %d of %d, z - z_min in [%.3g, %.3g)",
+                  shown, s.layer->count, d * iz, d * (iz + 1));
+  }
   const double title_w = label_width(std::strlen(buf));
   // (std::clamp needs lo <= hi: a free view narrower than the title keeps its left edge.)
   const double title_x = std::clamp(x0, free.min.x() + 4.0 / ppm, std::max(free.min.x() + 4.0 / ppm, free.max.x() - title_w / ppm));
@@ -202,19 +231,8 @@ void draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts& coun
 void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& stats, const ViewFrame& v,
                  LabelSpace& labels, DrawSink& sink) {
   // The lines, each a text and an optional swatch row; laid out bottom-up from the free corner.
-  // One line: a colour ramp, then texts each behind an optional arrow of its colour.
-  struct Key {
-    std::string text;
-    Rgba colour = palette::kTextDim;
-    bool arrow = false;
-  };
-  struct Line {
-    std::vector<Key> keys;
-    int swatches = 0;  // a colour ramp of this many steps before the text
-    bool heat = false;
-  };
   std::vector<Line> lines;
-  const bool grid = f.grid && s.grid != nullptr && s.grid->dim == 2;
+  const bool grid = f.grid && s.grid != nullptr && (s.grid->dim == 2 || s.layer != nullptr);
   if (grid && stats.heat_map && stats.max_cell > 0) {
     lines.push_back({{{"elements per cell 1 .. " + std::to_string(std::max(1, stats.max_cell)) + " (its list's length)"}}, 5, true});
     lines.push_back({{{"bars: elements per row (its y-list), up to " + std::to_string(stats.max_row)}}});
@@ -225,16 +243,22 @@ void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& 
   if (f.lists && s.lists != nullptr && !s.lists->empty()) {
     std::set<std::string> kinds;
     bool below = false;
-    for (const TracedList& l : *s.lists) {
-      if (l.secondary) below = true;
-      else kinds.insert(l.kind);
+    const std::vector<std::int8_t> styles = list_layer_styles(s);  // 3D: the layer view's lists only
+    for (std::size_t i = 0; i < s.lists->size(); ++i) {
+      const TracedList& l = (*s.lists)[i];
+      if (!styles.empty() && styles[i] < 0) continue;
+      if (l.secondary && styles.empty()) below = true;
+      else if (styles.empty() || styles[i] == static_cast<std::int8_t>(ListLayerStyle::Here)) kinds.insert(l.kind);
+      else below = true;
     }
     Line keys;
     for (const std::string& k : kinds)
       keys.keys.push_back({k, k == "y-list" || k == "z-list" ? palette::kYList : palette::kXList, true});
-    if (below) keys.keys.push_back({"row below (B[1])", palette::kXListBelow, true});
+    if (below && s.layer == nullptr) keys.keys.push_back({"row below (B[1])", palette::kXListBelow, true});
+    if (below && s.layer != nullptr) keys.keys.push_back({"layer below (iz-1)", kBelowOutline, true});
     lines.push_back(std::move(keys));
   }
+  if (s.layer != nullptr) layer_legend(s, f, lines);
   for (const std::string& c : s.lists_caption) lines.push_back({{{c, palette::kText}}});
   if (s.verify != nullptr) {
     // Someone's arrays checked: what the red means, then the selected problem's text (or the all-clear).

@@ -11,21 +11,23 @@
 namespace nbscope::render::detail {
 
 namespace {
-// A row's list (NBS y-list): its pushes fix the row only.
-bool row_list(const TracedList& l) { return l.cell[0] < 0 && l.cell[1] >= 0 && l.cell[2] < 0; }
+// A row's list (NBS y-list): its pushes fix the row only (and, in 3D, the row's layer).
+bool row_list(const TracedList& l) { return l.cell[0] < 0 && l.cell[1] >= 0; }
 }  // namespace
 
 // Where a list's head is drawn: a row's left of the grid, in the gap before the row numbers (right
 // of the row numbers at the view's left edge when the grid's is out of it); a cell's in a corner of the cell (top left for a
 // row's own lists, bottom left for the copies of the row below); lists without a cell (tree leaves)
-// just above-left of their first element.
-Vec2 head_anchor(const TracedList& l, const Grid* grid, const Elements& e, const WorldRect& free, double ppm) {
+// just above-left of their first element. A 3D layer view's lists of the layer below (`below`)
+// sit as the row below's copies do: a cell's bottom left, a row's lower in its band.
+Vec2 head_anchor(const TracedList& l, const Grid* grid, const Elements& e, const WorldRect& free, double ppm, bool below) {
   if (grid != nullptr) {
     const Grid& g = *grid;
     const double d = g.cell_size;
-    if (row_list(l)) return v2(std::max(g.origin[0] - 8.0 / ppm, free.min.x() + 30.0 / ppm), g.origin[1] + d * (l.cell[1] + 0.5));
+    if (row_list(l))
+      return v2(std::max(g.origin[0] - 8.0 / ppm, free.min.x() + 30.0 / ppm), g.origin[1] + d * (l.cell[1] + (below ? 0.25 : 0.5)));
     if (l.cell[0] >= 0 && l.cell[1] >= 0)
-      return v2(g.origin[0] + d * (l.cell[0] + 0.12), g.origin[1] + d * (l.cell[1] + (l.secondary ? 0.12 : 0.88)));
+      return v2(g.origin[0] + d * (l.cell[0] + 0.12), g.origin[1] + d * (l.cell[1] + (l.secondary || below ? 0.12 : 0.88)));
   }
   const ElementId k = l.chain.front();
   const double off = (e.r[k] + 10.0 / ppm) * 0.7071;
@@ -34,10 +36,11 @@ Vec2 head_anchor(const TracedList& l, const Grid* grid, const Elements& e, const
 
 namespace {
 
-// The row a list belongs to: its cell's, the row it was built for (B[1] copies), else its head
-// element's (tree leaves, which carry no cell).
-std::int64_t row_of(const TracedList& l, const Grid* g, const Elements& e) {
-  if (l.secondary) return l.phase_index;
+// The row a list belongs to: its cell's, the row it was built for (B[1] copies; 2D: in 3D NBS's
+// B[1] holds the layer below's y-lists, built per layer), else its head element's (tree leaves,
+// which carry no cell).
+std::int64_t row_of(const TracedList& l, const Grid* g, const Elements& e, bool layered) {
+  if (l.secondary && !layered) return l.phase_index;
   if (l.cell[1] >= 0) return l.cell[1];
   return g != nullptr ? g->cell(e.y[l.chain.front()], 1) : -1;
 }
@@ -78,14 +81,14 @@ constexpr double kMinSlotPx = 10.0;
 // A list with more slots than fit shows its two ends, numbered, and "... 790 more ..." between.
 // `wrong(from, to)` names the problem whose wrong link that is (-1: none; from -1: the head).
 template <class WrongLink>
-void draw_rail(const OverlayScene& s, const TracedList& l, const ViewFrame& v, Rgba colour, float width, bool active,
-               const WrongLink& wrong, LabelSpace& labels, DrawSink& sink) {
+void draw_rail(const OverlayScene& s, const TracedList& l, bool below, const ViewFrame& v, Rgba colour, float width,
+               bool active, const WrongLink& wrong, LabelSpace& labels, DrawSink& sink) {
   const Elements& e = *s.elements;
   const Grid& g = *s.grid;
   const double d = g.cell_size, ppm = v.ppm;
   const double x0 = g.origin[0], x1 = g.origin[0] + d * double(g.n[0]);
-  const double y = g.origin[1] + d * (l.cell[1] + 0.14);
-  const Vec2 head = head_anchor(l, s.grid, e, v.free, ppm);
+  const double y = g.origin[1] + d * (l.cell[1] + (below ? 0.32 : 0.14));  // the layer below's rail above the row's own
+  const Vec2 head = head_anchor(l, s.grid, e, v.free, ppm, below);
   const Vec2 start = v2(head.x(), y);
   sink.rect(Layer::Overlay, start - Vec2::Constant(float(3.0 / ppm)), start + Vec2::Constant(float(3.0 / ppm)), colour);
   // The slots shown: all when they fit, else the first and last `ends` each, with the gap between.
@@ -155,26 +158,42 @@ void draw_rail(const OverlayScene& s, const TracedList& l, const ViewFrame& v, R
   draw_end(prev, end, l.cut, colour, width, ppm, sink);
 }
 
+// The elements a scene's lists are drawn over: a 3D frame's layer and the layer below, else all.
+std::int64_t elements_shown(const OverlayScene& s) {
+  if (s.layer == nullptr) return s.elements->size();
+  const auto count = [&](std::int32_t iz) { return iz >= 0 && iz < s.layer->count ? s.layer->per_layer[static_cast<std::size_t>(iz)] : 0; };
+  return count(s.layer->layer) + count(s.layer->below);
+}
+
 bool kept_by_filter(const OverlayScene& s, const TracedList& l) {
   switch (s.list_filter) {
     case ListFilter::All: return true;
     case ListFilter::Selected:
       return s.selected >= 0 && std::find(l.chain.begin(), l.chain.end(), s.selected) != l.chain.end();
     case ListFilter::Row:  // no row yet: all of a scene small enough to draw them all
-      if (!s.focus_row) return s.elements->size() <= kAllListsUpTo;
-      return row_of(l, s.grid, *s.elements) == *s.focus_row;
+      if (!s.focus_row) return elements_shown(s) <= kAllListsUpTo;
+      // NBS 3D's x-lists of a row's pass (its own row's, the row below's and the layer below's three):
+      // those it built for the row.
+      if (s.layer != nullptr && l.phase_layer >= 0 && l.cell[0] >= 0) return l.phase_index == *s.focus_row;
+      return row_of(l, s.grid, *s.elements, s.layer != nullptr) == *s.focus_row;
   }
   return true;
 }
 
-// True when the overlay draws list `l` (`active`: the one the stepper is writing).
-bool drawn(const OverlayScene& s, const TracedList& l, bool active) {
+// True when the overlay draws list `l` (`active`: the one the stepper is writing); `style` is the
+// layer view's (list_layer_styles: -1 left out; ignored for a 2D frame).
+bool drawn(const OverlayScene& s, const TracedList& l, bool active, std::int8_t style) {
   const auto n = static_cast<ElementId>(s.elements->size());
   if (l.chain.empty()) return false;
   if (std::any_of(l.chain.begin(), l.chain.end(), [n](ElementId k) { return k < 0 || k >= n; })) return false;
+  if (s.layer != nullptr) return style >= 0 && (active || kept_by_filter(s, l));
   if (!active && l.secondary && (!s.focus_row || l.phase_index != *s.focus_row)) return false;
   return active || kept_by_filter(s, l);
 }
+
+// The layer view's style of list i (-1: left out), for a 2D frame Here.
+std::int8_t style_of(const std::vector<std::int8_t>& styles, std::size_t i) { return styles.empty() ? std::int8_t{0} : styles[i]; }
+constexpr std::int8_t kBelowStyle = static_cast<std::int8_t>(ListLayerStyle::Below);
 
 }  // namespace
 
@@ -185,10 +204,18 @@ void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFram
   const auto n = static_cast<ElementId>(e.size());
   const std::vector<TracedList>& lists = *s.lists;
   // The list the stepper is writing: the latest build of its head (NBS rebuilds x-lists per row).
+  // A 3D frame's layer view keeps its layer's pass only; NBS 3D rebuilds a head A[r][ix] for each
+  // row of a pass, not in row order: there, the build of the stepper's row (the focus row).
+  const std::vector<std::int8_t> styles = list_layer_styles(s);
   std::ptrdiff_t active = -1;
   if (s.active_list)
-    for (std::size_t i = 0; i < lists.size(); ++i)
-      if (lists[i].heads_array == s.active_list->first && lists[i].slot == s.active_list->second) active = static_cast<std::ptrdiff_t>(i);
+    for (std::size_t i = 0; i < lists.size(); ++i) {
+      if (lists[i].heads_array != s.active_list->first || lists[i].slot != s.active_list->second) continue;
+      if (s.layer != nullptr && style_of(styles, i) < 0) continue;
+      const auto of_row = [&](std::ptrdiff_t k) { return s.focus_row && lists[static_cast<std::size_t>(k)].phase_index == *s.focus_row; };
+      if (s.layer != nullptr && active >= 0 && of_row(active) && !of_row(static_cast<std::ptrdiff_t>(i))) continue;
+      active = static_cast<std::ptrdiff_t>(i);
+    }
   // A verify run's wrong links, by the list they leave: drawn in red where the chain takes them.
   std::vector<std::vector<int>> marks_of(s.verify != nullptr ? lists.size() : 0);
   if (s.verify != nullptr) {
@@ -202,11 +229,16 @@ void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFram
   for (std::size_t i = 0; i < lists.size(); ++i) {
     const TracedList& l = lists[i];
     const bool is_active = static_cast<std::ptrdiff_t>(i) == active;
-    if (!drawn(s, l, is_active)) continue;
+    const std::int8_t style = style_of(styles, i);
+    if (!drawn(s, l, is_active, style)) continue;
+    const bool below = s.layer != nullptr && style == kBelowStyle;  // a list of the layer below: ghosted
     const bool selected = s.selected >= 0 && std::find(l.chain.begin(), l.chain.end(), s.selected) != l.chain.end();
     // With a selection (or a list being written), the other lists step back.
     const bool step_back = (s.selected >= 0 && !selected) || (active >= 0 && !is_active);
-    const Rgba colour = step_back ? list_colour(l.kind, l.secondary).with_alpha(90) : list_colour(l.kind, l.secondary);
+    const Rgba own = s.layer == nullptr ? list_colour(l.kind, l.secondary)
+                     : below            ? list_colour(l.kind, true).with_alpha(kBelowListAlpha)
+                                        : list_colour(l.kind, false);
+    const Rgba colour = step_back ? own.with_alpha(std::min<std::uint8_t>(own.a, 90)) : own;
     const float width = is_active ? 3.0f : selected ? 2.5f : 1.5f;
     const bool arcs = s.grid != nullptr && row_list(l);
     // The problem whose wrong link is from -> to on this list (from -1: its head), or -1.
@@ -270,11 +302,11 @@ void draw_lists(const OverlayScene& s, const OverlayFlags& /*f*/, const ViewFram
       segment(prev, at(t1), true);
     };
     if (arcs && l.chain.size() > kMaxArcLinks) {
-      draw_rail(s, l, v, colour, width, is_active, wrong, labels, sink);
+      draw_rail(s, l, below, v, colour, width, is_active, wrong, labels, sink);
       continue;
     }
     // The head: a small square, then an arrow to the first element.
-    Vec2 prev = head_anchor(l, s.grid, e, v.free, ppm);
+    Vec2 prev = head_anchor(l, s.grid, e, v.free, ppm, below);
     float prev_r = 0;
     sink.rect(Layer::Overlay, prev - Vec2::Constant(float(3.0 / ppm)), prev + Vec2::Constant(float(3.0 / ppm)), colour);
     ElementId prev_k = -1;
@@ -308,9 +340,12 @@ void draw_head_labels(const OverlayScene& s, const ViewFrame& v, LabelSpace& lab
   constexpr double kGapPx = 5.0;
   // Left of the row numbers, which sit kHeadGapPx (16 px) left of the grid, two digits wide or so.
   constexpr double kRowNumbersPx = 36.0;
-  for (const TracedList& l : *s.lists) {
-    if (l.head_label.empty() || !drawn(s, l, false)) continue;
-    const Vec2 anchor = head_anchor(l, s.grid, *s.elements, v.free, ppm);
+  const std::vector<std::int8_t> styles = list_layer_styles(s);
+  for (std::size_t i = 0; i < s.lists->size(); ++i) {
+    const TracedList& l = (*s.lists)[i];
+    const std::int8_t style = style_of(styles, i);
+    if (l.head_label.empty() || !drawn(s, l, false, style)) continue;
+    const Vec2 anchor = head_anchor(l, s.grid, *s.elements, v.free, ppm, s.layer != nullptr && style == kBelowStyle);
     const double w = label_width(l.head_label.size()), h = kLinePx;
     // Only where there is room: a row's band at least a line high, a cell as wide as its name, a
     // list without a cell (a tree leaf) where its first element is large enough for its id.

@@ -1,7 +1,7 @@
 // nbscope render (private to the overlay files): small geometry helpers and the parts of
 // draw_scene that live in files of their own — the grid with its heat map and legend
 // (overlay_grid.cpp), the singly connected lists (overlay_lists.cpp) and a verify run's red marks
-// (overlay_verify.cpp).
+// (overlay_verify.cpp), and the layer view's 3D parts (overlay_layers.cpp).
 #pragma once
 #include <algorithm>
 #include <array>
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "render/label_space.hpp"
+#include "render/overlay_layers.hpp"
 #include "render/overlays.hpp"
 
 namespace nbscope::render::detail {
@@ -69,7 +70,8 @@ void draw_verify(const OverlayScene& s, const ViewFrame& v, const std::vector<bo
 // squares and clear of every label placed before (call after the ids: those matter more).
 void draw_head_labels(const OverlayScene& s, const ViewFrame& v, LabelSpace& labels, DrawSink& sink);
 // Where a list's head is drawn (its square; the lists overlay's arrows start there).
-Vec2 head_anchor(const TracedList& l, const Grid* grid, const Elements& e, const WorldRect& free, double ppm);
+// `below`: a list of the layer below in a 3D frame's layer view (anchored as the row below's copies).
+Vec2 head_anchor(const TracedList& l, const Grid* grid, const Elements& e, const WorldRect& free, double ppm, bool below = false);
 // The legend in the free view's lower right corner: the cell shading or heat map, the list kinds
 // drawn and the lists caption; its box is reserved in `labels`.
 void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& stats, const ViewFrame& v,
@@ -86,5 +88,28 @@ int pair_segments(const Elements& e, ElementId i, ElementId j, std::array<std::a
 void draw_ghosts(const OverlayScene& s, const WorldRect& view, DrawSink& sink);
 // The box's periodic edges, dashed, along the box (or the elements) on the other axis.
 void draw_box_edges(const Elements& e, const WorldRect& view, double ppm, DrawSink& sink);
+
+// The layer view of a 3D frame (overlay_layers.cpp). Purple means "the layer below" throughout:
+// its elements' dashed ghosts, its lists (as NBS's row-below lists in 2D) and its mask cells.
+inline constexpr Rgba kBelowFill{86, 120, 160, 40};
+inline constexpr Rgba kBelowOutline{190, 150, 255, 190};
+inline constexpr Rgba kBelowBoundingCircle{190, 150, 255, 110};
+inline constexpr Rgba kMaskBelow{190, 150, 255, 85};
+inline constexpr std::uint8_t kBelowListAlpha = 160;  // a list of the layer below, ghosted
+inline constexpr std::uint8_t kBelowTextAlpha = 120;  // a ghost's id
+// A circle's outline as dashes (a ghost of the layer below); a plain thin circle when too small
+// on screen for dashes to read.
+void dashed_circle(Layer layer, Vec2 centre, float radius, Rgba colour, double ppm, DrawSink& sink);
+// The pairs of `pairs` drawn in the layer view: those with at least one element in the layer shown.
+PairList pairs_in_layer(const PairList& pairs, const LayerSlice& slice);
+// At the end of each pair of `pairs` whose element is not in the layer shown: a chevron pointing to
+// its layer ("v" below, "^" above) and its layer beside it ("iz-1", "iz+1"), in `colour`, on `layer`.
+void draw_layer_marks(const Elements& e, const PairList& pairs, const LayerSlice& slice, Rgba colour, Layer layer,
+                      const ViewFrame& v, LabelSpace& labels, DrawSink& sink);
+// The 3D mask of cell (ix, iy) of the layer shown: this layer's cells as in 2D (the own cell
+// stronger), the layer below's as smaller purple squares inside their cells.
+void draw_mask_3d(const Grid& g, std::array<std::int32_t, 2> cell, std::int32_t layer, DrawSink& sink);
+// Per traced list: -1 when the layer view leaves it out, else its ListLayerStyle (lists_in_layer).
+std::vector<std::int8_t> list_layer_styles(const OverlayScene& s);
 
 }  // namespace nbscope::render::detail

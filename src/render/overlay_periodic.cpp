@@ -87,6 +87,7 @@ void draw_ghosts(const OverlayScene& s, const WorldRect& view, DrawSink& sink) {
   const double reach = s.grid != nullptr && s.grid->cell_size > 0 ? s.grid->cell_size : 2.0 * e.max_radius();
   double sx[3], sy[3];
   for (ElementId k = 0; k < static_cast<ElementId>(e.size()); ++k) {
+    if (s.layer != nullptr && s.layer->place(k) != LayerPlace::Here) continue;  // 3D: the layer shown's only
     const int nx = image_shifts(e.box, 0, e.x[k], reach, sx), ny = image_shifts(e.box, 1, e.y[k], reach, sy);
     if (nx == 1 && ny == 1) continue;
     for (int a = 0; a < nx; ++a)

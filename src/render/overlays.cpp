@@ -45,18 +45,7 @@ std::span<const OverlayInfo> overlay_infos() {
 
 // ---- picking helpers --------------------------------------------------------------------------
 
-ElementId element_at(const Elements& e, const Eigen::Vector2d& world) {
-  ElementId best = -1;
-  double best_r = 0;
-  for (ElementId k = 0; k < static_cast<ElementId>(e.size()); ++k) {
-    const double dx = e.x[k] - world.x(), dy = e.y[k] - world.y();
-    if (dx * dx + dy * dy <= e.r[k] * e.r[k] && (best < 0 || e.r[k] < best_r)) {
-      best = k;
-      best_r = e.r[k];
-    }
-  }
-  return best;
-}
+ElementId element_at(const Elements& e, const Eigen::Vector2d& world) { return element_at(e, world, nullptr); }
 
 std::vector<std::array<std::int32_t, 2>> mask_cells(const Grid& grid, std::int32_t ix, std::int32_t iy) {
   std::vector<std::array<std::int32_t, 2>> cells{{ix, iy}};
@@ -71,8 +60,25 @@ namespace {
 
 // ---- bodies and elements ----------------------------------------------------------------------
 
+// Where body `b` lies in a 3D frame's layer view (Here for a 2D frame or a body of no element).
+LayerPlace body_place(const OverlayScene& s, const ShapeDraw& b) {
+  if (s.layer == nullptr || b.element < 0 || static_cast<std::size_t>(b.element) >= s.layer->element_layer.size())
+    return LayerPlace::Here;
+  return s.layer->place(b.element);
+}
+
 void draw_bodies(const OverlayScene& s, const WorldRect& view, double ppm, DrawSink& sink) {
   for (const ShapeDraw& b : s.shapes) {
+    const LayerPlace place = body_place(s, b);
+    if (place == LayerPlace::Above || place == LayerPlace::Other) continue;
+    if (place == LayerPlace::Below) {
+      // A ghost of the layer below: a faint fill under a dashed purple outline, no spoke; under the
+      // layer's bodies (drawn with the cells: within a draw layer lines come after every circle).
+      if (!b.is_circle || !in_view(view, b.centre.x(), b.centre.y(), b.radius)) continue;
+      sink.circle(Layer::Cells, b.centre, b.radius, kBelowFill, kNone, 0.0f);
+      dashed_circle(Layer::Cells, b.centre, b.radius, kBelowOutline, ppm, sink);
+      continue;
+    }
     const Rgba fill = b.motion == Motion::Static      ? palette::kStaticFill
                       : b.motion == Motion::Kinematic ? palette::kKinematicFill
                                                       : palette::kDynamicFill;
@@ -99,10 +105,13 @@ void draw_bodies(const OverlayScene& s, const WorldRect& view, double ppm, DrawS
   }
 }
 
-void draw_elements(const Elements& e, const WorldRect& view, double ppm, DrawSink& sink) {
+void draw_elements(const Elements& e, const LayerSlice* layer, const WorldRect& view, double ppm, DrawSink& sink) {
   for (ElementId k = 0; k < static_cast<ElementId>(e.size()); ++k) {
     // A bounding circle under ~2 px would only repaint its body's pixels.
     if (e.r[k] * ppm < 0.5 * kMinDetailPx || !in_view(view, e.x[k], e.y[k], e.r[k])) continue;
+    const LayerPlace place = layer != nullptr ? layer->place(k) : LayerPlace::Here;
+    if (place == LayerPlace::Below) dashed_circle(Layer::Cells, centre_of(e, k), static_cast<float>(e.r[k]), kBelowBoundingCircle, ppm, sink);
+    if (place != LayerPlace::Here) continue;
     sink.circle(Layer::Overlay, centre_of(e, k), static_cast<float>(e.r[k]), kNone, palette::kBoundingCircle, 1.0f);
   }
 }
@@ -112,13 +121,16 @@ void draw_elements(const Elements& e, const WorldRect& view, double ppm, DrawSin
 // Element ids: inside the circle when they fit, else just above it; only for circles at least
 // kMinIdRadiusPx on screen, only where the view shows them (no panel over them: those are reserved
 // in `space`), never over another label.
-void draw_ids(const Elements& e, const WorldRect& view, double ppm, ElementId selected, bool book,
+void draw_ids(const Elements& e, const LayerSlice* layer, const WorldRect& view, double ppm, ElementId selected, bool book,
               const std::vector<std::int64_t>* ids, LabelSpace& space, DrawSink& sink) {
   char buf[24];
   if (ids != nullptr && ids->size() != static_cast<std::size_t>(e.size())) ids = nullptr;  // not this frame's
   // The selected element's id first: it must never be the one left out.
   auto place = [&](ElementId k) {
     if (e.r[k] * ppm < kMinIdRadiusPx || !in_view(view, e.x[k], e.y[k], e.r[k])) return;
+    // A 3D frame's layer view: the layer's ids, the ghosts' faded, none of the hidden layers.
+    const LayerPlace place = layer != nullptr ? layer->place(k) : LayerPlace::Here;
+    if (place != LayerPlace::Here && place != LayerPlace::Below) return;
     // A dump's atoms by their ids (as every panel names them), else the row.
     const int digits = ids != nullptr ? std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>((*ids)[static_cast<std::size_t>(k)]))
                                       : std::snprintf(buf, sizeof buf, "%d", book ? k + 1 : k);
@@ -126,11 +138,14 @@ void draw_ids(const Elements& e, const WorldRect& view, double ppm, ElementId se
     const double r_px = e.r[k] * ppm;
     const Vec2 at = 2.0 * r_px >= w ? centre_of(e, k) : v2(e.x[k], e.y[k] + (r_px + 0.5 * kLinePx + 1.0) / ppm);
     if (!label_inside(view, at, w, kLinePx, ppm) || !space.take(at, w, kLinePx)) return;
-    sink.text(at, buf, palette::kText);
+    sink.text(at, buf, place == LayerPlace::Here ? palette::kText : palette::kText.with_alpha(kBelowTextAlpha));
   };
   if (selected >= 0 && selected < static_cast<ElementId>(e.size())) place(selected);
-  for (ElementId k = 0; k < static_cast<ElementId>(e.size()); ++k)
-    if (k != selected) place(k);
+  // The layer's own ids before its ghosts': a ghost's never takes an element's place.
+  const auto ghost = [layer](ElementId k) { return layer != nullptr && layer->place(k) != LayerPlace::Here; };
+  for (const bool ghosts : {false, true})
+    for (ElementId k = 0; k < static_cast<ElementId>(e.size()); ++k)
+      if (k != selected && ghost(k) == ghosts) place(k);
 }
 
 // ---- mask -------------------------------------------------------------------------------------
@@ -189,10 +204,11 @@ void draw_violations(const Elements& e, const PairList& violations, DrawSink& si
 
 // ---- selection, trails, flashes ---------------------------------------------------------------
 
-void draw_selection(const OverlayScene& s, const WorldRect& view, double ppm, DrawSink& sink) {
+void draw_selection(const OverlayScene& s, const ViewFrame& v, LabelSpace& labels, DrawSink& sink) {
   const Elements& e = *s.elements;
   const ElementId k = s.selected;
   if (k < 0 || k >= static_cast<ElementId>(e.size())) return;
+  if (s.layer != nullptr && !s.layer->visible(k)) return;  // in a hidden layer: its own view shows it
   if (s.grid != nullptr) {
     const Grid& g = *s.grid;
     const double d = g.cell_size;
@@ -203,14 +219,17 @@ void draw_selection(const OverlayScene& s, const WorldRect& view, double ppm, Dr
     PairList mine;
     for (const Pair& p : *s.pairs)
       if (p.i == k || p.j == k) mine.push_back(p);
-    draw_pair_list(e, mine, view, ppm, palette::kSelection, 2.5f, Layer::Overlay, sink);
+    if (s.layer != nullptr) mine = pairs_in_layer(mine, *s.layer);
+    draw_pair_list(e, mine, v.view, v.ppm, palette::kSelection, 2.5f, Layer::Overlay, sink);
+    if (s.layer != nullptr) draw_layer_marks(e, mine, *s.layer, palette::kSelection, Layer::Overlay, v, labels, sink);
   }
   sink.circle(Layer::Top, centre_of(e, k), static_cast<float>(e.r[k]), kNone, palette::kSelection, 2.0f, 5.0f);
 }
 
 // The pair of a violation gone to: both cells outlined, both elements ringed (never smaller than
-// 9 px, so the pair is found zoomed out), joined by a dashed-looking double segment.
-void draw_focus_pair(const OverlayScene& s, DrawSink& sink) {
+// 9 px, so the pair is found zoomed out), joined by a dashed-looking double segment; in a 3D
+// frame's layer view, a partner in another layer is marked with its layer.
+void draw_focus_pair(const OverlayScene& s, const ViewFrame& v, LabelSpace& labels, DrawSink& sink) {
   const Elements& e = *s.elements;
   const Pair p = *s.focus_pair;
   const auto n = static_cast<ElementId>(e.size());
@@ -232,6 +251,7 @@ void draw_focus_pair(const OverlayScene& s, DrawSink& sink) {
   }
   for (const ElementId k : {p.i, p.j})
     sink.circle(Layer::Top, centre_of(e, k), static_cast<float>(e.r[k]), kNone, palette::kSelection, 2.5f, 9.0f);
+  if (s.layer != nullptr) draw_layer_marks(e, PairList{p}, *s.layer, palette::kSelection, Layer::Top, v, labels, sink);
 }
 
 void draw_trails(std::span<const std::vector<Vec2>> trails, const PeriodicBox& box, DrawSink& sink) {
@@ -250,14 +270,44 @@ void draw_trails(std::span<const std::vector<Vec2>> trails, const PeriodicBox& b
   }
 }
 
-void draw_flashes(const Elements& e, std::span<const std::pair<ElementId, float>> flashes, const WorldRect& view,
-                  DrawSink& sink) {
+void draw_flashes(const Elements& e, const LayerSlice* layer, std::span<const std::pair<ElementId, float>> flashes,
+                  const WorldRect& view, DrawSink& sink) {
   for (const auto& [k, strength] : flashes) {
     if (k < 0 || k >= static_cast<ElementId>(e.size()) || !in_view(view, e.x[k], e.y[k], e.r[k])) continue;
+    if (layer != nullptr && !layer->visible(k)) continue;
     const auto alpha = static_cast<std::uint8_t>(std::clamp(strength, 0.0f, 1.0f) * 220.0f);
     sink.circle(Layer::Overlay, centre_of(e, k), static_cast<float>(e.r[k]), palette::kFlash.with_alpha(alpha / 3),
                 palette::kFlash.with_alpha(alpha), 2.0f);
   }
+}
+
+// Broadphase-only, detected and confirmed pairs. A 3D frame's layer view keeps the pairs with an
+// element in the layer, and marks the partner's end of those that reach the layer below or above.
+void draw_pairs(const OverlayScene& s, const OverlayFlags& f, const ViewFrame& v, LabelSpace& labels, DrawSink& sink) {
+  const Elements& e = *s.elements;
+  const auto draw = [&](const PairList& all, Rgba colour, float width) {
+    if (s.layer == nullptr) {
+      draw_pair_list(e, all, v.view, v.ppm, colour, width, Layer::Overlay, sink);
+      return;
+    }
+    const PairList here = pairs_in_layer(all, *s.layer);
+    draw_pair_list(e, here, v.view, v.ppm, colour, width, Layer::Overlay, sink);
+    draw_layer_marks(e, here, *s.layer, colour, Layer::Overlay, v, labels, sink);
+  };
+  if (f.broadphase && s.checks != nullptr) draw(s.checks->broadphase_only, palette::kBroadphaseOnly, 1.0f);
+  const bool confirmed = f.checks && s.checks != nullptr && !s.checks->confirmed.empty();
+  if (f.pairs && s.pairs != nullptr) {
+    // A confirmed pair is drawn once, in the check's colour; the rest of A in the pairs' colour.
+    if (confirmed) {
+      PairList unconfirmed;
+      std::set_difference(s.pairs->begin(), s.pairs->end(), s.checks->confirmed.begin(), s.checks->confirmed.end(),
+                          std::back_inserter(unconfirmed));
+      draw(unconfirmed, palette::kPair, 1.5f);
+    } else {
+      draw(*s.pairs, palette::kPair, 1.5f);
+    }
+  }
+  if (confirmed) draw(s.checks->confirmed, palette::kConfirmedPair, 1.5f);
 }
 
 }  // namespace
@@ -272,7 +322,16 @@ std::optional<std::int32_t> list_focus_row(std::optional<std::int32_t> stepper_r
 
 // ---- draw_scene -------------------------------------------------------------------------------
 
-void draw_scene(const OverlayScene& s, const OverlayFlags& f, const Camera& camera, DrawSink& sink) {
+void draw_scene(const OverlayScene& scene, const OverlayFlags& f, const Camera& camera, DrawSink& sink) {
+  // A layer slice of other elements than these (a stale one) is not used: the frame is drawn whole.
+  OverlayScene checked;
+  const bool stale = scene.layer != nullptr && (scene.elements == nullptr ||
+                                                scene.layer->element_layer.size() != static_cast<std::size_t>(scene.elements->size()));
+  if (stale) {
+    checked = scene;
+    checked.layer = nullptr;
+  }
+  const OverlayScene& s = stale ? checked : scene;
   ViewFrame v;
   v.view = camera.view();
   v.ppm = camera.pixels_per_metre();
@@ -287,49 +346,51 @@ void draw_scene(const OverlayScene& s, const OverlayFlags& f, const Camera& came
   for (const PixelRect& r : s.covered) labels.reserve(r);
   const bool have_elements = s.elements != nullptr;
   // The legend's box first (its corner is fixed), then the grid's labels around it.
-  const bool grid = f.grid && s.grid != nullptr && s.grid->dim == 2;
+  // A 3D grid is drawn as its layer shown (x-y cells), never without one.
+  const bool flat = s.grid != nullptr && (s.grid->dim == 2 || (s.layer != nullptr && s.layer->layer < s.grid->n[2]));
+  const bool grid = f.grid && flat;
   const GridCounts counts = grid ? count_cells(s, v) : GridCounts{};
   draw_legend(s, f, counts.stats, v, labels, sink);
   if (grid) draw_grid(s, v, counts, labels, sink);
-  if (f.mask && s.grid != nullptr && s.grid->dim == 2) {
-    // The hovered cell's mask, else the selected element's (headless: --select shows it).
-    if (s.hovered_cell) draw_mask(*s.grid, *s.hovered_cell, sink);
-    else if (have_elements && s.selected >= 0 && s.selected < static_cast<ElementId>(s.elements->size()))
-      draw_mask(*s.grid, {s.grid->cell(s.elements->x[s.selected], 0), s.grid->cell(s.elements->y[s.selected], 1)}, sink);
+  if (f.mask && flat) {
+    // The hovered cell's mask, else the selected element's (headless: --select shows it; in the
+    // layer view only an element of the layer).
+    std::optional<std::array<std::int32_t, 2>> cell = s.hovered_cell;
+    const ElementId k = s.selected;
+    if (!cell && have_elements && k >= 0 && k < static_cast<ElementId>(s.elements->size()) &&
+        (s.layer == nullptr || s.layer->place(k) == LayerPlace::Here))
+      cell = {s.grid->cell(s.elements->x[k], 0), s.grid->cell(s.elements->y[k], 1)};
+    if (cell && s.layer != nullptr) draw_mask_3d(*s.grid, *cell, s.layer->layer, sink);
+    else if (cell) draw_mask(*s.grid, *cell, sink);
   }
   if (f.bodies) draw_bodies(s, view, ppm, sink);
   if (!have_elements) return;
   const Elements& e = *s.elements;
   if (f.bodies || f.elements) draw_ghosts(s, view, sink);  // periodic frames only
   draw_box_edges(e, view, ppm, sink);
-  if (f.elements) draw_elements(e, view, ppm, sink);
-  if (f.trails) draw_trails(s.trails, e.box, sink);
-  if (f.flash) draw_flashes(e, s.flashes, view, sink);
+  if (f.elements) draw_elements(e, s.layer, view, ppm, sink);
+  // Trails are the selected element's: not while it is in a hidden layer.
+  if (f.trails && (s.layer == nullptr || s.selected < 0 || s.selected >= static_cast<ElementId>(e.size()) || s.layer->visible(s.selected)))
+    draw_trails(s.trails, e.box, sink);
+  if (f.flash) draw_flashes(e, s.layer, s.flashes, view, sink);
   // The overview's heat map is the picture at that scale: pair segments a few pixels long would
   // bury it (large.json settled: 40,000 of them); violations are still drawn, and zooming in shows pairs.
-  const bool overview = counts.stats.heat_map;
-  if (f.broadphase && s.checks != nullptr && !overview)
-    draw_pair_list(e, s.checks->broadphase_only, view, ppm, palette::kBroadphaseOnly, 1.0f, Layer::Overlay, sink);
-  const bool confirmed = f.checks && s.checks != nullptr && !s.checks->confirmed.empty() && !overview;
-  if (f.pairs && s.pairs != nullptr && !overview) {
-    // A confirmed pair is drawn once, in the check's colour; the rest of A in the pairs' colour.
-    if (confirmed) {
-      PairList unconfirmed;
-      std::set_difference(s.pairs->begin(), s.pairs->end(), s.checks->confirmed.begin(), s.checks->confirmed.end(),
-                          std::back_inserter(unconfirmed));
-      draw_pair_list(e, unconfirmed, view, ppm, palette::kPair, 1.5f, Layer::Overlay, sink);
-    } else {
-      draw_pair_list(e, *s.pairs, view, ppm, palette::kPair, 1.5f, Layer::Overlay, sink);
-    }
+  // A violation's marks first (on top, and their labels placed before those of the pairs under them).
+  const bool violations = f.checks && s.checks != nullptr;
+  PairList violations_here;
+  if (violations && s.layer != nullptr) {
+    violations_here = pairs_in_layer(s.checks->violations, *s.layer);
+    draw_layer_marks(e, violations_here, *s.layer, palette::kViolation, Layer::Top, v, labels, sink);
   }
-  if (confirmed) draw_pair_list(e, s.checks->confirmed, view, ppm, palette::kConfirmedPair, 1.5f, Layer::Overlay, sink);
+  if (!counts.stats.heat_map) draw_pairs(s, f, v, labels, sink);
   std::vector<bool> marked_links;  // the problems whose wrong link the lists drew (in red, along their chain)
   if (f.lists && s.lists != nullptr) draw_lists(s, f, v, labels, sink, &marked_links);
   if (s.verify != nullptr) draw_verify(s, v, marked_links, sink);
-  draw_selection(s, view, ppm, sink);
-  if (f.checks && s.checks != nullptr) draw_violations(e, s.checks->violations, sink);
-  if (s.focus_pair) draw_focus_pair(s, sink);
-  if (f.ids || f.lists) draw_ids(e, view, ppm, s.selected, s.book_numbering, s.ids, labels, sink);
+  draw_selection(s, v, labels, sink);
+  // A violation keeps its red in the layer view (its partner in another layer marked above).
+  if (violations) draw_violations(e, s.layer != nullptr ? violations_here : s.checks->violations, sink);
+  if (s.focus_pair) draw_focus_pair(s, v, labels, sink);
+  if (f.ids || f.lists) draw_ids(e, s.layer, view, ppm, s.selected, s.book_numbering, s.ids, labels, sink);
   if (f.lists && s.lists != nullptr) draw_head_labels(s, v, labels, sink);
   if (s.drag) sink.line(Layer::Top, (*s.drag)[0], (*s.drag)[1], palette::kDragLine, 1.5f);
 }

@@ -21,6 +21,7 @@
 #include "render/camera.hpp"
 #include "render/draw_sink.hpp"
 #include "render/label_space.hpp"
+#include "render/overlay_layers.hpp"
 #include "core/traced_lists.hpp"
 #include "render/overlay_verify.hpp"
 

@@ -410,7 +410,7 @@ void UiHost::handle_mouse(UiContext& ctx) {
   ctx.state.hovered_cell = ctx.sim.grid() != nullptr ? cell_at(*ctx.sim.grid(), world) : std::nullopt;
   move_camera_by_mouse(ctx.camera, mouse, false);  // the left button drags a body here
   if (ImGui::IsMouseClicked(0) && !ctx.state.dragging) {
-    ctx.state.selected = ctx.sim.elements != nullptr ? render::element_at(*ctx.sim.elements, world) : -1;
+    ctx.state.selected = ctx.sim.elements != nullptr ? render::element_at(*ctx.sim.elements, world, ctx.sim.layer) : -1;
     ctx.state.selected_pair.reset();
     ctx.state.selected_cell = ctx.state.hovered_cell;
     // A past frame is looked at, not pushed: dragging a body needs the live frame (Resume here).
