@@ -85,7 +85,7 @@ class StepperPanel final : public Panel {
   void draw_scene(const UiContext& c, render::DrawSink& sink) override {
     // The scene may be drawn before the view of this frame is filled in: then trust the last update.
     const bool current = c.sim.elements != nullptr ? session_->current_for(c.sim) : session_->was_current();
-    if (current) draw_stepper_scene(*session_, sink, c.state.overlays.lists);
+    if (current) draw_stepper_scene(*session_, sink, c.state.overlays.lists, c.sim.layer);
   }
 
   bool handle_keys(UiContext& c) override {
@@ -347,6 +347,7 @@ std::shared_ptr<StepperSession> add_stepper_panels(UiHost& host, StepperConfig c
   host.add_panel(make_stepper_panel(session));
   host.add_panel(make_pseudocode_panel(session));
   host.add_panel(make_arrays_panel(session));
+  host.add_panel(make_layers_panel(session));
   return session;
 }
 

@@ -159,6 +159,18 @@ std::optional<Eigen::Vector2d> StepperSession::focus_point() const {
   return std::nullopt;
 }
 
+std::optional<std::int32_t> StepperSession::current_axis(int axis) const {
+  constexpr std::size_t kLookBack = 256;  // a phase's first cell is never far back; the cost stays per frame
+  if (!captured_ || elements().dim != 3 || stepper_.position() == 0) return std::nullopt;
+  const auto& events = stepper_.events();
+  const std::int64_t phase = stepper_.current_phase();
+  const std::size_t start = phase >= 0 ? stepper_.phases()[static_cast<std::size_t>(phase)].event : 0;
+  if (phase >= 0 && events[start].cell[axis] >= 0) return events[start].cell[axis];
+  for (std::size_t i = stepper_.position(); i-- > start && stepper_.position() - i <= kLookBack;)
+    if (events[i].cell[axis] >= 0) return events[i].cell[axis];
+  return std::nullopt;
+}
+
 void StepperSession::capture(const SimView& sim) {
   const std::size_t keep_position = stepper_.position();
   if (!target_ || target_->frame != sim.frame_number()) {
@@ -365,6 +377,34 @@ std::string describe_event(const StepperSession& session, const TraceEvent& e) {
     out += name(wr) + " = " + value(wr.array, wr.new_value) + " (was " + (was_set ? value(wr.array, wr.old_value) : "unset") + ")";
   }
   if (e.element >= 0) out += " for k=" + id(e.element);
+  return out;
+}
+
+std::string array_shapes_text(const StepperSession& session) {
+  const Grid* grid = session.grid();
+  const std::int64_t n = session.elements().size();
+  const auto& arrays = session.stepper().trace().arrays();
+  std::string out;
+  for (const TracedArray& a : arrays) {
+    std::string text = a.name;
+    for (std::size_t d = 0; d < a.shape.size(); ++d) {
+      const std::int64_t extent = a.shape[d];
+      std::string axis;
+      if (index_is_selector(a, d)) {
+        axis = std::to_string(extent);
+      } else if (a.shape.size() == 1 && extent == n && session.stepper().next_array_of(session.stepper().array_id(a.name)) < 0) {
+        axis = "N=" + std::to_string(extent);  // indexed by element
+      } else if (grid != nullptr) {
+        // The cell axis of this extent: the last index of a heads array is its own axis (C[nz],
+        // B[..][ny], A[..][nx] in NBS 3D, whose lists run z, then y, then x; 2D's B[2][nx]); a matrix's are x, y, z.
+        const int from_name = a.name == "C" && a.shape.size() == 1 ? 2 : a.name == "B" ? (session.elements().dim == 3 ? 1 : 0) : a.name == "A" ? 0 : -1;
+        const int ax = a.shape.size() == 1 || index_is_selector(a, 0) ? from_name : static_cast<int>(d);
+        if (ax >= 0 && ax < 3 && grid->n[ax] == extent) axis = std::string("n") + "xyz"[ax] + "=" + std::to_string(extent);
+      }
+      text += "[" + (axis.empty() ? std::to_string(extent) : axis) + "]";
+    }
+    out += (out.empty() ? "" : "  ") + text;
+  }
   return out;
 }
 
