@@ -157,7 +157,13 @@ class StepperPanel final : public Panel {
       s.status = cell ? "select a cell (click it) first" : "select an element (click it) first";
       return;
     }
-    s.seek_touching(cell ? BreakKind::Cell : BreakKind::Element, k, at.value_or(std::array<std::int32_t, 2>{-1, -1}), direction);
+    // In 3D the cell is of the layer shown (a clicked cell), or of the selected element's layer.
+    std::int32_t layer = -1;
+    if (const LayerSlice* slice = c.sim.layer) {
+      const bool from_element = !c.state.selected_cell && k >= 0 && static_cast<std::size_t>(k) < slice->element_layer.size();
+      layer = from_element ? slice->element_layer[static_cast<std::size_t>(k)] : slice->layer;
+    }
+    s.seek_touching(cell ? BreakKind::Cell : BreakKind::Element, k, at.value_or(std::array<std::int32_t, 2>{-1, -1}), direction, layer);
   }
 
   // With "follow" on, a current operation that leaves the middle of the view brings the camera to it.

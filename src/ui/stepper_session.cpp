@@ -127,19 +127,21 @@ void StepperSession::apply_target(const SimView& sim) {
   (void)sim;
 }
 
-bool StepperSession::seek_touching(BreakKind kind, std::int32_t element, const std::array<std::int32_t, 2>& cell, int direction) {
+bool StepperSession::seek_touching(BreakKind kind, std::int32_t element, const std::array<std::int32_t, 2>& cell, int direction,
+                                   std::int32_t layer) {
   if (!captured_) return false;
   Breakpoint b;
   b.kind = kind;
   b.element = element;
   b.cell[0] = cell[0];
   b.cell[1] = cell[1];
-  b.cell[2] = -1;
+  b.cell[2] = layer;
   stepper_.pause();
   const bool moved = direction > 0 ? stepper_.run_to(b) : stepper_.run_back_to(b);
   const std::string what = kind == BreakKind::Element ? "element " + std::to_string(shown(element, book_numbering))
                                                       : "cell (" + std::to_string(shown(cell[0], book_numbering)) + "," +
-                                                            std::to_string(shown(cell[1], book_numbering)) + ")";
+                                                            std::to_string(shown(cell[1], book_numbering)) +
+                                                            (layer >= 0 ? "," + std::to_string(shown(layer, book_numbering)) : "") + ")";
   status = moved ? "" : std::string("no ") + (direction > 0 ? "later" : "earlier") + " operation on " + what;
   return moved;
 }

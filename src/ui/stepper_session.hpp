@@ -111,8 +111,10 @@ class StepperSession {
 
   // ---- long traces ----
   // The next (direction +1) or previous (-1) operation touching element k (BreakKind::Element) or
-  // cell (ix, iy) (BreakKind::Cell), moved to; false (unmoved) when there is none. Sets status.
-  bool seek_touching(BreakKind kind, std::int32_t element, const std::array<std::int32_t, 2>& cell, int direction);
+  // cell (ix, iy) (BreakKind::Cell; of layer `layer` in 3D, -1 in 2D), moved to; false (unmoved)
+  // when there is none. Sets status.
+  bool seek_touching(BreakKind kind, std::int32_t element, const std::array<std::int32_t, 2>& cell, int direction,
+                     std::int32_t layer = -1);
   // The world point of the current operation: its element's centre, else its cell's centre; nullopt
   // at position 0 or without one.
   [[nodiscard]] std::optional<Eigen::Vector2d> focus_point() const;

@@ -397,5 +397,51 @@ TEST(StepperScene3d, LeavesOutWhatTheLayerViewHides) {
   EXPECT_TRUE(layered.texts.empty());
 }
 
+// The Help menu names the layer keys beside the others.
+TEST(HelpMenu, NamesTheLayerKeys) {
+  std::string text;
+  for (const char* line : help_lines()) text += std::string(line) + "\n";
+  EXPECT_NE(text.find("Up / Down  the layer above / below"), std::string::npos) << text;
+}
+
+// Shift+PageDown on a cell clicked in the layer view goes to an operation on that cell of that layer
+// (in 3D a cell (ix, iy) alone names none); a violation's pair in a 3D frame is found in the trace.
+TEST(StepperPanels3d, ACellSeekAndAViolationsPairWorkIn3d) {
+  Scope3d scope;
+  UiHost host;
+  auto session = add_stepper_panels(host, StepperConfig{std::size_t{0}, false});
+  Frame3d f;
+  open_stepper_panels(f.state);
+  run_frame(host, f);
+  ASSERT_TRUE(session->has_capture()) << session->message();
+  // A cell of the layer shown that holds an element.
+  ElementId k = 0;
+  while (k < f.elements.size() && f.slice.place(k) != LayerPlace::Here) ++k;
+  ASSERT_LT(k, f.elements.size());
+  const Grid& g = f.grid();
+  const std::array<std::int32_t, 2> cell{g.cell(f.elements.x[k], 0), g.cell(f.elements.y[k], 1)};
+  f.state.selected_cell = cell;
+  testui::press(267, true);  // Shift+PageDown
+  run_frame(host, f);
+  testui::release();
+  const TraceEvent* e = session->stepper().current();
+  ASSERT_NE(e, nullptr) << session->status;
+  EXPECT_EQ(e->cell[0], cell[0]);
+  EXPECT_EQ(e->cell[1], cell[1]);
+  EXPECT_EQ(e->cell[2], f.slice.layer);
+
+  // A contact the trace found, as if A had lost it: the stepper goes to its test, in its layer's pass.
+  ASSERT_FALSE(f.sim.trace->pairs.empty());
+  const Pair p = f.sim.trace->pairs.front();
+  session->set_target(StepperSession::PairTarget{0, p, Invariant::AEqualsR, "missing from A"});
+  run_frame(host, f);
+  ASSERT_TRUE(session->target_location().has_value());
+  EXPECT_NE(session->target_status().find("tested against"), std::string::npos) << session->target_status();
+  const TraceEvent* test = session->stepper().current();
+  ASSERT_NE(test, nullptr);
+  EXPECT_EQ(test->op, TraceOp::TestPair);
+  EXPECT_EQ(session->current_layer(), pair_layer(f.slice, g, p));
+}
+
 }  // namespace
 }  // namespace nbscope::ui
