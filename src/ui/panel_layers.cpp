@@ -23,7 +23,7 @@ namespace {
 // kBinPx pixels) instead of drawing each: 10,000 circles would cost the window its frame rate.
 constexpr std::int64_t kMaxDrawnElements = 2000;
 constexpr float kBinPx = 3.0f;
-constexpr int kZListLines = 12;  // layers listed around the one shown
+constexpr int kZListLines = 5;  // layers listed around the one shown (the column stays short)
 
 const ImU32 kHereColour = IM_COL32(250, 190, 90, 230);
 const ImU32 kBelowColour = IM_COL32(150, 170, 220, 190);
@@ -75,7 +75,7 @@ class LayersPanel final : public Panel {
     draw_choice(c, slice, book);
     if (grid_3d) {
       const double z_lo = grid->origin[2] + slice.layer * grid->cell_size;
-      ImGui::Text("layer %lld of %d, z from %.4g to %.4g m, %lld elements", static_cast<long long>(shown(slice.layer, book)),
+      ImGui::TextWrapped("layer %lld of %d, z from %.4g to %.4g m, %lld elements", static_cast<long long>(shown(slice.layer, book)),
                   slice.count, z_lo, z_lo + grid->cell_size, static_cast<long long>(layer_count(slice, slice.layer)));
       ImGui::Checkbox("y-z (else x-z)", &c.state.side_view_yz);
       draw_side_view(c, slice, *grid);
@@ -110,6 +110,7 @@ class LayersPanel final : public Panel {
     ImGui::SetNextItemWidth(std::max(80.0f, ImGui::GetContentRegionAvail().x - button_width("Down") - button_width("Up") -
                                                 button_width("auto") - 3 * ImGui::GetStyle().ItemSpacing.x));
     if (ImGui::SliderInt("##layer", &value, lo, std::max(lo, hi), "layer %d")) c.state.layer = std::clamp(value - lo, 0, s.count - 1);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the layer shown (keys: Up / Down)");
     ImGui::SameLine();
     if (ImGui::Button("Down")) move(c, -1);
     ImGui::SameLine();
@@ -129,7 +130,7 @@ class LayersPanel final : public Panel {
     const double d = grid.cell_size;
     const double h_span = static_cast<double>(grid.n[h_axis]) * d, z_span = static_cast<double>(grid.n[2]) * d;
     const float w = std::max(60.0f, ImGui::GetContentRegionAvail().x);
-    const float h = std::clamp(static_cast<float>(w * z_span / std::max(h_span, 1e-300)), 90.0f, 220.0f);
+    const float h = std::clamp(static_cast<float>(w * z_span / std::max(h_span, 1e-300)), 60.0f, 120.0f);
     SideGeometry g;
     g.lo = ImGui::GetCursorScreenPos();
     g.hi = ImVec2(g.lo.x + w, g.lo.y + h);
@@ -236,13 +237,13 @@ class LayersPanel final : public Panel {
     const ZLists z = zlists(c.sim, s);
     switch (z.source) {
       case ZLists::Source::Stepper:
-        ImGui::TextWrapped("z-lists at operation %zu of %zu (the Stepper's, as in Arrays):", z.position, z.events);
+        ImGui::TextWrapped("z-lists at operation %zu of %zu (as in Arrays):", z.position, z.events);
         break;
       case ZLists::Source::Trace:
-        ImGui::TextWrapped("z-lists of the traced nbs run, finished:");
+        ImGui::TextWrapped("z-lists of the nbs trace, finished:");
         break;
       case ZLists::Source::Layers:
-        ImGui::TextWrapped("z-lists computed from the layers, as the book's first loop builds them (no NBS 3D trace):");
+        ImGui::TextWrapped("z-lists (no nbs trace): as the book's first loop builds them:");
         break;
     }
     const std::vector<std::int64_t>* ids = c.sim.ids();
@@ -262,7 +263,6 @@ class LayersPanel final : public Panel {
       }
     }
     if (from > 0) ImGui::TextDisabled("  ... %lld below", static_cast<long long>(from));
-    ImGui::TextDisabled("Up/Down: the layer above/below");
   }
 
   std::shared_ptr<StepperSession> session_;
