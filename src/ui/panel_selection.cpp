@@ -7,9 +7,11 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/traced_lists.hpp"
 #include "ui/panels.hpp"
 #include "ui/stepper_session.hpp"
 
@@ -48,10 +50,14 @@ class SelectionPanel final : public Panel {
       if (const Grid* grid = s.grid()) ImGui::Text("cell ix = %lld, iy = %lld", num(grid->cell(e.x[k], 0)), num(grid->cell(e.y[k], 1)));
     }
 
-    if (s.lists == nullptr) {
+    // The lists overlay's lists, else (3D: the place in the z-, y- and x-lists is what a layer view
+    // asks) the finished lists of the frame's trace when one was made (paused, the stepper).
+    const std::vector<TracedList>* lists = s.lists != nullptr ? s.lists : e.dim == 3 ? trace_lists(s) : nullptr;
+    if (lists == nullptr) {
       ImGui::TextDisabled("lists: turn on the list overlay (L)");
     } else {
-      for (const TracedList& l : *s.lists) {
+      if (s.lists == nullptr) ImGui::TextDisabled("lists of the frame's trace, finished:");
+      for (const TracedList& l : *lists) {
         const auto at = std::find(l.chain.begin(), l.chain.end(), k);
         if (at == l.chain.end()) continue;
         const ElementId next = at + 1 == l.chain.end() ? -1 : *(at + 1);
@@ -80,6 +86,20 @@ class SelectionPanel final : public Panel {
     }
     ImGui::TextDisabled("Esc clears the selection");
   }
+
+ private:
+  // The finished lists of the frame's trace, rebuilt once per trace; null without a usable one.
+  const std::vector<TracedList>* trace_lists(const SimView& s) {
+    if (!s.trace || !s.trace->refusal.empty() || s.trace->elements.size() != s.elements->size()) return nullptr;
+    if (!lists_serial_ || s.trace->serial != *lists_serial_) {
+      trace_lists_ = traced_lists(s.trace->log, static_cast<std::size_t>(s.trace->elements.size()));
+      lists_serial_ = s.trace->serial;
+    }
+    return &trace_lists_;
+  }
+
+  std::vector<TracedList> trace_lists_;
+  std::optional<std::uint64_t> lists_serial_;  // the trace they were rebuilt from
 };
 
 }  // namespace

@@ -329,6 +329,11 @@ TEST(SelectionPanel, NamesA3dElementsCellLayerAndListPlaces) {
   has("z-list C[" + std::to_string(iz) + "]: position 2 of " + std::to_string(chain.size()));
   has("y-list B[0][" + std::to_string(iy) + "]: position");
   has("x-list A[0][" + std::to_string(ix) + "]: position");
+  // With the lists overlay off, the frame's trace (paused: the stepper's) gives the same places.
+  f.sim.lists = nullptr;
+  const std::string from_trace = panel_text(host, f, "Selection");
+  EXPECT_NE(from_trace.find("z-list C[" + std::to_string(iz) + "]: position 2 of " + std::to_string(chain.size())), std::string::npos)
+      << from_trace;
   // Its own layer shown: "(shown)"; book numbering shifts every index.
   f.slice = slice_layer(f.elements, g, iz);
   f.state.book_numbering = true;
