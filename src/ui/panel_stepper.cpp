@@ -232,11 +232,7 @@ class StepperPanel final : public Panel {
   void draw_phases(StepperSession& s) {
     Stepper& st = s.stepper();
     const auto& phases = st.phases();
-    const auto phase_name = [&](std::size_t i) {
-      std::string name = phases[i].label;
-      if (phases[i].index >= 0) name += " " + std::to_string(shown(phases[i].index, s.book_numbering));
-      return name;
-    };
+    const auto phase_name = [&](std::size_t i) { return phase_text(s, i); };
     const std::int64_t cur = st.current_phase();
     const std::string preview = cur >= 0 ? phase_name(static_cast<std::size_t>(cur)) : std::string("(start)");
     float speed = static_cast<float>(st.speed());

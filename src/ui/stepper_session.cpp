@@ -382,6 +382,18 @@ std::string describe_event(const StepperSession& session, const TraceEvent& e) {
   return out;
 }
 
+std::string phase_text(const StepperSession& session, std::size_t phase) {
+  const Stepper& st = session.stepper();
+  if (phase >= st.phases().size()) return "";
+  const PhaseMark& mark = st.phases()[phase];
+  const bool book = session.book_numbering;
+  std::string name = mark.label;
+  if (mark.index >= 0) name += " " + std::to_string(shown(mark.index, book));
+  const TraceEvent& e = st.events()[mark.event];
+  if (e.cell[1] >= 0 && e.cell[2] >= 0) name += ", layer " + std::to_string(shown(e.cell[2], book));  // a row of a 3D pass
+  return name;
+}
+
 std::string array_shapes_text(const StepperSession& session) {
   const Grid* grid = session.grid();
   const std::int64_t n = session.elements().size();

@@ -195,6 +195,9 @@ struct ElementEntries {
 // B[2][ny=6]  Y[N=120]  A[5][nx=6]  X[N=120]" for NBS 3D (p.123): an extent of N elements is "N",
 // a cell axis is named (nx, ny, nz), a selector (B's 2, A's 5) is its number.
 [[nodiscard]] std::string array_shapes_text(const StepperSession& session);
+// The Stepper's name of phase `phase` (an index into Stepper::phases()): "x-lists of row 4", with
+// the layer of a row of a 3D pass ("x-lists of row 4, layer 2"), in the session's numbering.
+[[nodiscard]] std::string phase_text(const StepperSession& session, std::size_t phase);
 // What a stepper panel says while nothing is held: why (the trace's refusal), or how to record.
 [[nodiscard]] std::string idle_message(const StepperSession& session);
 // The window [begin, end) of at most `width` entries of an array of `length` that keeps `focus`

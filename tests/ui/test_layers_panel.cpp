@@ -291,6 +291,17 @@ TEST(StepperLayer, CurrentLayerAndRowFollowTheTrace) {
     }
   }
   EXPECT_GT(checked_rows, 100u);
+  // The Stepper's phase list names a row's layer too (row 4 of which layer?).
+  for (std::size_t i = 0; i < st.phases().size(); ++i) {
+    const std::string name = phase_text(s, i);
+    const TraceEvent& e = st.events()[st.phases()[i].event];
+    if (std::string(st.phases()[i].label) == phase_label::kXListsOfRow) {
+      EXPECT_EQ(name, "x-lists of row " + std::to_string(e.cell[1]) + ", layer " + std::to_string(e.cell[2]));
+    }
+    if (std::string(st.phases()[i].label) == phase_label::kYListsOfLayer) {
+      EXPECT_EQ(name, "y-lists of layer " + std::to_string(e.cell[2]));
+    }
+  }
   // A 2D trace has no layer.
   testui::BookFrame book;
   book.sim.algorithm = "nbs";
