@@ -48,7 +48,15 @@ struct SideGeometry {
 // The layer at pixel row `y` of the side view, clamped into the grid's.
 std::int32_t layer_at(const SideGeometry& g, const Grid& grid, float y) {
   const double c = std::floor((g.z_at(y) - grid.origin[2]) / grid.cell_size);
-  return static_cast<std::int32_t>(std::clamp<double>(c, 0, static_cast<double>(grid.n[2] - 1)));
+  if (!(c >= 0)) return 0;
+  return static_cast<std::int32_t>(std::min(c, static_cast<double>(grid.n[2] - 1)));
+}
+
+// Bin `at` (in bins from the first) clamped into [0, count) before it becomes an int: a centre far
+// outside the grid (or NaN) must not overflow the conversion.
+int bin_of(float at, int count) {
+  if (!(at >= 0.0f)) return 0;
+  return at >= static_cast<float>(count - 1) ? count - 1 : static_cast<int>(at);
 }
 
 ImU32 place_colour(LayerPlace p) {
@@ -189,8 +197,8 @@ class LayersPanel final : public Panel {
     int fullest = 1;
     for (ElementId k = 0; k < e.size(); ++k) {
       const ImVec2 p = g.to_screen(hv[k], e.z[k]);
-      const int bx = std::clamp(static_cast<int>((p.x - g.lo.x) / kBinPx), 0, cols - 1);
-      const int by = std::clamp(static_cast<int>((p.y - g.lo.y) / kBinPx), 0, rows - 1);
+      const int bx = bin_of((p.x - g.lo.x) / kBinPx, cols);
+      const int by = bin_of((p.y - g.lo.y) / kBinPx, rows);
       const std::size_t b = static_cast<std::size_t>(by) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(bx);
       fullest = std::max(fullest, ++bins_[b]);
       places_[b] = std::min(places_[b], static_cast<std::uint8_t>(s.place(k)));  // Here < Below < Above < Other
