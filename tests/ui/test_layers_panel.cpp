@@ -387,6 +387,11 @@ TEST(StepperPanels3d, ArraysAndPseudocodeShowThe3dArraysAndLoops) {
     const std::string other = panel_text(host, f, kPseudocodeTitle);
     EXPECT_NE(other.find(std::string(algorithm) + ", 3D"), std::string::npos) << other;
     EXPECT_TRUE(session->current_layer().has_value() || std::string(algorithm) != "screen") << algorithm;
+    if (std::string(algorithm) == "screen") {
+      EXPECT_NE(other.find("C[ix][iy][iz]"), std::string::npos) << other;
+      EXPECT_EQ(array_shapes_text(*session), "C[nx=" + std::to_string(g.n[0]) + "][ny=" + std::to_string(g.n[1]) + "][nz=" +
+                                                  std::to_string(g.n[2]) + "]  E[N=" + n + "]");
+    }
   }
 }
 
