@@ -1,5 +1,5 @@
 // The panels of a 3D frame without GL (book p.123: NBS works layer by layer): the Layers panel's
-// slider, Up/Down keys and side view set UiState::layer; its z-lists are the trace's C and Z (at
+// Up/Down keys and side view set UiState::layer; its z-lists are the trace's C and Z (at
 // the stepper's operation) or the book's push-front build; the Selection panel names an element's
 // cell (ix, iy, iz), layer and list places; Arrays and Pseudocode show the 3D arrays and loops; the
 // stepper's current layer follows the trace; its scene overlay leaves out the hidden layers.
@@ -130,7 +130,7 @@ std::optional<std::pair<ImVec2, ImVec2>> side_view_rect() {
   return std::make_pair(lo, hi);
 }
 
-TEST(LayersPanel, KeysButtonsAndTheSideViewChooseTheLayer) {
+TEST(LayersPanel, KeysAndTheSideViewChooseTheLayer) {
   Scope3d scope;
   UiHost host;
   add_stepper_panels(host);
