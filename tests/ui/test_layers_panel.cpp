@@ -17,6 +17,7 @@
 #include "core/traced_lists.hpp"
 #include "support/ui_fixture.hpp"
 #include "ui/layer_lists.hpp"
+#include "ui/settings_json.hpp"
 #include "ui/panels.hpp"
 #include "ui/stepper_panels.hpp"
 
@@ -416,6 +417,19 @@ TEST(StepperScene3d, LeavesOutWhatTheLayerViewHides) {
   EXPECT_GT(flat.circles, 0) << "without a layer the element is ringed";
   EXPECT_EQ(layered.circles, 0);
   EXPECT_TRUE(layered.texts.empty());
+}
+
+// The side view's axis persists in the settings file; a value that is not a boolean is named and
+// keeps x-z.
+TEST(SettingsJson, TheSideViewAxisRoundTripsAndAWrongValueIsNamed) {
+  std::vector<std::string> ignored;
+  SettingsValues v;
+  v.side_view_yz = true;
+  EXPECT_TRUE(parse_settings_json(settings_json_text(v), {}, ignored).side_view_yz);
+  EXPECT_TRUE(ignored.empty());
+  EXPECT_FALSE(parse_settings_json(R"({"version": 1, "side_view_yz": "yes"})", {}, ignored).side_view_yz);
+  ASSERT_EQ(ignored.size(), 1u);
+  EXPECT_EQ(ignored[0].rfind("side_view_yz", 0), 0u) << ignored[0];
 }
 
 // The Help menu names the layer keys beside the others.
