@@ -32,6 +32,7 @@ const ImU32 kBandColour = IM_COL32(250, 190, 90, 55);
 const ImU32 kBandEdge = IM_COL32(250, 190, 90, 200);
 const ImU32 kBelowBand = IM_COL32(150, 170, 220, 28);
 const ImU32 kLayerLine = IM_COL32(120, 130, 150, 110);
+const ImU32 kSelectedRing = IM_COL32(255, 255, 255, 235);  // the selected element, whichever layer it is in
 const ImVec4 kCurrentText(0.98f, 0.75f, 0.35f, 1.0f);
 
 // Where the side view lies on screen and how world (h, z) maps into it (z up).
@@ -169,6 +170,10 @@ class LayersPanel final : public Panel {
       draw_elements(draw, g, e, s, h_axis);
     } else {
       draw_density(draw, g, e, s, h_axis);
+    }
+    if (const ElementId k = c.state.selected; k >= 0 && k < e.size()) {  // where the selection lies, in any layer
+      const float r = std::max(3.0f, static_cast<float>(e.r[k] * g.sx)) + 2.0f;
+      draw->AddCircle(g.to_screen(e.axis(h_axis)[k], e.z[k]), r, kSelectedRing, 12, 1.5f);
     }
     for (const std::int32_t edge : {s.layer, s.layer + 1}) {
       const float y = g.to_screen(0, g.z0 + edge * d).y;

@@ -179,6 +179,19 @@ TEST(LayersPanel, KeysAndTheSideViewChooseTheLayer) {
   io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
   run_frame(host, f);
 
+  // The selected element is ringed in the side view, whichever layer it is in.
+  const auto ringed = [] {
+    const ImGuiWindow* w = ImGui::FindWindowByName(kLayersTitle);
+    for (const ImDrawVert& v : w->DrawList->VtxBuffer)
+      if (v.col == IM_COL32(255, 255, 255, 235)) return true;  // panel_layers.cpp's ring
+    return false;
+  };
+  EXPECT_FALSE(ringed());
+  f.state.selected = 0;
+  run_frame(host, f);
+  EXPECT_TRUE(ringed());
+  f.state.selected = -1;
+
   // The y-z toggle is the state the app reads; a 2D frame hides the panel and takes no arrow key.
   EXPECT_FALSE(f.state.side_view_yz);
   f.sim.layer = nullptr;
