@@ -222,6 +222,7 @@ void save_settings(ui::Settings& settings, GlView& view, const FrameLoop& loop, 
   settings.camera = ui::camera_to_save(view.camera());
   settings.speed = session.speed;
   settings.history_mb = view.state().history_budget_mb;
+  settings.side_view_yz = view.state().side_view_yz;
 }
 
 // `stopped`: the refusal of a world that stopped at load ("" when it runs): the window opens paused
@@ -237,6 +238,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
     if (o.view.overlays.empty()) view.state().overlays = settings->overlays;
     if (o.view.panels.empty()) view.state().panel_open = settings->panels;
     session.speed = settings->speed;
+    view.state().side_view_yz = settings->side_view_yz;
   }
   if (o.history_mb) view.state().history_budget_mb = *o.history_mb;
   else if (settings != nullptr) view.state().history_budget_mb = settings->history_mb;

@@ -127,6 +127,18 @@ void draw_row_array(const StepperSession& s, const Marks& m, int array) {
   ImGui::EndTable();
 }
 
+// What each row of NBS's selector arrays holds (B, and A in 3D), or null for any other array.
+const char* const* nbs_row_names(const StepperSession& s, const TracedArray& a) {
+  static constexpr const char* kB2d[2] = {"row iy", "row iy-1"};
+  static constexpr const char* kB3d[2] = {"layer iz", "layer iz-1"};
+  static constexpr const char* kA3d[5] = {"row (iy,iz)", "(iy-1,iz)", "(iy-1,iz-1)", "(iy,iz-1)", "(iy+1,iz-1)"};
+  if (s.algorithm() != "nbs" || a.shape.size() != 2) return nullptr;
+  const bool three = s.elements().dim == 3;
+  if (a.name == "B" && a.shape[0] == 2) return three ? kB3d : kB2d;
+  if (three && a.name == "A" && a.shape[0] == 5) return kA3d;
+  return nullptr;
+}
+
 // A 2D array (or the slice of a 3D one at the focus's last index) as a matrix, as the book prints
 // C[ix][iy] (eq. 3.31): rows are the first index, columns the second. An array whose second index
 // only picks one of a few parallel arrays (the tree's child[m][0/1]) is shown the other way round,
@@ -154,13 +166,14 @@ void draw_matrix_array(const StepperSession& s, const Marks& m, int array) {
     ImGui::TableSetColumnIndex(static_cast<int>(c - c0) + 1);
     ImGui::TextColored(kIndex, "%lld", static_cast<long long>(shown(c, book && !index_is_selector(a, col_dim))));
   }
-  // NBS's x heads: the current row's lists over the row below's (book p.102).
-  const bool nbs_b = a.name == "B" && a.shape[0] == 2 && s.algorithm() == "nbs" && s.elements().dim == 2;
+  // NBS's x heads: the current row's lists over the row below's (book p.102); in 3D the y heads of
+  // the layer and the layer below, and the x heads of the five rows the mask reaches (p.123).
+  const char* const* row_names = nbs_row_names(s, a);
   for (std::int64_t r = r0; r < r1; ++r) {
     ImGui::TableNextRow();
     ImGui::TableSetColumnIndex(0);
-    if (nbs_b) {
-      ImGui::TextColored(kIndex, r == 0 ? "[%lld] row iy" : "[%lld] row iy-1", static_cast<long long>(r));
+    if (row_names != nullptr) {
+      ImGui::TextColored(kIndex, "[%lld] %s", static_cast<long long>(r), row_names[r]);
     } else {
       ImGui::TextColored(kIndex, "[%lld]%s", static_cast<long long>(shown(r, book && !index_is_selector(a, row_dim))),
                          r == r0 && r0 > 0 ? " ..." : "");
@@ -283,6 +296,7 @@ void draw_arrays(const StepperSession& s) {
     ImGui::TextWrapped("%s", text.c_str());
     ImGui::PopStyleColor();
   }
+  if (s.elements().dim == 3) ImGui::TextColored(kIndex, "%s", array_shapes_text(s).c_str());
   mark_walk(s, marks);
   // The lists of the cell, row and layer the current operation works on, and its element.
   const LoopVars v = st.loop_vars();

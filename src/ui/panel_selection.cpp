@@ -7,8 +7,11 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "core/traced_lists.hpp"
 #include "ui/panels.hpp"
 #include "ui/stepper_session.hpp"
 
@@ -39,20 +42,30 @@ class SelectionPanel final : public Panel {
       ImGui::Text("atom %lld  (row %lld)", static_cast<long long>(element_number(k, book, ids)), num(k));
     else
       ImGui::Text("element %lld", num(k));
-    ImGui::Text("centre (%.3f, %.3f)  r = %.3f", e.x[k], e.y[k], e.r[k]);
-    if (const Grid* grid = s.grid()) ImGui::Text("cell ix = %lld, iy = %lld", num(grid->cell(e.x[k], 0)), num(grid->cell(e.y[k], 1)));
+    if (e.dim == 3) {
+      ImGui::Text("centre (%.4g, %.4g, %.4g)  r = %.4g", e.x[k], e.y[k], e.z[k], e.r[k]);
+      for (const std::string& line : selection_layer_lines(s, k, book)) ImGui::TextUnformatted(line.c_str());
+    } else {
+      ImGui::Text("centre (%.3f, %.3f)  r = %.3f", e.x[k], e.y[k], e.r[k]);
+      if (const Grid* grid = s.grid()) ImGui::Text("cell ix = %lld, iy = %lld", num(grid->cell(e.x[k], 0)), num(grid->cell(e.y[k], 1)));
+    }
 
-    if (s.lists == nullptr) {
+    // The lists overlay's lists, else (3D: the place in the z-, y- and x-lists is what a layer view
+    // asks) the finished lists of the frame's trace when one was made (paused, the stepper).
+    const std::vector<TracedList>* lists = s.lists != nullptr ? s.lists : e.dim == 3 ? trace_lists(s) : nullptr;
+    if (lists == nullptr) {
       ImGui::TextDisabled("lists: turn on the list overlay (L)");
     } else {
-      for (const TracedList& l : *s.lists) {
+      if (s.lists == nullptr) ImGui::TextDisabled("lists of the frame's trace, finished:");
+      for (const TracedList& l : *lists) {
         const auto at = std::find(l.chain.begin(), l.chain.end(), k);
         if (at == l.chain.end()) continue;
         const ElementId next = at + 1 == l.chain.end() ? -1 : *(at + 1);
+        const std::string place = list_place_text(l, static_cast<std::size_t>(at - l.chain.begin()), book);
         if (l.secondary)
-          ImGui::TextDisabled("%s (copy for row %lld)", l.kind.c_str(), num(l.phase_index));
+          ImGui::TextDisabled("%s (copy for row %lld) %s", l.kind.c_str(), num(l.phase_index), place.c_str());
         else
-          ImGui::Text("%s", l.kind.c_str());
+          ImGui::Text("%s %s", l.kind.c_str(), place.c_str());
         if (!l.next_name.empty()) {
           ImGui::SameLine();
           ImGui::Text("%s[%lld] = %lld", l.next_name.c_str(), num(k), num(next));
@@ -73,9 +86,52 @@ class SelectionPanel final : public Panel {
     }
     ImGui::TextDisabled("Esc clears the selection");
   }
+
+ private:
+  // The finished lists of the frame's trace, rebuilt once per trace; null without a usable one.
+  const std::vector<TracedList>* trace_lists(const SimView& s) {
+    if (!s.trace || !s.trace->refusal.empty() || s.trace->elements.size() != s.elements->size()) return nullptr;
+    if (!lists_serial_ || s.trace->serial != *lists_serial_) {
+      trace_lists_ = traced_lists(s.trace->log, static_cast<std::size_t>(s.trace->elements.size()));
+      lists_serial_ = s.trace->serial;
+    }
+    return &trace_lists_;
+  }
+
+  std::vector<TracedList> trace_lists_;
+  std::optional<std::uint64_t> lists_serial_;  // the trace they were rebuilt from
 };
 
 }  // namespace
+
+std::vector<std::string> selection_layer_lines(const SimView& sim, ElementId k, bool book) {
+  std::vector<std::string> lines;
+  const Elements* e = sim.elements;
+  const Grid* grid = sim.grid();
+  if (e == nullptr || e->dim != 3 || k < 0 || k >= e->size()) return lines;
+  const auto num = [book](std::int64_t v) { return std::to_string(shown(v, book)); };
+  std::int32_t iz = -1;
+  if (grid != nullptr && grid->dim == 3) {
+    const std::int32_t ix = grid->cell(e->x[k], 0), iy = grid->cell(e->y[k], 1);
+    iz = grid->cell(e->z[k], 2);
+    lines.push_back("cell (ix, iy, iz) = (" + num(ix) + ", " + num(iy) + ", " + num(iz) + ")");
+    lines.push_back("row (iy, iz) = (" + num(iy) + ", " + num(iz) + ")");
+  }
+  if (sim.layer != nullptr && static_cast<std::size_t>(k) < sim.layer->element_layer.size()) {
+    iz = sim.layer->element_layer[static_cast<std::size_t>(k)];
+    lines.push_back("in layer " + num(iz) + (iz == sim.layer->layer ? " (shown)" : " (layer shown: " + num(sim.layer->layer) + ")"));
+  } else if (iz >= 0) {
+    lines.push_back("in layer " + num(iz));
+  }
+  return lines;
+}
+
+std::string list_place_text(const TracedList& l, std::size_t position, bool book) {
+  const TracedArray heads{l.heads_name, l.heads_shape.empty() ? std::vector<std::int64_t>{l.slot + 1} : l.heads_shape, {}};
+  std::string text = entry_name(heads, l.slot, book) + ": position " + std::to_string(position + 1) + " of " + std::to_string(l.chain.size());
+  if (l.phase_layer >= 0) text += " (pass of layer " + std::to_string(shown(l.phase_layer, book)) + ")";
+  return text;
+}
 
 // Windowed around the element: three before it, three after.
 std::string describe_chain(const TracedList& l, ElementId k, bool book) {

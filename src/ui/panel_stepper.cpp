@@ -85,7 +85,7 @@ class StepperPanel final : public Panel {
   void draw_scene(const UiContext& c, render::DrawSink& sink) override {
     // The scene may be drawn before the view of this frame is filled in: then trust the last update.
     const bool current = c.sim.elements != nullptr ? session_->current_for(c.sim) : session_->was_current();
-    if (current) draw_stepper_scene(*session_, sink, c.state.overlays.lists);
+    if (current) draw_stepper_scene(*session_, sink, c.state.overlays.lists, c.sim.layer);
   }
 
   bool handle_keys(UiContext& c) override {
@@ -157,7 +157,13 @@ class StepperPanel final : public Panel {
       s.status = cell ? "select a cell (click it) first" : "select an element (click it) first";
       return;
     }
-    s.seek_touching(cell ? BreakKind::Cell : BreakKind::Element, k, at.value_or(std::array<std::int32_t, 2>{-1, -1}), direction);
+    // In 3D the cell is of the layer shown (a clicked cell), or of the selected element's layer.
+    std::int32_t layer = -1;
+    if (const LayerSlice* slice = c.sim.layer) {
+      const bool from_element = !c.state.selected_cell && k >= 0 && static_cast<std::size_t>(k) < slice->element_layer.size();
+      layer = from_element ? slice->element_layer[static_cast<std::size_t>(k)] : slice->layer;
+    }
+    s.seek_touching(cell ? BreakKind::Cell : BreakKind::Element, k, at.value_or(std::array<std::int32_t, 2>{-1, -1}), direction, layer);
   }
 
   // With "follow" on, a current operation that leaves the middle of the view brings the camera to it.
@@ -226,11 +232,7 @@ class StepperPanel final : public Panel {
   void draw_phases(StepperSession& s) {
     Stepper& st = s.stepper();
     const auto& phases = st.phases();
-    const auto phase_name = [&](std::size_t i) {
-      std::string name = phases[i].label;
-      if (phases[i].index >= 0) name += " " + std::to_string(shown(phases[i].index, s.book_numbering));
-      return name;
-    };
+    const auto phase_name = [&](std::size_t i) { return phase_text(s, i); };
     const std::int64_t cur = st.current_phase();
     const std::string preview = cur >= 0 ? phase_name(static_cast<std::size_t>(cur)) : std::string("(start)");
     float speed = static_cast<float>(st.speed());
@@ -347,6 +349,7 @@ std::shared_ptr<StepperSession> add_stepper_panels(UiHost& host, StepperConfig c
   host.add_panel(make_stepper_panel(session));
   host.add_panel(make_pseudocode_panel(session));
   host.add_panel(make_arrays_panel(session));
+  host.add_panel(make_layers_panel(session));
   return session;
 }
 

@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "ui/panel.hpp"
 
@@ -60,6 +61,14 @@ std::string touching_line(Touching touching);
 // The Selection panel's line for list `l` around element k: "B[1][8]: 11 -> [12] -> 191 -> ... ",
 // the head named as the Arrays panel names it, every number from 1 with `book`.
 std::string describe_chain(const TracedList& l, ElementId k, bool book);
+
+// The Selection panel's lines on element k of a 3D frame: its cell (ix, iy, iz), its row (iy, iz),
+// and its layer against the one the view shows ("in layer 3 (shown)", "in layer 2 (layer shown:
+// 3)"), in the chosen numbering; none for a 2D frame.
+std::vector<std::string> selection_layer_lines(const SimView& sim, ElementId k, bool book);
+// Where an element at `position` (0: the head) of list `l` is: "C[2]: position 3 of 40", with the
+// pass it was built in for a 3D NBS list ("A[1][4]: position 1 of 2 (pass of layer 3)").
+std::string list_place_text(const TracedList& l, std::size_t position, bool book);
 
 // Formats milliseconds for a panel, or "-" when timings are hidden (reproducible screenshots).
 std::string format_ms(const SimView& sim, double ms);

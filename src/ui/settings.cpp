@@ -61,6 +61,7 @@ Settings load_settings(const std::string& path, std::vector<std::string>& ignore
   s.camera = v.camera;
   s.speed = v.speed;
   s.history_mb = v.history_mb;
+  s.side_view_yz = v.side_view_yz;
   return s;
 }
 
@@ -84,7 +85,8 @@ bool restore_camera(const Settings& s, const std::string& scene, render::Camera&
 
 void save_settings(const std::string& path, const Settings& s) {
   if (path.empty()) throw Error("settings: no config directory (neither XDG_CONFIG_HOME nor HOME is set)");
-  SettingsValues values{{}, s.panels, s.last_scene, s.algorithm, s.detector_libs, s.camera, s.speed, s.history_mb};
+  SettingsValues values{{}, s.panels, s.last_scene, s.algorithm, s.detector_libs, s.camera, s.speed, s.history_mb,
+                        s.side_view_yz};
   for (const render::OverlayInfo& o : render::overlay_infos()) values.overlays[o.name] = s.overlays.*o.flag;
   const std::string text = settings_json_text(values);
   std::error_code ec;

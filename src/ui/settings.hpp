@@ -27,6 +27,7 @@ struct Settings {
   std::optional<std::array<double, 3>> camera;
   double speed = 1.0;
   std::int64_t history_mb = 256;  // the Timeline's memory budget for kept frames
+  bool side_view_yz = false;      // the Layers panel's side view shows y-z (UiState::side_view_yz)
 };
 
 // $XDG_CONFIG_HOME/nbscope/settings.json, else $HOME/.config/nbscope/settings.json, else "".

@@ -114,6 +114,10 @@ SettingsValues parse_settings_json(std::string_view text, std::span<const std::s
     if (whole && mb >= 0 && mb <= 1'000'000) out.history_mb = mb;
     else ignored.push_back(phrase("history_mb", *it, "not a whole number of MB in 0..1,000,000"));
   }
+  if (const auto it = j.find("side_view_yz"); it != j.end()) {
+    if (it->is_boolean()) out.side_view_yz = it->get<bool>();
+    else ignored.push_back(phrase("side_view_yz", *it, "not true or false"));
+  }
   return out;
 }
 
@@ -128,6 +132,7 @@ std::string settings_json_text(const SettingsValues& values) {
   if (values.camera) j["camera"] = *values.camera;
   j["speed"] = values.speed;
   j["history_mb"] = values.history_mb;
+  j["side_view_yz"] = values.side_view_yz;
   return j.dump(2);
 }
 

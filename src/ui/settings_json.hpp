@@ -27,6 +27,7 @@ struct SettingsValues {
   std::optional<std::array<double, 3>> camera;  // finite centre x, y and pixels per metre > 0
   double speed = 1.0;                           // in (0, 100]
   std::int64_t history_mb = 256;                // in [0, 1,000,000]
+  bool side_view_yz = false;                    // the Layers panel's side view shows y-z (else x-z)
 };
 
 // Parses `text`. Error (its what() a short phrase, no path) when the whole file is unusable: not

@@ -14,8 +14,9 @@ namespace nbscope::ui {
 inline constexpr const char* kStepperTitle = "Stepper";
 inline constexpr const char* kArraysTitle = "Arrays";
 inline constexpr const char* kPseudocodeTitle = "Pseudocode";
+inline constexpr const char* kLayersTitle = "Layers";
 
-// Adds the three panels, sharing one session, to `host`; returns the session (the app configures
+// Adds the three panels and the Layers panel (a 3D frame's), sharing one session, to `host`; returns the session (the app configures
 // nothing else: `config.step` makes a headless run show the state after that many events).
 std::shared_ptr<StepperSession> add_stepper_panels(UiHost& host, StepperConfig config = {});
 // Opens the three panels in `state` (headless --step shows them whatever the settings say).
@@ -25,8 +26,13 @@ void open_stepper_panels(UiState& state);
 std::unique_ptr<Panel> make_stepper_panel(std::shared_ptr<StepperSession> session);
 std::unique_ptr<Panel> make_arrays_panel(std::shared_ptr<StepperSession> session);
 std::unique_ptr<Panel> make_pseudocode_panel(std::shared_ptr<StepperSession> session);
+// A 3D frame's layers: the layer shown (slider, Up/Down, auto), the side view, the z-lists (from
+// the session's arrays while it steps through the frame shown). Hidden for a 2D frame.
+std::unique_ptr<Panel> make_layers_panel(std::shared_ptr<StepperSession> session);
 // Draws the session's current event into the scene (used by the Stepper panel); with `lists_drawn`
-// the lists overlay already draws the list being written, highlighted, so its chain is left out.
-void draw_stepper_scene(const StepperSession& session, render::DrawSink& sink, bool lists_drawn = false);
+// the lists overlay already draws the list being written, highlighted, so its chain is left out;
+// with `layer` (a 3D frame's layer view) only what the view shows: the layer below fainter, the rest not.
+void draw_stepper_scene(const StepperSession& session, render::DrawSink& sink, bool lists_drawn = false,
+                        const LayerSlice* layer = nullptr);
 
 }  // namespace nbscope::ui

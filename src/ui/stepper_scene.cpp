@@ -1,9 +1,12 @@
 // The stepper's scene overlay: the current operation drawn over the bodies — the element it is
 // about ringed, the list being built (or walked) as an arrow chain growing arrow by arrow, the cell
-// (or row) it works on outlined, and the pair being tested as a segment coloured by its result.
+// (or row) it works on outlined, and the pair being tested as a segment coloured by its result. On
+// a 3D frame's layer view, what lies in the layer below is drawn fainter and what lies further
+// away not at all (core/layers.hpp).
 #include <algorithm>
 #include <string>
 
+#include "core/layers.hpp"
 #include "core/traced_lists.hpp"
 #include "render/overlays.hpp"
 #include "ui/stepper_panels.hpp"
@@ -21,15 +24,22 @@ const Rgba kNoContact{200, 200, 210, 230};
 
 class SceneWriter {
  public:
-  SceneWriter(const StepperSession& s, render::DrawSink& sink, bool ids_drawn)
-      : s_(s), sink_(sink), e_(s.elements()), ids_drawn_(ids_drawn) {}
+  SceneWriter(const StepperSession& s, render::DrawSink& sink, bool ids_drawn, const LayerSlice* layer)
+      : s_(s), sink_(sink), e_(s.elements()), ids_drawn_(ids_drawn),
+        layer_(layer != nullptr && static_cast<std::int64_t>(layer->element_layer.size()) == e_.size() ? layer : nullptr) {}
 
   Vec2 centre(std::int32_t k) const { return {static_cast<float>(e_.x[k]), static_cast<float>(e_.y[k])}; }
-  bool valid(std::int32_t k) const { return k >= 0 && k < e_.size(); }
+  // An element of this frame that the view shows (every one in 2D; in 3D its layer's and the layer below's).
+  bool valid(std::int32_t k) const { return k >= 0 && k < e_.size() && (layer_ == nullptr || layer_->visible(k)); }
+  // Colours of what lies in the layer below fade: the mask reaches it, the view looks through it.
+  Rgba faded(Rgba c, std::int32_t k) const {
+    return layer_ != nullptr && layer_->place(k) == LayerPlace::Below ? c.with_alpha(static_cast<std::uint8_t>(c.a / 2)) : c;
+  }
 
   // A ring around element k and its id beside it (unless the scene already numbers every element).
   void ring(std::int32_t k, Rgba colour, float width_px) {
     if (!valid(k)) return;
+    colour = faded(colour, k);
     sink_.circle(Layer::Top, centre(k), static_cast<float>(e_.r[k]) * 1.15f, colour.with_alpha(40), colour, width_px, 7.0f);
     if (ids_drawn_) return;
     const float r = static_cast<float>(e_.r[k]);
@@ -40,6 +50,14 @@ class SceneWriter {
   void cell(const std::int32_t c[3], Rgba fill, Rgba edge) {
     const Grid* g = s_.grid();
     if (g == nullptr || (c[0] < 0 && c[1] < 0)) return;
+    if (layer_ != nullptr && c[2] >= 0) {
+      const LayerPlace place = layer_->place_of_layer(c[2]);
+      if (place != LayerPlace::Here && place != LayerPlace::Below) return;  // a cell of a hidden layer
+      if (place == LayerPlace::Below) {
+        fill = fill.with_alpha(static_cast<std::uint8_t>(fill.a / 2));
+        edge = edge.with_alpha(static_cast<std::uint8_t>(edge.a / 2));
+      }
+    }
     const double d = g->cell_size;
     const auto lo = [&](int a) { return c[a] >= 0 ? g->origin[a] + c[a] * d : g->origin[a]; };
     const auto hi = [&](int a) { return c[a] >= 0 ? g->origin[a] + (c[a] + 1) * d : g->origin[a] + static_cast<double>(g->n[a]) * d; };
@@ -76,15 +94,16 @@ class SceneWriter {
   render::DrawSink& sink_;
   const Elements& e_;
   bool ids_drawn_;
+  const LayerSlice* layer_;  // null: a 2D frame (or a slice of other elements): everything is shown
 };
 
 }  // namespace
 
-void draw_stepper_scene(const StepperSession& s, render::DrawSink& sink, bool lists_drawn) {
+void draw_stepper_scene(const StepperSession& s, render::DrawSink& sink, bool lists_drawn, const LayerSlice* layer) {
   const Stepper& st = s.stepper();
   const TraceEvent* e = st.current();
   if (e == nullptr) return;
-  SceneWriter w(s, sink, lists_drawn);  // the lists overlay numbers every element
+  SceneWriter w(s, sink, lists_drawn, layer);  // the lists overlay numbers every element
   const LoopVars v = st.loop_vars();
   const std::int32_t cell[3] = {v.ix, v.iy, v.iz};
   switch (e->op) {

@@ -127,19 +127,21 @@ void StepperSession::apply_target(const SimView& sim) {
   (void)sim;
 }
 
-bool StepperSession::seek_touching(BreakKind kind, std::int32_t element, const std::array<std::int32_t, 2>& cell, int direction) {
+bool StepperSession::seek_touching(BreakKind kind, std::int32_t element, const std::array<std::int32_t, 2>& cell, int direction,
+                                   std::int32_t layer) {
   if (!captured_) return false;
   Breakpoint b;
   b.kind = kind;
   b.element = element;
   b.cell[0] = cell[0];
   b.cell[1] = cell[1];
-  b.cell[2] = -1;
+  b.cell[2] = layer;
   stepper_.pause();
   const bool moved = direction > 0 ? stepper_.run_to(b) : stepper_.run_back_to(b);
   const std::string what = kind == BreakKind::Element ? "element " + std::to_string(shown(element, book_numbering))
                                                       : "cell (" + std::to_string(shown(cell[0], book_numbering)) + "," +
-                                                            std::to_string(shown(cell[1], book_numbering)) + ")";
+                                                            std::to_string(shown(cell[1], book_numbering)) +
+                                                            (layer >= 0 ? "," + std::to_string(shown(layer, book_numbering)) : "") + ")";
   status = moved ? "" : std::string("no ") + (direction > 0 ? "later" : "earlier") + " operation on " + what;
   return moved;
 }
@@ -156,6 +158,18 @@ std::optional<Eigen::Vector2d> StepperSession::focus_point() const {
     const double d = trace_->grid.cell_size;
     return Eigen::Vector2d(trace_->grid.origin[0] + d * (e->cell[0] + 0.5), trace_->grid.origin[1] + d * (e->cell[1] + 0.5));
   }
+  return std::nullopt;
+}
+
+std::optional<std::int32_t> StepperSession::current_axis(int axis) const {
+  constexpr std::size_t kLookBack = 256;  // a phase's first cell is never far back; the cost stays per frame
+  if (!captured_ || elements().dim != 3 || stepper_.position() == 0) return std::nullopt;
+  const auto& events = stepper_.events();
+  const std::int64_t phase = stepper_.current_phase();
+  const std::size_t start = phase >= 0 ? stepper_.phases()[static_cast<std::size_t>(phase)].event : 0;
+  if (phase >= 0 && events[start].cell[axis] >= 0) return events[start].cell[axis];
+  for (std::size_t i = stepper_.position(); i-- > start && stepper_.position() - i <= kLookBack;)
+    if (events[i].cell[axis] >= 0) return events[i].cell[axis];
   return std::nullopt;
 }
 
@@ -365,6 +379,46 @@ std::string describe_event(const StepperSession& session, const TraceEvent& e) {
     out += name(wr) + " = " + value(wr.array, wr.new_value) + " (was " + (was_set ? value(wr.array, wr.old_value) : "unset") + ")";
   }
   if (e.element >= 0) out += " for k=" + id(e.element);
+  return out;
+}
+
+std::string phase_text(const StepperSession& session, std::size_t phase) {
+  const Stepper& st = session.stepper();
+  if (phase >= st.phases().size()) return "";
+  const PhaseMark& mark = st.phases()[phase];
+  const bool book = session.book_numbering;
+  std::string name = mark.label;
+  if (mark.index >= 0) name += " " + std::to_string(shown(mark.index, book));
+  const TraceEvent& e = st.events()[mark.event];
+  if (e.cell[1] >= 0 && e.cell[2] >= 0) name += ", layer " + std::to_string(shown(e.cell[2], book));  // a row of a 3D pass
+  return name;
+}
+
+std::string array_shapes_text(const StepperSession& session) {
+  const Grid* grid = session.grid();
+  const std::int64_t n = session.elements().size();
+  const auto& arrays = session.stepper().trace().arrays();
+  std::string out;
+  for (const TracedArray& a : arrays) {
+    std::string text = a.name;
+    for (std::size_t d = 0; d < a.shape.size(); ++d) {
+      const std::int64_t extent = a.shape[d];
+      std::string axis;
+      if (index_is_selector(a, d)) {
+        axis = std::to_string(extent);
+      } else if (a.shape.size() == 1 && extent == n && session.stepper().next_array_of(session.stepper().array_id(a.name)) < 0) {
+        axis = "N=" + std::to_string(extent);  // indexed by element
+      } else if (grid != nullptr) {
+        // The cell axis of this extent: the last index of a heads array is its own axis (C[nz],
+        // B[..][ny], A[..][nx] in NBS 3D, whose lists run z, then y, then x; 2D's B[2][nx]); a matrix's are x, y, z.
+        const int from_name = a.name == "C" && a.shape.size() == 1 ? 2 : a.name == "B" ? (session.elements().dim == 3 ? 1 : 0) : a.name == "A" ? 0 : -1;
+        const int ax = a.shape.size() == 1 || index_is_selector(a, 0) ? from_name : static_cast<int>(d);
+        if (ax >= 0 && ax < 3 && grid->n[ax] == extent) axis = std::string("n") + "xyz"[ax] + "=" + std::to_string(extent);
+      }
+      text += "[" + (axis.empty() ? std::to_string(extent) : axis) + "]";
+    }
+    out += (out.empty() ? "" : "  ") + text;
+  }
   return out;
 }
 

@@ -111,11 +111,23 @@ class StepperSession {
 
   // ---- long traces ----
   // The next (direction +1) or previous (-1) operation touching element k (BreakKind::Element) or
-  // cell (ix, iy) (BreakKind::Cell), moved to; false (unmoved) when there is none. Sets status.
-  bool seek_touching(BreakKind kind, std::int32_t element, const std::array<std::int32_t, 2>& cell, int direction);
+  // cell (ix, iy) (BreakKind::Cell; of layer `layer` in 3D, -1 in 2D), moved to; false (unmoved)
+  // when there is none. Sets status.
+  bool seek_touching(BreakKind kind, std::int32_t element, const std::array<std::int32_t, 2>& cell, int direction,
+                     std::int32_t layer = -1);
   // The world point of the current operation: its element's centre, else its cell's centre; nullopt
   // at position 0 or without one.
   [[nodiscard]] std::optional<Eigen::Vector2d> focus_point() const;
+
+  // ---- 3D ----
+  // The layer iz the current operation works on, for the view to show: the phase's layer (NBS 3D:
+  // the layer whose rows are processed), else the nearest earlier operation's of this phase with a
+  // cell in 3D (the z-list pushes, screen's and tree's cells). nullopt in 2D, with nothing held or
+  // before the first such operation.
+  [[nodiscard]] std::optional<std::int32_t> current_layer() const { return current_axis(2); }
+  // The row iy the current operation works on (the phase's row, else as current_layer()); nullopt
+  // in 2D or when no operation so far fixes one.
+  [[nodiscard]] std::optional<std::int32_t> current_row() const { return current_axis(1); }
 
   // View settings shared by the panels.
   bool book_numbering = false;
@@ -152,6 +164,7 @@ class StepperSession {
   std::int32_t tests_of_element_ = -1;
   std::vector<TestedPair> tests_;
   void apply_target(const SimView& sim);
+  std::optional<std::int32_t> current_axis(int axis) const;
   std::optional<PairTarget> target_;
   std::string target_status_;
   std::optional<PairLocation> target_location_;
@@ -178,6 +191,13 @@ struct ElementEntries {
 [[nodiscard]] std::string describe_event(const StepperSession& session, const TraceEvent& e);
 // A value of `array` as shown: element ids shifted in book numbering, anything else as stored.
 [[nodiscard]] std::int64_t shown_value(const StepperSession& session, int array, std::int32_t value);
+// Every array of the session's trace with its shape as the book writes it, "C[nz=5]  Z[N=120]
+// B[2][ny=6]  Y[N=120]  A[5][nx=6]  X[N=120]" for NBS 3D (p.123): an extent of N elements is "N",
+// a cell axis is named (nx, ny, nz), a selector (B's 2, A's 5) is its number.
+[[nodiscard]] std::string array_shapes_text(const StepperSession& session);
+// The Stepper's name of phase `phase` (an index into Stepper::phases()): "x-lists of row 4", with
+// the layer of a row of a 3D pass ("x-lists of row 4, layer 2"), in the session's numbering.
+[[nodiscard]] std::string phase_text(const StepperSession& session, std::size_t phase);
 // What a stepper panel says while nothing is held: why (the trace's refusal), or how to record.
 [[nodiscard]] std::string idle_message(const StepperSession& session);
 // The window [begin, end) of at most `width` entries of an array of `length` that keeps `focus`
