@@ -12,7 +12,11 @@ void GlView::build_shapes(const FrameLoop& loop) {
   shapes_.clear();
   shape_points_.clear();
   const bool flat = loop.source().elements().dim == 3;  // a 3D frame's spheres seen from above: plain circles
+  const LayerSlice* slice = layer();
   for (const BodyShape& b : body_shapes_) {
+    // A 3D frame's layers above and further below are hidden: not even handed to the renderer.
+    if (slice != nullptr && b.element >= 0 && static_cast<std::size_t>(b.element) < slice->element_layer.size() && !slice->visible(b.element))
+      continue;
     render::ShapeDraw d;
     d.motion = b.body_type == BodyType::Static      ? render::Motion::Static
                : b.body_type == BodyType::Kinematic ? render::Motion::Kinematic
