@@ -172,6 +172,58 @@ TEST(WindowLayers, MidWayTheLayerIsTheStepperTestedPairsUpperLayer) {
   EXPECT_EQ(rig.view->layer()->layer, 0);
 }
 
+// The lists the scene draws are the Stepper's arrays at every operation of a 3D trace: each list
+// whose head is set, walked through its next array in the stepper's state, is the scene's latest
+// list of that head (nbs, screen, tree in 3D; a sample of operations through the frame).
+void expect_lists_follow_the_arrays(const char* algorithm) {
+  ViewOptions o;
+  o.overlays = "+lists";
+  o.lists = "all";
+  o.step = 1;
+  FrameLoopOptions lo;
+  lo.algorithm = algorithm;
+  LayerRig rig(spheres(80, 7), o, lo);
+  rig.frames(2);
+  ui::StepperSession& s = rig.view->stepper();
+  ASSERT_TRUE(s.has_capture()) << algorithm << ": " << s.message();
+  const auto& arrays = s.stepper().trace().arrays();
+  const auto array_named = [&](const std::string& name) {
+    for (std::size_t a = 0; a < arrays.size(); ++a)
+      if (arrays[a].name == name) return static_cast<int>(a);
+    return -1;
+  };
+  const std::size_t n = s.stepper().size();
+  int compared = 0;
+  for (std::size_t p = 1; p <= n; p += std::max<std::size_t>(1, n / 37)) {
+    s.stepper().seek(p);
+    rig.frames(1);
+    const ArrayState& state = s.stepper().state();
+    const std::vector<TracedList>& lists = rig.view->lists();
+    for (std::size_t i = 0; i < lists.size(); ++i) {
+      const TracedList& l = lists[i];
+      const int next = array_named(l.next_name);
+      if (next < 0 || l.heads_array < 0) continue;  // (sort's runs: no next array)
+      const std::int32_t head = state[static_cast<std::size_t>(l.heads_array)][static_cast<std::size_t>(l.slot)];
+      if (head < 0) continue;
+      std::vector<ElementId> walked;
+      for (std::int32_t k = head; k >= 0 && walked.size() <= 80; k = state[static_cast<std::size_t>(next)][static_cast<std::size_t>(k)])
+        walked.push_back(k);
+      // Lists of this head cleared earlier are kept as they were (drawn in their own pass): one of
+      // the scene's lists of the head is the arrays' list now.
+      bool found = false;
+      for (const TracedList& t : lists) found = found || (t.heads_array == l.heads_array && t.slot == l.slot && t.chain == walked);
+      EXPECT_TRUE(found) << algorithm << " at operation " << p << ": " << l.heads_name << "[" << l.slot << "] holds " << walked.size()
+                         << " elements from " << head;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 20) << algorithm;
+}
+
+TEST(WindowLayers, TheScenesListsAreTheStepperArraysInNbs3d) { expect_lists_follow_the_arrays("nbs"); }
+TEST(WindowLayers, TheScenesListsAreTheStepperArraysInScreen3d) { expect_lists_follow_the_arrays("screen"); }
+TEST(WindowLayers, TheScenesListsAreTheStepperArraysInTree3d) { expect_lists_follow_the_arrays("tree"); }
+
 TEST(WindowLayers, ATwoDFrameHasNoLayer) {
   Recording rec = spheres(50, 6);
   Elements flat;
@@ -192,6 +244,15 @@ TEST(WindowLayersCli, AThreeDReplayRendersAScreenshot) {
   const auto r = testcli::run("replay --headless " + kPour + " --screenshot " + dir + "/pour.png --layer 2 --size 640x360");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir + "/pour.png")) << r.err;
+}
+
+TEST(WindowLayersCli, AThreeDReplayStopsAtAViolationAndDrawsIt) {
+  const std::string dir = testcli::scratch_dir("WindowLayersCli.AThreeDReplayStopsAtAViolationAndDrawsIt");
+  const auto r = testcli::run("replay --headless " + kPour + " --inject-fault drop-mask-cell --stop-at-violation --layer auto --screenshot " +
+                              dir + "/v.png --size 640x360");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.out.find("stopped at the first violation"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/v.png")) << r.err;
 }
 
 TEST(WindowLayersCli, GuiInputOpensAThreeDCsvFrame) {
