@@ -285,6 +285,11 @@ TEST(WindowLayersCli, BadLayersAreOneLine) {
   expect_refused("headless --scene " + std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/default.json --frames 2" + shot + " --layer 1",
                  "--layer: the frame is 2D (layers are those of a 3D frame's grid)");
   expect_refused("replay --headless " + kPour + " --layer 1", "--layer: needs --screenshot (headless draws nothing without one)");
+  const std::string nine = std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/nine.csv";
+  expect_refused("verify --input " + nine + " --pairs " + nine + shot + " --layer 0", "--layer: verify's view has no layers (it draws the elements' x and y)");
+  expect_refused("gui --input " + nine + " --arrays " + std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/nine_screen_bug.json --frames 1" + shot +
+                     " --layer 0",
+                 "--layer: gui --arrays has no layers (it draws the elements' x and y)");
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
 }
 
