@@ -22,6 +22,8 @@ int run_input_gui(Args& args) {
   if (const auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);
   o.touching = take_touching(args);
   DumpFlags dump = take_dump_flags(args);
+  if (dump.columns.numbers || dump.columns.names)
+    throw Error("--contact-ids: gui --input reads no contacts (replay --dump FILES --contacts FILES reads a dump's contacts)");
   const auto frames = args.integer("--frames", 0, kMaxFrames);
   parse_view_options(args, false, o.view);
   if (auto p = args.positional()) throw Error(*p + ": unexpected argument (the elements go after --input)");

@@ -290,6 +290,8 @@ TEST(WindowLayersCli, BadLayersAreOneLine) {
   expect_refused("gui --input " + nine + " --arrays " + std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/nine_screen_bug.json --frames 1" + shot +
                      " --layer 0",
                  "--layer: gui --arrays has no layers (it draws the elements' x and y)");
+  expect_refused("gui --input " + std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/pour3d/atoms.7500.dump --contact-ids 1,2",
+                 "--contact-ids: gui --input reads no contacts (replay --dump FILES --contacts FILES reads a dump's contacts)");
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
 }
 
