@@ -108,6 +108,8 @@ class GlView {
   [[nodiscard]] const LayerSlice* layer() const { return layer_ ? &*layer_ : nullptr; }
   // The layer --layer K pinned (headless: it wins over a violation's layer); nullopt: the view chooses.
   [[nodiscard]] std::optional<std::int32_t> layer_option() const { return layer_option_; }
+  // The bodies the last frame() handed the renderer (a 3D frame: the layer shown's and the one below's).
+  [[nodiscard]] const std::vector<render::ShapeDraw>& shapes() const { return shapes_; }
   // --layer's value ("", "auto" or a whole number, as parse_view_options checked it): a number pins
   // UiState::layer; "auto" leaves the view to choose.
   void set_layer_option(const std::string& text);

@@ -75,6 +75,21 @@ TEST(WindowLayers, AThreeDFrameIsShownOneLayerAtATimeTheBusiestFirst) {
   EXPECT_EQ(s->layer, static_cast<std::int32_t>(std::max_element(per.begin(), per.end()) - per.begin()));
 }
 
+TEST(WindowLayers, OnlyTheLayerShownAndTheOneBelowReachTheRenderer) {
+  LayerRig rig(spheres(400, 8));
+  rig.view->state().layer = 2;
+  rig.frames(1);
+  const LayerSlice& s = *rig.view->layer();
+  ASSERT_EQ(s.layer, 2);
+  std::size_t expected = 0;
+  for (ElementId k = 0; k < rig.loop.source().elements().size(); ++k) expected += rig.layer_of(k) == 1 || rig.layer_of(k) == 2;
+  EXPECT_EQ(rig.view->shapes().size(), expected);
+  for (const render::ShapeDraw& d : rig.view->shapes()) {
+    EXPECT_TRUE(rig.layer_of(d.element) == 1 || rig.layer_of(d.element) == 2) << "element " << d.element;
+    EXPECT_FALSE(d.spoke) << "a sphere seen from above has no rotation to show";
+  }
+}
+
 TEST(WindowLayers, AutoIsTheFocusPairsLayerElseTheSelectedElements) {
   LayerRig rig(spheres(400, 2));
   rig.frames(1);
