@@ -99,8 +99,8 @@ CommandSpec gui_command() {
        "`nbscope` alone, or with options only (`nbscope --scene F`), is `nbscope gui`.",
        "Keys: P play/pause, O single step, R restart, Home fit, 1..9 algorithm, Esc clear the selection, overlays B E G L M C K F I T H; "
        "the Timeline: , and . one frame back/forward (Shift: 10), J play backwards; the Violations panel: [ and ] previous/next, "
-       "Shift+[ the first; Up/Down the layer of a 3D frame; the Stepper (a paused frame): -> and <- one operation (Shift: one phase), Space play/pause, PageDown and "
-       "PageUp the operation after/before on the selected element (Shift: on the selected cell) (see Help in the menu bar). Mouse: left "
+       "Shift+[ the first; the Stepper (a paused frame): -> and <- one operation (Shift: one phase), Space play/pause, PageDown and "
+       "PageUp the operation after/before on the selected element (Shift: on the selected cell); a 3D frame: Up and Down the layer above/below (see Help in the menu bar). Mouse: left "
        "selects an element and drags its body, right-drag pans, wheel zooms.",
        "Every frame is kept for the Timeline within --history-mb N (oldest frames dropped first). Settings persist in "
        "$XDG_CONFIG_HOME/nbscope/settings.json (~/.config/...); a stale one opens the window all the same, its bad keys named in one note.",
