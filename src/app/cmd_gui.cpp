@@ -233,7 +233,10 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   const bool scripted = o.frames.has_value();
   window.set_vsync(!scripted);
   GlView view(window, window.handle(), o.view);
-  if (loop.source().has_scene()) view.check_selection(loop);
+  if (loop.source().has_scene()) {
+    view.check_selection(loop);
+    view.check_layer(loop);
+  }
   if (settings != nullptr) {
     if (o.view.overlays.empty()) view.state().overlays = settings->overlays;
     if (o.view.panels.empty()) view.state().panel_open = settings->panels;
@@ -356,8 +359,6 @@ int run_replay_window(const HeadlessOptions& o) {
   loop_options.touching = o.touching;
   FrameLoop loop(loop_options);
   loop.load_recording(read_replay_input(o));
-  if (loop.source().elements().dim == 3)
-    throw Error(*o.replay + ": the frames are 3D; the window draws 2D frames (replay them with --headless, or read them with --2d)");
   // No --algorithm: a recording that carries the user's pairs opens on them (headless does the same).
   if (o.algorithm_from_recording && loop.source().carries_pairs()) loop.pipeline().set_algorithm(kRecordedAlgorithm);
   check_step_algorithm(o.view, loop.pipeline().algorithm());
@@ -369,6 +370,7 @@ int run_replay_window(const HeadlessOptions& o) {
   g.view.book_numbering = g.view.book_numbering || (loop.source().carries_pairs() && loop.source().pair_base() == 1);
   // With a screenshot: play to the last recorded frame, save it, exit (scripted, as gui --frames).
   if (o.view.screenshot) g.frames = loop.source().recorded_frames() - 1;
+  if (o.view.frames) g.frames = *o.view.frames;  // gui --input --frames N
   Session session;
   session.scene_path = *o.replay;
   session.scene_files = bundled_scene_files();
@@ -379,7 +381,9 @@ int run_replay_window(const HeadlessOptions& o) {
 
 int run_gui(Args& args) {
   // Someone's own arrays on their elements (--input, --arrays): the verify window (verify_window.cpp).
-  if (args.has("--input") || args.has("--arrays")) return run_verify_gui(args);
+  if (args.has("--arrays")) return run_verify_gui(args);
+  // Elements alone (ELEMENTS.csv or a dump): the window on them, as a recording without pairs.
+  if (args.has("--input")) return run_input_gui(args);
   const GuiOptions o = parse_gui_options(args);
   const bool scripted = o.frames.has_value();
   // Settings only for interactive sessions: scripted runs must give the same picture everywhere.

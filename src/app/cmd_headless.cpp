@@ -297,8 +297,6 @@ std::unique_ptr<FrameLoop> open_headless_loop(const HeadlessOptions& o, std::vec
     if (name != kRecordedAlgorithm) make_detector(name);
   if (o.replay) loop.load_recording(read_replay_input(o));
   else load_scene_file(loop, o.scene);
-  if (o.replay && o.view.screenshot && loop.source().elements().dim == 3)
-    throw Error("--screenshot: " + *o.replay + ": the frames are 3D; pictures are of 2D frames (check them without --screenshot, or read them with --2d)");
   if (o.algorithm == "all") {
     names = algorithms_of(o.algorithm, loop.source().elements().size(), o.brute_limit, note, loop.source().carries_pairs());
     loop.pipeline().set_algorithm(names.front());

@@ -13,6 +13,7 @@ namespace nbscope {
 
 Recording read_replay_input(const HeadlessOptions& o) {
   if (o.dump) return read_dump_recording(*o.dump, o.frames);
+  if (o.input) return read_input_recording(*o.replay, *o.input, o.frames);  // gui --input (input_window.cpp)
   return read_recording(*o.replay, o.frames);
 }
 

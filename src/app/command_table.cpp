@@ -18,6 +18,9 @@ const std::vector<OptionSpec>& rendering_options() {
                             "--book-numbering; on a dump's frames, the atom id K"},
       {"--lists", "FILTER", "row past 300 elements, else all",
        "the lists overlay draws all lists, the selected element's, or one row's (all | selected | row)"},
+      {"--layer", "K|auto", "auto",
+       "the layer of a 3D frame shown (from 0, the bottom; K past the top layer, or on a 2D frame, is an error); auto: the "
+       "selected or violating pair's layer, else the selected element's, else the busiest (Up/Down move it in the window)"},
       {"--camera", "X,Y,PPM", "", "put (X, Y) in the middle of the view the panels leave free, at PPM pixels per metre, instead of fitting "
                                   "the scene"},
       {"--no-timings", "", "", "show \"-\" for wall-clock numbers (reproducible screenshots)"},
@@ -58,10 +61,22 @@ OptionSpec gl_option() {
 
 namespace {
 
+// gui --input's dump flags: the dump's own (no --timestep: every frame is shown; no --contact-ids: no contacts).
+const std::vector<OptionSpec>& gui_input_options() {
+  static const std::vector<OptionSpec> options = [] {
+    std::vector<OptionSpec> o;
+    for (const OptionSpec& s : dump_input_options())
+      if (std::string_view(s.name) != "--timestep" && std::string_view(s.name) != "--contact-ids") o.push_back(s);
+    return o;
+  }();
+  return options;
+}
+
 // `nbscope [gui]`: the window.
 CommandSpec gui_command() {
   std::vector<OptionSpec> arrays = {
-      {"--input", "ELEMENTS.csv", "", "with --arrays: the elements the arrays index (x,y,r a line)"},
+      {"--input", "ELEMENTS.csv", "", "with --arrays: the elements the arrays index (x,y,r a line); without --arrays: ELEMENTS.csv "
+                                      "(x,y,r or x,y,z,r) or a dump, opened in the window"},
       {"--arrays", "ARRAYS.json", "", "with --input: your heads and next arrays, in the schema dump writes (see verify --arrays)"},
       {"--base", "1", "0", "the arrays count elements from 1 (numbered as the file counts: from 1)"},
       {"--exact", "", "", "also the book's order within every list (as verify --exact)"},
@@ -74,6 +89,8 @@ CommandSpec gui_command() {
       {"nbscope [gui] [--scene FILE] [--algorithm NAME] [--inject-fault NAME] [--size WxH] [--history-mb N]",
        "              [--frames N [--back K] --screenshot OUT.png] [--overlays SPEC] [--panels SPEC] [--select K]",
        "              [--max-contacts N]",
+       "nbscope gui --input ELEMENTS.csv|FILE.dump [--algorithm NAME] [--inject-fault NAME] [--layer K|auto]",
+       "            [--frames N --screenshot OUT.png] [--overlays SPEC] [--panels SPEC] [--select K]",
        "nbscope gui --input ELEMENTS.csv --arrays ARRAYS.json [--algorithm NAME] [--base 1] [--exact]",
        "            [--cell-size D] [--origin X,Y] [--cells NX,NY] [--frames N --screenshot OUT.png]",
        "            [--overlays SPEC] [--panels SPEC] [--select K]"},
@@ -91,6 +108,10 @@ CommandSpec gui_command() {
        "the path.",
        "A world that stops (too many contacts, a body not finite or leaving the world: see headless --max-contacts), also at load, shows "
        "its message in the Scenes panel and pauses; with --frames the screenshot shows it and the exit code is 2.",
+       "gui --input ELEMENTS.csv|FILE.dump without --arrays: the window on those elements (x,y,r or x,y,z,r a line; a dump's "
+       "frames) as a recording without pairs, detected and checked as replay does; --frames N draws it N times (a one-frame input "
+       "too: the frame rate is of redraws). A 3D frame is shown one layer of cells at a time, as NBS 3D works through it "
+       "(--layer, Up/Down; docs/window.md).",
        "gui --input ELEMENTS.csv --arrays ARRAYS.json: your heads and next arrays, checked as verify --arrays checks them, in the window: "
        "your lists as arrow chains with their heads named (C[5][7]), every problem in red (the wrong link, the elements at fault ringed, "
        "a cut list's end), the first problem selected and its text in the legend. Problems panel: a click selects one and puts the "
@@ -261,6 +282,7 @@ const std::vector<CommandSpec>& command_table() {
       if (name == "algorithms" || name == "scaling") continue;
       c.groups.front().options.push_back(touching_option());
       if (name == "replay") c.groups.insert(c.groups.begin() + 1, {"frames from LAMMPS and LIGGGHTS dumps (docs/dem.md)", dump_replay_options()});
+      if (name == "gui") c.groups.insert(c.groups.begin() + 1, {"gui --input FILE (without --arrays): a dump or ELEMENTS.csv", gui_input_options()});
       if (name == "pairs" || name == "dump" || name == "verify")
         c.groups.insert(c.groups.begin() + 1, {"--input FILE.dump: a LAMMPS or LIGGGHTS dump (docs/dem.md)", dump_input_options()});
     }

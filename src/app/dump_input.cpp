@@ -187,6 +187,21 @@ InputFrame read_input_frame(const std::string& path, const DumpFlags& flags) {
   return in;
 }
 
+Recording read_input_recording(const std::string& path, const DumpFlags& flags, std::int64_t max_frames) {
+  if (is_dump_file(path)) {
+    if (flags.box) throw Error("--box: " + path + " is a dump: its box is its BOX BOUNDS (--periodic x,y[,z] makes axes periodic)");
+    DumpFlags every = flags;
+    every.dumps = {path};  // every frame of it, without contacts
+    return read_dump_recording(every, max_frames);
+  }
+  InputFrame in = read_input_frame(path, flags);
+  Recording r;
+  r.path = path;
+  RecordedFrame& f = r.frames.emplace_back();
+  f.elements = std::move(in.elements);
+  return r;
+}
+
 const std::vector<OptionSpec>& dump_input_options() {
   static const std::vector<OptionSpec> options = {
       {"--timestep", "S", "the only frame", "with --input FILE.dump: the frame of timestep S (a dump with several frames needs it)"},

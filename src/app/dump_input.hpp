@@ -48,6 +48,9 @@ struct InputFrame {
 };
 // Reads --input `path` as a dump (is_dump_file) or as ELEMENTS.csv; Error for dump flags on a CSV file.
 InputFrame read_input_frame(const std::string& path, const DumpFlags& flags);
+// The recording gui --input reads: a dump's frames (at most `max_frames`), or ELEMENTS.csv as one
+// frame (x,y,r or x,y,z,r; --periodic/--box applied); no pairs.
+Recording read_input_recording(const std::string& path, const DumpFlags& flags, std::int64_t max_frames);
 
 // --periodic and --box on elements read from ELEMENTS.csv: the periodic box set and centres wrapped
 // into it; Error for --periodic without --box, or an axis the elements do not have.

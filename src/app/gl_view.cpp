@@ -94,6 +94,7 @@ GlView::GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions
   state_.selected = options.select < 0 ? -1 : options.book_numbering ? options.select - 1 : options.select;
   trail_element_ = state_.selected;
   fixed_camera_ = options.camera;
+  set_layer_option(options.layer);
   for (std::size_t f = 0; f < std::size(render::kListFilterNames); ++f)
     if (options.lists == render::kListFilterNames[f]) state_.list_filter = static_cast<render::ListFilter>(f);
 }
@@ -279,6 +280,7 @@ void GlView::focus_violation(const FrameLoop& loop, const Violation& v, bool ope
   state_.selected = v.pair.i;
   state_.selected_pair = v.pair;
   state_.selected_cell = std::array<std::int32_t, 2>{v.cell_i.ix, v.cell_i.iy};
+  state_.layer.reset();  // a 3D frame shows the layer whose pass finds the pair (choose_layer)
   state_.panel_open[ui::kViolationsTitle] = true;
   const auto& log = loop.history().violation_log().listed();
   state_.current_violation = -1;  // unless it is still listed (the frame was checked again)
@@ -339,6 +341,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   const std::shared_ptr<const FrameTrace> trace = state_.overlays.lists || stepper_wants ? loop.pipeline().frame_trace() : nullptr;
   cost_.trace_ms = ms_since(t0);
   update_lists(loop, trace);
+  update_layer(loop, trace);
   t0 = Clock::now();
   build_shapes(loop);
   build_checks(loop);
@@ -354,6 +357,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   scene.pairs = &loop.result().selected().pairs;
   scene.checks = &checks_;
   scene.lists = state_.overlays.lists ? &lists_ : nullptr;
+  scene.layer = layer();
   scene.selected = state_.selected;
   scene.focus_pair = state_.selected_pair;
   scene.hovered_cell = state_.hovered_cell;

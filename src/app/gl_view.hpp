@@ -15,6 +15,7 @@
 #include "app/scaling_job.hpp"
 #include "app/view_options.hpp"
 #include "core/frame_trace.hpp"
+#include "core/layers.hpp"
 #include "io/png.hpp"
 #include "render/camera_framing.hpp"
 #include "render/gl_context.hpp"
@@ -67,6 +68,9 @@ class GlView {
   // Error("--select: ...") when the element chosen on the command line (in the shown numbering) is
   // not in `loop`'s scene.
   void check_selection(const FrameLoop& loop) const;
+  // Error("--layer: ...") when --layer K was given and `loop`'s frame is 2D, or K is past its top
+  // layer (call once the frame is loaded and detected).
+  void check_layer(const FrameLoop& loop) const;
   // Error("--step: ...") when --step asked for more operations than the shown frame's detection
   // has, or its algorithm records none (call after frame(), before the screenshot).
   void check_step() const;
@@ -100,6 +104,15 @@ class GlView {
   // The stepper panels' session (its trace is the frame loop's) and the lists the overlay drew last.
   [[nodiscard]] ui::StepperSession& stepper() { return *stepper_; }
   [[nodiscard]] const std::vector<TracedList>& lists() const { return lists_; }
+  // The layer of a 3D frame the last frame() showed (null for a 2D frame): gl_view_layer.cpp.
+  [[nodiscard]] const LayerSlice* layer() const { return layer_ ? &*layer_ : nullptr; }
+  // The layer --layer K pinned (headless: it wins over a violation's layer); nullopt: the view chooses.
+  [[nodiscard]] std::optional<std::int32_t> layer_option() const { return layer_option_; }
+  // The bodies the last frame() handed the renderer (a 3D frame: the layer shown's and the one below's).
+  [[nodiscard]] const std::vector<render::ShapeDraw>& shapes() const { return shapes_; }
+  // --layer's value ("", "auto" or a whole number, as parse_view_options checked it): a number pins
+  // UiState::layer; "auto" leaves the view to choose.
+  void set_layer_option(const std::string& text);
   // The selection's trail and each element's cell-change flash (1 on the frame its cell changed,
   // then fading each step), as the next frame() draws them.
   [[nodiscard]] const std::vector<std::vector<render::Vec2>>& trails() const { return trails_; }
@@ -115,6 +128,14 @@ class GlView {
   // The lists overlay's part of `scene` from the stepper's current operation and the filter.
   void describe_lists(const FrameLoop& loop, const std::shared_ptr<const FrameTrace>& trace, render::OverlayScene& scene) const;
   void build_shapes(const FrameLoop& loop);
+  // The layer shown of a 3D frame (layer_), chosen and sliced once per change of frame or layer.
+  void update_layer(const FrameLoop& loop, const std::shared_ptr<const FrameTrace>& trace);
+  // The layer the view shows: the stepper's mid-frame, else the user's (clamped), else the focus
+  // pair's, the selected element's, the busiest.
+  [[nodiscard]] std::int32_t choose_layer(const FrameLoop& loop, const std::shared_ptr<const FrameTrace>& trace,
+                                          const LayerSlice& slice);
+  // The stepper's position while it is mid-way through `trace`, this frame's (nullptr otherwise).
+  [[nodiscard]] const Stepper* stepping_through(const std::shared_ptr<const FrameTrace>& trace) const;
   void build_checks(const FrameLoop& loop);
   // Fills the panels' view of this frame (gl_view_panels.cpp).
   void fill_panels_view(const FrameLoop& loop, const Session& session, const std::shared_ptr<const FrameTrace>& trace,
@@ -162,6 +183,11 @@ class GlView {
   std::vector<render::Vec2> shape_points_;
   render::CheckDraw checks_;
   std::vector<std::pair<ElementId, float>> flash_list_;
+
+  // The layer shown of a 3D frame, and the frame change it was sliced for.
+  std::optional<LayerSlice> layer_;
+  std::uint64_t layer_generation_ = 0;
+  std::optional<std::int32_t> layer_option_;  // --layer K
 
   // The lists overlay, rebuilt from the frame loop's trace when it or the stepper's position changes.
   std::vector<TracedList> lists_;

@@ -11,7 +11,12 @@ void GlView::build_shapes(const FrameLoop& loop) {
   loop.source().body_shapes(body_shapes_);
   shapes_.clear();
   shape_points_.clear();
+  const bool flat = loop.source().elements().dim == 3;  // a 3D frame's spheres seen from above: plain circles
+  const LayerSlice* slice = layer();
   for (const BodyShape& b : body_shapes_) {
+    // A 3D frame's layers above and further below are hidden: not even handed to the renderer.
+    if (slice != nullptr && b.element >= 0 && static_cast<std::size_t>(b.element) < slice->element_layer.size() && !slice->visible(b.element))
+      continue;
     render::ShapeDraw d;
     d.motion = b.body_type == BodyType::Static      ? render::Motion::Static
                : b.body_type == BodyType::Kinematic ? render::Motion::Kinematic
@@ -21,6 +26,7 @@ void GlView::build_shapes(const FrameLoop& loop) {
     d.radius = static_cast<float>(b.radius);
     d.angle = static_cast<float>(b.angle);
     d.element = b.element;
+    d.spoke = d.spoke && !flat;
     if (!d.is_circle) {
       d.first = static_cast<std::uint32_t>(shape_points_.size());
       d.count = static_cast<std::uint32_t>(b.vertex_count);

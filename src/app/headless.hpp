@@ -52,6 +52,7 @@ struct HeadlessOptions {
   std::optional<std::int64_t> max_contacts;  // --max-contacts N: Box2D contacts a frame may create
   Touching touching = Touching::inclusive;   // --touching: whether a pair at zero gap is a contact
   std::optional<DumpFlags> dump;             // replay --dump: frames from LAMMPS/LIGGGHTS dumps (`replay` names the first)
+  std::optional<DumpFlags> input;            // gui --input FILE: ELEMENTS.csv or a dump (`replay` names it), no pairs
 };
 
 // The recording `options.replay` names: a .nbsrec, or the dumps of options.dump; at most

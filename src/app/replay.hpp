@@ -11,4 +11,8 @@ namespace nbscope {
 // with --screenshot it plays to the last frame, saves and exits. Returns 1 when a check failed.
 int run_replay_window(const HeadlessOptions& options);
 
+// `gui --input FILE` without --arrays: the window on ELEMENTS.csv's one frame or a dump's frames, as
+// a recording without pairs (input_window.cpp); without a display, headless into --screenshot.
+int run_input_gui(Args& args);
+
 }  // namespace nbscope

@@ -96,6 +96,16 @@ void parse_view_options(Args& args, bool headless, ViewOptions& out) {
     out.lists = *v;
     drawing("--lists", true);
   }
+  if (auto v = args.value("--layer")) {
+    // A whole number (checked against the frame's layers once it is loaded: GlView::check_layer) or auto.
+    const char* last = v->data() + v->size();
+    std::int32_t k = 0;
+    const auto [p, ec] = std::from_chars(v->data(), last, k);
+    if (*v != "auto" && (v->empty() || ec != std::errc() || p != last || k < 0))
+      throw Error("--layer: '" + *v + "' is not a layer number (0 is the bottom layer) or auto");
+    out.layer = *v;
+    drawing("--layer", true);
+  }
   if (headless && out.step && !out.screenshot) throw Error("--step: needs --screenshot (it sets what the screenshot shows)");
   // Headless draws nothing without a screenshot: a drawing flag alone would be silently ignored.
   if (headless && drawing_flag && !out.screenshot)
