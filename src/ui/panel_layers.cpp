@@ -31,7 +31,7 @@ const ImU32 kOtherColour = IM_COL32(120, 125, 135, 120);
 const ImU32 kBandColour = IM_COL32(250, 190, 90, 55);
 const ImU32 kBandEdge = IM_COL32(250, 190, 90, 200);
 const ImU32 kBelowBand = IM_COL32(150, 170, 220, 28);
-const ImU32 kLayerLine = IM_COL32(120, 130, 150, 110);
+const ImU32 kLayerLine = IM_COL32(200, 205, 220, 120);
 const ImU32 kSelectedRing = IM_COL32(255, 255, 255, 235);  // the selected element, whichever layer it is in
 const ImVec4 kCurrentText(0.98f, 0.75f, 0.35f, 1.0f);
 
@@ -160,16 +160,17 @@ class LayersPanel final : public Panel {
     };
     band(s.below, kBelowBand);
     band(s.layer, kBandColour);
+    if (e.size() <= kMaxDrawnElements) {
+      draw_elements(draw, g, e, s, h_axis);
+    } else {
+      draw_density(draw, g, e, s, h_axis);
+    }
+    // The layer lines over the elements: a settled pack hides any line drawn under it.
     const float spacing = static_cast<float>(d * g.sz);
     for (std::int64_t iz = 0; iz <= grid.n[2]; ++iz) {
       if (spacing < 3.0f && iz % 5 != 0) continue;  // dense layers: every fifth line
       const float y = g.to_screen(0, g.z0 + static_cast<double>(iz) * d).y;
       draw->AddLine(ImVec2(g.lo.x, y), ImVec2(g.hi.x, y), kLayerLine);
-    }
-    if (e.size() <= kMaxDrawnElements) {
-      draw_elements(draw, g, e, s, h_axis);
-    } else {
-      draw_density(draw, g, e, s, h_axis);
     }
     if (const ElementId k = c.state.selected; k >= 0 && k < e.size()) {  // where the selection lies, in any layer
       const float r = std::max(3.0f, static_cast<float>(e.r[k] * g.sx)) + 2.0f;

@@ -43,7 +43,7 @@ class SelectionPanel final : public Panel {
     else
       ImGui::Text("element %lld", num(k));
     if (e.dim == 3) {
-      ImGui::Text("centre (%.4g, %.4g, %.4g)  r = %.4g", e.x[k], e.y[k], e.z[k], e.r[k]);
+      ImGui::TextWrapped("centre (%.4g, %.4g, %.4g)  r = %.4g", e.x[k], e.y[k], e.z[k], e.r[k]);
       for (const std::string& line : selection_layer_lines(s, k, book)) ImGui::TextUnformatted(line.c_str());
     } else {
       ImGui::Text("centre (%.3f, %.3f)  r = %.3f", e.x[k], e.y[k], e.r[k]);
