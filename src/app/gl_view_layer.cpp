@@ -47,13 +47,9 @@ const Stepper* GlView::stepping_through(const std::shared_ptr<const FrameTrace>&
 std::int32_t GlView::choose_layer(const FrameLoop& loop, const std::shared_ptr<const FrameTrace>& trace, const LayerSlice& slice) {
   const std::int32_t top = slice.count - 1;
   // The stepper mid-way: the layer of the phase it is in (a row's phase names its layer), else of
-  // the operation's cell (the z-lists' pushes).
-  if (const Stepper* st = stepping_through(trace)) {
-    const std::int64_t p = st->current_phase();
-    std::int32_t iz = p >= 0 ? st->events()[st->phases()[static_cast<std::size_t>(p)].event].cell[2] : -1;
-    if (iz < 0) iz = st->loop_vars().iz;
-    if (iz >= 0 && iz <= top) return iz;
-  }
+  // the latest operation's cell (the z-lists' pushes): StepperSession::current_layer.
+  if (stepping_through(trace) != nullptr)
+    if (const auto iz = stepper_->current_layer(); iz && *iz >= 0 && *iz <= top) return *iz;
   if (state_.layer) {
     state_.layer = std::clamp(*state_.layer, 0, top);  // the slider and the keys move from what is shown
     return *state_.layer;

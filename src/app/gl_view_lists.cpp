@@ -64,10 +64,8 @@ void GlView::describe_lists(const FrameLoop& loop, const std::shared_ptr<const F
     }
     const LoopVars v = st.loop_vars();
     if (e.dim == 3) {
-      // NBS 3D's phases are of a layer (index iz) or of a row (index iy): the row is the phase's cell[1].
-      const std::int64_t p = st.current_phase();
-      const std::int32_t row = p >= 0 ? st.events()[st.phases()[static_cast<std::size_t>(p)].event].cell[1] : -1;
-      if (row >= 0 || v.iy >= 0) stepper_row = row >= 0 ? row : v.iy;
+      // NBS 3D's phases are of a layer (index iz) or of a row (index iy): the row is the phase's, not its index.
+      stepper_row = stepper_->current_row();
     } else if (v.phase_index >= 0 || v.iy >= 0) {
       stepper_row = v.phase_index >= 0 ? v.phase_index : v.iy;
     }
