@@ -61,15 +61,13 @@ class SelectionPanel final : public Panel {
         const auto at = std::find(l.chain.begin(), l.chain.end(), k);
         if (at == l.chain.end()) continue;
         const ElementId next = at + 1 == l.chain.end() ? -1 : *(at + 1);
-        const std::string place = list_place_text(l, static_cast<std::size_t>(at - l.chain.begin()), book);
-        if (l.secondary)
-          ImGui::TextDisabled("%s (copy for row %lld) %s", l.kind.c_str(), num(l.phase_index), place.c_str());
-        else
-          ImGui::Text("%s %s", l.kind.c_str(), place.c_str());
-        if (!l.next_name.empty()) {
-          ImGui::SameLine();
-          ImGui::Text("%s[%lld] = %lld", l.next_name.c_str(), num(k), num(next));
-        }
+        // The list, k's place in it and k's next entry: wrapped, never cut at the panel's edge.
+        std::string head = l.kind + (l.secondary ? " (copy for row " + std::to_string(num(l.phase_index)) + ")" : "") + " " +
+                           list_place_text(l, static_cast<std::size_t>(at - l.chain.begin()), book);
+        if (!l.next_name.empty()) head += ", " + l.next_name + "[" + std::to_string(num(k)) + "] = " + std::to_string(num(next));
+        if (l.secondary) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("%s", head.c_str());
+        if (l.secondary) ImGui::PopStyleColor();
         ImGui::TextWrapped("  %s", describe_chain(l, k, book).c_str());
       }
     }

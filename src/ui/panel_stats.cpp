@@ -52,8 +52,14 @@ class StatsPanel final : public Panel {
     const long long n = s.elements != nullptr ? static_cast<long long>(s.elements->size()) : 0;
     ImGui::Text("N = %s, %s", plural(n, "element").c_str(), plural(static_cast<long long>(s.bodies), "body", "bodies").c_str());
     if (const Grid* grid = s.grid()) {
-      ImGui::Text("cells %lld x %lld = %lld, d = %.3g m", static_cast<long long>(grid->n[0]), static_cast<long long>(grid->n[1]),
-                  static_cast<long long>(grid->cell_count()), grid->cell_size);
+      if (grid->dim == 3) {
+        ImGui::Text("cells %lld x %lld x %lld = %lld, d = %.3g m", static_cast<long long>(grid->n[0]),
+                    static_cast<long long>(grid->n[1]), static_cast<long long>(grid->n[2]),
+                    static_cast<long long>(grid->cell_count()), grid->cell_size);
+      } else {
+        ImGui::Text("cells %lld x %lld = %lld, d = %.3g m", static_cast<long long>(grid->n[0]),
+                    static_cast<long long>(grid->n[1]), static_cast<long long>(grid->cell_count()), grid->cell_size);
+      }
     }
     ImGui::Text("pairs %zu", s.pairs() != nullptr ? s.pairs()->size() : std::size_t{0});
     // The convention decides recorded pairs at zero gap: said for a recording, or when not the default.

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "app/gl_view.hpp"
+#include "support/window_rig.hpp"
 #include "core/error.hpp"
 #include "io/png.hpp"
 #include "render/gl_context.hpp"
@@ -25,24 +26,7 @@ RecordedFrame dump_frame(std::int64_t number, std::vector<std::int64_t> ids, std
   return f;
 }
 
-struct AtomRig {
-  std::unique_ptr<render::GlContext> context = render::make_offscreen_context(800, 500, "osmesa");
-  FrameLoop loop;
-  Session session;
-  std::unique_ptr<GlView> view;
-  explicit AtomRig(Recording rec, ViewOptions options = {}, const FrameLoopOptions& loop_options = {}) : loop(loop_options) {
-    options.width = 800;
-    options.height = 500;
-    options.shader_dir = NBSCOPE_SHADER_DIR;
-    loop.load_recording(std::move(rec));
-    session.paused = true;
-    view = std::make_unique<GlView>(*context, nullptr, options);
-    view->follow(loop);
-  }
-  void frames(int n) {
-    for (int k = 0; k < n; ++k) view->frame(loop, session, false, 1.0f / 60.0f);
-  }
-};
+using AtomRig = testapp::RecordingWindowRig;
 
 // Atom 30 moves right by 0.1 a frame; atom 20 is lost in frame 1, atom 5 inserted in frame 2, atom
 // 30 gone in frame 3.

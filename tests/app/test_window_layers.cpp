@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "app/gl_view.hpp"
+#include "support/window_rig.hpp"
 #include "app/gui_requests.hpp"
 #include "core/layers.hpp"
 #include "render/gl_context.hpp"
@@ -39,23 +40,8 @@ Recording spheres(int n, std::uint32_t seed) {
   return rec;
 }
 
-struct LayerRig {
-  std::unique_ptr<render::GlContext> context = render::make_offscreen_context(800, 500, "osmesa");
-  FrameLoop loop;
-  Session session;
-  std::unique_ptr<GlView> view;
-  explicit LayerRig(Recording rec, ViewOptions options = {}, const FrameLoopOptions& loop_options = {}) : loop(loop_options) {
-    options.width = 800;
-    options.height = 500;
-    options.shader_dir = NBSCOPE_SHADER_DIR;
-    loop.load_recording(std::move(rec));
-    session.paused = true;
-    view = std::make_unique<GlView>(*context, nullptr, options);
-    view->follow(loop);
-  }
-  void frames(int n) {
-    for (int k = 0; k < n; ++k) view->frame(loop, session, false, 1.0f / 60.0f);
-  }
+struct LayerRig : testapp::RecordingWindowRig {
+  using RecordingWindowRig::RecordingWindowRig;
   // Each element's layer as NBS integerises z on the frame's grid.
   [[nodiscard]] std::int32_t layer_of(ElementId k) const {
     return loop.result().selected().grid.cell(loop.source().elements().z[k], 2);

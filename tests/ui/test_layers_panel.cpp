@@ -491,5 +491,18 @@ TEST(StepperPanels3d, ACellSeekAndAViolationsPairWorkIn3d) {
   EXPECT_EQ(session->current_layer(), pair_layer(f.slice, g, p));
 }
 
+// Stats counts a 3D grid's cells with all three sides (it once wrote "7 x 7 = 294" for 7 x 7 x 6).
+TEST(StatsPanel, ThreeDCellsAreCountedWithTheirLayers) {
+  Scope3d scope;
+  UiHost host;
+  Frame3d f;
+  const Grid& g = f.grid();
+  ASSERT_GT(g.n[2], 1);
+  const std::string text = panel_text(host, f, "Stats");
+  const std::string want = "cells " + std::to_string(g.n[0]) + " x " + std::to_string(g.n[1]) + " x " + std::to_string(g.n[2]) +
+                           " = " + std::to_string(g.n[0] * g.n[1] * g.n[2]);
+  EXPECT_NE(text.find(want), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace nbscope::ui
