@@ -303,11 +303,6 @@ std::vector<std::int32_t> Stepper::list_members(int heads_array, std::int64_t li
   return out;
 }
 
-int Stepper::array_id(const std::string& name) const {
-  const std::vector<TracedArray>& arrays = trace_->arrays();
-  for (std::size_t a = 0; a < arrays.size(); ++a)
-    if (arrays[a].name == name) return static_cast<int>(a);
-  return -1;
-}
+int Stepper::array_id(const std::string& name) const { return trace_->array_id(name); }
 
 }  // namespace nbscope

@@ -146,4 +146,10 @@ std::vector<std::vector<std::int32_t>> TraceLog::state_after(std::size_t count) 
   return state;
 }
 
+int TraceLog::array_id(std::string_view name) const {
+  for (std::size_t a = 0; a < arrays_.size(); ++a)
+    if (arrays_[a].name == name) return static_cast<int>(a);
+  return -1;
+}
+
 }  // namespace nbscope

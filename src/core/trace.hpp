@@ -10,6 +10,7 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/elements.hpp"
@@ -107,6 +108,8 @@ class TraceLog {
 
   [[nodiscard]] const std::vector<TraceEvent>& events() const { return events_; }
   [[nodiscard]] const std::vector<TracedArray>& arrays() const { return arrays_; }
+  // Id of the declared array called `name`, or -1 (none yet: a run declares its arrays as it starts).
+  [[nodiscard]] int array_id(std::string_view name) const;
   // Contents of every array after the first `count` events (count clamped to the event count).
   [[nodiscard]] std::vector<std::vector<std::int32_t>> state_after(std::size_t count) const;
   // Applies (forward) or undoes (backward) the writes of one event on `state`.

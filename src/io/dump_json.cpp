@@ -28,9 +28,9 @@ using json = nlohmann::ordered_json;
 using State = std::vector<std::vector<std::int32_t>>;
 
 int array_id(const TraceLog& log, const char* name) {
-  for (std::size_t i = 0; i < log.arrays().size(); ++i)
-    if (log.arrays()[i].name == name) return static_cast<int>(i);
-  throw Error(std::string("dump: internal: the trace has no array '") + name + "'");
+  const int id = log.array_id(name);
+  if (id < 0) throw Error(std::string("dump: internal: the trace has no array '") + name + "'");
+  return id;
 }
 
 // `name`'s id in `cache` once the run has declared it (-1 until then).

@@ -7,13 +7,6 @@
 namespace nbscope::ui {
 
 namespace {
-int array_named(const TraceLog& log, const char* name) {
-  const auto& arrays = log.arrays();
-  for (std::size_t a = 0; a < arrays.size(); ++a)
-    if (arrays[a].name == name) return static_cast<int>(a);
-  return -1;
-}
-
 // Chains from `heads` through `next`, each walk bounded by the element count.
 void walk_chains(ZLists& z, const std::vector<std::int32_t>& next) {
   z.chains.assign(z.heads.size(), {});
@@ -27,8 +20,8 @@ void walk_chains(ZLists& z, const std::vector<std::int32_t>& next) {
 
 // The ids of NBS 3D's z-list arrays: C (heads, one per layer) and Z (next, one per element).
 bool zlist_arrays(const TraceLog& log, int& c, int& z) {
-  c = array_named(log, "C");
-  z = array_named(log, "Z");
+  c = log.array_id("C");
+  z = log.array_id("Z");
   return c >= 0 && z >= 0 && log.arrays()[static_cast<std::size_t>(c)].shape.size() == 1;
 }
 }  // namespace
