@@ -12,6 +12,7 @@
 #include "core/elements.hpp"
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
+#include "core/threads.hpp"
 #include "core/trace.hpp"
 
 namespace nbscope {
@@ -26,6 +27,13 @@ struct DetectOptions {
   // plugin that traces and builds lists gets its trace table, each test checked against the cell
   // the walk visited (Detector::walk_check). Off: untraced means no trace call at all.
   bool check_walks = false;
+  // Threads the detection may use (nbs: bands of rows, 3D layers, each detected by one thread;
+  // the other detectors run on one). Every value gives the same arrays and the same pairs in the
+  // same order as 1, the book's serial loops. The command line's default is machine_threads().
+  int threads = 1;
+  // Fewest elements a band may hold: a set smaller than threads * this runs on fewer threads (a
+  // thread costs more than it saves on a few thousand elements). Tests set 1 to band tiny sets.
+  std::int64_t min_band_elements = kMinBandElements;
 };
 
 // A test of element `stray` from the list of a cell it does not lie in: the list held an element

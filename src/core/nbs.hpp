@@ -48,6 +48,11 @@ class NbsDetector final : public Detector {
   [[nodiscard]] std::size_t own_bytes() const override;
   // The book's arrays alone: 2D ny + 2nx + 2N integers, 3D nz + 2ny + 5nx + 3N (pp.102, 123).
   [[nodiscard]] std::size_t book_bytes() const;
+  // Bytes the fast path moves to and from memory per element, from its layout (nbs_fast.cpp): the
+  // columns read once in order, the packed records written and read, the next arrays written.
+  [[nodiscard]] static std::size_t moved_bytes_per_element(int dim);
+  // The bands (threads) the last fast detection ran on: 1 for the serial loops.
+  [[nodiscard]] int last_bands() const { return last_bands_; }
 
   // The book's arrays after the last detection (heads are all -1 again; next arrays hold their last values).
   // 2D: y_heads[ny] and Y[N]; 3D: B[2][ny] (B[s][iy] at s*ny+iy) and Y[N].
@@ -114,6 +119,7 @@ class NbsDetector final : public Detector {
   };
 
   Grid grid_;
+  int last_bands_ = 1;
   std::vector<std::int32_t> order_;     // fast path: N element ids grouped by row (layer), in list order
   std::vector<std::int32_t> list_end_;  // fast path: end of each row's (layer's) run in order_
   Buffer buffers_[2];                   // fast path: the row (layer) being processed and the one below

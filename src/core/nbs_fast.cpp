@@ -37,6 +37,14 @@ inline void prefetch_write(const void* p) { __builtin_prefetch(p, 1, 3); }
 
 }  // namespace
 
+std::size_t NbsDetector::moved_bytes_per_element(int dim) {
+  // Provisional (the layout before packed records): the columns read in order for the first lists,
+  // the cell kept, the order written and read, the coordinates read in random order (a line each),
+  // the next arrays written (a line read and written each).
+  const std::size_t columns = dim == 3 ? 4 : 3;
+  return 8 + 4 * 4 + columns * 64 + (dim == 3 ? 3 : 2) * 128;
+}
+
 void NbsDetector::order_by_list(const std::int32_t* cell_of, std::int64_t n_elements, std::int32_t cells) {
   list_end_.assign(static_cast<std::size_t>(cells) + 1, 0);
   std::int32_t* const end = list_end_.data();
