@@ -51,9 +51,13 @@ std::size_t NbsDetector::book_bytes() const {
 }
 
 std::size_t NbsDetector::own_bytes() const {
-  std::size_t scratch = (order_.capacity() + list_end_.capacity()) * sizeof(std::int32_t);
-  scratch += spare_.capacity() * sizeof(Slot);
-  for (const Buffer& b : buffers_) scratch += b.slots.capacity() * sizeof(Slot);
+  std::size_t scratch = (order_.capacity() + list_end_.capacity() + chunk_lists_.capacity()) * sizeof(std::int32_t);
+  scratch += packed_.capacity() * sizeof(double);
+  for (const Band& band : bands_) {
+    scratch += (band.spare.capacity() + band.buffers[0].slots.capacity() + band.buffers[1].slots.capacity()) * sizeof(Slot);
+    scratch += (band.heads.capacity() + band.rows.capacity()) * sizeof(std::int32_t);
+    scratch += band.pairs.capacity() * sizeof(Pair);
+  }
   return book_bytes() + scratch;
 }
 
@@ -201,8 +205,8 @@ void NbsDetector::detect(const Elements& elements, const DetectOptions& options,
   bool wraps = false;
   for (int a = 0; a < elements.dim; ++a) wraps = wraps || elements.box.periodic[a];
   if (wraps) return detect_book(elements, options, out_pairs);
-  if (elements.dim == 3) return run_3d_fast(elements, options, out_pairs);
-  run_2d_fast(elements, options, out_pairs);
+  if (elements.dim != 2 && elements.dim != 3) throw Error("nbs: only 2D and 3D elements are supported");
+  run_fast(elements, options, out_pairs);
 }
 
 void NbsDetector::detect_book(const Elements& elements, const DetectOptions& options, PairList& out_pairs) {

@@ -15,17 +15,25 @@
 // Two paths compute the same arrays and the same pairs in the same order (tests/core/test_nbs_fast.cpp):
 // - detect_traced() and detect_book() run the book's loops as written (nbs.cpp, nbs3d.cpp): every
 //   list walk follows `next`, so with elements in random memory order each step is a cache miss;
-// - detect() runs the fast path (nbs_fast.cpp): the rows (3D: layers) are ordered by one counting
-//   sort instead of walking the y-lists (z-lists), each row's (layer's) elements are gathered once,
-//   with prefetching, into a contiguous buffer with their cells integerised once, the book's pushes
-//   and the contact mask run on that buffer in the book's order, and the buffer of the row (layer)
-//   below is reused for the next one. The next arrays get each element's last value once, when its
-//   buffer is retired. Extra memory: N integers and O(nx + ny) (3D: + nz), so still O(N).
+// - detect() runs the fast path (nbs_order.cpp, nbs_fast.cpp): the book's first lists (2D y-lists,
+//   3D z-lists) are pushed reading the columns in order, and one counting sort by those lists
+//   writes each element's packed record (x, y, r; 3D x, y, z, r) into list order, so the rows
+//   (layers) are then read in order, not by walking lists through memory. Each row's (layer's)
+//   records are gathered into a buffer with their cells integerised once, the book's pushes and the
+//   contact mask run on it in the book's order, and the buffer of the row (layer) below is reused
+//   for the next one. The next arrays get each element's last value once, when its buffer is retired.
+//   On DetectOptions::threads threads the pushes and the sort run on chunks of the elements and the
+//   rows (layers) on bands, each band loading the row (layer) below it as its own; the arrays and
+//   the pairs, in their order, are the serial loops' (tests/core/test_nbs_bands.cpp).
+//   Extra memory: (D + 1) doubles and 1 integer per element, O(nx + ny) (3D: + nz) per band.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/detector.hpp"
+#include "core/huge_pages.hpp"
+#include "core/worker_pool.hpp"
 
 namespace nbscope {
 
@@ -82,22 +90,29 @@ class NbsDetector final : public Detector {
   template <class Trace>
   void run_3d(const Elements& elements, const DetectOptions& options, PairList& out_pairs, Trace& trace);
 
-  // The fast path (nbs_fast.cpp).
-  void run_2d_fast(const Elements& elements, const DetectOptions& options, PairList& out_pairs);
-  void run_3d_fast(const Elements& elements, const DetectOptions& options, PairList& out_pairs);
-  // Counting sort of the elements by the cell stored in `cell_of` (0 <= cell < cells): order_ holds
-  // every list's elements contiguous and in list order (descending k, as pushing at the head
-  // leaves them); list c spans [c == 0 ? 0 : list_end_[c-1], list_end_[c]).
-  void order_by_list(const std::int32_t* cell_of, std::int64_t n_elements, std::int32_t cells);
-  // The book's first lists along `axis` (2D: y-lists, 3D: z-lists): next[k] = heads[c]; heads[c] = k
-  // for every k, each element's cell kept in `cell_scratch`; then order_by_list on them.
-  void push_and_order(const Elements& elements, int axis, std::int32_t* heads, std::int32_t* next,
-                      std::int32_t* cell_scratch);
+  // The fast path (nbs_fast.cpp: the bands of rows or layers; nbs_order.cpp: the first lists and
+  // the packed records).
   struct Slot;
-  // Copies the coordinates of order_[first, first + count) into `out`, with ix (3D: and iy)
-  // integerised once, prefetching the elements further on.
+  struct Buffer;
+  struct Band;
+  void run_fast(const Elements& elements, const DetectOptions& options, PairList& out_pairs);
+  // The book's first lists (2D: y-lists, y_heads_ and Y; 3D: z-lists, z_heads_ and Z) and a
+  // counting sort of the elements by those lists, on `chunks` threads: packed_ holds their records
+  // (x, y, r; 3D x, y, z, r) and order_ their ids, each list contiguous and in list order (descending
+  // k, as pushing at the head leaves them); list c ends at list_end_[c].
+  void order_and_pack(const Elements& elements, int chunks);
+  // Detects the rows [first, last) (2D) into `out_pairs` with the band's own buffers and heads
+  // (x_heads `b` = B[2][nx]); writes X only for those rows' elements.
+  void rows_2d(Band& band, std::int32_t* b, std::int32_t first, std::int32_t last, const DetectOptions& options,
+               PairList& out_pairs);
+  // The same for the layers [first, last) (3D): `b` = B[2][ny], `a` = A[5][nx]; writes X and Y of
+  // those layers' elements only.
+  void layers_3d(Band& band, std::int32_t* b, std::int32_t* a, std::int32_t first, std::int32_t last,
+                 const DetectOptions& options, PairList& out_pairs);
+  // Copies the records [first, first + count) of packed_ and order_ into `out`, with ix (3D: and
+  // iy) integerised once.
   template <int D>
-  void gather(const Elements& elements, std::size_t first, std::size_t count, Slot* out) const;
+  void gather(std::size_t first, std::size_t count, Slot* out) const;
 
   // One row's (3D: layer's) elements, gathered for the fast path; indices into it are local.
   struct Slot {
@@ -115,15 +130,26 @@ class NbsDetector final : public Detector {
   };
   struct Buffer {
     std::int32_t list = -1;  // the row (layer) it holds, -1 for none
+    bool owned = true;       // false: the row (layer) below a band, loaded for its lists; another band writes its X (Y)
     std::vector<Slot> slots;
+  };
+  // What one band's thread works with, kept between detections so that nothing is reallocated.
+  struct Band {
+    Buffer buffers[2];               // the row (layer) being processed and the one below
+    std::vector<Slot> spare;         // 3D: a layer regrouped row by row, then swapped into its buffer
+    std::vector<std::int32_t> heads;  // bands after the first: their own B[2] (2D 2nx, 3D 2ny), all -1 between runs
+    std::vector<std::int32_t> rows;   // bands after the first, 3D: their own A[5][nx], all -1 between runs
+    PairList pairs;                   // bands after the first: their pairs, appended to the first's in band order
   };
 
   Grid grid_;
   int last_bands_ = 1;
-  std::vector<std::int32_t> order_;     // fast path: N element ids grouped by row (layer), in list order
+  std::vector<std::int32_t, HugePageAllocator<std::int32_t>> order_;  // fast path: N element ids grouped by row (layer), in list order
+  std::vector<double, HugePageAllocator<double>> packed_;  // fast path: their records, D + 1 doubles each, in the same order
   std::vector<std::int32_t> list_end_;  // fast path: end of each row's (layer's) run in order_
-  Buffer buffers_[2];                   // fast path: the row (layer) being processed and the one below
-  std::vector<Slot> spare_;             // fast path, 3D: a layer regrouped row by row, then swapped into its buffer
+  std::vector<std::int32_t> chunk_lists_;  // fast path on threads: each chunk's counts, heads and firsts per list
+  std::vector<Band> bands_;             // fast path: one per band (the first serves the serial path)
+  std::unique_ptr<WorkerPool> pool_;    // fast path: the threads of bands after the first, started on first need
   std::vector<std::int32_t> y_heads_;  // 2D: ny heads of the row lists; 3D: B[2][ny] (B[s][iy] at s*ny+iy)
   std::vector<std::int32_t> y_next_;   // Y[N]
   std::vector<std::int32_t> x_heads_;  // 2D: B[2][nx] (B[s][ix] at s*nx+ix); 3D: A[5][nx] (A[r][ix] at r*nx+ix)
