@@ -121,12 +121,12 @@ ScalingResult run_scaling_in_terminal(const ScalingPlan& plan, bool bar) {
 std::string scaling_table(const ScalingResult& result) {
   std::string out;
   char line[200];
-  std::snprintf(line, sizeof line, "%-9s %7s %-13s %10s %14s %14s %12s %8s\n", "algorithm", "threads", "layout", "n", "ns/element",
-                "bytes/element", "pairs", "repeats");
+  std::snprintf(line, sizeof line, "%-9s %-13s %10s %14s %14s %12s %8s %8s\n", "algorithm", "layout", "n", "ns/element", "bytes/element",
+                "pairs", "repeats", "threads");
   out += line;
   for (const ScalingRow& r : result.rows) {
-    std::snprintf(line, sizeof line, "%-9s %7d %-13s %10s %14.2f %14.2f %12lld %8d\n", r.algorithm.c_str(), r.threads, r.layout.c_str(),
-                  n_text(r.n).c_str(), r.ns_per_element, r.bytes_per_element, static_cast<long long>(r.pairs), r.repeats);
+    std::snprintf(line, sizeof line, "%-9s %-13s %10s %14.2f %14.2f %12lld %8d %8d\n", r.algorithm.c_str(), r.layout.c_str(),
+                  n_text(r.n).c_str(), r.ns_per_element, r.bytes_per_element, static_cast<long long>(r.pairs), r.repeats, r.threads);
     out += line;
   }
   for (const std::string& note : result.notes) out += "note: " + note + "\n";
