@@ -23,6 +23,7 @@
 #include "app/gui_requests.hpp"
 #include "app/headless.hpp"
 #include "app/headless_view.hpp"
+#include "app/threads_flag.hpp"
 #include "check/recorded_lane.hpp"
 #include "app/replay.hpp"
 #include "app/verify_view.hpp"
@@ -56,6 +57,7 @@ struct GuiOptions {
   std::int64_t back = 0;  // --back K (scripted): after the frames, K frames back through the history, each drawn
   ViewOptions view;
   Touching touching = Touching::inclusive;  // --touching
+  int threads = 1;                          // --threads N
 };
 
 GuiOptions parse_gui_options(Args& args) {
@@ -63,6 +65,7 @@ GuiOptions parse_gui_options(Args& args) {
   if (auto s = args.value("--scene")) o.scene = resolve_scene_path(*s);  // bundled names too (io/data_dir.hpp)
   o.algorithm = args.value("--algorithm");
   o.touching = take_touching(args);
+  o.threads = take_threads(args);
   if (auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);
   if (auto n = args.integer("--frames", 0, kMaxFrames)) o.frames = *n;
   if (auto mb = args.integer("--history-mb", 0, 1'000'000)) o.history_mb = *mb;
@@ -357,6 +360,7 @@ int run_replay_window(const HeadlessOptions& o) {
   loop_options.fault = o.fault;
   loop_options.brute_limit = o.brute_limit;
   loop_options.touching = o.touching;
+  loop_options.threads = o.threads;
   FrameLoop loop(loop_options);
   loop.load_recording(read_replay_input(o));
   // No --algorithm: a recording that carries the user's pairs opens on them (headless does the same).
@@ -401,6 +405,7 @@ int run_gui(Args& args) {
   loop_options.history_budget = static_cast<std::size_t>(o.history_mb.value_or(settings ? settings->history_mb : 256)) << 20;
   loop_options.max_contacts = o.max_contacts;
   loop_options.touching = o.touching;
+  loop_options.threads = o.threads;
   if (o.algorithm) loop_options.algorithm = *o.algorithm;
   else if (settings && settings->algorithm) loop_options.algorithm = *settings->algorithm;
   FrameLoop loop(loop_options);

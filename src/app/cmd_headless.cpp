@@ -20,6 +20,7 @@
 #include "app/help.hpp"
 #include "app/progress_bar.hpp"
 #include "app/scaling_flags.hpp"
+#include "app/threads_flag.hpp"
 #include "check/recorded_lane.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -202,6 +203,7 @@ HeadlessOptions parse_headless_options(Args& args) {
   o.brute_limit = args.integer("--brute-limit", 0, 1'000'000).value_or(o.brute_limit);
   o.quiet = args.flag("--quiet");
   o.touching = take_touching(args);
+  o.threads = take_threads(args);
   parse_view_options(args, true, o.view);
   o.record = args.value("--record");
   o.stop_at_violation = args.flag("--stop-at-violation");
@@ -212,7 +214,7 @@ HeadlessOptions parse_headless_options(Args& args) {
   o.violation = args.integer("--violation", 1, 1'000'000'000).value_or(0);
   o.scaling = args.value("--scaling");
   if (o.scaling && *o.scaling == "run") {
-    o.scaling_plan = take_scaling_plan_flags(args, o.algorithm);
+    o.scaling_plan = take_scaling_plan_flags(args, o.algorithm, o.threads);
   } else {
     for (const char* flag : {"--layout", "--n", "--points-per-decade"})
       if (args.value(flag)) throw Error(std::string(flag) + ": only with --scaling run");
@@ -279,6 +281,7 @@ std::unique_ptr<FrameLoop> open_headless_loop(const HeadlessOptions& o, std::vec
   lo.fault = o.fault;
   lo.brute_limit = o.brute_limit;
   lo.touching = o.touching;
+  lo.threads = o.threads;
   lo.max_contacts = o.max_contacts;
   // Past frames are kept when the run goes back to one, or draws the Timeline as the window would
   // (the window's default budget), or the user asks for a budget; else none.

@@ -9,6 +9,7 @@
 #include "app/commands.hpp"
 #include "app/dump_input.hpp"
 #include "app/grid_flags.hpp"
+#include "app/threads_flag.hpp"
 #include "core/detector.hpp"
 #include "core/error.hpp"
 #include "core/plugin_detector.hpp"
@@ -27,6 +28,7 @@ int run_pairs(Args& args) {
   options.max_pairs = static_cast<std::size_t>(args.integer("--max-pairs", 0, 1'000'000'000).value_or(kDefaultMaxPairs));
   const GridFlags grid_flags = take_grid_flags(args);
   options.touching = take_touching(args);
+  options.threads = take_threads(args);
   DumpFlags dump_flags = take_dump_flags(args);
   dump_flags.timestep = args.integer("--timestep", 0, std::numeric_limits<long long>::max());
   args.finish();

@@ -6,6 +6,7 @@
 
 #include "app/commands.hpp"
 #include "app/replay.hpp"
+#include "app/threads_flag.hpp"
 #include "core/error.hpp"
 #include "io/recording.hpp"
 
@@ -34,6 +35,7 @@ int run_replay(Args& args) {
   o.violation = args.integer("--violation", 1, 1'000'000'000).value_or(0);
   if (const auto mb = args.integer("--history-mb", 0, 1'000'000)) o.history_mb = *mb;
   o.touching = take_touching(args);
+  o.threads = take_threads(args);
   DumpFlags dump = take_dump_flags(args);
   dump.dumps = args.values("--dump");
   dump.contacts = args.values("--contacts");

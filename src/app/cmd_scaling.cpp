@@ -6,6 +6,7 @@
 
 #include "app/commands.hpp"
 #include "app/scaling_flags.hpp"
+#include "app/threads_flag.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/plural.hpp"
@@ -14,7 +15,8 @@
 namespace nbscope {
 
 int run_scaling_command(Args& args) {
-  const ScalingPlan plan = take_scaling_plan_flags(args, args.value("--algorithm").value_or("all"));
+  const std::string algorithms = args.value("--algorithm").value_or("all");
+  const ScalingPlan plan = take_scaling_plan_flags(args, algorithms, take_threads(args));
   const auto output = args.value("--output");
   const bool quiet = args.flag("--quiet");
   args.finish();

@@ -13,6 +13,7 @@
 #include "core/pairs.hpp"
 #include "app/commands.hpp"
 #include "app/dump_input.hpp"
+#include "app/threads_flag.hpp"
 #include "check/check.hpp"
 #include "app/view_options.hpp"
 #include "app/verify_run.hpp"
@@ -75,7 +76,7 @@ std::vector<verify::GivenPair> given_from_contacts(const DumpFrame& frame, const
 }
 
 int verify_pairs(const std::string& input, const std::string& pairs_path, const GridFlags& flags, int base,
-                 std::int64_t brute_limit, const DumpFlags& dump, Touching touching) {
+                 std::int64_t brute_limit, const DumpFlags& dump, Touching touching, int threads) {
   const InputFrame frame = read_input_frame(input, dump);
   const Elements& e = frame.elements;
   std::vector<verify::GivenPair> given;
@@ -88,6 +89,7 @@ int verify_pairs(const std::string& input, const std::string& pairs_path, const 
   }
   DetectOptions options;
   options.touching = touching;
+  options.threads = threads;  // nbs, the reference of a periodic frame above the limit
   options.grid = grid_options_for(flags, e.dim);
   // Above the limit sort; a periodic frame needs a detector that measures by the minimum image.
   const std::string reference = e.size() <= brute_limit ? "brute" : e.box.any() ? "nbs" : "sort";
@@ -190,6 +192,7 @@ int run_verify(Args& args) {
   const auto pairs = args.value("--pairs");
   const std::int64_t brute_limit = args.integer("--brute-limit", 0, 1'000'000).value_or(2000);
   const Touching touching = take_touching(args);
+  const int threads = take_threads(args);
   DumpFlags dump = take_dump_flags(args);
   dump.timestep = args.integer("--timestep", 0, std::numeric_limits<long long>::max());
   ViewOptions view;
@@ -210,7 +213,7 @@ int run_verify(Args& args) {
     if (in.algorithm) throw Error("--algorithm: only with --arrays (--pairs are checked against brute force, or sort above --brute-limit)");
     if (in.exact) throw Error("--exact: only with --arrays");
     if (view.screenshot) throw Error("--screenshot: only with --arrays (it draws your lists)");
-    return verify_pairs(in.elements_path, *pairs, in.grid_flags, in.base.value_or(0), brute_limit, dump, touching);
+    return verify_pairs(in.elements_path, *pairs, in.grid_flags, in.base.value_or(0), brute_limit, dump, touching, threads);
   }
   const VerifyArraysRun run = run_verify_arrays(in);
   const int status = report_arrays(in, run);

@@ -5,6 +5,7 @@
 #include "app/command_table_parts.hpp"
 #include "app/commands.hpp"
 #include "app/dump_input.hpp"
+#include "app/threads_flag.hpp"
 
 namespace nbscope {
 
@@ -200,7 +201,8 @@ CommandSpec headless_command() {
           "cgroup, MemAvailable) at ~1.7 kB a contact, whatever N says"},
          {"--scaling", "FILE.csv|run", "",
           "(with --screenshot) opens the Scaling panel on a CSV of nbscope scaling (a bad row: exit 2 naming FILE:LINE); --scaling run "
-          "measures first, as nbscope scaling does, the detectors of --algorithm on --layout, --n and --points-per-decade"},
+          "measures first, as nbscope scaling does, the detectors of --algorithm on --layout, --n and --points-per-decade (nbs at 1 "
+          "and --threads threads)"},
          {"--layout", "L[,L...]", "loose", "with --scaling run: the layouts, as nbscope scaling --layout"},
          {"--n", "MIN..MAX", "1000..1000000", "with --scaling run: the sizes, as nbscope scaling --n"},
          {"--points-per-decade", "K", "2", "with --scaling run: sizes a decade, as nbscope scaling --points-per-decade"}}},
@@ -276,9 +278,11 @@ const std::vector<CommandSpec>& command_table() {
   static const std::vector<CommandSpec> table = [] {
     std::vector<CommandSpec> t = {gui_command(), headless_command(), replay_command()};
     for (CommandSpec& c : file_commands()) t.push_back(std::move(c));
-    // The contact convention on every command that detects; the dump flags where frames are read.
+    // The contact convention and the threads on every command that detects (dump's arrays are its
+    // traced run, the book's serial loops: no threads); the dump flags where frames are read.
     for (CommandSpec& c : t) {
       const std::string name = c.name;
+      if (name != "algorithms" && name != "dump") c.groups.front().options.push_back(threads_option());
       if (name == "algorithms" || name == "scaling") continue;
       c.groups.front().options.push_back(touching_option());
       if (name == "replay") c.groups.insert(c.groups.begin() + 1, {"frames from LAMMPS and LIGGGHTS dumps (docs/dem.md)", dump_replay_options()});

@@ -21,7 +21,7 @@ CommandSpec pairs_command() {
       run_pairs,
       "contact pairs of an elements file as CSV",
       {"nbscope pairs --input ELEMENTS.csv [--algorithm NAME] [--output PAIRS.csv] [--repeat K]",
-       "              [--cell-size D] [--origin X,Y[,Z]] [--cells NX,NY[,NZ]] [--max-pairs M]"},
+       "              [--cell-size D] [--origin X,Y[,Z]] [--cells NX,NY[,NZ]] [--max-pairs M] [--threads N]"},
       {"Contact pairs of the elements (rows x,y,r or x,y,z,r) as CSV \"i,j\" (0-based, i < j, sorted), to PAIRS.csv or stdout. "
        "Detection time (without I/O) and pair count go to stderr."},
       {{"options", with_grid({{"--input", "ELEMENTS.csv", "", "the elements, one x,y,r or x,y,z,r a row (required)"},
@@ -103,11 +103,13 @@ CommandSpec scaling_command() {
       run_scaling_command,
       "times detectors on generated layouts against N (ns and bytes per element)",
       {"nbscope scaling [--algorithm NAME[,NAME...]|all] [--layout NAME[,NAME...]] [--n MIN..MAX]",
-       "                [--points-per-decade K] [--output OUT.csv] [--quiet]"},
+       "                [--points-per-decade K] [--threads N] [--output OUT.csv] [--quiet]"},
       {"Times every detector named on generated layouts at N from MIN to MAX, K sizes a decade on a log scale: each point's best of a "
        "few detect() runs (repeated for at least 0.05 s, at most 0.2 s). Prints a table (ns per element, bytes of the detector's own "
-       "arrays per element, pairs, repeats) and writes it as CSV \"algorithm,layout,n,ns_per_element,bytes_per_element,pairs,repeats\", "
-       "one row per (detector, layout, N).",
+       "arrays per element, pairs, repeats, threads) and writes it as CSV "
+       "\"algorithm,layout,n,ns_per_element,bytes_per_element,pairs,repeats,threads\", one row per (detector, threads, layout, N).",
+       "--threads N compares one thread with N: nbs, which detects bands of rows on threads, is measured at 1 and at N (\"nbs\" and "
+       "\"nbs xN\"), every other detector once, at 1.",
        "brute is skipped above N = 10,000, and a detector whose one run would take over 2 s at an N (its last time, scaled by N) is "
        "skipped there (noted). A progress bar on stderr when it is a terminal. The window's Scaling panel (View menu) runs the same in "
        "the background and plots it; nbscope headless --scaling renders that panel."},

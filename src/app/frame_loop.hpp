@@ -67,6 +67,9 @@ struct FrameLoopOptions {
   bool log_violations = true;
   // Whether a pair at exactly zero gap is a contact, for every detector and the check (--touching).
   Touching touching = Touching::inclusive;
+  // Threads each detection of the run may use (--threads; DetectOptions::threads); the traced run
+  // the stepper and the lists overlay show stays on one.
+  int threads = 1;
 };
 
 // What the loop last did to the frame shown, with a counter: views compare it with the generation

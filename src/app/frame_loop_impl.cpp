@@ -101,6 +101,7 @@ void FrameLoopState::build(const Scene& s) {
   check_recorded_source(pipeline.has_recorded_lane(), nullptr, s.path);
   DetectOptions opts;
   opts.touching = options.touching;
+  opts.threads = options.threads;
   opts.grid = s.grid;
   // No Box2D call beside the worker's; if the new scene is refused, the step in flight stays pending.
   wait_for_worker();
@@ -138,6 +139,7 @@ void FrameLoopState::build(std::shared_ptr<const Recording> rec) {
   discard_step();  // the world it steps goes
   DetectOptions opts;
   opts.touching = options.touching;
+  opts.threads = options.threads;
   Scene s;
   s.path = rec->path;
   s.name = std::filesystem::path(rec->path).stem().string();

@@ -70,6 +70,7 @@ void LoopPipeline::set_checks_enabled(bool on) {
 }
 bool LoopPipeline::checks_enabled() const { return s_->pipeline.options().checks; }
 Touching LoopPipeline::touching() const { return s_->pipeline.detect_options().touching; }
+int LoopPipeline::threads() const { return s_->options.threads; }
 std::string LoopPipeline::reference_policy() const { return s_->pipeline.reference_policy(); }
 std::string LoopPipeline::scope_note() { return FrameChecker::scope_note(); }
 

@@ -98,6 +98,8 @@ class LoopPipeline {
   [[nodiscard]] bool checks_enabled() const;
   // Whether a pair at exactly zero gap is a contact (--touching), for every lane and the check.
   [[nodiscard]] Touching touching() const;
+  // Threads each detection may use (--threads; the traced run uses one).
+  [[nodiscard]] int threads() const;
   // How R is chosen, in words (for the UI and reports).
   [[nodiscard]] std::string reference_policy() const;
   // Which pairs A-in-F applies to, in words.

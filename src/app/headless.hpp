@@ -51,6 +51,7 @@ struct HeadlessOptions {
                                            // --rewind, --back, --violation or --screenshot, else none)
   std::optional<std::int64_t> max_contacts;  // --max-contacts N: Box2D contacts a frame may create
   Touching touching = Touching::inclusive;   // --touching: whether a pair at zero gap is a contact
+  int threads = 1;                           // --threads N: threads one detection may use (and --scaling run's plan)
   std::optional<DumpFlags> dump;             // replay --dump: frames from LAMMPS/LIGGGHTS dumps (`replay` names the first)
   std::optional<DumpFlags> input;            // gui --input FILE: ELEMENTS.csv or a dump (`replay` names it), no pairs
 };

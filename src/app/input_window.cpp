@@ -7,6 +7,7 @@
 #include "app/commands.hpp"
 #include "app/dump_input.hpp"
 #include "app/replay.hpp"
+#include "app/threads_flag.hpp"
 #include "app/window_pacing.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -21,6 +22,7 @@ int run_input_gui(Args& args) {
   o.algorithm = args.value("--algorithm").value_or(o.algorithm);
   if (const auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);
   o.touching = take_touching(args);
+  o.threads = take_threads(args);
   DumpFlags dump = take_dump_flags(args);
   if (dump.columns.numbers || dump.columns.names)
     throw Error("--contact-ids: gui --input reads no contacts (replay --dump FILES --contacts FILES reads a dump's contacts)");

@@ -76,9 +76,10 @@ void parse_n_range(const std::string& flag, const std::string& text, std::int64_
   out_max = *hi;
 }
 
-ScalingPlan take_scaling_plan_flags(Args& args, const std::string& algorithms, bool* given) {
+ScalingPlan take_scaling_plan_flags(Args& args, const std::string& algorithms, int threads, bool* given) {
   ScalingPlan plan;
   plan.algorithms = parse_scaling_algorithms("--algorithm", algorithms);
+  plan.threads = scaling_threads(threads);
   const auto layouts = args.value("--layout");
   if (layouts) plan.layouts = parse_scaling_layouts("--layout", *layouts);
   plan.n_max = 1'000'000;
@@ -120,12 +121,12 @@ ScalingResult run_scaling_in_terminal(const ScalingPlan& plan, bool bar) {
 std::string scaling_table(const ScalingResult& result) {
   std::string out;
   char line[200];
-  std::snprintf(line, sizeof line, "%-9s %-13s %10s %14s %14s %12s %8s\n", "algorithm", "layout", "n", "ns/element", "bytes/element",
-                "pairs", "repeats");
+  std::snprintf(line, sizeof line, "%-9s %-13s %10s %14s %14s %12s %8s %8s\n", "algorithm", "layout", "n", "ns/element", "bytes/element",
+                "pairs", "repeats", "threads");
   out += line;
   for (const ScalingRow& r : result.rows) {
-    std::snprintf(line, sizeof line, "%-9s %-13s %10s %14.2f %14.2f %12lld %8d\n", r.algorithm.c_str(), r.layout.c_str(),
-                  n_text(r.n).c_str(), r.ns_per_element, r.bytes_per_element, static_cast<long long>(r.pairs), r.repeats);
+    std::snprintf(line, sizeof line, "%-9s %-13s %10s %14.2f %14.2f %12lld %8d %8d\n", r.algorithm.c_str(), r.layout.c_str(),
+                  n_text(r.n).c_str(), r.ns_per_element, r.bytes_per_element, static_cast<long long>(r.pairs), r.repeats, r.threads);
     out += line;
   }
   for (const std::string& note : result.notes) out += "note: " + note + "\n";

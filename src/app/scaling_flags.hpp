@@ -20,9 +20,10 @@ std::vector<std::string> parse_scaling_algorithms(const std::string& flag, const
 std::vector<Layout> parse_scaling_layouts(const std::string& flag, const std::string& text);
 // "MIN..MAX" or "N" (whole numbers, or 1e3-style powers) into n_min, n_max; Error names `flag`.
 void parse_n_range(const std::string& flag, const std::string& text, std::int64_t& out_min, std::int64_t& out_max);
-// A plan of the detectors `algorithms` (an --algorithm value: names or "all") and --layout, --n and
-// --points-per-decade taken from `args`; Error on bad values. `given` tells whether any of the three was.
-ScalingPlan take_scaling_plan_flags(Args& args, const std::string& algorithms, bool* given = nullptr);
+// A plan of the detectors `algorithms` (an --algorithm value: names or "all"), the thread counts of
+// --threads `threads` (scaling_threads: 1 and N) and --layout, --n and --points-per-decade taken from
+// `args`; Error on bad values. `given` tells whether any of the three was.
+ScalingPlan take_scaling_plan_flags(Args& args, const std::string& algorithms, int threads, bool* given = nullptr);
 
 // Runs `plan` on this thread, with a one-line progress bar on stderr when `bar` is set.
 ScalingResult run_scaling_in_terminal(const ScalingPlan& plan, bool bar);

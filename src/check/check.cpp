@@ -115,6 +115,7 @@ void FrameChecker::start_frame(std::int64_t frame, const Elements& elements, con
   elements_ = &elements;
   frame_ = frame;
   detect_options_ = options;
+  detect_options_.threads = 1;  // R (nbs when sort is tested) on the serial loops: independent of the bands
   frame_reference_count_ = 0;
   r_ = kNoReference;
   shared_ = {};

@@ -137,6 +137,9 @@ struct DetectorInfo {
   // It finds contacts across a periodic boundary (Elements::box) by the minimum image; false: it
   // refuses a periodic frame with an Error naming itself (nbs and brute are the two that wrap).
   bool periodic = false;
+  // It detects on DetectOptions::threads threads (nbs's bands); false: one thread whatever it is
+  // given, so a scaling plan measures it once, at 1.
+  bool uses_threads = false;
   std::function<std::unique_ptr<Detector>()> make;
 };
 

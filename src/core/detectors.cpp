@@ -30,7 +30,7 @@ std::vector<DetectorInfo> builtin_detectors() {
   d.push_back({.name = "nbs",
                .summary = "Munjiza-NBS: y-lists (3D: z-lists first), then x-lists row by row; O(N) time and memory",
                .dim2 = true, .dim3 = true, .traces = true, .has_lists = true, .periodic = true,
-               .make = [] { return std::make_unique<NbsDetector>(); }});
+               .uses_threads = true, .make = [] { return std::make_unique<NbsDetector>(); }});
   return d;
 }
 

@@ -35,7 +35,9 @@ std::shared_ptr<const FrameTrace> trace_frame(Detector& detector, const Elements
                    std::to_string(kMaxTracedBruteTests) + "); step through a smaller scene or a grid algorithm";
     return out;
   }
-  detector.detect_traced(elements, options, out->pairs, out->log);
+  DetectOptions serial = options;
+  serial.threads = 1;  // the stepper walks the book's serial loops, whatever the run's --threads
+  detector.detect_traced(elements, serial, out->pairs, out->log);
   if (out->log.events().empty()) {
     std::string tracing;
     for (const DetectorInfo& d : detector_infos())

@@ -15,8 +15,22 @@ namespace {
 
 bool cancelled(const std::atomic<bool>* cancel) { return cancel != nullptr && cancel->load(std::memory_order_relaxed); }
 
-std::string point_name(const std::string& algorithm, Layout layout, std::int64_t n) {
-  return algorithm + " " + layout_name(layout) + " N=" + std::to_string(n);
+std::string point_name(const std::string& series, Layout layout, std::int64_t n) {
+  return series + " " + layout_name(layout) + " N=" + std::to_string(n);
+}
+
+// One measured curve: a detector at one thread count.
+struct Series {
+  std::string algorithm;
+  int threads = 1;
+};
+
+// The plan's series: each detector in plan order, at each of its thread counts.
+std::vector<Series> series_of(const ScalingPlan& plan) {
+  std::vector<Series> out;
+  for (const std::string& a : plan.algorithms)
+    for (int t : threads_measured(plan, a)) out.push_back({a, t});
+  return out;
 }
 
 // The size a detector's time is first measured at when a plan starts above it (for the projection).
@@ -26,6 +40,7 @@ constexpr std::int64_t kPilotN = 10'000;
 bool measure(Detector& detector, const Elements& elements, const ScalingPlan& plan, const std::atomic<bool>* cancel,
              ScalingRow& row) {
   DetectOptions options;
+  options.threads = row.threads;
   PairList pairs;
   double best = HUGE_VAL, spent = 0;
   while (row.repeats < plan.max_repeats) {
@@ -71,8 +86,27 @@ std::vector<std::int64_t> scaling_sizes(std::int64_t n_min, std::int64_t n_max, 
   return sizes;
 }
 
+std::vector<int> scaling_threads(int n) { return n > 1 ? std::vector<int>{1, n} : std::vector<int>{1}; }
+
+std::vector<int> threads_measured(const ScalingPlan& plan, const std::string& algorithm) {
+  if (!detector_info(algorithm).uses_threads) return {1};
+  return plan.threads;
+}
+
+std::string series_name(const std::string& algorithm, int threads) {
+  return threads == 1 ? algorithm : algorithm + " x" + std::to_string(threads);
+}
+
 std::size_t scaling_point_count(const ScalingPlan& plan) {
-  return plan.algorithms.size() * plan.layouts.size() * scaling_sizes(plan.n_min, plan.n_max, plan.points_per_decade).size();
+  std::size_t series = 0;
+  for (const std::string& a : plan.algorithms) {
+    try {
+      series += threads_measured(plan, a).size();
+    } catch (const Error&) {
+      ++series;  // an unknown name: check_scaling_plan says so; counted once meanwhile
+    }
+  }
+  return series * plan.layouts.size() * scaling_sizes(plan.n_min, plan.n_max, plan.points_per_decade).size();
 }
 
 void check_scaling_plan(const ScalingPlan& plan) {
@@ -87,13 +121,25 @@ void check_scaling_plan(const ScalingPlan& plan) {
     throw Error("scaling: N from " + std::to_string(plan.n_min) + " to " + std::to_string(plan.n_max) +
                 " is not a range from 1 to " + std::to_string(kMaxElements));
   if (plan.points_per_decade < 1) throw Error("scaling: points per decade must be at least 1");
+  if (plan.threads.empty()) throw Error("scaling: no thread count chosen");
+  for (std::size_t i = 0; i < plan.threads.size(); ++i) {
+    if (plan.threads[i] < 1 || plan.threads[i] > kMaxThreads)
+      throw Error("scaling: " + std::to_string(plan.threads[i]) + " threads is not from 1 to " + std::to_string(kMaxThreads));
+    if (std::find(plan.threads.begin(), plan.threads.begin() + static_cast<std::ptrdiff_t>(i), plan.threads[i]) !=
+        plan.threads.begin() + static_cast<std::ptrdiff_t>(i))
+      throw Error("scaling: " + std::to_string(plan.threads[i]) + " threads given twice");
+  }
 }
 
 ScalingPlan plan_covering(const std::vector<ScalingRow>& rows) {
   ScalingPlan plan;
   plan.algorithms.clear();
   plan.layouts.clear();
-  if (rows.empty()) return plan;
+  plan.threads.clear();
+  if (rows.empty()) {
+    plan.threads = {1};
+    return plan;
+  }
   plan.n_min = plan.n_max = rows.front().n;
   std::vector<std::int64_t> sizes;
   for (const ScalingRow& r : rows) {
@@ -105,7 +151,9 @@ ScalingPlan plan_covering(const std::vector<ScalingRow>& rows) {
     plan.n_min = std::min(plan.n_min, r.n);
     plan.n_max = std::max(plan.n_max, r.n);
     if (std::find(sizes.begin(), sizes.end(), r.n) == sizes.end()) sizes.push_back(r.n);
+    if (std::find(plan.threads.begin(), plan.threads.end(), r.threads) == plan.threads.end()) plan.threads.push_back(r.threads);
   }
+  std::sort(plan.threads.begin(), plan.threads.end());
   const double decades = std::log10(static_cast<double>(plan.n_max) / static_cast<double>(plan.n_min));
   plan.points_per_decade =
       decades > 0 ? std::max(1, static_cast<int>(std::lround(static_cast<double>(sizes.size() - 1) / decades))) : 1;
@@ -116,9 +164,10 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
                           const std::atomic<bool>* cancel) {
   check_scaling_plan(plan);
   const std::vector<std::int64_t> sizes = scaling_sizes(plan.n_min, plan.n_max, plan.points_per_decade);
+  const std::vector<Series> series = series_of(plan);
   ScalingResult result;
   ScalingProgress p;
-  p.total = plan.algorithms.size() * plan.layouts.size() * sizes.size();
+  p.total = series.size() * plan.layouts.size() * sizes.size();
   const auto report = [&](const std::string& point, const ScalingRow* row, const std::string& note) {
     ++p.done;
     p.point = point;
@@ -128,17 +177,19 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
     if (progress) progress(p);
   };
   for (Layout layout : plan.layouts) {
-    // Per detector: its last measured N in this layout and the seconds of its best run there.
-    std::vector<std::pair<std::int64_t, double>> last(plan.algorithms.size(), {0, 0.0});
+    // Per series: its last measured N in this layout and the seconds of its best run there.
+    std::vector<std::pair<std::int64_t, double>> last(series.size(), {0, 0.0});
     for (std::int64_t n : sizes) {
       if (cancelled(cancel)) {
         result.cancelled = true;
         return result;
       }
       const Elements elements = make_layout(layout, n, 2, plan.seed);  // once for every detector
-      for (std::size_t a = 0; a < plan.algorithms.size(); ++a) {
-        const std::string& name = plan.algorithms[a];
-        const std::string point = point_name(name, layout, n);
+      for (std::size_t a = 0; a < series.size(); ++a) {
+        const std::string& name = series[a].algorithm;
+        DetectOptions options;
+        options.threads = series[a].threads;
+        const std::string point = point_name(series_name(name, options.threads), layout, n);
         if (name == "brute" && n > plan.brute_max_n) {
           report(point, nullptr, "skipped: brute force is capped at N <= " + std::to_string(plan.brute_max_n));
           continue;
@@ -150,7 +201,7 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
             const Elements pilot = make_layout(layout, kPilotN, 2, plan.seed);
             PairList pairs;
             const auto t0 = std::chrono::steady_clock::now();
-            make_detector(name)->detect(pilot, DetectOptions{}, pairs);
+            make_detector(name)->detect(pilot, options, pairs);
             last[a] = {kPilotN, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
           } catch (const Error&) {
             // the point itself reports what is wrong
@@ -166,7 +217,7 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
             continue;
           }
         }
-        ScalingRow row{name, layout_name(layout), n, 0, 0, 0, 0};
+        ScalingRow row{name, layout_name(layout), n, 0, 0, 0, 0, options.threads};
         try {
           // A fresh detector per point: one kept across points keeps the arrays of the biggest run
           // before it, and its bytes per element would be that run's, not this point's own need.

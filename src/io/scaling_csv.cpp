@@ -18,7 +18,7 @@ namespace nbscope {
 namespace {
 
 constexpr std::size_t kMaxScalingCsvBytes = std::size_t{64} << 20;
-constexpr std::size_t kColumns = 7;
+constexpr std::size_t kColumns = 8;
 
 // The shortest text that reads back as exactly `v`.
 std::string exact(double v) {
@@ -50,7 +50,7 @@ void write_scaling_csv(std::ostream& out, const std::vector<ScalingRow>& rows) {
   out << kScalingCsvHeader << '\n';
   for (const ScalingRow& r : rows)
     out << r.algorithm << ',' << r.layout << ',' << r.n << ',' << exact(r.ns_per_element) << ','
-        << exact(r.bytes_per_element) << ',' << r.pairs << ',' << r.repeats << '\n';
+        << exact(r.bytes_per_element) << ',' << r.pairs << ',' << r.repeats << ',' << r.threads << '\n';
 }
 
 void write_scaling_csv(const std::string& path, const std::vector<ScalingRow>& rows) {
@@ -59,24 +59,27 @@ void write_scaling_csv(const std::string& path, const std::vector<ScalingRow>& r
 
 std::vector<ScalingRow> parse_scaling_csv(const std::string& text, const std::string& where) {
   std::vector<ScalingRow> rows;
-  std::set<std::tuple<std::string, std::string, std::int64_t>> seen;
+  std::set<std::tuple<std::string, int, std::string, std::int64_t>> seen;
   std::istringstream in(text);
   std::string raw;
   bool header = false;
+  std::size_t columns = kColumns;  // 7 in a file of the header without threads
   for (long long line = 1; std::getline(in, raw); ++line) {
     check_line_length(raw, where, static_cast<std::size_t>(line));
     const std::string_view content = strip_comment(raw);
     if (content.empty()) continue;
     const std::string at = where + ":" + std::to_string(line) + ": ";
     if (!header) {
-      if (content != kScalingCsvHeader)
+      if (content != kScalingCsvHeader && content != kScalingCsvHeaderOneThread)
         throw Error(at + "expected the header '" + kScalingCsvHeader + "' (a CSV of nbscope scaling)");
+      if (content == kScalingCsvHeaderOneThread) columns = kColumns - 1;
       header = true;
       continue;
     }
     const std::vector<std::string_view> f = split_fields(content);
-    if (f.size() != kColumns)
-      throw Error(at + std::to_string(f.size()) + " columns; expected " + std::to_string(kColumns) + " (" + kScalingCsvHeader + ")");
+    if (f.size() != columns)
+      throw Error(at + std::to_string(f.size()) + " columns; expected " + std::to_string(columns) + " (" +
+                  (columns == kColumns ? kScalingCsvHeader : kScalingCsvHeaderOneThread) + ")");
     ScalingRow r;
     r.algorithm = std::string(f[0]);
     bool known = false;
@@ -90,8 +93,13 @@ std::vector<ScalingRow> parse_scaling_csv(const std::string& text, const std::st
     r.bytes_per_element = parse_amount(f[4], at, "bytes_per_element");
     r.pairs = parse_count(f[5], at, "pairs", 0);
     r.repeats = static_cast<int>(std::min<std::int64_t>(parse_count(f[6], at, "repeats", 1), 1'000'000'000));
-    if (!seen.emplace(r.algorithm, r.layout, r.n).second)
-      throw Error(at + r.algorithm + " " + r.layout + " N=" + std::to_string(r.n) + " is given twice");
+    if (columns == kColumns) {
+      const std::int64_t threads = parse_count(f[7], at, "threads", 1);
+      if (threads > kMaxThreads) throw Error(at + "threads: " + std::to_string(threads) + " is more than " + std::to_string(kMaxThreads));
+      r.threads = static_cast<int>(threads);
+    }
+    if (!seen.emplace(r.algorithm, r.threads, r.layout, r.n).second)
+      throw Error(at + series_name(r.algorithm, r.threads) + " " + r.layout + " N=" + std::to_string(r.n) + " is given twice");
     rows.push_back(std::move(r));
   }
   if (!header) throw Error(where + ": no header; expected '" + kScalingCsvHeader + "' (a CSV of nbscope scaling)");

@@ -73,6 +73,7 @@ struct SimView {
   std::string algorithm;
   std::string error;  // the last failed request (bad scene file, ...), shown in red
   Touching touching = Touching::inclusive;  // the contact convention (--touching), shown in Stats
+  int threads = 1;  // threads a detection may use (--threads): the Scaling panel compares 1 and this
   // The atom ids of recorded frame F's rows (a dump's, LoopSource::element_ids), or null (unset, or
   // the rows are the elements): every panel names an element by them.
   std::function<const std::vector<std::int64_t>*(std::int64_t frame)> element_ids;

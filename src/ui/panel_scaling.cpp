@@ -71,12 +71,14 @@ class ScalingPanel final : public Panel {
       draw_scaling_plot(ns_title, ScalingQuantity::NsPerElement, s.result.rows, plot_h);
       draw_scaling_plot(bytes_title, ScalingQuantity::BytesPerElement, s.result.rows, plot_h);
     }
-    std::vector<std::string> algorithms, layouts;
+    std::vector<SeriesKey> series;
+    std::vector<std::string> layouts;
     for (const ScalingRow& r : s.result.rows) {
-      if (std::find(algorithms.begin(), algorithms.end(), r.algorithm) == algorithms.end()) algorithms.push_back(r.algorithm);
+      const SeriesKey key{r.algorithm, r.threads};
+      if (std::find(series.begin(), series.end(), key) == series.end()) series.push_back(key);
       if (std::find(layouts.begin(), layouts.end(), r.layout) == layouts.end()) layouts.push_back(r.layout);
     }
-    if (!s.result.rows.empty()) draw_scaling_legend(algorithms, layouts);
+    if (!s.result.rows.empty()) draw_scaling_legend(series, layouts);
     draw_export(s);
   }
 
@@ -91,6 +93,7 @@ class ScalingPanel final : public Panel {
     for (Layout l : s.plan.layouts)
       for (std::size_t i = 0; i < scaling_layouts().size(); ++i)
         if (scaling_layouts()[i] == l) chosen_layouts_[i] = true;
+    if (!s.plan.threads.empty()) threads_ = *std::max_element(s.plan.threads.begin(), s.plan.threads.end());  // 1 and N, or 1
     n_min_ = size_index(s.plan.n_min);
     n_max_ = std::max(n_min_, size_index(s.plan.n_max));
     per_decade_ = std::clamp(s.plan.points_per_decade, 1, static_cast<int>(std::size(kPerDecadeLabels)));
@@ -145,6 +148,8 @@ class ScalingPanel final : public Panel {
     plan.n_min = kSizes[n_min_];
     plan.n_max = kSizes[n_max_];
     plan.points_per_decade = per_decade_;
+    // nbs at 1 and N threads (the window's --threads, or the rows shown last): two series.
+    plan.threads = scaling_threads(threads_ > 0 ? threads_ : sim.threads);
     return plan;
   }
 
@@ -226,6 +231,7 @@ class ScalingPanel final : public Panel {
   std::vector<bool> chosen_layouts_;
   int n_min_ = 1, n_max_ = 3;  // 1e3 .. 1e5
   int per_decade_ = 2;
+  int threads_ = 0;  // the N of 1 and N threads, once a run or a CSV set it (0: the window's --threads)
   char export_path_[512] = {};
   std::string export_message_;
   bool export_failed_ = false;

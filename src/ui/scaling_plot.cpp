@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <tuple>
 
 #include "core/detector.hpp"
 #include "ui/panel.hpp"
@@ -83,6 +84,14 @@ std::uint32_t detector_colour(const std::string& algorithm) {
   return kColours[std::size(kColours) - 1];
 }
 
+std::uint32_t series_colour(const std::string& algorithm, int threads) {
+  const ImU32 c = detector_colour(algorithm);
+  if (threads <= 1) return c;
+  // Halfway to white: the same hue, told apart from the one-thread curve beside it.
+  const auto lighter = [c](int shift) { return ((((c >> shift) & 0xFF) + 255) / 2) << shift; };
+  return lighter(IM_COL32_R_SHIFT) | lighter(IM_COL32_G_SHIFT) | lighter(IM_COL32_B_SHIFT) | (c & IM_COL32_A_MASK);
+}
+
 int layout_marker(const std::string& layout) {
   const auto& offered = scaling_layouts();
   for (std::size_t i = 0; i < offered.size(); ++i)
@@ -117,17 +126,19 @@ void draw_scaling_plot(const char* title, ScalingQuantity quantity, const std::v
   const float top = origin.y + 4.0f, bottom = origin.y + height - font * 1.4f;
   dl->AddRectFilled(ImVec2(left, top), ImVec2(right, bottom), kPlotBackground);
 
-  // The series: one per (detector, layout), by N; values <= 0 left out.
-  std::map<std::pair<std::string, std::string>, std::vector<const ScalingRow*>> series;
-  std::vector<std::pair<std::string, std::string>> order;
+  // The series: one per (detector, threads, layout), by N; values <= 0 left out.
+  using Key = std::tuple<std::string, int, std::string>;
+  std::map<Key, std::vector<const ScalingRow*>> series;
+  std::vector<Key> order;
   std::vector<double> xs, ys;
   std::vector<std::string> not_drawn;
   for (const ScalingRow& r : rows) {
     if (value_of(r, quantity) <= 0) {
-      if (std::find(not_drawn.begin(), not_drawn.end(), r.algorithm) == not_drawn.end()) not_drawn.push_back(r.algorithm);
+      const std::string name = series_name(r.algorithm, r.threads);
+      if (std::find(not_drawn.begin(), not_drawn.end(), name) == not_drawn.end()) not_drawn.push_back(name);
       continue;
     }
-    const auto key = std::make_pair(r.algorithm, r.layout);
+    const Key key{r.algorithm, r.threads, r.layout};
     if (!series.count(key)) order.push_back(key);
     series[key].push_back(&r);
     xs.push_back(static_cast<double>(r.n));
@@ -139,13 +150,13 @@ void draw_scaling_plot(const char* title, ScalingQuantity quantity, const std::v
   }
   for (auto& [key, points] : series)
     std::sort(points.begin(), points.end(), [](const ScalingRow* a, const ScalingRow* b) { return a->n < b->n; });
-  // The references start at nbs's first point (else the lowest first point of a series): flat for
-  // O(N) per element, rising as log N for O(N log N). Their ends are part of the range.
+  // The references start at nbs's first point on one thread (else the lowest first point of a
+  // series): flat for O(N) per element, rising as log N for O(N log N). Their ends are part of the range.
   const ScalingRow* anchor = series[order.front()].front();
   for (const auto& key : order) {
     const ScalingRow* first = series[key].front();
-    const bool anchor_is_nbs = anchor->algorithm == "nbs";
-    if ((key.first == "nbs" && !anchor_is_nbs) || (!anchor_is_nbs && value_of(*first, quantity) < value_of(*anchor, quantity)))
+    const bool anchor_is_nbs = anchor->algorithm == "nbs" && anchor->threads == 1;
+    if ((std::get<0>(key) == "nbs" && std::get<1>(key) == 1 && !anchor_is_nbs) || (!anchor_is_nbs && value_of(*first, quantity) < value_of(*anchor, quantity)))
       anchor = first;
   }
   const double x0 = static_cast<double>(anchor->n), y0 = value_of(*anchor, quantity);
@@ -196,8 +207,8 @@ void draw_scaling_plot(const char* title, ScalingQuantity quantity, const std::v
   const ScalingRow* hovered = nullptr;
   for (const auto& key : order) {
     const auto& points = series[key];
-    const ImU32 colour = detector_colour(key.first);
-    const int marker = layout_marker(key.second);
+    const ImU32 colour = series_colour(std::get<0>(key), std::get<1>(key));
+    const int marker = layout_marker(std::get<2>(key));
     for (std::size_t i = 0; i + 1 < points.size(); ++i)
       styled_line(dl, ImVec2(sx(static_cast<double>(points[i]->n)), sy(value_of(*points[i], quantity))),
                   ImVec2(sx(static_cast<double>(points[i + 1]->n)), sy(value_of(*points[i + 1], quantity))), colour, marker);
@@ -212,7 +223,8 @@ void draw_scaling_plot(const char* title, ScalingQuantity quantity, const std::v
   dl->AddText(ImVec2(right + 4, sy(nlogn(x_end)) - font * (sy(nlogn(x_end)) > sy(y0) - font ? 1.5f : 0.5f)), kReference,
               "O(N log N)");
   if (hovered != nullptr && ImGui::IsWindowHovered())
-    ImGui::SetTooltip("%s %s N=%lld: %.2f %s, %lld pairs, %d repeats", hovered->algorithm.c_str(), hovered->layout.c_str(),
+    ImGui::SetTooltip("%s %s N=%lld: %.2f %s, %lld pairs, %d repeats", series_name(hovered->algorithm, hovered->threads).c_str(),
+                      hovered->layout.c_str(),
                       static_cast<long long>(hovered->n), value_of(*hovered, quantity),
                       quantity == ScalingQuantity::NsPerElement ? "ns/element" : "bytes/element",
                       static_cast<long long>(hovered->pairs), hovered->repeats);
@@ -223,7 +235,7 @@ void draw_scaling_plot(const char* title, ScalingQuantity quantity, const std::v
   }
 }
 
-void draw_scaling_legend(const std::vector<std::string>& algorithms, const std::vector<std::string>& layouts) {
+void draw_scaling_legend(const std::vector<SeriesKey>& series, const std::vector<std::string>& layouts) {
   const float font = ImGui::GetFontSize();
   ImDrawList* dl = ImGui::GetWindowDrawList();
   bool first = true;
@@ -238,8 +250,9 @@ void draw_scaling_legend(const std::vector<std::string>& algorithms, const std::
     draw_symbol(p.x, p.y + font * 0.5f);
     dl->AddText(ImVec2(p.x + symbol_w + 4, p.y), ImGui::GetColorU32(ImGuiCol_Text), label.c_str());
   };
-  for (const std::string& a : algorithms)
-    key(a, 10, [&](float x, float y) { dl->AddRectFilled(ImVec2(x, y - 5), ImVec2(x + 10, y + 5), detector_colour(a)); });
+  for (const SeriesKey& s : series)
+    key(series_name(s.algorithm, s.threads), 10,
+        [&](float x, float y) { dl->AddRectFilled(ImVec2(x, y - 5), ImVec2(x + 10, y + 5), series_colour(s.algorithm, s.threads)); });
   const ImU32 grey = IM_COL32(220, 220, 220, 255);
   for (const std::string& l : layouts)
     key(l, 28, [&](float x, float y) {

@@ -44,6 +44,7 @@ const std::vector<ParserFile>& parser_files() {
       {"dump_input.cpp", {"replay", "pairs", "dump", "verify", "gui"}, {"--contact-ids"}},
       {"input_window.cpp", {"gui"}, {}},
       {"touching_flag.cpp", {"gui", "headless", "replay", "pairs", "dump", "verify"}, {}},
+      {"threads_flag.cpp", {"gui", "headless", "replay", "pairs", "verify", "scaling"}, {}},
       {"view_options.cpp", {"headless", "replay", "verify", "gui"}, {"--gl"}},
       {"scaling_flags.cpp", {"scaling", "headless"}, {}},
       {"cli_plugins.cpp", {"gui", "headless", "replay", "pairs", "dump", "scaling", "algorithms"}, {}},  // from main

@@ -19,7 +19,7 @@ using testcli::run;
 using testcli::scratch_dir;
 using testcli::write_text;
 
-const std::string kHeader = "algorithm,layout,n,ns_per_element,bytes_per_element,pairs,repeats";
+const std::string kHeader = "algorithm,layout,n,ns_per_element,bytes_per_element,pairs,repeats,threads";
 
 std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
   std::vector<std::vector<std::string>> rows;
@@ -37,33 +37,41 @@ std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
   return rows;
 }
 
-TEST(ScalingCli, OneRowPerDetectorLayoutAndSize) {
+TEST(ScalingCli, OneRowPerDetectorThreadsLayoutAndSize) {
   const std::string dir = scratch_dir("scaling_cli");
-  const auto r = run("scaling --algorithm nbs,sort --layout loose,dense --n 1000..4000 --output '" + dir + "/x.csv'");
+  const auto r = run("scaling --algorithm nbs,sort --layout loose,dense --n 1000..4000 --points-per-decade 1 --threads 2 --output '" + dir + "/x.csv'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto rows = csv_rows(read_text(dir + "/x.csv"));
-  std::set<std::tuple<std::string, std::string, std::string>> got;
+  std::set<std::tuple<std::string, std::string, std::string, std::string>> got;
   for (const auto& row : rows) {
-    ASSERT_EQ(row.size(), 7u);
-    EXPECT_TRUE(got.emplace(row[0], row[1], row[2]).second) << row[0] << " " << row[1] << " " << row[2] << " twice";
+    ASSERT_EQ(row.size(), 8u);
+    EXPECT_TRUE(got.emplace(row[0], row[7], row[1], row[2]).second) << row[0] << " " << row[1] << " " << row[2] << " twice";
   }
-  // --n 1000..4000 at 2 points a decade: 1000, 3162 and the end, 4000.
-  std::set<std::tuple<std::string, std::string, std::string>> expected;
-  for (const char* a : {"nbs", "sort"})
+  // --n 1000..4000 at 1 point a decade: 1000 and the end, 4000; nbs on 1 and 2 threads, sort on 1.
+  std::set<std::tuple<std::string, std::string, std::string, std::string>> expected;
+  for (const auto& [a, t] : {std::pair{"nbs", "1"}, std::pair{"nbs", "2"}, std::pair{"sort", "1"}})
     for (const char* l : {"loose", "dense"})
-      for (const char* n : {"1000", "3162", "4000"}) expected.emplace(a, l, n);
+      for (const char* n : {"1000", "4000"}) expected.emplace(a, t, l, n);
   EXPECT_EQ(got, expected);
+  EXPECT_NE(r.out.find("threads"), std::string::npos) << r.out;  // the table's column
   // The table on stdout: a header line and one line per row.
   std::istringstream out(r.out);
   std::string line;
   std::size_t lines = 0;
   while (std::getline(out, line)) ++lines;
   EXPECT_EQ(lines, rows.size() + 1) << r.out;
+
+  // --threads 1: one series of nbs.
+  const auto one = run("scaling --algorithm nbs --n 100 --threads 1 --quiet --output '" + dir + "/one.csv'");
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  const auto one_rows = csv_rows(read_text(dir + "/one.csv"));
+  ASSERT_EQ(one_rows.size(), 1u);
+  EXPECT_EQ(one_rows[0][7], "1");
 }
 
 TEST(ScalingCli, BruteIsSkippedAboveItsCapAndSaysSo) {
   const std::string dir = scratch_dir("scaling_cli_brute");
-  const auto r = run("scaling --algorithm brute,nbs --n 1e4..2e4 --points-per-decade 1 --quiet --output '" + dir + "/b.csv'");
+  const auto r = run("scaling --algorithm brute,nbs --n 1e4..2e4 --points-per-decade 1 --threads 1 --quiet --output '" + dir + "/b.csv'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::set<std::string> brute_sizes;
   for (const auto& row : csv_rows(read_text(dir + "/b.csv")))
@@ -96,11 +104,11 @@ TEST(ScalingCli, BadFlagsAreOneLineAndExit2) {
 #ifdef NBSCOPE_TEST_GUI
 TEST(ScalingCli, HeadlessRefusesABadCsvByItsLine) {
   const std::string dir = scratch_dir("scaling_headless_bad");
-  write_text(dir + "/bad.csv", kHeader + "\nnbs,loose,1000,20,8,90,10\nnbs,loose,2000,20,8,90\n");
+  write_text(dir + "/bad.csv", kHeader + "\nnbs,loose,1000,20,8,90,10,1\nnbs,loose,2000,20,8,90,10\n");
   const std::string scene = "--scene '" + std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/book-fig-3-15.json' --frames 1 ";
   auto r = run("headless " + scene + "--scaling '" + dir + "/bad.csv' --screenshot '" + dir + "/s.png'");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err.rfind("nbscope: error: " + dir + "/bad.csv:3: 6 columns", 0), 0u) << r.err;
+  EXPECT_EQ(r.err.rfind("nbscope: error: " + dir + "/bad.csv:3: 7 columns", 0), 0u) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/s.png"));
   r = run("headless " + scene + "--scaling '" + dir + "/bad.csv'");
   EXPECT_EQ(r.exit_code, 2);

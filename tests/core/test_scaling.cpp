@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "core/scaling.hpp"
+#include "core/threads.hpp"
 #include "io/scaling_csv.hpp"
 #include "support/generators.hpp"
 
@@ -169,7 +170,7 @@ TEST(Scaling, APlanThatCannotRunIsRefused) {
 }
 
 TEST(Scaling, PlanCoveringRowsNamesWhatTheyMeasure) {
-  const std::vector<ScalingRow> rows = {{"sort", "dense", 1000, 1, 1, 1, 1}, {"nbs", "dense", 10000, 1, 1, 1, 1},
+  const std::vector<ScalingRow> rows = {{"sort", "dense", 1000, 1, 1, 1, 1}, {"nbs", "dense", 10000, 1, 1, 1, 1, 4},
                                         {"sort", "loose", 100000, 1, 1, 1, 1}, {"nbs", "loose", 1000, 1, 1, 1, 1}};
   const ScalingPlan plan = plan_covering(rows);
   EXPECT_EQ(plan.algorithms, (std::vector<std::string>{"sort", "nbs"}));
@@ -177,15 +178,73 @@ TEST(Scaling, PlanCoveringRowsNamesWhatTheyMeasure) {
   EXPECT_EQ(plan.n_min, 1000);
   EXPECT_EQ(plan.n_max, 100000);
   EXPECT_EQ(plan.points_per_decade, 1);
+  EXPECT_EQ(plan.threads, (std::vector<int>{1, 4}));
+}
+
+// --threads N compares 1 and N: nbs (the detector that uses threads) is measured at both, every
+// other detector once, on one thread; the rows say which, and the pairs agree whatever the threads.
+TEST(Scaling, NbsIsMeasuredAtEachThreadCountTheOthersOnce) {
+  EXPECT_EQ(scaling_threads(1), (std::vector<int>{1}));
+  EXPECT_EQ(scaling_threads(2), (std::vector<int>{1, 2}));
+  EXPECT_EQ(series_name("nbs", 1), "nbs");
+  EXPECT_EQ(series_name("nbs", 2), "nbs x2");
+  ScalingPlan plan = quick_plan();
+  plan.algorithms = {"sort", "nbs", "brute"};
+  plan.layouts = {Layout::Loose};
+  plan.threads = scaling_threads(2);
+  EXPECT_EQ(threads_measured(plan, "nbs"), (std::vector<int>{1, 2}));
+  EXPECT_EQ(threads_measured(plan, "sort"), (std::vector<int>{1}));
+  std::vector<std::string> points;
+  const ScalingResult result = run_scaling(plan, [&](const ScalingProgress& p) { points.push_back(p.point); }, nullptr);
+  const auto sizes = scaling_sizes(plan.n_min, plan.n_max, plan.points_per_decade);
+  EXPECT_EQ(points.size(), scaling_point_count(plan));
+  EXPECT_EQ(scaling_point_count(plan), 4 * sizes.size());  // sort, nbs, nbs x2, brute
+  std::set<std::tuple<std::string, int, std::int64_t>> got, expected;
+  for (std::int64_t n : sizes) {
+    expected.emplace("sort", 1, n);
+    expected.emplace("nbs", 1, n);
+    expected.emplace("nbs", 2, n);
+    if (n <= plan.brute_max_n) expected.emplace("brute", 1, n);
+  }
+  for (const ScalingRow& r : result.rows) {
+    EXPECT_TRUE(got.emplace(r.algorithm, r.threads, r.n).second) << series_name(r.algorithm, r.threads) << " N=" << r.n << " twice";
+    const auto sort = std::find_if(result.rows.begin(), result.rows.end(),
+                                   [&](const ScalingRow& s) { return s.algorithm == "sort" && s.n == r.n; });
+    ASSERT_NE(sort, result.rows.end());
+    EXPECT_EQ(r.pairs, sort->pairs) << series_name(r.algorithm, r.threads) << " N=" << r.n;
+  }
+  EXPECT_EQ(got, expected);
+  // In plan order: at each N, sort, then nbs on 1 and 2 threads, then brute.
+  ASSERT_GE(result.rows.size(), 3u);
+  EXPECT_EQ(series_name(result.rows[1].algorithm, result.rows[1].threads), "nbs");
+  EXPECT_EQ(series_name(result.rows[2].algorithm, result.rows[2].threads), "nbs x2");
+  EXPECT_NE(std::find(points.begin(), points.end(), "nbs x2 loose N=100"), points.end());
+}
+
+TEST(Scaling, APlanOfBadThreadCountsIsRefused) {
+  for (const std::vector<int>& threads : {std::vector<int>{}, {0}, {1, kMaxThreads + 1}, {2, 2}}) {
+    ScalingPlan plan = quick_plan();
+    plan.threads = threads;
+    EXPECT_THROW(check_scaling_plan(plan), Error) << threads.size();
+  }
 }
 
 TEST(ScalingCsv, RoundTrip) {
   ScalingPlan plan = quick_plan();
+  plan.threads = {1, 2};  // the threads column too
   const ScalingResult result = run_scaling(plan, nullptr, nullptr);
   std::ostringstream out;
   write_scaling_csv(out, result.rows);
   EXPECT_EQ(out.str().substr(0, out.str().find('\n')), kScalingCsvHeader);
   EXPECT_EQ(parse_scaling_csv(out.str(), "mem"), result.rows);  // every number exactly
+}
+
+// A CSV written before the threads column reads as it did, every row on one thread.
+TEST(ScalingCsv, TheHeaderWithoutThreadsReadsAsOneThread) {
+  const auto rows = parse_scaling_csv(std::string(kScalingCsvHeaderOneThread) + "\nnbs,loose,1000,20.5,8.4,90,10\n", "old.csv");
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].threads, 1);
+  EXPECT_EQ(rows[0].repeats, 10);
 }
 
 // The message of parsing `text` as a scaling CSV called "s.csv" ("" when it parses).
@@ -200,22 +259,26 @@ std::string error_of(const std::string& text) {
 
 TEST(ScalingCsv, BadRowsAreRefusedWithTheirLine) {
   const std::string h = std::string(kScalingCsvHeader) + "\n";
-  const std::string good = "nbs,loose,1000,20.5,8.4,90,10\n";
+  const std::string good = "nbs,loose,1000,20.5,8.4,90,10,1\n";
   EXPECT_EQ(error_of("# made by hand\n" + h + good), "");
+  EXPECT_EQ(error_of(h + good + "nbs,loose,1000,12.5,8.4,90,10,2\n"), "");  // nbs and nbs x2: two series
   EXPECT_EQ(error_of("x,y,r\n1,2,3\n").rfind("s.csv:1: expected the header", 0), 0u) << error_of("x,y,r\n");
   EXPECT_EQ(error_of(h).rfind("s.csv: no rows", 0), 0u);
   EXPECT_EQ(error_of("").rfind("s.csv: no header", 0), 0u);
   const std::pair<std::string, std::string> cases[] = {
-      {"nbs,loose,1000,20.5,8.4,90\n", "s.csv:3: 6 columns"},
-      {"nosuch,loose,1000,20.5,8.4,90,10\n", "s.csv:3: algorithm: 'nosuch'"},
-      {"nbs,fluffy,1000,20.5,8.4,90,10\n", "s.csv:3: layout: 'fluffy'"},
-      {"nbs,loose,0,20.5,8.4,90,10\n", "s.csv:3: n: 0 is less than 1"},
-      {"nbs,loose,1e3,20.5,8.4,90,10\n", "s.csv:3: n: '1e3' is not a whole number"},
-      {"nbs,loose,1000,-1,8.4,90,10\n", "s.csv:3: ns_per_element: -1 is negative"},
-      {"nbs,loose,1000,nan,8.4,90,10\n", "s.csv:3: ns_per_element: 'nan' is not a finite number"},
-      {"nbs,loose,1000,20.5,x,90,10\n", "s.csv:3: bytes_per_element: 'x' is not a number"},
-      {"nbs,loose,1000,20.5,8.4,-2,10\n", "s.csv:3: pairs: -2 is less than 0"},
-      {"nbs,loose,1000,20.5,8.4,90,0\n", "s.csv:3: repeats: 0 is less than 1"},
+      {"nbs,loose,1000,20.5,8.4,90,10\n", "s.csv:3: 7 columns; expected 8"},
+      {"nosuch,loose,1000,20.5,8.4,90,10,1\n", "s.csv:3: algorithm: 'nosuch'"},
+      {"nbs,fluffy,1000,20.5,8.4,90,10,1\n", "s.csv:3: layout: 'fluffy'"},
+      {"nbs,loose,0,20.5,8.4,90,10,1\n", "s.csv:3: n: 0 is less than 1"},
+      {"nbs,loose,1e3,20.5,8.4,90,10,1\n", "s.csv:3: n: '1e3' is not a whole number"},
+      {"nbs,loose,1000,-1,8.4,90,10,1\n", "s.csv:3: ns_per_element: -1 is negative"},
+      {"nbs,loose,1000,nan,8.4,90,10,1\n", "s.csv:3: ns_per_element: 'nan' is not a finite number"},
+      {"nbs,loose,1000,20.5,x,90,10,1\n", "s.csv:3: bytes_per_element: 'x' is not a number"},
+      {"nbs,loose,1000,20.5,8.4,-2,10,1\n", "s.csv:3: pairs: -2 is less than 0"},
+      {"nbs,loose,1000,20.5,8.4,90,0,1\n", "s.csv:3: repeats: 0 is less than 1"},
+      {"nbs,loose,1000,20.5,8.4,90,10,0\n", "s.csv:3: threads: 0 is less than 1"},
+      {"nbs,loose,1000,20.5,8.4,90,10,65\n", "s.csv:3: threads: 65 is more than 64"},
+      {"nbs,loose,1000,20.5,8.4,90,10,two\n", "s.csv:3: threads: 'two' is not a whole number"},
   };
   for (const auto& [row, message] : cases) {
     const std::string e = error_of("\n" + h + row);
@@ -223,6 +286,8 @@ TEST(ScalingCsv, BadRowsAreRefusedWithTheirLine) {
   }
   const std::string twice = error_of(h + good + good);
   EXPECT_EQ(twice.rfind("s.csv:3: nbs loose N=1000 is given twice", 0), 0u) << twice;
+  const std::string twice2 = error_of(h + "nbs,loose,1000,12.5,8.4,90,10,2\n" + "nbs,loose,1000,12.5,8.4,90,10,2\n");
+  EXPECT_EQ(twice2.rfind("s.csv:3: nbs x2 loose N=1000 is given twice", 0), 0u) << twice2;
 }
 
 }  // namespace
