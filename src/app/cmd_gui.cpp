@@ -1,7 +1,8 @@
-// `nbscope [gui]`: the window on the frame loop. With --frames N it runs N frames, saves
-// --screenshot and exits (scripted: no input, no settings file, one step per frame), so the window
-// itself can be tested under xvfb-run. Without a display it renders the same frames headless and
-// says where the screenshot went.
+// `nbscope [gui]`: the window on the frame loop. The window never waits for physics: it draws the
+// newest completed frame at its own pace and adopts the worker's step once it is done
+// (docs/window.md#two-cores). With --frames N it runs N frames of simulation, saves --screenshot
+// and exits (scripted: no input, no settings file), so the window itself can be tested under
+// xvfb-run. Without a display it renders the same frames headless and says where the screenshot went.
 //
 // A scene file that cannot be read or fails the scene check is an error (exit 2, nothing to show).
 // A scene whose world stops — at load (Box2D would create too many contacts at once, or change a
@@ -11,7 +12,9 @@
 //
 // Index: options | headless fallback | the window loop | replay | run_gui. The panels' requests are
 // applied in gui_requests.cpp.
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -142,36 +145,48 @@ int run_without_display(GuiOptions o, FrameLoop& loop, const std::string& scene_
 
 // ---- the window loop --------------------------------------------------------------------------
 
-// What a scripted run (--frames N) measures: where each frame's time went, and --back's frames apart.
+// What a scripted run (--frames N) measures: the simulation's frames and their pipeline times, the
+// frames drawn meanwhile (the window does not wait for the worker, so there are more), and --back's
+// frames apart.
 struct ScriptedTimes {
   Clock::time_point started = Clock::now();
+  Clock::time_point simulated = started;        // when the last simulated frame was adopted
+  std::int64_t stepped = 0;                     // simulated frames adopted
   double sum_physics = 0, sum_detect = 0, sum_check = 0, sum_view = 0;
   bool any_overlapped = false;                  // physics ran on the worker thread, beside the drawing
   double sum_back_show = 0, sum_back_view = 0;  // --back: showing a kept frame again, and drawing it
 
-  // One frame drawn in `view_ms` (`back`: one of --back's).
-  void add(const FrameLoop& loop, double view_ms, bool back) {
-    if (back) sum_back_view += view_ms;
-    sum_view += view_ms;
+  // One simulated frame made: its pipeline's times.
+  void add_step(const FrameLoop& loop) {
+    ++stepped;
+    simulated = Clock::now();
     const FrameTimings& t = loop.result().report().timings;
     sum_physics += t.physics_ms;
     any_overlapped = any_overlapped || loop.source().physics_overlapped();
     sum_detect += t.detection_ms;
     sum_check += t.check_ms;
   }
+  // One frame drawn in `view_ms` (`back`: one of --back's).
+  void add_drawn(double view_ms, bool back) {
+    if (back) sum_back_view += view_ms;
+    sum_view += view_ms;
+  }
 
-  // The window's frame rate and where the time went. --frames N is N steps, as in headless; the
-  // picture of the start and the redraws while the layout settles are counted apart (the frame rate
-  // is over every frame drawn). A recording's frame 0 is one of its frames, as in headless replay.
+  // The simulation's rate and the window's frame rate, and where the time went. --frames N is N
+  // steps, as in headless; every frame drawn counts in FPS (the start and the settling layout
+  // included). A recording's frame 0 is one of its frames, as in headless replay.
   void print(const GuiOptions& o, const FrameLoop& loop, std::int64_t rendered) const {
     const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
-    const double n = static_cast<double>(rendered + 1);
+    const double sim_seconds = std::chrono::duration<double>(simulated - started).count();
+    const double drawn = static_cast<double>(rendered + 1);
+    const double steps = static_cast<double>(std::max<std::int64_t>(stepped, 1));
     const std::int64_t counted = *o.frames + (loop.source().replaying() ? 1 : 0);
     std::fprintf(stderr,
-                 "nbscope: window: %s (+%lld drawn besides: the start and while the layout settles) in %.2f s = "
-                 "%.1f FPS; ms a frame: physics %.2f%s, detection %.2f, check %.2f, render+panels %.2f%s%s\n",
-                 plural(counted, "frame").c_str(), static_cast<long long>(rendered + 1 - counted - o.back), seconds,
-                 n / seconds, sum_physics / n, any_overlapped ? " (overlapped)" : "", sum_detect / n, sum_check / n, sum_view / n,
+                 "nbscope: window: %s (simulated in %.2f s = sim %.1f frames/s), %lld drawn in %.2f s = %.1f FPS; "
+                 "ms a simulated frame: physics %.2f%s, detection %.2f, check %.2f; ms a drawn frame: render+panels %.2f%s%s\n",
+                 plural(counted, "frame").c_str(), sim_seconds, sim_seconds > 0 ? static_cast<double>(stepped) / sim_seconds : 0.0,
+                 static_cast<long long>(rendered + 1), seconds, drawn / seconds, sum_physics / steps,
+                 any_overlapped ? " (overlapped)" : "", sum_detect / steps, sum_check / steps, sum_view / drawn,
                  o.view.screenshot ? "; screenshot " : "", o.view.screenshot ? o.view.screenshot->c_str() : "");
     if (o.back > 0) {
       const double k = static_cast<double>(o.back);
@@ -186,9 +201,18 @@ struct ScriptedTimes {
 
 // The interactive window's frames of simulation this UI frame: as many steps as the speed owes
 // (`owed_steps` carries the fraction), backwards through the kept frames when playing backwards,
-// then the next frame's step begun so that its physics runs while this frame is drawn.
+// then the next frame's step begun so that its physics runs while the window draws. Called only
+// with no step in flight (`adopted`: one was adopted at the top of this frame). A frame owed
+// forwards is begun on the worker rather than made here, so that the window never waits for
+// physics; without a worker (a recording, a past frame) it is made here, and speeds above 1 make
+// their extra frames here.
 void play(FrameLoop& loop, GlView& view, Session& session, double& owed_steps, bool adopted) {
   owed_steps += session.speed - (adopted ? 1.0 : 0.0);
+  bool deferred = false;  // one owed frame left to the worker (begun below)
+  if (session.play_direction > 0 && !adopted && owed_steps >= 1.0) {
+    owed_steps -= 1.0;
+    deferred = true;
+  }
   for (; owed_steps >= 1.0; owed_steps -= 1.0) {
     if (session.play_direction < 0) {
       // Backwards through the kept frames, until the oldest.
@@ -208,11 +232,16 @@ void play(FrameLoop& loop, GlView& view, Session& session, double& owed_steps, b
     }
     if (!step_forwards(loop, view, session)) {
       owed_steps = 0;
+      deferred = false;
       break;
     }
   }
+  if (!session.paused && session.play_direction > 0 && (deferred || owed_steps + session.speed >= 1.0)) {
+    loop.begin_step();
+    // No worker for it: the owed frame is made here, as it always was.
+    if (deferred && !loop.source().step_pending() && !step_forwards(loop, view, session)) owed_steps = 0;
+  }
   if (loop.source().at_end()) session.paused = true;  // a recording plays once; P or R starts it again
-  if (!session.paused && session.play_direction > 0 && owed_steps + session.speed >= 1.0) loop.begin_step();
 }
 
 // What the window leaves for the next start: overlays, panels, scene, algorithm, camera, speed, budget.
@@ -256,11 +285,12 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   bool failed = false;
   double owed_steps = 0;
   ScriptedTimes times;
-  const std::int64_t scripted_frames = o.frames.value_or(0) + o.back;
+  std::int64_t simulated = 0, went_back = 0;  // a scripted run's frames stepped, and --back's frames shown
   // A scripted run's world that stopped (at load, or a step that failed): drawn until the layout
   // settles, saved, then the run ends with its line. The interactive window just pauses on it.
   std::string world_error = scripted ? stopped : "";
-  std::int64_t last_drawn = scripted_frames + GlView::kSettleFrames - 1;  // the scripted run's final frame
+  // The scripted run's final frame: kSettleFrames drawn on the final state (set once it is reached).
+  std::int64_t last_drawn = o.frames.value_or(0) == 0 ? GlView::kSettleFrames - 1 : INT64_MAX;
   if (!stopped.empty()) {
     session.error = stopped;
     session.paused = true;
@@ -269,9 +299,10 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   auto last = Clock::now();
   double fps_window_start = window.time();
   int fps_frames = 0;
+  SimRate sim_rate;
   install_stop_handlers();
-  // The UI frame's requests are applied at the top of the next one, once the step begun for it has
-  // been adopted: then no request finds a step in flight, and each acts on the frame it is shown on.
+  // The UI frame's requests are applied at the top of the next one; any that needs the world adopts
+  // the step in flight first, so each acts on a whole frame.
   ui::UiRequests requests;
   IdlePacer pacer;
   for (std::int64_t rendered = 0; !window.should_close() && !stop_requested(); ++rendered) {
@@ -283,18 +314,27 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
     session.frame_ms = std::chrono::duration<double, std::milli>(now - last).count();
     session.split = pacer.split();
     last = now;
+    bool back_frame = false;
     if (scripted) {
-      // Frames 1..N each step once, then --back K goes back one kept frame a frame; then the last
-      // state is drawn until the layout has settled. Frame k+1's physics runs while frame k is
-      // drawn (FrameLoop::begin_step), as when playing.
+      // The N frames at the simulation's own pace: frame k+1's physics runs on the worker while the
+      // window draws (FrameLoop::begin_step); a finished step is adopted at the top of a frame, a
+      // running one is not waited for (a recording, with no worker, steps once a frame). Then --back
+      // K goes back one kept frame a frame; then the last state is drawn until the layout settles.
       if (!world_error.empty()) {
         // Stopped: the last good frame is drawn with the message until the layout settles.
-      } else if (rendered > 0 && rendered <= *o.frames) {
+      } else if (simulated < *o.frames) {
         // A world that stops is shown as the interactive window shows it (message, paused); the
         // screenshot is still taken, then the error ends the run (exit 2).
         try {
-          loop.step();  // (frame() follows it)
-          if (rendered < *o.frames) loop.begin_step();
+          if (!loop.source().step_pending()) loop.begin_step();
+          if (rendered > 0 && (!loop.source().step_pending() || loop.source().step_ready())) {
+            loop.step();  // (frame() follows it)
+            ++simulated;
+            ++session.frames_simulated;
+            times.add_step(loop);
+            if (simulated < *o.frames) loop.begin_step();
+            else if (o.back == 0) last_drawn = rendered + GlView::kSettleFrames - 1;
+          }
         } catch (const Error& e) {
           world_error = e.what();
           session.error = world_error;
@@ -302,28 +342,36 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
           view.state().panel_open[kScenesPanel] = true;
           last_drawn = rendered + GlView::kSettleFrames;  // not the N frames asked for
         }
-      } else if (rendered > *o.frames && rendered <= scripted_frames) {
+      } else if (went_back < o.back) {
         const auto t0 = Clock::now();
         step_back_for_flag(loop);
         view.follow(loop);  // here rather than in frame(): going back's time includes the trail rebuilt
         times.sum_back_show += ms_since(t0);
+        back_frame = true;
+        if (++went_back == o.back) last_drawn = rendered + GlView::kSettleFrames - 1;
       }
     } else {
-      // The step begun last frame is this frame's first (its physics ran while that one was drawn).
-      const bool adopted = loop.source().step_pending();
+      // The window never waits for physics: a step the worker has finished is adopted (its frame
+      // detected, checked and shown from now on); one still running is left to it, and this frame
+      // draws the newest completed frame again. Pause and single step act at that boundary.
+      const bool adopted = loop.source().step_ready();
       if (adopted && !step_forwards(loop, view, session)) owed_steps = 0;
+      // A request that needs the world (a drag, a past frame, another algorithm, a restart) adopts
+      // the step in flight first, waiting for it: it acts at the next frame boundary.
       apply_requests(requests, loop, view, session);
       view.follow(loop);  // what the requests did, before play() steps on
       if (loop.resume().active()) {
         continue_resume(loop, session);
-      } else if (!session.paused) {
+      } else if (!session.paused && !loop.source().step_pending()) {
         play(loop, view, session, owed_steps, adopted);
       }
     }
     failed = failed || (loop.result().report().checked && !loop.result().report().ok());
+    sim_rate.sample(session.frames_simulated, window.time());
+    session.sim_rate = sim_rate.rate();
     const auto view_start = Clock::now();
     requests = view.frame(loop, session, !scripted, static_cast<float>(session.frame_ms / 1000.0));
-    if (scripted) times.add(loop, ms_since(view_start), rendered > *o.frames && rendered <= scripted_frames);
+    if (scripted) times.add_drawn(ms_since(view_start), back_frame);
     if (scripted && rendered >= last_drawn) {
       if (!world_error.empty()) {
         // The picture of the stopped world; its line (thrown below) is then the only one on stderr.

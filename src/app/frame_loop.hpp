@@ -4,7 +4,8 @@
 //   step()        -> frame k+1: Box2D step (emitters first) -> elements -> detection with the chosen
 //                    algorithm (+ injected fault) -> cross-check (check/check.hpp)
 //   begin_step() / step() -> the same frame k+1, its Box2D step run on a worker thread while the
-//                    window draws frame k (frame_loop_overlap.cpp); headless keeps the plain step()
+//                    window draws frame k (frame_loop_overlap.cpp); the window adopts it (step())
+//                    once source().step_ready(), so it never waits; headless keeps the plain step()
 //   load_recording*() / step() -> the same on recorded frames (io/recording.hpp) instead of a world:
 //                    no physics, and the check runs only A==R (there is no Box2D world to compare with)
 //   show_frame()  -> a kept past frame (check/history.hpp) made current: its elements, shapes and Box2D

@@ -30,6 +30,7 @@ std::int64_t LoopSource::element_name(std::int64_t frame, std::int64_t row) cons
 }
 bool LoopSource::at_end() const { return s_->replay && !s_->replay->can_step(); }
 bool LoopSource::step_pending() const { return s_->pending(); }
+bool LoopSource::step_ready() const { return s_->live && s_->live->step_ready(); }
 bool LoopSource::physics_overlapped() const { return s_->physics_overlapped; }
 std::int64_t LoopSource::frame() const { return s_->loaded() ? s_->frame_number() : 0; }
 double LoopSource::time() const { return s_->loaded() ? s_->source().time() : 0; }

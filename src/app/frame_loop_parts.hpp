@@ -56,6 +56,9 @@ class LoopSource {
   [[nodiscard]] bool at_end() const;
   // True between FrameLoop::begin_step() and the call that adopts its frame.
   [[nodiscard]] bool step_pending() const;
+  // True when the pending step's physics is done, so adopting it (step()) does not wait for the
+  // worker: the window adopts a step only then, and draws the frame it has meanwhile.
+  [[nodiscard]] bool step_ready() const;
   // True when the current frame's physics ran on the worker thread, beside the drawing of the
   // frame before (its physics_ms is the worker's own time).
   [[nodiscard]] bool physics_overlapped() const;

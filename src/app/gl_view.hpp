@@ -43,6 +43,8 @@ struct Session {
   std::string error;
   double fps = 0;
   double frame_ms = 0;
+  std::int64_t frames_simulated = 0;  // frames the simulation completed (stepped forwards), for sim_rate
+  double sim_rate = -1;               // the simulation's own frames a second (app/window_pacing.hpp: SimRate); < 0 off-screen
   ui::DrawTimings split;  // the window loop's frame split, averaged (app/window_pacing.hpp); off-screen: not measured
 };
 

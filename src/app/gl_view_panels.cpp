@@ -64,6 +64,7 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
   sim.drawing.physics_overlapped = loop.source().physics_overlapped();
   if (!session.split.measured) sim.drawing.frame_ms = session.frame_ms;
   sim.fps = session.fps;
+  sim.sim_rate = session.sim_rate;
   sim.frame_history_ms = frame_history_;
   sim.render_stats = &renderer_->stats();
   sim.imgui_vertices = imgui_->last_vertices();

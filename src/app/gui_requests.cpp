@@ -114,6 +114,7 @@ bool step_forwards(FrameLoop& loop, GlView& view, Session& session) {
     session.paused = true;
     return false;
   }
+  ++session.frames_simulated;  // the simulation's own rate (SimRate)
   view.follow(loop);  // each step its trail point and flash fade, however many this UI frame
   return true;
 }

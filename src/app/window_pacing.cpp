@@ -100,4 +100,17 @@ void IdlePacer::present(render::GlfwWindow& window, const ui::DrawTimings& view,
   clock_.presented(ms_since(t0), parts);
 }
 
+void SimRate::sample(std::int64_t frames, double seconds) {
+  if (!samples_.empty() && (frames < samples_.back().second || seconds < samples_.back().first)) samples_.clear();
+  samples_.emplace_back(seconds, frames);
+  // Keep one sample at or before the window's start, so the span covers the whole window.
+  while (samples_.size() > 2 && samples_[1].first <= seconds - kWindowSeconds) samples_.pop_front();
+}
+
+double SimRate::rate() const {
+  if (samples_.size() < 2) return 0;
+  const double span = samples_.back().first - samples_.front().first;
+  return span > 0 ? static_cast<double>(samples_.back().second - samples_.front().second) / span : 0;
+}
+
 }  // namespace nbscope

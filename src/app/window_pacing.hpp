@@ -3,7 +3,9 @@
 // frame as fast as the GPU allows.
 #pragma once
 #include <cstdint>
+#include <deque>
 #include <string>
+#include <utility>
 
 #include "app/clock.hpp"
 #include "io/signals.hpp"  // install_stop_handlers, stop_requested: Ctrl+C and SIGTERM close the window
@@ -65,6 +67,21 @@ class IdlePacer {
   int frames_before_sleep_ = kFramesBeforeSleep;
   FrameSplitClock clock_;
   std::uint64_t seen_generation_ = 0;
+};
+
+// The simulation's own rate beside the display's FPS (the window never waits for the worker, so the
+// two differ): frames completed per second over the last kWindowSeconds, from a running count.
+class SimRate {
+ public:
+  static constexpr double kWindowSeconds = 2.0;
+  // `frames`: frames completed so far at `seconds` (any clock); a count that goes down (a new run)
+  // starts the measurement again.
+  void sample(std::int64_t frames, double seconds);
+  // Frames a second over the samples of the last kWindowSeconds; 0 before two samples.
+  [[nodiscard]] double rate() const;
+
+ private:
+  std::deque<std::pair<double, std::int64_t>> samples_;  // (seconds, frames), oldest first
 };
 
 }  // namespace nbscope

@@ -61,6 +61,10 @@ bool LiveWorld::begin_step() {
 
 double LiveWorld::finish_step() { return stepping_.get(); }
 
+bool LiveWorld::step_ready() const {
+  return pending() && stepping_.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+}
+
 void LiveWorld::discard_step() {
   if (!pending()) return;
   try {

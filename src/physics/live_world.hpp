@@ -57,6 +57,8 @@ class LiveWorld final : public FrameSource {
   bool begin_step();
   // True between begin_step() and finish_step()/discard_step().
   [[nodiscard]] bool pending() const { return stepping_.valid(); }
+  // True when a pending step has finished (finish_step() will not wait): the window adopts it then.
+  [[nodiscard]] bool step_ready() const;
   // Waits for the worker; returns the step's own milliseconds (rethrows its Error; spent either way).
   double finish_step();
   // Forgets a pending step (its world is about to be replaced); its error goes with it.

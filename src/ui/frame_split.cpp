@@ -47,4 +47,11 @@ std::string frame_rate_line(const DrawTimings& d, double fps) {
   return "off-screen frame (no FPS)";
 }
 
+std::string sim_rate_text(const DrawTimings& d, double rate) {
+  if (rate < 0 || (d.measured && d.idle)) return "";
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "sim %.1f frames/s", rate);
+  return buf;
+}
+
 }  // namespace nbscope::ui

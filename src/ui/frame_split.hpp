@@ -26,4 +26,8 @@ std::vector<FrameSplitRow> frame_split_rows(const DrawTimings& d, const FrameTim
 // window that sleeps until input, or "off-screen frame (no FPS)".
 std::string frame_rate_line(const DrawTimings& d, double fps);
 
+// The simulation's own rate beside it, "sim 10.2 frames/s" ("" when not measured: `rate` < 0, or an
+// idle window, whose simulation is paused anyway).
+std::string sim_rate_text(const DrawTimings& d, double rate);
+
 }  // namespace nbscope::ui

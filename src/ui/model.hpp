@@ -119,6 +119,7 @@ struct SimView {
   bool hide_timings = false;  // reproducible screenshots: no wall-clock numbers
   DrawTimings drawing;   // the window's own work on the frame (the pipeline's: frame->report().timings)
   double fps = 0;
+  double sim_rate = -1;  // the simulation's own frames a second, apart from FPS (< 0: not measured, off-screen)
   std::vector<float> frame_history_ms;  // oldest first
 
   // Self-inspection.

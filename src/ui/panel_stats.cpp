@@ -76,7 +76,9 @@ class StatsPanel final : public Panel {
       return;
     }
     // Every part of the frame named (ui/frame_split.hpp): in a window they add up to the frame time.
-    ImGui::TextUnformatted(frame_rate_line(s.drawing, s.fps).c_str());
+    // The simulation's own rate beside FPS: the window draws at its pace while the worker steps at its own.
+    const std::string sim = sim_rate_text(s.drawing, s.sim_rate);
+    ImGui::TextUnformatted((frame_rate_line(s.drawing, s.fps) + (sim.empty() ? "" : "   " + sim)).c_str());
     const FrameTimings timings = s.report() != nullptr ? s.report()->timings : FrameTimings{};
     if (ImGui::BeginTable("split", 2)) {
       for (const FrameSplitRow& row : frame_split_rows(s.drawing, timings)) {

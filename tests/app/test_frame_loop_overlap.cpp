@@ -1,10 +1,13 @@
 // The overlapped step the window uses (FrameLoop::begin_step, then step() adopts it): every frame
 // equals the plain step()'s bit for bit (elements, shapes, pairs, every check set and report); while
 // the step is in flight the accessors keep showing the current frame; every call that needs the
-// world adopts the step first; drags, faults, history and loads behave as with plain steps.
+// world adopts the step first; drags, faults, history and loads behave as with plain steps. The
+// window's asynchronous use (draw the newest frame until step_ready(), then adopt; pause, single
+// steps and Timeline jumps at a frame boundary) gives the plain run's frames too.
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <thread>
 
 #include "support/frame_facts.hpp"
 #include "support/paths.hpp"
@@ -196,10 +199,85 @@ TEST(FrameLoopOverlap, CallsThatNeedTheWorldAdoptTheStepFirst) {
   loop.begin_step();  // destroyed with the step in flight
 }
 
+// The window's own use: it never waits for the worker. Until step_ready() it draws the newest
+// completed frame (the accessors keep it), then adopts the step; pause, single steps, Timeline
+// jumps and algorithm changes come between, each adopting the step in flight first (plain: the
+// step, then the action). Every frame, the history and the violation log equal the plain run's.
+void compare_async(const std::string& name, int frames, FrameLoopOptions options) {
+  SCOPED_TRACE(name);
+  FrameLoop plain(options), async(options);
+  load_scene_file(plain, scene(name));
+  load_scene_file(async, scene(name));
+  bool paused = false;
+  for (int k = 1; k <= frames; ++k) {
+    SCOPED_TRACE("frame " + std::to_string(k));
+    if (!paused) {
+      const Facts shown = facts_of(async);
+      async.begin_step();
+      ASSERT_TRUE(async.source().step_pending());
+      int polls = 0;
+      while (!async.source().step_ready()) {
+        if (++polls == 1) expect_same_frame(shown, facts_of(async));  // what a UI frame draws meanwhile
+        std::this_thread::yield();
+      }
+      EXPECT_TRUE(async.source().step_pending());  // ready, not yet adopted
+      if (k % 7 == 0) {
+        // A Timeline jump while the step is in flight: the step is adopted first, then the past
+        // frame shown, then the newest frame again (the simulation resumes live).
+        plain.step();
+        plain.show_frame(k - 3);
+        async.show_frame(k - 3);
+        expect_same_frame(facts_of(plain), facts_of(async));
+        plain.show_frame(plain.history().newest_frame());
+        async.show_frame(async.history().newest_frame());
+      } else if (k % 11 == 0) {
+        // Another algorithm for a frame, and back: the adopted frame is detected with it.
+        plain.step();
+        plain.pipeline().set_algorithm("screen");
+        async.pipeline().set_algorithm("screen");
+        expect_same_frame(facts_of(plain), facts_of(async));
+        plain.pipeline().set_algorithm("nbs");
+        async.pipeline().set_algorithm("nbs");
+      } else {
+        plain.step();
+        async.step();  // adopted: no wait
+        EXPECT_TRUE(async.source().physics_overlapped());
+      }
+    } else {
+      // Paused: single steps (O) are plain steps.
+      plain.step();
+      async.step();
+    }
+    ASSERT_FALSE(async.source().step_pending());
+    expect_same_frame(facts_of(plain), facts_of(async));
+    if (::testing::Test::HasFailure()) return;
+    if (k % 13 == 0) paused = !paused;  // pause (the step in flight was adopted), later play again
+  }
+  EXPECT_EQ(plain.history().frames().size(), async.history().frames().size());
+  for (std::size_t i = 0; i < plain.history().frames().size(); ++i) {
+    EXPECT_EQ(plain.history().frames().at(i).hash, async.history().frames().at(i).hash) << "summary " << i;
+    EXPECT_EQ(plain.history().frames().at(i).pairs, async.history().frames().at(i).pairs) << "summary " << i;
+    EXPECT_EQ(plain.history().frames().at(i).violations, async.history().frames().at(i).violations) << "summary " << i;
+  }
+  EXPECT_EQ(plain.history().violation_log().total(), async.history().violation_log().total());
+}
+
+TEST(FrameLoopOverlap, TheWindowsAsyncUseGivesThePlainRunsFrames) {
+  compare_async("default", 30, {});
+  compare_async("pile", 20, {});
+  for (const Fault fault : {Fault::StalePositions, Fault::DropBox2dContact}) {
+    SCOPED_TRACE(fault_name(fault));
+    FrameLoopOptions options;
+    options.fault = fault;
+    compare_async("default", 20, options);
+  }
+}
+
 TEST(FrameLoopOverlap, RecordingsAndEmptyLoopsStepPlainly) {
   FrameLoop empty;
   empty.begin_step();
   EXPECT_FALSE(empty.source().step_pending());
+  EXPECT_FALSE(empty.source().step_ready());
   Recording rec;
   rec.path = "two.nbsrec";
   for (int k = 0; k < 2; ++k) {

@@ -267,7 +267,7 @@ TEST(WindowLayersCli, GuiInputOpensAThreeDCsvFrame) {
                               testcli::xvfb_run());
   EXPECT_EQ(w.exit_code, 0) << w.err;
   EXPECT_TRUE(std::filesystem::exists(dir + "/w.png")) << w.err;
-  EXPECT_NE(w.err.find(" FPS; ms a frame"), std::string::npos) << "--frames N redraws a one-frame input: " << w.err;
+  EXPECT_NE(w.err.find(" FPS; ms a simulated frame"), std::string::npos) << "--frames N redraws a one-frame input: " << w.err;
 }
 
 // One line, exit 2.

@@ -4,6 +4,8 @@
 // no timing of this machine is asserted.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "app/window_pacing.hpp"
 #include "ui/frame_split.hpp"
 
@@ -87,6 +89,42 @@ TEST(FrameSplit, OffScreenFramesKeepTheViewsPartsAndSayThereIsNoFrameRate) {
   EXPECT_EQ(rows[1].name, "detection");
   EXPECT_DOUBLE_EQ(rows[1].ms, 2.0);
   EXPECT_EQ(ui::frame_rate_line(d, 0), "off-screen frame (no FPS)");
+}
+
+// The simulation's own rate (SimRate): a worker finishing a frame every 100 ms while the window
+// draws at 30 FPS reads 10 frames/s, apart from the FPS; a paused simulation falls to 0 within the
+// window; a new run (the count going down) starts again. Synthetic clock readings.
+TEST(SimRate, CountsTheSimulationsFramesApartFromTheDisplaysFrames) {
+  SimRate rate;
+  EXPECT_EQ(rate.rate(), 0.0);
+  std::int64_t done = 0;
+  double t = 0;
+  for (int k = 0; k < 90; ++k) {  // 3 s of display frames at 30 FPS
+    t = k / 30.0;
+    done = static_cast<std::int64_t>(t * 10.0 + 1e-9);  // a frame completed every 100 ms
+    rate.sample(done, t);
+  }
+  EXPECT_NEAR(rate.rate(), 10.0, 0.6);
+  for (int k = 90; k < 90 + 75; ++k) rate.sample(done, k / 30.0);  // paused 2.5 s: nothing completes
+  EXPECT_EQ(rate.rate(), 0.0);
+  rate.sample(0, t + 3);  // a restart: the count goes down
+  EXPECT_EQ(rate.rate(), 0.0);
+  rate.sample(5, t + 3.5);
+  EXPECT_NEAR(rate.rate(), 10.0, 1e-9);
+  // A fault: counting every display frame as a simulated one is caught.
+  SimRate wrong;
+  for (int k = 0; k < 90; ++k) wrong.sample(k, k / 30.0);
+  EXPECT_GT(std::abs(wrong.rate() - 10.0), 5.0);
+}
+
+TEST(SimRate, TheStatsPanelShowsItBesideTheFrameRate) {
+  ui::DrawTimings d;
+  d.measured = true;
+  d.frame_ms = 25;
+  EXPECT_EQ(ui::sim_rate_text(d, 10.24), "sim 10.2 frames/s");
+  EXPECT_EQ(ui::sim_rate_text(d, -1), "");  // not measured (off-screen)
+  d.idle = true;
+  EXPECT_EQ(ui::sim_rate_text(d, 0), "");  // asleep until input: nothing runs
 }
 
 }  // namespace
