@@ -20,6 +20,12 @@ namespace {
 
 using testdata::Layout;
 
+#ifdef NBSCOPE_SANITIZED_BUILD
+constexpr bool kSanitized = true;  // ASan or TSan: 1e5 is left out
+#else
+constexpr bool kSanitized = false;
+#endif
+
 // The book's six arrays and the pairs of one detection, copied out of the detector.
 struct BookState {
   static constexpr int kArrays = 6;
@@ -146,11 +152,7 @@ TEST_P(NbsBands, EqualTheBooksArraysAndPairsOnEveryThreadCount) {
   // five times the others per element: 1e4 keeps the file's time small.
   const bool pile = layout == Layout::OneCell || layout == Layout::OnePoint;
   const bool costly = layout == Layout::UnequalRadii || layout == Layout::CellBorders;
-#ifdef NBSCOPE_SANITIZED_BUILD
-  const std::int64_t largest = 10'000;
-#else
-  const std::int64_t largest = costly ? 10'000 : 100'000;
-#endif
+  const std::int64_t largest = costly || kSanitized ? 10'000 : 100'000;
   for (const std::int64_t n : {0, 1, 2, 3, 5, 17, 100, 1000, 10'000, 100'000}) {
     if (n > largest || (pile && n > 1000)) continue;
     const Elements e = testdata::make_layout(layout, n, dim, 7);
