@@ -97,15 +97,21 @@ BookState detect_on(NbsDetector& d, const Elements& e, const DetectOptions& o) {
   return capture(d, std::move(p));
 }
 
-// Non-empty rows (2D) or layers (3D) of the last detection's grid: the most bands it can have.
-int occupied_lines(const NbsDetector& d, const Elements& e) {
+// The lines (rows in 2D, layers in 3D) of the last detection's grid that hold elements: how many,
+// and how many elements the lowest holds.
+struct Lines {
+  int occupied = 0;
+  std::int64_t in_lowest = 0;
+};
+
+Lines occupied_lines(const NbsDetector& d, const Elements& e) {
   const int axis = e.dim - 1;
-  std::vector<char> used(static_cast<std::size_t>(d.last_grid()->n[axis]), 0);
-  int lines = 0;
-  for (std::int64_t k = 0; k < e.size(); ++k) {
-    char& u = used[static_cast<std::size_t>(d.last_grid()->cell(e.axis(axis)[k], axis))];
-    lines += u == 0 ? 1 : 0;
-    u = 1;
+  std::vector<std::int64_t> count(static_cast<std::size_t>(d.last_grid()->n[axis]), 0);
+  for (std::int64_t k = 0; k < e.size(); ++k) ++count[static_cast<std::size_t>(d.last_grid()->cell(e.axis(axis)[k], axis))];
+  Lines lines;
+  for (const std::int64_t c : count) {
+    if (c == 0) continue;
+    if (lines.occupied++ == 0) lines.in_lowest = c;
   }
   return lines;
 }
@@ -124,17 +130,22 @@ bool bands_landed() {
   return landed;
 }
 
-// detect() on `threads` equals the book, and its band count is plausible (more than one wherever
-// there are two lines to split, once bands have landed).
-void expect_banded_matches(NbsDetector& d, const Elements& e, int threads, int lines, const BookState& book,
+// detect() on `threads` equals the book, and its band count is plausible: at most one per line
+// and per thread, and (once bands have landed) more than one wherever the balanced split can cut:
+// bands are balanced by elements and cut between lines, so a second band starts once the lowest
+// line holds at most (T-1)/T of the elements (T the threads used, at most one per element).
+void expect_banded_matches(NbsDetector& d, const Elements& e, int threads, const Lines& lines, const BookState& book,
                            const std::string& what) {
   const BookState got = detect_on(d, e, banded(threads));
   const std::string diff = first_difference(got, book);
   EXPECT_EQ(diff, "") << what << " threads " << threads;
-  EXPECT_GE(d.last_bands(), 1) << what << " threads " << threads;
-  EXPECT_LE(d.last_bands(), std::max(1, std::min(threads, lines))) << what << " threads " << threads;
-  if (bands_landed() && lines > 1) {
-    EXPECT_GT(d.last_bands(), 1) << what << " threads " << threads << ", lines " << lines;
+  const std::string where = what + " threads " + std::to_string(threads) + ", lines " + std::to_string(lines.occupied);
+  EXPECT_GE(d.last_bands(), 1) << where;
+  EXPECT_LE(d.last_bands(), std::max(1, std::min(threads, lines.occupied))) << where;
+  const std::int64_t used = std::min<std::int64_t>(threads, e.size());
+  const bool can_cut = used > 1 && lines.occupied > 1 && e.size() * (used - 1) / used >= lines.in_lowest;
+  if (bands_landed() && can_cut) {
+    EXPECT_GT(d.last_bands(), 1) << where;
   }
 }
 
@@ -160,7 +171,7 @@ TEST_P(NbsBands, EqualTheBooksArraysAndPairsOnEveryThreadCount) {
     NbsDetector reference;
     PairList reference_pairs;
     reference.detect_book(e, {}, reference_pairs);
-    const int lines = n > 0 ? occupied_lines(reference, e) : 0;
+    const Lines lines = n > 0 ? occupied_lines(reference, e) : Lines{};
     const BookState book = capture(reference, std::move(reference_pairs));
     for (const int threads : {2, 3, 4, 7, 64}) {
       NbsDetector d;
