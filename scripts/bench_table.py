@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Prints nbscope_bench's JSON output as a table: time per element and bytes per element (and, under
-each BM_Check row, the check's time by part)."""
+"""Prints nbscope_bench's JSON output as a table: time per element, threads, bytes per element (own
+arrays) and bytes moved per element (nbs's packed layout), and, under each BM_Check row, the check's
+time by part; then the ratios of issues 12 and 26 from the one run, each target marked met or missed."""
 import json
 import sys
 
@@ -12,11 +13,13 @@ def main(path: str) -> None:
     with open(path) as f:
         data = json.load(f)
     rows = [b for b in data["benchmarks"] if b.get("run_type", "iteration") == "iteration"]
-    print(f"{'benchmark':<48} {'ms/frame':>10} {'ns/elem':>9} {'B/elem':>8} {'pairs':>10}")
+    print(f"{'benchmark':<48} {'ms/frame':>10} {'ns/elem':>9} {'threads':>7} {'B/elem':>8} {'moved B/el':>10} {'pairs':>10}")
     for b in rows:
         ms = b["real_time"] if b.get("time_unit") == "ms" else b["real_time"] / 1e6
-        print(f"{b['name']:<48} {ms:>10.3f} {ns_per_element(b):>9.1f} "
-              f"{b.get('bytes_per_element', 0):>8.1f} {int(b.get('pairs', 0)):>10}")
+        threads = f"{int(b['threads'])}" if "threads" in b else ""
+        moved = f"{b['moved_bytes_per_element']:.0f}" if "moved_bytes_per_element" in b else ""
+        print(f"{b['name']:<48} {ms:>10.3f} {ns_per_element(b):>9.1f} {threads:>7} "
+              f"{b.get('bytes_per_element', 0):>8.1f} {moved:>10} {int(b.get('pairs', 0)):>10}")
         # BM_Check: the check's parts (ms of the last frame checked), on the line below.
         parts = [(k[:-3], b[k]) for k in CHECK_PARTS if k in b]
         if parts:
@@ -30,6 +33,7 @@ def main(path: str) -> None:
                 print(f"trace off / no hooks, {name[len('BM_TraceOff/nbs/'):]}: "
                       f"{b['real_time'] / plain['real_time']:.3f}")
     print_nbs_ratios(by_name)
+    print_issue26_targets(by_name)
 
 
 def ns_per_element(b: dict) -> float:
@@ -66,6 +70,46 @@ def print_nbs_ratios(by_name: dict) -> None:
             lines.append(f"loose/100000: Box2D broadphase ({motion} motion) / nbs from scratch = {box2d / fast:.2f}")
     for line in lines:
         print(line)
+
+
+def verdict(value: float, target: float) -> str:
+    return "met" if value <= target else "missed"
+
+
+def print_issue26_targets(by_name: dict) -> None:
+    """Issue 26's targets, each from this run (skipped when a filtered run lacks its rows): wall ns per
+    element at 1e6, linearity 1e4 -> 1e7, nbs at 1e5 against Box2D's incremental update."""
+    lines = []
+    # (name without the threads suffix, threads, target ns/elem at 1e6)
+    speed = [("nbs/loose", 1, 25), ("nbs/loose", 2, 15), ("nbs/dense", 1, 40), ("nbs/dense", 2, 25),
+             ("nbs3d/loose", 1, 60), ("nbs3d/dense", 1, 150)]
+    for stem, threads, target in speed:
+        value = ns(by_name, f"BM_Detect/{stem}/1000000{suffix(threads)}")
+        if value:
+            lines.append(f"{stem}/1000000 on {threads} thread{'s' if threads > 1 else ''}: "
+                         f"{value:.1f} ns/elem, target <= {target}: {verdict(value, target)}")
+    for stem in ("nbs/loose", "nbs/dense", "nbs3d/loose", "nbs3d/dense"):
+        for threads in (1, 2):
+            small = ns(by_name, f"BM_Detect/{stem}/10000{suffix(threads)}")
+            large = ns(by_name, f"BM_Detect/{stem}/10000000{suffix(threads)}")
+            if small and large:
+                lines.append(f"{stem} on {threads} thread{'s' if threads > 1 else ''}: ns/elem at 1e7 / at 1e4 = "
+                             f"{large / small:.2f}, target <= 1.5: {verdict(large / small, 1.5)}")
+    box2d = ns(by_name, "BM_Box2DBroadphase/loose/100000/small")
+    for threads in (1, 2):
+        fast = ns(by_name, f"BM_Detect/nbs/loose/100000{suffix(threads)}")
+        if fast and box2d:
+            lines.append(f"nbs/loose/100000 on {threads} thread{'s' if threads > 1 else ''} / Box2D incremental "
+                         f"update = {fast / box2d:.2f}, target <= 1.5: {verdict(fast / box2d, 1.5)}")
+    if lines:
+        print("issue 26 targets:")
+        for line in lines:
+            print("  " + line)
+
+
+def suffix(threads: int) -> str:
+    """The benchmark name's threads part: none for 1 thread, /tT otherwise (bench/bench_detect.cpp)."""
+    return "" if threads == 1 else f"/t{threads}"
 
 
 if __name__ == "__main__":
