@@ -64,6 +64,23 @@ struct Grid {
   }
 };
 
+// Grid::cell on one axis, copied out of the grid: a loop that also stores through pointers keeps
+// these in registers, where it would reload the grid's fields after every store it cannot rule out.
+struct AxisCells {
+  double origin = 0, inv_cell_size = 1, cells = 1;
+  std::int32_t last = 0;
+  AxisCells(const Grid& g, int a)
+      : origin(g.origin[a]), inv_cell_size(g.inv_cell_size), cells(static_cast<double>(g.n[a])),
+        last(static_cast<std::int32_t>(g.n[a] - 1)) {}
+  // The same as Grid::cell(v, a).
+  [[nodiscard]] std::int32_t operator()(double v) const {
+    const double c = (v - origin) * inv_cell_size;
+    if (!(c >= 0)) return 0;
+    if (c >= cells) return last;
+    return static_cast<std::int32_t>(c);
+  }
+};
+
 // Fits a grid to `elements`: d = options.cell_size or the largest diameter; origin = options.origin
 // or the minimum corner; n = options.cells or enough to cover every centre. When d is within
 // rounding of the largest diameter, integerisation divides by a d a few ulps of the coordinates

@@ -113,6 +113,10 @@ class NbsDetector final : public Detector {
   // iy) integerised once.
   template <int D>
   void gather(std::size_t first, std::size_t count, Slot* out) const;
+  // X (3D: and Y) from the values the bands kept in list order: X[k] = x_sorted_[where_[k]], on
+  // `chunks` threads by k, so each thread writes its own lines (bands writing X by id would share
+  // every line between the cores).
+  void scatter_next(int dim, int chunks);
 
   // One row's (3D: layer's) elements, gathered for the fast path; indices into it are local.
   struct Slot {
@@ -127,6 +131,7 @@ class NbsDetector final : public Detector {
     std::int32_t last_x;  // the book's X[id] as last written (global id, -1 ends)
     std::int32_t last_y;  // 3D: the book's Y[id] as last written
     std::int32_t run;     // 3D: at the head of a row, the number of its elements (contiguous from it)
+    std::int32_t at;      // its place in list order (order_, x_sorted_)
   };
   struct Buffer {
     std::int32_t list = -1;  // the row (layer) it holds, -1 for none
@@ -146,6 +151,9 @@ class NbsDetector final : public Detector {
   int last_bands_ = 1;
   std::vector<std::int32_t, HugePageAllocator<std::int32_t>> order_;  // fast path: N element ids grouped by row (layer), in list order
   std::vector<double, HugePageAllocator<double>> packed_;  // fast path: their records, D + 1 doubles each, in the same order
+  std::vector<std::int32_t, HugePageAllocator<std::int32_t>> where_;  // fast path: each element's place in that order
+  std::vector<std::int32_t, HugePageAllocator<std::int32_t>> x_sorted_;  // fast path: X values by place, for scatter_next
+  std::vector<std::int32_t, HugePageAllocator<std::int32_t>> y_sorted_;  // fast path, 3D: Y values by place
   std::vector<std::int32_t> list_end_;  // fast path: end of each row's (layer's) run in order_
   std::vector<std::int32_t> chunk_lists_;  // fast path on threads: each chunk's counts, heads and firsts per list
   std::vector<Band> bands_;             // fast path: one per band (the first serves the serial path)

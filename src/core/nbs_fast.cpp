@@ -29,10 +29,8 @@ namespace nbscope {
 
 namespace {
 
-// How many elements ahead a retirement asks for the line of X (Y) it writes: enough to cover a memory latency.
-constexpr std::size_t kPrefetchAhead = 16;
-
-inline void prefetch_write(const void* p) { __builtin_prefetch(p, 1, 3); }
+// How many elements ahead the last pass asks for the line of a next value it reads: enough to cover a memory latency.
+constexpr std::int64_t kPrefetchAhead = 16;
 
 }  // namespace
 
@@ -58,6 +56,8 @@ void NbsDetector::run_fast(const Elements& e, const DetectOptions& options, Pair
   if (threads > 1 && !pool_) pool_ = std::make_unique<WorkerPool>();
   try {
     order_and_pack(e, threads);
+    x_sorted_.resize(static_cast<std::size_t>(n));
+    y_sorted_.resize(dim == 3 ? static_cast<std::size_t>(n) : 0);
     // Bands of whole rows (layers), each starting at the row that holds its share of the elements;
     // a row too full to split leaves fewer bands.
     std::int32_t starts[kMaxThreads + 1];
@@ -91,6 +91,7 @@ void NbsDetector::run_fast(const Elements& e, const DetectOptions& options, Pair
     } else {
       pool_->run(bands, run_band);
     }
+    scatter_next(e.dim, threads);
     last_bands_ = bands;
     if (bands > 1) {
       std::size_t total = out_pairs.size();
@@ -112,20 +113,48 @@ void NbsDetector::run_fast(const Elements& e, const DetectOptions& options, Pair
   }
 }
 
+void NbsDetector::scatter_next(int dim, int chunks) {
+  const std::int64_t n = static_cast<std::int64_t>(where_.size());
+  const bool prefetch = n >= std::int64_t{1} << 18;  // below, everything is in cache
+  auto pass = [&](int t) {
+    const std::int32_t* const where = where_.data();
+    const std::int32_t* const xs = x_sorted_.data();
+    const std::int32_t* const ys = y_sorted_.data();
+    std::int32_t* const xn = x_next_.data();
+    std::int32_t* const yn = y_next_.data();
+    const std::int64_t end = n * (t + 1) / chunks;
+    for (std::int64_t k = n * t / chunks; k < end; ++k) {
+      if (prefetch && k + kPrefetchAhead < end) {
+        __builtin_prefetch(xs + where[k + kPrefetchAhead], 0, 3);
+        if (dim == 3) __builtin_prefetch(ys + where[k + kPrefetchAhead], 0, 3);
+      }
+      xn[k] = xs[where[k]];
+      if (dim == 3) yn[k] = ys[where[k]];
+    }
+  };
+  if (chunks == 1) {
+    pass(0);
+  } else {
+    pool_->run(chunks, pass);
+  }
+}
+
 template <int D>
 void NbsDetector::gather(std::size_t first, std::size_t count, Slot* out) const {
   const double* p = packed_.data() + first * (D + 1);
   const std::int32_t* const ids = order_.data() + first;
+  const AxisCells cell_x(grid_, 0), cell_y(grid_, 1);
   for (std::size_t i = 0; i < count; ++i, p += D + 1) {
     Slot& slot = out[i];
     slot.x = p[0];
     slot.y = p[1];
     slot.r = p[D];
     slot.id = ids[i];
-    slot.ix = grid_.cell(p[0], 0);
+    slot.at = static_cast<std::int32_t>(first + i);
+    slot.ix = cell_x(p[0]);
     if constexpr (D == 3) {
       slot.z = p[2];
-      slot.iy = grid_.cell(p[1], 1);
+      slot.iy = cell_y(p[1]);
     }
   }
 }
@@ -139,7 +168,7 @@ void NbsDetector::rows_2d(Band& band, std::int32_t* b, std::int32_t first_row, s
   BranchFreePairs pairs(out_pairs, options.max_pairs);
   const auto nx = static_cast<std::int32_t>(grid_.n[0]);
   std::int32_t* const yh = y_heads_.data();
-  std::int32_t* const xn = x_next_.data();
+  std::int32_t* const xs = x_sorted_.data();
   // B[0] (row iy's x-list heads) and B[1] (row iy-1's). Row iy-1's lists, rebuilt in B[1] by the
   // book, are the very lists it had in B[0]: its heads are kept and the two halves swap roles.
   std::int32_t* b0 = b;
@@ -147,15 +176,14 @@ void NbsDetector::rows_2d(Band& band, std::int32_t* b, std::int32_t first_row, s
   const std::int32_t* const row_end = list_end_.data();
   auto row_begin = [&](std::int32_t iy) { return iy == 0 ? 0 : row_end[iy - 1]; };
 
-  // Writes the X values of a buffer's elements (none of them is pushed again) when the band owns
-  // them, clears the heads its lists used in `heads` and empties it.
+  // Keeps the X values of a buffer's elements (none of them is pushed again) at their places in
+  // list order when the band owns them (scatter_next() writes X from there), clears the heads its lists used in `heads` and empties it.
   auto retire = [&](Buffer& buf, std::int32_t* heads) {
     const std::size_t m = buf.slots.size();
     const Slot* const s = buf.slots.data();
     if (buf.owned) {
       for (std::size_t i = 0; i < m; ++i) {
-        if (i + kPrefetchAhead < m) prefetch_write(xn + s[i + kPrefetchAhead].id);
-        xn[s[i].id] = s[i].last_x;
+        xs[s[i].at] = s[i].last_x;
         heads[s[i].ix] = -1;
       }
     } else {
@@ -247,24 +275,20 @@ void NbsDetector::layers_3d(Band& band, std::int32_t* b, std::int32_t* a, std::i
   // in B[1] are the layer's lists of B[0], so those heads are kept and the halves swap roles.
   std::int32_t* b0 = b;
   std::int32_t* b1 = b + ny;
-  std::int32_t* const yn = y_next_.data();
-  std::int32_t* const xn = x_next_.data();
+  std::int32_t* const xs = x_sorted_.data();
+  std::int32_t* const ys = y_sorted_.data();
   const std::int32_t* const layer_end = list_end_.data();
   auto layer_begin = [&](std::int32_t iz) { return iz == 0 ? 0 : layer_end[iz - 1]; };
 
-  // Writes the X and Y values of a buffer's elements when the band owns them, clears its y-list
+  // Keeps the X and Y values of a buffer's elements at their places when the band owns them, clears its y-list
   // heads in `heads`, empties it.
   auto retire = [&](Buffer& buf, std::int32_t* heads) {
     const std::size_t m = buf.slots.size();
     const Slot* const s = buf.slots.data();
     if (buf.owned) {
       for (std::size_t i = 0; i < m; ++i) {
-        if (i + kPrefetchAhead < m) {
-          prefetch_write(xn + s[i + kPrefetchAhead].id);
-          prefetch_write(yn + s[i + kPrefetchAhead].id);
-        }
-        xn[s[i].id] = s[i].last_x;
-        yn[s[i].id] = s[i].last_y;
+        xs[s[i].at] = s[i].last_x;
+        ys[s[i].at] = s[i].last_y;
         heads[s[i].iy] = -1;
       }
     } else {

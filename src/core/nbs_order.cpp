@@ -21,6 +21,8 @@ namespace nbscope {
 namespace {
 // How many elements ahead the placing pass asks for the line a record will be written to.
 constexpr std::int64_t kPlaceAhead = 16;
+// From this many elements (their records, 6 MB in 2D, outgrow the second-level caches).
+constexpr std::int64_t kPlaceAheadFrom = std::int64_t{1} << 18;
 }  // namespace
 
 std::size_t NbsDetector::moved_bytes_per_element(int dim) {
@@ -57,52 +59,68 @@ void NbsDetector::order_and_pack(const Elements& e, int chunks) {
   auto chunk_begin = [&](int t) { return n * t / chunks; };
 
   // 1. The book's pushes, k ascending within each chunk: next[k] = heads[c]; heads[c] = k.
+  const AxisCells cell_of(grid_, axis);
+  // Prefetching where each record goes pays once the arrays outgrow the caches and only costs before.
+  const bool prefetch = n >= kPlaceAheadFrom;
   auto push = [&](int t) {
+    const AxisCells cell = cell_of;
+    const double* const axis_v = v;
+    std::int32_t* const list_next = next;
     std::int32_t* const count = counts(t);
     std::int32_t* const head = chunk_heads(t);
     std::int32_t* const first = firsts(t);
     std::fill(count, count + list_count, 0);
     if (t > 0) std::fill(head, head + list_count, -1);  // chunk 0 pushes onto the book's heads, all -1 now
     std::fill(first, first + list_count, -1);
-    for (std::int64_t k = chunk_begin(t); k < chunk_begin(t + 1); ++k) {
-      const std::int32_t c = grid_.cell(v[k], axis);
+    const std::int64_t end = chunk_begin(t + 1);
+    for (std::int64_t k = chunk_begin(t); k < end; ++k) {
+      const std::int32_t c = cell(axis_v[k]);
       const std::int32_t h = head[c];
       if (h == -1) first[c] = static_cast<std::int32_t>(k);
-      next[k] = h;
+      list_next[k] = h;
       head[c] = static_cast<std::int32_t>(k);
       ++count[c];
     }
   };
   // 3. Each chunk places its elements, k descending, at its place in each list's run.
   auto place = [&](int t) {
+    const AxisCells cell = cell_of;
+    const double* const axis_v = v;
+    const double* const x = px;
+    const double* const y = py;
+    const double* const z = pz;
+    const double* const r = pr;
     std::int32_t* const at = counts(t);
     std::int32_t* const order = order_.data();
+    std::int32_t* const where = where_.data();
     double* const packed = packed_.data();
     const std::int64_t begin = chunk_begin(t);
     for (std::int64_t k = chunk_begin(t + 1) - 1; k >= begin; --k) {
       // The line the record of an element further on will go to: its list's place now is where
       // it goes or just before, so the write finds the line in cache (each stream's lines are
       // otherwise fetched one miss at a time).
-      if (k - kPlaceAhead >= begin) {
-        const std::int32_t ahead = at[grid_.cell(v[k - kPlaceAhead], axis)];
+      if (prefetch && k - kPlaceAhead >= begin) {
+        const std::int32_t ahead = at[cell(axis_v[k - kPlaceAhead])];
         __builtin_prefetch(packed + static_cast<std::ptrdiff_t>(ahead) * width, 1, 3);
         __builtin_prefetch(order + ahead, 1, 3);
       }
-      const std::int32_t pos = at[grid_.cell(v[k], axis)]++;
+      const std::int32_t pos = at[cell(axis_v[k])]++;
       order[pos] = static_cast<std::int32_t>(k);
+      where[k] = pos;
       double* const rec = packed + static_cast<std::ptrdiff_t>(pos) * width;
-      rec[0] = px[k];
-      rec[1] = py[k];
-      if (pz) {
-        rec[2] = pz[k];
-        rec[3] = pr[k];
+      rec[0] = x[k];
+      rec[1] = y[k];
+      if (z) {
+        rec[2] = z[k];
+        rec[3] = r[k];
       } else {
-        rec[2] = pr[k];
+        rec[2] = r[k];
       }
     }
   };
 
   order_.resize(static_cast<std::size_t>(n));
+  where_.resize(static_cast<std::size_t>(n));
   packed_.resize(static_cast<std::size_t>(n) * static_cast<std::size_t>(width));
   if (chunks == 1) {
     push(0);

@@ -116,20 +116,6 @@ Lines occupied_lines(const NbsDetector& d, const Elements& e) {
   return lines;
 }
 
-// True once detect() runs bands (NbsDetector::last_bands() > 1 on two full rows with two threads).
-// Until the parallel path lands, detect() ignores threads and these tests check only equality.
-bool bands_landed() {
-  static const bool landed = [] {
-    Elements e;
-    for (int k = 0; k < 64; ++k) e.push_back(0.5 + (k % 8), 0.5 + 7.0 * (k / 32), 0, 0.4);
-    NbsDetector d;
-    PairList p;
-    d.detect(e, banded(2), p);
-    return d.last_bands() > 1;
-  }();
-  return landed;
-}
-
 // detect() on `threads` equals the book, and its band count is plausible: at most one per line
 // and per thread, and (once bands have landed) more than one wherever the balanced split can cut:
 // bands are balanced by elements and cut between lines, so a second band starts once the lowest
@@ -144,14 +130,17 @@ void expect_banded_matches(NbsDetector& d, const Elements& e, int threads, const
   EXPECT_LE(d.last_bands(), std::max(1, std::min(threads, lines.occupied))) << where;
   const std::int64_t used = std::min<std::int64_t>(threads, e.size());
   const bool can_cut = used > 1 && lines.occupied > 1 && e.size() * (used - 1) / used >= lines.in_lowest;
-  if (bands_landed() && can_cut) {
-    EXPECT_GT(d.last_bands(), 1) << where;
-  }
+  if (can_cut) EXPECT_GT(d.last_bands(), 1) << where;
 }
 
 TEST(NbsBands, DetectRunsOnMoreThanOneBand) {
-  if (!bands_landed()) GTEST_SKIP() << "detect() ignores DetectOptions::threads (the parallel path has not landed)";
-  SUCCEED();
+  // Two full rows of 32 and two threads: one band each (a regression to serial fails here).
+  Elements e;
+  for (int k = 0; k < 64; ++k) e.push_back(0.5 + (k % 8), 0.5 + 7.0 * (k / 32), 0, 0.4);
+  NbsDetector d;
+  PairList p;
+  d.detect(e, banded(2), p);
+  EXPECT_EQ(d.last_bands(), 2);
 }
 
 class NbsBands : public ::testing::TestWithParam<std::tuple<Layout, int>> {};
@@ -223,9 +212,7 @@ TEST(NbsBandsSplit, OddAndEvenSplitsOfUnequallyFilledLines) {
         DetectOptions o = banded(threads);
         o.grid = ref.grid;
         EXPECT_EQ(first_difference(detect_on(d, e, o), book), "") << dim << "D threads " << threads << (pin ? " pinned" : "");
-        if (bands_landed()) {
-          EXPECT_GT(d.last_bands(), 1) << dim << "D threads " << threads;
-        }
+        EXPECT_GT(d.last_bands(), 1) << dim << "D threads " << threads;
       }
     }
   }
