@@ -11,7 +11,8 @@
 // - records packed in k order, gathered in list order: one random line per element;
 // - records placed straight into list order by the counting sort (kept): every record is written
 //   once, into one of ny streams that each fill their cache lines in turn, and read once in order.
-//   No random read is left; the only random access is writing X (Y in 3D) by element id.
+//   The only random access left is one read per element when X (3D: and Y) is written by k
+//   (scatter_next, nbs_fast.cpp).
 #include <algorithm>
 
 #include "core/nbs.hpp"
@@ -26,14 +27,18 @@ constexpr std::int64_t kPlaceAheadFrom = std::int64_t{1} << 18;
 }  // namespace
 
 std::size_t NbsDetector::moved_bytes_per_element(int dim) {
-  // Per element, from the layout below (reads and writes of a cache line counted where a write
-  // first reads the line, as a cached store does):
-  const std::size_t record = (dim == 3 ? 4 : 3) * sizeof(double);
-  const std::size_t first_lists = sizeof(double) + 2 * sizeof(std::int32_t);  // read the axis, write Y (Z)
-  const std::size_t place = record + 2 * (record + sizeof(std::int32_t));    // read the columns; write record and id
-  const std::size_t gather = record + sizeof(std::int32_t);                 // read record and id in order
-  const std::size_t next_arrays = (dim == 3 ? 2 : 1) * 2 * 64;              // X (and Y) by id: a line read and written
-  return first_lists + place + gather + next_arrays;
+  // Per element, from the layout below and in nbs_fast.cpp; a written line is counted twice (a
+  // cached store first reads the line it writes).
+  constexpr std::size_t id = sizeof(std::int32_t);
+  constexpr std::size_t line = 64;
+  const std::size_t record = static_cast<std::size_t>(dim + 1) * sizeof(double);
+  const std::size_t lists = dim == 3 ? 2 : 1;                    // next arrays the bands compute: X (3D: and Y)
+  const std::size_t first_lists = sizeof(double) + 2 * id;       // read the axis, write Y (3D: Z)
+  const std::size_t place = record + 2 * (record + id + id);     // read the columns; write record, id and place
+  const std::size_t gather = record + id;                        // read record and id in order
+  const std::size_t retire = lists * 2 * id;                     // the values kept in list order
+  const std::size_t scatter = id + lists * (line + 2 * id);      // by k: read the place, a random line, write X
+  return first_lists + place + gather + retire + scatter;
 }
 
 void NbsDetector::order_and_pack(const Elements& e, int chunks) {
