@@ -130,7 +130,9 @@ void expect_banded_matches(NbsDetector& d, const Elements& e, int threads, const
   EXPECT_LE(d.last_bands(), std::max(1, std::min(threads, lines.occupied))) << where;
   const std::int64_t used = std::min<std::int64_t>(threads, e.size());
   const bool can_cut = used > 1 && lines.occupied > 1 && e.size() * (used - 1) / used >= lines.in_lowest;
-  if (can_cut) EXPECT_GT(d.last_bands(), 1) << where;
+  if (can_cut) {
+    EXPECT_GT(d.last_bands(), 1) << where;
+  }
 }
 
 TEST(NbsBands, DetectRunsOnMoreThanOneBand) {
