@@ -47,7 +47,6 @@ namespace nbscope {
 
 namespace {
 
-
 // ---- options ----------------------------------------------------------------------------------
 
 struct GuiOptions {

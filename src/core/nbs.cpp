@@ -51,7 +51,7 @@ std::size_t NbsDetector::book_bytes() const {
 }
 
 std::size_t NbsDetector::own_bytes() const {
-  std::size_t scratch = (order_.capacity() + list_end_.capacity() + chunk_lists_.capacity()) * sizeof(std::int32_t);
+  std::size_t scratch = (order_.capacity() + chunk_lists_.capacity()) * sizeof(std::int32_t);
   scratch += packed_.capacity() * sizeof(double);
   scratch += (where_.capacity() + x_sorted_.capacity() + y_sorted_.capacity()) * sizeof(std::int32_t);
   for (const Band& band : bands_) {

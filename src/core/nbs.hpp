@@ -99,8 +99,10 @@ class NbsDetector final : public Detector {
   // The book's first lists (2D: y-lists, y_heads_ and Y; 3D: z-lists, z_heads_ and Z) and a
   // counting sort of the elements by those lists, on `chunks` threads: packed_ holds their records
   // (x, y, r; 3D x, y, z, r) and order_ their ids, each list contiguous and in list order (descending
-  // k, as pushing at the head leaves them); list c ends at list_end_[c].
+  // k, as pushing at the head leaves them); list c ends at list_end()[c].
   void order_and_pack(const Elements& elements, int chunks);
+  // Where each row's (layer's) run ends in list order, after order_and_pack: chunk 0's counts.
+  [[nodiscard]] const std::int32_t* list_end() const { return chunk_lists_.data(); }
   // Detects the rows [first, last) (2D) into `out_pairs` with the band's own buffers and heads
   // (x_heads `b` = B[2][nx]); writes X only for those rows' elements.
   void rows_2d(Band& band, std::int32_t* b, std::int32_t first, std::int32_t last, const DetectOptions& options,
@@ -154,8 +156,7 @@ class NbsDetector final : public Detector {
   std::vector<std::int32_t, HugePageAllocator<std::int32_t>> where_;  // fast path: each element's place in that order
   std::vector<std::int32_t, HugePageAllocator<std::int32_t>> x_sorted_;  // fast path: X values by place, for scatter_next
   std::vector<std::int32_t, HugePageAllocator<std::int32_t>> y_sorted_;  // fast path, 3D: Y values by place
-  std::vector<std::int32_t> list_end_;  // fast path: end of each row's (layer's) run in order_
-  std::vector<std::int32_t> chunk_lists_;  // fast path on threads: each chunk's counts, heads and firsts per list
+  std::vector<std::int32_t> chunk_lists_;  // fast path: each chunk's counts (chunk 0's: the lists' ends), heads and firsts per list
   std::vector<Band> bands_;             // fast path: one per band (the first serves the serial path)
   std::unique_ptr<WorkerPool> pool_;    // fast path: the threads of bands after the first, started on first need
   std::vector<std::int32_t> y_heads_;  // 2D: ny heads of the row lists; 3D: B[2][ny] (B[s][iy] at s*ny+iy)

@@ -65,7 +65,7 @@ void NbsDetector::run_fast(const Elements& e, const DetectOptions& options, Pair
     starts[0] = 0;
     for (int b = 1; b < threads; ++b) {
       const std::int64_t at = n * b / threads;
-      const auto c = static_cast<std::int32_t>(std::upper_bound(list_end_.begin(), list_end_.end(), at) - list_end_.begin());
+      const auto c = static_cast<std::int32_t>(std::upper_bound(list_end(), list_end() + lists, at) - list_end());
       if (c > starts[bands - 1] && c < lists) starts[bands++] = c;
     }
     starts[bands] = lists;
@@ -173,7 +173,7 @@ void NbsDetector::rows_2d(Band& band, std::int32_t* b, std::int32_t first_row, s
   // book, are the very lists it had in B[0]: its heads are kept and the two halves swap roles.
   std::int32_t* b0 = b;
   std::int32_t* b1 = b + nx;
-  const std::int32_t* const row_end = list_end_.data();
+  const std::int32_t* const row_end = list_end();
   auto row_begin = [&](std::int32_t iy) { return iy == 0 ? 0 : row_end[iy - 1]; };
 
   // Keeps the X values of a buffer's elements (none of them is pushed again) at their places in
@@ -277,7 +277,7 @@ void NbsDetector::layers_3d(Band& band, std::int32_t* b, std::int32_t* a, std::i
   std::int32_t* b1 = b + ny;
   std::int32_t* const xs = x_sorted_.data();
   std::int32_t* const ys = y_sorted_.data();
-  const std::int32_t* const layer_end = list_end_.data();
+  const std::int32_t* const layer_end = list_end();
   auto layer_begin = [&](std::int32_t iz) { return iz == 0 ? 0 : layer_end[iz - 1]; };
 
   // Keeps the X and Y values of a buffer's elements at their places when the band owns them, clears its y-list

@@ -55,12 +55,15 @@ void NbsDetector::order_and_pack(const Elements& e, int chunks) {
   const double* const pz = e.dim == 3 ? e.z.data() : nullptr;
   const double* const pr = e.r.data();
 
-  // Per chunk: counts[lists] (then where its elements of each list go), heads[lists] (its last
-  // element of each list), firsts[lists] (its first: the one whose Y follows on from the chunks before).
-  chunk_lists_.resize(static_cast<std::size_t>(chunks) * 3 * list_count);
-  auto counts = [&](int t) { return chunk_lists_.data() + static_cast<std::size_t>(t) * 3 * list_count; };
-  auto chunk_heads = [&](int t) { return t == 0 ? heads : counts(t) + list_count; };
-  auto firsts = [&](int t) { return counts(t) + 2 * list_count; };
+  // Per chunk: counts[lists] (then where its elements of each list go; chunk 0's end as each list's
+  // end, list_end()); for the chunks after the first also heads[lists] (its last element of each
+  // list) and firsts[lists] (its first: the one whose next follows on from the chunks before).
+  chunk_lists_.resize(list_count * static_cast<std::size_t>(3 * chunks - 2));
+  auto counts = [&](int t) { return chunk_lists_.data() + static_cast<std::size_t>(t) * list_count; };
+  auto chunk_heads = [&](int t) {
+    return t == 0 ? heads : chunk_lists_.data() + list_count * static_cast<std::size_t>(chunks + 2 * (t - 1));
+  };
+  auto firsts = [&](int t) { return chunk_heads(t) + list_count; };
   auto chunk_begin = [&](int t) { return n * t / chunks; };
 
   // 1. The book's pushes, k ascending within each chunk: next[k] = heads[c]; heads[c] = k.
@@ -73,11 +76,20 @@ void NbsDetector::order_and_pack(const Elements& e, int chunks) {
     std::int32_t* const list_next = next;
     std::int32_t* const count = counts(t);
     std::int32_t* const head = chunk_heads(t);
-    std::int32_t* const first = firsts(t);
     std::fill(count, count + list_count, 0);
-    if (t > 0) std::fill(head, head + list_count, -1);  // chunk 0 pushes onto the book's heads, all -1 now
-    std::fill(first, first + list_count, -1);
     const std::int64_t end = chunk_begin(t + 1);
+    if (t == 0) {  // onto the book's heads, all -1 now
+      for (std::int64_t k = 0; k < end; ++k) {
+        const std::int32_t c = cell(axis_v[k]);
+        list_next[k] = head[c];
+        head[c] = static_cast<std::int32_t>(k);
+        ++count[c];
+      }
+      return;
+    }
+    std::int32_t* const first = firsts(t);
+    std::fill(head, head + list_count, -1);
+    std::fill(first, first + list_count, -1);
     for (std::int64_t k = chunk_begin(t); k < end; ++k) {
       const std::int32_t c = cell(axis_v[k]);
       const std::int32_t h = head[c];
@@ -87,7 +99,8 @@ void NbsDetector::order_and_pack(const Elements& e, int chunks) {
       ++count[c];
     }
   };
-  // 3. Each chunk places its elements, k descending, at its place in each list's run.
+  // 3. Each chunk places its elements, k descending, at its place in each list's run; chunk 0 fills
+  // each run's end, so its counts end as the lists' ends (list_end()).
   auto place = [&](int t) {
     const AxisCells cell = cell_of;
     const double* const axis_v = v;
@@ -144,7 +157,6 @@ void NbsDetector::order_and_pack(const Elements& e, int chunks) {
       heads[c] = head[c];
     }
   }
-  list_end_.resize(list_count);
   std::int32_t start = 0;
   for (std::int32_t c = 0; c < lists; ++c) {
     for (int t = chunks - 1; t >= 0; --t) {
@@ -153,7 +165,6 @@ void NbsDetector::order_and_pack(const Elements& e, int chunks) {
       count[c] = start;
       start += m;
     }
-    list_end_[static_cast<std::size_t>(c)] = start;
   }
   if (chunks == 1) {
     place(0);
