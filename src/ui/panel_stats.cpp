@@ -77,8 +77,16 @@ class StatsPanel final : public Panel {
     }
     // Every part of the frame named (ui/frame_split.hpp): in a window they add up to the frame time.
     // The simulation's own rate beside FPS: the window draws at its pace while the worker steps at its own.
+    const std::string rate = frame_rate_line(s.drawing, s.fps);
     const std::string sim = sim_rate_text(s.drawing, s.sim_rate);
-    ImGui::TextUnformatted((frame_rate_line(s.drawing, s.fps) + (sim.empty() ? "" : "   " + sim)).c_str());
+    const float room = ImGui::GetContentRegionAvail().x;
+    ImGui::TextUnformatted(rate.c_str());
+    if (!sim.empty()) {
+      // Beside FPS when the panel is wide enough, else under it: never cut at the panel's edge.
+      const float gap = ImGui::CalcTextSize("   ").x;
+      if (ImGui::CalcTextSize(rate.c_str()).x + gap + ImGui::CalcTextSize(sim.c_str()).x <= room) ImGui::SameLine(0, gap);
+      ImGui::TextUnformatted(sim.c_str());
+    }
     const FrameTimings timings = s.report() != nullptr ? s.report()->timings : FrameTimings{};
     if (ImGui::BeginTable("split", 2)) {
       for (const FrameSplitRow& row : frame_split_rows(s.drawing, timings)) {
