@@ -103,6 +103,8 @@ class NbsDetector final : public Detector {
   void order_and_pack(const Elements& elements, int chunks);
   // Where each row's (layer's) run ends in list order, after order_and_pack: chunk 0's counts.
   [[nodiscard]] const std::int32_t* list_end() const { return chunk_lists_.data(); }
+  // Where list c's run starts (the end of list c - 1).
+  [[nodiscard]] std::int32_t list_begin(std::int32_t c) const { return c == 0 ? 0 : list_end()[c - 1]; }
   // Detects the rows [first, last) (2D) into `out_pairs` with the band's own buffers and heads
   // (x_heads `b` = B[2][nx]); writes X only for those rows' elements.
   void rows_2d(Band& band, std::int32_t* b, std::int32_t first, std::int32_t last, const DetectOptions& options,
@@ -139,6 +141,12 @@ class NbsDetector final : public Detector {
     std::int32_t list = -1;  // the row (layer) it holds, -1 for none
     bool owned = true;       // false: the row (layer) below a band, loaded for its lists; another band writes its X (Y)
     std::vector<Slot> slots;
+    // Holds no row (layer) again.
+    void empty() {
+      slots.clear();
+      list = -1;
+      owned = true;
+    }
   };
   // What one band's thread works with, kept between detections so that nothing is reallocated.
   struct Band {

@@ -174,10 +174,10 @@ void NbsDetector::rows_2d(Band& band, std::int32_t* b, std::int32_t first_row, s
   std::int32_t* b0 = b;
   std::int32_t* b1 = b + nx;
   const std::int32_t* const row_end = list_end();
-  auto row_begin = [&](std::int32_t iy) { return iy == 0 ? 0 : row_end[iy - 1]; };
 
   // Keeps the X values of a buffer's elements (none of them is pushed again) at their places in
-  // list order when the band owns them (scatter_next() writes X from there), clears the heads its lists used in `heads` and empties it.
+  // list order when the band owns them (scatter_next() writes X from there), clears the heads its
+  // lists used in `heads` and empties it.
   auto retire = [&](Buffer& buf, std::int32_t* heads) {
     const std::size_t m = buf.slots.size();
     const Slot* const s = buf.slots.data();
@@ -189,13 +189,11 @@ void NbsDetector::rows_2d(Band& band, std::int32_t* b, std::int32_t first_row, s
     } else {
       for (std::size_t i = 0; i < m; ++i) heads[s[i].ix] = -1;
     }
-    buf.slots.clear();
-    buf.list = -1;
-    buf.owned = true;
+    buf.empty();
   };
   // Gathers row iy into `buf` in y-list order and builds its x-lists: X[k] = heads[ix]; heads[ix] = k.
   auto load = [&](Buffer& buf, std::int32_t iy, std::int32_t* heads) {
-    const std::int32_t first = row_begin(iy);
+    const std::int32_t first = list_begin(iy);
     const auto m = static_cast<std::size_t>(row_end[iy] - first);
     buf.slots.resize(m);
     buf.list = iy;
@@ -222,19 +220,16 @@ void NbsDetector::rows_2d(Band& band, std::int32_t* b, std::int32_t first_row, s
 
   Buffer* cur = &band.buffers[0];
   Buffer* below = &band.buffers[1];
-  for (Buffer* buf : {cur, below}) {
-    buf->slots.clear();
-    buf->list = -1;
-    buf->owned = true;
-  }
+  cur->empty();
+  below->empty();
   // The row below the band, as the serial loop leaves it for the band's first row: its lists in
   // B[1], neither tested nor retired here (the band below owns it).
-  if (first_row > 0 && row_begin(first_row - 1) < row_end[first_row - 1]) {
+  if (first_row > 0 && list_begin(first_row - 1) < row_end[first_row - 1]) {
     load(*below, first_row - 1, b1);
     below->owned = false;
   }
   for (std::int32_t iy = first_row; iy < last_row; ++iy) {
-    if (row_begin(iy) == row_end[iy]) continue;  // y_heads[iy] == -1
+    if (list_begin(iy) == row_end[iy]) continue;  // y_heads[iy] == -1
     const bool has_below = iy > 0 && below->list == iy - 1;
     if (!has_below) retire(*below, b1);  // the last row was not iy-1: its lists are done
     load(*cur, iy, b0);
@@ -278,7 +273,6 @@ void NbsDetector::layers_3d(Band& band, std::int32_t* b, std::int32_t* a, std::i
   std::int32_t* const xs = x_sorted_.data();
   std::int32_t* const ys = y_sorted_.data();
   const std::int32_t* const layer_end = list_end();
-  auto layer_begin = [&](std::int32_t iz) { return iz == 0 ? 0 : layer_end[iz - 1]; };
 
   // Keeps the X and Y values of a buffer's elements at their places when the band owns them, clears its y-list
   // heads in `heads`, empties it.
@@ -294,16 +288,14 @@ void NbsDetector::layers_3d(Band& band, std::int32_t* b, std::int32_t* a, std::i
     } else {
       for (std::size_t i = 0; i < m; ++i) heads[s[i].iy] = -1;
     }
-    buf.slots.clear();
-    buf.list = -1;
-    buf.owned = true;
+    buf.empty();
   };
   // Gathers layer iz into `buf`, builds its y-lists (Y[k] = heads[iy]; heads[iy] = k) and regroups
   // it row by row: each row's elements contiguous in y-list order and the rows in the order the
   // book processes them (when the walk of the z-list meets a row's head), so that the five walks of
   // each y-list below are sequential reads, not pointer chasing. heads[iy] then holds where row iy starts.
   auto load = [&](Buffer& buf, std::int32_t iz, std::int32_t* heads) {
-    const std::int32_t first = layer_begin(iz);
+    const std::int32_t first = list_begin(iz);
     const auto m = static_cast<std::size_t>(layer_end[iz] - first);
     buf.slots.resize(m);
     buf.list = iz;
@@ -342,18 +334,15 @@ void NbsDetector::layers_3d(Band& band, std::int32_t* b, std::int32_t* a, std::i
 
   Buffer* cur = &band.buffers[0];
   Buffer* below = &band.buffers[1];
-  for (Buffer* buf : {cur, below}) {
-    buf->slots.clear();
-    buf->list = -1;
-    buf->owned = true;
-  }
+  cur->empty();
+  below->empty();
   // The layer below the band, as the serial loop leaves it: its y-lists in B[1], its rows grouped.
-  if (first_layer > 0 && layer_begin(first_layer - 1) < layer_end[first_layer - 1]) {
+  if (first_layer > 0 && list_begin(first_layer - 1) < layer_end[first_layer - 1]) {
     load(*below, first_layer - 1, b1);
     below->owned = false;
   }
   for (std::int32_t iz = first_layer; iz < last_layer; ++iz) {
-    if (layer_begin(iz) == layer_end[iz]) continue;  // C[iz] == -1
+    if (list_begin(iz) == layer_end[iz]) continue;  // C[iz] == -1
     const bool has_below = iz > 0 && below->list == iz - 1;
     if (!has_below) retire(*below, b1);  // the last layer was not iz-1: its lists are done
     load(*cur, iz, b0);
