@@ -4,15 +4,15 @@
 //
 // Index: moved_bytes_per_element | order_and_pack (three passes, each on `chunks` threads).
 //
-// Why packed records sorted by list, and not the other layouts measured (BM_Detect/nbs, loose, 1e6,
-// one thread, in the commit that made this choice):
-// - the columns gathered in list order, prefetched 16 elements ahead (the fast path before): three
-//   random cache lines per element (x, y and r live in three arrays), 35.6 ns/el;
-// - records packed in k order, gathered in list order: one random line per element;
+// Why packed records sorted by list: three layouts measured back to back (2D loose and dense, 1e6
+// elements in random memory order, one thread, best of 7, ns per element):
+// - the columns gathered in list order, prefetched 16 elements ahead (the fast path before; this
+//   frame's order as the prefetch order): three random lines per element, 47.8 and 107.6;
+// - records packed in k order, gathered in list order: one random line per element, 53.4 and 106.9;
 // - records placed straight into list order by the counting sort (kept): every record is written
-//   once, into one of ny streams that each fill their cache lines in turn, and read once in order.
-//   The only random access left is one read per element when X (3D: and Y) is written by k
-//   (scatter_next, nbs_fast.cpp).
+//   once, into one of ny streams that each fill their cache lines in turn, and read once in order,
+//   37.7 and 91.2. The only random access left is one read per element when X (3D: and Y) is
+//   written by k (scatter_next, nbs_fast.cpp).
 #include <algorithm>
 
 #include "core/nbs.hpp"
