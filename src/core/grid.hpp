@@ -41,12 +41,8 @@ struct Grid {
   // Clamping keeps neighbours neighbours (the map is monotone), so an origin pinned inside the
   // data still finds every contact.
   // On [0, n) Int() is truncation, which needs no floor() (a library call on baseline x86-64).
-  [[nodiscard]] std::int32_t cell(double v, int a) const {
-    const double c = (v - origin[a]) * inv_cell_size;
-    if (!(c >= 0)) return 0;  // also catches NaN
-    if (c >= static_cast<double>(n[a])) return static_cast<std::int32_t>(n[a] - 1);
-    return static_cast<std::int32_t>(c);
-  }
+  // (AxisCells below holds the one implementation.)
+  [[nodiscard]] std::int32_t cell(double v, int a) const;
   // The cell `offset` (-1, 0 or 1) from cell c along axis a: wrapped on a periodic axis, -1 past an open edge.
   [[nodiscard]] std::int32_t neighbour(std::int32_t c, std::int32_t offset, int a) const {
     const std::int32_t m = c + offset;
@@ -72,14 +68,16 @@ struct AxisCells {
   AxisCells(const Grid& g, int a)
       : origin(g.origin[a]), inv_cell_size(g.inv_cell_size), cells(static_cast<double>(g.n[a])),
         last(static_cast<std::int32_t>(g.n[a] - 1)) {}
-  // The same as Grid::cell(v, a).
+  // Grid::cell(v, a): Int((v - origin)/d), clamped into [0, n).
   [[nodiscard]] std::int32_t operator()(double v) const {
     const double c = (v - origin) * inv_cell_size;
-    if (!(c >= 0)) return 0;
+    if (!(c >= 0)) return 0;  // also catches NaN
     if (c >= cells) return last;
     return static_cast<std::int32_t>(c);
   }
 };
+
+inline std::int32_t Grid::cell(double v, int a) const { return AxisCells(*this, a)(v); }
 
 // Fits a grid to `elements`: d = options.cell_size or the largest diameter; origin = options.origin
 // or the minimum corner; n = options.cells or enough to cover every centre. When d is within

@@ -122,6 +122,7 @@ void NbsDetector::order_and_pack(const Elements& e, int chunks) {
         __builtin_prefetch(packed + static_cast<std::ptrdiff_t>(ahead) * width, 1, 3);
         __builtin_prefetch(order + ahead, 1, 3);
       }
+      // The cell again, not kept from the pushes: a multiply is cheaper than writing and reading N integers.
       const std::int32_t pos = at[cell(axis_v[k])]++;
       order[pos] = static_cast<std::int32_t>(k);
       where[k] = pos;
