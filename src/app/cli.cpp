@@ -58,6 +58,31 @@ bool Args::has(const std::string& name) const {
   return false;
 }
 
+std::optional<std::string> Args::peek(const std::string& name) const {
+  for (std::size_t i = 0; i < args_.size(); ++i) {
+    if (used_[i]) continue;
+    if (args_[i] == name) return i + 1 < args_.size() ? std::optional<std::string>(args_[i + 1]) : std::nullopt;
+    if (args_[i].rfind(name + "=", 0) == 0) return args_[i].substr(name.size() + 1);
+  }
+  return std::nullopt;
+}
+
+void Args::set(const std::string& name, const std::string& value) {
+  for (std::size_t i = 0; i < args_.size(); ++i) {
+    if (used_[i]) continue;
+    if (args_[i] == name && i + 1 < args_.size()) {
+      args_[i + 1] = value;
+      return;
+    }
+    if (args_[i].rfind(name + "=", 0) == 0) {
+      args_[i] = name + "=" + value;
+      return;
+    }
+  }
+  args_.push_back(name + "=" + value);  // one word: never mistaken for a positional argument
+  used_.push_back(false);
+}
+
 bool Args::flag(const std::string& name) {
   for (std::size_t i = 0; i < args_.size(); ++i) {
     if (!used_[i] && args_[i] == name) {

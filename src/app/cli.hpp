@@ -25,6 +25,10 @@ class Args {
   std::vector<std::string> values(const std::string& name);
   // True when `--name` or `--name=VALUE` is among the arguments not yet taken; takes nothing.
   [[nodiscard]] bool has(const std::string& name) const;
+  // The value of `--name` among the arguments not yet taken (the first one), taking nothing.
+  [[nodiscard]] std::optional<std::string> peek(const std::string& name) const;
+  // Makes `value` the value of `--name`: the first one not yet taken replaced, else `--name value` added.
+  void set(const std::string& name, const std::string& value);
   // Like value(), parsed as an integer in [min, max] ("1e6" is one too); Error names the flag otherwise.
   std::optional<long long> integer(const std::string& name, long long min, long long max);
   // Like value(), parsed as a finite double.

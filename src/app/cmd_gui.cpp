@@ -33,6 +33,7 @@
 #include "app/view_options.hpp"
 #include "app/window_pacing.hpp"
 #include "check/faults.hpp"
+#include "core/detector.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/data_dir.hpp"
@@ -137,7 +138,8 @@ int run_without_display(GuiOptions o, FrameLoop& loop, const std::string& scene_
   }
   const std::string summary = view->write_screenshot(loop);
   // Said once it worked: a refused --gl or screenshot path is then the only line on stderr.
-  std::fprintf(stderr, "nbscope: no display: rendered %s headless instead\nnbscope: %s\n", plural(frames, "frame").c_str(), summary.c_str());
+  std::fprintf(stderr, "nbscope: no display: rendered %s of %s headless instead\nnbscope: %s\n", plural(frames, "frame").c_str(),
+               detector_label(loop.pipeline().algorithm()).c_str(), summary.c_str());
   std::printf("screenshot: %s\n", std::filesystem::absolute(*o.view.screenshot).c_str());
   return failed ? 1 : 0;
 }
@@ -182,10 +184,12 @@ struct ScriptedTimes {
     const std::int64_t counted = *o.frames + (loop.source().replaying() ? 1 : 0);
     std::fprintf(stderr,
                  "nbscope: window: %s (simulated in %.2f s = sim %.1f frames/s), %lld drawn in %.2f s = %.1f FPS; "
-                 "ms a simulated frame: physics %.2f%s, detection %.2f, check %.2f; ms a drawn frame: render+panels %.2f%s%s\n",
+                 "ms a simulated frame: physics %.2f%s, detection %.2f, check %.2f; ms a drawn frame: render+panels %.2f; "
+                 "algorithm %s%s%s\n",
                  plural(counted, "frame").c_str(), sim_seconds, sim_seconds > 0 ? static_cast<double>(stepped) / sim_seconds : 0.0,
                  static_cast<long long>(rendered + 1), seconds, drawn / seconds, sum_physics / steps,
                  any_overlapped ? " (overlapped)" : "", sum_detect / steps, sum_check / steps, sum_view / drawn,
+                 detector_label(loop.pipeline().algorithm()).c_str(),
                  o.view.screenshot ? "; screenshot " : "", o.view.screenshot ? o.view.screenshot->c_str() : "");
     if (o.back > 0) {
       const double k = static_cast<double>(o.back);
@@ -429,6 +433,8 @@ int run_replay_window(const HeadlessOptions& o) {
 }
 
 // ---- run_gui ----------------------------------------------------------------------------------
+
+const char* window_build_line() { return "window: yes (GLFW; screenshots off-screen through OSMesa or EGL)"; }
 
 int run_gui(Args& args) {
   // Someone's own arrays on their elements (--input, --arrays): the verify window (verify_window.cpp).

@@ -22,6 +22,7 @@
 #include "app/scaling_flags.hpp"
 #include "app/threads_flag.hpp"
 #include "check/recorded_lane.hpp"
+#include "core/detector.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/data_dir.hpp"
@@ -71,7 +72,7 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
   std::string refs_text;
   for (const auto& [name, count] : refs) refs_text += (refs_text.empty() ? "" : ", ") + name;
   std::string names;
-  for (const AlgorithmRun& run : report.runs) names += (names.empty() ? "" : ",") + run.algorithm;
+  for (const AlgorithmRun& run : report.runs) names += (names.empty() ? "" : ",") + detector_label(run.algorithm);
   const std::int64_t frames = report.runs.empty() ? 0 : report.runs.front().frames_run;
   // The run's last frame's, not the frame shown at the end (--back, --violation go elsewhere).
   const std::int64_t elements = frames > 0 ? report.runs.front().last_elements : loop.source().elements().size();

@@ -75,7 +75,7 @@ int run_pairs(Args& args) {
     if (!std::cout) throw Error(std::string("stdout: cannot write: ") + std::strerror(errno));  // `> /dev/full`
   }
   // The line about the run after its output: when writing fails, the error is the only line on stderr.
-  std::fprintf(stderr, "nbscope: %s: %s (%dD), %s, detection %.3f ms", algorithm.c_str(),
+  std::fprintf(stderr, "nbscope: %s: %s (%dD), %s, detection %.3f ms", detector_label(algorithm).c_str(),
                plural(static_cast<long long>(elements.size()), "element").c_str(), elements.dim,
                plural(static_cast<long long>(pairs.size()), "pair").c_str(), best * 1e3);
   if (repeat > 1) std::fprintf(stderr, " (best of %lld, mean %.3f ms, all runs agree)", repeat, total / repeat * 1e3);

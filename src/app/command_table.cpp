@@ -48,8 +48,9 @@ const std::vector<OptionSpec>& grid_options() {
 const std::vector<OptionSpec>& plugin_options() {
   static const std::vector<OptionSpec> options = {
       {"--detector-lib", "PATH.so", "",
-       "loads a detector plugin (include/nbscope/detector.h), named then as a built-in; repeatable. One that breaks the API, "
-       "crashes or hangs stops the run: exit 2, naming it and the frame"},
+       "loads a detector plugin (include/nbscope/detector.h), named then as a built-in (or by its file name); repeatable. "
+       "Without --algorithm its detector is the one run. One that breaks the API, crashes or hangs stops the run: exit 2, "
+       "naming it and the frame"},
       {"--detector-timeout", "SECONDS", "60", "how long one detection of a plugin may take before the run stops (0: no limit)"},
   };
   return options;
@@ -121,7 +122,7 @@ CommandSpec gui_command() {
        "display it renders headless into --screenshot (default $TMPDIR/nbscope-verify-ARRAYS.png) and prints the path."},
       {{"options",
         {{"--scene", "FILE", "the last scene used, else assets/scenes/default.json", "the scene to simulate (assets/scenes/*.json)"},
-         {"--algorithm", "NAME", "the last algorithm used, else nbs",
+         {"--algorithm", "NAME", "a --detector-lib's detector, else the last algorithm used, else nbs",
           "the detector (nbscope algorithms); with --arrays the arrays' algorithm, as verify --arrays"},
          {"--inject-fault", "NAME", "", "breaks the detection (or Box2D's side) on purpose, as headless --inject-fault"},
          {"--history-mb", "N", "256, saved with the settings", "memory for the frames the Timeline keeps"},
@@ -173,7 +174,7 @@ CommandSpec headless_command() {
       {{"options",
         {{"--scene", "FILE", "", "the scene to run (required)"},
          {"--frames", "N", "600", "the frames to run"},
-         {"--algorithm", "NAME[,NAME...]|all", "nbs", "the detectors run and checked on the same frames"},
+         {"--algorithm", "NAME[,NAME...]|all", "the --detector-lib detectors, else nbs", "the detectors run and checked on the same frames"},
          {"--report", "OUT.json", "", "writes per-frame counts, timings and every violation as JSON"},
          {"--inject-fault", "NAME", "",
           "drop-mask-cell | off-by-one-cell | stale-positions | drop-pair | drop-box2d-contact breaks the detection (or Box2D's "
@@ -252,7 +253,7 @@ CommandSpec replay_command() {
       {{"options",
         {{"--headless", "", "", "no window even when there is a display"},
          {"--frames", "N", "every recorded frame", "the first N frames only"},
-         {"--algorithm", "NAME[,NAME...]|all", "nbs, or recorded when the frames carry pairs", "the detectors run and checked"},
+         {"--algorithm", "NAME[,NAME...]|all", "the --detector-lib detectors, else nbs, or recorded when the frames carry pairs", "the detectors run and checked"},
          {"--report", "OUT.json", "", "as headless --report"},
          {"--inject-fault", "NAME", "", "drop-pair, drop-mask-cell, off-by-one-cell or stale-positions (as headless)"},
          {"--brute-limit", "N", "2000", "as headless --brute-limit"},

@@ -25,7 +25,7 @@ CommandSpec pairs_command() {
       {"Contact pairs of the elements (rows x,y,r or x,y,z,r) as CSV \"i,j\" (0-based, i < j, sorted), to PAIRS.csv or stdout. "
        "Detection time (without I/O) and pair count go to stderr."},
       {{"options", with_grid({{"--input", "ELEMENTS.csv", "", "the elements, one x,y,r or x,y,z,r a row (required)"},
-                              {"--algorithm", "NAME", "nbs", "the detector (nbscope algorithms)"},
+                              {"--algorithm", "NAME", "a --detector-lib's detector, else nbs", "the detector (nbscope algorithms)"},
                               {"--output", "PAIRS.csv", "stdout", "where the pairs go"},
                               {"--repeat", "K", "1", "runs detection K times and checks that every run agrees"},
                               {"--max-pairs", "M", "50,000,000: 400 MB of pairs, about 600 MB at the peak while the list grows",
@@ -48,7 +48,7 @@ CommandSpec dump_command() {
        "next; nbs: y_heads, y_next and per non-empty row its x-lists (3D: z_heads, z_next, layers); tree: its leaves' bounds and HEADs "
        "and next; sort: sorted cell keys and order; brute, box2d: counts only."},
       {{"options", with_grid({{"--input", "ELEMENTS.csv", "", "the elements (required)"},
-                              {"--algorithm", "NAME", "", "the detector whose arrays are written (required)"},
+                              {"--algorithm", "NAME", "a --detector-lib's detector", "the detector whose arrays are written (required without --detector-lib)"},
                               {"--format", "json", "json", "the output format (JSON is the only one)"}})},
        {kPluginOptionsTitle, plugin_options()}},
       {"nbscope dump --input assets/examples/nine.csv --algorithm screen --cell-size 1 --origin 0,0 --cells 10,10"},
@@ -113,7 +113,7 @@ CommandSpec scaling_command() {
        "brute is skipped above N = 10,000, and a detector whose one run would take over 2 s at an N (its last time, scaled by N) is "
        "skipped there (noted). A progress bar on stderr when it is a terminal. The window's Scaling panel (View menu) runs the same in "
        "the background and plots it; nbscope headless --scaling renders that panel."},
-      {{"options", {{"--algorithm", "NAME[,NAME...]|all", "all", "the detectors timed"},
+      {{"options", {{"--algorithm", "NAME[,NAME...]|all", "the --detector-lib detectors, else all", "the detectors timed"},
                     {"--layout", "NAME[,NAME...]", "loose", "the generated layouts: loose, dense, clustered, touching, unequal_radii, "
                                                             "far_away, on_line"},
                     {"--n", "MIN..MAX", "1000..1000000", "the range of N (1e3-style powers too)"},

@@ -27,4 +27,8 @@ int run_verify(Args& args);
 // `nbscope [gui]`: the window (app/cmd_gui.cpp); headless with a screenshot when there is no display.
 int run_gui(Args& args);
 
+// `nbscope --version`'s line on the window, for scripts that ask whether it was built ("window: yes
+// (...)" or "window: no (...)"): cmd_gui.cpp where the window is built, gui_stub.cpp where not.
+const char* window_build_line();
+
 }  // namespace nbscope

@@ -26,6 +26,8 @@ int run_verify_window(const VerifyArraysRun&, const ViewOptions&) {
 
 int run_verify_gui(Args&) { throw Error("gui: this nbscope was built without the window (NBSCOPE_GUI=OFF)"); }
 
+const char* window_build_line() { return "window: no (built with NBSCOPE_GUI=OFF: no window, no screenshots)"; }
+
 int run_gui(Args&) { throw Error("gui: this nbscope was built without the window (NBSCOPE_GUI=OFF)"); }
 
 }  // namespace nbscope

@@ -112,7 +112,8 @@ std::string cli_markdown() {
   for (const CommandSpec& c : command_table())
     out += "| [`" + std::string(c.name) + "`](#nbscope-" + c.name + ") | " + cell(c.summary) + " |\n";
   out += "\nGlobal options: `--help`, `-h` or `help [COMMAND]` (this summary, or one command's options); `--version` (and "
-         "where the bundled scenes and shaders are read from).\n\n"
+         "whether the window was built, `window: yes` or `window: no`, and where the bundled scenes and shaders are read "
+         "from).\n\n"
          "Exit codes: " + std::string(kExitCodes) + ".\n";
   for (const CommandSpec& c : command_table()) {
     out += "\n## nbscope " + std::string(c.name) + "\n\n" + c.summary + ".\n\n```\n";

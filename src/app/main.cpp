@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/command_table.hpp"
+#include "app/commands.hpp"
 #include "app/help.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -27,7 +28,7 @@ int dispatch(const std::string& command, const std::vector<std::string>& rest) {
   if (command == "--version") {
     nbscope::Args args(rest, command);
     args.finish();
-    std::printf("nbscope %s\n", nbscope::kVersion);
+    std::printf("nbscope %s\n%s\n", nbscope::kVersion, nbscope::window_build_line());
     std::fputs(nbscope::data_dirs_text().c_str(), stdout);  // which scenes and shaders it reads
     return 0;
   }

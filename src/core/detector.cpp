@@ -31,6 +31,15 @@ std::string detector_names() {
   return s;
 }
 
+std::string detector_label(std::string_view name) {
+  for (const DetectorInfo& d : registry()) {
+    if (d.name != name || d.library.empty()) continue;
+    const std::size_t slash = d.library.find_last_of('/');
+    return d.name + " (" + d.library.substr(slash == std::string::npos ? 0 : slash + 1) + ")";
+  }
+  return std::string(name);
+}
+
 const DetectorInfo& detector_info(std::string_view name) {
   for (const DetectorInfo& d : registry())
     if (d.name == name) return d;

@@ -140,6 +140,8 @@ struct DetectorInfo {
   // It detects on DetectOptions::threads threads (nbs's bands); false: one thread whatever it is
   // given, so a scaling plan measures it once, at 1.
   bool uses_threads = false;
+  // The shared library a plugin was loaded from (--detector-lib, as given); empty for a built-in.
+  std::string library = {};
   std::function<std::unique_ptr<Detector>()> make;
 };
 
@@ -154,5 +156,8 @@ const DetectorInfo& detector_info(std::string_view name);
 std::unique_ptr<Detector> make_detector(std::string_view name);
 // "brute, nbs, ..." for messages.
 std::string detector_names();
+// `name` as run summaries write it: a plugin's with its library's file name ("nbs-bug-mask
+// (nbs_bug_mask.so)"), a built-in's or an unknown one's as it is.
+std::string detector_label(std::string_view name);
 
 }  // namespace nbscope

@@ -119,6 +119,7 @@ DetectorInfo plugin_detector_info(const PluginSymbols& symbols, const nbscope_de
   entry.dim3 = (info.capabilities & NBSCOPE_CAP_3D) != 0;
   entry.traces = (info.capabilities & NBSCOPE_CAP_TRACES) != 0;
   entry.has_lists = (info.capabilities & NBSCOPE_CAP_LISTS) != 0;
+  entry.library = symbols.library;
   const nbscope_detector_info* described = &info;  // lives as long as the library: never unloaded
   entry.make = [symbols, described]() -> std::unique_ptr<Detector> {
     return std::make_unique<PluginDetector>(symbols, *described);

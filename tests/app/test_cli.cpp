@@ -29,6 +29,12 @@ TEST(Cli, HelpVersionAndAlgorithms) {
   auto version = run("--version");
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_EQ(version.out.rfind("nbscope ", 0), 0u);
+  // The line scripts/dev run asks whether the window is built (its second line, whole).
+#ifdef NBSCOPE_TEST_GUI
+  EXPECT_NE(version.out.find("\nwindow: yes ("), std::string::npos) << version.out;
+#else
+  EXPECT_NE(version.out.find("\nwindow: no ("), std::string::npos) << version.out;
+#endif
   const auto pairs = run("pairs --help");  // help after a command is its page, not an unknown flag
   EXPECT_EQ(pairs.exit_code, 0);
   EXPECT_NE(pairs.out.find("--repeat K"), std::string::npos);

@@ -140,8 +140,8 @@ TEST(Settings, SavedDetectorLibrariesAreLoadedBeforeTheAlgorithmIsLookedUp) {
   const auto load = [&](const std::string& library) {
     if (library == "/gone.so") throw Error("/gone.so: cannot open shared object file");
     loaded.push_back(library);
-    register_detector(DetectorInfo{"settings_plugin", "a plugin the settings test registers", true, false, false, false, false, false,
-                                   [] { return make_detector("brute"); }});
+    register_detector(DetectorInfo{.name = "settings_plugin", .summary = "a plugin the settings test registers", .library = library,
+                                   .make = [] { return make_detector("brute"); }});
   };
   std::vector<std::string> ignored;
   Settings s = load_settings(path, ignored, load);
