@@ -263,6 +263,7 @@ void save_settings(ui::Settings& settings, GlView& view, const FrameLoop& loop, 
 // `stopped`: the refusal of a world that stopped at load ("" when it runs): the window opens paused
 // on it, with no scene (a scripted run saves that picture and ends with the line).
 int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Settings* settings, const std::string& stopped = "") {
+  install_stop_handlers();  // before the window exists: a SIGTERM once it is shown closes it, never kills the process
   const std::string title = loop.source().has_scene() ? loop.source().scene().name : std::filesystem::path(session.scene_path).stem().string();
   render::GlfwWindow window(o.view.width, o.view.height, "nbscope - " + title);
   const bool scripted = o.frames.has_value();
@@ -303,7 +304,6 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   double fps_window_start = window.time();
   int fps_frames = 0;
   SimRate sim_rate;
-  install_stop_handlers();
   // The UI frame's requests are applied at the top of the next one; any that needs the world adopts
   // the step in flight first, so each acts on a whole frame.
   ui::UiRequests requests;

@@ -19,6 +19,7 @@
 #include "render/gl_context.hpp"
 #include "render/gl_window.hpp"
 #include "core/traced_lists.hpp"
+#include "support/x_display.hpp"
 #include "ui/stepper_panels.hpp"
 
 namespace nbscope {
@@ -122,15 +123,15 @@ TEST(GlView, ATapQueuedBetweenTwoFramesActs) {
   EXPECT_FALSE(rig.view->frame(rig.loop, rig.session, true, 1.0f / 60.0f).toggle_pause);
 }
 
-// Through GLFW's own callbacks in a real window (under Xvfb: without a display the test runs itself
-// under xvfb-run): ImGui's backend, which chains to the window's callback, still sees the key, and
+// Through GLFW's own callbacks in a real window (without a display the test runs itself again on its
+// own Xvfb): ImGui's backend, which chains to the window's callback, still sees the key, and
 // the window queues it, so a press and release before the next frame still act on it.
 TEST(GlViewWindow, ATapThroughGlfwsCallbacksActs) {
   const char* display = std::getenv("DISPLAY");
   if (display == nullptr || *display == '\0') {
-    if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
+    NBSCOPE_SKIP_WITHOUT_XVFB();
     const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-    const std::string cmd = "xvfb-run -a -s '-screen 0 1280x720x24' '" + self +
+    const std::string cmd = testcli::on_display() + " '" + self +
                             "' --gtest_filter=GlViewWindow.ATapThroughGlfwsCallbacksActs >/dev/null 2>&1";
     EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
     return;

@@ -21,6 +21,7 @@
 #include "io/png.hpp"
 #include "support/golden_tolerance.hpp"
 #include "support/run_cli.hpp"
+#include "support/x_display.hpp"
 
 namespace nbscope {
 namespace {
@@ -161,20 +162,16 @@ TEST(GoldenCompare, FailsWhenAnOverlayIsSwitchedOff) {
 
 // ---- the window under Xvfb --------------------------------------------------------------------
 
-bool have(const char* program) {
-  return std::system((std::string("command -v ") + program + " >/dev/null 2>&1").c_str()) == 0;
-}
-
 // Renders `args` in the window under Xvfb and headless and expects the same picture: both draw the
 // last state until ImGui's layout has settled, however few frames were asked for. `window_log`
 // receives what the window said on stderr.
 void expect_window_matches_headless(const std::string& name, const std::string& args, std::string* window_log = nullptr) {
-  if (!have("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
+  NBSCOPE_SKIP_WITHOUT_XVFB();
   std::filesystem::create_directories(kOut);
   const std::string window_png = kOut + "/window_" + name + ".png", headless_png = kOut + "/window_" + name + "_headless.png";
   std::filesystem::remove(window_png);
   const std::string log = kOut + "/window_" + name + ".log";
-  const std::string cmd = testcli::xvfb_run() + " '" + testcli::binary() + "' gui " + args +
+  const std::string cmd = testcli::on_display() + " '" + testcli::binary() + "' gui " + args +
                           " --screenshot '" + window_png + "' >'" + log + "' 2>&1";
   const int status = std::system(cmd.c_str());
   ASSERT_EQ(status, 0) << testcli::read_text(log);

@@ -5,8 +5,9 @@
 //   opens paused on it instead of exiting;
 // - a stale settings file (an unknown algorithm, a last scene that no longer reads, wrong types,
 //   not JSON) still opens the window, with one note line naming the file and what was ignored.
-// Interactive sessions are ended by `timeout` (SIGTERM closes the window like its close button:
-// exit 124, and the settings file written on the way out shows the loop ran to its end).
+// Interactive sessions run on the test's own Xvfb until their window is mapped, then get SIGTERM,
+// which closes the window like its close button (exit 0, and the settings file written on the way
+// out shows the loop ran to its end; support/x_display.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 
 #include "io/png.hpp"
 #include "support/run_cli.hpp"
+#include "support/x_display.hpp"
 
 namespace nbscope {
 namespace {
@@ -28,14 +30,13 @@ using testcli::write_text;
 const std::string kDefaultScene = std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/default.json";
 constexpr const char* kNoDisplay = "env -u DISPLAY -u WAYLAND_DISPLAY";
 
-bool have_xvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
-
-#define SKIP_WITHOUT_WINDOW()                                                               \
-  do {                                                                                      \
-    if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";           \
-  } while (false)
-
 std::size_t lines(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
+
+// The interactive window was shown, and SIGTERM closed it as its close button does (exit 0).
+void expect_closed_by_sigterm(const testcli::WindowRun& r) {
+  EXPECT_TRUE(r.window_shown) << "no window was mapped: " << r.out << r.err;
+  EXPECT_EQ(r.exit_code, 0) << "the window did not close normally on SIGTERM: " << r.out << r.err;
+}
 
 void expect_only_error_line(const testcli::Result& r, const std::string& needle) {
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
@@ -79,10 +80,10 @@ std::string world_that_stops_mid_run(const std::string& dir) {
 // ---- a world that stops at load -------------------------------------------------------------------
 
 TEST(GuiStop, AtLoadTheWindowSavesThePictureOfTheMessageAndExits2WithOneLine) {
-  SKIP_WITHOUT_WINDOW();
+  NBSCOPE_SKIP_WITHOUT_XVFB();
   const std::string dir = scratch_dir("gui_stop_load_window");
   const auto r = run("gui --scene '" + kDefaultScene + "' --max-contacts 0 --frames 3 --size 800x600 --screenshot '" + dir + "/shot.png'",
-                     testcli::xvfb_run());
+                     testcli::on_display());
   expect_only_error_line(r, "default.json: frame 1: Box2D would create about ");
   EXPECT_EQ(r.out, "");
   expect_picture_of_the_message(dir + "/shot.png");
@@ -106,11 +107,10 @@ TEST(GuiStop, AtLoadWithoutADisplayOrAPathThePictureGoesToTmpdir) {
 }
 
 TEST(GuiStop, AtLoadTheInteractiveWindowOpensPausedOnTheMessage) {
-  SKIP_WITHOUT_WINDOW();
+  NBSCOPE_SKIP_WITHOUT_XVFB();
   const std::string dir = scratch_dir("gui_stop_load_interactive");
-  const auto r = run("gui --scene '" + kDefaultScene + "' --max-contacts 0",
-                     testcli::xvfb_run() + " env XDG_CONFIG_HOME='" + dir + "' timeout -s TERM 4");
-  EXPECT_EQ(r.exit_code, 124) << "the window did not stay open: " << r.out << r.err;
+  const auto r = testcli::run_window("gui --scene '" + kDefaultScene + "' --max-contacts 0", "XDG_CONFIG_HOME='" + dir + "'");
+  expect_closed_by_sigterm(r);
   EXPECT_EQ(r.err, "");
   const std::string saved = testcli::read_text(dir + "/nbscope/settings.json");
   ASSERT_FALSE(saved.empty()) << "the window did not close normally";
@@ -129,10 +129,10 @@ TEST(GuiStop, ASceneThatFailsToLoadIsAnErrorWithoutAPicture) {
 // ---- a world that stops mid-run -------------------------------------------------------------------
 
 TEST(GuiStop, MidRunTheWindowSavesThePictureAndPrintsOnlyTheError) {
-  SKIP_WITHOUT_WINDOW();
+  NBSCOPE_SKIP_WITHOUT_XVFB();
   const std::string dir = scratch_dir("gui_stop_mid_window");
   const auto r = run("gui --scene '" + world_that_stops_mid_run(dir) + "' --frames 5 --size 800x600 --screenshot '" + dir + "/shot.png'",
-                     testcli::xvfb_run());
+                     testcli::on_display());
   expect_only_error_line(r, "poured.json: frame ");
   EXPECT_NE(r.err.find("Box2D would create about 780 contacts"), std::string::npos) << r.err;
   EXPECT_EQ(r.out, "");
@@ -150,22 +150,22 @@ TEST(GuiStop, MidRunWithoutADisplayThePictureIsRenderedHeadless) {
 
 // ---- a stale settings file --------------------------------------------------------------------------
 
-// Runs the interactive window for a few seconds with `settings` as its settings file.
-testcli::Result window_with_settings(const std::string& dir, const std::string& settings, const std::string& args = "") {
+// Runs the interactive window until it is shown, then closes it, with `settings` as its settings file.
+testcli::WindowRun window_with_settings(const std::string& dir, const std::string& settings, const std::string& args = "") {
   std::filesystem::create_directories(dir + "/nbscope");
   write_text(dir + "/nbscope/settings.json", settings);
-  return run("gui" + args, testcli::xvfb_run() + " env XDG_CONFIG_HOME='" + dir + "' timeout -s TERM 4");
+  return testcli::run_window("gui" + args, "XDG_CONFIG_HOME='" + dir + "'");
 }
 
-void expect_one_note(const testcli::Result& r, const std::string& dir, const std::vector<std::string>& needles) {
-  EXPECT_EQ(r.exit_code, 124) << "the window did not stay open: " << r.out << r.err;
+void expect_one_note(const testcli::WindowRun& r, const std::string& dir, const std::vector<std::string>& needles) {
+  expect_closed_by_sigterm(r);
   EXPECT_EQ(lines(r.err), 1u) << r.err;
   EXPECT_EQ(r.err.rfind("nbscope: note: " + dir + "/nbscope/settings.json: ignored ", 0), 0u) << r.err;
   for (const std::string& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << n << " not in " << r.err;
 }
 
 TEST(GuiSettings, AnUnknownAlgorithmAndWrongTypesAreIgnoredAndTheWindowOpens) {
-  SKIP_WITHOUT_WINDOW();
+  NBSCOPE_SKIP_WITHOUT_XVFB();
   const std::string dir = scratch_dir("gui_settings_stale");
   const auto r = window_with_settings(dir, R"({"version": 1, "algorithm": "bogus", "speed": "fast", "history_mb": 64,
     "overlays": {"grid": "yes", "ids": true}})");
@@ -181,25 +181,25 @@ TEST(GuiSettings, AnUnknownAlgorithmAndWrongTypesAreIgnoredAndTheWindowOpens) {
 // A plugin chosen in the window is chosen again at the next start: its library is saved with it and
 // loaded before the saved algorithm is looked up (else the algorithm would be ignored as unknown).
 TEST(GuiSettings, ADetectorLibraryIsRememberedWithItsAlgorithm) {
-  SKIP_WITHOUT_WINDOW();
+  NBSCOPE_SKIP_WITHOUT_XVFB();
   const std::string dir = scratch_dir("gui_settings_detector_lib");
   const std::string library = std::string(NBSCOPE_PLUGIN_DIR) + "/test_plugin_good.so";
   const auto first = window_with_settings(dir, R"({"version": 1})", " --detector-lib '" + library + "' --algorithm test-good");
-  EXPECT_EQ(first.exit_code, 124) << first.err;
+  expect_closed_by_sigterm(first);
   auto saved = nlohmann::json::parse(testcli::read_text(dir + "/nbscope/settings.json"));
   EXPECT_EQ(saved.at("algorithm"), "test-good");
   ASSERT_EQ(saved.at("detector_libs").size(), 1u);
   EXPECT_EQ(std::filesystem::path(saved.at("detector_libs")[0].get<std::string>()), std::filesystem::canonical(library));
 
-  const auto second = run("gui", testcli::xvfb_run() + " env XDG_CONFIG_HOME='" + dir + "' timeout -s TERM 4");
-  EXPECT_EQ(second.exit_code, 124) << second.err;
+  const auto second = testcli::run_window("gui", "XDG_CONFIG_HOME='" + dir + "'");
+  expect_closed_by_sigterm(second);
   EXPECT_EQ(second.err, "");  // nothing ignored: the library loaded, so its algorithm was known
   saved = nlohmann::json::parse(testcli::read_text(dir + "/nbscope/settings.json"));
   EXPECT_EQ(saved.at("algorithm"), "test-good");
 }
 
 TEST(GuiSettings, ALastSceneThatNoLongerReadsFallsBackToTheDefaultScene) {
-  SKIP_WITHOUT_WINDOW();
+  NBSCOPE_SKIP_WITHOUT_XVFB();
   const std::string dir = scratch_dir("gui_settings_last_scene");
   write_text(dir + "/broken.json", "{\"bodies\": [");
   const auto r = window_with_settings(dir, R"({"version": 1, "last_scene": ")" + dir + R"(/broken.json"})");
@@ -208,14 +208,14 @@ TEST(GuiSettings, ALastSceneThatNoLongerReadsFallsBackToTheDefaultScene) {
 }
 
 TEST(GuiSettings, ALastSceneThatIsGoneFallsBackToTheDefaultScene) {
-  SKIP_WITHOUT_WINDOW();
+  NBSCOPE_SKIP_WITHOUT_XVFB();
   const std::string gone = scratch_dir("gui_settings_last_scene_gone");
   const auto g = window_with_settings(gone, R"({"version": 1, "last_scene": "/no/such/scene.json"})");
   expect_one_note(g, gone, {"last_scene \"/no/such/scene.json\" (no such file)"});
 }
 
 TEST(GuiSettings, ACorruptFileIsIgnoredWhole) {
-  SKIP_WITHOUT_WINDOW();
+  NBSCOPE_SKIP_WITHOUT_XVFB();
   const std::string dir = scratch_dir("gui_settings_corrupt");
   const auto r = window_with_settings(dir, "{\"version\": 1, \"speed\": ");
   expect_one_note(r, dir, {"ignored the whole file (not JSON: ", "; the defaults are used"});

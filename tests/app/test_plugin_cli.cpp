@@ -9,6 +9,7 @@
 
 #include "support/paths.hpp"
 #include "support/run_cli.hpp"
+#include "support/x_display.hpp"
 
 namespace nbscope {
 namespace {
@@ -53,19 +54,20 @@ TEST(PluginCli, GoodPluginReplaysAndScales) {
 }
 
 #ifdef NBSCOPE_TEST_GUI
-// The window (under xvfb-run): the plugin is an algorithm of the window, and its breach ends a
+// The window (on the test's own Xvfb): the plugin is an algorithm of the window, and its breach ends a
 // --frames run as headless's does.
 TEST(PluginCli, WindowRunsThePluginAndStopsOnItsBreach) {
+  NBSCOPE_SKIP_WITHOUT_XVFB();
   const std::string dir = testcli::scratch_dir("plugin_window");
   std::string lib = plugin("good");
   auto r = run("gui --scene '" + scene("default") + "' --frames 3 --screenshot '" + dir + "/good.png' --detector-lib '" + lib +
                    "' --algorithm test-good",
-               testcli::xvfb_run());
+               testcli::on_display());
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   lib = plugin("self_pair");
   r = run("gui --scene '" + scene("default") + "' --frames 3 --screenshot '" + dir + "/bad.png' --detector-lib '" + lib +
               "' --algorithm test-self-pair",
-          testcli::xvfb_run());
+          testcli::on_display());
   expect_error(r, lib + " (test-self-pair): frame 0: add_pair(0, 0): an element paired with itself");
 }
 #endif

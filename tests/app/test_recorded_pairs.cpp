@@ -23,6 +23,7 @@
 #include "support/generators.hpp"
 #include "support/paths.hpp"
 #include "support/run_cli.hpp"
+#include "support/x_display.hpp"
 
 namespace nbscope {
 namespace {
@@ -278,12 +279,12 @@ TEST(RecordedPairsBase1, PlantedBugsAreNamedAsTheFileNumbersThemToo) {
 // The window on the user's pairs, scripted under Xvfb: it opens on `recorded`, plays every frame and
 // fails (exit 1) on the planted bug; and the headless picture of the same.
 TEST_F(RecordedPairs, WindowChecksTheRecordedPairsUnderXvfb) {
-  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
+  NBSCOPE_SKIP_WITHOUT_XVFB();
   const std::string rec = with_pairs("window", [](std::size_t k, PairList& p) {
     if (k == 9) p.push_back({3, 3});
   });
   const std::string png = *dir_ + "/window.png";
-  const std::string cmd = testcli::xvfb_run() + " '" + testcli::binary() + "' replay '" + rec + "' --screenshot '" + png +
+  const std::string cmd = testcli::on_display() + " '" + testcli::binary() + "' replay '" + rec + "' --screenshot '" + png +
                           "' --size 960x540 --no-timings --panels +violations,+timeline </dev/null >/dev/null 2>'" + *dir_ + "/window.err'";
   const int status = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(status));

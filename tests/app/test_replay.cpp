@@ -18,6 +18,7 @@
 #include "support/paths.hpp"
 #include "support/generators.hpp"
 #include "support/run_cli.hpp"
+#include "support/x_display.hpp"
 
 namespace nbscope {
 namespace {
@@ -313,9 +314,9 @@ TEST_F(Recorded, HeadlessScreenshotOfTheLastRecordedFrame) {
 
 // The window itself on a recording, scripted (plays to the last frame, saves, exits) under Xvfb.
 TEST_F(Recorded, WindowPlaysTheRecordingUnderXvfb) {
-  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
+  NBSCOPE_SKIP_WITHOUT_XVFB();
   const std::string png = *dir_ + "/window.png";
-  const std::string cmd = testcli::xvfb_run() + " '" + testcli::binary() + "' replay '" + rec() + "' --screenshot '" + png +
+  const std::string cmd = testcli::on_display() + " '" + testcli::binary() + "' replay '" + rec() + "' --screenshot '" + png +
                           "' --size 640x360 --no-timings </dev/null >/dev/null 2>'" + *dir_ + "/window.err'";
   const int status = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(status));

@@ -18,6 +18,7 @@
 
 #include "support/generators.hpp"
 #include "support/run_cli.hpp"
+#include "support/x_display.hpp"
 
 namespace nbscope {
 namespace {
@@ -290,13 +291,13 @@ TEST(Replay3d, OutputsNeverOverwriteADumpTheGlobNames) {
 // With a display, replay opens the window, which records nothing and travels with its own panels:
 // --record, --back and --violation are refused there, one line, before any window opens.
 TEST_F(Pour, TheWindowRefusesTheHeadlessOnlyFlags) {
-  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
+  NBSCOPE_SKIP_WITHOUT_XVFB();
   const std::pair<const char*, const char*> cases[] = {
       {"--record x.nbsrec", "--record: needs --headless (the window writes no recording)"},
       {"--back 1", "--back: needs --headless (the window travels with its Timeline and Violations panel)"},
       {"--violation 1", "--violation: needs --headless (the window travels with its Timeline and Violations panel)"}};
   for (const auto& [flags, message] : cases) {
-    const auto r = run("replay '" + rec() + "' " + flags, testcli::xvfb_run());
+    const auto r = run("replay '" + rec() + "' " + flags, testcli::on_display());
     EXPECT_EQ(r.exit_code, 2) << flags;
     EXPECT_EQ(r.err, std::string("nbscope: error: ") + message + "\n") << flags;
   }

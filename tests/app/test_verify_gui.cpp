@@ -9,6 +9,7 @@
 
 #include "io/png.hpp"
 #include "support/run_cli.hpp"
+#include "support/x_display.hpp"
 
 namespace nbscope {
 namespace {
@@ -70,9 +71,9 @@ TEST(VerifyGui, WithoutADisplayRendersHeadlessAndSaysWhere) {
 
 // The window under Xvfb draws what verify --screenshot draws.
 TEST(VerifyGui, XvfbWindowMatchesTheHeadlessPicture) {
-  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
+  NBSCOPE_SKIP_WITHOUT_XVFB();
   const std::string dir = testcli::scratch_dir("verify_gui_window");
-  const Shell r = shell(dir, testcli::xvfb_run() + " " + nbscope() + " gui " + kArgs + " --frames 1 --screenshot window.png");
+  const Shell r = shell(dir, testcli::on_display() + " " + nbscope() + " gui " + kArgs + " --frames 1 --screenshot window.png");
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("nbscope: window: 6 frames drawn; screenshot window.png"), std::string::npos) << r.err;
   ASSERT_TRUE(std::filesystem::exists(dir + "/window.png")) << r.err;

@@ -15,6 +15,7 @@
 #include "core/layers.hpp"
 #include "render/gl_context.hpp"
 #include "support/run_cli.hpp"
+#include "support/x_display.hpp"
 #include "ui/panels.hpp"
 #include "ui/stepper_panels.hpp"
 
@@ -259,12 +260,13 @@ TEST(WindowLayersCli, AThreeDReplayStopsAtAViolationAndDrawsIt) {
 TEST(WindowLayersCli, GuiInputOpensAThreeDCsvFrame) {
   const std::string dir = testcli::scratch_dir("WindowLayersCli.GuiInputOpensAThreeDCsvFrame");
   testcli::write_text(dir + "/e.csv", "x,y,z,r\n0,0,0,0.5\n0.8,0,0,0.5\n0,0,2.1,0.5\n0.3,0.2,1.4,0.5\n");
-  // Without a display: rendered headless (the window itself: xvfb-run, below).
+  // Without a display: rendered headless (the window itself: on the test's own Xvfb, below).
   const auto r = testcli::run("gui --input " + dir + "/e.csv --frames 3 --screenshot " + dir + "/e.png --size 640x360");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir + "/e.png")) << r.err;
+  NBSCOPE_SKIP_WITHOUT_XVFB();
   const auto w = testcli::run("gui --input " + dir + "/e.csv --frames 3 --screenshot " + dir + "/w.png --size 640x360 --layer 1",
-                              testcli::xvfb_run());
+                              testcli::on_display());
   EXPECT_EQ(w.exit_code, 0) << w.err;
   EXPECT_TRUE(std::filesystem::exists(dir + "/w.png")) << w.err;
   EXPECT_NE(w.err.find(" FPS; ms a simulated frame"), std::string::npos) << "--frames N redraws a one-frame input: " << w.err;

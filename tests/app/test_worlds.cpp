@@ -13,6 +13,7 @@
 #include <string>
 
 #include "support/run_cli.hpp"
+#include "support/x_display.hpp"
 
 namespace nbscope {
 namespace {
@@ -220,14 +221,14 @@ TEST(Worlds, AMillionOverlappingBodiesAreRefusedAtLoad) {
 // A world that stops mid-run in the window: the message in the Scenes panel over the last good
 // frame, the screenshot still taken, exit 2 with the same line.
 TEST(Worlds, TheWindowShowsAWorldThatStops) {
-  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
+  NBSCOPE_SKIP_WITHOUT_XVFB();
 #ifndef NBSCOPE_TEST_GUI
   GTEST_SKIP() << "built without the window";
 #endif
   const std::string dir = scratch_dir("worlds_window");
   const std::string png = dir + "/stopped.png";
   const auto r = run("gui --scene '" + world("poured-on-one-point") + "' --frames 5 --panels scenes --screenshot '" + png + "'",
-                     testcli::xvfb_run());
+                     testcli::on_display());
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("nbscope: error: "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("frame 2: Box2D would create about " + grouped(one_point_contacts(3000)) + " contacts"), std::string::npos) << r.err;

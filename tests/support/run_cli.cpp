@@ -34,10 +34,6 @@ std::string scratch_dir(const std::string& test_name) {
   return dir.string();
 }
 
-std::string xvfb_run() {
-  return "xvfb-run -a -n " + std::to_string(100 + ::getpid() % 800) + " -s '-screen 0 1280x720x24'";
-}
-
 Result run(const std::string& args, const std::string& prefix) {
   static int counter = 0;
   const std::string base = scratch_dir("cli_capture_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));

@@ -13,11 +13,8 @@ struct Result {
 // Path of the nbscope binary under test (baked in by CMake).
 const std::string& binary();
 // Runs `nbscope <args>` through the shell (args are shell words) with stdin from /dev/null, after
-// `prefix` when given (an environment assignment, or a wrapper such as xvfb-run).
+// `prefix` when given (an environment assignment such as x_display.hpp's on_display(), or a wrapper).
 Result run(const std::string& args, const std::string& prefix = "");
-// "xvfb-run ..." for a 1280x720 screen, its display search starting at a number of this process's
-// own, so that tests run in parallel do not race for the same free display (xvfb-run -a alone does).
-std::string xvfb_run();
 // A fresh empty directory for one test's files.
 std::string scratch_dir(const std::string& test_name);
 // Writes `text` to `path`.
