@@ -13,6 +13,7 @@
 
 #include "support/paths.hpp"
 #include "support/run_cli.hpp"
+#include "support/x_display.hpp"
 
 namespace nbscope {
 namespace {
@@ -177,10 +178,18 @@ TEST(ExampleCli, ALibraryAloneIsCaughtInReplayAndTheWindow) {
   EXPECT_EQ(replay.exit_code, 1) << replay.out << replay.err;
   EXPECT_EQ(replay.out.rfind("replay: pile, nbs-bug-mask (nbs_bug_mask.so), ", 0), 0u) << replay.out;
 
+#ifdef NBSCOPE_TEST_GUI  // the window and its off-screen fallback are built
   const auto gui = run("gui --scene '" + scene("pile") + "' --frames 60 --screenshot '" + dir + "/gui.png' --detector-lib '" +
                        lib("nbs_bug_mask") + "'", "env -u DISPLAY -u WAYLAND_DISPLAY");
   EXPECT_EQ(gui.exit_code, 1) << gui.err;
   EXPECT_NE(gui.err.find("rendered 60 frames of nbs-bug-mask (nbs_bug_mask.so) headless"), std::string::npos) << gui.err;
+
+  if (!testcli::have_xvfb()) return;  // the window itself needs an X server
+  const auto window = run("gui --scene '" + scene("pile") + "' --frames 60 --screenshot '" + dir + "/window.png' --detector-lib '" +
+                          lib("nbs_bug_mask") + "'", testcli::on_display());
+  EXPECT_EQ(window.exit_code, 1) << window.err;
+  EXPECT_NE(window.err.find("algorithm nbs-bug-mask (nbs_bug_mask.so)"), std::string::npos) << window.err;
+#endif
 }
 
 // Several libraries: a command that runs one asks which (one line naming them); headless runs all.
