@@ -11,7 +11,7 @@
 // that line as the only one on stderr.
 //
 // Index: options | headless fallback | the window loop | replay | run_gui. The panels' requests are
-// applied in gui_requests.cpp.
+// applied in gui_requests.cpp; a scripted run's times and summary line in window_times.cpp.
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -32,6 +32,7 @@
 #include "app/verify_view.hpp"
 #include "app/view_options.hpp"
 #include "app/window_pacing.hpp"
+#include "app/window_times.hpp"
 #include "check/faults.hpp"
 #include "core/detector.hpp"
 #include "core/error.hpp"
@@ -145,62 +146,6 @@ int run_without_display(GuiOptions o, FrameLoop& loop, const std::string& scene_
 }
 
 // ---- the window loop --------------------------------------------------------------------------
-
-// What a scripted run (--frames N) measures: the simulation's frames and their pipeline times, the
-// frames drawn meanwhile (the window does not wait for the worker, so there are more), and --back's
-// frames apart.
-struct ScriptedTimes {
-  Clock::time_point started = Clock::now();
-  Clock::time_point simulated = started;        // when the last simulated frame was adopted
-  std::int64_t stepped = 0;                     // simulated frames adopted
-  double sum_physics = 0, sum_detect = 0, sum_check = 0, sum_view = 0;
-  bool any_overlapped = false;                  // physics ran on the worker thread, beside the drawing
-  double sum_back_show = 0, sum_back_view = 0;  // --back: showing a kept frame again, and drawing it
-
-  // One simulated frame made: its pipeline's times.
-  void add_step(const FrameLoop& loop) {
-    ++stepped;
-    simulated = Clock::now();
-    const FrameTimings& t = loop.result().report().timings;
-    sum_physics += t.physics_ms;
-    any_overlapped = any_overlapped || loop.source().physics_overlapped();
-    sum_detect += t.detection_ms;
-    sum_check += t.check_ms;
-  }
-  // One frame drawn in `view_ms` (`back`: one of --back's).
-  void add_drawn(double view_ms, bool back) {
-    if (back) sum_back_view += view_ms;
-    sum_view += view_ms;
-  }
-
-  // The simulation's rate and the window's frame rate, and where the time went. --frames N is N
-  // steps, as in headless; every frame drawn counts in FPS (the start and the settling layout
-  // included). A recording's frame 0 is one of its frames, as in headless replay.
-  void print(const GuiOptions& o, const FrameLoop& loop, std::int64_t rendered) const {
-    const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
-    const double sim_seconds = std::chrono::duration<double>(simulated - started).count();
-    const double drawn = static_cast<double>(rendered + 1);
-    const double steps = static_cast<double>(std::max<std::int64_t>(stepped, 1));
-    const std::int64_t counted = *o.frames + (loop.source().replaying() ? 1 : 0);
-    std::fprintf(stderr,
-                 "nbscope: window: %s (simulated in %.2f s = sim %.1f frames/s), %lld drawn in %.2f s = %.1f FPS; "
-                 "ms a simulated frame: physics %.2f%s, detection %.2f, check %.2f; ms a drawn frame: render+panels %.2f; "
-                 "algorithm %s%s%s\n",
-                 plural(counted, "frame").c_str(), sim_seconds, sim_seconds > 0 ? static_cast<double>(stepped) / sim_seconds : 0.0,
-                 static_cast<long long>(rendered + 1), seconds, drawn / seconds, sum_physics / steps,
-                 any_overlapped ? " (overlapped)" : "", sum_detect / steps, sum_check / steps, sum_view / drawn,
-                 detector_label(loop.pipeline().algorithm()).c_str(),
-                 o.view.screenshot ? "; screenshot " : "", o.view.screenshot ? o.view.screenshot->c_str() : "");
-    if (o.back > 0) {
-      const double k = static_cast<double>(o.back);
-      std::fprintf(stderr,
-                   "nbscope: window: went back %s to frame %lld: %.2f ms a frame (the kept frame rebuilt, "
-                   "detected and checked again %.2f, render+panels %.2f)\n",
-                   plural(o.back, "frame").c_str(), static_cast<long long>(loop.source().frame()), (sum_back_show + sum_back_view) / k,
-                   sum_back_show / k, sum_back_view / k);
-    }
-  }
-};
 
 // The interactive window's frames of simulation this UI frame: as many steps as the speed owes
 // (`owed_steps` carries the fraction), backwards through the kept frames when playing backwards,
@@ -383,7 +328,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       }
       view.check_step();
       if (o.view.screenshot) write_png(*o.view.screenshot, view.screenshot());
-      times.print(o, loop, rendered);
+      times.print(*o.frames, o.back, o.view.screenshot ? o.view.screenshot->c_str() : nullptr, loop, rendered);
       break;
     }
     pacer.present(window, view.last_cost(), loop);  // the swap, timed for the frame split

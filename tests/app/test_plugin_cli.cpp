@@ -81,7 +81,7 @@ TEST(PluginCli, AlgorithmsListsThePlugin) {
   const auto both = run("headless --scene '" + scene("default") + "' --frames 5 --detector-lib '" + plugin("good") +
                         "' --detector-lib '" + plugin("drop_pair") + "' --algorithm test-good,test-drop-pair");
   EXPECT_EQ(both.exit_code, 1) << both.out << both.err;
-  EXPECT_NE(both.out.find("test-good,test-drop-pair"), std::string::npos) << both.out;
+  EXPECT_NE(both.out.find("test-good (test_plugin_good.so),test-drop-pair (test_plugin_drop_pair.so), "), std::string::npos) << both.out;
 }
 
 TEST(PluginCli, WrongButWellFormedPluginFailsItsChecks) {
