@@ -38,7 +38,9 @@ void die_with_parent(pid_t parent) {
 
 void redirect(int fd, const char* path, int flags) {
   const int opened = ::open(path, flags, 0644);
-  if (opened >= 0) ::dup2(opened, fd);
+  if (opened < 0 || opened == fd) return;
+  ::dup2(opened, fd);
+  ::close(opened);
 }
 
 // waitpid with a deadline; true (and `status` set) once `pid` ended.
@@ -52,11 +54,12 @@ bool wait_until(pid_t pid, int& status, Clock::time_point deadline) {
 
 Clock::time_point after(double seconds) { return Clock::now() + std::chrono::duration_cast<Clock::duration>(Seconds(seconds)); }
 
-// SIGTERM, then SIGKILL if it has not ended within kEndSeconds; true if SIGTERM was enough.
-bool terminate(pid_t pid, pid_t group, int& status) {
-  ::kill(group, SIGTERM);
+// SIGTERM to `target` (`pid`, or -pid for its process group), then SIGKILL if `pid` has not ended
+// within kEndSeconds; true if SIGTERM was enough.
+bool terminate(pid_t pid, pid_t target, int& status) {
+  ::kill(target, SIGTERM);
   if (wait_until(pid, status, after(kEndSeconds))) return true;
-  ::kill(group, SIGKILL);
+  ::kill(target, SIGKILL);
   ::waitpid(pid, &status, 0);
   return false;
 }
@@ -111,6 +114,11 @@ XServer::XServer(const std::string& log_path) : owner_(::getpid()), log_path_(lo
   // (the window, while run_until_window_then_term's xwininfo has just left) fails to open the display.
   const char* argv[] = {"Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x720x24", "-nolisten", "tcp", "-noreset", nullptr};
   pid_ = ::fork();
+  if (pid_ < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    throw std::runtime_error("XServer: fork failed");
+  }
   if (pid_ == 0) {
     die_with_parent(owner_);
     ::fcntl(fds[1], F_SETFD, 0);  // the one descriptor Xvfb keeps: where it writes its display
@@ -150,7 +158,10 @@ XServer::~XServer() {
   if (terminate(pid_, pid_, status) && std::filesystem::is_regular_file(log_path_, ec)) std::filesystem::remove(log_path_, ec);
 }
 
-bool have_xvfb() { return std::system("command -v Xvfb >/dev/null 2>&1") == 0; }
+bool have_xvfb() {
+  static const bool found = std::system("command -v Xvfb >/dev/null 2>&1") == 0;
+  return found;
+}
 
 std::string on_display() { return "env -u WAYLAND_DISPLAY DISPLAY=" + own_server().display(); }
 
@@ -163,6 +174,7 @@ WindowRun run_until_window_then_term(const std::string& shell_command, double op
   const std::string line = "exec " + on_display() + " " + shell_command + " </dev/null >'" + dir + "/out' 2>'" + dir + "/err'";
   const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
+  if (pid < 0) throw std::runtime_error("run_until_window_then_term: fork failed");
   if (pid == 0) {
     ::setpgid(0, 0);  // its own group: SIGTERM reaches a wrapper's children too
     die_with_parent(parent);

@@ -41,9 +41,10 @@ struct WindowRun {
   bool killed = false;  // it outlived SIGTERM by 60 s and was SIGKILLed
 };
 
-// Runs `shell_command` (a simple command: it is exec'd after `env DISPLAY=:N`) on on_display()'s
-// server until a top-level window named "nbscope..." is mapped (or it exits, or 120 s pass), keeps
-// it open `open_seconds`, then SIGTERMs its process group and waits for it to end.
+// Runs `shell_command` on on_display()'s server until its window shows, then SIGTERMs it and waits.
+// The command is exec'd after `env DISPLAY=:N` (so a simple command); "shows": a top-level window
+// named "nbscope..." is mapped (waited for up to 120 s, or until the command exits), then it stays
+// open `open_seconds`; SIGTERM goes to the command's process group (a wrapper's children too).
 WindowRun run_until_window_then_term(const std::string& shell_command, double open_seconds = 1.0);
 
 // run_until_window_then_term for `nbscope <nbscope_args>` after `env_assignments` (NAME=value ...).
