@@ -2,7 +2,7 @@
 // newest completed frame at its own pace and adopts the worker's step once it is done
 // (docs/window.md#two-cores). With --frames N it runs N frames of simulation, saves --screenshot
 // and exits (scripted: no input, no settings file), so the window itself can be tested under
-// xvfb-run. Without a display it renders the same frames headless and says where the screenshot went.
+// Xvfb. Without a display it renders the same frames headless and says where the screenshot went.
 //
 // A scene file that cannot be read or fails the scene check is an error (exit 2, nothing to show).
 // A scene whose world stops — at load (Box2D would create too many contacts at once, or change a

@@ -128,7 +128,7 @@ CommandSpec gui_command() {
          {"--history-mb", "N", "256, saved with the settings", "memory for the frames the Timeline keeps"},
          {"--max-contacts", "N", "1,000,000", "the Box2D contacts a frame may create, as headless --max-contacts"},
          {"--frames", "N", "", "runs N frames of simulation (drawn at the window's own pace meanwhile; stderr gives both rates), "
-                               "saves --screenshot and exits (no input, no settings: for tests under xvfb-run); with "
+                               "saves --screenshot and exits (no input, no settings: for tests under Xvfb); with "
                                "--arrays: the frames drawn before the screenshot"},
          {"--back", "K", "", "with --frames: then goes K frames back through the history first, each drawn, and says how long a frame "
                              "took"},

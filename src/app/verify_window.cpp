@@ -1,6 +1,6 @@
 // The verify window (`nbscope gui --input E.csv --arrays A.json`): the verify view in a GLFW window,
 // drawn again only on input (nothing moves); scripted with --frames N (N frames, the settling ones,
-// the screenshot, exit) so it can be tested under xvfb-run. Without a display, the same picture
+// the screenshot, exit) so it can be tested under Xvfb. Without a display, the same picture
 // headless, and where it went.
 #include <cstdio>
 #include <cstdlib>
@@ -16,11 +16,11 @@ namespace nbscope {
 
 int run_verify_window(const VerifyArraysRun& run, const ViewOptions& view) {
   const std::string title = "nbscope - " + run.user.algorithm + " arrays, " + std::to_string(run.verdict.problem_count) + " problems";
+  install_stop_handlers();  // before the window is mapped: a SIGTERM then closes it as its close button does
   render::GlfwWindow window(view.width, view.height, title);
   const bool scripted = view.frames.has_value();
   window.set_vsync(!scripted);
   VerifyView v(window, window.handle(), run, view);
-  install_stop_handlers();
   const std::int64_t last = scripted ? *view.frames + VerifyView::kSettleFrames - 1 : -1;
   IdlePacer pacer;
   double previous = window.time();
