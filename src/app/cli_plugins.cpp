@@ -28,9 +28,9 @@ bool is_file_name_of(const std::string& name, const std::string& path) {
   return name == stem || (stem.rfind("lib", 0) == 0 && name == stem.substr(3));
 }
 
-std::string join(const std::vector<std::string>& names) {
+std::string join(const std::vector<std::string>& names, const char* separator = ", ") {
   std::string s;
-  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
+  for (const std::string& n : names) s += (s.empty() ? "" : separator) + n;
   return s;
 }
 
@@ -66,16 +66,14 @@ void load_detector_libs(Args& args, const std::string& command) {
   }
   if (libraries.empty() || command == "algorithms") return;
   if (const auto given = args.peek("--algorithm")) {
-    std::string names;
-    for (const std::string& name : split_names("--algorithm", *given)) names += (names.empty() ? "" : ",") + declared_name(name, libraries);
-    args.set("--algorithm", names);
+    std::vector<std::string> names;
+    for (const std::string& name : split_names("--algorithm", *given)) names.push_back(declared_name(name, libraries));
+    args.set("--algorithm", join(names, ","));
   } else if (takes_one_algorithm(command) && declared.size() > 1) {
     throw Error("--detector-lib: the libraries declare " + std::to_string(declared.size()) + " detectors (" + join(declared) +
                 "): choose one with --algorithm");
   } else {
-    std::string names;
-    for (const std::string& name : declared) names += (names.empty() ? "" : ",") + name;
-    args.set("--algorithm", names);
+    args.set("--algorithm", join(declared, ","));
   }
 }
 
