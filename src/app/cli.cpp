@@ -10,77 +10,58 @@
 
 namespace nbscope {
 
+std::size_t Args::untaken(const std::string& name, std::size_t from) const {
+  for (std::size_t i = from; i < args_.size(); ++i)
+    if (!used_[i] && (args_[i] == name || args_[i].rfind(name + "=", 0) == 0)) return i;
+  return std::string::npos;
+}
+
 // A flag given twice is refused by name rather than left over as an "unknown flag".
 void Args::refuse_repeat(const std::string& name) const {
-  for (std::size_t i = 0; i < args_.size(); ++i)
-    if (!used_[i] && (args_[i] == name || args_[i].rfind(name + "=", 0) == 0))
-      throw Error(name + ": given more than once");
+  if (untaken(name) != std::string::npos) throw Error(name + ": given more than once");
+}
+
+std::string Args::take(const std::string& name, std::size_t i) {
+  used_[i] = true;
+  if (args_[i] != name) return args_[i].substr(name.size() + 1);  // --name=VALUE
+  if (i + 1 >= args_.size()) throw Error(name + ": missing value");
+  used_[i + 1] = true;
+  return args_[i + 1];
 }
 
 std::optional<std::string> Args::value(const std::string& name) {
-  for (std::size_t i = 0; i < args_.size(); ++i) {
-    if (used_[i]) continue;
-    const std::string& a = args_[i];
-    if (a == name) {
-      if (i + 1 >= args_.size()) throw Error(name + ": missing value");
-      used_[i] = used_[i + 1] = true;
-      refuse_repeat(name);
-      return args_[i + 1];
-    }
-    if (a.rfind(name + "=", 0) == 0) {
-      used_[i] = true;
-      refuse_repeat(name);
-      return a.substr(name.size() + 1);
-    }
-  }
-  return std::nullopt;
+  const std::size_t i = untaken(name);
+  if (i == std::string::npos) return std::nullopt;
+  std::string v = take(name, i);
+  refuse_repeat(name);
+  return v;
 }
 
 std::vector<std::string> Args::values(const std::string& name) {
   std::vector<std::string> out;
-  for (std::size_t i = 0; i < args_.size(); ++i) {
-    if (used_[i]) continue;
-    if (args_[i] == name) {
-      if (i + 1 >= args_.size()) throw Error(name + ": missing value");
-      used_[i] = used_[i + 1] = true;
-      out.push_back(args_[++i]);
-    } else if (args_[i].rfind(name + "=", 0) == 0) {
-      used_[i] = true;
-      out.push_back(args_[i].substr(name.size() + 1));
-    }
-  }
+  for (std::size_t i = untaken(name); i != std::string::npos; i = untaken(name, i + 1)) out.push_back(take(name, i));
   return out;
 }
 
-bool Args::has(const std::string& name) const {
-  for (std::size_t i = 0; i < args_.size(); ++i)
-    if (!used_[i] && (args_[i] == name || args_[i].rfind(name + "=", 0) == 0)) return true;
-  return false;
-}
+bool Args::has(const std::string& name) const { return untaken(name) != std::string::npos; }
 
 std::optional<std::string> Args::peek(const std::string& name) const {
-  for (std::size_t i = 0; i < args_.size(); ++i) {
-    if (used_[i]) continue;
-    if (args_[i] == name) return i + 1 < args_.size() ? std::optional<std::string>(args_[i + 1]) : std::nullopt;
-    if (args_[i].rfind(name + "=", 0) == 0) return args_[i].substr(name.size() + 1);
-  }
-  return std::nullopt;
+  const std::size_t i = untaken(name);
+  if (i == std::string::npos) return std::nullopt;
+  if (args_[i] != name) return args_[i].substr(name.size() + 1);
+  return i + 1 < args_.size() ? std::optional<std::string>(args_[i + 1]) : std::nullopt;
 }
 
 void Args::set(const std::string& name, const std::string& value) {
-  for (std::size_t i = 0; i < args_.size(); ++i) {
-    if (used_[i]) continue;
-    if (args_[i] == name && i + 1 < args_.size()) {
-      args_[i + 1] = value;
-      return;
-    }
-    if (args_[i].rfind(name + "=", 0) == 0) {
-      args_[i] = name + "=" + value;
-      return;
-    }
+  const std::size_t i = untaken(name);
+  if (i != std::string::npos && args_[i] != name) {
+    args_[i] = name + "=" + value;
+  } else if (i != std::string::npos && i + 1 < args_.size()) {
+    args_[i + 1] = value;
+  } else {
+    args_.push_back(name + "=" + value);  // one word: never mistaken for a positional argument
+    used_.push_back(false);
   }
-  args_.push_back(name + "=" + value);  // one word: never mistaken for a positional argument
-  used_.push_back(false);
 }
 
 bool Args::flag(const std::string& name) {

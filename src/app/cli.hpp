@@ -43,6 +43,10 @@ class Args {
   void refuse_unknown_options() const;
 
  private:
+  // The index of the first argument from `from` on, not yet taken, that is `--name` or `--name=VALUE`; npos if none.
+  [[nodiscard]] std::size_t untaken(const std::string& name, std::size_t from = 0) const;
+  // Takes the option at `i` and returns its value (the next argument, or what follows "=").
+  std::string take(const std::string& name, std::size_t i);
   void refuse_repeat(const std::string& name) const;
 
   std::vector<std::string> args_;

@@ -42,11 +42,12 @@ std::string declared_name(const std::string& name, const std::vector<LoadedLibra
   for (const LoadedLibrary& l : libraries)
     if (is_file_name_of(name, l.path)) matches.push_back(&l);
   if (matches.empty()) return name;  // the command says it is unknown, naming the known ones
-  std::vector<std::string> which;
-  for (const LoadedLibrary* l : matches) which.push_back(l->path + " declares '" + l->name + "'");
-  if (matches.size() > 1 && matches[0]->name != matches[1]->name)
+  if (matches.size() > 1 && matches[0]->name != matches[1]->name) {
+    std::vector<std::string> which;
+    for (const LoadedLibrary* l : matches) which.push_back(l->path + " declares '" + l->name + "'");
     throw Error("--algorithm: '" + excerpt(name) + "' is the file name of " + std::to_string(matches.size()) + " libraries (" +
                 join(which) + "): name the detector");
+  }
   return matches[0]->name;
 }
 
