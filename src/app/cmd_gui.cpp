@@ -196,7 +196,9 @@ void play(FrameLoop& loop, GlView& view, Session& session, double& owed_steps, b
 void save_settings(ui::Settings& settings, GlView& view, const FrameLoop& loop, const Session& session) {
   settings.overlays = view.state().overlays;
   settings.panels = view.state().panel_open;
-  settings.last_scene = absolute_path(session.scene_path);  // the next start may be elsewhere
+  // The next start may be elsewhere: an absolute path; a pipe (--scene /dev/stdin) cannot be read again.
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(session.scene_path, ec)) settings.last_scene = absolute_path(session.scene_path);
   settings.algorithm = loop.pipeline().algorithm();
   settings.detector_libs = loaded_detector_libraries();  // --detector-lib and the ones the settings loaded
   settings.camera = ui::camera_to_save(view.camera());

@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <limits>
 
 #include "core/error.hpp"
 #include "io/csv.hpp"
+#include "io/input_source.hpp"
 
 namespace nbscope {
 
@@ -107,12 +107,14 @@ DumpFlags take_dump_flags(Args& args) {
 }
 
 bool is_dump_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  char head[5] = {};
-  in.read(head, sizeof head);
-  const std::streamsize got = in.gcount();
-  if (got >= 2 && static_cast<unsigned char>(head[0]) == 0x1f && static_cast<unsigned char>(head[1]) == 0x8b) return true;
-  return got == 5 && std::string(head, 5) == "ITEM:";
+  std::string head;
+  try {
+    head = peek_input(path, 5, "input file");  // a pipe keeps these bytes for the reader
+  } catch (const Error&) {
+    return false;  // the reader that opens it says what is wrong, in its words
+  }
+  if (head.size() >= 2 && static_cast<unsigned char>(head[0]) == 0x1f && static_cast<unsigned char>(head[1]) == 0x8b) return true;
+  return head == "ITEM:";
 }
 
 Recording read_dump_recording(const DumpFlags& flags, std::int64_t max_frames) {

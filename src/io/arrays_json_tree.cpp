@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "io/excerpt.hpp"
 #include "io/input_file.hpp"
+#include "io/input_source.hpp"
 #include "io/json_limits.hpp"
 
 namespace nbscope::arrays_tree {
@@ -346,8 +347,7 @@ std::shared_ptr<const Tree> parse(std::istream* file, std::string_view memory, c
 }  // namespace
 
 std::shared_ptr<const Tree> read_file(const std::string& path, std::size_t max_bytes) {
-  std::ifstream in;
-  open_input(in, path, "arrays file");
+  InputStream in(path, "arrays file");
   return parse(&in, {}, path, max_bytes, kMaxArraysJsonValues);
 }
 

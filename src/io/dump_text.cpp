@@ -1,20 +1,21 @@
 #include "io/dump_text.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
 #include <zlib.h>
 
-#include <cerrno>
+#include <algorithm>
+#include <limits>
 #include <cstring>
 #include <filesystem>
 
 #include "core/error.hpp"
 #include "io/input_file.hpp"
+#include "io/input_source.hpp"
 
 namespace nbscope {
 
 namespace {
 constexpr std::size_t kChunk = std::size_t{4} << 20;
+constexpr std::size_t kGzipIn = std::size_t{1} << 20;  // compressed bytes read at a time
 constexpr const char* kKind = "dump file";
 
 Error long_line(const std::string& path, std::size_t line) {
@@ -23,27 +24,30 @@ Error long_line(const std::string& path, std::size_t line) {
 }
 }  // namespace
 
+// zlib's inflater over the compressed bytes of the source, member after member (gzip -c a b > c).
+struct DumpText::Gzip {
+  z_stream z{};
+  std::unique_ptr<char[]> in = std::make_unique_for_overwrite<char[]>(kGzipIn);
+  bool input_end = false;   // the source has no more compressed bytes
+  bool member_end = false;  // a member ended: another may follow
+  Gzip() {
+    if (inflateInit2(&z, 16 + MAX_WBITS) != Z_OK) throw Error("zlib: cannot start inflating (out of memory)");
+  }
+  ~Gzip() { inflateEnd(&z); }
+  Gzip(const Gzip&) = delete;
+  Gzip& operator=(const Gzip&) = delete;
+};
+
 DumpText::DumpText(const std::string& path) : path_(path) {
   std::error_code ec;
   if (path.empty()) throw Error("dump file: an empty path");
   if (!std::filesystem::exists(path, ec)) throw Error(path + ": no such file");
   if (std::filesystem::is_directory(path, ec)) throw Error(path + ": a directory, not a dump file");
-  fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd_ < 0) throw Error(path + ": cannot open: " + std::strerror(errno));
-  unsigned char magic[2] = {0, 0};
-  const bool gzip = ::pread(fd_, magic, 2, 0) == 2 && magic[0] == 0x1f && magic[1] == 0x8b;
-  if (gzip) {
-    gzFile gz = gzdopen(fd_, "rb");  // owns fd_ from here
-    if (gz == nullptr) {
-      ::close(fd_);
-      throw Error(path + ": cannot open: " + std::strerror(errno));
-    }
-    fd_ = -1;
-    gzbuffer(gz, 1U << 20);
-    gz_ = gz;
-  }
-  file_size_ = static_cast<std::size_t>(std::filesystem::file_size(path, ec));
-  if (ec) file_size_ = 0;
+  const std::string magic = peek_input(path, 2, kKind);  // a pipe keeps the two bytes for source_
+  const bool gzip = magic.size() == 2 && static_cast<unsigned char>(magic[0]) == 0x1f && static_cast<unsigned char>(magic[1]) == 0x8b;
+  source_ = std::make_unique<InputSource>(path, kKind);
+  if (gzip) gzip_ = std::make_unique<Gzip>();
+  file_size_ = source_->file_size().value_or(0);
   if (gzip) file_size_ = file_size_ > (static_cast<std::size_t>(-1) >> 11) ? static_cast<std::size_t>(-1) : file_size_ * 1032;
   capacity_ = kChunk + kMaxLineBytes + 2;
   buf_ = std::make_unique_for_overwrite<char[]>(capacity_);
@@ -54,15 +58,12 @@ DumpText::DumpText(const std::string& text, const std::string& where) : path_(wh
 }
 
 std::size_t DumpText::bytes_left() const {
-  if (gz_ == nullptr && fd_ < 0) return data_.size() - begin_;
+  if (source_ == nullptr) return data_.size() - begin_;
   const std::size_t done = base_ + begin_;
   return file_size_ > done ? file_size_ - done : 0;
 }
 
-DumpText::~DumpText() {
-  if (gz_ != nullptr) gzclose(static_cast<gzFile>(gz_));
-  if (fd_ >= 0) ::close(fd_);
-}
+DumpText::~DumpText() = default;
 
 // A NUL byte in data_[from..] is refused with its line and byte.
 void DumpText::check_chunk(std::size_t from) {
@@ -81,26 +82,40 @@ bool DumpText::fill() {
   base_ += begin_;
   begin_ = 0;
   const std::size_t room = capacity_ - rest;
-  long got = 0;
-  if (gz_ != nullptr) {
-    got = gzread(static_cast<gzFile>(gz_), buf_.get() + rest, static_cast<unsigned>(room));
-    if (got < 0) {
-      int code = 0;
-      const char* what = gzerror(static_cast<gzFile>(gz_), &code);
-      throw Error(path_ + ": cannot read the dump file: " + (code == Z_ERRNO ? std::strerror(errno) : what));
-    }
-  } else {
-    do got = ::read(fd_, buf_.get() + rest, room);
-    while (got < 0 && errno == EINTR);
-    if (got < 0) throw Error(path_ + ": cannot read the dump file: " + std::strerror(errno));
-  }
-  data_ = std::string_view(buf_.get(), rest + static_cast<std::size_t>(got));
+  const std::size_t got = gzip_ ? inflate_into(buf_.get() + rest, room) : source_->read(buf_.get() + rest, room);
+  data_ = std::string_view(buf_.get(), rest + got);
   if (got == 0) {
     end_ = true;
     return false;
   }
   check_chunk(rest);
   return true;
+}
+
+std::size_t DumpText::inflate_into(char* to, std::size_t room) {
+  z_stream& z = gzip_->z;
+  const auto cannot = [&](const std::string& why) { return Error(path_ + ": cannot read the dump file: " + why); };
+  z.next_out = reinterpret_cast<Bytef*>(to);
+  z.avail_out = static_cast<uInt>(std::min<std::size_t>(room, std::numeric_limits<uInt>::max()));
+  const uInt want = z.avail_out;
+  while (z.avail_out == want) {
+    if (z.avail_in == 0 && !gzip_->input_end) {
+      z.next_in = reinterpret_cast<Bytef*>(gzip_->in.get());
+      z.avail_in = static_cast<uInt>(source_->read(gzip_->in.get(), kGzipIn));
+      gzip_->input_end = z.avail_in == 0;
+    }
+    if (gzip_->member_end) {
+      // Another member follows when gzip's magic does; anything else after a member is ignored, as gzip -d does.
+      if (z.avail_in == 0 || z.next_in[0] != 0x1f) return want - z.avail_out;
+      if (inflateReset(&z) != Z_OK) throw cannot("zlib cannot restart");
+      gzip_->member_end = false;
+    }
+    if (z.avail_in == 0) throw cannot("unexpected end of file (a gzip file cut short)");
+    const int rc = inflate(&z, Z_NO_FLUSH);
+    if (rc == Z_STREAM_END) gzip_->member_end = true;
+    else if (rc != Z_OK && rc != Z_BUF_ERROR) throw cannot(z.msg != nullptr ? z.msg : zError(rc));
+  }
+  return want - z.avail_out;
 }
 
 bool DumpText::next(std::string_view& line) {

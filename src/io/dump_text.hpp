@@ -1,5 +1,5 @@
-// nbscope io: the lines of a LAMMPS/LIGGGHTS dump, from memory or streamed from a file through
-// zlib (gzip or plain text alike), with the text readers' checks (io/input_file.hpp).
+// nbscope io: the lines of a LAMMPS/LIGGGHTS dump, from memory or streamed from a file or a pipe
+// (io/input_source.hpp; gzip inflated as it arrives), with the text readers' checks (io/input_file.hpp).
 #pragma once
 #include <cstddef>
 #include <memory>
@@ -8,10 +8,12 @@
 
 namespace nbscope {
 
+class InputSource;
+
 // A dump's lines, one at a time; a file is read in 4 MB chunks and never held whole.
 class DumpText {
  public:
-  // Opens `path` (plain or gzip). Error "<path>: ..." for a missing file, a directory, a failed open.
+  // Opens `path` (plain or gzip; a file or a pipe). Error "<path>: ..." for a missing file, a directory, a failed open.
   explicit DumpText(const std::string& path);
   // Reads `text` in memory (kept by reference: it must outlive this); `where` names it.
   DumpText(const std::string& text, const std::string& where);
@@ -25,7 +27,7 @@ class DumpText {
   // The number of the line next() gave last (1-based).
   [[nodiscard]] std::size_t line_number() const { return line_no_; }
   // At most how many bytes are left to read (a gzip file's: 1032 times its size, deflate's largest
-  // ratio), so that a reader does not take a header's word for memory the text cannot fill.
+  // ratio; a pipe's: 0, unknown), so that a reader does not take a header's word for memory the text cannot fill.
   [[nodiscard]] std::size_t bytes_left() const;
   // The file's name as messages give it.
   [[nodiscard]] const std::string& path() const { return path_; }
@@ -35,10 +37,12 @@ class DumpText {
  private:
   bool fill();  // reads one more chunk behind the unread bytes; false at the end of the file
   void check_chunk(std::size_t from);
+  std::size_t inflate_into(char* to, std::size_t room);  // a gzip input's next bytes of text; 0 at its end
 
+  struct Gzip;
   std::string path_;
-  void* gz_ = nullptr;      // gzFile for a gzip file
-  int fd_ = -1;             // a plain file, read as it is (no copy through zlib)
+  std::unique_ptr<InputSource> source_;  // null for text in memory
+  std::unique_ptr<Gzip> gzip_;           // a gzip input's inflater (null: plain text, read as it is)
   std::unique_ptr<char[]> buf_;  // a file's bytes: unread from begin_ (not zero-filled: no memset per chunk)
   std::size_t capacity_ = 0;
   std::size_t file_size_ = 0;  // a plain file's size at open; a gzip file's bound on its text

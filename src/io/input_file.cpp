@@ -1,20 +1,15 @@
 #include "io/input_file.hpp"
 
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <string_view>
 
 #include "core/error.hpp"
+#include "io/input_source.hpp"
 
 namespace nbscope {
 
 namespace {
-// "a scene file", "an elements file".
-std::string with_article(const char* kind) {
-  const bool vowel = std::string_view("aeiou").find(kind[0]) != std::string_view::npos;
-  return std::string(vowel ? "an " : "a ") + kind;
-}
+std::string with_article(const char* kind) { return kind_with_article(kind); }
 std::string size_text(std::size_t bytes) {
   if (bytes >= (std::size_t{1} << 20) && bytes % (std::size_t{1} << 20) == 0) return std::to_string(bytes >> 20) + " MB";
   if (bytes >= (std::size_t{1} << 10) && bytes % (std::size_t{1} << 10) == 0) return std::to_string(bytes >> 10) + " KiB";
@@ -22,14 +17,6 @@ std::string size_text(std::size_t bytes) {
 }
 
 }  // namespace
-
-void open_input(std::ifstream& in, const std::string& path, const char* kind) {
-  if (path.empty()) throw Error(std::string(kind) + " path is empty");
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw Error(path + ": is a directory, not " + with_article(kind));
-  in.open(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open the " + kind + " (no such file or not readable)");
-}
 
 Error input_too_large(const std::string& path, const char* kind, std::size_t max_bytes) {
   return Error(path + ": larger than " + size_text(max_bytes) + ", the limit for " + with_article(kind));
@@ -87,8 +74,7 @@ class TextCheck {
 };
 
 std::string read_input_file(const std::string& path, const char* kind, std::size_t max_bytes, std::size_t max_line_bytes) {
-  std::ifstream in;
-  open_input(in, path, kind);
+  InputStream in(path, kind);
   std::string text;
   TextCheck check(path, kind, max_line_bytes);
   // A small first chunk: /dev/zero, a binary file or an endless line are refused after reading it.
@@ -113,10 +99,13 @@ InputLines::InputLines(const std::string& path, const char* kind, std::size_t ma
                        const std::string& open_path)
     : path_(path), kind_(kind), max_bytes_(max_bytes), chunk_(kFirstChunk) {
   if (open_path.empty()) {
-    open_input(in_, path, kind);
+    in_ = std::make_unique<InputStream>(path, kind);
   } else {
-    in_.open(open_path, std::ios::binary);
-    if (!in_) throw Error(path + ": cannot read the " + kind + " back from its spooled copy");
+    try {
+      in_ = std::make_unique<InputStream>(open_path, kind);
+    } catch (const Error&) {
+      throw Error(path + ": cannot read the " + kind + " back from its spooled copy");
+    }
   }
   check_ = std::make_unique<TextCheck>(path, kind, max_line_bytes);
 }
@@ -130,15 +119,15 @@ void InputLines::fill() {
   begin_ = 0;
   const std::size_t old = buf_.size();
   buf_.resize(old + chunk_);
-  in_.read(buf_.data() + old, static_cast<std::streamsize>(chunk_));
-  const auto got = static_cast<std::size_t>(in_.gcount());
+  in_->read(buf_.data() + old, static_cast<std::streamsize>(chunk_));
+  const auto got = static_cast<std::size_t>(in_->gcount());
   buf_.resize(old + got);
   check_->chunk(buf_.data() + old, got, base_ + old);
   if (base_ + buf_.size() > max_bytes_)
     throw input_too_large(path_, kind_, max_bytes_);
   chunk_ = kChunk;
-  if (!in_) {
-    if (in_.bad()) throw Error(path_ + ": cannot read the " + kind_);
+  if (!*in_) {
+    if (in_->bad()) throw Error(path_ + ": cannot read the " + kind_);
     end_ = true;
   }
 }

@@ -1,7 +1,6 @@
 // nbscope io: reading a text input, whole or line by line, with size limits, for every text format.
 #pragma once
 #include <cstddef>
-#include <fstream>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -28,14 +27,13 @@ inline constexpr std::size_t kMaxLineBytes = std::size_t{64} << 10;
 // line longer than that (seen as soon as that many bytes without a newline have been read).
 std::string read_input_file(const std::string& path, const char* kind, std::size_t max_bytes, std::size_t max_line_bytes = 0);
 
-// Opens `path` as a `kind` of input; Error for an empty path, a directory or a file it cannot open.
-void open_input(std::ifstream& in, const std::string& path, const char* kind);
 // The errors every text reader gives: "<path>: larger than 2048 MB, the limit for an elements file",
 // and "<path>:<line>: a NUL byte (byte N): an elements file is text, this is binary data (...)".
 Error input_too_large(const std::string& path, const char* kind, std::size_t max_bytes);
 Error nul_byte_in(const std::string& path, std::size_t line, std::size_t byte, const char* kind);
 
 class TextCheck;
+class InputStream;
 
 // The lines of a text input as they arrive, with read_input_file's checks and messages: a reader
 // that refuses its input at a row (too many elements, frames) stops there, having held one chunk
@@ -62,7 +60,7 @@ class InputLines {
   std::string path_;
   const char* kind_;
   std::size_t max_bytes_;
-  std::ifstream in_;
+  std::unique_ptr<InputStream> in_;  // a file or a pipe, with what was peeked from it (io/input_source.hpp)
   std::unique_ptr<TextCheck> check_;
   std::string buf_;          // unread bytes start at begin_
   std::size_t begin_ = 0;
