@@ -67,7 +67,14 @@ std::array<bool, 3> parse_periodic(const std::string& text) {
 
 // "XLO:XHI,YLO:YHI[,ZLO:ZHI]" of --box.
 DumpBox parse_box(const std::string& text) {
-  const std::vector<std::string> axes = split_names("--box", text);
+  // Split by hand: split_names refuses repeats, and a square box repeats its ranges (0:12,0:12).
+  std::vector<std::string> axes;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = text.find(',', start);
+    axes.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
   const auto bad = [&] { return Error("--box: '" + text + "' is not XLO:XHI,YLO:YHI[,ZLO:ZHI] with XLO < XHI (finite numbers)"); };
   if (axes.size() < 2 || axes.size() > 3) throw bad();
   DumpBox box;

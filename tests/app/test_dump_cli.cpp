@@ -282,5 +282,63 @@ TEST(DumpCli, EveryBadContactListIsOneLineAndExitTwo) {
   expect_one_error_line(run(replay + dir + "/absent.dump"), "atom 99 is not in the frame of timestep 0");
 }
 
+// ---- --periodic and --box of elements from a CSV file (pairs, dump, verify, gui) ----
+
+// Seven 2D elements in a 12 x 12 box; the pairs worked out by hand, by the minimum image:
+// 0 (0.5, 6) and 1 (11.5, 6), r 1 each: 1.0 apart across x (< 2); 2 (6, 0.4) and 3 (6, 11.8): 0.6
+// apart across y; 5 (11.9, 11.9) and 6 (0.1, 0.1), r 0.5: 0.28 apart across the corner (< 1); 4
+// (6, 6) touches none (the nearest centres are 5.5 away). Without the box no pair touches.
+const char* kSquareCsv = "x,y,r\n0.5,6,1\n11.5,6,1\n6,0.4,1\n6,11.8,1\n6,6,1\n11.9,11.9,0.5\n0.1,0.1,0.5\n";
+const char* kSquarePairs = "i,j\n0,1\n2,3\n5,6\n";
+
+TEST(PeriodicCli, ASquareBoxGivesThePairsAcrossItsEdges) {
+  const std::string dir = scratch_dir("periodic_cli_square");
+  write_text(dir + "/e.csv", kSquareCsv);
+  const std::string flags = " --periodic x,y --box 0:12,0:12";
+  for (const char* algorithm : {"nbs", "brute"}) {
+    const Result r = run("pairs --input " + dir + "/e.csv --algorithm " + algorithm + flags);
+    EXPECT_EQ(r.exit_code, 0) << algorithm << ": " << r.err;
+    EXPECT_EQ(r.out, kSquarePairs) << algorithm;
+  }
+  // Without --periodic the same elements have no pair: the three are found across the edges only.
+  EXPECT_EQ(run("pairs --input " + dir + "/e.csv").out, "i,j\n");
+  const Result d = run("dump --input " + dir + "/e.csv --algorithm nbs" + flags);
+  EXPECT_EQ(d.exit_code, 0) << d.err;
+  write_text(dir + "/p.csv", kSquarePairs);
+  const Result v = run("verify --input " + dir + "/e.csv --pairs " + dir + "/p.csv" + flags);
+  EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
+  EXPECT_NE(v.out.find("3 right, 0 missing, 0 extra"), std::string::npos) << v.out;
+  const Result g = run("gui --input " + dir + "/e.csv --frames 1 --size 320x240 --screenshot " + dir + "/g.png" + flags,
+                       "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_EQ(g.exit_code, 0) << g.err;
+}
+
+TEST(PeriodicCli, ACubicBoxGivesThePairsAcrossItsFaces) {
+  // A 9 x 9 x 9 box: 0 (0.3, 4, 4) and 1 (8.6, 4, 4), r 1: 0.7 apart across x; 2 (4, 4, 0.2) and
+  // 3 (4, 4, 8.5): 0.7 apart across z; 0 and 2 are 5.2 apart.
+  const std::string dir = scratch_dir("periodic_cli_cubic");
+  write_text(dir + "/e.csv", "x,y,z,r\n0.3,4,4,1\n8.6,4,4,1\n4,4,0.2,1\n4,4,8.5,1\n");
+  for (const char* algorithm : {"nbs", "brute"}) {
+    const Result r = run("pairs --input " + dir + "/e.csv --algorithm " + std::string(algorithm) + " --periodic x,y,z --box 0:9,0:9,0:9");
+    EXPECT_EQ(r.exit_code, 0) << algorithm << ": " << r.err;
+    EXPECT_EQ(r.out, "i,j\n0,1\n2,3\n") << algorithm;
+  }
+  // z not periodic: only the pair across x.
+  EXPECT_EQ(run("pairs --input " + dir + "/e.csv --periodic x,y --box 0:9,0:9,0:9").out, "i,j\n0,1\n");
+}
+
+TEST(PeriodicCli, EveryBadBoxIsOneLineAndExitTwo) {
+  const std::string dir = scratch_dir("periodic_cli_bad");
+  write_text(dir + "/e.csv", kSquareCsv);
+  write_text(dir + "/e3.csv", "x,y,z,r\n1,1,1,0.5\n");
+  const std::string pairs = "pairs --input " + dir + "/e.csv --periodic x,y --box ";
+  for (const char* box : {"12:0,0:12", "0:0,0:12", "nan:12,0:12", "0:nan,0:12", "0:inf,0:12", "0:12", "0:12,,0:12", "0:12,0:12,0:12,0:12",
+                          "0-12,0:12", "0:12,0:12,"})
+    expect_one_error_line(run(pairs + "'" + box + "'"), "--box: '" + std::string(box) + "' is not XLO:XHI,YLO:YHI[,ZLO:ZHI]");
+  expect_one_error_line(run("pairs --input " + dir + "/e3.csv --periodic x,y --box 0:9,0:9"), "--box: the elements are 3D: give ZLO:ZHI too");
+  expect_one_error_line(run("pairs --input " + dir + "/e.csv --box 0:12,0:12"), "--box: needs --periodic");
+  expect_one_error_line(run("pairs --input " + dir + "/e.csv --periodic x,y"), "--periodic: needs --box");
+}
+
 }  // namespace
 }  // namespace nbscope::testcli
