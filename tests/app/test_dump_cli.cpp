@@ -340,5 +340,39 @@ TEST(PeriodicCli, EveryBadBoxIsOneLineAndExitTwo) {
   expect_one_error_line(run("pairs --input " + dir + "/e.csv --periodic x,y"), "--periodic: needs --box");
 }
 
+// ---- contacts the dump does not match, and --contact-ids with nothing to read ----
+
+TEST(DumpCli, AContactFrameWithNoDumpFrameIsRefusedUnlessFramesCutTheDump) {
+  const DumpRun files = write_run("dump_cli_extra_contacts", "%.17g");
+  // The contacts of timesteps 0 and 1000, and one more frame (timestep 2000) the dump does not have.
+  write_text(files.contacts, read_text(files.contacts) + local_frame(2000, files.lists[1], 0.05));
+  const Result r = replay(files);
+  expect_one_error_line(r, files.contacts + ":");
+  EXPECT_NE(r.err.find("contacts of timestep 2000, but the dump has no frame of it (its timesteps: 0, 1000)"), std::string::npos) << r.err;
+  // --frames 5 keeps the whole two-frame dump: still refused.
+  expect_one_error_line(replay(files, "--touching strict --frames 5"), "contacts of timestep 2000");
+  // --frames 1 cuts the dump after timestep 0: the contact frames past it go with it.
+  const Result cut = replay(files, "--touching strict --frames 1");
+  EXPECT_EQ(cut.exit_code, 0) << cut.out << cut.err;
+  EXPECT_NE(cut.out.find("1 frame"), std::string::npos) << cut.out;
+  // A contact frame between the dump's: refused naming the dump's timesteps too.
+  write_text(files.contacts, local_frame(0, files.lists[0], 0.05) + local_frame(500, {}, 0.05) + local_frame(1000, files.lists[1], 0.05));
+  expect_one_error_line(replay(files), "contacts of timestep 500, but the dump has no frame of it (its timesteps: 0, 1000)");
+}
+
+TEST(DumpCli, ContactIdsWithNoContactListToReadAreRefused) {
+  const DumpRun files = write_run("dump_cli_ids_alone", "%.17g");
+  write_text(files.dir + "/p.csv", "0,1\n");
+  expect_one_error_line(run("replay --headless --dump " + files.dump + " --contact-ids 7,8"), "--contact-ids: needs --contacts");
+  expect_one_error_line(run("replay --headless " + files.dir + "/r.nbsrec --contact-ids 7,8"), "--contact-ids: needs --contacts");
+  expect_one_error_line(run("pairs --input " + files.dump + " --timestep 0 --contact-ids 7,8"), "--contact-ids: needs --contacts");
+  expect_one_error_line(run("dump --input " + files.dump + " --timestep 0 --algorithm nbs --contact-ids 7,8"), "--contact-ids: needs --contacts");
+  expect_one_error_line(run("verify --input " + files.dump + " --timestep 0 --pairs " + files.dir + "/p.csv --contact-ids 7,8"),
+                        "--contact-ids: needs --contacts");
+  // With a dump local file to read, the same flag is taken.
+  const Result ok = run("verify --input " + files.dump + " --timestep 0 --pairs " + files.contacts + " --touching strict --contact-ids 7,8");
+  EXPECT_EQ(ok.exit_code, 0) << ok.out << ok.err;
+}
+
 }  // namespace
 }  // namespace nbscope::testcli
