@@ -374,5 +374,21 @@ TEST(DumpCli, ContactIdsWithNoContactListToReadAreRefused) {
   EXPECT_EQ(ok.exit_code, 0) << ok.out << ok.err;
 }
 
+TEST(DumpCli, AlgorithmAllOnThreeDimensionalFramesRunsEveryDetectorThatCan) {
+  const DumpRun files = write_run("dump_cli_all_3d", "%.17g");
+  const Result r = run("replay --headless --quiet --dump " + files.dump + " --contacts " + files.contacts + " --touching strict --algorithm all");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  // box2d is the one 2D-only detector: left out, said once.
+  EXPECT_EQ(r.err, "nbscope: note: --algorithm all: box2d left out (2D only; the frames are 3D)\n");
+  for (const char* name : {"nbs", "brute", "tree", "sort", "screen", "recorded"})
+    EXPECT_NE(r.out.find(name), std::string::npos) << name << " in: " << r.out;
+  // 2D frames: box2d runs beside the others, no note.
+  const DumpRun flat = write_run("dump_cli_all_2d", "%.17g", false, false);
+  const Result r2 = run("replay --headless --quiet --dump " + flat.dump + " --contacts " + flat.contacts + " --touching strict --algorithm all");
+  EXPECT_EQ(r2.exit_code, 0) << r2.out << r2.err;
+  EXPECT_EQ(r2.err, "");
+  EXPECT_NE(r2.out.find("box2d"), std::string::npos) << r2.out;
+}
+
 }  // namespace
 }  // namespace nbscope::testcli
