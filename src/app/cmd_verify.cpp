@@ -200,7 +200,6 @@ int run_verify(Args& args) {
   ViewOptions view;
   parse_view_options(args, true, view);
   args.finish();
-  if (!view.layer.empty()) throw Error("--layer: verify's view has no layers (it draws the elements' x and y)");
   if (in.elements_path.empty()) throw Error("verify: --input ELEMENTS.csv is required");
   if (pairs.has_value() == !in.arrays_path.empty())
     throw Error("verify: give --pairs PAIRS.csv (your contact pairs) or --arrays ARRAYS.json (your heads and next arrays)");
