@@ -25,6 +25,8 @@ int run_dump(Args& args) {
   DumpFlags dump_flags = take_dump_flags(args);
   dump_flags.timestep = args.integer("--timestep", 0, std::numeric_limits<long long>::max());
   args.finish();
+  if (dump_flags.columns.numbers || dump_flags.columns.names)
+    throw Error("--contact-ids: needs --contacts (a dump local file's columns): dump reads no contacts (replay --contacts FILES and verify --pairs FILE.dump do)");
   if (!input) throw Error("dump: --input ELEMENTS.csv is required");
   if (!algorithm) throw Error("dump: --algorithm NAME is required (one of: " + detector_names() + ")");
   if (format != "json") throw Error("dump: --format: '" + format + "' is not a known format (json)");

@@ -94,11 +94,18 @@ std::string absolute_path(const std::string& path) {
 }
 
 // Loads the scene file `path` into `loop`; its name into `name`. Throws Error when the file cannot
-// be read or fails the scene check; returns the refusal of a world that stops at load (the loop is
-// then left without a scene, and the window shows the line), else "".
+// be read or fails the scene check; returns the refusal of a world that stops at load, or that
+// Box2D cannot be given (WorldRefused: a radius its float cannot hold), the loop then left without
+// a scene and the window showing the line; else "".
 std::string load_scene_or_stop(FrameLoop& loop, const std::string& path, std::string& name) {
-  const Scene scene = read_scene_json(path);
-  name = scene.name.empty() ? std::filesystem::path(path).stem().string() : scene.name;
+  name = std::filesystem::path(path).stem().string();
+  Scene scene;
+  try {
+    scene = read_scene_json(path);
+  } catch (const WorldRefused& e) {
+    return e.what();
+  }
+  if (!scene.name.empty()) name = scene.name;
   try {
     loop.load_scene(scene);
   } catch (const Error& e) {

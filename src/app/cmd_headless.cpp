@@ -141,15 +141,19 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
   return s + ")";
 }
 
-// The detectors `--algorithm` names: one, a comma-separated list, or "all" (every 2D detector,
-// nbs first as the one shown and summarised first; brute only while brute force is the reference
-// anyway; last `recorded` when `with_recorded`, a recording carrying pairs). Sets `note` when brute is left out.
-std::vector<std::string> algorithms_of(const std::string& text, std::int64_t elements, std::int64_t brute_limit, std::string& note,
-                                       bool with_recorded) {
+// The detectors `--algorithm` names: one, a comma-separated list, or "all" (every detector that
+// handles `dim`-D frames, nbs first as the one shown and summarised first; brute only while brute
+// force is the reference anyway; last `recorded` when `with_recorded`, a recording carrying pairs).
+// Sets `note` when brute is left out, `other_dim` to the detectors left out for their dimension.
+std::vector<std::string> algorithms_of(const std::string& text, std::int64_t elements, int dim, std::int64_t brute_limit, std::string& note,
+                                       bool with_recorded, std::string& other_dim) {
   std::vector<std::string> names;
   if (text == "all") {
     for (const DetectorInfo& d : detector_infos()) {
-      if (!d.dim2) continue;
+      if (dim == 3 ? !d.dim3 : !d.dim2) {
+        other_dim += (other_dim.empty() ? "" : ", ") + d.name;
+        continue;
+      }
       if (d.name == "brute" && elements > brute_limit) {
         note = "brute left out of 'all': " + plural(elements, "element") + " is past --brute-limit " + std::to_string(brute_limit);
         continue;
@@ -276,7 +280,8 @@ void check_headless_paths(const HeadlessOptions& o) {
 std::unique_ptr<FrameLoop> open_headless_loop(const HeadlessOptions& o, std::vector<std::string>& names, std::string& note) {
   check_step_algorithm(o.view, o.algorithm);  // before any frame runs
   check_stop_at_violation(o);
-  names = algorithms_of(o.algorithm, 0, o.brute_limit, note, false);
+  std::string other_dim;
+  names = algorithms_of(o.algorithm, 0, 2, o.brute_limit, note, false, other_dim);
   FrameLoopOptions lo;
   lo.algorithm = o.algorithm == "all" ? "nbs" : names.front();
   lo.fault = o.fault;
@@ -302,7 +307,13 @@ std::unique_ptr<FrameLoop> open_headless_loop(const HeadlessOptions& o, std::vec
   if (o.replay) loop.load_recording(read_replay_input(o));
   else load_scene_file(loop, o.scene);
   if (o.algorithm == "all") {
-    names = algorithms_of(o.algorithm, loop.source().elements().size(), o.brute_limit, note, loop.source().carries_pairs());
+    const int dim = loop.source().elements().dim;
+    other_dim.clear();
+    names = algorithms_of(o.algorithm, loop.source().elements().size(), dim, o.brute_limit, note, loop.source().carries_pairs(), other_dim);
+    // One line, before the run's: 'all' is every detector these frames can run.
+    if (!other_dim.empty())
+      std::fprintf(stderr, "nbscope: note: --algorithm all: %s left out (%s only; the frames are %dD)\n", other_dim.c_str(),
+                   dim == 3 ? "2D" : "3D", dim);
     loop.pipeline().set_algorithm(names.front());
   } else if (o.algorithm_from_recording && loop.source().carries_pairs()) {
     // No --algorithm: a recording that carries the user's pairs is replayed to check them.

@@ -32,6 +32,8 @@ int run_pairs(Args& args) {
   DumpFlags dump_flags = take_dump_flags(args);
   dump_flags.timestep = args.integer("--timestep", 0, std::numeric_limits<long long>::max());
   args.finish();
+  if (dump_flags.columns.numbers || dump_flags.columns.names)
+    throw Error("--contact-ids: needs --contacts (a dump local file's columns): pairs reads no contacts (replay --contacts FILES and verify --pairs FILE.dump do)");
   if (!input) throw Error("pairs: --input ELEMENTS.csv (or FILE.dump) is required");
 
   auto detector = make_detector(algorithm);  // before reading: a bad name fails fast

@@ -51,6 +51,8 @@ int run_replay(Args& args) {
     throw Error("replay: " + *extra + ": unexpected argument (one recording at a time)");
   }
   args.finish();
+  if (dump.contacts.empty() && (dump.columns.numbers || dump.columns.names))
+    throw Error("--contact-ids: needs --contacts FILES (the dump local files whose columns it names)");
   if (!dump.dumps.empty() || !dump.contacts.empty()) {
     if (file)
       throw Error("replay: " + *file + ": give the frames either as FILE.nbsrec or with --dump, not both (a glob the shell expanded? quote it: --dump 'atoms.*.dump')");
@@ -59,7 +61,7 @@ int run_replay(Args& args) {
     o.dump = std::move(dump);
   } else if (dump.columns.numbers || dump.columns.names || dump.dt || dump.options.radius || !dump.options.type_radius.empty() ||
              dump.options.force_2d || dump.options.tolerance || dump.options.periodic || dump.box) {
-    throw Error("replay: --contact-ids, --dt, --radius, --type-radius, --2d, --tolerance, --periodic and --box read dumps: they need --dump FILES");
+    throw Error("replay: --dt, --radius, --type-radius, --2d, --tolerance, --periodic and --box read dumps: they need --dump FILES");
   }
   if (!file && !o.dump) throw Error("replay: FILE.nbsrec or --dump FILES is required (nbscope replay FILE.nbsrec [--headless] ...)");
   if (o.fault == Fault::DropBox2dContact)

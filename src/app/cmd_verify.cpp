@@ -85,6 +85,8 @@ int verify_pairs(const std::string& input, const std::string& pairs_path, const 
     if (base != 0) throw Error("--base: a dump local file names atoms by their ids");
     given = given_from_contacts(*frame.dump, pairs_path, dump.columns);
   } else {
+    if (dump.columns.numbers || dump.columns.names)
+      throw Error("--contact-ids: needs --contacts, a dump local file as --pairs (" + pairs_path + " is not one: its pairs are i,j)");
     given = read_given_pairs_csv(pairs_path, base);
   }
   DetectOptions options;
@@ -198,7 +200,6 @@ int run_verify(Args& args) {
   ViewOptions view;
   parse_view_options(args, true, view);
   args.finish();
-  if (!view.layer.empty()) throw Error("--layer: verify's view has no layers (it draws the elements' x and y)");
   if (in.elements_path.empty()) throw Error("verify: --input ELEMENTS.csv is required");
   if (pairs.has_value() == !in.arrays_path.empty())
     throw Error("verify: give --pairs PAIRS.csv (your contact pairs) or --arrays ARRAYS.json (your heads and next arrays)");
@@ -215,6 +216,8 @@ int run_verify(Args& args) {
     if (view.screenshot) throw Error("--screenshot: only with --arrays (it draws your lists)");
     return verify_pairs(in.elements_path, *pairs, in.grid_flags, in.base.value_or(0), brute_limit, dump, touching, threads);
   }
+  if (dump.columns.numbers || dump.columns.names)
+    throw Error("--contact-ids: needs --contacts, a dump local file as --pairs: --arrays reads no contacts");
   const VerifyArraysRun run = run_verify_arrays(in);
   const int status = report_arrays(in, run);
 #ifdef NBSCOPE_VERIFY_VIEW

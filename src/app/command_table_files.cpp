@@ -71,8 +71,8 @@ CommandSpec verify_command() {
        "nbscope verify --input ELEMENTS.csv --arrays ARRAYS.json [--algorithm screen|nbs|tree|sort]",
        "               [--base 1] [--exact] [--cell-size D] [--origin X,Y[,Z]] [--cells NX,NY[,NZ]]",
        "               [--screenshot OUT.png [--size WxH] [--overlays SPEC] [--panels SPEC] [--select K]",
-       "               [--lists F] [--camera X,Y,PPM] [--no-timings] [--shader-dir DIR] [--book-numbering]",
-       "               [--gl osmesa|egl|auto]]"},
+       "               [--lists F] [--layer K|auto] [--camera X,Y,PPM] [--no-timings] [--shader-dir DIR]",
+       "               [--book-numbering] [--gl osmesa|egl|auto]]"},
       {"--pairs: your contact pairs (one a line, i,j in either order) against brute force (sort above --brute-limit): a summary line, "
        "then every missing, extra, duplicated, i == j and out-of-range pair with both elements' cells and distance - radii.",
        "--arrays: your heads and next arrays, in the schema dump writes (\"base\": 1 for 1-based), against the book: every list ends (a "
@@ -80,7 +80,8 @@ CommandSpec verify_command() {
        "order. The first problem in the book's terms (E[7] = 5, but element 5 lies in cell (2,7) ...), then the count. Exit 0 right, 1 "
        "wrong.",
        "--screenshot draws your lists with the wrong links red, as gui --arrays shows them (its rendering options as below; numbered as "
-       "the file counts, so --book-numbering only with --base 1; --step does not apply)."},
+       "the file counts, so --book-numbering only with --base 1; --step does not apply). 3D arrays are drawn one layer of cells at a "
+       "time, as the window draws a 3D frame: --layer K, or auto, the first problem's layer."},
       {{"options", with_grid({{"--input", "ELEMENTS.csv", "", "the elements (required)"},
                               {"--pairs", "PAIRS.csv", "", "your contact pairs, one i,j a line"},
                               {"--arrays", "ARRAYS.json", "", "your heads and next arrays, in the schema dump writes"},

@@ -67,7 +67,14 @@ std::array<bool, 3> parse_periodic(const std::string& text) {
 
 // "XLO:XHI,YLO:YHI[,ZLO:ZHI]" of --box.
 DumpBox parse_box(const std::string& text) {
-  const std::vector<std::string> axes = split_names("--box", text);
+  // Split by hand: split_names refuses repeats, and a square box repeats its ranges (0:12,0:12).
+  std::vector<std::string> axes;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = text.find(',', start);
+    axes.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
   const auto bad = [&] { return Error("--box: '" + text + "' is not XLO:XHI,YLO:YHI[,ZLO:ZHI] with XLO < XHI (finite numbers)"); };
   if (axes.size() < 2 || axes.size() > 3) throw bad();
   DumpBox box;
@@ -87,6 +94,23 @@ DumpBox parse_box(const std::string& text) {
     box.flags[a] = "pp";
   }
   return box;
+}
+
+std::int64_t timestep_of(const DumpFrame& f) { return f.timestep; }
+std::int64_t timestep_of(std::int64_t t) { return t; }
+
+// "its timesteps: 0, 1000, 2000" (the first and last few of many), for a contact frame no dump frame matches.
+std::string timesteps_text(const std::vector<DumpFrame>& frames) {
+  std::string s = "its timesteps: ";
+  const std::size_t n = frames.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    if (n > 8 && k == 4) {
+      s += "..., ";
+      k = n - 3;
+    }
+    s += std::to_string(frames[k].timestep) + (k + 1 < n ? ", " : "");
+  }
+  return s + (n > 8 ? " (" + std::to_string(n) + " frames)" : "");
 }
 
 }  // namespace
@@ -125,14 +149,21 @@ Recording read_dump_recording(const DumpFlags& flags, std::int64_t max_frames) {
   for (const std::string& spec : flags.contacts)
     for (std::string& p : expand_dump_spec("--contacts", spec)) contact_paths.push_back(std::move(p));
   DumpOptions options = flags.options;
-  options.max_frames = max_frames;
+  // One frame past --frames N, to tell a dump that --frames cut from one that ends there.
+  options.max_frames = max_frames < std::numeric_limits<std::int64_t>::max() ? max_frames + 1 : max_frames;
   std::vector<DumpFrame> frames = read_dump_frames(paths, options);
+  const bool cut = static_cast<std::int64_t>(frames.size()) > max_frames;
+  if (cut) frames.resize(static_cast<std::size_t>(max_frames));
   std::vector<DumpContacts> contacts;
   if (!contact_paths.empty()) {
     contacts = read_dump_contacts(contact_paths, flags.columns);
     // --frames N keeps the contact frames of the dump frames kept.
-    if (!frames.empty())
-      std::erase_if(contacts, [&](const DumpContacts& c) { return c.timestep > frames.back().timestep; });
+    if (cut) std::erase_if(contacts, [&](const DumpContacts& c) { return c.timestep > frames.back().timestep; });
+    for (const DumpContacts& c : contacts)
+      if (!frames.empty() && !std::binary_search(frames.begin(), frames.end(), c.timestep,
+                                                 [](const auto& a, const auto& b) { return timestep_of(a) < timestep_of(b); }))
+        throw Error(c.where + ": contacts of timestep " + std::to_string(c.timestep) + ", but the dump has no frame of it (" +
+                    timesteps_text(frames) + ")");
   }
   return recording_from_dumps(std::move(frames), contacts, flags.dt, flags.dumps.front());
 }

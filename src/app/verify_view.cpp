@@ -67,6 +67,16 @@ VerifyView::VerifyView(render::GlContext& context, GLFWwindow* window, const Ver
                   std::to_string(book_ ? 1 : 0) + ".." + std::to_string(e.size() - (book_ ? 0 : 1)) + ")");
     state_.selected_element = static_cast<ElementId>(k);
   }
+  // --layer K of a 3D run, checked as the window checks a 3D frame's (GlView::check_layer); auto: the view's choice.
+  if (!options.layer.empty() && options.layer != "auto") {
+    const auto k = static_cast<std::int32_t>(std::stol(options.layer));
+    if (e.dim != 3 || run.grid.dim != 3) throw Error("--layer: the elements are 2D (layers are those of a 3D grid)");
+    const std::int64_t count = run.grid.n[2];
+    if (k >= count)
+      throw Error("--layer: " + std::to_string(k) + " is past the top layer " + std::to_string(count - 1) + " (the grid has " +
+                  std::to_string(count) + (count == 1 ? " layer)" : " layers)"));
+    layer_option_ = k;
+  }
   for (std::size_t i = 0; i < std::size(render::kListFilterNames); ++i)
     if (options.lists == render::kListFilterNames[i]) list_filter_ = static_cast<render::ListFilter>(i);
   // Home: the elements and half a cell around them (neighbour cells and the heads stay in view), or --camera's view.
@@ -146,6 +156,28 @@ void VerifyView::select_problem(int index) {
   const double free_px = context_.width() - panel_insets().left - panel_insets().right - 80.0;
   const auto chars = static_cast<std::size_t>(std::max(0.0, free_px / render::kCharPx));
   marks_ = render::verify_marks(run_.verdict, state_.selected_problem, std::clamp(chars, kMinCaptionChars, kMaxCaptionChars));
+  update_layer();
+}
+
+void VerifyView::update_layer() {
+  const Elements& e = run_.elements;
+  if (e.dim != 3 || run_.grid.dim != 3) return;
+  if (!layer_) layer_ = slice_layer(e, run_.grid, 0);
+  const auto top = static_cast<std::int32_t>(run_.grid.n[2] - 1);
+  const auto layer_of = [&](ElementId k) { return layer_->element_layer[static_cast<std::size_t>(k)]; };
+  std::int32_t iz = busiest_layer(*layer_);
+  if (layer_option_) {
+    iz = std::clamp(*layer_option_, 0, top);
+  } else if (state_.selected_problem >= 0) {
+    for (const ElementId k : problem_elements(state_.selected_problem))
+      if (k >= 0 && k < e.size()) {
+        iz = layer_of(k);
+        break;
+      }
+  } else if (state_.selected_element >= 0 && state_.selected_element < e.size()) {
+    iz = layer_of(state_.selected_element);
+  }
+  if (iz != layer_->layer) layer_ = slice_layer(e, run_.grid, iz);
 }
 
 std::vector<ElementId> VerifyView::problem_elements(int index) const {
@@ -204,6 +236,7 @@ void VerifyView::frame(bool live_input, float dt) {
   scene.covered = layout_.covered;
   scene.book_numbering = book_;
   scene.verify = &marks_;
+  scene.layer = layer();
   renderer_->begin_frame(camera_);
   render::draw_scene(scene, state_.overlays, camera_, *renderer_);
   renderer_->draw(render::palette::kBackground);
@@ -238,7 +271,16 @@ void VerifyView::handle_input(ui::VerifyUiRequests& requests) {
     if (ImGui::IsKeyPressed('[', true)) step_problem(-1);
     if (ImGui::IsKeyPressed(']', true)) step_problem(+1);
     if (pressed(ImGui::GetKeyIndex(ImGuiKey_Home))) requests.camera_home = true;
-    if (pressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) state_.selected_element = -1;
+    if (pressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+      state_.selected_element = -1;
+      update_layer();
+    }
+    // A 3D run: Up/Down the layer above/below, as in the main window.
+    for (const auto& [key, step] : {std::pair{ImGuiKey_UpArrow, 1}, std::pair{ImGuiKey_DownArrow, -1}})
+      if (layer_ && ImGui::IsKeyPressed(ImGui::GetKeyIndex(key), true)) {
+        layer_option_ = layer_->layer + step;
+        update_layer();
+      }
   }
   const std::optional<Eigen::Vector2d> mouse = ui::mouse_over_scene();
   if (!mouse) {
@@ -250,7 +292,8 @@ void VerifyView::handle_input(ui::VerifyUiRequests& requests) {
   // Either button drags the view; a left click that did not drag selects the element under it.
   ui::move_camera_by_mouse(camera_, *mouse, true);
   if (ImGui::IsMouseReleased(0) && io.MouseDragMaxDistanceSqr[0] <= ui::kClickSlopPx * ui::kClickSlopPx) {
-    state_.selected_element = render::element_at(run_.elements, world);
+    state_.selected_element = render::element_at(run_.elements, world, layer());
+    update_layer();
     // An element at fault selects its (first) problem too.
     if (state_.selected_element >= 0)
       for (std::size_t i = 0; i < run_.verdict.problems.size(); ++i) {
@@ -262,7 +305,7 @@ void VerifyView::handle_input(ui::VerifyUiRequests& requests) {
         }
       }
   }
-  draw_tooltip(render::element_at(run_.elements, world));
+  draw_tooltip(render::element_at(run_.elements, world, layer()));
 }
 
 void VerifyView::draw_tooltip(ElementId k) const {
@@ -315,6 +358,8 @@ std::string write_verify_screenshot(const VerifyArraysRun& run, const ViewOption
                 plural(run.elements.size(), "element").c_str(), plural(problems, "problem").c_str(),
                 problems > 0 ? " (the first selected)" : "");
   std::string out = line;
+  if (const LayerSlice* layer = v.layer())
+    out += "; layer " + std::to_string(layer->layer) + " of " + std::to_string(layer->count) + " shown";
   if (!view.no_timings) {
     std::snprintf(line, sizeof line, "; %.1f ms a frame", ms / VerifyView::kSettleFrames);
     out += line;

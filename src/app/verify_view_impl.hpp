@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/verify_view.hpp"
+#include "core/layers.hpp"
 #include "render/camera_framing.hpp"
 #include "render/gl_context.hpp"
 #include "render/imgui_layer.hpp"
@@ -47,6 +48,9 @@ class VerifyView {
   [[nodiscard]] const render::Camera& camera() const { return camera_; }
   // Selects problem `index` as a click in the Problems panel does: highlighted, the camera on it.
   void go_to_problem(int index);
+  // A 3D run's layer shown (--layer K, Up/Down; else auto: the selected problem's, the selected
+  // element's, the busiest), as the window shows a 3D frame; null for 2D.
+  [[nodiscard]] const LayerSlice* layer() const { return layer_ ? &*layer_ : nullptr; }
 
  private:
   void select_problem(int index);
@@ -62,6 +66,8 @@ class VerifyView {
   [[nodiscard]] render::ScreenInsets fit_insets() const;
   void handle_input(ui::VerifyUiRequests& requests);
   void draw_tooltip(ElementId k) const;
+  // Slices the layer shown again: the user's (layer_option_), else auto.
+  void update_layer();
 
   const VerifyArraysRun& run_;
   render::GlContext& context_;
@@ -81,6 +87,8 @@ class VerifyView {
   // Home, a problem or list the camera is kept on (until the user moves it), the refit.
   render::CameraFraming framing_;
   std::optional<std::array<std::int32_t, 2>> hovered_cell_;
+  std::optional<LayerSlice> layer_;                // a 3D run's layer view (core/layers.hpp)
+  std::optional<std::int32_t> layer_option_;       // --layer K or Up/Down; nullopt: auto
   double frame_ms_ = 0;
 };
 

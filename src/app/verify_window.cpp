@@ -57,7 +57,6 @@ int run_verify_gui(Args& args) {
   if (auto p = args.positional()) throw Error(*p + ": unexpected argument");
   args.finish();
   if (view.screenshot && !view.frames) throw Error("--screenshot: needs --frames N (how many frames to draw first)");
-  if (!view.layer.empty()) throw Error("--layer: gui --arrays has no layers (it draws the elements' x and y)");
   if (view.screenshot) {
     check_output_path(*view.screenshot);
     check_outputs_distinct({{"--input", inputs.elements_path}, {"--arrays", inputs.arrays_path}}, {{"--screenshot", *view.screenshot}});

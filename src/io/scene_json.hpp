@@ -20,13 +20,22 @@
 #pragma once
 #include <string>
 
+#include "core/error.hpp"
 #include "physics/scene.hpp"
 
 namespace nbscope {
 
+// A scene that reads, but whose world Box2D cannot be given (a circle radius its float cannot
+// hold): the window opens paused on it, as on a world that stops at load; elsewhere an Error like any other.
+class WorldRefused : public Error {
+ public:
+  using Error::Error;
+};
+
 // Reads and validates a scene file. Throws Error("<path>:<line>: <field>: <what>") on anything
 // wrong: unreadable file, JSON syntax, a missing or unknown field, a wrong type, a value out of range
-// (NaN/inf, negative sizes, a concave, clockwise or degenerate polygon, too many bodies).
+// (NaN/inf, negative sizes, a concave, clockwise or degenerate polygon, too many bodies);
+// WorldRefused for a circle radius Box2D's float cannot hold.
 Scene read_scene_json(const std::string& path);
 // Same from memory; `where` stands for the file name in messages and in Scene::path.
 Scene parse_scene_json(const std::string& text, const std::string& where);

@@ -10,6 +10,9 @@
 #include <cstdio>
 #include <numbers>
 
+#include "core/error.hpp"
+#include "io/scene_json.hpp"
+
 namespace nbscope::scene_fields {
 
 namespace {
@@ -73,12 +76,14 @@ void check_radius_in_float(const LocatedJson& doc, const Path& path, double radi
     std::snprintf(buf, sizeof buf, "%.3g", v);
     return std::string(buf);
   };
+  // WorldRefused, not the scene check's Error: the scene reads, its world cannot be built (the window shows it).
+  const auto refuse = [&](const std::string& what) { throw WorldRefused(doc.locate(path) + what); };
   const float r = static_cast<float>(radius);
   if (!(r >= FLT_MIN))
-    doc.fail(path, fmt(radius) + " m is " + (r == 0 ? std::string("0") : "a denormal") + " in Box2D's float: at least " + short_number(FLT_MIN) + " m");
+    refuse(fmt(radius) + " m is " + (r == 0 ? std::string("0") : "a denormal") + " in Box2D's float: at least " + short_number(FLT_MIN) + " m");
   const float mass = static_cast<float>(density) * 3.14159265359f * r * r;  // b2CircleShape::ComputeMass
   if (density > 0 && !(mass >= FLT_MIN))
-    doc.fail(path, fmt(radius) + " m at density " + fmt(density) + " makes a mass of " + short_number(mass) +
+    refuse(fmt(radius) + " m at density " + fmt(density) + " makes a mass of " + short_number(mass) +
                        " kg in Box2D's float, whose inverse is infinite (its first step would turn the body NaN): at least " +
                        short_number(std::sqrt(FLT_MIN / (std::numbers::pi * density)) * 1.001) + " m");
 }

@@ -125,7 +125,8 @@ void draw_verify(const OverlayScene& s, const ViewFrame& v, const std::vector<bo
   const Elements& e = *s.elements;
   const double ppm = v.ppm;
   const auto n = static_cast<ElementId>(e.size());
-  const auto valid = [n](ElementId k) { return k >= 0 && k < n; };
+  // A 3D run's layer view: the marks of the elements drawn (the layer's and, ghosted, the one below's).
+  const auto valid = [n, &s](ElementId k) { return k >= 0 && k < n && (s.layer == nullptr || s.layer->visible(k)); };
   // A wrong link's ends: the first element (or its list's head) and the second, clear of their circles.
   const auto link_ends = [&](const ProblemMark& p) -> std::optional<std::array<Vec2, 2>> {
     if (!p.link || !valid(p.link->second)) return std::nullopt;

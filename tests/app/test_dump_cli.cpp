@@ -282,5 +282,115 @@ TEST(DumpCli, EveryBadContactListIsOneLineAndExitTwo) {
   expect_one_error_line(run(replay + dir + "/absent.dump"), "atom 99 is not in the frame of timestep 0");
 }
 
+// ---- --periodic and --box of elements from a CSV file (pairs, dump, verify, gui) ----
+
+// Seven 2D elements in a 12 x 12 box; the pairs worked out by hand, by the minimum image:
+// 0 (0.5, 6) and 1 (11.5, 6), r 1 each: 1.0 apart across x (< 2); 2 (6, 0.4) and 3 (6, 11.8): 0.6
+// apart across y; 5 (11.9, 11.9) and 6 (0.1, 0.1), r 0.5: 0.28 apart across the corner (< 1); 4
+// (6, 6) touches none (the nearest centres are 5.5 away). Without the box no pair touches.
+const char* kSquareCsv = "x,y,r\n0.5,6,1\n11.5,6,1\n6,0.4,1\n6,11.8,1\n6,6,1\n11.9,11.9,0.5\n0.1,0.1,0.5\n";
+const char* kSquarePairs = "i,j\n0,1\n2,3\n5,6\n";
+
+TEST(PeriodicCli, ASquareBoxGivesThePairsAcrossItsEdges) {
+  const std::string dir = scratch_dir("periodic_cli_square");
+  write_text(dir + "/e.csv", kSquareCsv);
+  const std::string flags = " --periodic x,y --box 0:12,0:12";
+  for (const char* algorithm : {"nbs", "brute"}) {
+    const Result r = run("pairs --input " + dir + "/e.csv --algorithm " + algorithm + flags);
+    EXPECT_EQ(r.exit_code, 0) << algorithm << ": " << r.err;
+    EXPECT_EQ(r.out, kSquarePairs) << algorithm;
+  }
+  // Without --periodic the same elements have no pair: the three are found across the edges only.
+  EXPECT_EQ(run("pairs --input " + dir + "/e.csv").out, "i,j\n");
+  const Result d = run("dump --input " + dir + "/e.csv --algorithm nbs" + flags);
+  EXPECT_EQ(d.exit_code, 0) << d.err;
+  write_text(dir + "/p.csv", kSquarePairs);
+  const Result v = run("verify --input " + dir + "/e.csv --pairs " + dir + "/p.csv" + flags);
+  EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
+  EXPECT_NE(v.out.find("3 right, 0 missing, 0 extra"), std::string::npos) << v.out;
+#ifdef NBSCOPE_TEST_GUI  // a build without the window refuses a screenshot
+  const Result g = run("gui --input " + dir + "/e.csv --frames 1 --size 320x240 --screenshot " + dir + "/g.png" + flags,
+                       "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_EQ(g.exit_code, 0) << g.err;
+#endif
+}
+
+TEST(PeriodicCli, ACubicBoxGivesThePairsAcrossItsFaces) {
+  // A 9 x 9 x 9 box: 0 (0.3, 4, 4) and 1 (8.6, 4, 4), r 1: 0.7 apart across x; 2 (4, 4, 0.2) and
+  // 3 (4, 4, 8.5): 0.7 apart across z; 0 and 2 are 5.2 apart.
+  const std::string dir = scratch_dir("periodic_cli_cubic");
+  write_text(dir + "/e.csv", "x,y,z,r\n0.3,4,4,1\n8.6,4,4,1\n4,4,0.2,1\n4,4,8.5,1\n");
+  for (const char* algorithm : {"nbs", "brute"}) {
+    const Result r = run("pairs --input " + dir + "/e.csv --algorithm " + std::string(algorithm) + " --periodic x,y,z --box 0:9,0:9,0:9");
+    EXPECT_EQ(r.exit_code, 0) << algorithm << ": " << r.err;
+    EXPECT_EQ(r.out, "i,j\n0,1\n2,3\n") << algorithm;
+  }
+  // z not periodic: only the pair across x.
+  EXPECT_EQ(run("pairs --input " + dir + "/e.csv --periodic x,y --box 0:9,0:9,0:9").out, "i,j\n0,1\n");
+}
+
+TEST(PeriodicCli, EveryBadBoxIsOneLineAndExitTwo) {
+  const std::string dir = scratch_dir("periodic_cli_bad");
+  write_text(dir + "/e.csv", kSquareCsv);
+  write_text(dir + "/e3.csv", "x,y,z,r\n1,1,1,0.5\n");
+  const std::string pairs = "pairs --input " + dir + "/e.csv --periodic x,y --box ";
+  for (const char* box : {"12:0,0:12", "0:0,0:12", "nan:12,0:12", "0:nan,0:12", "0:inf,0:12", "0:12", "0:12,,0:12", "0:12,0:12,0:12,0:12",
+                          "0-12,0:12", "0:12,0:12,"})
+    expect_one_error_line(run(pairs + "'" + box + "'"), "--box: '" + std::string(box) + "' is not XLO:XHI,YLO:YHI[,ZLO:ZHI]");
+  expect_one_error_line(run("pairs --input " + dir + "/e3.csv --periodic x,y --box 0:9,0:9"), "--box: the elements are 3D: give ZLO:ZHI too");
+  expect_one_error_line(run("pairs --input " + dir + "/e.csv --box 0:12,0:12"), "--box: needs --periodic");
+  expect_one_error_line(run("pairs --input " + dir + "/e.csv --periodic x,y"), "--periodic: needs --box");
+}
+
+// ---- contacts the dump does not match, and --contact-ids with nothing to read ----
+
+TEST(DumpCli, AContactFrameWithNoDumpFrameIsRefusedUnlessFramesCutTheDump) {
+  const DumpRun files = write_run("dump_cli_extra_contacts", "%.17g");
+  // The contacts of timesteps 0 and 1000, and one more frame (timestep 2000) the dump does not have.
+  write_text(files.contacts, read_text(files.contacts) + local_frame(2000, files.lists[1], 0.05));
+  const Result r = replay(files);
+  expect_one_error_line(r, files.contacts + ":");
+  EXPECT_NE(r.err.find("contacts of timestep 2000, but the dump has no frame of it (its timesteps: 0, 1000)"), std::string::npos) << r.err;
+  // --frames 5 keeps the whole two-frame dump: still refused.
+  expect_one_error_line(replay(files, "--touching strict --frames 5"), "contacts of timestep 2000");
+  // --frames 1 cuts the dump after timestep 0: the contact frames past it go with it.
+  const Result cut = replay(files, "--touching strict --frames 1");
+  EXPECT_EQ(cut.exit_code, 0) << cut.out << cut.err;
+  EXPECT_NE(cut.out.find("1 frame"), std::string::npos) << cut.out;
+  // A contact frame between the dump's: refused naming the dump's timesteps too.
+  write_text(files.contacts, local_frame(0, files.lists[0], 0.05) + local_frame(500, {}, 0.05) + local_frame(1000, files.lists[1], 0.05));
+  expect_one_error_line(replay(files), "contacts of timestep 500, but the dump has no frame of it (its timesteps: 0, 1000)");
+}
+
+TEST(DumpCli, ContactIdsWithNoContactListToReadAreRefused) {
+  const DumpRun files = write_run("dump_cli_ids_alone", "%.17g");
+  write_text(files.dir + "/p.csv", "0,1\n");
+  expect_one_error_line(run("replay --headless --dump " + files.dump + " --contact-ids 7,8"), "--contact-ids: needs --contacts");
+  expect_one_error_line(run("replay --headless " + files.dir + "/r.nbsrec --contact-ids 7,8"), "--contact-ids: needs --contacts");
+  expect_one_error_line(run("pairs --input " + files.dump + " --timestep 0 --contact-ids 7,8"), "--contact-ids: needs --contacts");
+  expect_one_error_line(run("dump --input " + files.dump + " --timestep 0 --algorithm nbs --contact-ids 7,8"), "--contact-ids: needs --contacts");
+  expect_one_error_line(run("verify --input " + files.dump + " --timestep 0 --pairs " + files.dir + "/p.csv --contact-ids 7,8"),
+                        "--contact-ids: needs --contacts");
+  // With a dump local file to read, the same flag is taken.
+  const Result ok = run("verify --input " + files.dump + " --timestep 0 --pairs " + files.contacts + " --touching strict --contact-ids 7,8");
+  EXPECT_EQ(ok.exit_code, 0) << ok.out << ok.err;
+}
+
+TEST(DumpCli, AlgorithmAllOnThreeDimensionalFramesRunsEveryDetectorThatCan) {
+  const DumpRun files = write_run("dump_cli_all_3d", "%.17g");
+  const Result r = run("replay --headless --quiet --dump " + files.dump + " --contacts " + files.contacts + " --touching strict --algorithm all");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  // box2d is the one 2D-only detector: left out, said once.
+  EXPECT_EQ(r.err, "nbscope: note: --algorithm all: box2d left out (2D only; the frames are 3D)\n");
+  for (const char* name : {"nbs", "brute", "tree", "sort", "screen", "recorded"})
+    EXPECT_NE(r.out.find(name), std::string::npos) << name << " in: " << r.out;
+  // 2D frames: box2d runs beside the others, no note.
+  const DumpRun flat = write_run("dump_cli_all_2d", "%.17g", false, false);
+  const Result r2 = run("replay --headless --quiet --dump " + flat.dump + " --contacts " + flat.contacts + " --touching strict --algorithm all");
+  EXPECT_EQ(r2.exit_code, 0) << r2.out << r2.err;
+  EXPECT_EQ(r2.err, "");
+  EXPECT_NE(r2.out.find("box2d"), std::string::npos) << r2.out;
+}
+
 }  // namespace
 }  // namespace nbscope::testcli

@@ -114,5 +114,33 @@ TEST(VerifyGui, BadFlagsAreOneLineAndExitTwo) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
 }
 
+// 3D arrays are drawn one layer at a time: --layer K, else the first problem's layer. Eight spheres
+// (r 0.2) on a grid of cell 1 from the origin, 4 x 4 x 3 cells: five in layer 0 (the busiest),
+// 5 and 6 in layer 1, 7 in layer 2. Their screen arrays are nbscope's own; checked against the same
+// elements with element 6 moved up into layer 2, its list (cell (2,2,1)) is wrong, and that one
+// problem's element lies in layer 2.
+TEST(VerifyScreenshot, ThreeDimensionalArraysAreDrawnOneLayerAtATime) {
+  const std::string dir = testcli::scratch_dir("verify_gui_layers");
+  const std::string rows = "x,y,z,r\n0.5,0.5,0.5,0.2\n1.5,0.5,0.5,0.2\n2.5,0.5,0.5,0.2\n0.5,1.5,0.5,0.2\n1.5,1.5,0.5,0.2\n0.5,0.5,1.5,0.2\n";
+  testcli::write_text(dir + "/e.csv", rows + "2.5,2.5,1.5,0.2\n3.5,3.5,2.5,0.2\n");
+  testcli::write_text(dir + "/moved.csv", rows + "2.5,2.5,2.5,0.2\n3.5,3.5,2.5,0.2\n");
+  const Shell d = shell(dir, nbscope() + " dump --input e.csv --algorithm screen --cell-size 1 --origin 0,0,0 --cells 4,4,3 > a.json");
+  ASSERT_EQ(d.exit_code, 0) << d.err;
+  const std::string verify = nbscope() + " verify --arrays a.json --size 640x360 --screenshot v.png --input ";
+  const Shell right = shell(dir, verify + "e.csv");
+  EXPECT_EQ(right.exit_code, 0) << right.out << right.err;
+  EXPECT_NE(right.out.find("; layer 0 of 3 shown"), std::string::npos) << "no problem: the busiest layer. " << right.out;
+  const Shell wrong = shell(dir, verify + "moved.csv");
+  EXPECT_EQ(wrong.exit_code, 1) << wrong.out << wrong.err;
+  EXPECT_NE(wrong.out.find("; layer 2 of 3 shown"), std::string::npos) << "the problem's layer: " << wrong.out;
+  const Shell chosen = shell(dir, verify + "moved.csv --layer 1");
+  EXPECT_EQ(chosen.exit_code, 1) << chosen.out << chosen.err;
+  EXPECT_NE(chosen.out.find("; layer 1 of 3 shown"), std::string::npos) << chosen.out;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/v.png"));
+  const Shell past = shell(dir, verify + "e.csv --layer 3");
+  EXPECT_EQ(past.exit_code, 2) << past.err;
+  EXPECT_EQ(past.err, "nbscope: error: --layer: 3 is past the top layer 2 (the grid has 3 layers)\n");
+}
+
 }  // namespace
 }  // namespace nbscope

@@ -289,10 +289,10 @@ TEST(WindowLayersCli, BadLayersAreOneLine) {
                  "--layer: the frame is 2D (layers are those of a 3D frame's grid)");
   expect_refused("replay --headless " + kPour + " --layer 1", "--layer: needs --screenshot (headless draws nothing without one)");
   const std::string nine = std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/nine.csv";
-  expect_refused("verify --input " + nine + " --pairs " + nine + shot + " --layer 0", "--layer: verify's view has no layers (it draws the elements' x and y)");
-  expect_refused("gui --input " + nine + " --arrays " + std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/nine_screen_bug.json --frames 1" + shot +
-                     " --layer 0",
-                 "--layer: gui --arrays has no layers (it draws the elements' x and y)");
+  const std::string bug = std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/nine_screen_bug.json";
+  expect_refused("verify --input " + nine + " --arrays " + bug + shot + " --layer 0", "--layer: the elements are 2D (layers are those of a 3D grid)");
+  expect_refused("gui --input " + nine + " --arrays " + bug + " --frames 1" + shot + " --layer 0",
+                 "--layer: the elements are 2D (layers are those of a 3D grid)");
   expect_refused("gui --input " + std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/pour3d/atoms.7500.dump --contact-ids 1,2",
                  "--contact-ids: gui --input reads no contacts (replay --dump FILES --contacts FILES reads a dump's contacts)");
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));

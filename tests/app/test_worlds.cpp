@@ -235,5 +235,34 @@ TEST(Worlds, TheWindowShowsAWorldThatStops) {
   EXPECT_TRUE(std::filesystem::exists(png));
 }
 
+// A radius Box2D's float cannot hold is a world refused, not a bad file: as a world that stops at
+// load, the window opens paused on the line (its picture saved with --screenshot), then exit 2 with
+// the line alone on stderr; so does the fallback without a display.
+TEST(Worlds, TheWindowShowsARadiusFloatCannotHold) {
+  const std::string dir = scratch_dir("worlds_window_radius");
+  write_text(dir + "/tiny.json", "{\"bodies\": [{\"shape\": \"circle\", \"radius\": 1},\n {\"shape\": \"circle\", \"radius\": 1e-300}]}");
+  const auto headless_png = dir + "/no-display.png";
+  const auto r = run("gui --scene '" + dir + "/tiny.json' --frames 3 --panels scenes --screenshot '" + headless_png + "'",
+                     "env -u DISPLAY -u WAYLAND_DISPLAY");
+#ifndef NBSCOPE_TEST_GUI
+  GTEST_SKIP() << "built without the window";
+#endif
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_EQ(r.err, "nbscope: error: " + dir + "/tiny.json:2: bodies[1].radius: 1e-300 m is 0 in Box2D's float: at least 1.18e-38 m\n");
+  EXPECT_TRUE(std::filesystem::exists(headless_png)) << r.out;
+
+  NBSCOPE_SKIP_WITHOUT_XVFB();
+  const std::string png = dir + "/window.png";
+  const auto w = run("gui --scene '" + world("nan") + "' --frames 5 --panels scenes --screenshot '" + png + "'", testcli::on_display());
+  EXPECT_EQ(w.exit_code, 2) << w.out << w.err;
+  EXPECT_NE(w.err.find("nbscope: error: "), std::string::npos) << w.err;
+  EXPECT_NE(w.err.find("nan.json:4: bodies[0].radius: 1e-20 m at density 1 makes a mass of "), std::string::npos) << w.err;
+  EXPECT_TRUE(std::filesystem::exists(png));
+  // The interactive window opens on it (paused on the line) rather than refusing to start.
+  const testcli::WindowRun opened = testcli::run_window("gui --scene '" + world("nan") + "'", "XDG_CONFIG_HOME='" + dir + "'");
+  EXPECT_TRUE(opened.window_shown) << opened.err;
+  EXPECT_EQ(opened.err, "");
+}
+
 }  // namespace
 }  // namespace nbscope
