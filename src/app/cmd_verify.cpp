@@ -86,6 +86,10 @@ int verify_pairs(const std::string& input, const std::string& pairs_path, const 
     given = given_from_contacts(*frame.dump, pairs_path, dump.columns);
   } else {
     given = read_given_pairs_csv(pairs_path, base);
+    if (frame.dump) {  // a dump's pairs name atoms by id, as `pairs --input FILE.dump` writes them
+      if (base != 0) throw Error("--base: the pairs of a dump name atoms by their ids");
+      given_pairs_ids_to_rows(*frame.dump, pairs_path, given);
+    }
   }
   DetectOptions options;
   options.touching = touching;
