@@ -220,6 +220,7 @@ HeadlessOptions parse_headless_options(Args& args) {
   o.scaling = args.value("--scaling");
   if (o.scaling && *o.scaling == "run") {
     o.scaling_plan = take_scaling_plan_flags(args, o.algorithm, o.threads);
+    o.scaling_plan.touching = o.touching;
   } else {
     for (const char* flag : {"--layout", "--n", "--points-per-decade"})
       if (args.value(flag)) throw Error(std::string(flag) + ": only with --scaling run");

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "app/commands.hpp"
+#include "app/dump_input.hpp"
 #include "app/scaling_flags.hpp"
 #include "app/threads_flag.hpp"
 #include "core/error.hpp"
@@ -16,7 +17,8 @@ namespace nbscope {
 
 int run_scaling_command(Args& args) {
   const std::string algorithms = args.value("--algorithm").value_or("all");
-  const ScalingPlan plan = take_scaling_plan_flags(args, algorithms, take_threads(args));
+  ScalingPlan plan = take_scaling_plan_flags(args, algorithms, take_threads(args));
+  plan.touching = take_touching(args);
   const auto output = args.value("--output");
   const bool quiet = args.flag("--quiet");
   args.finish();

@@ -88,6 +88,10 @@ int verify_pairs(const std::string& input, const std::string& pairs_path, const 
     if (dump.columns.numbers || dump.columns.names)
       throw Error("--contact-ids: needs --contacts, a dump local file as --pairs (" + pairs_path + " is not one: its pairs are i,j)");
     given = read_given_pairs_csv(pairs_path, base);
+    if (frame.dump) {  // a dump's pairs name atoms by id, as `pairs --input FILE.dump` writes them
+      if (base != 0) throw Error("--base: the pairs of a dump name atoms by their ids");
+      given_pairs_ids_to_rows(*frame.dump, pairs_path, given);
+    }
   }
   DetectOptions options;
   options.touching = touching;

@@ -285,7 +285,7 @@ const std::vector<CommandSpec>& command_table() {
     for (CommandSpec& c : t) {
       const std::string name = c.name;
       if (name != "algorithms" && name != "dump") c.groups.front().options.push_back(threads_option());
-      if (name == "algorithms" || name == "scaling") continue;
+      if (name == "algorithms") continue;
       c.groups.front().options.push_back(touching_option());
       if (name == "replay") c.groups.insert(c.groups.begin() + 1, {"frames from LAMMPS and LIGGGHTS dumps (docs/dem.md)", dump_replay_options()});
       if (name == "gui") c.groups.insert(c.groups.begin() + 1, {"gui --input FILE (without --arrays): a dump or ELEMENTS.csv", gui_input_options()});

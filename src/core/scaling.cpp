@@ -41,6 +41,7 @@ bool measure(Detector& detector, const Elements& elements, const ScalingPlan& pl
              ScalingRow& row) {
   DetectOptions options;
   options.threads = row.threads;
+  options.touching = plan.touching;
   PairList pairs;
   double best = HUGE_VAL, spent = 0;
   while (row.repeats < plan.max_repeats) {
@@ -189,6 +190,7 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
         const std::string& name = series[a].algorithm;
         DetectOptions options;
         options.threads = series[a].threads;
+        options.touching = plan.touching;
         const std::string point = point_name(series_name(name, options.threads), layout, n);
         if (name == "brute" && n > plan.brute_max_n) {
           report(point, nullptr, "skipped: brute force is capped at N <= " + std::to_string(plan.brute_max_n));

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/layouts.hpp"
+#include "core/pairs.hpp"
 
 namespace nbscope {
 
@@ -34,6 +35,7 @@ struct ScalingPlan {
   // The thread counts compared (DetectOptions::threads), each from 1 to kMaxThreads, none twice: a
   // detector that uses threads (DetectorInfo::uses_threads) is measured at each, the others once at 1.
   std::vector<int> threads = {1};
+  Touching touching = Touching::inclusive;  // the contact test timed (--touching; pairs differ only at exact ties)
 };
 
 // One measured point.

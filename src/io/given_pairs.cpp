@@ -1,6 +1,7 @@
 // Reading PAIRS.csv as a user's code wrote it (io/given_pairs.hpp).
 #include "io/given_pairs.hpp"
 
+#include <algorithm>
 #include <charconv>
 
 #include "core/error.hpp"
@@ -54,6 +55,22 @@ std::vector<verify::GivenPair> parse_given_pairs_csv(const std::string& text, co
     out.push_back({i - base, j - base, line_no});
   }
   return out;
+}
+
+void given_pairs_ids_to_rows(const DumpFrame& frame, const std::string& where, std::vector<verify::GivenPair>& pairs) {
+  const auto row_of = [&](std::int64_t id) {  // frame.ids ascend
+    const auto it = std::lower_bound(frame.ids.begin(), frame.ids.end(), id);
+    return it != frame.ids.end() && *it == id ? it - frame.ids.begin() : std::int64_t{-1};
+  };
+  for (verify::GivenPair& p : pairs) {
+    const std::int64_t i = row_of(p.i), j = row_of(p.j);
+    if (i < 0 || j < 0)
+      throw Error(where + ":" + std::to_string(p.line) + ": pair (" + std::to_string(p.i) + ", " + std::to_string(p.j) + "): atom " +
+                  std::to_string(i < 0 ? p.i : p.j) + " is not in the frame of timestep " + std::to_string(frame.timestep) + " (" +
+                  frame.where + ")");
+    p.i = i;
+    p.j = j;
+  }
 }
 
 std::vector<verify::GivenPair> read_given_pairs_csv(const std::string& path, int base) {

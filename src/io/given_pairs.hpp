@@ -6,6 +6,7 @@
 
 #include "core/pairs.hpp"
 #include "core/verify.hpp"
+#include "io/lammps_dump.hpp"
 
 namespace nbscope {
 
@@ -18,5 +19,9 @@ std::vector<verify::GivenPair> read_given_pairs_csv(const std::string& path, int
 // The same from memory; `where` names it in messages; more than `max_pairs` pairs is an error.
 std::vector<verify::GivenPair> parse_given_pairs_csv(const std::string& text, const std::string& where, int base,
                                                      std::size_t max_pairs = kDefaultMaxPairs);
+// The pairs of a dump's frame name atoms by id (as `nbscope pairs --input FILE.dump` writes them):
+// each id replaced by its row of `frame`. Error("<where>:<line>: pair (17, 99): atom 99 is not in the
+// frame of timestep T (<frame.where>)") for an id the frame does not have.
+void given_pairs_ids_to_rows(const DumpFrame& frame, const std::string& where, std::vector<verify::GivenPair>& pairs);
 
 }  // namespace nbscope

@@ -43,7 +43,7 @@ const std::vector<ParserFile>& parser_files() {
       {"grid_flags.cpp", {"pairs", "dump", "verify", "gui"}, {}},
       {"dump_input.cpp", {"replay", "pairs", "dump", "verify", "gui"}, {"--contact-ids"}},
       {"input_window.cpp", {"gui"}, {}},
-      {"touching_flag.cpp", {"gui", "headless", "replay", "pairs", "dump", "verify"}, {}},
+      {"touching_flag.cpp", {"gui", "headless", "replay", "pairs", "dump", "verify", "scaling"}, {}},
       {"threads_flag.cpp", {"gui", "headless", "replay", "pairs", "verify", "scaling"}, {}},
       {"view_options.cpp", {"headless", "replay", "verify", "gui"}, {"--gl"}},
       {"scaling_flags.cpp", {"scaling", "headless"}, {}},

@@ -227,6 +227,29 @@ TEST(DumpCli, VerifyTakesADumpAndItsDumpLocalContacts) {
   EXPECT_NE(r.out.find(": right"), std::string::npos) << r.out;
 }
 
+// A dump's PAIRS.csv names atoms by id, as `pairs --input FILE.dump` writes them (it was read as rows: WRONG).
+TEST(DumpCli, VerifyReadsTheIdsOfADumpsPairsFile) {
+  const DumpRun files = write_run("dump_cli_verify_ids", "%.17g");
+  std::string text = "i,j\n";
+  for (const auto& p : files.lists[1]) text += std::to_string(p[0]) + "," + std::to_string(p[1]) + "\n";
+  write_text(files.dir + "/own.csv", text);
+  const std::string verify = "verify --input " + files.dump + " --timestep 1000 --touching strict --pairs ";
+  const Result own = run(verify + files.dir + "/own.csv");
+  EXPECT_EQ(own.exit_code, 0) << own.out << own.err;
+  EXPECT_NE(own.out.find(std::to_string(files.lists[1].size()) + " right, 0 missing"), std::string::npos) << own.out;
+  // nbscope's own `pairs` output of the frame, as docs/dem.md chains them.
+  const Result pairs = run("pairs --input " + files.dump + " --timestep 1000 --touching strict --output " + files.dir + "/p.csv");
+  ASSERT_EQ(pairs.exit_code, 0) << pairs.err;
+  const Result round = run(verify + files.dir + "/p.csv");
+  EXPECT_EQ(round.exit_code, 0) << round.out << round.err;
+  EXPECT_NE(round.out.find(": right"), std::string::npos) << round.out;
+  // An id the frame lacks is bad input, named with its line; --base has no meaning for ids.
+  write_text(files.dir + "/absent.csv", "i,j\n" + std::to_string(files.lists[1][0][0]) + ",999999\n");
+  expect_one_error_line(run(verify + files.dir + "/absent.csv"), "absent.csv:2: pair (");
+  expect_one_error_line(run(verify + files.dir + "/absent.csv"), "atom 999999 is not in the frame of timestep 1000");
+  expect_one_error_line(run(verify + files.dir + "/own.csv --base 1"), "--base: the pairs of a dump name atoms by their ids");
+}
+
 TEST(DumpCli, PeriodicContactsAcrossTheBoundaryAreFound) {
   const DumpRun files = write_run("dump_cli_periodic", "%.17g", true);
   // Some contact crosses the boundary (the lattice touches its own image): the test's list has one

@@ -69,6 +69,21 @@ TEST(ScalingCli, OneRowPerDetectorThreadsLayoutAndSize) {
   EXPECT_EQ(one_rows[0][7], "1");
 }
 
+// --touching, as on every command that detects (README): on the `touching` layout (a 10 x 10 lattice
+// of unit spacing and radius 0.5) the 180 lattice neighbours touch exactly, so strict finds none.
+TEST(ScalingCli, TouchingStrictTimesTheStrictContactTest) {
+  const std::string dir = scratch_dir("scaling_cli_touching");
+  for (const auto& [touching, pairs] : {std::pair{"inclusive", "180"}, std::pair{"strict", "0"}}) {
+    const std::string csv = dir + "/" + touching + ".csv";
+    const auto r = run("scaling --algorithm nbs,brute --layout touching --n 100 --threads 1 --quiet --touching " + std::string(touching) +
+                       " --output '" + csv + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto rows = csv_rows(read_text(csv));
+    ASSERT_EQ(rows.size(), 2u);
+    for (const auto& row : rows) EXPECT_EQ(row[5], pairs) << touching << ": " << row[0];
+  }
+}
+
 TEST(ScalingCli, BruteIsSkippedAboveItsCapAndSaysSo) {
   const std::string dir = scratch_dir("scaling_cli_brute");
   const auto r = run("scaling --algorithm brute,nbs --n 1e4..2e4 --points-per-decade 1 --threads 1 --quiet --output '" + dir + "/b.csv'");

@@ -1,0 +1,505 @@
+// The docs as tests (issue 36): every command in a fenced shell block of README.md and docs/*.md runs
+// here as written, and what the text says next to it is held to what it does. A doc change that
+// breaks a command, its exit code or a number it quotes fails this test.
+//
+// Which blocks are commands (the rule, per fenced block):
+// - tagged `sh`, `bash`, `shell`: every line is a command (`\` continues it, and so does an indented
+//   line that starts with `[` or `-`, a synopsis's layout; `# ...` at its end is its comment; a line
+//   that starts with `#` is prose);
+// - tagged `console`: `$ ` lines are commands, the lines after one its output as the text shows it;
+//   a `console` block without `$` is the output of the command just above it (the last of the
+//   previous command block of the page, when no listing was given for it yet; else it is counted
+//   as a listing without a command, and not checked);
+// - any other tag (json, c, cmake, text, mermaid, none: LIGGGHTS input, output listings) is no
+//   command; a line of such a block that starts with `nbscope COMMAND` or `nbscope --flag` fails the
+//   test (tag it sh).
+// docs/cli.md is generated help (a test of its own compares it), so it is not read.
+//
+// What each command is:
+// - a synopsis: it has `[`, a ` ...` word or an upper-case placeholder (FILE, N, ELEMENTS.csv, ...):
+//   not run; its command must exist and take every `--flag` it names (`nbscope COMMAND --help`);
+// - covered elsewhere: `scripts/dev ...` (tests/scripts/test_dev_script.cpp), `cmake --install`,
+//   `cpack`, `apt install` (tests/install; installing the .deb needs root), `ctest` (the suite itself);
+// - a window (`gui` without --screenshot, `replay` without --headless or --screenshot): run on the
+//   test's own Xvfb until its window shows, then SIGTERM: it must show and exit as below; then as written
+//   without a display, where it runs headless, its output checked as any command's (in a build without
+//   the window, NBSCOPE_GUI=OFF, these and the --screenshot commands are not run, and say so);
+// - else run through bash in the page's directory, `nbscope` on PATH, no display.
+// Each page runs in a fresh directory holding links to the tree's assets/, docs/ and examples/, its
+// commands in the page's order (a command makes the files the next one reads, as for a reader).
+// Inputs made as the docs say (make_inputs()): README.md's LIGGGHTS frames are tests/dem/pour2d.in
+// run there (its dump lines are the README's), docs/dem.md's `post/` is tests/dem/pour3d.in run in
+// post/; `myplugin.c` (README, install.md) and `brute_plugin.c` (plugins.md) are
+// examples/minimal/brute_plugin.c, the plugin docs/plugins.md shows. Substitutions (substitute()):
+// `/tmp/` is the page directory's tmp/ (parallel runs share no files), `-I<prefix>/include` and
+// `-I/usr/local/include` the tree's include/ (the installed header), `--scene FILE` default.json.
+//
+// What is checked: the exit code the text implies, first found of: `exit N` in the command's comment;
+// 1 when its listed output says WRONG (verify); 1 with --inject-fault (a planted fault is a failed
+// check: headless.md, replay.md); `exit(s) N` in the line right after its block (its last command)
+// or in the lines just before its output-only listing; else 0. Its listed output: every line is one
+// of the command's output lines (stdout or stderr), timings masked (a number before ` ms`/` s`, the
+// ns and repeats columns of `scaling`); without a `...` line, no other output line. A `"quoted"`
+// text in its comment is in its output (up to a `...`), and so is every number its comment quotes
+// (`# 1,000 spheres, 6 layers`: 1000 and 6 are numbers of its output; its exit code aside).
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/run_cli.hpp"
+#include "support/x_display.hpp"
+
+namespace nbscope {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kSource = NBSCOPE_SOURCE_DIR;
+
+enum class Kind { run, window, synopsis, covered };
+
+struct Command {
+  std::string page;
+  std::size_t line = 0;  // 1-based, of the command's first line
+  std::string text;      // as written (continuations joined)
+  std::string comment;   // its trailing `# ...`, without the `#`
+  std::vector<std::string> output;  // the output the text lists for it
+  bool elided = false;               // the listing has a `...` line
+  std::string exit_prose;            // the text that may say its exit code
+  Kind kind = Kind::run;
+  std::string covered_by;
+};
+
+std::vector<std::string> lines_of(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t");
+  if (a == std::string::npos) return "";
+  return s.substr(a, s.find_last_not_of(" \t") - a + 1);
+}
+
+bool starts_with(const std::string& s, const std::string& p) { return s.rfind(p, 0) == 0; }
+
+// The fence's language tag when `line` opens or closes a fenced block, else nullopt.
+std::optional<std::string> fence(const std::string& line) {
+  const std::string t = trim(line);
+  if (!starts_with(t, "```") && !starts_with(t, "~~~")) return std::nullopt;
+  return trim(t.substr(3));
+}
+
+// Splits a shell line into the command and its trailing comment (a `#` after white space, outside quotes).
+std::pair<std::string, std::string> split_comment(const std::string& line) {
+  char quote = 0;
+  for (std::size_t k = 0; k < line.size(); ++k) {
+    const char c = line[k];
+    if (quote != 0) {
+      if (c == quote) quote = 0;
+    } else if (c == '\'' || c == '"') {
+      quote = c;
+    } else if (c == '#' && k > 0 && (line[k - 1] == ' ' || line[k - 1] == '\t')) {
+      return {trim(line.substr(0, k)), trim(line.substr(k + 1))};
+    }
+  }
+  return {trim(line), ""};
+}
+
+// Lines [from, to) joined as prose.
+std::string prose(const std::vector<std::string>& lines, std::size_t from, std::size_t to) {
+  std::string out;
+  for (std::size_t k = from; k < std::min(to, lines.size()); ++k) out += lines[k] + " ";
+  return out;
+}
+
+const std::set<std::string> kShellTags = {"sh", "bash", "shell"};
+
+// Every command of one page, in order; `problems` gets a command found in a block that is not tagged as one.
+std::vector<Command> commands_of(const fs::path& file, const std::string& page, std::vector<std::string>& problems,
+                                 int& blocks, int& listings_without_command) {
+  const std::vector<std::string> lines = lines_of(file);
+  std::vector<Command> out;
+  std::size_t last_block_end = 0;       // the line after the previous closing fence
+  std::size_t last_command_block = 0;   // index in `out` one past the previous command block's commands
+  bool have_command_block = false;
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    const auto tag = fence(lines[k]);
+    if (!tag) continue;
+    std::size_t end = k + 1;
+    while (end < lines.size() && !fence(lines[end])) ++end;
+    ++blocks;
+    const std::vector<std::string> body(lines.begin() + static_cast<long>(k) + 1, lines.begin() + static_cast<long>(std::min(end, lines.size())));
+    const std::string before = prose(lines, last_block_end, k);
+    const std::string after = end + 1 < lines.size() ? lines[end + 1] : "";
+    if (kShellTags.count(*tag) != 0) {
+      for (std::size_t b = 0; b < body.size(); ++b) {
+        std::string joined = body[b];
+        const std::size_t first = b;
+        while (!joined.empty() && joined.back() == '\\' && b + 1 < body.size()) joined = joined.substr(0, joined.size() - 1) + " " + trim(body[++b]);
+        if (trim(joined).empty() || starts_with(trim(joined), "#")) continue;
+        auto [text, comment] = split_comment(joined);
+        if (joined[0] == ' ' && (text[0] == '[' || text[0] == '-') && !out.empty() && out.back().line > k) {  // of this block
+          out.back().text += " " + text;  // a synopsis laid out on several lines
+          continue;
+        }
+        out.push_back({page, k + 2 + first, text, comment, {}, false, "", Kind::run, ""});
+      }
+      if (!out.empty()) out.back().exit_prose = after;
+      last_command_block = out.size();
+      have_command_block = true;
+    } else if (*tag == "console") {
+      const std::size_t start = out.size();
+      for (std::size_t b = 0; b < body.size(); ++b) {
+        if (starts_with(body[b], "$ ")) {
+          auto [text, comment] = split_comment(body[b].substr(2));
+          out.push_back({page, k + 2 + b, text, comment, {}, false, "", Kind::run, ""});
+        } else if (out.size() > start) {
+          if (trim(body[b]) == "...") {
+            out.back().elided = true;
+          } else {
+            out.back().output.push_back(body[b]);
+          }
+        }
+      }
+      if (out.size() > start) {
+        out.back().exit_prose = after;
+        last_command_block = out.size();
+        have_command_block = true;
+      } else if (have_command_block && last_command_block > 0 && out[last_command_block - 1].output.empty()) {
+        Command& c = out[last_command_block - 1];  // the output of the command just above
+        for (const std::string& l : body) {
+          if (trim(l) == "...") {
+            c.elided = true;
+          } else {
+            c.output.push_back(l);
+          }
+        }
+        c.exit_prose = before;
+      } else {
+        ++listings_without_command;
+      }
+    } else {
+      static const std::regex command_line(R"(^(\$ )?nbscope (--|[a-z]).*)");  // not `nbscope 0.1.0`, --version's output
+      for (const std::string& l : body)
+        if (std::regex_match(trim(l), command_line))
+          problems.push_back(page + ":" + std::to_string(k + 1) + ": a command in a block tagged '" + *tag + "' (tag it sh or console)");
+    }
+    last_block_end = end + 1;
+    k = end;
+  }
+  return out;
+}
+
+// The documentation pages read: README.md and docs/*.md but cli.md (generated help).
+std::vector<std::string> pages() {
+  std::vector<std::string> out{"README.md"};
+  std::vector<std::string> docs;
+  for (const auto& entry : fs::directory_iterator(kSource / "docs"))
+    if (entry.path().extension() == ".md" && entry.path().filename() != "cli.md") docs.push_back("docs/" + entry.path().filename().string());
+  std::sort(docs.begin(), docs.end());
+  out.insert(out.end(), docs.begin(), docs.end());
+  return out;
+}
+
+std::vector<std::string> words_of(const std::string& s) {
+  std::istringstream in(s);
+  std::vector<std::string> w;
+  for (std::string x; in >> x;) w.push_back(x);
+  return w;
+}
+
+// An upper-case placeholder word: FILE, N, ELEMENTS.csv, OUT.png, NX,NY, WxH.
+bool placeholder(const std::string& word) {
+  static const std::regex re(R"(^[A-Z][A-Z_]*(\.[a-z]+)?(,[A-Z]+)*$|^WxH$)");
+  return std::regex_match(word, re);
+}
+
+// The substitutions of the header: the page directory `dir` for /tmp/, the tree's headers, a scene for FILE.
+std::string substitute(std::string s, const std::string& dir) {
+  const std::vector<std::pair<std::string, std::string>> kSubstitutions = {
+      {"/tmp/", dir + "/tmp/"},
+      {"-I<prefix>/include", "-I" + (kSource / "include").string()},
+      {"-I/usr/local/include", "-I" + (kSource / "include").string()},
+      {"--scene FILE", "--scene assets/scenes/default.json"},
+  };
+  for (const auto& [from, to] : kSubstitutions)
+    for (std::size_t at = 0; (at = s.find(from, at)) != std::string::npos; at += to.size()) s.replace(at, from.size(), to);
+  return s;
+}
+
+bool has_word(const std::vector<std::string>& w, const std::string& x) { return std::find(w.begin(), w.end(), x) != w.end(); }
+
+void classify(Command& c) {
+  const std::vector<std::string> w = words_of(substitute(c.text, "/tmp"));
+  if (w.empty()) return;
+  if (w[0] == "scripts/dev") {
+    c.kind = Kind::covered;
+    c.covered_by = "tests/scripts/test_dev_script.cpp (scripts/dev's every subcommand)";
+  } else if ((w[0] == "cmake" && has_word(w, "--install")) || has_word(w, "cpack") || has_word(w, "apt")) {
+    c.kind = Kind::covered;
+    c.covered_by = "tests/install: cmake --install into a prefix, the .deb cpack makes (its files checked, extracted: installing it needs root)";
+  } else if (w[0] == "ctest") {
+    c.kind = Kind::covered;
+    c.covered_by = "the test suite itself";
+  } else if (std::any_of(w.begin(), w.end(), [](const std::string& x) { return x == "..." || x.find('[') != std::string::npos || placeholder(x); })) {
+    c.kind = Kind::synopsis;
+  } else if (w[0] == "nbscope" && w.size() > 1 &&
+             ((w[1] == "gui" && !has_word(w, "--screenshot")) || (w[1] == "replay" && !has_word(w, "--headless") && !has_word(w, "--screenshot")))) {
+    c.kind = Kind::window;
+  }
+}
+
+// The exit code the text implies (the rule in the header).
+int expected_exit(const Command& c) {
+  static const std::regex exit_re(R"(\b[Ee]xits? (\d)\b)");
+  std::smatch m;
+  if (std::regex_search(c.comment, m, exit_re)) return std::stoi(m[1]);
+  for (const std::string& l : c.output)
+    if (l.size() >= 5 && l.compare(l.size() - 5, 5, "WRONG") == 0) return 1;
+  if (c.text.find("--inject-fault") != std::string::npos) return 1;
+  if (std::regex_search(c.exit_prose, m, exit_re)) return std::stoi(m[1]);
+  return 0;
+}
+
+// A line with its timings masked: a number before ` ms` or ` s`; the ns/element and repeats of a `scaling` row.
+std::string mask_timings(const std::string& line) {
+  static const std::regex timing(R"(\d[\d.,]*( m?s\b))");
+  std::string s = std::regex_replace(line, timing, "#$1");
+  static const std::regex table(R"(^(\S+\s+\S+\s+\d+\s+)[\d.]+(\s+[\d.]+\s+\d+\s+)\d+(\s+\d+)$)");
+  static const std::regex csv(R"(^([a-z0-9_ ]+,[a-z_]+,\d+,)[\d.]+(,[\d.]+,\d+,)\d+(,\d+)$)");
+  s = std::regex_replace(s, table, "$1#$2#$3");
+  return std::regex_replace(s, csv, "$1#$2#$3");
+}
+
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);)
+    if (!trim(l).empty()) out.push_back(l);
+  return out;
+}
+
+std::string quote(const std::string& s) { return "'" + s + "'"; }
+
+// The inputs a page's commands read, made as the docs say (the header).
+void make_inputs(const std::string& page, const fs::path& dir) {
+  const std::string minimal = (kSource / "examples/minimal/brute_plugin.c").string();
+  const auto liggghts = [&](const std::string& in, const fs::path& where) {
+    if (std::system("command -v liggghts >/dev/null 2>&1") != 0) {
+      const char* ci = std::getenv("CI");
+      if (ci != nullptr && std::string(ci) == "true") FAIL() << page << ": liggghts is not installed (CI=true: it must run)";
+      GTEST_SKIP() << page << ": its LIGGGHTS frames need liggghts (apt-get install liggghts)";
+    }
+    fs::create_directories(where);
+    const std::string cmd = "cd " + quote(where.string()) + " && liggghts -in " + quote((kSource / "tests/dem" / in).string()) +
+                            " -log log.liggghts -echo none -screen /dev/null >liggghts.out 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << page << ": liggghts " << in << " failed (" << where << "/log.liggghts)";
+  };
+  if (page == "README.md") {
+    liggghts("pour2d.in", dir);
+    fs::copy_file(minimal, dir / "myplugin.c");
+  } else if (page == "docs/dem.md") {
+    liggghts("pour3d.in", dir / "post");
+  } else if (page == "docs/install.md") {
+    fs::copy_file(minimal, dir / "myplugin.c");
+  } else if (page == "docs/plugins.md") {
+    fs::copy_file(minimal, dir / "brute_plugin.c");
+  }
+}
+
+// The options `nbscope COMMAND --help` lists.
+std::string help_of(const std::string& command) {
+  static std::map<std::string, std::string> cache;
+  if (!cache.count(command)) cache[command] = testcli::run(command + " --help").out;
+  return cache[command];
+}
+
+// True when `help` names `option` as a whole word (--thread is not --threads).
+bool names_option(const std::string& help, const std::string& option) {
+  for (std::size_t at = help.find(option); at != std::string::npos; at = help.find(option, at + 1)) {
+    const std::size_t end = at + option.size();
+    if (end == help.size() || !(std::isalnum(static_cast<unsigned char>(help[end])) != 0 || help[end] == '-')) return true;
+  }
+  return false;
+}
+
+struct Inventory {
+  std::vector<Command> commands;
+  std::vector<std::string> problems;
+  int blocks = 0, listings_without_command = 0;
+};
+
+Inventory inventory() {
+  Inventory inv;
+  for (const std::string& page : pages()) {
+    std::vector<Command> cs = commands_of(kSource / page, page, inv.problems, inv.blocks, inv.listings_without_command);
+    for (Command& c : cs) classify(c);
+    inv.commands.insert(inv.commands.end(), cs.begin(), cs.end());
+  }
+  return inv;
+}
+
+std::string where(const Command& c) { return c.page + ":" + std::to_string(c.line) + ": " + c.text; }
+
+TEST(DocsCommands, EveryCommandBlockIsTaggedAndEverySynopsisNamesRealOptions) {
+  const Inventory inv = inventory();
+  for (const std::string& p : inv.problems) ADD_FAILURE() << p;
+  std::map<Kind, int> count;
+  for (const Command& c : inv.commands) {
+    ++count[c.kind];
+    if (c.kind != Kind::synopsis) continue;
+    const std::vector<std::string> w = words_of(c.text);
+    if (w[0] != "nbscope") continue;  // a compiler line with a placeholder: its flags are the compiler's
+    ASSERT_GE(w.size(), 2u) << where(c);
+    const std::string help = help_of(w[1]);
+    EXPECT_FALSE(help.empty()) << where(c) << ": no command '" << w[1] << "'";
+    static const std::regex flag(R"(--[a-z][a-z0-9-]*)");
+    for (auto it = std::sregex_iterator(c.text.begin(), c.text.end(), flag); it != std::sregex_iterator(); ++it)
+      EXPECT_TRUE(names_option(help, it->str())) << where(c) << ": `nbscope " << w[1] << "` has no option " << it->str();
+  }
+  std::printf("docs: %d fenced blocks, %zu commands: %d run, %d in a window, %d synopses (flags checked), %d covered "
+              "elsewhere; %d output listings without a command\n",
+              inv.blocks, inv.commands.size(), count[Kind::run], count[Kind::window], count[Kind::synopsis], count[Kind::covered],
+              inv.listings_without_command);
+  for (const Command& c : inv.commands)
+    if (c.kind == Kind::covered) {
+      std::printf("  covered elsewhere: %s (%s)\n", where(c).c_str(), c.covered_by.c_str());
+    } else if (c.kind == Kind::synopsis) {
+      std::printf("  synopsis: %s\n", where(c).c_str());
+    }
+}
+
+class PageCommands : public testing::TestWithParam<std::string> {};
+
+// Runs `c` in `dir` through bash, `nbscope` on PATH, no display: exit code, stdout, stderr.
+testcli::Result run_in(const std::string& dir, const std::string& command) {
+  const std::string cmd = "cd " + quote(dir) + " && env -u DISPLAY -u WAYLAND_DISPLAY PATH=" + quote(dir + "/bin") +
+                          ":\"$PATH\" XDG_CONFIG_HOME=" + quote(dir + "/config") + " XDG_DATA_HOME=" + quote(dir + "/data") +
+                          " bash -c " + quote(std::regex_replace(command, std::regex("'"), "'\\''")) + " </dev/null >" +
+                          quote(dir + "/.out") + " 2>" + quote(dir + "/.err");
+  const int status = std::system(cmd.c_str());
+  testcli::Result r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.out = testcli::read_text(dir + "/.out");
+  r.err = testcli::read_text(dir + "/.err");
+  return r;
+}
+
+// Without thousands separators: "1,000" -> "1000".
+std::string plain_numbers(const std::string& s) { return std::regex_replace(s, std::regex(R"((\d),(\d{3}))"), "$1$2"); }
+
+// Every number the command's comment quotes (but its exit code) is a number of its output.
+void check_comment_numbers(const Command& c, const std::string& output) {
+  static const std::regex number(R"((^|[^\w.,])(\d[\d,]*(\.\d+)?)(?![\w]))");
+  const std::string comment = std::regex_replace(c.comment, std::regex(R"([Ee]xits? \d)"), "");
+  const std::string printed = " " + plain_numbers(output) + " ";
+  for (auto it = std::sregex_iterator(comment.begin(), comment.end(), number); it != std::sregex_iterator(); ++it) {
+    const std::string n = plain_numbers((*it)[2]);
+    const std::regex whole("(^|[^\\d.])" + n + "([^\\d]|$)");
+    EXPECT_TRUE(std::regex_search(printed, whole)) << where(c) << "\n  the comment quotes " << n << "; the command printed:\n" << output;
+  }
+}
+
+void check_output(const Command& c, const std::string& dir, const testcli::Result& r) {
+  const std::string all = r.err + (r.err.empty() || r.err.back() == '\n' ? "" : "\n") + r.out;
+  std::vector<std::string> actual = split_lines(all);
+  for (std::string& l : actual) l = mask_timings(l);
+  std::multiset<std::string> unmatched(actual.begin(), actual.end());
+  for (const std::string& listed : c.output) {
+    if (trim(listed).empty()) continue;
+    const std::string want = mask_timings(substitute(listed, dir));
+    const auto it = unmatched.find(want);
+    EXPECT_NE(it, unmatched.end()) << where(c) << "\n  the text lists: " << listed << "\n  the command printed:\n" << all;
+    if (it != unmatched.end()) unmatched.erase(it);
+  }
+  if (!c.output.empty() && !c.elided) {
+    EXPECT_TRUE(unmatched.empty()) << where(c) << "\n  printed lines the text does not list (add `...` if it leaves some out):\n"
+                                   << all;
+  }
+  check_comment_numbers(c, all);
+  static const std::regex quoted(R"re("([^"]+)")re");
+  for (auto it = std::sregex_iterator(c.comment.begin(), c.comment.end(), quoted); it != std::sregex_iterator(); ++it) {
+    std::string said = (*it)[1];
+    if (const auto dots = said.find("..."); dots != std::string::npos) said = said.substr(0, dots);
+    EXPECT_NE(all.find(said), std::string::npos) << where(c) << "\n  the comment says \"" << said << "\"; the command printed:\n" << all;
+  }
+}
+
+TEST_P(PageCommands, RunAsWritten) {
+  const std::string page = GetParam();
+  std::vector<std::string> problems;
+  int blocks = 0, loose = 0;
+  std::vector<Command> commands = commands_of(kSource / page, page, problems, blocks, loose);
+  for (Command& c : commands) classify(c);
+  if (std::none_of(commands.begin(), commands.end(), [](const Command& c) { return c.kind == Kind::run || c.kind == Kind::window; }))
+    GTEST_SKIP() << page << ": no command to run";
+  std::string name = page;
+  std::replace(name.begin(), name.end(), '/', '_');
+  const fs::path dir = fs::absolute(testcli::scratch_dir("docs_commands/" + name));
+  for (const char* tree : {"assets", "docs", "examples"}) fs::create_directory_symlink(kSource / tree, dir / tree);
+  fs::create_directories(dir / "bin");
+  fs::create_directories(dir / "tmp");
+  fs::create_symlink(testcli::binary(), dir / "bin/nbscope");
+  make_inputs(page, dir);
+  if (testing::Test::IsSkipped() || testing::Test::HasFatalFailure()) return;
+  for (const Command& c : commands) {
+    const std::string text = substitute(c.text, dir.string());
+    if (c.kind == Kind::window) {
+#ifdef NBSCOPE_TEST_GUI
+      if (!testcli::have_xvfb()) {
+        std::printf("not run (no Xvfb): %s\n", where(c).c_str());
+        continue;
+      }
+      const std::string command = "env -C " + quote(dir.string()) + " XDG_CONFIG_HOME=" + quote(dir.string() + "/config") + " " +
+                                  quote(testcli::binary()) + text.substr(std::string("nbscope").size());
+      const testcli::WindowRun w = testcli::run_until_window_then_term(command);
+      std::printf("ran in a window %s:%zu (exit %d on SIGTERM)\n", c.page.c_str(), c.line, w.exit_code);
+      EXPECT_TRUE(w.window_shown) << where(c) << ": no window showed\n" << w.out << w.err;
+      EXPECT_EQ(w.exit_code, expected_exit(c)) << where(c) << ": closed by SIGTERM\n" << w.out << w.err;
+      // And as written where there is no display: the same frames, headless (replay.md, window.md).
+      const testcli::Result r = run_in(dir.string(), text);
+      EXPECT_EQ(r.exit_code, expected_exit(c)) << where(c) << " (no display)\n--- stdout:\n" << r.out << "--- stderr:\n" << r.err;
+      check_output(c, dir.string(), r);
+#else
+      std::printf("not run (a build without the window): %s\n", where(c).c_str());
+#endif
+      continue;
+    }
+    if (c.kind != Kind::run) continue;
+#ifndef NBSCOPE_TEST_GUI
+    if (text.find("--screenshot") != std::string::npos) {  // off-screen drawing is the window's code
+      std::printf("not run (a build without the window): %s\n", where(c).c_str());
+      continue;
+    }
+#endif
+    const testcli::Result r = run_in(dir.string(), text);
+    std::printf("ran %s:%zu (exit %d)\n", c.page.c_str(), c.line, r.exit_code);
+    EXPECT_EQ(r.exit_code, expected_exit(c)) << where(c) << "\n--- stdout:\n" << r.out << "--- stderr:\n" << r.err;
+    check_output(c, dir.string(), r);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Pages, PageCommands, testing::ValuesIn(pages()), [](const testing::TestParamInfo<std::string>& info) {
+  std::string name = info.param;
+  for (char& ch : name)
+    if (std::isalnum(static_cast<unsigned char>(ch)) == 0) ch = '_';
+  return name;
+});
+
+}  // namespace
+}  // namespace nbscope
