@@ -18,6 +18,10 @@
  *
  * Threading: nbscope calls one library from one thread at a time. The state pointer is the plugin's
  * own (NULL on the first call); keep arrays in it between frames, as a simulation would.
+ *
+ * Guarded: a crash or a call running past --detector-timeout in any of these (or in the library's
+ * constructors, at load) ends nbscope with one line naming the library and the call, exit 2. Texts
+ * (fail() messages, names, labels, summary, pseudocode) are kept to their first 300 bytes.
  */
 #ifndef NBSCOPE_DETECTOR_H
 #define NBSCOPE_DETECTOR_H
@@ -73,7 +77,7 @@ typedef struct nbscope_output {
   /* n * dim integers: cells[k * dim + a] is element k's integerised coordinate on axis a, as the
    * plugin computed it. Prefilled with -1; NULL unless the plugin declares NBSCOPE_CAP_CELLS. */
   int32_t *cells;
-  /* Says why nbscope_detect failed (copied); call before returning nonzero. */
+  /* Says why nbscope_detect failed (copied: its first 300 bytes); call before returning nonzero. */
   void (*fail)(void *ctx, const char *message);
 } nbscope_output;
 
@@ -85,7 +89,8 @@ typedef struct nbscope_output {
 typedef struct nbscope_trace {
   void *ctx;
   /* Declares a heads or next array (its contents now are "before the first event"); returns its id
-   * (>= 0). `data` must stay valid and in place until nbscope_detect returns. Shape is row-major. */
+   * (>= 0). `name` is required (not NULL, not empty; its first 300 bytes are kept). `data` must stay
+   * valid and in place until nbscope_detect returns. Shape is row-major. */
   int (*declare_array)(void *ctx, const char *name, int32_t rank, const int64_t *shape, const int32_t *data);
   /* A phase begins ("y-lists", "x-lists of row", ...); index: the row, layer or leaf, or -1. */
   void (*phase)(void *ctx, int32_t line, const char *label, int32_t index);

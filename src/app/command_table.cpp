@@ -50,8 +50,10 @@ const std::vector<OptionSpec>& plugin_options() {
       {"--detector-lib", "PATH.so", "",
        "loads a detector plugin (include/nbscope/detector.h), named then as a built-in (or by its file name); repeatable. "
        "Without --algorithm its detector is the one run. One that breaks the API, crashes or hangs stops the run: exit 2, "
-       "naming it and the frame"},
-      {"--detector-timeout", "SECONDS", "60", "how long one detection of a plugin may take before the run stops (0: no limit)"},
+       "naming it and the call"},
+      {"--detector-timeout", "SECONDS", "60",
+       "how long one call into a plugin (its load, describe, detect, release, own_bytes) may take before the run stops "
+       "(0: no limit)"},
   };
   return options;
 }

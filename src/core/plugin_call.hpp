@@ -44,7 +44,7 @@ struct PluginCall {
   std::size_t max_pairs = 0;
   std::int64_t n = 0;
   bool limit_hit = false;
-  std::string failure;            // fail()'s message
+  std::string failure;            // fail()'s message, cut (cut_plugin_text)
   std::string breach;             // the first broken rule, in words ("" while none)
   std::size_t pairs_at_breach = 0;  // pairs given before it (checked after the call: one may break first)
   std::exception_ptr exception;   // an exception of nbscope's own (out of memory, a trace consumer's)
@@ -95,7 +95,8 @@ struct PluginCall {
 // The trace table whose ctx is `call` (plugin_trace.cpp).
 nbscope_trace plugin_trace_table(PluginCall& call);
 
-// `text` (a plugin's label or kind; may be null) as a string that lives as long as the process.
+// `text` (a plugin's label or kind; may be null), cut (cut_plugin_text), as a string that lives as long
+// as the process.
 const char* intern_plugin_label(const char* text);
 
 }  // namespace nbscope

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <limits>
 #include <new>
+#include <string_view>
 
 #include "core/cells.hpp"
 #include "core/plugin_call.hpp"
@@ -12,6 +13,16 @@
 namespace nbscope {
 
 namespace {
+
+// "1,048,276": digits grouped in threes, as the counts of the other error lines are.
+std::string grouped_count(std::size_t n) {
+  std::string digits = std::to_string(n), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
 
 bool plugin_name_ok(const char* name) {
   if (name == nullptr || *name == '\0') return false;
@@ -88,12 +99,22 @@ static int nbscope_plugin_add_pair(void* ctx, std::int32_t i, std::int32_t j) {
 static void nbscope_plugin_fail(void* ctx, const char* message) {
   auto& call = *static_cast<PluginCall*>(ctx);
   try {
-    call.failure = message != nullptr ? std::string(message) : std::string();
+    call.failure = cut_plugin_text(message);
   } catch (...) {
     call.keep_exception();
   }
 }
 }  // extern "C"
+
+std::string cut_plugin_text(const char* text) {
+  if (text == nullptr) return {};
+  const std::string_view whole(text);
+  if (whole.size() <= kMaxPluginTextBytes) return std::string(whole);
+  std::size_t cut = kMaxPluginTextBytes;
+  // Back to the start of a UTF-8 character (at most 3 continuation bytes): no escaped half of one.
+  for (int k = 0; k < 3 && cut > 0 && (static_cast<unsigned char>(whole[cut]) & 0xC0) == 0x80; ++k) --cut;
+  return std::string(whole.substr(0, cut)) + "... (" + grouped_count(whole.size() - cut) + " more bytes)";
+}
 
 void check_plugin_info(const nbscope_detector_info* info) {
   if (info == nullptr) throw Error("nbscope_detector_describe() returned NULL");
@@ -102,7 +123,7 @@ void check_plugin_info(const nbscope_detector_info* info) {
                 "; this nbscope speaks " + std::to_string(NBSCOPE_DETECTOR_API_VERSION));
   if (!plugin_name_ok(info->name))
     throw Error(info->name == nullptr ? std::string("its name is NULL")
-                                      : "its name '" + printable_line(std::string(info->name).substr(0, 64)) +
+                                      : "its name '" + printable_line(cut_plugin_text(info->name)) +
                                             "' is not 1 to 64 of [a-z0-9_-]");
   if ((info->capabilities & (NBSCOPE_CAP_2D | NBSCOPE_CAP_3D)) == 0)
     throw Error("its capabilities name neither NBSCOPE_CAP_2D nor NBSCOPE_CAP_3D");
@@ -110,31 +131,49 @@ void check_plugin_info(const nbscope_detector_info* info) {
   check_pseudocode(info->pseudocode_3d, info->pseudocode_3d_lines, "3d");
 }
 
-DetectorInfo plugin_detector_info(const PluginSymbols& symbols, const nbscope_detector_info& info) {
+PluginDescription::PluginDescription(const nbscope_detector_info& info)
+    : name(info.name), summary(cut_plugin_text(info.summary)), capabilities(info.capabilities) {
+  const char* const* given[2] = {info.pseudocode_2d, info.pseudocode_3d};
+  const std::int32_t counts[2] = {info.pseudocode_2d_lines, info.pseudocode_3d_lines};
+  for (int d = 0; d < 2; ++d) {
+    for (std::int32_t k = 0; k < counts[d]; ++k) lines[d].push_back(cut_plugin_text(given[d][k]));
+    for (const std::string& line : lines[d]) line_texts[d].push_back(line.c_str());  // after the last push: no move
+  }
+}
+
+DetectorInfo plugin_detector_info(const PluginSymbols& symbols, std::shared_ptr<const PluginDescription> description) {
   DetectorInfo entry;
-  entry.name = info.name;
-  entry.summary = info.summary != nullptr ? info.summary : "";
+  entry.name = description->name;
+  entry.summary = description->summary;
   entry.summary += (entry.summary.empty() ? "" : " ") + std::string("(plugin ") + symbols.library + ")";
-  entry.dim2 = (info.capabilities & NBSCOPE_CAP_2D) != 0;
-  entry.dim3 = (info.capabilities & NBSCOPE_CAP_3D) != 0;
-  entry.traces = (info.capabilities & NBSCOPE_CAP_TRACES) != 0;
-  entry.has_lists = (info.capabilities & NBSCOPE_CAP_LISTS) != 0;
+  entry.dim2 = (description->capabilities & NBSCOPE_CAP_2D) != 0;
+  entry.dim3 = (description->capabilities & NBSCOPE_CAP_3D) != 0;
+  entry.traces = (description->capabilities & NBSCOPE_CAP_TRACES) != 0;
+  entry.has_lists = (description->capabilities & NBSCOPE_CAP_LISTS) != 0;
   entry.library = symbols.library;
-  const nbscope_detector_info* described = &info;  // lives as long as the library: never unloaded
-  entry.make = [symbols, described]() -> std::unique_ptr<Detector> {
-    return std::make_unique<PluginDetector>(symbols, *described);
+  entry.make = [symbols, description]() -> std::unique_ptr<Detector> {
+    return std::make_unique<PluginDetector>(symbols, description);
   };
   return entry;
 }
 
-PluginDetector::PluginDetector(PluginSymbols symbols, const nbscope_detector_info& info)
-    : symbols_(std::move(symbols)), name_(info.name), capabilities_(info.capabilities) {
-  pseudocode_[0].assign(info.pseudocode_2d, info.pseudocode_2d + info.pseudocode_2d_lines);
-  pseudocode_[1].assign(info.pseudocode_3d, info.pseudocode_3d + info.pseudocode_3d_lines);
+DetectorInfo plugin_detector_info(const PluginSymbols& symbols, const nbscope_detector_info& info) {
+  return plugin_detector_info(symbols, std::make_shared<const PluginDescription>(info));
 }
 
+PluginDetector::PluginDetector(PluginSymbols symbols, const nbscope_detector_info& info)
+    : PluginDetector(std::move(symbols), std::make_shared<const PluginDescription>(info)) {}
+
+PluginDetector::PluginDetector(PluginSymbols symbols, std::shared_ptr<const PluginDescription> description)
+    : symbols_(std::move(symbols)),
+      description_(std::move(description)),
+      name_(description_->name),
+      capabilities_(description_->capabilities) {}
+
 PluginDetector::~PluginDetector() {
-  if (symbols_.release != nullptr && state_ != nullptr) symbols_.release(state_);
+  if (symbols_.release == nullptr || state_ == nullptr) return;
+  const PluginCallScope guarded(symbols_.guard.get(), PluginCallKind::release);
+  symbols_.release(state_);
 }
 
 bool PluginDetector::supports_dim(int dim) const {
@@ -154,12 +193,20 @@ void PluginDetector::detect_traced(const Elements& elements, const DetectOptions
 }
 
 std::size_t PluginDetector::own_bytes() const {
-  return symbols_.own_bytes != nullptr ? symbols_.own_bytes(state_) : 0;
+  if (symbols_.own_bytes == nullptr) return 0;
+  if (!own_bytes_known_) {
+    const PluginCallScope guarded(symbols_.guard.get(), PluginCallKind::own_bytes);
+    own_bytes_ = symbols_.own_bytes(state_);
+    own_bytes_known_ = true;
+  }
+  return own_bytes_;
 }
 
 const std::vector<CellIndex>* PluginDetector::own_cells() const { return has_cells_ ? &cells_ : nullptr; }
 
-const std::vector<const char*>& PluginDetector::pseudocode(int dim) const { return pseudocode_[dim == 3 ? 1 : 0]; }
+const std::vector<const char*>& PluginDetector::pseudocode(int dim) const {
+  return description_->line_texts[dim == 3 ? 1 : 0];
+}
 
 void PluginDetector::run(const Elements& elements, const DetectOptions& options, PairList& out_pairs, TraceLog* trace) {
   if (!supports_dim(elements.dim))
@@ -215,9 +262,12 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
     call.walks.own_cells = cells_wanted ? raw_cells_.data() : nullptr;
   }
 
-  if (symbols_.guard) symbols_.guard->enter(options.frame);
-  const int status = symbols_.detect(&state_, &frame, &output, trace != nullptr || walk ? &table : nullptr);
-  if (symbols_.guard) symbols_.guard->leave();
+  int status = 0;
+  own_bytes_known_ = false;  // the call may change the state
+  {
+    const PluginCallScope guarded(symbols_.guard.get(), PluginCallKind::detect, options.frame);
+    status = symbols_.detect(&state_, &frame, &output, trace != nullptr || walk ? &table : nullptr);
+  }
   out_pairs.resize(call.given());
 
   if (call.exception) std::rethrow_exception(call.exception);

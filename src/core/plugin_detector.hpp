@@ -1,7 +1,8 @@
 // nbscope core: a detector plugin's C tables (include/nbscope/detector.h) as a Detector. No dlopen
 // here (core opens no files): io/plugin_library.hpp finds the symbols and hands them over.
 //
-// Index: PluginError | PluginCallGuard | PluginSymbols | check_plugin_info | PluginDetector.
+// Index: PluginError | cut_plugin_text | PluginCallGuard, PluginCallScope | PluginSymbols |
+// check_plugin_info | PluginDescription | PluginDetector.
 //
 // Everything the plugin says is checked (docs/limits.md "Detector plugins"): pairs in range, never
 // i == j, never twice; trace calls that name declared arrays, entries inside their shapes, lines of
@@ -16,6 +17,7 @@
 #pragma once
 #include <nbscope/detector.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -33,15 +35,48 @@ class PluginError : public Error {
   using Error::Error;
 };
 
-// Brackets every call into a plugin's nbscope_detect (io installs crash handlers and a watchdog
-// there: io/plugin_library.hpp); core itself needs none.
+// Most bytes of a plugin's own text that nbscope keeps (fail() messages, array names, trace labels,
+// its summary and pseudocode lines): a 1 MB message is not a 1 MB error line (docs/plugins.md).
+inline constexpr std::size_t kMaxPluginTextBytes = 300;
+
+// `text` (may be null: "") as nbscope keeps it: whole when it has at most kMaxPluginTextBytes bytes,
+// else its first bytes up to that (cut at a UTF-8 character) and "... (1,048,276 more bytes)".
+std::string cut_plugin_text(const char* text);
+
+// The calls into a plugin library, each bracketed by a PluginCallGuard.
+enum class PluginCallKind {
+  load,       // dlopen, which runs the library's constructors
+  describe,   // nbscope_detector_describe, and reading what it returned
+  detect,     // nbscope_detect
+  release,    // nbscope_release
+  own_bytes,  // nbscope_own_bytes
+};
+
+// Brackets every call into a plugin (io installs crash handlers and a watchdog there:
+// io/plugin_library.hpp); core itself needs none.
 class PluginCallGuard {
  public:
   virtual ~PluginCallGuard() = default;
-  // Called just before nbscope_detect runs on frame `frame`.
-  virtual void enter(std::int64_t frame) = 0;
+  // Called just before the call `kind` runs (on frame `frame` for detect).
+  virtual void enter(PluginCallKind kind, std::int64_t frame) = 0;
   // Called as soon as it returns.
   virtual void leave() = 0;
+};
+
+// Enters `guard` (when not null) for its lifetime: leave() comes however the scope ends.
+class PluginCallScope {
+ public:
+  PluginCallScope(PluginCallGuard* guard, PluginCallKind kind, std::int64_t frame = 0) : guard_(guard) {
+    if (guard_ != nullptr) guard_->enter(kind, frame);
+  }
+  ~PluginCallScope() {
+    if (guard_ != nullptr) guard_->leave();
+  }
+  PluginCallScope(const PluginCallScope&) = delete;
+  PluginCallScope& operator=(const PluginCallScope&) = delete;
+
+ private:
+  PluginCallGuard* guard_;
 };
 
 // The symbols of one plugin library and where it came from.
@@ -51,7 +86,7 @@ struct PluginSymbols {
   nbscope_detect_fn detect = nullptr;        // required
   nbscope_release_fn release = nullptr;      // optional
   nbscope_own_bytes_fn own_bytes = nullptr;  // optional
-  std::shared_ptr<PluginCallGuard> guard;    // optional: brackets each detect call
+  std::shared_ptr<PluginCallGuard> guard;    // optional: brackets each call (detect, release, own_bytes)
 };
 
 // Most pseudocode lines a plugin may declare per dimension (TraceEvent::line is 8 bits).
@@ -62,15 +97,34 @@ inline constexpr std::int32_t kMaxPluginPseudocodeLines = 256;
 // pseudocode counts out of [0, kMaxPluginPseudocodeLines] or with a null line.
 void check_plugin_info(const nbscope_detector_info* info);
 
-// The registry entry of a plugin whose info check_plugin_info() accepted: capabilities as
-// DetectorInfo's, `make` building a PluginDetector over `symbols`.
+// What a plugin described, copied once (under the describe guard) into nbscope's own memory, each
+// text cut (cut_plugin_text): nothing of the plugin's is read again after the load.
+struct PluginDescription {
+  // `info` must have passed check_plugin_info().
+  explicit PluginDescription(const nbscope_detector_info& info);
+  PluginDescription(const PluginDescription&) = delete;
+  PluginDescription& operator=(const PluginDescription&) = delete;
+
+  std::string name;
+  std::string summary;
+  std::uint32_t capabilities = 0;
+  std::vector<std::string> lines[2];        // pseudocode, 2D and 3D
+  std::vector<const char*> line_texts[2];   // c_str() of each of lines[]
+};
+
+// The registry entry of a described plugin: capabilities as DetectorInfo's, `make` building a
+// PluginDetector over `symbols`.
+DetectorInfo plugin_detector_info(const PluginSymbols& symbols, std::shared_ptr<const PluginDescription> description);
+// The same for an info that check_plugin_info() accepted (copied here: PluginDescription).
 DetectorInfo plugin_detector_info(const PluginSymbols& symbols, const nbscope_detector_info& info);
 
 // One instance of a plugin: its state pointer lives as long as the instance (nbscope_release frees it).
 class PluginDetector final : public Detector {
  public:
-  // `info` must have passed check_plugin_info(); its strings live as long as the library.
+  // `info` must have passed check_plugin_info(); it is copied (PluginDescription).
   PluginDetector(PluginSymbols symbols, const nbscope_detector_info& info);
+  // One more instance of a plugin described before.
+  PluginDetector(PluginSymbols symbols, std::shared_ptr<const PluginDescription> description);
   ~PluginDetector() override;
   PluginDetector(const PluginDetector&) = delete;
   PluginDetector& operator=(const PluginDetector&) = delete;
@@ -84,7 +138,8 @@ class PluginDetector final : public Detector {
   // Calls nbscope_detect with the trace table, every call mapped into `out_trace`.
   void detect_traced(const Elements& elements, const DetectOptions& options, PairList& out_pairs,
                      TraceLog& out_trace) override;
-  // nbscope_own_bytes(state) when the plugin exports it, else 0.
+  // nbscope_own_bytes(state) when the plugin exports it, else 0: asked (guarded) once per detection, as
+  // only nbscope_detect changes the state (the window shows it every frame).
   [[nodiscard]] std::size_t own_bytes() const override;
   // The grid the plugin was given (make_grid, as every built-in fits it).
   [[nodiscard]] const Grid* last_grid() const override { return &grid_; }
@@ -109,10 +164,12 @@ class PluginDetector final : public Detector {
   [[nodiscard]] bool wants_walk_check(const Elements& elements, const DetectOptions& options, bool traced) const;
 
   PluginSymbols symbols_;
+  std::shared_ptr<const PluginDescription> description_;
   std::string name_;
   std::uint32_t capabilities_ = 0;
-  std::vector<const char*> pseudocode_[2];  // 2D, 3D
   void* state_ = nullptr;
+  mutable std::size_t own_bytes_ = 0;     // nbscope_own_bytes' answer for the state as it is
+  mutable bool own_bytes_known_ = false;  // false until asked after the last detection
   Grid grid_;
   std::vector<std::int32_t> raw_cells_;  // what the plugin wrote: n * dim, prefilled -1
   std::vector<CellIndex> cells_;

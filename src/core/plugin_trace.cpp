@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "core/plugin_call.hpp"
+#include "core/plugin_detector.hpp"
 
 namespace nbscope {
 
@@ -79,8 +80,13 @@ const char* intern_plugin_label(const char* text) {
   if (text == nullptr) return "";
   static std::mutex mutex;
   static std::set<std::string, std::less<>> labels;  // nodes never move: c_str() stays valid
+  std::string cut;
+  std::string_view view(text);
+  if (view.size() > kMaxPluginTextBytes) {  // a bounded label, however long the plugin's
+    cut = cut_plugin_text(text);
+    view = cut;
+  }
   const std::lock_guard<std::mutex> lock(mutex);
-  const std::string_view view(text);
   auto found = labels.find(view);
   if (found == labels.end()) found = labels.emplace(view).first;
   return found->c_str();
@@ -91,6 +97,11 @@ static int nbscope_plugin_declare_array(void* ctx, const char* name, std::int32_
                                         const std::int32_t* data) {
   PluginCall& call = call_of(ctx);
   if (call.stopped()) return -1;
+  if (name == nullptr || *name == '\0') {  // the Arrays panel and dump name arrays by it
+    call.breach_with(std::string("trace declare_array: array ") + number(static_cast<std::int64_t>(call.arrays.size())) +
+                     "'s name is " + (name == nullptr ? "NULL" : "empty") + " (name it as the book does: heads, next, ...)");
+    return -1;
+  }
   if (rank < 1 || rank > 3 || shape == nullptr) {
     call.breach_with("trace declare_array: rank " + number(rank) + (shape == nullptr ? " with no shape" : "") +
                      " (from 1 to 3, with a shape)");
@@ -114,7 +125,7 @@ static int nbscope_plugin_declare_array(void* ctx, const char* name, std::int32_
     PluginCall::Array array{data, size, {}};
     if (call.log != nullptr) {
       const std::span<const std::int32_t> contents(data, static_cast<std::size_t>(size));
-      const int logged = call.log->declare_array(name != nullptr ? name : "", std::vector<std::int64_t>(shape, shape + rank), contents);
+      const int logged = call.log->declare_array(cut_plugin_text(name), std::vector<std::int64_t>(shape, shape + rank), contents);
       assert(logged == id && "a plugin's arrays and the trace's are declared in step");
       (void)logged;
       array.shadow.assign(contents.begin(), contents.end());

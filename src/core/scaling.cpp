@@ -8,6 +8,7 @@
 
 #include "core/detector.hpp"
 #include "core/error.hpp"
+#include "core/plugin_detector.hpp"
 
 namespace nbscope {
 
@@ -205,6 +206,8 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
             const auto t0 = std::chrono::steady_clock::now();
             make_detector(name)->detect(pilot, options, pairs);
             last[a] = {kPilotN, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
+          } catch (const PluginError&) {
+            throw;  // a plugin that breaks the API ends the run, as in every command (docs/plugins.md)
           } catch (const Error&) {
             // the point itself reports what is wrong
           }
@@ -228,6 +231,8 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
             result.cancelled = true;
             return result;
           }
+        } catch (const PluginError&) {
+          throw;  // not a point to skip: the plugin broke the API
         } catch (const Error& e) {  // e.g. screen's array past its memory limit on a sparse world
           report(point, nullptr, std::string("skipped: ") + e.what());
           continue;

@@ -87,7 +87,8 @@ void check_scaling_plan(const ScalingPlan& plan);
 // (ascending) in the order they first appear, their smallest and largest N, their sizes per decade (rounded).
 ScalingPlan plan_covering(const std::vector<ScalingRow>& rows);
 // Runs `plan` (check_scaling_plan first). `progress` (may be empty) is called after every point;
-// `cancel` (may be null) is read between runs of detect() and stops the run when set.
+// `cancel` (may be null) is read between runs of detect() and stops the run when set. A point a
+// detector cannot run is skipped with a note; a plugin's PluginError ends the run (it is thrown).
 ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(const ScalingProgress&)>& progress,
                           const std::atomic<bool>* cancel);
 

@@ -84,18 +84,31 @@ class Watchdog {
 // Scaling panel detects on a thread of its own), and the crash report and watchdog serve one call.
 std::mutex g_plugin_call;
 
-// Brackets a plugin's nbscope_detect: the crash report and the watchdog, their lines prepared here.
+// The words after "crashed with SIGSEGV" or "did not return within S s" that name the call.
+std::string call_text(PluginCallKind kind, std::int64_t frame) {
+  switch (kind) {
+    case PluginCallKind::load: return " while loading (dlopen, in its constructors)";
+    case PluginCallKind::describe: return " in nbscope_detector_describe()";
+    case PluginCallKind::detect: return " in nbscope_detect() on frame " + std::to_string(frame);
+    case PluginCallKind::release: return " in nbscope_release()";
+    case PluginCallKind::own_bytes: return " in nbscope_own_bytes()";
+  }
+  return "";
+}
+
+// Brackets every call into one library (load, describe, detect, release, own_bytes): the crash
+// report and the watchdog, their lines prepared here, before the call.
 class PluginGuard final : public PluginCallGuard {
  public:
-  PluginGuard(const std::string& library, const std::string& name, double timeout)
-      : who_("nbscope: error: " + printable_line(library) + " (" + name + "): "),
-        crash_head_(who_ + "crashed with "),
-        timeout_(timeout) {}
-  void enter(std::int64_t frame) override {
+  // `who`: "PATH (NAME)", or "PATH" before the name is known.
+  PluginGuard(const std::string& who, double timeout)
+      : who_("nbscope: error: " + who + ": "), crash_head_(who_ + "crashed with "), timeout_(timeout) {}
+  void enter(PluginCallKind kind, std::int64_t frame) override {
     g_plugin_call.lock();  // unlocked by leave(), on this thread
-    if (frame != frame_ || crash_tail_.empty()) {  // the lines change with the frame only
+    if (kind != kind_ || frame != frame_ || crash_tail_.empty()) {  // the lines change with the call only
+      kind_ = kind;
       frame_ = frame;
-      crash_tail_ = " in frame " + std::to_string(frame) + "\n";
+      crash_tail_ = call_text(kind, frame) + "\n";
       char seconds[32];
       std::snprintf(seconds, sizeof seconds, "%g", timeout_);
       hang_line_ = who_ + "did not return within " + seconds + " s" + crash_tail_;
@@ -111,6 +124,7 @@ class PluginGuard final : public PluginCallGuard {
 
  private:
   std::string who_, crash_head_, crash_tail_, hang_line_;
+  PluginCallKind kind_ = PluginCallKind::detect;
   std::int64_t frame_ = 0;
   double timeout_;
 };
@@ -133,10 +147,14 @@ std::map<void*, std::string>& loaded_handles() {
   return handles;
 }
 
-void* open_library(const std::string& path) {
+void* open_library(const std::string& path, PluginGuard& guard) {
   // A name without a slash is a file here, not a search of the system's library paths.
   const std::string opened = path.find('/') == std::string::npos ? "./" + path : path;
-  void* handle = ::dlopen(opened.c_str(), RTLD_NOW | RTLD_LOCAL);
+  void* handle = nullptr;
+  {
+    const PluginCallScope guarded(&guard, PluginCallKind::load);  // dlopen runs the library's constructors
+    handle = ::dlopen(opened.c_str(), RTLD_NOW | RTLD_LOCAL);
+  }
   if (handle != nullptr) return handle;
   std::string why = ::dlerror();
   if (why.rfind(opened + ": ", 0) == 0) why = why.substr(opened.size() + 2);  // dlerror names the file too
@@ -164,7 +182,8 @@ void check_name_free(const std::string& path, const std::string& name) {
 void set_detector_timeout(double seconds) { g_timeout_seconds = seconds; }
 
 std::string load_detector_plugin(const std::string& path) {
-  void* handle = open_library(path);  // never closed: pseudocode and names live as long as the process
+  PluginGuard unnamed(printable_line(path), g_timeout_seconds);  // until its describe names it
+  void* handle = open_library(path, unnamed);  // never closed: its code may be running until the process ends
   // The same file again (--detector-lib given twice, or also saved in the window's settings): loaded once.
   if (const auto again = loaded_handles().find(handle); again != loaded_handles().end()) return again->second;
   const auto* version = symbol<const std::uint32_t*>(handle, "nbscope_api_version");
@@ -181,20 +200,23 @@ std::string load_detector_plugin(const std::string& path) {
   for (const auto& [name, found] : {std::pair{"nbscope_detector_describe", symbols.describe != nullptr},
                                     std::pair{"nbscope_detect", symbols.detect != nullptr}})
     if (!found) throw Error(path + ": no symbol " + name + " (plugin API version 1 requires it)");
-  // Its first call: a crash here is named as one in a frame would be.
-  const std::string crash_head = "nbscope: error: " + printable_line(path) + ": crashed with ";
-  arm_crash_report(crash_head.c_str(), " in nbscope_detector_describe()\n");
-  const nbscope_detector_info* info = symbols.describe();
-  disarm_crash_report();
-  try {
-    check_plugin_info(info);
-  } catch (const Error& e) {
-    throw Error(path + ": " + e.what());
+  // Its first call, and every read of what it returns (checked, then copied into nbscope's memory)
+  // under the same guard: a bad pointer in its description is a crash of the plugin's too.
+  std::shared_ptr<const PluginDescription> description;
+  {
+    const PluginCallScope guarded(&unnamed, PluginCallKind::describe);
+    const nbscope_detector_info* info = symbols.describe();
+    try {
+      check_plugin_info(info);
+    } catch (const Error& e) {
+      throw Error(path + ": " + e.what());
+    }
+    description = std::make_shared<const PluginDescription>(*info);
   }
-  const std::string name = info->name;
+  const std::string name = description->name;
   check_name_free(path, name);
-  symbols.guard = std::make_shared<PluginGuard>(path, name, g_timeout_seconds);
-  register_detector(plugin_detector_info(symbols, *info));
+  symbols.guard = std::make_shared<PluginGuard>(printable_line(path) + " (" + name + ")", g_timeout_seconds);
+  register_detector(plugin_detector_info(symbols, description));
   plugin_libraries()[name] = path;
   loaded_handles()[handle] = name;
   std::error_code ec;

@@ -8,9 +8,14 @@
  *   PLUGIN_PAIR_TWICE the pair (0, 1) twice             PLUGIN_UNDECLARED  a trace call on array 7
  *   PLUGIN_INDEX_SHAPE a trace set past its array       PLUGIN_CRASH       writes through NULL on frame 3
  *   PLUGIN_HANG       never returns on frame 2        PLUGIN_DESCRIBE_CRASH  crashes when asked what it is
+ *   PLUGIN_LOAD_CRASH a constructor crashes (dlopen)  PLUGIN_LOAD_HANG   a constructor never returns
+ *   PLUGIN_DESCRIBE_HANG never says what it is        PLUGIN_RELEASE_CRASH / _HANG   in nbscope_release
+ *   PLUGIN_OWN_BYTES_CRASH / _HANG in nbscope_own_bytes  PLUGIN_LONG_FAIL  fails on frame 0 with 1 MB of text
+ *   PLUGIN_NULL_ARRAY_NAME declares an array named NULL
  * PLUGIN_NAME is the detector's registry name. */
 #include <nbscope/detector.h>
 #include <stdlib.h>
+#include <string.h>
 
 #ifndef PLUGIN_NAME
 #define PLUGIN_NAME "test-good"
@@ -20,6 +25,22 @@
 NBSCOPE_EXPORT const uint32_t nbscope_api_version = 2;
 #elif !defined(PLUGIN_NO_VERSION)
 NBSCOPE_DETECTOR_PLUGIN();
+#endif
+
+/* Spins until the watchdog ends the process (unused by most variants). */
+__attribute__((unused)) static void hang(void) {
+  volatile int forever = 1;
+  while (forever) {
+  }
+}
+
+/* Writes through NULL: SIGSEGV. */
+__attribute__((unused)) static void crash(void) { *(volatile int *)NULL = 1; }
+
+#if defined(PLUGIN_LOAD_CRASH)
+__attribute__((constructor)) static void crash_at_load(void) { crash(); }
+#elif defined(PLUGIN_LOAD_HANG)
+__attribute__((constructor)) static void hang_at_load(void) { hang(); }
 #endif
 
 static const char *const pseudocode_lines[] = {
@@ -45,7 +66,9 @@ static const nbscope_detector_info info = {
 
 NBSCOPE_EXPORT const nbscope_detector_info *nbscope_detector_describe(void) {
 #if defined(PLUGIN_DESCRIBE_CRASH)
-  *(volatile int *)NULL = 1;
+  crash();
+#elif defined(PLUGIN_DESCRIBE_HANG)
+  hang();
 #endif
   return &info;
 }
@@ -120,13 +143,21 @@ NBSCOPE_EXPORT int DETECT_SYMBOL(void **state_pointer, const nbscope_frame *f, c
     s->capacity = f->n * f->dim;
   }
 #if defined(PLUGIN_CRASH)
-  if (f->frame == 3) *(volatile int *)NULL = 1;
+  if (f->frame == 3) crash();
 #endif
 #if defined(PLUGIN_HANG)
-  if (f->frame == 2) {
-    volatile int forever = 1;
-    while (forever) {
-    }
+  if (f->frame == 2) hang();
+#endif
+#if defined(PLUGIN_LONG_FAIL)
+  if (f->frame == 0) {
+    const size_t length = (size_t)1 << 20;
+    char *message = (char *)malloc(length + 1);
+    if (message == NULL) return 1;
+    memset(message, 'x', length);
+    message[length] = '\0';
+    out->fail(out->ctx, message); /* copied: freed right after */
+    free(message);
+    return 1;
   }
 #endif
   for (i = 0; i < f->n * f->dim; ++i) s->cell[i] = -1;
@@ -134,7 +165,11 @@ NBSCOPE_EXPORT int DETECT_SYMBOL(void **state_pointer, const nbscope_frame *f, c
     int64_t shape[2];
     shape[0] = f->n;
     shape[1] = f->dim;
+#if defined(PLUGIN_NULL_ARRAY_NAME)
+    id = t->declare_array(t->ctx, NULL, 2, shape, s->cell);
+#else
     id = t->declare_array(t->ctx, "cell", 2, shape, s->cell);
+#endif
     t->phase(t->ctx, 0, "cells", -1);
   }
   integerise_all(s, f, out, t, id);
@@ -168,6 +203,11 @@ NBSCOPE_EXPORT int DETECT_SYMBOL(void **state_pointer, const nbscope_frame *f, c
 
 NBSCOPE_EXPORT void nbscope_release(void *state_pointer) {
   state *s = (state *)state_pointer;
+#if defined(PLUGIN_RELEASE_CRASH)
+  crash();
+#elif defined(PLUGIN_RELEASE_HANG)
+  hang();
+#endif
   if (s == NULL) return;
   free(s->cell);
   free(s);
@@ -175,5 +215,10 @@ NBSCOPE_EXPORT void nbscope_release(void *state_pointer) {
 
 NBSCOPE_EXPORT size_t nbscope_own_bytes(const void *state_pointer) {
   const state *s = (const state *)state_pointer;
+#if defined(PLUGIN_OWN_BYTES_CRASH)
+  crash();
+#elif defined(PLUGIN_OWN_BYTES_HANG)
+  hang();
+#endif
   return s == NULL ? 0 : (size_t)s->capacity * sizeof(int32_t);
 }
