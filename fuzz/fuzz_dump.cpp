@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -55,6 +56,19 @@ void check_frames(const std::vector<nbscope::DumpFrame>& frames) {
   }
 }
 
+// A seek (seek_dump_frame_in) gives what reading every frame gave: each frame by its timestep, and the count.
+void check_seek(const std::string& text, const nbscope::DumpOptions& options, const std::vector<nbscope::DumpFrame>& frames) {
+  if (frames.empty()) return;
+  const nbscope::DumpSeek all = nbscope::seek_dump_frame_in(text, "fuzz.dump", std::nullopt, options);
+  FUZZ_CHECK(all.frames == static_cast<std::int64_t>(frames.size()), "dump seek: another frame count");
+  for (const nbscope::DumpFrame& want : {frames.front(), frames.back()}) {
+    const nbscope::DumpSeek one = nbscope::seek_dump_frame_in(text, "fuzz.dump", want.timestep, options);
+    FUZZ_CHECK(one.frame && one.frame->ids == want.ids && one.frame->where == want.where, "dump seek: another frame");
+    FUZZ_CHECK((one.frame->elements.r == want.elements.r).all() && (one.frame->elements.x == want.elements.x).all(),
+               "dump seek: other elements");
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -72,6 +86,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (nbscope::fuzz::planted_fault() == "bad-row" && !frames.empty() && frames[0].elements.size() > 0)
     frames[0].elements.r[0] = -frames[0].elements.r[0];
   check_frames(frames);
+  check_seek(text, options, frames);
   std::vector<nbscope::DumpContacts> contacts;
   try {
     contacts = nbscope::parse_dump_contacts(text, "fuzz.dump", {});

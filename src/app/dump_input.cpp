@@ -169,19 +169,16 @@ Recording read_dump_recording(const DumpFlags& flags, std::int64_t max_frames) {
 }
 
 DumpFrame read_dump_input(const std::string& path, const DumpFlags& flags) {
-  std::vector<DumpFrame> frames = read_dump_frames({path}, flags.options);
-  if (frames.empty()) throw Error(path + ": no frames");
-  if (flags.timestep) {
-    for (DumpFrame& f : frames)
-      if (f.timestep == *flags.timestep) return std::move(f);
-    throw Error(path + ": no frame of timestep " + std::to_string(*flags.timestep) + " (its timesteps: " +
-                std::to_string(frames.front().timestep) + ".." + std::to_string(frames.back().timestep) + ", " +
-                std::to_string(frames.size()) + " frames)");
-  }
-  if (frames.size() > 1)
-    throw Error(path + ": " + std::to_string(frames.size()) + " frames (timesteps " + std::to_string(frames.front().timestep) + ".." +
-                std::to_string(frames.back().timestep) + "): choose one with --timestep S");
-  return std::move(frames.front());
+  // A seek: only the chosen frame is parsed (a big dump's other frames are counted, not held).
+  DumpSeek seek = seek_dump_frame(path, flags.timestep, flags.options);
+  if (seek.frames == 0) throw Error(path + ": no frames");
+  const std::string range = std::to_string(seek.first_timestep) + ".." + std::to_string(seek.last_timestep);
+  if (flags.timestep && !seek.frame)
+    throw Error(path + ": no frame of timestep " + std::to_string(*flags.timestep) + " (its timesteps: " + range + ", " +
+                std::to_string(seek.frames) + " frames)");
+  if (!flags.timestep && seek.frames > 1)
+    throw Error(path + ": " + std::to_string(seek.frames) + " frames (timesteps " + range + "): choose one with --timestep S");
+  return std::move(*seek.frame);
 }
 
 void apply_periodic_flags(const DumpFlags& flags, Elements& elements) {

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <string_view>
+#include <utility>
 
 #include "core/error.hpp"
 #include "io/dump_text.hpp"
@@ -90,15 +91,58 @@ class CustomReader {
   std::vector<DumpFrame> read(std::int64_t limit) {
     std::vector<DumpFrame> frames;
     Header header;
+    std::string_view names;
+    while (static_cast<std::int64_t>(frames.size()) < limit && next_header(header, names)) {
+      DumpFrame f = begin_frame(header);
+      const Layout lay = layout_of(names, text_.at(), options_);
+      parse_rows(header, lay, f, nullptr);
+      frames.push_back(std::move(f));
+    }
+    return frames;
+  }
+
+  // The frame of `timestep` (none: the first) parsed, every other one's rows counted only; stops
+  // after the frame of `timestep`.
+  DumpSeek seek(std::optional<std::int64_t> timestep) {
+    DumpSeek found;
+    Header header;
+    std::string_view names;
+    std::optional<Error> refused;  // the first frame's bad row, without a timestep
+    while (next_header(header, names)) {
+      DumpFrame f = begin_frame(header);
+      const Layout lay = layout_of(names, text_.at(), options_);  // a bad ATOMS line is refused in any frame
+      if (found.frames++ == 0) found.first_timestep = f.timestep;
+      found.last_timestep = f.timestep;
+      const bool wanted = timestep ? f.timestep == *timestep : found.frames == 1;
+      if (!wanted) {
+        skip_rows(header, f);
+        continue;
+      }
+      if (timestep) {
+        parse_rows(header, lay, f, nullptr);
+        found.frame = std::move(f);
+        break;  // timesteps increase within a file: no other frame can be it
+      }
+      // The first of maybe several: a bad row waits until the file proves to hold this frame alone.
+      if (parse_rows(header, lay, f, &refused)) found.frame = std::move(f);
+    }
+    if (refused && found.frames == 1) throw *refused;
+    return found;
+  }
+
+ private:
+  // The ITEM lines up to the next ITEM: ATOMS into `header` (cleared first), its column names into
+  // `names`; false at the end of the text.
+  bool next_header(Header& header, std::string_view& names) {
+    header = Header{};
     std::string_view line;
-    bool any = false;
-    while (static_cast<std::int64_t>(frames.size()) < limit && text_.next(line)) {
+    while (text_.next(line)) {
       if (line.find_first_not_of(" \t") == std::string_view::npos) continue;
-      any = true;
+      any_ = true;
       const std::string_view item = dump::item_of(line);
       if (item.data() == nullptr)
         throw Error(text_.at() + "'" + excerpt(line) + "' where an ITEM line was expected" +
-                    (header.timestep || frames.empty() ? "" : " (more rows than NUMBER OF ATOMS?)"));
+                    (header.timestep || frames_ == 0 ? "" : " (more rows than NUMBER OF ATOMS?)"));
       if (item == "TIMESTEP") {
         if (header.timestep) throw Error(text_.at() + "a second ITEM: TIMESTEP before ITEM: ATOMS");
         header.timestep_line = text_.line_number();
@@ -114,8 +158,9 @@ class CustomReader {
         dump::read_box(text_, item.substr(10), header.box, header.box_digits);
         header.has_box = true;
       } else if (item.rfind("ATOMS", 0) == 0) {
-        frames.push_back(frame(header, item.substr(5), frames));
-        header = Header{};
+        names = item.substr(5);
+        ++frames_;
+        return true;
       } else if (item == "UNITS" || item == "LABEL") {
         text_.next(line);  // one line of text nbscope does not use
       } else if (item.rfind("NUMBER OF", 0) == 0 || item.rfind("ENTRIES", 0) == 0) {
@@ -124,13 +169,11 @@ class CustomReader {
         throw Error(text_.at() + "unknown item 'ITEM: " + excerpt(item) + "'");
       }
     }
-    if (!any) throw Error(text_.path() + ":1: empty file (expected a LAMMPS `dump custom` file)");
-    if ((header.timestep || header.atoms || header.has_box) && static_cast<std::int64_t>(frames.size()) < limit)
-      throw Error(text_.at() + "the file ends before ITEM: ATOMS (a frame cut short)");
-    return frames;
+    if (!any_) throw Error(text_.path() + ":1: empty file (expected a LAMMPS `dump custom` file)");
+    if (header.timestep || header.atoms || header.has_box) throw Error(text_.at() + "the file ends before ITEM: ATOMS (a frame cut short)");
+    return false;
   }
 
- private:
   double time_line() {
     std::string_view line;
     if (!text_.next(line)) throw Error(text_.at() + "the file ends after ITEM: TIME");
@@ -144,7 +187,9 @@ class CustomReader {
     throw Error(text_.at() + "TIME: '" + excerpt(line) + "' is not a finite number");
   }
 
-  DumpFrame frame(const Header& header, std::string_view names, const std::vector<DumpFrame>& before) {
+  // The frame of a complete header, its rows not read yet; Error for a missing item or a timestep
+  // not after the one before it.
+  DumpFrame begin_frame(const Header& header) {
     const std::string at = text_.at();
     if (!header.timestep) throw Error(at + "ITEM: ATOMS before ITEM: TIMESTEP");
     if (!header.atoms) throw Error(at + "ITEM: ATOMS before ITEM: NUMBER OF ATOMS");
@@ -152,26 +197,59 @@ class CustomReader {
     DumpFrame f;
     f.timestep = *header.timestep;
     f.where = text_.path() + ":" + std::to_string(header.timestep_line);
-    if (!before.empty() && f.timestep <= before.back().timestep)
-      throw Error(f.where + ": timestep " + std::to_string(f.timestep) + " after timestep " + std::to_string(before.back().timestep) +
-                  " (" + before.back().where + "): timesteps must increase within a file");
+    if (last_ && f.timestep <= last_->first)
+      throw Error(f.where + ": timestep " + std::to_string(f.timestep) + " after timestep " + std::to_string(last_->first) + " (" +
+                  last_->second + "): timesteps must increase within a file");
+    last_.emplace(f.timestep, f.where);
     f.time = header.time;
     f.box = header.box;
-    const Layout lay = layout_of(names, at, options_);
+    return f;
+  }
+
+  // "<path>:<line>: timestep 500 has 7 rows, NUMBER OF ATOMS says 9": the text ended or an ITEM
+  // line came after `rows` of them.
+  [[noreturn]] void cut_short(const DumpFrame& f, std::int64_t rows, std::int64_t atoms) {
+    throw Error(text_.at() + "timestep " + std::to_string(f.timestep) + " has " + std::to_string(rows) +
+                " rows, NUMBER OF ATOMS says " + std::to_string(atoms));
+  }
+
+  // Passes over the frame's NUMBER OF ATOMS rows without parsing them (a seek's other frames).
+  void skip_rows(const Header& header, const DumpFrame& f) {
+    std::string_view line;
+    for (std::int64_t k = 0; k < *header.atoms; ++k)
+      if (!text_.next(line) || line.rfind("ITEM:", 0) == 0) cut_short(f, k, *header.atoms);
+  }
+
+  // The frame's rows, parsed into `f`. With `refused`, a bad row or atom is kept there instead of
+  // thrown (false returned), the rest of the rows counted as skip_rows does.
+  bool parse_rows(const Header& header, const Layout& lay, DumpFrame& f, std::optional<Error>* refused) {
     dump::RawAtoms raw(lay.has_z ? 3 : 2, lay.has_type);
     // Slots by id only for as many rows as the text left can hold (a row is 8 bytes or more).
     raw.start(*header.atoms, static_cast<std::uint64_t>(*header.atoms) <= text_.bytes_left() / 8);
     raw.first_line = text_.line_number() + 1;
+    bool bad = false;
     for (std::int64_t k = 0; k < *header.atoms; ++k) {
       std::string_view line;
-      if (!text_.next(line) || dump::item_of(line).data() != nullptr)
-        throw Error(text_.at() + "timestep " + std::to_string(f.timestep) + " has " + std::to_string(k) +
-                    " rows, NUMBER OF ATOMS says " + std::to_string(*header.atoms));
-      row(line, lay, raw);
+      if (!text_.next(line) || dump::item_of(line).data() != nullptr) cut_short(f, k, *header.atoms);
+      if (bad) continue;
+      try {
+        row(line, lay, raw);
+      } catch (const Error& e) {
+        if (refused == nullptr) throw;
+        refused->emplace(e);
+        bad = true;
+      }
     }
+    if (bad) return false;
     const double box_half = header.box_digits.half_unit();
-    dump::finish_frame(raw, f, options_, lay.scaled, box_half, lay.radius == Column::kDiameter);
-    return f;
+    try {
+      dump::finish_frame(raw, f, options_, lay.scaled, box_half, lay.radius == Column::kDiameter);
+    } catch (const Error& e) {
+      if (refused == nullptr) throw;
+      refused->emplace(e);
+      return false;
+    }
+    return true;
   }
 
   [[noreturn]] void bad_number(std::size_t c, std::string_view w, const Layout& lay, const char* what) {
@@ -234,6 +312,9 @@ class CustomReader {
 
   DumpText& text_;
   const DumpOptions& options_;
+  bool any_ = false;        // a line that is not blank was read
+  std::int64_t frames_ = 0;  // ITEM: ATOMS lines read
+  std::optional<std::pair<std::int64_t, std::string>> last_;  // the timestep of the frame before, and its where
 };
 
 std::vector<DumpFrame> merge(std::vector<std::vector<DumpFrame>> per_file, std::int64_t max_frames) {
@@ -263,6 +344,17 @@ std::vector<DumpFrame> parse_dump_frames(const std::string& text, const std::str
   std::vector<std::vector<DumpFrame>> one;
   one.push_back(CustomReader(lines, options).read(options.max_frames));
   return merge(std::move(one), options.max_frames);
+}
+
+DumpSeek seek_dump_frame(const std::string& path, std::optional<std::int64_t> timestep, const DumpOptions& options) {
+  DumpText text(path);
+  return CustomReader(text, options).seek(timestep);
+}
+
+DumpSeek seek_dump_frame_in(const std::string& text, const std::string& where, std::optional<std::int64_t> timestep,
+                            const DumpOptions& options) {
+  DumpText lines(text, where);
+  return CustomReader(lines, options).seek(timestep);
 }
 
 }  // namespace nbscope

@@ -88,6 +88,25 @@ std::vector<DumpFrame> read_dump_frames(const std::vector<std::string>& paths, c
 // The same from memory (text); `where` names it in messages.
 std::vector<DumpFrame> parse_dump_frames(const std::string& text, const std::string& where, const DumpOptions& options);
 
+// What a seek (seek_dump_frame) found in one `dump custom` file.
+struct DumpSeek {
+  std::optional<DumpFrame> frame;      // the frame asked for; none when the file has no frame of that timestep
+  std::int64_t frames = 0;             // frames scanned: every frame of the file unless the seek stopped at its frame
+  std::int64_t first_timestep = 0;     // of the first frame scanned (when frames > 0)
+  std::int64_t last_timestep = 0;      // of the last frame scanned
+};
+
+// One frame of the `dump custom` file `path` (text or gzip): the one of `timestep`, or without one
+// the first, the rest of the file scanned to count its frames. Only that frame's rows are parsed and
+// kept: every other frame's ITEM lines are read as read_dump_frames reads them (the same errors,
+// timesteps increasing included) and its NUMBER OF ATOMS rows are counted, not parsed (a frame with
+// fewer rows is still refused); the read stops after the frame of `timestep`. Without `timestep`, a
+// bad row of the first frame is thrown only when it is the file's one frame (else `frame` is empty).
+DumpSeek seek_dump_frame(const std::string& path, std::optional<std::int64_t> timestep, const DumpOptions& options);
+// The same from memory (text); `where` names it in messages.
+DumpSeek seek_dump_frame_in(const std::string& text, const std::string& where, std::optional<std::int64_t> timestep,
+                            const DumpOptions& options);
+
 // Every `dump local` frame of `paths` (text or gzip), ordered by timestep. Throws Error on a missing
 // ITEM, fewer rows than NUMBER OF ENTRIES, a row with another column count, an id that is not an
 // integer (`2753` and `2753.0` are; `2753.5` is refused), columns that cannot be found.

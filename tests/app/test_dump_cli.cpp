@@ -220,6 +220,37 @@ TEST(DumpCli, PairsOfADumpFrameAreNamedByAtomIds) {
   expect_one_error_line(testcli::run("pairs --input " + files.dump), "choose one with --timestep");
 }
 
+// --timestep seeks (issue 36): only its frame is parsed; the other frames' rows are counted, not read,
+// so rows there that are no atoms do not stop it, and the errors still count every frame.
+TEST(DumpCli, TimestepSeeksItsFrameWithoutParsingTheOthers) {
+  const std::string dir = scratch_dir("dump_cli_seek");
+  const double box = 0.05;
+  const std::vector<Atom> atoms = lattice_atoms(200, 11, true, box);
+  const auto junk = [&](long long timestep, std::size_t rows) {
+    const std::string none = "NUMBER OF ATOMS\n0\n";
+    std::string s = dump_frame(timestep, {}, box, "%.17g");
+    s.replace(s.find(none), none.size(), "NUMBER OF ATOMS\n" + std::to_string(atoms.size()) + "\n");
+    for (std::size_t k = 0; k < rows; ++k) s += "not an atom row\n";
+    return s;
+  };
+  const std::string seek = dir + "/seek.dump";
+  write_text(seek, junk(0, atoms.size()) + dump_frame(1000, atoms, box, "%.17g") + junk(2000, atoms.size()));
+  std::vector<std::array<long long, 2>> want = exact_contacts(as_printed(atoms, "%.17g"), box, false);
+  for (auto& p : want)
+    if (p[0] > p[1]) std::swap(p[0], p[1]);
+  std::sort(want.begin(), want.end());
+  std::string text = "i,j\n";
+  for (const auto& p : want) text += std::to_string(p[0]) + "," + std::to_string(p[1]) + "\n";
+  const Result r = run("pairs --input " + seek + " --timestep 1000 --touching strict");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, text);
+  expect_one_error_line(run("pairs --input " + seek), "3 frames (timesteps 0..2000): choose one with --timestep S");
+  expect_one_error_line(run("dump --input " + seek + " --timestep 1500 --algorithm nbs"), "no frame of timestep 1500 (its timesteps: 0..2000, 3 frames)");
+  // A skipped frame cut short is still refused as one.
+  write_text(seek, junk(0, atoms.size() - 1) + dump_frame(1000, atoms, box, "%.17g"));
+  expect_one_error_line(run("pairs --input " + seek + " --timestep 1000"), "timestep 0 has 199 rows, NUMBER OF ATOMS says 200");
+}
+
 TEST(DumpCli, VerifyTakesADumpAndItsDumpLocalContacts) {
   const DumpRun files = write_run("dump_cli_verify", "%.17g");
   const Result r = testcli::run("verify --input " + files.dump + " --timestep 0 --pairs " + files.contacts + " --touching strict");

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include "core/error.hpp"
@@ -221,6 +222,71 @@ TEST(LammpsDump, GzipFilesAndGlobsOrderedByTimestepNotName) {
   EXPECT_EQ(error_of([&] { expand_dump_spec("--dump", dir + "/none.*"); }), "--dump: '" + dir + "/none.*': no file matches");
   EXPECT_EQ(error_of([&] { expand_dump_spec("--dump", dir + "/none"); }), "--dump: '" + dir + "/none': no file matches");
   fs::remove_all(dir);
+}
+
+// A seek (issue 36: one frame of a big dump cost the whole file): the frame asked for is parsed, the
+// others' rows only counted, so rows that are no atoms there do not stop it.
+TEST(LammpsDump, SeekParsesOnlyTheFrameOfItsTimestep) {
+  const std::string good = "2 1 0.2 0.2 0.2 0.01\n1 2 0.1 0.1 0.1 0.01\n";
+  const std::string junk = "not an atom\n1 1 0.1 abc\n";
+  const std::string text = frame(0, 2, kColumns, junk) + frame(1000, 2, kColumns, good) + frame(2000, 2, kColumns, junk);
+  EXPECT_NE(custom_error(text), "");  // reading every frame parses the junk
+  const DumpSeek middle = seek_dump_frame_in(text, "d.dump", 1000, {});
+  ASSERT_TRUE(middle.frame.has_value());
+  EXPECT_EQ(middle.frame->timestep, 1000);
+  EXPECT_EQ(middle.frame->where, "d.dump:12");
+  EXPECT_EQ(middle.frame->ids, (std::vector<std::int64_t>{1, 2}));
+  EXPECT_EQ(middle.frame->types, (std::vector<std::int32_t>{2, 1}));
+  EXPECT_EQ(middle.frames, 2);  // stopped after its frame
+  // No such timestep: every frame counted, none parsed.
+  const DumpSeek absent = seek_dump_frame_in(text, "d.dump", 1500, {});
+  EXPECT_FALSE(absent.frame.has_value());
+  EXPECT_EQ(absent.frames, 3);
+  EXPECT_EQ(absent.first_timestep, 0);
+  EXPECT_EQ(absent.last_timestep, 2000);
+  // No timestep: the first frame, the others counted.
+  const DumpSeek first = seek_dump_frame_in(frame(0, 2, kColumns, good) + frame(1000, 2, kColumns, junk), "d.dump", std::nullopt, {});
+  ASSERT_TRUE(first.frame.has_value());
+  EXPECT_EQ(first.frame->timestep, 0);
+  EXPECT_EQ(first.frames, 2);
+  // A bad first frame is refused only when it is the only one; else the count says choose one.
+  const DumpSeek bad_first = seek_dump_frame_in(frame(0, 2, kColumns, junk) + frame(1000, 2, kColumns, good), "d.dump", std::nullopt, {});
+  EXPECT_FALSE(bad_first.frame.has_value());
+  EXPECT_EQ(bad_first.frames, 2);
+  EXPECT_EQ(error_of([&] { seek_dump_frame_in(frame(0, 2, kColumns, junk), "d.dump", std::nullopt, {}); }),
+            "d.dump:10: id: 'not' is not an integer");
+  EXPECT_EQ(error_of([&] { seek_dump_frame_in(frame(0, 2, kColumns, "1 1 0.1 0.1 0.1 0.01\n1 1 0.1 0.1 0.1 0.01\n"), "d.dump", std::nullopt, {}); }),
+            "d.dump:11: atom id 1 appears twice in the frame of timestep 0 (lines 10 and 11)");
+  // The same through a gzip file.
+  const std::string dir = temp_dir("seek");
+  gzFile gz = gzopen((dir + "/atoms.dump.gz").c_str(), "wb");
+  gzwrite(gz, text.data(), static_cast<unsigned>(text.size()));
+  gzclose(gz);
+  const DumpSeek zipped = seek_dump_frame(dir + "/atoms.dump.gz", 1000, {});
+  ASSERT_TRUE(zipped.frame.has_value());
+  EXPECT_EQ(zipped.frame->ids, (std::vector<std::int64_t>{1, 2}));
+  fs::remove_all(dir);
+}
+
+// What a seek passes over is still a dump: a frame cut short, extra rows, timesteps out of order and
+// a bad ITEM: ATOMS line are refused in a frame it skips as in one it reads.
+TEST(LammpsDump, SeekRefusesWhatItSkipsWhenTheItemLinesAreWrong) {
+  const std::string good = "1 1 0.1 0.1 0.1 0.01\n";
+  const auto seek_error = [](const std::string& text, std::optional<std::int64_t> timestep) {
+    return error_of([&] { seek_dump_frame_in(text, "d.dump", timestep, {}); });
+  };
+  EXPECT_EQ(seek_error(frame(0, 3, kColumns, "x\ny\n") + frame(1000, 1, kColumns, good), 1000),
+            "d.dump:12: timestep 0 has 2 rows, NUMBER OF ATOMS says 3");
+  EXPECT_EQ(seek_error(frame(0, 1, kColumns, good) + frame(1000, 3, kColumns, "x\n"), 2000),
+            "d.dump:20: timestep 1000 has 1 rows, NUMBER OF ATOMS says 3");
+  EXPECT_EQ(seek_error(frame(0, 1, kColumns, "x\ny\n") + frame(1000, 1, kColumns, good), 1000),
+            "d.dump:11: 'y' where an ITEM line was expected (more rows than NUMBER OF ATOMS?)");
+  EXPECT_EQ(seek_error(frame(5, 1, kColumns, good) + frame(3, 1, kColumns, good), 3),
+            "d.dump:11: timestep 3 after timestep 5 (d.dump:1): timesteps must increase within a file");
+  EXPECT_EQ(seek_error(frame(0, 1, "type x y z radius", "x\n") + frame(1000, 1, kColumns, good), 1000),
+            "d.dump:9: ITEM: ATOMS has no `id` column (nbscope names elements by their atom ids)");
+  EXPECT_EQ(seek_error(frame(0, 1, kColumns, good) + "ITEM: TIMESTEP\n1000\n", std::nullopt),
+            "d.dump:12: the file ends before ITEM: ATOMS (a frame cut short)");
 }
 
 TEST(LammpsDump, PrecisionFollowsThePrintedDigits) {
