@@ -276,14 +276,18 @@ int expected_exit(const Command& c) {
   return 0;
 }
 
-// A line with its timings masked: a number before ` ms` or ` s`; the ns/element and repeats of a `scaling` row.
+// A line with its timings masked: a number before ` ms` or ` s`; the ns/element and repeats of a `scaling` row
+// (and runs of spaces as one).
 std::string mask_timings(const std::string& line) {
   static const std::regex timing(R"(\d[\d.,]*( m?s\b))");
   std::string s = std::regex_replace(line, timing, "#$1");
   static const std::regex table(R"(^(\S+\s+\S+\s+\d+\s+)[\d.]+(\s+[\d.]+\s+\d+\s+)\d+(\s+\d+)$)");
   static const std::regex csv(R"(^([a-z0-9_ ]+,[a-z_]+,\d+,)[\d.]+(,[\d.]+,\d+,)\d+(,\d+)$)");
   s = std::regex_replace(s, table, "$1#$2#$3");
-  return std::regex_replace(s, csv, "$1#$2#$3");
+  s = std::regex_replace(s, csv, "$1#$2#$3");
+  // A table's columns are padded to its numbers' widths, which change with the timings ("9.52", "10.24").
+  static const std::regex padding(R"(  +)");
+  return std::regex_replace(s, padding, " ");
 }
 
 std::vector<std::string> split_lines(const std::string& text) {
@@ -446,8 +450,6 @@ TEST_P(PageCommands, RunAsWritten) {
   int blocks = 0, loose = 0;
   std::vector<Command> commands = commands_of(kSource / page, page, problems, blocks, loose);
   for (Command& c : commands) classify(c);
-  if (std::none_of(commands.begin(), commands.end(), [](const Command& c) { return c.kind == Kind::run || c.kind == Kind::window; }))
-    GTEST_SKIP() << page << ": no command to run";
   std::string name = page;
   std::replace(name.begin(), name.end(), '/', '_');
   const fs::path dir = fs::absolute(testcli::scratch_dir("docs_commands/" + name));
@@ -494,7 +496,21 @@ TEST_P(PageCommands, RunAsWritten) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Pages, PageCommands, testing::ValuesIn(pages()), [](const testing::TestParamInfo<std::string>& info) {
+// The pages with a command to run (architecture.md, say, has none: its blocks are diagrams and code).
+std::vector<std::string> pages_with_commands() {
+  std::vector<std::string> out;
+  for (const std::string& page : pages()) {
+    std::vector<std::string> problems;
+    int blocks = 0, loose = 0;
+    std::vector<Command> commands = commands_of(kSource / page, page, problems, blocks, loose);
+    for (Command& c : commands) classify(c);
+    if (std::any_of(commands.begin(), commands.end(), [](const Command& c) { return c.kind == Kind::run || c.kind == Kind::window; }))
+      out.push_back(page);
+  }
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Pages, PageCommands, testing::ValuesIn(pages_with_commands()), [](const testing::TestParamInfo<std::string>& info) {
   std::string name = info.param;
   for (char& ch : name)
     if (std::isalnum(static_cast<unsigned char>(ch)) == 0) ch = '_';
