@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "core/error.hpp"
@@ -178,6 +179,38 @@ TEST(LammpsDump, EveryRefusalNamesFileAndLine) {
             "d.dump:4: NUMBER OF ATOMS 200000000 is outside 0 to 100000000, the most elements nbscope reads");
   EXPECT_EQ(custom_error("  \n"), "d.dump:1: empty file (expected a LAMMPS `dump custom` file)");
   EXPECT_EQ(custom_error(std::string(70000, 'x')).substr(0, 35), "d.dump:1: a line longer than 64 KB,");
+}
+
+// A pipe gives a dump in pieces, a file in 4 MB chunks: a fault further on (a NUL byte, a corrupt
+// gzip stream) must not be met before the lines ahead of it, or the two would refuse the same bytes
+// with different messages (the pipe fuzz target found the gzip case).
+TEST(LammpsDump, AFaultFurtherOnComesAfterTheErrorsOfTheLinesBeforeIt) {
+  const std::string bad_row = frame(0, 1, kColumns, "1 1 0.1 0.1 0.01\n");  // line 10: 5 columns
+  const std::string with_nul = bad_row + std::string("ITEM: TIMESTEP\n\0\n", 17);
+  EXPECT_EQ(custom_error(with_nul), "d.dump:10: 5 columns; ITEM: ATOMS names 6");
+  const std::string dir = temp_dir("fault");
+  write_file(dir + "/nul.dump", with_nul);
+  EXPECT_EQ(error_of([&] { read_dump_frames({dir + "/nul.dump"}, {}); }), dir + "/nul.dump:10: 5 columns; ITEM: ATOMS names 6");
+  // The same rows gzipped, the trailer's CRC broken: zlib sees it only after inflating every row.
+  gzFile gz = gzopen((dir + "/crc.dump.gz").c_str(), "wb");
+  gzwrite(gz, bad_row.data(), static_cast<unsigned>(bad_row.size()));
+  gzclose(gz);
+  std::string bytes;
+  {
+    std::ifstream in(dir + "/crc.dump.gz", std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  ASSERT_GT(bytes.size(), 8u);
+  bytes[bytes.size() - 8] = static_cast<char>(bytes[bytes.size() - 8] ^ 0x55);
+  write_file(dir + "/crc.dump.gz", bytes);
+  EXPECT_EQ(error_of([&] { read_dump_frames({dir + "/crc.dump.gz"}, {}); }),
+            dir + "/crc.dump.gz:10: 5 columns; ITEM: ATOMS names 6");
+  // A good frame before the same fault: the fault itself is the message.
+  const std::string good = frame(0, 1, kColumns, "1 1 0.1 0.1 0.1 0.01\n");
+  write_file(dir + "/nul2.dump", good + std::string("ITEM: TIMESTEP\n\0\n", 17));
+  const std::string nul_at = dir + "/nul2.dump:12: a NUL byte (byte 149):";
+  EXPECT_EQ(error_of([&] { read_dump_frames({dir + "/nul2.dump"}, {}); }).substr(0, nul_at.size()), nul_at);
+  fs::remove_all(dir);
 }
 
 TEST(LammpsDump, AtomsLostAndInsertedKeepTheirIdsAcrossFrames) {
