@@ -295,6 +295,19 @@ TEST(LammpsDumpLocal, PairGranLocalPosIdOrderWithFloatIds) {
   EXPECT_NE(local_error(local_frame(500, kPgl, "0 0 0 0 0 0 1.23457e+06 17 0 0\n", 1)).find("written with an exponent"), std::string::npos);
 }
 
+// The ENTRIES names must outlive the text's refills: a file's rows past its first 4 MB chunk (a pipe's
+// past its first read) moved them, and a refused id named a column with other bytes (the pipe fuzz target).
+TEST(LammpsDumpLocal, ARefusalPastTheFirstChunkNamesItsColumn) {
+  const std::string dir = temp_dir("local_chunks");
+  std::string rows;
+  constexpr int kRows = 250'000;  // 20 bytes each: 5 MB, past the 4 MB chunk
+  for (int k = 0; k < kRows; ++k) rows += "0 0 0 0 0 0 1 2 0 0\n";
+  write_file(dir + "/c.dump", local_frame(0, kPgl, rows + "0 0 0 0 0 0 2753.5 17 0 0\n", kRows + 1));
+  const std::string refused = dir + "/c.dump:250010: column 7 (c_pgl[7]): '2753.5' is not an integer; read as";
+  EXPECT_EQ(error_of([&] { read_dump_contacts({dir + "/c.dump"}, {}); }).substr(0, refused.size()), refused);
+  fs::remove_all(dir);
+}
+
 TEST(LammpsDumpLocal, IdColumnsByNameNumberOrGiven) {
   EXPECT_EQ(parse_dump_contacts(local_frame(0, "dist id1 id2", "0.1 3 4\n", 1), "c.dump", {})[0].ids[0], (std::array<std::int64_t, 2>{3, 4}));
   ContactColumns numbers;
