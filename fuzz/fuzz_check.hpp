@@ -13,7 +13,8 @@ namespace nbscope::fuzz {
 // The fault NBSCOPE_FUZZ_FAULT plants ("" for none), so that `scripts/dev fuzz` can show that each
 // target's checks catch it before trusting a quiet run: drop-pair (a detector loses a pair),
 // bad-row (a reader's result breaks its postcondition), foreign-exception (a reader throws
-// something other than nbscope::Error).
+// something other than nbscope::Error), drop-peek (a pipe loses the bytes a sniff peeked, as
+// before io/input_source.hpp).
 inline std::string_view planted_fault() {
   static const std::string fault = [] {
     const char* v = std::getenv("NBSCOPE_FUZZ_FAULT");

@@ -30,6 +30,9 @@ struct DumpText::Gzip {
   std::unique_ptr<char[]> in = std::make_unique_for_overwrite<char[]>(kGzipIn);
   bool input_end = false;   // the source has no more compressed bytes
   bool member_end = false;  // a member ended: another may follow
+  // A corrupt stream's message, once the text inflated before the fault has been given out: the
+  // fault is met where it lies in the text, as a pipe's small reads meet it, not a chunk early.
+  std::string error;
   Gzip() {
     if (inflateInit2(&z, 16 + MAX_WBITS) != Z_OK) throw Error("zlib: cannot start inflating (out of memory)");
   }
@@ -65,17 +68,21 @@ std::size_t DumpText::bytes_left() const {
 
 DumpText::~DumpText() = default;
 
-// A NUL byte in data_[from..] is refused with its line and byte.
+// A NUL byte in data_[from..] ends the text there: the lines before it are given out, and reading
+// past it is refused with its line and byte. Refused at once, a file's NUL would come before the
+// errors of the lines ahead of it in the same 4 MB chunk, which a pipe, read in smaller pieces, gives first.
 void DumpText::check_chunk(std::size_t from) {
   const void* nul = std::memchr(data_.data() + from, 0, data_.size() - from);
   if (nul == nullptr) return;
   const auto at = static_cast<std::size_t>(static_cast<const char*>(nul) - data_.data());
-  std::size_t line = line_no_ + 1;
-  for (std::size_t k = begin_; k < at; ++k) line += data_[k] == '\n' ? 1 : 0;
-  throw nul_byte_in(path_, line, base_ + at + 1, kKind);
+  nul_line_ = line_no_ + 1;
+  for (std::size_t k = begin_; k < at; ++k) nul_line_ += data_[k] == '\n' ? 1 : 0;
+  nul_byte_ = base_ + at + 1;
+  data_ = data_.substr(0, at);
 }
 
 bool DumpText::fill() {
+  if (nul_byte_ != 0) throw nul_byte_in(path_, nul_line_, nul_byte_, kKind);
   if (end_) return false;
   const std::size_t rest = data_.size() - begin_;
   if (rest > 0) std::memmove(buf_.get(), data_.data() + begin_, rest);  // the first fill has no data_ (null) to move
@@ -98,6 +105,7 @@ std::size_t DumpText::inflate_into(char* to, std::size_t room) {
   z.next_out = reinterpret_cast<Bytef*>(to);
   z.avail_out = static_cast<uInt>(std::min<std::size_t>(room, std::numeric_limits<uInt>::max()));
   const uInt want = z.avail_out;
+  if (!gzip_->error.empty()) throw Error(gzip_->error);
   while (z.avail_out == want) {
     if (z.avail_in == 0 && !gzip_->input_end) {
       z.next_in = reinterpret_cast<Bytef*>(gzip_->in.get());
@@ -113,7 +121,12 @@ std::size_t DumpText::inflate_into(char* to, std::size_t room) {
     if (z.avail_in == 0) throw cannot("unexpected end of file (a gzip file cut short)");
     const int rc = inflate(&z, Z_NO_FLUSH);
     if (rc == Z_STREAM_END) gzip_->member_end = true;
-    else if (rc != Z_OK && rc != Z_BUF_ERROR) throw cannot(z.msg != nullptr ? z.msg : zError(rc));
+    else if (rc != Z_OK && rc != Z_BUF_ERROR) {
+      const Error e = cannot(z.msg != nullptr ? z.msg : zError(rc));
+      if (z.avail_out == want) throw e;
+      gzip_->error = e.what();  // the text before the fault first
+      return want - z.avail_out;
+    }
   }
   return want - z.avail_out;
 }
@@ -122,7 +135,7 @@ bool DumpText::next(std::string_view& line) {
   for (;;) {
     // Nothing read yet: data_ is empty and its pointer may be null, which memchr must not be given.
     const void* nl = begin_ < data_.size() ? std::memchr(data_.data() + begin_, '\n', data_.size() - begin_) : nullptr;
-    if (nl != nullptr || end_) {
+    if (nl != nullptr || (end_ && nul_byte_ == 0)) {
       if (nl == nullptr && begin_ == data_.size()) return false;
       const std::size_t stop = nl == nullptr ? data_.size() : static_cast<std::size_t>(static_cast<const char*>(nl) - data_.data());
       line = data_.substr(begin_, stop - begin_);

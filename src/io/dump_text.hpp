@@ -22,7 +22,8 @@ class DumpText {
   DumpText& operator=(const DumpText&) = delete;
 
   // The next line without its "\n" (and "\r"), valid until the next call; false at the end.
-  // Error for a NUL byte, a line longer than kMaxLineBytes, a gzip stream that is corrupt.
+  // Error for a NUL byte, a line longer than kMaxLineBytes, a gzip stream that is corrupt: each
+  // once the lines before it have been given, so a file and a pipe, read in other pieces, fail alike.
   bool next(std::string_view& line);
   // The number of the line next() gave last (1-based).
   [[nodiscard]] std::size_t line_number() const { return line_no_; }
@@ -50,6 +51,8 @@ class DumpText {
   std::size_t begin_ = 0;
   std::size_t base_ = 0;    // offset in the input of data_[0]
   bool end_ = false;
+  std::size_t nul_line_ = 0;  // the first NUL byte's line and byte (1-based; 0: none seen), where data_ ends
+  std::size_t nul_byte_ = 0;
   std::size_t line_no_ = 0;
 };
 

@@ -108,8 +108,10 @@ class LocalReader {
  private:
   void rows(std::string_view names_line, std::int64_t count, DumpContacts& c) {
     const std::string at = text_.at();
-    const std::vector<std::string_view> names = dump::words_of(names_line);
-    std::array<int, 2> col = id_columns(names, columns_, at);
+    const std::vector<std::string_view> words = dump::words_of(names_line);
+    std::array<int, 2> col = id_columns(words, columns_, at);
+    // Copies: the ENTRIES line's bytes move when the rows' reading refills the text.
+    const std::vector<std::string> names(words.begin(), words.end());
     const bool guessed = col[0] < 0;
     if (guessed) col = {6, 7};
     c.ids.reserve(static_cast<std::size_t>(std::min<std::int64_t>(count, 1 << 20)));
@@ -133,7 +135,7 @@ class LocalReader {
     }
   }
 
-  std::int64_t id(std::string_view w, const std::vector<std::string_view>& names, int column, bool guessed) {
+  std::int64_t id(std::string_view w, const std::vector<std::string>& names, int column, bool guessed) {
     const std::string what = "column " + std::to_string(column + 1) + " (" + std::string(names[static_cast<std::size_t>(column)]) + ")";
     try {
       const std::int64_t v = dump::parse_integer(w, text_.at(), what.c_str(), true);

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <string>
 
@@ -181,6 +182,38 @@ TEST(LammpsDump, EveryRefusalNamesFileAndLine) {
   EXPECT_EQ(custom_error(std::string(70000, 'x')).substr(0, 35), "d.dump:1: a line longer than 64 KB,");
 }
 
+// A pipe gives a dump in pieces, a file in 4 MB chunks: a fault further on (a NUL byte, a corrupt
+// gzip stream) must not be met before the lines ahead of it, or the two would refuse the same bytes
+// with different messages (the pipe fuzz target found the gzip case).
+TEST(LammpsDump, AFaultFurtherOnComesAfterTheErrorsOfTheLinesBeforeIt) {
+  const std::string bad_row = frame(0, 1, kColumns, "1 1 0.1 0.1 0.01\n");  // line 10: 5 columns
+  const std::string with_nul = bad_row + std::string("ITEM: TIMESTEP\n\0\n", 17);
+  EXPECT_EQ(custom_error(with_nul), "d.dump:10: 5 columns; ITEM: ATOMS names 6");
+  const std::string dir = temp_dir("fault");
+  write_file(dir + "/nul.dump", with_nul);
+  EXPECT_EQ(error_of([&] { read_dump_frames({dir + "/nul.dump"}, {}); }), dir + "/nul.dump:10: 5 columns; ITEM: ATOMS names 6");
+  // The same rows gzipped, the trailer's CRC broken: zlib sees it only after inflating every row.
+  gzFile gz = gzopen((dir + "/crc.dump.gz").c_str(), "wb");
+  gzwrite(gz, bad_row.data(), static_cast<unsigned>(bad_row.size()));
+  gzclose(gz);
+  std::string bytes;
+  {
+    std::ifstream in(dir + "/crc.dump.gz", std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  ASSERT_GT(bytes.size(), 8u);
+  bytes[bytes.size() - 8] = static_cast<char>(bytes[bytes.size() - 8] ^ 0x55);
+  write_file(dir + "/crc.dump.gz", bytes);
+  EXPECT_EQ(error_of([&] { read_dump_frames({dir + "/crc.dump.gz"}, {}); }),
+            dir + "/crc.dump.gz:10: 5 columns; ITEM: ATOMS names 6");
+  // A good frame before the same fault: the fault itself is the message.
+  const std::string good = frame(0, 1, kColumns, "1 1 0.1 0.1 0.1 0.01\n");
+  write_file(dir + "/nul2.dump", good + std::string("ITEM: TIMESTEP\n\0\n", 17));
+  const std::string nul_at = dir + "/nul2.dump:12: a NUL byte (byte 149):";
+  EXPECT_EQ(error_of([&] { read_dump_frames({dir + "/nul2.dump"}, {}); }).substr(0, nul_at.size()), nul_at);
+  fs::remove_all(dir);
+}
+
 TEST(LammpsDump, AtomsLostAndInsertedKeepTheirIdsAcrossFrames) {
   const std::string text = frame(0, 3, kColumns, "1 1 0.1 0.1 0.1 0.01\n2 1 0.2 0.2 0.2 0.01\n3 1 0.3 0.3 0.3 0.01\n") +
                            frame(10, 3, kColumns, "4 1 0.4 0.4 0.4 0.01\n3 1 0.35 0.3 0.3 0.01\n1 1 0.15 0.1 0.1 0.01\n");
@@ -326,6 +359,19 @@ TEST(LammpsDumpLocal, PairGranLocalPosIdOrderWithFloatIds) {
             "c.dump:10: column 7 (c_pgl[7]): '2753.5' is not an integer; read as LIGGGHTS's compute pair/gran/local `pos id` "
             "order (ids in columns 7 and 8), which these values do not fit: give --contact-ids");
   EXPECT_NE(local_error(local_frame(500, kPgl, "0 0 0 0 0 0 1.23457e+06 17 0 0\n", 1)).find("written with an exponent"), std::string::npos);
+}
+
+// The ENTRIES names must outlive the text's refills: a file's rows past its first 4 MB chunk (a pipe's
+// past its first read) moved them, and a refused id named a column with other bytes (the pipe fuzz target).
+TEST(LammpsDumpLocal, ARefusalPastTheFirstChunkNamesItsColumn) {
+  const std::string dir = temp_dir("local_chunks");
+  std::string rows;
+  constexpr int kRows = 250'000;  // 20 bytes each: 5 MB, past the 4 MB chunk
+  for (int k = 0; k < kRows; ++k) rows += "0 0 0 0 0 0 1 2 0 0\n";
+  write_file(dir + "/c.dump", local_frame(0, kPgl, rows + "0 0 0 0 0 0 2753.5 17 0 0\n", kRows + 1));
+  const std::string refused = dir + "/c.dump:250010: column 7 (c_pgl[7]): '2753.5' is not an integer; read as";
+  EXPECT_EQ(error_of([&] { read_dump_contacts({dir + "/c.dump"}, {}); }).substr(0, refused.size()), refused);
+  fs::remove_all(dir);
 }
 
 TEST(LammpsDumpLocal, IdColumnsByNameNumberOrGiven) {
