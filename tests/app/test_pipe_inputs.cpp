@@ -36,12 +36,8 @@ struct Outcome {
 Outcome run_bash(const std::string& dir, const std::string& script, const std::string& written) {
   write_text(dir + "/run.sh", "cd '" + dir + "'\n" + script + "\n");
   if (!written.empty()) fs::remove(dir + "/" + written);
-  const std::string cmd = "env -u DISPLAY -u WAYLAND_DISPLAY bash '" + dir + "/run.sh' </dev/null >'" + dir + "/out' 2>'" + dir + "/err'";
-  const int status = std::system(cmd.c_str());
-  Outcome o;
-  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  o.out = read_text(dir + "/out");
-  o.err = read_text(dir + "/err");
+  const testcli::Result r = testcli::run_shell("env -u DISPLAY -u WAYLAND_DISPLAY bash '" + dir + "/run.sh'", dir + "/out", dir + "/err");
+  Outcome o{r.exit_code, r.out, r.err, {}};
   if (!written.empty()) o.file = read_text(dir + "/" + written);
   return o;
 }

@@ -394,14 +394,8 @@ class PageCommands : public testing::TestWithParam<std::string> {};
 testcli::Result run_in(const std::string& dir, const std::string& command) {
   const std::string cmd = "cd " + quote(dir) + " && env -u DISPLAY -u WAYLAND_DISPLAY PATH=" + quote(dir + "/bin") +
                           ":\"$PATH\" XDG_CONFIG_HOME=" + quote(dir + "/config") + " XDG_DATA_HOME=" + quote(dir + "/data") +
-                          " bash -c " + quote(std::regex_replace(command, std::regex("'"), "'\\''")) + " </dev/null >" +
-                          quote(dir + "/.out") + " 2>" + quote(dir + "/.err");
-  const int status = std::system(cmd.c_str());
-  testcli::Result r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  r.out = testcli::read_text(dir + "/.out");
-  r.err = testcli::read_text(dir + "/.err");
-  return r;
+                          " bash -c " + quote(std::regex_replace(command, std::regex("'"), "'\\''"));
+  return testcli::run_shell(cmd, dir + "/.out", dir + "/.err");
 }
 
 // Without thousands separators: "1,000" -> "1000".

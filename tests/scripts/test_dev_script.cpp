@@ -37,13 +37,7 @@ testcli::Result dev(const std::string& args, const std::string& prefix = "") {
   static int calls = 0;
   const std::string dir = testcli::scratch_dir("dev_capture_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
                                                "_" + std::to_string(calls++));
-  const std::string cmd = prefix + " " + kDev + " " + args + " </dev/null >'" + dir + "/out' 2>'" + dir + "/err'";
-  const int status = std::system(cmd.c_str());
-  testcli::Result r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  r.out = testcli::read_text(dir + "/out");
-  r.err = testcli::read_text(dir + "/err");
-  return r;
+  return testcli::run_shell(prefix + " " + kDev + " " + args, dir + "/out", dir + "/err");
 }
 
 // The default scene after `frames` frames as `headless --screenshot` draws it (`flags` added): what the

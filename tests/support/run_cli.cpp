@@ -34,16 +34,20 @@ std::string scratch_dir(const std::string& test_name) {
   return dir.string();
 }
 
-Result run(const std::string& args, const std::string& prefix) {
-  static int counter = 0;
-  const std::string base = scratch_dir("cli_capture_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-  const std::string out = base + "/out", err = base + "/err";
-  const std::string cmd = (prefix.empty() ? "" : prefix + " ") + "'" + binary() + "' " + args + " </dev/null >'" + out + "' 2>'" + err + "'";
+Result run_shell(const std::string& command, const std::string& out, const std::string& err) {
+  const std::string cmd = command + " </dev/null >'" + out + "' 2>'" + err + "'";
   const int status = std::system(cmd.c_str());
   Result r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   r.out = read_text(out);
   r.err = read_text(err);
+  return r;
+}
+
+Result run(const std::string& args, const std::string& prefix) {
+  static int counter = 0;
+  const std::string base = scratch_dir("cli_capture_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+  Result r = run_shell((prefix.empty() ? "" : prefix + " ") + "'" + binary() + "' " + args, base + "/out", base + "/err");
   std::filesystem::remove_all(base);
   return r;
 }

@@ -15,6 +15,9 @@ const std::string& binary();
 // Runs `nbscope <args>` through the shell (args are shell words) with stdin from /dev/null, after
 // `prefix` when given (an environment assignment such as x_display.hpp's on_display(), or a wrapper).
 Result run(const std::string& args, const std::string& prefix = "");
+// Runs the shell line `command` (stdin from /dev/null; it must not redirect stdout or stderr itself),
+// its stdout and stderr captured through the files `out` and `err`, which are left in place.
+Result run_shell(const std::string& command, const std::string& out, const std::string& err);
 // A fresh empty directory for one test's files.
 std::string scratch_dir(const std::string& test_name);
 // Writes `text` to `path`.
