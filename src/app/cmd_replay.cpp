@@ -12,10 +12,10 @@
 
 namespace nbscope {
 
-Recording read_replay_input(const HeadlessOptions& o) {
+std::unique_ptr<RecordedFrames> read_replay_input(const HeadlessOptions& o) {
   if (o.dump) return read_dump_recording(*o.dump, o.frames);
   if (o.input) return read_input_recording(*o.replay, *o.input, o.frames);  // gui --input (input_window.cpp)
-  return read_recording(*o.replay, o.frames);
+  return held_frames(read_recording(*o.replay, o.frames));
 }
 
 int run_replay(Args& args) {

@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 
 #include "core/error.hpp"
 #include "io/csv.hpp"
+#include "io/dump_frames.hpp"
 #include "io/input_source.hpp"
 
 namespace nbscope {
@@ -96,11 +98,11 @@ DumpBox parse_box(const std::string& text) {
   return box;
 }
 
-std::int64_t timestep_of(const DumpFrame& f) { return f.timestep; }
+std::int64_t timestep_of(const DumpFrameAt& f) { return f.timestep; }
 std::int64_t timestep_of(std::int64_t t) { return t; }
 
 // "its timesteps: 0, 1000, 2000" (the first and last few of many), for a contact frame no dump frame matches.
-std::string timesteps_text(const std::vector<DumpFrame>& frames) {
+std::string timesteps_text(const std::vector<DumpFrameAt>& frames) {
   std::string s = "its timesteps: ";
   const std::size_t n = frames.size();
   for (std::size_t k = 0; k < n; ++k) {
@@ -141,7 +143,7 @@ bool is_dump_file(const std::string& path) {
   return head == "ITEM:";
 }
 
-Recording read_dump_recording(const DumpFlags& flags, std::int64_t max_frames) {
+std::unique_ptr<RecordedFrames> read_dump_recording(const DumpFlags& flags, std::int64_t max_frames) {
   if (flags.dumps.empty()) throw Error("replay: --dump FILES is required with --contacts");
   std::vector<std::string> paths, contact_paths;
   for (const std::string& spec : flags.dumps)
@@ -151,9 +153,24 @@ Recording read_dump_recording(const DumpFlags& flags, std::int64_t max_frames) {
   DumpOptions options = flags.options;
   // One frame past --frames N, to tell a dump that --frames cut from one that ends there.
   options.max_frames = max_frames < std::numeric_limits<std::int64_t>::max() ? max_frames + 1 : max_frames;
-  std::vector<DumpFrame> frames = read_dump_frames(paths, options);
+  // Regular files are indexed and read again as frames are shown; a pipe only once, so whole.
+  const bool files = std::all_of(paths.begin(), paths.end(), [](const std::string& p) {
+    std::error_code ec;
+    return std::filesystem::is_regular_file(p, ec);
+  });
+  std::vector<DumpFrameAt> frames;
+  std::vector<DumpFrame> whole;
+  if (files) {
+    frames = index_dump_frames(paths, options);
+  } else {
+    whole = read_dump_frames(paths, options);
+    for (const DumpFrame& f : whole) frames.push_back(DumpFrameAt{f.timestep, f.time, f.elements.size(), 0, 0, 0, f.where});
+  }
   const bool cut = static_cast<std::int64_t>(frames.size()) > max_frames;
-  if (cut) frames.resize(static_cast<std::size_t>(max_frames));
+  if (cut) {
+    frames.resize(static_cast<std::size_t>(max_frames));
+    if (!files) whole.resize(frames.size());
+  }
   std::vector<DumpContacts> contacts;
   if (!contact_paths.empty()) {
     contacts = read_dump_contacts(contact_paths, flags.columns);
@@ -165,7 +182,8 @@ Recording read_dump_recording(const DumpFlags& flags, std::int64_t max_frames) {
         throw Error(c.where + ": contacts of timestep " + std::to_string(c.timestep) + ", but the dump has no frame of it (" +
                     timesteps_text(frames) + ")");
   }
-  return recording_from_dumps(std::move(frames), contacts, flags.dt, flags.dumps.front());
+  if (!files) return held_frames(recording_from_dumps(std::move(whole), contacts, flags.dt, flags.dumps.front()));
+  return dump_frames(std::move(paths), options, std::move(frames), std::move(contacts), flags.dt, flags.dumps.front());
 }
 
 DumpFrame read_dump_input(const std::string& path, const DumpFlags& flags) {
@@ -217,7 +235,7 @@ InputFrame read_input_frame(const std::string& path, const DumpFlags& flags) {
   return in;
 }
 
-Recording read_input_recording(const std::string& path, const DumpFlags& flags, std::int64_t max_frames) {
+std::unique_ptr<RecordedFrames> read_input_recording(const std::string& path, const DumpFlags& flags, std::int64_t max_frames) {
   if (is_dump_file(path)) {
     if (flags.box) throw Error("--box: " + path + " is a dump: its box is its BOX BOUNDS (--periodic x,y[,z] makes axes periodic)");
     DumpFlags every = flags;
@@ -229,7 +247,7 @@ Recording read_input_recording(const std::string& path, const DumpFlags& flags, 
   r.path = path;
   RecordedFrame& f = r.frames.emplace_back();
   f.elements = std::move(in.elements);
-  return r;
+  return held_frames(std::move(r));
 }
 
 const std::vector<OptionSpec>& dump_input_options() {

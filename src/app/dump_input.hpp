@@ -10,6 +10,7 @@
 #include "app/command_table.hpp"
 #include "core/pairs.hpp"
 #include "io/lammps_dump.hpp"
+#include "io/recorded_frames.hpp"
 
 namespace nbscope {
 
@@ -34,8 +35,10 @@ DumpFlags take_dump_flags(Args& args);
 // True when `path` is a dump (its first bytes are "ITEM:" or gzip's), not ELEMENTS.csv.
 bool is_dump_file(const std::string& path);
 
-// The recording replay runs: every frame of flags.dumps with flags.contacts as their pairs (io/lammps_dump.hpp).
-Recording read_dump_recording(const DumpFlags& flags, std::int64_t max_frames);
+// The frames replay runs: every frame of flags.dumps with flags.contacts as their pairs (io/lammps_dump.hpp),
+// at most `max_frames`. Files are indexed now and each frame read when it is shown (io/dump_frames.hpp);
+// a dump through a pipe, which cannot be read twice, is read whole.
+std::unique_ptr<RecordedFrames> read_dump_recording(const DumpFlags& flags, std::int64_t max_frames);
 // One frame of the dump `path` for pairs, dump and verify: the one of --timestep, or the only one
 // (Error listing the timesteps when there are several and no --timestep, or none is that timestep).
 DumpFrame read_dump_input(const std::string& path, const DumpFlags& flags);
@@ -50,7 +53,7 @@ struct InputFrame {
 InputFrame read_input_frame(const std::string& path, const DumpFlags& flags);
 // The recording gui --input reads: a dump's frames (at most `max_frames`), or ELEMENTS.csv as one
 // frame (x,y,r or x,y,z,r; --periodic/--box applied); no pairs.
-Recording read_input_recording(const std::string& path, const DumpFlags& flags, std::int64_t max_frames);
+std::unique_ptr<RecordedFrames> read_input_recording(const std::string& path, const DumpFlags& flags, std::int64_t max_frames);
 
 // --periodic and --box on elements read from ELEMENTS.csv: the periodic box set and centres wrapped
 // into it; Error for --periodic without --box, or an axis the elements do not have.

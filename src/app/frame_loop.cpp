@@ -25,10 +25,8 @@ void load_recording_file(FrameLoop& loop, const std::string& path, std::int64_t 
 }
 
 void FrameLoop::load_scene(const Scene& scene) { impl_->build(scene); }
-void FrameLoop::load_recording(Recording recording) {
-  if (recording.frames.empty()) throw Error(recording.path + ": no frames");
-  impl_->build(std::make_shared<const Recording>(std::move(recording)));
-}
+void FrameLoop::load_recording(Recording recording) { load_recording(held_frames(std::move(recording))); }
+void FrameLoop::load_recording(std::unique_ptr<RecordedFrames> frames) { impl_->build(std::move(frames)); }
 void FrameLoop::restart() {
   if (impl_->live) impl_->build(Scene(impl_->scene));
   else if (impl_->replay) impl_->start();
@@ -49,10 +47,16 @@ void FrameLoop::step() {
     return;
   }
   if (!m.loaded() || !m.source().can_step()) return;
-  Elements previous = m.now();  // the stale-positions fault's positions for the next frame
   const FrameLoopState::Unwatch unwatch{m.watch};
-  if (m.live) m.watch_physics();
-  m.set_physics_ms(m.live ? m.live->step() : m.replay->step());  // a recorded frame was read with the file: 0
+  if (m.replay) {
+    // A recorded frame's predecessor is read again if the stale-positions fault asks for it: no copy per frame.
+    m.set_physics_ms(m.replay->step());  // nothing is simulated: 0
+    m.detect_and_check(FrameChange::Kind::stepped);
+    return;
+  }
+  Elements previous = m.now();  // the stale-positions fault's positions for the next frame
+  m.watch_physics();
+  m.set_physics_ms(m.live->step());
   m.pipeline.remember_previous(m.frame_number(), std::move(previous));
   m.detect_and_check(FrameChange::Kind::stepped);
 }

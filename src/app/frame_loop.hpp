@@ -43,6 +43,7 @@
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
 #include "core/frame_trace.hpp"
+#include "io/recorded_frames.hpp"
 #include "io/recording.hpp"
 #include "physics/scene.hpp"
 #include "physics/shapes.hpp"
@@ -109,6 +110,9 @@ class FrameLoop {
   // Replays a recording (at least one frame) instead of a world: its first frame detected and checked,
   // only A==R (report().box2d_checks is false). On error the old scene or recording stays.
   void load_recording(Recording recording);
+  // The same for frames read as they are shown (io/recorded_frames.hpp): at most the history budget
+  // of them stays in memory beside the one shown.
+  void load_recording(std::unique_ptr<RecordedFrames> frames);
   // Rebuilds the current scene from its description (frame 0 again); no effect without a scene.
   void restart();
 

@@ -12,13 +12,14 @@ const FrameHistory& LoopHistory::frames() const { return s_->history; }
 void LoopHistory::set_budget(std::size_t bytes) {
   s_->options.history_budget = bytes;
   s_->history.set_budget(bytes);
+  if (s_->replay) s_->replay->set_budget(bytes);
 }
 const ViolationLog& LoopHistory::violation_log() const { return s_->violations; }
 bool LoopHistory::showing_past() const { return s_->kept != nullptr; }
 
 std::int64_t LoopHistory::newest_frame() const {
   const FrameLoopState& m = *s_;
-  if (m.replay) return m.replay->recording().frames.back().number;
+  if (m.replay) return m.replay->entries().back().number;
   return m.live ? m.live_frame() : 0;
 }
 
@@ -54,14 +55,18 @@ void LoopHistory::element_path(ElementId k, std::int64_t from, std::int64_t to, 
   const auto first = std::lower_bound(summaries.begin(), summaries.end(), from,
                                       [](const FrameSummary& f, std::int64_t n) { return f.frame < n; });
   // A dump's rows shift as atoms come and go: the atom at row k of frame `to` is followed by its id.
-  const std::vector<std::int64_t>* ids_to = m.replay ? &m.replay->recording().frames[m.replay->index_of(to)].ids : nullptr;
+  // Recorded frames out of memory are not read again for a trail: it runs through the frames kept.
+  const std::shared_ptr<const RecordedFrame> frame_to = m.replay ? m.replay->frame_at(m.replay->index_of(to)) : nullptr;
+  const std::vector<std::int64_t>* ids_to = frame_to ? &frame_to->ids : nullptr;
   const bool by_atom = ids_to != nullptr && static_cast<std::size_t>(k) < ids_to->size();
   const std::int64_t atom = by_atom ? (*ids_to)[static_cast<std::size_t>(k)] : -1;
   for (auto i = static_cast<std::size_t>(first - summaries.begin()); i < m.history.size(); ++i) {
     const FrameSummary& f = m.history.at(i);
     if (f.frame > to) break;
     if (m.replay) {
-      const RecordedFrame& rf = m.replay->recording().frames[m.replay->index_of(f.frame)];
+      const std::shared_ptr<const RecordedFrame> held = m.replay->held(m.replay->index_of(f.frame));
+      if (!held) continue;
+      const RecordedFrame& rf = *held;
       std::int64_t row = k;
       if (by_atom) {
         const auto it = std::lower_bound(rf.ids.begin(), rf.ids.end(), atom);  // ascending (io/recording.hpp)

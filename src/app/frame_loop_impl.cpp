@@ -94,7 +94,7 @@ void FrameLoopState::check_recorded_source(bool wanted, const Recording* rec, co
 
 void FrameLoopState::accept_recorded() const {
   check_recorded_fault(pipeline.options().fault);
-  if (loaded()) check_recorded_source(true, replay ? &replay->recording() : nullptr, scene.path);
+  if (loaded()) check_recorded_source(true, replay ? &replay->header() : nullptr, scene.path);
 }
 
 void FrameLoopState::build(const Scene& s) {
@@ -134,25 +134,29 @@ void FrameLoopState::build(const Scene& s) {
   start();
 }
 
-void FrameLoopState::build(std::shared_ptr<const Recording> rec) {
-  check_recorded_source(pipeline.has_recorded_lane(), rec.get(), rec->path);
-  discard_step();  // the world it steps goes
+void FrameLoopState::build(std::unique_ptr<RecordedFrames> frames) {
+  const Recording& rec = frames->header();
+  check_recorded_source(pipeline.has_recorded_lane(), &rec, rec.path);
   DetectOptions opts;
   opts.touching = options.touching;
   opts.threads = options.threads;
   Scene s;
-  s.path = rec->path;
-  s.name = std::filesystem::path(rec->path).stem().string();
-  opts.grid = s.grid = rec->grid;
+  s.path = rec.path;
+  s.name = std::filesystem::path(rec.path).stem().string();
+  opts.grid = s.grid = rec.grid;
   // The recorded time per frame, for the panels (the recording's own times are shown per frame).
-  const RecordedFrame& first = rec->frames.front();
-  const RecordedFrame& last = rec->frames.back();
+  const RecordedEntry& first = frames->entries().front();
+  const RecordedEntry& last = frames->entries().back();
   if (last.number > first.number && last.time > first.time)
     s.time_step = (last.time - first.time) / static_cast<double>(last.number - first.number);
+  // Its first frame read before anything is replaced: a frame refused leaves the old source.
+  auto source = std::make_unique<RecordingSource>(std::move(frames), options.history_budget);
+  discard_step();  // the world it steps goes
   scene = std::move(s);
   kept.reset();
   live.reset();
-  replay = std::make_unique<RecordingSource>(std::move(rec));
+  looked_up.reset();
+  replay = std::move(source);
   pipeline.set_detect_options(opts);
   start();
 }
@@ -167,12 +171,12 @@ void FrameLoopState::start() {
   violations.clear();
   if (replay) {
     // Every recorded frame is showable from the start; each is checked when first shown.
-    for (const RecordedFrame& f : replay->recording().frames) {
+    for (const RecordedEntry& f : replay->entries()) {
       FrameSummary s;
       s.frame = f.number;
       s.time = f.time;
       s.kept = true;
-      s.elements = f.elements.size();
+      s.elements = f.elements;
       history.push(s, nullptr, 0);
     }
   }

@@ -33,6 +33,8 @@ struct FrameLoopState {
   std::unique_ptr<LiveWorld> live;
   std::unique_ptr<RecordingSource> replay;
   std::unique_ptr<KeptWorldFrame> kept;  // the past frame shown, or null for the live world's
+  // The recorded frame LoopSource::element_ids() last looked up, held while its ids are used.
+  mutable std::shared_ptr<const RecordedFrame> looked_up;
   Pipeline pipeline;
 
   // ---- history ----
@@ -112,8 +114,8 @@ struct FrameLoopState {
   void accept_recorded() const;
   // A new world from `s` (frame 0); on error the old scene stays.
   void build(const Scene& s);
-  // Replays `rec` instead of a world: its grid pins as a scene's would, its name the file's stem.
-  void build(std::shared_ptr<const Recording> rec);
+  // Replays `frames` instead of a world: its grid pins as a scene's would, its name the file's stem.
+  void build(std::unique_ptr<RecordedFrames> frames);
   // The frame source's first frame, detected and checked; a new run: the history starts again.
   void start();
   // The elements of the frame before `frame` when it can be shown, else `frame`'s own (the

@@ -14,16 +14,19 @@ bool LoopSource::has_scene() const { return s_->loaded(); }
 const Scene& LoopSource::scene() const { return s_->scene; }
 bool LoopSource::replaying() const { return s_->replay != nullptr; }
 std::int64_t LoopSource::recorded_frames() const {
-  return s_->replay ? static_cast<std::int64_t>(s_->replay->recording().frames.size()) : 0;
+  return s_->replay ? static_cast<std::int64_t>(s_->replay->entries().size()) : 0;
 }
-bool LoopSource::carries_pairs() const { return s_->replay && s_->replay->recording().has_pairs; }
-const Recording* LoopSource::recording() const { return s_->replay ? &s_->replay->recording() : nullptr; }
-int LoopSource::pair_base() const { return s_->replay ? s_->replay->recording().pair_base : 0; }
+bool LoopSource::carries_pairs() const { return s_->replay && s_->replay->header().has_pairs; }
+const Recording* LoopSource::recording() const { return s_->replay ? &s_->replay->header() : nullptr; }
+const PairList* LoopSource::recorded_pairs() const { return carries_pairs() ? &s_->replay->current().pairs : nullptr; }
+int LoopSource::pair_base() const { return s_->replay ? s_->replay->header().pair_base : 0; }
 const std::vector<std::int64_t>* LoopSource::element_ids(std::int64_t frame) const {
   if (!s_->replay) return nullptr;
-  const std::vector<RecordedFrame>& frames = s_->replay->recording().frames;
-  const auto it = std::lower_bound(frames.begin(), frames.end(), frame, [](const RecordedFrame& f, std::int64_t n) { return f.number < n; });
-  return it != frames.end() && it->number == frame && !it->ids.empty() ? &it->ids : nullptr;
+  const RecordingSource& r = *s_->replay;
+  const std::size_t index = r.index_of(frame);
+  if (index >= r.entries().size() || r.entries()[index].number != frame) return nullptr;
+  s_->looked_up = r.frame_at(index);  // held while the pointer is used
+  return s_->looked_up->ids.empty() ? nullptr : &s_->looked_up->ids;
 }
 std::int64_t LoopSource::element_name(std::int64_t frame, std::int64_t row) const {
   return element_id(element_ids(frame), row);

@@ -16,6 +16,7 @@
 #include "check/report.hpp"
 #include "core/detector.hpp"
 #include "core/frame_trace.hpp"
+#include "core/pairs.hpp"
 #include "physics/scene.hpp"
 #include "physics/shapes.hpp"
 
@@ -42,13 +43,17 @@ class LoopSource {
   // True when the recording's frames carry the user's contact pairs (a `pairs` block each), which
   // the algorithm `recorded` (check/recorded_lane.hpp) returns; false for a scene.
   [[nodiscard]] bool carries_pairs() const;
-  // The recording replayed (its header, every frame as read), null for a scene.
+  // The recording replayed: its header (path, grid, comment, pairs' base; no frames: they are read
+  // as they are shown), null for a scene.
   [[nodiscard]] const Recording* recording() const;
+  // The frame shown's recorded pairs (0-based, as given) when the recording carries them, else null.
+  [[nodiscard]] const PairList* recorded_pairs() const;
   // The recording's `base`: its pairs number elements from 0 or 1 (0 for a scene). Element ids
   // here stay 0-based rows either way.
   [[nodiscard]] int pair_base() const;
   // The atom ids of recorded frame `frame`'s rows (a dump's; io/recording.hpp), or null when its
-  // elements are named by their rows (a scene, a .nbsrec, a frame not recorded).
+  // elements are named by their rows (a scene, a .nbsrec, a frame not recorded). A frame out of
+  // memory is read again; the pointer holds until the next call for another such frame.
   [[nodiscard]] const std::vector<std::int64_t>* element_ids(std::int64_t frame) const;
   // Element `row` of frame `frame` as messages name it: its atom id, else the row.
   [[nodiscard]] std::int64_t element_name(std::int64_t frame, std::int64_t row) const;

@@ -1,8 +1,6 @@
 // --record's writer (app/frame_recorder.hpp).
 #include "app/frame_recorder.hpp"
 
-#include <algorithm>
-
 namespace nbscope {
 
 namespace {
@@ -21,15 +19,7 @@ FrameRecorder::FrameRecorder(const std::string& path, const FrameLoop& loop, con
 
 void FrameRecorder::write(const FrameLoop& loop) {
   const LoopSource& source = loop.source();
-  const Recording* rec = source.recording();
-  const PairList* pairs = nullptr;
-  if (rec != nullptr && rec->has_pairs) {
-    const auto& frames = rec->frames;
-    const auto it = std::lower_bound(frames.begin(), frames.end(), source.frame(),
-                                     [](const RecordedFrame& f, std::int64_t n) { return f.number < n; });
-    if (it != frames.end() && it->number == source.frame()) pairs = &it->pairs;
-  }
-  writer_.write_frame(source.frame(), source.time(), source.elements(), pairs);
+  writer_.write_frame(source.frame(), source.time(), source.elements(), source.recorded_pairs());
 }
 
 }  // namespace nbscope

@@ -56,9 +56,9 @@ struct HeadlessOptions {
   std::optional<DumpFlags> input;            // gui --input FILE: ELEMENTS.csv or a dump (`replay` names it), no pairs
 };
 
-// The recording `options.replay` names: a .nbsrec, or the dumps of options.dump; at most
-// options.frames frames.
-Recording read_replay_input(const HeadlessOptions& options);
+// The frames `options.replay` names: a .nbsrec, or the dumps of options.dump (read as they are
+// shown: io/dump_frames.hpp); at most options.frames frames.
+std::unique_ptr<RecordedFrames> read_replay_input(const HeadlessOptions& options);
 
 // Error when --stop-at-violation is combined with what it cannot show (several algorithms, --step).
 void check_stop_at_violation(const HeadlessOptions& options);

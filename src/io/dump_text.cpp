@@ -56,6 +56,20 @@ DumpText::DumpText(const std::string& path) : path_(path) {
   buf_ = std::make_unique_for_overwrite<char[]>(capacity_);
 }
 
+DumpText::DumpText(const std::string& path, std::size_t offset, std::size_t line) : DumpText(path) {
+  line_no_ = line > 0 ? line - 1 : 0;
+  if (!gzip_ && source_->seek(offset)) {
+    base_ = offset;
+    return;
+  }
+  // Inflated (or a pipe read) up to `offset`, the bytes before it dropped chunk by chunk.
+  while (base_ + data_.size() < offset) {
+    begin_ = data_.size();
+    if (!fill()) throw Error(path_ + ": ends before byte " + std::to_string(offset) + " (the file changed since it was read?)");
+  }
+  begin_ = offset - base_;
+}
+
 DumpText::DumpText(const std::string& text, const std::string& where) : path_(where), data_(text), end_(true) {
   check_chunk(0);
 }

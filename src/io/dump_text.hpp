@@ -15,6 +15,9 @@ class DumpText {
  public:
   // Opens `path` (plain or gzip; a file or a pipe). Error "<path>: ..." for a missing file, a directory, a failed open.
   explicit DumpText(const std::string& path);
+  // Opens `path` as above and starts at byte `offset` of its text, which is line `line` (an offset
+  // offset() gave on an earlier read of the same file): a plain file seeks there, gzip inflates up to it.
+  DumpText(const std::string& path, std::size_t offset, std::size_t line);
   // Reads `text` in memory (kept by reference: it must outlive this); `where` names it.
   DumpText(const std::string& text, const std::string& where);
   ~DumpText();
@@ -25,6 +28,8 @@ class DumpText {
   // Error for a NUL byte, a line longer than kMaxLineBytes, a gzip stream that is corrupt: each
   // once the lines before it have been given, so a file and a pipe, read in other pieces, fail alike.
   bool next(std::string_view& line);
+  // The byte of the text the next line starts at (for DumpText(path, offset, line)).
+  [[nodiscard]] std::size_t offset() const { return base_ + begin_; }
   // The number of the line next() gave last (1-based).
   [[nodiscard]] std::size_t line_number() const { return line_no_; }
   // At most how many bytes are left to read (a gzip file's: 1032 times its size, deflate's largest

@@ -120,6 +120,11 @@ std::size_t InputSource::read(char* to, std::size_t n) {
   }
 }
 
+bool InputSource::seek(std::size_t offset) {
+  if (!file_size_ || kept_read_ < kept_.size()) return false;
+  return ::lseek(fd_, static_cast<off_t>(offset), SEEK_SET) == static_cast<off_t>(offset);
+}
+
 std::string peek_input(const std::string& path, std::size_t n, const char* kind) {
   const std::optional<PipeKey> key = pipe_key(path);
   const std::lock_guard lock(peeked_mutex());

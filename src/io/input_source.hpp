@@ -24,6 +24,9 @@ class InputSource {
 
   // Up to `n` bytes into `to`, at least one unless at the end (0); as read(2), a pipe may give fewer. Error "<path>: cannot read the <kind>: <why>".
   std::size_t read(char* to, std::size_t n);
+  // Moves a regular file's next read to byte `offset` (replay reads a frame again where it starts);
+  // false, unmoved, for a pipe, a FIFO or a device, which cannot go back.
+  bool seek(std::size_t offset);
   // The size of a regular file when it was opened; nullopt for a pipe, a FIFO or a device.
   [[nodiscard]] std::optional<std::size_t> file_size() const { return file_size_; }
   // The path as messages name it.

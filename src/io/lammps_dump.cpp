@@ -101,6 +101,34 @@ class CustomReader {
     return frames;
   }
 
+  // Every frame located (DumpFrameAt, `file` 0), at most `limit`: the ITEM lines read and checked,
+  // the rows counted, not parsed.
+  std::vector<DumpFrameAt> index(std::int64_t limit) {
+    std::vector<DumpFrameAt> found;
+    Header header;
+    std::string_view names;
+    for (;;) {
+      const std::size_t offset = text_.offset(), line = text_.line_number() + 1;
+      if (static_cast<std::int64_t>(found.size()) >= limit || !next_header(header, names)) break;
+      DumpFrame f = begin_frame(header);
+      (void)layout_of(names, text_.at(), options_);  // a bad ATOMS line is refused up front
+      skip_rows(header, f);
+      found.push_back(DumpFrameAt{f.timestep, f.time, *header.atoms, 0, offset, line, f.where});
+    }
+    return found;
+  }
+
+  // The frame whose items come next, parsed; Error when the text has none.
+  DumpFrame next_frame() {
+    Header header;
+    std::string_view names;
+    if (!next_header(header, names)) throw Error(text_.at() + "no frame here (the file changed since it was read?)");
+    DumpFrame f = begin_frame(header);
+    const Layout lay = layout_of(names, text_.at(), options_);
+    parse_rows(header, lay, f, nullptr);
+    return f;
+  }
+
   // The frame of `timestep` (none: the first) parsed, every other one's rows counted only; stops
   // after the frame of `timestep`.
   DumpSeek seek(std::optional<std::int64_t> timestep) {
@@ -344,6 +372,35 @@ std::vector<DumpFrame> parse_dump_frames(const std::string& text, const std::str
   std::vector<std::vector<DumpFrame>> one;
   one.push_back(CustomReader(lines, options).read(options.max_frames));
   return merge(std::move(one), options.max_frames);
+}
+
+std::vector<DumpFrameAt> index_dump_frames(const std::vector<std::string>& paths, const DumpOptions& options) {
+  std::vector<DumpFrameAt> all;
+  for (std::size_t k = 0; k < paths.size(); ++k) {
+    DumpText text(paths[k]);
+    for (DumpFrameAt& at : CustomReader(text, options).index(options.max_frames)) {
+      at.file = k;
+      all.push_back(std::move(at));
+    }
+  }
+  dump::order_by_timestep(all);
+  if (static_cast<std::int64_t>(all.size()) > options.max_frames) all.resize(static_cast<std::size_t>(options.max_frames));
+  if (all.size() > kMaxRecordedFrames)
+    throw Error(all[kMaxRecordedFrames].where + ": more than " + std::to_string(kMaxRecordedFrames) + " frames, the limit for a recording");
+  return all;
+}
+
+DumpFrameCursor::DumpFrameCursor(std::string path, DumpOptions options) : path_(std::move(path)), options_(std::move(options)) {}
+DumpFrameCursor::~DumpFrameCursor() = default;
+
+DumpFrame DumpFrameCursor::read(const DumpFrameAt& at) {
+  // On from the last frame read when this one starts where it ended (a replay's next frame), else opened again at it.
+  if (text_ == nullptr || text_->offset() != at.offset) text_ = std::make_unique<DumpText>(path_, at.offset, at.line);
+  DumpFrame f = CustomReader(*text_, options_).next_frame();
+  if (f.timestep != at.timestep)
+    throw Error(f.where + ": timestep " + std::to_string(f.timestep) + " where timestep " + std::to_string(at.timestep) +
+                " was (the file changed since it was read?)");
+  return f;
 }
 
 DumpSeek seek_dump_frame(const std::string& path, std::optional<std::int64_t> timestep, const DumpOptions& options) {

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -88,6 +89,43 @@ std::vector<DumpFrame> read_dump_frames(const std::vector<std::string>& paths, c
 // The same from memory (text); `where` names it in messages.
 std::vector<DumpFrame> parse_dump_frames(const std::string& text, const std::string& where, const DumpOptions& options);
 
+// Where one `dump custom` frame lies in its file (index_dump_frames), to be read alone later.
+struct DumpFrameAt {
+  std::int64_t timestep = 0;
+  std::optional<double> time;  // ITEM: TIME, when the dump has it
+  std::int64_t atoms = 0;      // NUMBER OF ATOMS
+  std::size_t file = 0;        // which of the paths given
+  std::size_t offset = 0;      // the byte of the file's text where the frame's items start
+  std::size_t line = 0;        // and its line
+  std::string where;           // "<path>:<line>" of its ITEM: TIMESTEP
+};
+
+// Every `dump custom` frame of `paths` located, ordered by timestep as read_dump_frames orders them,
+// at most options.max_frames: the ITEM lines read and checked as read_dump_frames checks them (the
+// same errors), the rows counted, not parsed (a bad number is met when DumpFrameCursor reads that frame).
+std::vector<DumpFrameAt> index_dump_frames(const std::vector<std::string>& paths, const DumpOptions& options);
+
+class DumpText;
+
+// Reads the frames of one file at the places index_dump_frames found: on from the frame read last
+// when the next one is asked for, else the file opened again at the frame (a seek; gzip inflates up to it).
+class DumpFrameCursor {
+ public:
+  DumpFrameCursor(std::string path, DumpOptions options);
+  ~DumpFrameCursor();
+  DumpFrameCursor(const DumpFrameCursor&) = delete;
+  DumpFrameCursor& operator=(const DumpFrameCursor&) = delete;
+  // Frame `at` (of this file) parsed as read_dump_frames parses it, with the same errors.
+  DumpFrame read(const DumpFrameAt& at);
+  // The file it reads.
+  [[nodiscard]] const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  DumpOptions options_;
+  std::unique_ptr<DumpText> text_;
+};
+
 // What a seek (seek_dump_frame) found in one `dump custom` file.
 struct DumpSeek {
   std::optional<DumpFrame> frame;      // the frame asked for; none when the file has no frame of that timestep
@@ -124,6 +162,10 @@ PairList contacts_as_rows(const DumpFrame& frame, const DumpContacts& contacts);
 // timestep; ids and precision carried over; `contacts` (empty: none) become each frame's pairs, one
 // contact frame per dump frame by timestep (Error naming the timestep that has no contact frame, or a
 // contact frame no dump frame has). `path` names the recording in reports.
+// A frame's time as recording_from_dumps gives it: ITEM: TIME, else dt x timestep, else the timestep.
+double dump_frame_time(std::int64_t timestep, std::optional<double> time, std::optional<double> dt);
+// One dump frame as recording_from_dumps makes it, with `contacts` (null: none) as its pairs.
+RecordedFrame recorded_from_dump(DumpFrame frame, const DumpContacts* contacts, std::optional<double> dt);
 Recording recording_from_dumps(std::vector<DumpFrame> frames, const std::vector<DumpContacts>& contacts,
                                std::optional<double> dt, const std::string& path);
 

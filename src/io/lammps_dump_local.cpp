@@ -208,6 +208,21 @@ PairList contacts_as_rows(const DumpFrame& frame, const DumpContacts& contacts) 
   return pairs;
 }
 
+double dump_frame_time(std::int64_t timestep, std::optional<double> time, std::optional<double> dt) {
+  return time ? *time : dt ? *dt * static_cast<double>(timestep) : static_cast<double>(timestep);
+}
+
+RecordedFrame recorded_from_dump(DumpFrame f, const DumpContacts* contacts, std::optional<double> dt) {
+  RecordedFrame r;
+  r.number = f.timestep;
+  r.time = dump_frame_time(f.timestep, f.time, dt);
+  if (contacts != nullptr) r.pairs = contacts_as_rows(f, *contacts);
+  r.elements = std::move(f.elements);
+  r.ids = std::move(f.ids);
+  r.precision = f.precision;
+  return r;
+}
+
 Recording recording_from_dumps(std::vector<DumpFrame> frames, const std::vector<DumpContacts>& contacts, std::optional<double> dt,
                                const std::string& path) {
   if (frames.empty()) throw Error(path + ": no frames");
@@ -223,19 +238,14 @@ Recording recording_from_dumps(std::vector<DumpFrame> frames, const std::vector<
     if (c.timestep <= last) ++used;
   rec.frames.reserve(frames.size());
   for (DumpFrame& f : frames) {
-    RecordedFrame r;
-    r.number = f.timestep;
-    r.time = f.time ? *f.time : dt ? *dt * static_cast<double>(f.timestep) : static_cast<double>(f.timestep);
+    const DumpContacts* c = nullptr;
     if (rec.has_pairs) {
       const auto it = by_step.find(f.timestep);
       if (it == by_step.end()) throw Error(f.where + ": timestep " + std::to_string(f.timestep) + " has no contact frame");
-      r.pairs = contacts_as_rows(f, contacts[it->second]);
+      c = &contacts[it->second];
       --used;
     }
-    r.elements = std::move(f.elements);
-    r.ids = std::move(f.ids);
-    r.precision = f.precision;
-    rec.frames.push_back(std::move(r));
+    rec.frames.push_back(recorded_from_dump(std::move(f), c, dt));
   }
   if (used != 0)
     for (const DumpContacts& c : contacts)

@@ -1,23 +1,28 @@
-// nbscope io: a recording (io/recording.hpp) as a frame source: its frames one after the other, no
+// nbscope io: recorded frames (io/recorded_frames.hpp) as a frame source: one after the other, no
 // bodies (each element is drawn as a dynamic circle) and no Box2D side (the check runs only A==R).
+// Frames read from files are kept within a byte budget (the history's): the current one always, the
+// others until the budget is spent, oldest dropped first; a dropped frame is read again when shown.
 #pragma once
 #include <cstdint>
+#include <deque>
+#include <map>
 #include <memory>
 #include <vector>
 
-#include "io/recording.hpp"
+#include "io/recorded_frames.hpp"
 #include "physics/frame_source.hpp"
 
 namespace nbscope {
 
 class RecordingSource final : public FrameSource {
  public:
-  // Starts at the recording's first frame (it has at least one).
-  explicit RecordingSource(std::shared_ptr<const Recording> recording);
+  // Starts at the first frame (read now: its errors come from here), keeping at most `budget` bytes
+  // of other frames read from files.
+  RecordingSource(std::unique_ptr<RecordedFrames> frames, std::size_t budget);
 
-  [[nodiscard]] std::int64_t frame() const override { return current().number; }
-  [[nodiscard]] double time() const override { return current().time; }
-  [[nodiscard]] const Elements& elements() const override { return current().elements; }
+  [[nodiscard]] std::int64_t frame() const override { return current_->number; }
+  [[nodiscard]] double time() const override { return current_->time; }
+  [[nodiscard]] const Elements& elements() const override { return current_->elements; }
   // No bodies.
   [[nodiscard]] const std::vector<ElementSource>& element_sources() const override;
   [[nodiscard]] std::int64_t body_count() const override { return 0; }
@@ -25,26 +30,46 @@ class RecordingSource final : public FrameSource {
   void body_shapes(std::vector<BodyShape>& out) const override { circles_of(elements(), out); }
   [[nodiscard]] const Box2dFrame* box2d() const override { return nullptr; }
   // False on the last frame.
-  [[nodiscard]] bool can_step() const override { return index_ + 1 < recording_->frames.size(); }
-  // The next recorded frame (nothing simulated: 0 ms); no effect on the last.
+  [[nodiscard]] bool can_step() const override { return index_ + 1 < entries().size(); }
+  // The next recorded frame (nothing simulated: 0 ms); no effect on the last. Error, unmoved, for a
+  // frame whose text is wrong.
   double step() override;
 
-  // The recording and the index of the current frame in it.
-  [[nodiscard]] const Recording& recording() const { return *recording_; }
+  // The recording's facts (its `frames` empty) and every frame's number, time and element count.
+  [[nodiscard]] const Recording& header() const { return frames_->header(); }
+  [[nodiscard]] const std::vector<RecordedEntry>& entries() const { return frames_->entries(); }
+  // The index of the current frame, and the frame.
   [[nodiscard]] std::size_t index() const { return index_; }
-  [[nodiscard]] const RecordedFrame& current() const { return recording_->frames[index_]; }
+  [[nodiscard]] const RecordedFrame& current() const { return *current_; }
   // Makes the first frame current again.
-  void rewind() { index_ = 0; }
-  // Makes recorded frame number `frame` current (it must exist).
-  void show(std::int64_t frame) { index_ = index_of(frame); }
+  void rewind() { show_index(0); }
+  // Makes recorded frame number `frame` current (it must exist); Error, unmoved, as step().
+  void show(std::int64_t frame) { show_index(index_of(frame)); }
   // Index of recorded frame number `frame` (it must exist).
   [[nodiscard]] std::size_t index_of(std::int64_t frame) const;
-  // The frame before the current one (the first frame's own for the first).
-  [[nodiscard]] const Elements& previous_elements() const { return recording_->frames[index_ > 0 ? index_ - 1 : 0].elements; }
+  // The frame before the current one (the first frame's own for the first), read when not kept.
+  [[nodiscard]] Elements previous_elements() const;
+  // Frame `index` when it is in memory (the current one, or kept), else null: nothing is read.
+  [[nodiscard]] std::shared_ptr<const RecordedFrame> held(std::size_t index) const;
+  // Frame `index`, read when it is not in memory (and then kept as the budget allows).
+  [[nodiscard]] std::shared_ptr<const RecordedFrame> frame_at(std::size_t index) const;
+  // The bytes of frames kept beside the current one, and their budget.
+  [[nodiscard]] std::size_t kept_bytes() const { return kept_bytes_; }
+  void set_budget(std::size_t bytes);
 
  private:
-  std::shared_ptr<const Recording> recording_;
+  void show_index(std::size_t index);
+  void keep(std::size_t index, const std::shared_ptr<const RecordedFrame>& frame) const;
+  void trim() const;
+
+  std::unique_ptr<RecordedFrames> frames_;
   std::size_t index_ = 0;
+  std::shared_ptr<const RecordedFrame> current_;
+  std::size_t budget_ = 0;
+  // Frames read from files and kept, with their bytes, and the order they came in (dropped first).
+  mutable std::map<std::size_t, std::pair<std::shared_ptr<const RecordedFrame>, std::size_t>> kept_;
+  mutable std::deque<std::size_t> order_;
+  mutable std::size_t kept_bytes_ = 0;
 };
 
 }  // namespace nbscope

@@ -1,0 +1,43 @@
+// nbscope io: the frames a replay runs, handed out one at a time: a whole Recording held in memory
+// (a .nbsrec file, a dump through a pipe), or a dump's frames read from their files when they are
+// asked for (io/dump_frames.hpp), so that a run larger than memory replays in the memory of the
+// frames its history budget keeps (io/recording_source.hpp keeps them).
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "io/recording.hpp"
+
+namespace nbscope {
+
+// What is known of a frame without reading it.
+struct RecordedEntry {
+  std::int64_t number = 0;
+  double time = 0;
+  std::int64_t elements = 0;
+};
+
+class RecordedFrames {
+ public:
+  virtual ~RecordedFrames() = default;
+  // The recording's facts (path, dim, grid, comment, has_pairs, pair_base); its `frames` are empty:
+  // the frames are entries() and read().
+  [[nodiscard]] virtual const Recording& header() const = 0;
+  // Every frame's number, time and element count, in order; at least one.
+  [[nodiscard]] virtual const std::vector<RecordedEntry>& entries() const = 0;
+  // Frame `index` (< entries().size()): held, or read from its file now. Error "<path>:<line>: <what>"
+  // for what that frame's text holds wrong (a file read as asked for meets a bad row only there).
+  [[nodiscard]] virtual std::shared_ptr<const RecordedFrame> read(std::size_t index) = 0;
+  // True when read() reads a file (the caller keeps the frames it wants), false when every frame is held.
+  [[nodiscard]] virtual bool reads_files() const = 0;
+};
+
+// A recording read whole, every frame held. Error "<path>: no frames" for none.
+std::unique_ptr<RecordedFrames> held_frames(Recording recording);
+
+// The bytes a frame holds (elements, ids, pairs), as a history budget counts them.
+[[nodiscard]] std::size_t recorded_frame_bytes(const RecordedFrame& frame);
+
+}  // namespace nbscope
