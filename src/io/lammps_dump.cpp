@@ -136,7 +136,9 @@ class CustomReader {
     Header header;
     std::string_view names;
     std::optional<Error> refused;  // the first frame's bad row, without a timestep
-    while (next_header(header, names)) {
+    for (;;) {
+      const std::size_t offset = text_.offset();
+      if (!next_header(header, names)) break;
       DumpFrame f = begin_frame(header);
       const Layout lay = layout_of(names, text_.at(), options_);  // a bad ATOMS line is refused in any frame
       if (found.frames++ == 0) found.first_timestep = f.timestep;
@@ -146,6 +148,7 @@ class CustomReader {
         skip_rows(header, f);
         continue;
       }
+      found.offset = offset;
       if (timestep) {
         parse_rows(header, lay, f, nullptr);
         found.frame = std::move(f);
@@ -404,6 +407,20 @@ DumpFrame DumpFrameCursor::read(const DumpFrameAt& at) {
 }
 
 DumpSeek seek_dump_frame(const std::string& path, std::optional<std::int64_t> timestep, const DumpOptions& options) {
+  if (timestep) {
+    if (const std::optional<std::size_t> at = find_dump_frame(path, *timestep)) {
+      try {
+        DumpText text(path, *at, 0);
+        DumpSeek found = CustomReader(text, options).seek(timestep);
+        if (found.frame) {
+          found.frame->where = path + " at byte " + std::to_string(found.offset);  // the lines before were not counted
+          return found;
+        }
+      } catch (const Error&) {
+        // Read in order below: its message names the line, and checks the frames before it too.
+      }
+    }
+  }
   DumpText text(path);
   return CustomReader(text, options).seek(timestep);
 }

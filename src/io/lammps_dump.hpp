@@ -132,10 +132,20 @@ struct DumpSeek {
   std::int64_t frames = 0;             // frames scanned: every frame of the file unless the seek stopped at its frame
   std::int64_t first_timestep = 0;     // of the first frame scanned (when frames > 0)
   std::int64_t last_timestep = 0;      // of the last frame scanned
+  std::size_t offset = 0;              // the byte the frame's items start at
 };
 
+// Where the frame of `timestep` starts in the plain `dump custom` file `path` (the byte of its items),
+// or where to read on in order to find it, found by probing offsets instead of reading the frames
+// before it (timesteps increase within a file); none for a gzip or small file, a pipe, a file that
+// does not start with a frame, or timesteps found out of order (then read the file in order).
+// Nothing is checked: the frame is parsed from there, and the file read in order on any error.
+std::optional<std::size_t> find_dump_frame(const std::string& path, std::int64_t timestep);
+
 // One frame of the `dump custom` file `path` (text or gzip): the one of `timestep`, or without one
-// the first, the rest of the file scanned to count its frames. Only that frame's rows are parsed and
+// the first, the rest of the file scanned to count its frames. A big plain file is jumped into
+// (find_dump_frame): the frames before are not read, their count is not known (`frames` counts from
+// the jump) and the frame's `where` names its byte, not its line; any error there reads it in order. Only that frame's rows are parsed and
 // kept: every other frame's ITEM lines are read as read_dump_frames reads them (the same errors,
 // timesteps increasing included) and its NUMBER OF ATOMS rows are counted, not parsed (a frame with
 // fewer rows is still refused); the read stops after the frame of `timestep`. Without `timestep`, a
