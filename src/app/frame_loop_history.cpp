@@ -14,6 +14,7 @@ void LoopHistory::set_budget(std::size_t bytes) {
   s_->history.set_budget(bytes);
   if (s_->replay) s_->replay->set_budget(bytes);
 }
+std::size_t LoopHistory::bytes() const { return s_->history.bytes() + (s_->replay ? s_->replay->kept_bytes() : 0); }
 const ViolationLog& LoopHistory::violation_log() const { return s_->violations; }
 bool LoopHistory::showing_past() const { return s_->kept != nullptr; }
 

@@ -137,8 +137,12 @@ class LoopHistory {
   explicit LoopHistory(FrameLoopState& state) : s_(&state) {}
   // The run's frames: a summary of each, and the kept states that show past ones again.
   [[nodiscard]] const FrameHistory& frames() const;
-  // Bytes of world states to keep; older states are dropped at once when the budget shrinks.
+  // Bytes of world states (or of recorded frames read from files) to keep; older ones are dropped at
+  // once when the budget shrinks.
   void set_budget(std::size_t bytes);
+  // The bytes the run's past holds: the summaries, the kept world states, the recorded frames kept
+  // beside the one shown.
+  [[nodiscard]] std::size_t bytes() const;
   // Every violation of the run, in frame order.
   [[nodiscard]] const ViolationLog& violation_log() const;
   // True while the frame shown is a kept past frame rather than the newest one.

@@ -43,7 +43,7 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
   sim.showing_past = loop.history().showing_past();
   sim.replaying = loop.source().replaying();
   sim.play_direction = session.play_direction;
-  sim.history_bytes = history.bytes();
+  sim.history_bytes = loop.history().bytes();
   sim.history_budget = history.budget();
   sim.history_dropped = history.dropped();
   sim.resuming = loop.resume().active();

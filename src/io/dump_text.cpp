@@ -58,6 +58,8 @@ DumpText::DumpText(const std::string& path) : path_(path) {
 
 DumpText::DumpText(const std::string& path, std::size_t offset, std::size_t line) : DumpText(path) {
   line_no_ = line > 0 ? line - 1 : 0;
+  const auto cut = [&] { return Error(path_ + ": ends before byte " + std::to_string(offset) + " (the file changed since it was read?)"); };
+  if (!gzip_ && file_size_ != 0 && offset > file_size_) throw cut();
   if (!gzip_ && source_->seek(offset)) {
     base_ = offset;
     return;
@@ -65,7 +67,7 @@ DumpText::DumpText(const std::string& path, std::size_t offset, std::size_t line
   // Inflated (or a pipe read) up to `offset`, the bytes before it dropped chunk by chunk.
   while (base_ + data_.size() < offset) {
     begin_ = data_.size();
-    if (!fill()) throw Error(path_ + ": ends before byte " + std::to_string(offset) + " (the file changed since it was read?)");
+    if (!fill()) throw cut();
   }
   begin_ = offset - base_;
 }

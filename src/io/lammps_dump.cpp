@@ -122,6 +122,7 @@ class CustomReader {
   DumpFrame next_frame() {
     Header header;
     std::string_view names;
+    any_ = true;  // the text starts mid-file: its end is not an empty file
     if (!next_header(header, names)) throw Error(text_.at() + "no frame here (the file changed since it was read?)");
     DumpFrame f = begin_frame(header);
     const Layout lay = layout_of(names, text_.at(), options_);

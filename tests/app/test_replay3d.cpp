@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 #include <utility>
 
@@ -206,6 +207,22 @@ TEST_F(Pour, StopAtViolationViolationAndBackTravelThroughTheSpheres) {
   const auto far = run("replay '" + rec() + "' --headless --quiet --back 2");
   EXPECT_EQ(far.exit_code, 2);
   EXPECT_EQ(far.err, "nbscope: error: --back: 2 goes before the first recorded frame (2 frames replayed: at most 1 back)\n");
+}
+
+// A dump's frames are read when they are shown (io/dump_frames.hpp): with no memory for past frames,
+// a frame gone back to (or the one before, for stale-positions) is read again from its file and
+// finds exactly what a run that kept it finds.
+TEST_F(Pour, AFrameNotKeptIsReadAgainFromTheDump) {
+  for (const std::string travel : {"--back 1", "--inject-fault drop-pair --violation 2", "--inject-fault drop-pair --stop-at-violation",
+                                   "--inject-fault stale-positions"}) {
+    const std::string args = "replay --dump '" + kPour + "' --headless --quiet " + travel;
+    const auto kept = run(args + " --history-mb 256");
+    const auto read_again = run(args + " --history-mb 0");
+    EXPECT_EQ(kept.exit_code, travel == "--back 1" ? 0 : 1) << travel << ": " << kept.err;
+    EXPECT_EQ(read_again.exit_code, kept.exit_code) << travel << ": " << read_again.err;
+    const std::regex ms("[0-9]+\\.[0-9]{3}");  // the timings differ from run to run
+    EXPECT_EQ(std::regex_replace(read_again.out, ms, "#"), std::regex_replace(kept.out, ms, "#")) << travel;
+  }
 }
 
 TEST_F(Pour, ReportNamesTheCellsOfAThreeDimensionalViolation) {

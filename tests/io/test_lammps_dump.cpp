@@ -13,40 +13,14 @@
 
 #include "core/error.hpp"
 #include "io/lammps_dump.hpp"
+#include "support/dump_text.hpp"
 
 namespace nbscope {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string temp_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("nbscope-dump-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
-
-void write_file(const std::string& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
-
-// A `dump custom` frame's header, then `rows` (one atom a line).
-std::string frame(long timestep, int atoms, const std::string& columns, const std::string& rows,
-                  const std::string& bounds = "pp pp pp", const std::string& box = "0 1\n0 1\n0 1\n") {
-  return "ITEM: TIMESTEP\n" + std::to_string(timestep) + "\nITEM: NUMBER OF ATOMS\n" + std::to_string(atoms) + "\nITEM: BOX BOUNDS " +
-         bounds + "\n" + box + "ITEM: ATOMS " + columns + "\n" + rows;
-}
-
-const std::string kColumns = "id type x y z radius";
-
-// The message of the Error `f` throws ("" when it throws none).
-template <class F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
+using namespace testdump;
 
 std::string custom_error(const std::string& text, const DumpOptions& options = {}) {
   return error_of([&] { parse_dump_frames(text, "d.dump", options); });
