@@ -15,7 +15,7 @@ namespace nbscope {
 std::unique_ptr<RecordedFrames> read_replay_input(const HeadlessOptions& o) {
   if (o.dump) return read_dump_recording(*o.dump, o.frames);
   if (o.input) return read_input_recording(*o.replay, *o.input, o.frames);  // gui --input (input_window.cpp)
-  return held_frames(read_recording(*o.replay, o.frames));
+  return read_recorded_frames(*o.replay, o.frames);
 }
 
 int run_replay(Args& args) {

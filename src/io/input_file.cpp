@@ -139,6 +139,7 @@ bool InputLines::next(std::string_view& line) {
     if (const void* nl = std::memchr(from, '\n', left); nl != nullptr) {
       const auto length = static_cast<std::size_t>(static_cast<const char*>(nl) - from);
       line = std::string_view(from, length);
+      line_start_ = base_ + begin_;
       begin_ += length + 1;
       ++line_no_;
       return true;
@@ -146,6 +147,7 @@ bool InputLines::next(std::string_view& line) {
     if (end_) {
       if (left == 0) return false;
       line = std::string_view(from, left);  // the last line, without a newline
+      line_start_ = base_ + begin_;
       begin_ = buf_.size();
       ++line_no_;
       return true;

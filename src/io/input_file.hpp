@@ -53,6 +53,9 @@ class InputLines {
   bool next(std::string_view& line);
   // The number of the line next() gave last (1-based; 0 before the first).
   [[nodiscard]] std::size_t line_number() const { return line_no_; }
+  // The byte of the input that line starts at; and the bytes read past its lines so far (at the end: the input's size).
+  [[nodiscard]] std::size_t line_offset() const { return line_start_; }
+  [[nodiscard]] std::size_t offset() const { return base_ + begin_; }
 
  private:
   void fill();  // reads one more chunk behind the unread bytes
@@ -68,6 +71,7 @@ class InputLines {
   std::size_t chunk_;        // small at first: /dev/zero or a binary file stops after one
   bool end_ = false;
   std::size_t line_no_ = 0;
+  std::size_t line_start_ = 0;
 };
 
 }  // namespace nbscope

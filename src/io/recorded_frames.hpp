@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "io/recording.hpp"
@@ -33,6 +34,12 @@ class RecordedFrames {
   // True when read() reads a file (the caller keeps the frames it wants), false when every frame is held.
   [[nodiscard]] virtual bool reads_files() const = 0;
 };
+
+// The frames of the .nbsrec file `path` (at most `max_frames`): every line but the element rows read
+// and checked now, as read_recording does (the same errors), the rows counted; each frame parsed from
+// its place when it is read (a bad row refused then, with its line). A pipe, which cannot be read
+// twice, is read whole (read_recording, held_frames). In recording.cpp.
+std::unique_ptr<RecordedFrames> read_recorded_frames(const std::string& path, std::int64_t max_frames);
 
 // A recording read whole, every frame held. Error "<path>: no frames" for none.
 std::unique_ptr<RecordedFrames> held_frames(Recording recording);

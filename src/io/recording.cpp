@@ -1,4 +1,5 @@
-// Index: helpers (words, numbers) | parse_recording | read_recording | RecordingWriter.
+// Reading .nbsrec (recording.hpp; the writer is recording_writer.cpp).
+// Index: helpers (words, numbers) | parse_recording | read_recording | frames read as shown.
 #include "io/recording.hpp"
 
 #include <cctype>
@@ -12,11 +13,11 @@
 #include <string_view>
 
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
 #include "io/csv.hpp"
 #include "io/excerpt.hpp"
 #include "io/input_file.hpp"
 #include "io/plural.hpp"
+#include "io/recorded_frames.hpp"
 
 namespace nbscope {
 
@@ -122,15 +123,27 @@ namespace {
 // after the frames wanted (an endless pipe included) and a limit passed stops it at that line.
 class RecordingParser {
  public:
-  RecordingParser(const std::string& where, std::int64_t max_frames, std::size_t frame_limit)
-      : where_(where), max_frames_(max_frames), frame_limit_(frame_limit) {
+  // `keep_rows` false: each frame's rows are counted, not parsed (read_recorded_frames), its place kept.
+  RecordingParser(const std::string& where, std::int64_t max_frames, std::size_t frame_limit, bool keep_rows = true)
+      : where_(where), max_frames_(max_frames), frame_limit_(frame_limit), keep_rows_(keep_rows) {
     rec_.path = where;
   }
+  // One frame's block (its `frame` line first) of a recording whose header was read: `header`'s facts,
+  // its `dim` line on `dim_line` (0: none), for messages.
+  RecordingParser(const Recording& header, const std::string& where, std::size_t dim_line) : where_(where), max_frames_(1), frame_limit_(1) {
+    first_line_[kDimKey] = dim_line;
+    rec_.path = header.path;
+    rec_.dim = header.dim;
+    rec_.grid = header.grid;
+    rec_.pair_base = header.pair_base;
+    seen_text_ = seen_version_ = true;
+  }
 
-  // Line `line_no` (1-based), without its newline; false once `max_frames` frames are complete
-  // (this line starts the next one, which is not read).
-  bool line(std::string_view raw, std::size_t line_no) {
+  // Line `line_no` (1-based) starting at byte `offset`, without its newline; false once `max_frames`
+  // frames are complete (this line starts the next one, which is not read).
+  bool line(std::string_view raw, std::size_t line_no, std::size_t offset = 0) {
     last_line_ = line_no;
+    offset_ = offset;
     if (!seen_text_ && raw.find_first_not_of(" \t\r") != std::string_view::npos) seen_text_ = true;
     if (rec_.frames.empty()) keep_comment(raw);
     const std::string_view line = strip_comment(raw);
@@ -169,12 +182,17 @@ class RecordingParser {
                   (rec_.dim == 3 ? "x,y,z,r)" : "x,y,r)"));
     if (in_header) throw Error(at + "an element row before the first 'frame NUMBER TIME' line");
     if (state_.has_pairs) {
-      parse_pair_row(line, at, rec_.pair_base, cols_.size(), rec_.frames.back());
+      parse_pair_row(line, at, rec_.pair_base, rows(), rec_.frames.back());
       return true;
     }
     element_row(line, at);
     return true;
   }
+
+  // Where each frame's `frame` line starts (byte, line), and where the last frame ends (the byte of
+  // the line that stopped the read, else `end`).
+  [[nodiscard]] const std::vector<std::array<std::size_t, 2>>& places() const { return places_; }
+  [[nodiscard]] std::size_t stop_offset(std::size_t end) const { return stopped_ ? offset_ : end; }
 
   // The recording read (at most max_frames frames).
   Recording finish() {
@@ -251,6 +269,7 @@ class RecordingParser {
     if (rec_.frames.size() >= frame_limit_)
       throw Error(at + "more than " + std::to_string(frame_limit_) + " frames, the limit for a recording (replay --frames N reads the first N)");
     rec_.frames.push_back({number, time, {}, {}, {}, 0});
+    places_.push_back({offset_, line_no});
     state_ = FrameState{line_no, false};
     return true;
   }
@@ -259,6 +278,13 @@ class RecordingParser {
   // other line, which line() reads (or refuses) with its message.
   bool plain_element_row(std::string_view line) {
     if (rec_.frames.empty() || state_.has_pairs) return false;
+    if (!keep_rows_) {
+      // Counted, not parsed: a row is parsed (and refused) when its frame is read.
+      const char c = line.front();
+      if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.') || rows() >= kMaxElements) return false;
+      ++counted_;
+      return true;
+    }
     int count = 0;
     std::array<double, 4> row{};
     if (!parse_plain_row(line, count, row) || count != rec_.dim + 1 || cols_.size() >= kMaxElements) return false;
@@ -277,7 +303,7 @@ class RecordingParser {
       throw Error(at + "3 columns (x,y,r) in a 3D recording ('dim 3' on line " + std::to_string(first_line_[kDimKey]) + "): rows are x,y,z,r");
     if (fields.size() == 2) throw Error(at + "2 columns" + expected + " (a pair i,j? pairs come after the frame's 'pairs' line)");
     if (fields.size() != columns) throw Error(at + plural(static_cast<long long>(fields.size()), "column") + expected);
-    if (cols_.size() >= kMaxElements) throw Error(at + "more than " + std::to_string(kMaxElements) + " elements in one frame");
+    if (rows() >= kMaxElements) throw Error(at + "more than " + std::to_string(kMaxElements) + " elements in one frame");
     std::array<double, 4> row{};
     parse_element_row(fields, at, row);
     const double r = row[static_cast<std::size_t>(rec_.dim)];
@@ -289,10 +315,26 @@ class RecordingParser {
 
   // The frame being read is complete: its elements into place, its pairs block held to the first frame's.
   void end_frame() {
-    finish_frame(rec_.frames.back(), cols_, rec_.dim);
+    RecordedFrame& f = rec_.frames.back();
+    finish_frame(f, cols_, rec_.dim);
     if (rec_.frames.size() == 1) rec_.has_pairs = state_.has_pairs;
     check_all_or_none(rec_, state_, rec_.has_pairs, where_);
+    if (keep_rows_) return;
+    counts_.push_back(f.elements.size() + counted_);
+    counted_ = 0;
+    f.elements = Elements();
+    PairList().swap(f.pairs);
   }
+
+ public:
+  // The line of the header's `dim` (0: none).
+  [[nodiscard]] std::size_t dim_line() const { return first_line_[kDimKey]; }
+  // The rows of the frame being read.
+  [[nodiscard]] std::int64_t rows() const { return static_cast<std::int64_t>(cols_.size()) + counted_; }
+  // Each frame's element count (keep_rows false: its rows are gone).
+  [[nodiscard]] const std::vector<std::int64_t>& counts() const { return counts_; }
+
+ private:
 
   // A whole-line comment of the header into rec_.comment: its text after '#' and one space, up to
   // kMaxKeptComment bytes (a recording recorded again keeps it, and stays the same file).
@@ -328,6 +370,11 @@ class RecordingParser {
   const std::string& where_;
   std::int64_t max_frames_;
   std::size_t frame_limit_;
+  bool keep_rows_ = true;
+  std::size_t offset_ = 0;  // of the line being read
+  std::vector<std::array<std::size_t, 2>> places_;
+  std::vector<std::int64_t> counts_;
+  std::int64_t counted_ = 0;  // rows of the frame being read counted, not parsed (keep_rows false)
   Recording rec_;
   bool seen_text_ = false;
   bool seen_version_ = false;
@@ -370,119 +417,81 @@ Recording read_recording(const std::string& path, std::int64_t max_frames, std::
   return parser.finish();
 }
 
-// ---- RecordingWriter ------------------------------------------------------------------------
+}  // namespace nbscope
 
-struct RecordingWriter::Impl {
-  AtomicFileWriter file;
-  std::string buf;
-  std::int64_t frames = 0;
-  bool with_pairs = false;  // of the first frame: every later one must match (all or none)
-  int dim = 2;              // of every frame: the header says it
-  int base = 0;             // `base`: pairs are written numbered from it
-  Impl(const std::string& path, int d, int b) : file(path), dim(d), base(b) {}
+// ---- frames read as shown -------------------------------------------------------------------
 
-  void append(double v) {
-    char num[32];
-    const auto r = std::to_chars(num, num + sizeof num, v);  // shortest text that reads back exactly
-    buf.append(num, r.ptr);
-  }
-  void flush() {
-    file.stream().write(buf.data(), static_cast<std::streamsize>(buf.size()));
-    buf.clear();
-    // A full disk stops a long --record at the frame it happens, not hours later at commit().
-    if (!file.stream()) throw Error(file.path() + ": cannot write: " + std::strerror(errno));
-  }
-};
+namespace nbscope {
 
 namespace {
-// `v` when it is `a` or `b`; Error (before any file is made) otherwise.
-int either(int v, int a, int b, const char* what) {
-  if (v != a && v != b) throw Error(std::string("recording: ") + what + " " + std::to_string(v) + ": " + std::to_string(a) + " or " + std::to_string(b));
-  return v;
-}
+
+// A .nbsrec file's frames, each parsed again from its place in the file when it is asked for.
+class RecordingFileFrames final : public RecordedFrames {
+ public:
+  RecordingFileFrames(Recording header, std::vector<RecordedEntry> entries, std::vector<std::array<std::size_t, 2>> places, std::size_t end,
+                      std::size_t dim_line)
+      : header_(std::move(header)), entries_(std::move(entries)), places_(std::move(places)), end_(end), dim_line_(dim_line) {}
+
+  [[nodiscard]] const Recording& header() const override { return header_; }
+  [[nodiscard]] const std::vector<RecordedEntry>& entries() const override { return entries_; }
+  [[nodiscard]] bool reads_files() const override { return true; }
+
+  [[nodiscard]] std::shared_ptr<const RecordedFrame> read(std::size_t index) override {
+    const RecordedEntry& e = entries_.at(index);
+    const std::size_t begin = places_[index][0];
+    const std::size_t stop = index + 1 < places_.size() ? places_[index + 1][0] : end_;
+    const std::string changed = header_.path + ":" + std::to_string(places_[index][1]) + ": frame " + std::to_string(e.number) +
+                                " is not what it was (the file changed since it was read?)";
+    std::string text(stop - begin, '\0');
+    std::ifstream in(header_.path, std::ios::binary);
+    if (!in) throw Error(header_.path + ": cannot open the recording again: " + std::strerror(errno));
+    in.seekg(static_cast<std::streamoff>(begin));
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    if (static_cast<std::size_t>(in.gcount()) != text.size()) throw Error(changed);
+    RecordingParser parser(header_, header_.path, dim_line_);
+    std::size_t line_no = places_[index][1];
+    for (std::size_t pos = 0; pos < text.size(); ++line_no) {
+      std::size_t nl = text.find('\n', pos);
+      if (nl == std::string::npos) nl = text.size();
+      const std::string_view raw(text.data() + pos, nl - pos);
+      pos = nl + 1;
+      check_line_length(raw, header_.path, line_no);
+      if (!parser.line(raw, line_no)) throw Error(changed);
+    }
+    Recording r = parser.finish();
+    if (r.frames.size() != 1 || r.frames[0].number != e.number || r.frames[0].time != e.time || r.frames[0].elements.size() != e.elements)
+      throw Error(changed);
+    return std::make_shared<const RecordedFrame>(std::move(r.frames[0]));
+  }
+
+ private:
+  Recording header_;
+  std::vector<RecordedEntry> entries_;
+  std::vector<std::array<std::size_t, 2>> places_;  // each frame's `frame` line: byte, line
+  std::size_t end_;                                 // where the last frame read ends
+  std::size_t dim_line_;                            // the header's `dim` line, for messages
+};
+
 }  // namespace
 
-RecordingWriter::RecordingWriter(const std::string& path, const GridOptions& grid, const std::string& comment, int dim, int pair_base)
-    : impl_(std::make_unique<Impl>(path, either(dim, 2, 3, "dim"), either(pair_base, 0, 1, "base"))) {
-  std::string& b = impl_->buf;
-  b = "nbsrec 1\n";
-  std::size_t start = 0;
-  while (start < comment.size()) {
-    const std::size_t nl = std::min(comment.find('\n', start), comment.size());
-    b += "# " + comment.substr(start, nl - start) + "\n";
-    start = nl + 1;
-  }
-  if (dim == 3) b += "dim 3\n";  // 2D is the default: a 2D recording has no dim line
-  if (grid.cell_size) {
-    b += "cell_size ";
-    impl_->append(*grid.cell_size);
-    b += "\n";
-  }
-  if (grid.origin) {
-    b += "origin ";
-    impl_->append((*grid.origin)[0]);
-    b += ",";
-    impl_->append((*grid.origin)[1]);
-    if (dim == 3) {
-      b += ",";
-      impl_->append((*grid.origin)[2]);
-    }
-    b += "\n";
-  }
-  if (grid.cells) {
-    b += "cells " + std::to_string((*grid.cells)[0]) + "," + std::to_string((*grid.cells)[1]);
-    if (dim == 3) b += "," + std::to_string((*grid.cells)[2]);
-    b += "\n";
-  }
-  if (pair_base == 1) b += "base 1\n";
-  impl_->flush();
+std::unique_ptr<RecordedFrames> read_recorded_frames(const std::string& path, std::int64_t max_frames) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return held_frames(read_recording(path, max_frames));
+  // Every line read and checked as read_recording does, the rows dropped: no byte limit is needed.
+  InputLines lines(path, "recording", std::numeric_limits<std::size_t>::max(), kMaxLineBytes);
+  RecordingParser parser(path, max_frames, kMaxRecordedFrames, false);
+  std::string_view line;
+  while (lines.next(line))
+    if (!parser.line(line, lines.line_number(), lines.line_offset())) break;
+  const std::size_t end = parser.stop_offset(lines.offset());
+  Recording rec = parser.finish();
+  std::vector<RecordedEntry> entries;
+  entries.reserve(rec.frames.size());
+  for (std::size_t k = 0; k < rec.frames.size(); ++k)
+    entries.push_back(RecordedEntry{rec.frames[k].number, rec.frames[k].time, parser.counts()[k]});
+  rec.frames.clear();
+  rec.frames.shrink_to_fit();
+  return std::make_unique<RecordingFileFrames>(std::move(rec), std::move(entries), parser.places(), end, parser.dim_line());
 }
-
-RecordingWriter::~RecordingWriter() = default;
-
-void RecordingWriter::write_frame(std::int64_t number, double time, const Elements& e, const PairList* pairs) {
-  const auto dim_name = [](int d) { return std::string(d == 3 ? "3D" : "2D"); };
-  if (e.dim != impl_->dim)
-    throw Error("recording: frame " + std::to_string(number) + " is " + dim_name(e.dim) + ", the recording " + dim_name(impl_->dim) +
-                " (its header says it once for every frame)");
-  // The format has no periodic box: the frame would replay in open space, with other pairs.
-  if (e.box.any())
-    throw Error("recording: frame " + std::to_string(number) +
-                " is periodic (a dump's pp boundary or --periodic): a recording has no periodic box; check it with replay --dump instead");
-  // What the reader would refuse is refused here, so that a written recording always reads back.
-  if (impl_->frames > 0 && (pairs != nullptr) != impl_->with_pairs)
-    throw Error("recording: frame " + std::to_string(number) + (pairs != nullptr ? " has pairs, but the first frame had none" : " has no pairs, but the first frame had some") +
-                ": give every frame its pairs, or none");
-  if (pairs != nullptr)
-    for (const Pair& p : *pairs)
-      if (p.i < 0 || p.j < 0 || p.i >= e.size() || p.j >= e.size())
-        throw Error("recording: pair " + std::to_string(p.i) + "," + std::to_string(p.j) + " of frame " + std::to_string(number) + ": the frame has " +
-                    plural(static_cast<long long>(e.size()), "element"));
-  if (impl_->frames++ == 0) impl_->with_pairs = pairs != nullptr;
-  std::string& b = impl_->buf;
-  b += "frame " + std::to_string(number) + " ";
-  impl_->append(time);
-  b += "\n";
-  b.reserve(b.size() + static_cast<std::size_t>(e.size()) * 40 + (pairs != nullptr ? pairs->size() * 16 + 6 : 0));
-  for (Eigen::Index k = 0; k < e.size(); ++k) {
-    impl_->append(e.x[k]);
-    b += ",";
-    impl_->append(e.y[k]);
-    b += ",";
-    if (impl_->dim == 3) {
-      impl_->append(e.z[k]);
-      b += ",";
-    }
-    impl_->append(e.r[k]);
-    b += "\n";
-  }
-  if (pairs != nullptr) {
-    b += "pairs\n";
-    for (const Pair& p : *pairs) b += std::to_string(p.i + impl_->base) + "," + std::to_string(p.j + impl_->base) + "\n";
-  }
-  impl_->flush();
-}
-
-void RecordingWriter::commit() { impl_->file.commit(); }
 
 }  // namespace nbscope
