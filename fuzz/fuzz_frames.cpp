@@ -58,7 +58,12 @@ std::unique_ptr<nbscope::RecordedFrames> as_shown(const std::string& path, bool 
     if (!dump) return nbscope::read_recorded_frames(path, kMaxFrames);
     nbscope::DumpOptions options;
     options.max_frames = kMaxFrames;
-    return nbscope::dump_frames({path}, options, nbscope::index_dump_frames({path}, options), {}, std::nullopt, path);
+    nbscope::DumpFrameFiles files;
+    files.paths = {path};
+    files.options = options;
+    files.frames = nbscope::index_dump_frames(files.paths, options);
+    files.name = path;
+    return nbscope::dump_frames(std::move(files));
   } catch (const nbscope::Error&) {
     return nullptr;
   }

@@ -150,40 +150,58 @@ std::unique_ptr<RecordedFrames> read_dump_recording(const DumpFlags& flags, std:
     for (std::string& p : expand_dump_spec("--dump", spec)) paths.push_back(std::move(p));
   for (const std::string& spec : flags.contacts)
     for (std::string& p : expand_dump_spec("--contacts", spec)) contact_paths.push_back(std::move(p));
-  DumpOptions options = flags.options;
+  DumpFrameFiles f;
+  f.options = flags.options;
+  f.columns = flags.columns;
+  f.dt = flags.dt;
+  f.name = flags.dumps.front();
   // One frame past --frames N, to tell a dump that --frames cut from one that ends there.
-  options.max_frames = max_frames < std::numeric_limits<std::int64_t>::max() ? max_frames + 1 : max_frames;
+  f.options.max_frames = max_frames < std::numeric_limits<std::int64_t>::max() ? max_frames + 1 : max_frames;
   // Regular files are indexed and read again as frames are shown; a pipe only once, so whole.
-  const bool files = std::all_of(paths.begin(), paths.end(), [](const std::string& p) {
-    std::error_code ec;
-    return std::filesystem::is_regular_file(p, ec);
-  });
-  std::vector<DumpFrameAt> frames;
+  const auto regular = [](const std::vector<std::string>& v) {
+    return std::all_of(v.begin(), v.end(), [](const std::string& p) {
+      std::error_code ec;
+      return std::filesystem::is_regular_file(p, ec);
+    });
+  };
+  const bool files = regular(paths) && regular(contact_paths);
   std::vector<DumpFrame> whole;
+  std::vector<DumpContacts> whole_contacts;
   if (files) {
-    frames = index_dump_frames(paths, options);
+    f.frames = index_dump_frames(paths, f.options);
   } else {
-    whole = read_dump_frames(paths, options);
-    for (const DumpFrame& f : whole) frames.push_back(DumpFrameAt{f.timestep, f.time, f.elements.size(), 0, 0, 0, f.where});
+    whole = read_dump_frames(paths, f.options);
+    for (const DumpFrame& d : whole) f.frames.push_back(DumpFrameAt{d.timestep, d.time, d.elements.size(), 0, 0, 0, d.where});
   }
-  const bool cut = static_cast<std::int64_t>(frames.size()) > max_frames;
+  const bool cut = static_cast<std::int64_t>(f.frames.size()) > max_frames;
   if (cut) {
-    frames.resize(static_cast<std::size_t>(max_frames));
-    if (!files) whole.resize(frames.size());
+    f.frames.resize(static_cast<std::size_t>(max_frames));
+    if (!files) whole.resize(f.frames.size());
   }
-  std::vector<DumpContacts> contacts;
   if (!contact_paths.empty()) {
-    contacts = read_dump_contacts(contact_paths, flags.columns);
+    if (files) {
+      f.contacts = index_dump_contacts(contact_paths, flags.columns);
+    } else {
+      whole_contacts = read_dump_contacts(contact_paths, flags.columns);
+      for (const DumpContacts& c : whole_contacts)
+        f.contacts.push_back(DumpFrameAt{c.timestep, std::nullopt, static_cast<std::int64_t>(c.ids.size()), 0, 0, 0, c.where});
+    }
     // --frames N keeps the contact frames of the dump frames kept.
-    if (cut) std::erase_if(contacts, [&](const DumpContacts& c) { return c.timestep > frames.back().timestep; });
-    for (const DumpContacts& c : contacts)
-      if (!frames.empty() && !std::binary_search(frames.begin(), frames.end(), c.timestep,
-                                                 [](const auto& a, const auto& b) { return timestep_of(a) < timestep_of(b); }))
+    if (cut) {
+      const std::int64_t last = f.frames.back().timestep;
+      std::erase_if(f.contacts, [&](const DumpFrameAt& c) { return c.timestep > last; });
+      std::erase_if(whole_contacts, [&](const DumpContacts& c) { return c.timestep > last; });
+    }
+    for (const DumpFrameAt& c : f.contacts)
+      if (!f.frames.empty() && !std::binary_search(f.frames.begin(), f.frames.end(), c.timestep,
+                                                   [](const auto& a, const auto& b) { return timestep_of(a) < timestep_of(b); }))
         throw Error(c.where + ": contacts of timestep " + std::to_string(c.timestep) + ", but the dump has no frame of it (" +
-                    timesteps_text(frames) + ")");
+                    timesteps_text(f.frames) + ")");
   }
-  if (!files) return held_frames(recording_from_dumps(std::move(whole), contacts, flags.dt, flags.dumps.front()));
-  return dump_frames(std::move(paths), options, std::move(frames), std::move(contacts), flags.dt, flags.dumps.front());
+  if (!files) return held_frames(recording_from_dumps(std::move(whole), whole_contacts, flags.dt, f.name));
+  f.paths = std::move(paths);
+  f.contact_paths = std::move(contact_paths);
+  return dump_frames(std::move(f));
 }
 
 DumpFrame read_dump_input(const std::string& path, const DumpFlags& flags) {

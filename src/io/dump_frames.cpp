@@ -9,20 +9,34 @@ namespace nbscope {
 
 namespace {
 
+// One file open at a time per kind: a glob of a thousand one-frame files holds one reader, not a thousand.
+class OneCursor {
+ public:
+  DumpCursor& on(const std::vector<std::string>& paths, std::size_t file) {
+    if (cursor_ == nullptr || file_ != file) {
+      cursor_ = std::make_unique<DumpCursor>(paths[file]);
+      file_ = file;
+    }
+    return *cursor_;
+  }
+
+ private:
+  std::unique_ptr<DumpCursor> cursor_;
+  std::size_t file_ = 0;
+};
+
 class DumpFrames final : public RecordedFrames {
  public:
-  DumpFrames(std::vector<std::string> paths, const DumpOptions& options, std::vector<DumpFrameAt> at,
-             std::vector<DumpContacts> contacts, std::optional<double> dt, const std::string& name)
-      : paths_(std::move(paths)), options_(options), at_(std::move(at)), contacts_(std::move(contacts)), dt_(dt) {
-    if (at_.empty()) throw Error(name + ": no frames");
-    header_.path = name;
-    header_.has_pairs = !contacts_.empty();
-    for (std::size_t k = 0; k < contacts_.size(); ++k) by_step_.emplace(contacts_[k].timestep, k);
-    entries_.reserve(at_.size());
-    for (const DumpFrameAt& f : at_) {
-      if (header_.has_pairs && by_step_.find(f.timestep) == by_step_.end())
-        throw Error(f.where + ": timestep " + std::to_string(f.timestep) + " has no contact frame");
-      entries_.push_back(RecordedEntry{f.timestep, dump_frame_time(f.timestep, f.time, dt_), f.atoms});
+  explicit DumpFrames(DumpFrameFiles files) : f_(std::move(files)) {
+    if (f_.frames.empty()) throw Error(f_.name + ": no frames");
+    header_.path = f_.name;
+    header_.has_pairs = !f_.contacts.empty();
+    for (std::size_t k = 0; k < f_.contacts.size(); ++k) by_step_.emplace(f_.contacts[k].timestep, k);
+    entries_.reserve(f_.frames.size());
+    for (const DumpFrameAt& at : f_.frames) {
+      if (header_.has_pairs && by_step_.find(at.timestep) == by_step_.end())
+        throw Error(at.where + ": timestep " + std::to_string(at.timestep) + " has no contact frame");
+      entries_.push_back(RecordedEntry{at.timestep, dump_frame_time(at.timestep, at.time, f_.dt), at.atoms});
     }
   }
 
@@ -31,36 +45,26 @@ class DumpFrames final : public RecordedFrames {
   [[nodiscard]] bool reads_files() const override { return true; }
 
   [[nodiscard]] std::shared_ptr<const RecordedFrame> read(std::size_t index) override {
-    const DumpFrameAt& at = at_.at(index);
-    // One file open at a time: a glob of a thousand one-frame files holds one reader, not a thousand.
-    if (cursor_ == nullptr || cursor_file_ != at.file) {
-      cursor_ = std::make_unique<DumpFrameCursor>(paths_[at.file], options_);
-      cursor_file_ = at.file;
+    const DumpFrameAt& at = f_.frames.at(index);
+    DumpFrame frame = atoms_.on(f_.paths, at.file).read_frame(at, f_.options);
+    std::optional<DumpContacts> contacts;
+    if (header_.has_pairs) {
+      const DumpFrameAt& c = f_.contacts[by_step_.at(at.timestep)];
+      contacts = contacts_.on(f_.contact_paths, c.file).read_contacts(c, f_.columns);
     }
-    DumpFrame f = cursor_->read(at);
-    const DumpContacts* c = nullptr;
-    if (header_.has_pairs) c = &contacts_[by_step_.at(at.timestep)];
-    return std::make_shared<const RecordedFrame>(recorded_from_dump(std::move(f), c, dt_));
+    return std::make_shared<const RecordedFrame>(recorded_from_dump(std::move(frame), contacts ? &*contacts : nullptr, f_.dt));
   }
 
  private:
-  std::vector<std::string> paths_;
-  DumpOptions options_;
-  std::vector<DumpFrameAt> at_;
-  std::vector<DumpContacts> contacts_;
+  DumpFrameFiles f_;
   std::unordered_map<std::int64_t, std::size_t> by_step_;  // timestep -> its contact frame
-  std::optional<double> dt_;
   Recording header_;
   std::vector<RecordedEntry> entries_;
-  std::unique_ptr<DumpFrameCursor> cursor_;
-  std::size_t cursor_file_ = 0;
+  OneCursor atoms_, contacts_;
 };
 
 }  // namespace
 
-std::unique_ptr<RecordedFrames> dump_frames(std::vector<std::string> paths, const DumpOptions& options, std::vector<DumpFrameAt> at,
-                                            std::vector<DumpContacts> contacts, std::optional<double> dt, const std::string& name) {
-  return std::make_unique<DumpFrames>(std::move(paths), options, std::move(at), std::move(contacts), dt, name);
-}
+std::unique_ptr<RecordedFrames> dump_frames(DumpFrameFiles files) { return std::make_unique<DumpFrames>(std::move(files)); }
 
 }  // namespace nbscope

@@ -1,7 +1,7 @@
 // nbscope io: a dump's frames for replay, read from their files as they are asked for
 // (io/recorded_frames.hpp): the files are indexed up front (every ITEM line read and checked, the
 // rows counted, not parsed: io/lammps_dump.hpp), so a run of any length opens in the memory of one
-// frame, and a frame dropped from memory is read again where it lies.
+// frame, and a frame dropped from memory is read again where it lies. Contact lists alike.
 #pragma once
 #include <memory>
 #include <optional>
@@ -13,11 +13,22 @@
 
 namespace nbscope {
 
-// The frames `at` (index_dump_frames of `paths` with `options`) with `contacts` (empty: none) as
-// their pairs, one contact frame per dump frame by timestep, each frame's time as
-// recording_from_dumps gives it; `name` names the recording. Error naming the first frame that has
-// no contact frame. A frame's rows are parsed when it is read (their errors come then).
-std::unique_ptr<RecordedFrames> dump_frames(std::vector<std::string> paths, const DumpOptions& options, std::vector<DumpFrameAt> at,
-                                            std::vector<DumpContacts> contacts, std::optional<double> dt, const std::string& name);
+// A replay's dump files and where their frames are.
+struct DumpFrameFiles {
+  std::vector<std::string> paths;          // the `dump custom` files
+  std::vector<DumpFrameAt> frames;         // index_dump_frames of them (with `options`), cut to what is replayed
+  DumpOptions options;
+  std::vector<std::string> contact_paths;  // the `dump local` files; none: no pairs
+  std::vector<DumpFrameAt> contacts;       // index_dump_contacts of them (with `columns`)
+  ContactColumns columns;
+  std::optional<double> dt;                // seconds per timestep (recording_from_dumps)
+  std::string name;                        // names the recording
+};
+
+// The frames of `files`, each with its contact frame (by timestep) as its pairs, each frame's time
+// as recording_from_dumps gives it. Error "<path>: no frames" for none, and naming the first frame
+// without a contact frame when there are contacts. A frame's rows (and its contacts') are parsed
+// when it is read: their errors come then.
+std::unique_ptr<RecordedFrames> dump_frames(DumpFrameFiles files);
 
 }  // namespace nbscope

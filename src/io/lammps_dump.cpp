@@ -394,13 +394,17 @@ std::vector<DumpFrameAt> index_dump_frames(const std::vector<std::string>& paths
   return all;
 }
 
-DumpFrameCursor::DumpFrameCursor(std::string path, DumpOptions options) : path_(std::move(path)), options_(std::move(options)) {}
-DumpFrameCursor::~DumpFrameCursor() = default;
+DumpCursor::DumpCursor(std::string path) : path_(std::move(path)) {}
+DumpCursor::~DumpCursor() = default;
 
-DumpFrame DumpFrameCursor::read(const DumpFrameAt& at) {
+DumpText& DumpCursor::text_at(const DumpFrameAt& at) {
   // On from the last frame read when this one starts where it ended (a replay's next frame), else opened again at it.
   if (text_ == nullptr || text_->offset() != at.offset) text_ = std::make_unique<DumpText>(path_, at.offset, at.line);
-  DumpFrame f = CustomReader(*text_, options_).next_frame();
+  return *text_;
+}
+
+DumpFrame DumpCursor::read_frame(const DumpFrameAt& at, const DumpOptions& options) {
+  DumpFrame f = CustomReader(text_at(at), options).next_frame();
   if (f.timestep != at.timestep)
     throw Error(f.where + ": timestep " + std::to_string(f.timestep) + " where timestep " + std::to_string(at.timestep) +
                 " was (the file changed since it was read?)");

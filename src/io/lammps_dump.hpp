@@ -102,27 +102,35 @@ struct DumpFrameAt {
 
 // Every `dump custom` frame of `paths` located, ordered by timestep as read_dump_frames orders them,
 // at most options.max_frames: the ITEM lines read and checked as read_dump_frames checks them (the
-// same errors), the rows counted, not parsed (a bad number is met when DumpFrameCursor reads that frame).
+// same errors), the rows counted, not parsed (a bad number is met when DumpCursor reads that frame).
 std::vector<DumpFrameAt> index_dump_frames(const std::vector<std::string>& paths, const DumpOptions& options);
 
 class DumpText;
 
-// Reads the frames of one file at the places index_dump_frames found: on from the frame read last
-// when the next one is asked for, else the file opened again at the frame (a seek; gzip inflates up to it).
-class DumpFrameCursor {
+// Every `dump local` frame of `paths` located (DumpFrameAt, `atoms` its NUMBER OF ENTRIES), ordered
+// by timestep: the ITEM lines read and checked as read_dump_contacts checks them, the rows counted
+// (a bad id is met when DumpCursor::read_contacts reads that frame).
+std::vector<DumpFrameAt> index_dump_contacts(const std::vector<std::string>& paths, const ContactColumns& columns);
+
+// Reads the frames of one file at the places index_dump_frames or index_dump_contacts found: on from
+// the frame read last when the next one is asked for, else the file opened again at the frame (a
+// seek; gzip inflates up to it).
+class DumpCursor {
  public:
-  DumpFrameCursor(std::string path, DumpOptions options);
-  ~DumpFrameCursor();
-  DumpFrameCursor(const DumpFrameCursor&) = delete;
-  DumpFrameCursor& operator=(const DumpFrameCursor&) = delete;
-  // Frame `at` (of this file) parsed as read_dump_frames parses it, with the same errors.
-  DumpFrame read(const DumpFrameAt& at);
+  explicit DumpCursor(std::string path);
+  ~DumpCursor();
+  DumpCursor(const DumpCursor&) = delete;
+  DumpCursor& operator=(const DumpCursor&) = delete;
+  // `dump custom` frame `at` (of this file) parsed as read_dump_frames parses it, with the same errors.
+  DumpFrame read_frame(const DumpFrameAt& at, const DumpOptions& options);
+  // `dump local` frame `at` parsed as read_dump_contacts parses it (lammps_dump_local.cpp).
+  DumpContacts read_contacts(const DumpFrameAt& at, const ContactColumns& columns);
   // The file it reads.
   [[nodiscard]] const std::string& path() const { return path_; }
 
  private:
+  DumpText& text_at(const DumpFrameAt& at);  // the text positioned at `at`
   std::string path_;
-  DumpOptions options_;
   std::unique_ptr<DumpText> text_;
 };
 

@@ -53,18 +53,48 @@ class LocalReader {
 
   std::vector<DumpContacts> read() {
     std::vector<DumpContacts> frames;
+    DumpContacts c;
+    while (next(c, true)) frames.push_back(std::move(c));
+    return frames;
+  }
+
+  // Every frame located (DumpFrameAt: `atoms` its NUMBER OF ENTRIES, `file` 0): the ITEM lines read
+  // and checked, the rows counted, not parsed.
+  std::vector<DumpFrameAt> index() {
+    std::vector<DumpFrameAt> found;
+    DumpContacts c;
+    for (;;) {
+      const std::size_t offset = text_.offset(), line = text_.line_number() + 1;
+      if (!next(c, false)) break;
+      found.push_back(DumpFrameAt{c.timestep, std::nullopt, static_cast<std::int64_t>(c.lines.size()), 0, offset, line, c.where});
+    }
+    return found;
+  }
+
+  // The frame whose items come next, its rows parsed; Error when the text has none.
+  DumpContacts next_frame() {
+    DumpContacts c;
+    any_ = true;  // the text starts mid-file: its end is not an empty file
+    if (!next(c, true)) throw Error(text_.at() + "no contact frame here (the file changed since it was read?)");
+    return c;
+  }
+
+ private:
+  // The next frame into `c` (cleared first), its rows parsed, or with `parse` false only counted
+  // (`lines` holds their line numbers); false at the end of the text.
+  bool next(DumpContacts& c, bool parse) {
+    c = DumpContacts{};
     std::int64_t timestep = 0, entries = 0;  // valid when has_timestep, has_entries
     bool has_timestep = false, has_entries = false;
     std::size_t timestep_line = 0;
     std::string_view line;
-    bool any = false;
     while (text_.next(line)) {
       if (line.find_first_not_of(" \t") == std::string_view::npos) continue;
-      any = true;
+      any_ = true;
       const std::string_view item = dump::item_of(line);
       if (item.data() == nullptr)
         throw Error(text_.at() + "'" + excerpt(line) + "' where an ITEM line was expected" +
-                    (has_timestep || frames.empty() ? "" : " (more rows than NUMBER OF ENTRIES?)"));
+                    (has_timestep || !last_ ? "" : " (more rows than NUMBER OF ENTRIES?)"));
       if (item == "TIMESTEP") {
         timestep_line = text_.line_number();
         timestep = dump::integer_line(text_, "TIMESTEP");
@@ -86,27 +116,25 @@ class LocalReader {
       } else if (item.rfind("ENTRIES", 0) == 0 || has_timestep) {
         if (!has_timestep) throw Error(text_.at() + "ITEM: ENTRIES before ITEM: TIMESTEP");
         if (!has_entries) throw Error(text_.at() + "ITEM: ENTRIES before ITEM: NUMBER OF ENTRIES");
-        DumpContacts c;
         c.timestep = timestep;
         c.path = text_.path();
         c.where = text_.path() + ":" + std::to_string(timestep_line);
-        if (!frames.empty() && c.timestep <= frames.back().timestep)
-          throw Error(c.where + ": timestep " + std::to_string(c.timestep) + " after timestep " + std::to_string(frames.back().timestep) +
-                      " (" + frames.back().where + "): timesteps must increase within a file");
-        rows(item.substr(item.find(' ') == std::string_view::npos ? item.size() : item.find(' ')), entries, c);
-        frames.push_back(std::move(c));
-        has_timestep = has_entries = false;
+        if (last_ && c.timestep <= last_->first)
+          throw Error(c.where + ": timestep " + std::to_string(c.timestep) + " after timestep " + std::to_string(last_->first) + " (" +
+                      last_->second + "): timesteps must increase within a file");
+        last_.emplace(c.timestep, c.where);
+        rows(item.substr(item.find(' ') == std::string_view::npos ? item.size() : item.find(' ')), entries, c, parse);
+        return true;
       } else {
         throw Error(text_.at() + "unknown item 'ITEM: " + excerpt(item) + "'");
       }
     }
-    if (!any) throw Error(text_.path() + ":1: empty file (expected a LAMMPS `dump local` file)");
+    if (!any_) throw Error(text_.path() + ":1: empty file (expected a LAMMPS `dump local` file)");
     if (has_timestep) throw Error(text_.at() + "the file ends before ITEM: ENTRIES (a frame cut short)");
-    return frames;
+    return false;
   }
 
- private:
-  void rows(std::string_view names_line, std::int64_t count, DumpContacts& c) {
+  void rows(std::string_view names_line, std::int64_t count, DumpContacts& c, bool parse) {
     const std::string at = text_.at();
     const std::vector<std::string_view> words = dump::words_of(names_line);
     std::array<int, 2> col = id_columns(words, columns_, at);
@@ -114,12 +142,16 @@ class LocalReader {
     const std::vector<std::string> names(words.begin(), words.end());
     const bool guessed = col[0] < 0;
     if (guessed) col = {6, 7};
-    c.ids.reserve(static_cast<std::size_t>(std::min<std::int64_t>(count, 1 << 20)));
+    if (parse) c.ids.reserve(static_cast<std::size_t>(std::min<std::int64_t>(count, 1 << 20)));
     for (std::int64_t k = 0; k < count; ++k) {
       std::string_view line;
       if (!text_.next(line) || dump::item_of(line).data() != nullptr)
         throw Error(text_.at() + "timestep " + std::to_string(c.timestep) + " has " + std::to_string(k) +
                     " rows, NUMBER OF ENTRIES says " + std::to_string(count));
+      if (!parse) {
+        c.lines.push_back(static_cast<std::int64_t>(text_.line_number()));
+        continue;
+      }
       const char* p = line.data();
       std::string_view w;
       std::array<std::int64_t, 2> ids{};
@@ -150,6 +182,8 @@ class LocalReader {
 
   DumpText& text_;
   const ContactColumns& columns_;
+  bool any_ = false;  // a line that is not blank was read
+  std::optional<std::pair<std::int64_t, std::string>> last_;  // the timestep of the frame before, and its where
 };
 
 std::vector<DumpContacts> merge(std::vector<DumpContacts> all) {
@@ -166,6 +200,27 @@ std::vector<DumpContacts> read_dump_contacts(const std::vector<std::string>& pat
     for (auto& c : LocalReader(text, columns).read()) all.push_back(std::move(c));
   }
   return merge(std::move(all));
+}
+
+std::vector<DumpFrameAt> index_dump_contacts(const std::vector<std::string>& paths, const ContactColumns& columns) {
+  std::vector<DumpFrameAt> all;
+  for (std::size_t k = 0; k < paths.size(); ++k) {
+    DumpText text(paths[k]);
+    for (DumpFrameAt& at : LocalReader(text, columns).index()) {
+      at.file = k;
+      all.push_back(std::move(at));
+    }
+  }
+  dump::order_by_timestep(all);
+  return all;
+}
+
+DumpContacts DumpCursor::read_contacts(const DumpFrameAt& at, const ContactColumns& columns) {
+  DumpContacts c = LocalReader(text_at(at), columns).next_frame();
+  if (c.timestep != at.timestep)
+    throw Error(c.where + ": timestep " + std::to_string(c.timestep) + " where timestep " + std::to_string(at.timestep) +
+                " was (the file changed since it was read?)");
+  return c;
 }
 
 std::vector<DumpContacts> parse_dump_contacts(const std::string& text, const std::string& where, const ContactColumns& columns) {

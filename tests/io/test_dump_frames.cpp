@@ -135,23 +135,39 @@ TEST(DumpJump, SmallGzipAndOutOfOrderFilesAreReadInOrder) {
 
 // ---- a dump's frames as replay reads them ---------------------------------------------------
 
-// Two files of frames, each frame with a contact (atoms 1 and 2) in a dump local text.
+// Two files of frames, and two of their contacts (atoms 1 and 2, then 2 and 3 from the second frame on).
 struct TwoFiles {
   std::string dir = temp_dir("frames");
   std::vector<std::string> paths = {dir + "/a.dump", dir + "/b.dump"};
+  std::vector<std::string> contact_paths = {dir + "/a.local", dir + "/b.local"};
   std::vector<DumpContacts> contacts;
   TwoFiles() {
-    std::string a, b, local;
+    std::string a, b, local[2];
     for (int f = 0; f < 6; ++f) {
       std::string rows;
       for (int k = 3 + f; k >= 1; --k) rows += std::to_string(k) + " 1 0." + std::to_string(k) + " 0.5 0.5 0.0" + std::to_string(f + 1) + "\n";
       (f % 2 == 0 ? a : b) += frame(f * 100, 3 + f, kColumns, rows);
-      local += "ITEM: TIMESTEP\n" + std::to_string(f * 100) + "\nITEM: NUMBER OF ENTRIES\n1\nITEM: BOX BOUNDS pp pp pp\n0 1\n0 1\n0 1\n"
-               "ITEM: ENTRIES id1 id2\n1 2\n";
+      local[f < 3 ? 0 : 1] += "ITEM: TIMESTEP\n" + std::to_string(f * 100) + "\nITEM: NUMBER OF ENTRIES\n" + (f == 0 ? "1" : "2") +
+                              "\nITEM: BOX BOUNDS pp pp pp\n0 1\n0 1\n0 1\nITEM: ENTRIES id1 id2\n1 2\n" + (f == 0 ? "" : "3 2\n");
     }
     write_file(paths[0], a);
     write_file(paths[1], b);
-    contacts = parse_dump_contacts(local, "pairs.local", {});
+    write_file(contact_paths[0], local[0]);
+    write_file(contact_paths[1], local[1]);
+    contacts = read_dump_contacts(contact_paths, {});
+  }
+  // The files as replay reads them, with contacts or without.
+  [[nodiscard]] DumpFrameFiles as_shown(bool with_contacts) const {
+    DumpFrameFiles f;
+    f.paths = paths;
+    f.frames = index_dump_frames(paths, {});
+    if (with_contacts) {
+      f.contact_paths = contact_paths;
+      f.contacts = index_dump_contacts(contact_paths, {});
+    }
+    f.dt = 0.5;
+    f.name = "run";
+    return f;
   }
   ~TwoFiles() { std::filesystem::remove_all(dir); }
 };
@@ -159,7 +175,7 @@ struct TwoFiles {
 TEST(DumpFrames, EveryFrameInAnyOrderIsTheFrameOfTheWholeRecording) {
   const TwoFiles files;
   const Recording whole = recording_from_dumps(read_dump_frames(files.paths, {}), files.contacts, 0.5, "run");
-  auto frames = dump_frames(files.paths, {}, index_dump_frames(files.paths, {}), files.contacts, 0.5, "run");
+  auto frames = dump_frames(files.as_shown(true));
   ASSERT_EQ(frames->entries().size(), whole.frames.size());
   EXPECT_TRUE(frames->reads_files());
   EXPECT_TRUE(frames->header().has_pairs);
@@ -190,12 +206,27 @@ TEST(DumpFrames, ABadRowIsMetWhenItsFrameIsReadAndAChangedFileIsRefused) {
   write_file(files.paths[1], b);
   const std::string in_order = error_of([&] { read_dump_frames(files.paths, {}); });
   ASSERT_FALSE(in_order.empty());
-  auto frames = dump_frames(files.paths, {}, index_dump_frames(files.paths, {}), {}, std::nullopt, "run");
+  auto frames = dump_frames(files.as_shown(false));
   EXPECT_NO_THROW((void)frames->read(1));
   EXPECT_EQ(error_of([&] { (void)frames->read(3); }), in_order) << "the same message, when frame 3 is read";
   // The file cut after it was indexed: the frame is not where the index says.
   write_file(files.paths[0], frame(0, 3, kColumns, "1 1 0.1 0.5 0.5 0.01\n2 1 0.2 0.5 0.5 0.01\n3 1 0.3 0.5 0.5 0.01\n"));
   EXPECT_NE(error_of([&] { (void)frames->read(4); }).find("changed since it was read"), std::string::npos);
+}
+
+TEST(DumpFrames, AContactFramesBadIdIsMetWhenItsFrameIsRead) {
+  const TwoFiles files;
+  std::string local;
+  for (int f = 3; f < 6; ++f)
+    local += "ITEM: TIMESTEP\n" + std::to_string(f * 100) + "\nITEM: NUMBER OF ENTRIES\n2\nITEM: BOX BOUNDS pp pp pp\n0 1\n0 1\n0 1\n"
+             "ITEM: ENTRIES id1 id2\n1 2\n" + (f == 4 ? "3 two\n" : "3 2\n");
+  write_file(files.contact_paths[1], local);
+  const std::string whole = error_of([&] { read_dump_contacts(files.contact_paths, {}); });
+  ASSERT_FALSE(whole.empty());
+  auto frames = dump_frames(files.as_shown(true));
+  EXPECT_NO_THROW((void)frames->read(3));
+  EXPECT_EQ(error_of([&] { (void)frames->read(4); }), whole) << "the same message, when frame 4 is read";
+  EXPECT_NO_THROW((void)frames->read(5));
 }
 
 // ---- the source that keeps frames within a budget --------------------------------------------
