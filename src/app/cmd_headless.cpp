@@ -415,6 +415,8 @@ int run_headless_loop(const HeadlessOptions& o) {
   Progress progress(!o.quiet && ::isatty(STDERR_FILENO) == 1, frames);
   bool rewound = false;
   for (std::int64_t k = 0; k < frames; ++k) {
+    // The screenshot's lists and stepper read the last frame's trace: its one detection records it.
+    if (view && k + 1 == frames) loop.pipeline().record_traces(true);
     if (!(o.replay && k == 0)) loop.step();  // recorded frame 0 was detected and checked on load
     add_frame();
     if (recorder) {

@@ -91,6 +91,8 @@ class LoopPipeline {
  public:
   // A view of `state` (FrameLoop makes it).
   explicit LoopPipeline(FrameLoopState& state) : s_(&state) {}
+  // Each setter below that changes something detects the frame shown again (each detector called
+  // once more); one that changes nothing calls no detector.
   // Switches the detector; throws Error (old one kept) for an unknown or 3D-only name, or `recorded`
   // where it has no pairs or the fault cannot act on them.
   void set_algorithm(std::string_view name);
@@ -125,6 +127,9 @@ class LoopPipeline {
   // and kept until the frame or the detector changes; its `refusal` says why it holds no operations
   // (too many elements, a detector without a trace). Null without a scene.
   [[nodiscard]] std::shared_ptr<const FrameTrace> frame_trace();
+  // Whether the frames to come record their trace in their one detection (Pipeline::set_record_traces),
+  // so that frame_trace() calls the detector no second time. Re-runs nothing.
+  void record_traces(bool on);
 
  private:
   FrameLoopState* s_;

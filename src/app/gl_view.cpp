@@ -338,6 +338,8 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   cost_.trace_ms = 0;
   auto t0 = Clock::now();
   const bool stepper_wants = stepper_panels_open() && stepper_->wants_trace(loop.source().frame(), session.paused);
+  // The frames to come record it in their one detection, while it is wanted: a plugin is called once a frame.
+  loop.pipeline().record_traces(state_.overlays.lists || stepper_wants);
   const std::shared_ptr<const FrameTrace> trace = state_.overlays.lists || stepper_wants ? loop.pipeline().frame_trace() : nullptr;
   cost_.trace_ms = ms_since(t0);
   update_lists(loop, trace);

@@ -69,10 +69,17 @@ void Pipeline::clear_reports() {
   for (LaneResult& lane : result_.lanes) lane.report = FrameReport{};
 }
 
-void Pipeline::detect(Lane& lane, LaneResult& out, const Elements& input, const std::string& where) {
+void Pipeline::detect(Lane& lane, LaneResult& out, const Elements& input, const std::string& where, bool traced) {
   try {
     const auto t0 = Clock::now();
-    lane.detector->detect(input, detect_options_, out.pairs);
+    std::shared_ptr<const FrameTrace> trace;
+    if (traced) trace = trace_frame(*lane.detector, input, detect_options_, detect_options_.frame, make_grid(input, detect_options_.grid));
+    if (trace && trace->detected) {
+      out.pairs = trace->pairs;  // the traced run is the frame's detection: the detector is called once
+      result_.trace = std::move(trace);
+    } else {
+      lane.detector->detect(input, detect_options_, out.pairs);  // too large to record: untraced (the trace is made on request)
+    }
     sort_pairs(out.pairs);
     const Grid* own = lane.detector->last_grid();
     out.grid = own != nullptr ? *own : make_grid(input, detect_options_.grid);
@@ -119,7 +126,7 @@ const FrameResult& Pipeline::run(const FrameInput& in) {
   result_.time = source.time();
   for (std::size_t k = 0; k < lanes_.size(); ++k) {
     if (lanes_[k].recorded) lanes_[k].recorded->set_pairs(in.given_pairs);
-    detect(lanes_[k], result_.lanes[k], input, in.where);
+    detect(lanes_[k], result_.lanes[k], input, in.where, k == 0 && record_traces_ && !lanes_[k].recorded);
   }
 
   if (!options_.checks) {

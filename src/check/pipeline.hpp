@@ -82,9 +82,15 @@ class Pipeline {
   const FrameResult& run(const FrameInput& in);
   // The last run's result.
   [[nodiscard]] const FrameResult& result() const { return result_; }
-  // Lane 0's traced run on what it was given this frame (`source` is the frame's, as at run()):
-  // made on the first request and kept in the result until the next run.
+  // Lane 0's traced run on what it was given this frame (`source` is the frame's, as at run()): the
+  // frame's own detection when traces are recorded, else made on the first request (the detector
+  // called once more, traced) and kept in the result until the next run.
   std::shared_ptr<const FrameTrace> trace(const FrameSource& source);
+  // From the next run on, lane 0's detection records its trace (on one thread) and is the frame's
+  // only call of the detector: what the window does while its lists overlay or stepper is open, so a
+  // plugin is not called twice for one frame. Detects nothing now.
+  void set_record_traces(bool on) { record_traces_ = on; }
+  [[nodiscard]] bool record_traces() const { return record_traces_; }
 
  private:
   struct Lane {
@@ -93,11 +99,13 @@ class Pipeline {
     std::vector<CellIndex> grid_cells;          // the grid's cells when the detector has its own (the cells check)
     explicit Lane(std::string_view algorithm);
   };
-  void detect(Lane& lane, LaneResult& out, const Elements& input, const std::string& where);
+  // Runs `lane` on `input` into `out`; traced (into result_.trace) when `traced`.
+  void detect(Lane& lane, LaneResult& out, const Elements& input, const std::string& where, bool traced);
   // What the detectors are given this frame.
   const Elements& detector_input(const FrameSource& source) const { return detected_on_source_ ? source.elements() : detected_on_; }
 
   PipelineOptions options_;
+  bool record_traces_ = false;
   DetectOptions detect_options_;
   std::vector<Lane> lanes_;                      // parallel to result_.lanes
   std::vector<std::string> comparison_names_;

@@ -32,6 +32,7 @@ struct FrameTrace {
   PairList pairs;                  // the traced run's pairs, unsorted (before any fault)
   std::vector<const char*> pseudocode;  // TraceEvent::line indexes it
   std::string refusal;             // why nothing was recorded, in words for the panels
+  bool detected = false;           // the detector ran (`pairs` is its answer), recorded or not
 };
 
 // An empty trace of frame `frame` by `algorithm` with a fresh serial, for a caller to fill `refusal`.

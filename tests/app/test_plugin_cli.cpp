@@ -5,7 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <string>
+#include <vector>
 
 #include "support/paths.hpp"
 #include "support/run_cli.hpp"
@@ -69,6 +73,79 @@ TEST(PluginCli, WindowRunsThePluginAndStopsOnItsBreach) {
               "' --algorithm test-self-pair",
           testcli::on_display());
   expect_error(r, lib + " (test-self-pair): frame 0: add_pair(0, 0): an element paired with itself");
+}
+#endif
+
+// One call a frame (docs/plugins.md, "When nbscope calls it"): a stateful plugin that refuses a frame
+// given twice in a row, and logs every call, runs through headless, replay, pairs, a headless
+// screenshot with the lists overlay and the window with it; only --repeat calls it twice, as it says.
+class CallLog {
+ public:
+  explicit CallLog(const std::string& name) : path_(testcli::scratch_dir("plugin_calls") + "/" + name) {
+    std::remove(path_.c_str());
+    ::setenv("NBSCOPE_TEST_CALLS", path_.c_str(), 1);
+  }
+  ~CallLog() { ::unsetenv("NBSCOPE_TEST_CALLS"); }
+  // The frames of the calls, in order.
+  [[nodiscard]] std::vector<long long> frames() const {
+    std::vector<long long> out;
+    std::ifstream in(path_);
+    for (long long f = 0; in >> f;) out.push_back(f);
+    return out;
+  }
+
+ private:
+  std::string path_;
+};
+
+// True when no frame was given twice in a row, and every frame 0..last once.
+void expect_once_each(const std::vector<long long>& calls, long long last, const std::string& what) {
+  std::vector<long long> want(static_cast<std::size_t>(last + 1));
+  for (long long f = 0; f <= last; ++f) want[static_cast<std::size_t>(f)] = f;
+  EXPECT_EQ(calls, want) << what;
+}
+
+TEST(PluginCli, AStatefulPluginIsCalledOncePerFrame) {
+  const std::string lib = plugin("once_per_frame");
+  const std::string with = " --detector-lib '" + lib + "' --algorithm test-once-per-frame";
+  {
+    const CallLog log("headless");
+    const auto r = run("headless --scene '" + scene("default") + "' --frames 10 --quiet" + with);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    expect_once_each(log.frames(), 10, "headless");
+  }
+  {
+    const CallLog log("screenshot");
+    const std::string dir = testcli::scratch_dir("plugin_once");
+    const auto r = run("headless --scene '" + scene("default") + "' --frames 4 --quiet --overlays +lists --screenshot '" + dir + "/s.png'" + with);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    expect_once_each(log.frames(), 4, "headless --screenshot with the lists overlay");
+  }
+  const auto once = run("pairs --input '" + nine_csv() + "'" + with);
+  EXPECT_EQ(once.exit_code, 0) << once.err;
+  const auto twice = run("pairs --input '" + nine_csv() + "' --repeat 2" + with);
+  EXPECT_EQ(twice.exit_code, 2);
+  EXPECT_NE(twice.err.find("frame 0: nbscope_detect returned 1: called twice for this frame"), std::string::npos) << twice.err;
+}
+
+#ifdef NBSCOPE_TEST_GUI
+TEST(PluginCli, AStatefulPluginIsCalledOncePerFrameInTheWindowWithItsLists) {
+  NBSCOPE_SKIP_WITHOUT_XVFB();
+  const CallLog log("window");
+  const std::string dir = testcli::scratch_dir("plugin_once_window");
+  const auto r = run("gui --scene '" + scene("default") + "' --frames 5 --overlays +lists --screenshot '" + dir + "/w.png' --detector-lib '" +
+                         plugin("once_per_frame") + "' --algorithm test-once-per-frame",
+                     testcli::on_display());
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  const std::vector<long long> calls = log.frames();
+  // Frame 0 was detected before the window asked for its lists (a documented second call); from
+  // frame 1 on each frame's one detection records them.
+  ASSERT_GE(calls.size(), 6u);
+  for (std::size_t k = 1; k < calls.size(); ++k) {
+    if (calls[k] != 0) {
+      EXPECT_NE(calls[k], calls[k - 1]) << "frame " << calls[k] << " given twice in a row";
+    }
+  }
 }
 #endif
 

@@ -11,9 +11,10 @@
  *   PLUGIN_LOAD_CRASH a constructor crashes (dlopen)  PLUGIN_LOAD_HANG   a constructor never returns
  *   PLUGIN_DESCRIBE_HANG never says what it is        PLUGIN_RELEASE_CRASH / _HANG   in nbscope_release
  *   PLUGIN_OWN_BYTES_CRASH / _HANG in nbscope_own_bytes  PLUGIN_LONG_FAIL  fails on frame 0 with 1 MB of text
- *   PLUGIN_NULL_ARRAY_NAME declares an array named NULL
+ *   PLUGIN_NULL_ARRAY_NAME declares an array named NULL  PLUGIN_ONCE_PER_FRAME  refuses a frame given twice in a row
  * PLUGIN_NAME is the detector's registry name. */
 #include <nbscope/detector.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -77,6 +78,8 @@ NBSCOPE_EXPORT const nbscope_detector_info *nbscope_detector_describe(void) {
 typedef struct state {
   int32_t *cell; /* n x dim integerised coordinates */
   int64_t capacity;
+  int64_t calls;      /* nbscope_detect calls so far */
+  int64_t last_frame; /* the frame of the last call */
 } state;
 
 static int32_t integerise(double v, double origin, double d, int64_t n) {
@@ -142,6 +145,24 @@ NBSCOPE_EXPORT int DETECT_SYMBOL(void **state_pointer, const nbscope_frame *f, c
     s->cell = grown;
     s->capacity = f->n * f->dim;
   }
+#if defined(PLUGIN_ONCE_PER_FRAME)
+  /* Each call's frame appended to the file NBSCOPE_TEST_CALLS names (a test reads it), and a frame
+   * given twice in a row refused, as a stateful detector would suffer it (nbscope must not). */
+  {
+    const char *log = getenv("NBSCOPE_TEST_CALLS");
+    FILE *calls = log != NULL ? fopen(log, "a") : NULL;
+    if (calls != NULL) {
+      fprintf(calls, "%lld\n", (long long)f->frame);
+      fclose(calls);
+    }
+  }
+  if (s->calls > 0 && f->frame == s->last_frame) {
+    out->fail(out->ctx, "called twice for this frame");
+    return 1;
+  }
+#endif
+  s->calls += 1;
+  s->last_frame = f->frame;
 #if defined(PLUGIN_CRASH)
   if (f->frame == 3) crash();
 #endif
