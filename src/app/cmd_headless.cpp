@@ -344,8 +344,9 @@ RunReport start_report(const HeadlessOptions& o, const FrameLoop& loop, const st
   report.reference_policy = loop.pipeline().reference_policy();
   report.scope_note = LoopPipeline::scope_note();
   report.note = note;
-  // A recording runs its frames (at most --frames); frame 0 is one of them. A scene runs frames 1..N.
-  report.frames_requested = o.replay ? loop.source().recorded_frames() : o.frames;
+  // A recording runs its frames (at most --frames); a scene frames 0..N (--frames N steps). Frame 0
+  // is detected and checked like every other, in the window and here: one numbering (issue 37).
+  report.frames_requested = o.replay ? loop.source().recorded_frames() : o.frames + 1;
   for (const std::string& name : names) report.runs.push_back(AlgorithmRun{name});
   return report;
 }
@@ -390,7 +391,6 @@ int run_headless_loop(const HeadlessOptions& o) {
   std::vector<std::uint64_t> first_pass;
   Divergence second_pass;  // against the first, as a resume checks against the history (physics/resume.hpp)
   const auto save_at_to = [&] { at_to = AtTo{report.runs, writer ? writer->mark() : RunReportWriter::Mark{}}; };
-  if (o.rewind && o.rewind->to == loop.source().frame()) save_at_to();
 
   // The recording: the source's pinned grid, then frame 0 (the initial poses, detected before any step) and every step.
   std::unique_ptr<FrameRecorder> recorder;
@@ -405,7 +405,6 @@ int run_headless_loop(const HeadlessOptions& o) {
                                         : "headless --record: scene " + o.scene;
     recorder = std::make_unique<FrameRecorder>(*o.record, loop, std::string("nbscope ") + kVersion + " " + from);
     interrupts.emplace();
-    if (!o.replay) recorder->write(loop);  // a recording's frame 0 is the loop's first (it runs no step)
   }
   const auto check_interrupt = [&] {
     if (stop_signal() != 0)
@@ -417,7 +416,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   for (std::int64_t k = 0; k < frames; ++k) {
     // The screenshot's lists and stepper read the last frame's trace: its one detection records it.
     if (view && k + 1 == frames) loop.pipeline().record_traces(true);
-    if (!(o.replay && k == 0)) loop.step();  // recorded frame 0 was detected and checked on load
+    if (k > 0) loop.step();  // the first frame was detected and checked on load
     add_frame();
     if (recorder) {
       check_interrupt();
@@ -442,7 +441,7 @@ int run_headless_loop(const HeadlessOptions& o) {
       report.runs = at_to->runs;
       if (writer) writer->back_to(at_to->mark);
       rewound = true;
-      k = o.rewind->to - 1;  // the frames after TO run again
+      k = o.rewind->to;  // the frames after TO run again (frame k is the loop's k-th)
       if (view) view->follow(loop);  // back at TO before the frames after it run again
     }
   }

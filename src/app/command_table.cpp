@@ -175,7 +175,7 @@ CommandSpec headless_command() {
        "+-1e6 m, stops the run with exit 2 naming the body and the frame."},
       {{"options",
         {{"--scene", "FILE", "", "the scene to run (required)"},
-         {"--frames", "N", "600", "the frames to run"},
+         {"--frames", "N", "600", "the steps to run: frames 0..N, frame 0 (the initial poses) checked and counted too"},
          {"--algorithm", "NAME[,NAME...]|all", "the --detector-lib detectors, else nbs", "the detectors run and checked on the same frames"},
          {"--report", "OUT.json", "", "writes per-frame counts, timings and every violation as JSON"},
          {"--inject-fault", "NAME", "",

@@ -56,10 +56,10 @@ TEST_P(Rewind, ResumedRunEqualsTheStraightRunFrameByFrame) {
   const json a = json::parse(read_text(dir + "/straight.json"));
   const json b = json::parse(read_text(dir + "/rewound.json"));
   const auto ha = hashes_of(a), hb = hashes_of(b);
-  ASSERT_EQ(ha.size(), static_cast<std::size_t>(kRewindFrames));
-  ASSERT_EQ(hb.size(), static_cast<std::size_t>(kRewindFrames));
+  ASSERT_EQ(ha.size(), static_cast<std::size_t>(kRewindFrames + 1));  // frames 0..N
+  ASSERT_EQ(hb.size(), static_cast<std::size_t>(kRewindFrames + 1));
   for (std::size_t k = 0; k < ha.size(); ++k) {
-    ASSERT_EQ(ha[k].first, static_cast<std::int64_t>(k + 1));
+    ASSERT_EQ(ha[k].first, static_cast<std::int64_t>(k));
     ASSERT_EQ(hb[k].first, ha[k].first);
     ASSERT_EQ(hb[k].second, ha[k].second) << "frame " << ha[k].first;
     ASSERT_EQ(ha[k].second.size(), 16u);
@@ -104,7 +104,7 @@ TEST_P(StopAtViolation, StopsOnTheFrameTheStraightRunReportsFirst) {
       << stopped.out;
   const json b = json::parse(read_text(dir + "/stopped.json"));
   EXPECT_EQ(b["stopped_at_violation"], first);
-  ASSERT_EQ(b["runs"][0]["frames"].size(), static_cast<std::size_t>(first));
+  ASSERT_EQ(b["runs"][0]["frames"].size(), static_cast<std::size_t>(first + 1));  // frames 0..first
   EXPECT_EQ(b["runs"][0]["frames"].back()["frame"], first);
   EXPECT_GT(b["runs"][0]["frames"].back()["violations"].size(), 0u);
 #ifdef NBSCOPE_TEST_GUI
@@ -121,7 +121,7 @@ INSTANTIATE_TEST_SUITE_P(Faults, StopAtViolation,
 TEST(StopAtViolationClean, RunsEveryFrameAndExitsZero) {
   const auto r = run("headless --scene '" + scene("default") + "' --frames 20 --stop-at-violation");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find("20 frames"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("21 frames"), std::string::npos) << r.out;  // frames 0..20
   EXPECT_NE(r.out.find("no violation to stop at"), std::string::npos) << r.out;
 }
 
