@@ -61,7 +61,8 @@ std::string violation_text(const Violation& v, const LoopSource& source) {
 
 // ": A==R (2, 11) given twice in the recorded pairs" for the first violation `run` lists.
 std::string first_violation_text(const AlgorithmRun& run, const LoopSource& source) {
-  return run.first_listed ? ": " + violation_text(*run.first_listed, source) : "";
+  if (!run.first_listed) return "";
+  return ": " + violation_text(*run.first_listed, source) + (run.located ? "; located: " + run.located->text : "");
 }
 
 // The one line on stdout: what ran, whether every invariant held, where it broke, the mean timings.
@@ -303,6 +304,8 @@ std::unique_ptr<FrameLoop> open_headless_loop(const HeadlessOptions& o, std::vec
   }
   auto owned = std::make_unique<FrameLoop>(lo);  // an unknown algorithm fails here, before the scene is read
   FrameLoop& loop = *owned;
+  // A plugin's violation is located in the trace of its frame's one detection, not of a second call.
+  if (traces_every_frame(lo.algorithm)) loop.pipeline().record_traces(true);
   for (const std::string& name : names)
     if (name != kRecordedAlgorithm) make_detector(name);
   if (o.replay) loop.load_recording(read_replay_input(o));
@@ -418,6 +421,8 @@ int run_headless_loop(const HeadlessOptions& o) {
     if (view && k + 1 == frames) loop.pipeline().record_traces(true);
     if (k > 0) loop.step();  // the first frame was detected and checked on load
     add_frame();
+    AlgorithmRun& own = report.runs.front();  // the loop's own algorithm, the one traced
+    if (own.first_listed && !own.located) own.located = locate_violation(loop, *own.first_listed);
     if (recorder) {
       check_interrupt();
       recorder->write(loop);

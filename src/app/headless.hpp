@@ -10,6 +10,7 @@
 #include "app/dump_input.hpp"
 #include "app/view_options.hpp"
 #include "check/faults.hpp"
+#include "check/report.hpp"
 #include "core/scaling.hpp"
 
 namespace nbscope {
@@ -71,6 +72,13 @@ void go_to_violation(FrameLoop& loop, std::int64_t n, HeadlessView* view);
 // --rewind FROM:TO at frame FROM: back to kept frame TO, the world re-simulated to it, the resume's
 // divergence into report.rewind (the caller puts the report back as it stood after frame TO).
 void rewind_for_flag(FrameLoop& loop, const HeadlessOptions::Rewind& rewind, RunReport& report);
+// Violation `v` of the frame `loop` shows, followed to the operation of its traced detection that
+// decided it (check/diagnosis.hpp); none for another frame or a detection that records nothing
+// (recorded pairs, box2d, over 50,000 elements). headless_locate.cpp.
+std::optional<LocatedViolation> locate_violation(FrameLoop& loop, const Violation& v);
+// True when `algorithm` is a plugin that traces: a headless run records every frame's trace in its
+// one detection, so that locating a violation calls the plugin no second time for that frame.
+bool traces_every_frame(const std::string& algorithm);
 // "FROM:TO" of --rewind; Error names the flag and what is wrong.
 HeadlessOptions::Rewind parse_rewind(const std::string& text);
 

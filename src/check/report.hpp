@@ -163,6 +163,17 @@ struct TimingStats {
   [[nodiscard]] double mean(std::int64_t frames) const { return frames > 0 ? total / static_cast<double>(frames) : 0; }
 };
 
+// Where a run's first listed violation was decided in its frame's traced detection (check/diagnosis.hpp).
+struct LocatedViolation {
+  std::int64_t frame = 0;
+  std::optional<std::int64_t> operation;  // 1-based, as the Stepper counts; none when the trace says nothing of the pair
+  std::int64_t operations = 0;            // the trace's length
+  std::string kind;                       // the operation's kind: "test-pair", "push", "visit-cell", ...
+  int line = -1;                          // its pseudocode line, from 1 (-1: none)
+  std::string pseudocode;                 // that line's text
+  std::string text;                       // "operation 81 of 14929: ...", as the window's Violations panel says it
+};
+
 // One algorithm's frames in a headless run, aggregated as they come. It holds nothing per frame, so
 // a run of any length takes the same memory; each frame's own report is streamed to --report as it
 // is made (io/report_json.hpp).
@@ -179,6 +190,7 @@ struct AlgorithmRun {
   std::int64_t frames_with_violations = 0;
   std::optional<std::int64_t> first_violation_frame;
   std::optional<Violation> first_listed;    // the first violation a frame lists
+  std::optional<LocatedViolation> located;  // where first_listed was decided (the loop's own algorithm, traced)
   std::map<std::string, std::int64_t> references;  // frames per reference detector's name
   std::int64_t last_elements = 0;           // elements of the last frame
   std::int64_t boundary = 0, ties = 0;      // recorded pairs at the boundary (FrameCounts::boundary, ties), over the frames

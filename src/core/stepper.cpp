@@ -11,15 +11,7 @@ namespace {
 // Fewest events between checkpoints: below this a walk is as cheap as a checkpoint copy.
 constexpr std::size_t kMinCheckpointInterval = 1024;
 
-const char* op_name(TraceOp op) {
-  // No exhaustive switch: detectors may add operations, and they are all just "events" here.
-  if (op == TraceOp::Phase) return "phase";
-  if (op == TraceOp::Push) return "push";
-  if (op == TraceOp::Clear) return "clear";
-  if (op == TraceOp::VisitCell) return "visit-cell";
-  if (op == TraceOp::TestPair) return "test-pair";
-  return "write";
-}
+const char* op_name(TraceOp op) { return trace_op_name(op); }
 }  // namespace
 
 bool breakpoint_matches(const Breakpoint& b, const TraceEvent& e) {

@@ -5,6 +5,16 @@
 
 namespace nbscope {
 
+const char* trace_op_name(TraceOp op) {
+  // No exhaustive switch: detectors may add operations, and they are all just "writes" here.
+  if (op == TraceOp::Phase) return "phase";
+  if (op == TraceOp::Push) return "push";
+  if (op == TraceOp::Clear) return "clear";
+  if (op == TraceOp::VisitCell) return "visit-cell";
+  if (op == TraceOp::TestPair) return "test-pair";
+  return "write";
+}
+
 void TraceLog::reset() {
   events_.clear();
   arrays_.clear();

@@ -27,6 +27,9 @@ enum class TraceOp : std::uint8_t {
   Set,        // one array entry set: an integerised coordinate, a sorted position, a tree link
 };
 
+// "phase", "push", "clear", "visit-cell", "test-pair" or "write": an operation's kind in messages and reports.
+[[nodiscard]] const char* trace_op_name(TraceOp op);
+
 // One integer written into one traced array.
 struct ArrayWrite {
   std::int32_t array = -1;  // index into TraceLog::arrays()

@@ -99,6 +99,18 @@ json check_parts_timing_json(const AlgorithmRun& run) {
   return parts;
 }
 
+// The first listed violation's operation, or null when it was not located.
+json located_json(const std::optional<LocatedViolation>& l) {
+  if (!l) return nullptr;
+  return {{"frame", l->frame},
+          {"operation", l->operation ? json(*l->operation) : json(nullptr)},
+          {"operations", l->operations},
+          {"kind", l->kind.empty() ? json(nullptr) : json(l->kind)},
+          {"line", l->line > 0 ? json(l->line) : json(nullptr)},
+          {"pseudocode", l->pseudocode.empty() ? json(nullptr) : json(l->pseudocode)},
+          {"text", l->text}};
+}
+
 json run_json(const AlgorithmRun& run) {
   json by_invariant = json::object();
   for (int k = 0; k < kInvariantCount; ++k) by_invariant[invariant_name(static_cast<Invariant>(k))] = run.broken[static_cast<std::size_t>(k)];
@@ -110,7 +122,8 @@ json run_json(const AlgorithmRun& run) {
             {"by_invariant", by_invariant},
             {"frames_with_violations", run.frames_with_violations},
             {"first_frame", run.first_violation_frame ? json(*run.first_violation_frame) : json(nullptr)},
-            {"listed", run.listed}}},
+            {"listed", run.listed},
+            {"located", located_json(run.located)}}},
           {"references_used", run.references},
           {"timing_ms",
            {{"physics", timing_json(run.physics, run.frames_run)},

@@ -4,6 +4,7 @@
 #include <exception>
 #include <iterator>
 
+#include "check/diagnosis.hpp"
 #include "core/error.hpp"
 
 namespace nbscope::ui {
@@ -57,11 +58,6 @@ void StepperSession::apply_target(const SimView& sim) {
   target_.reset();
   const bool book = book_numbering;
   const auto id = [&](std::int64_t k) { return std::to_string(shown(k, book)); };
-  const auto cell_text = [&](const std::array<std::int32_t, 3>& c) {
-    std::string out = "(" + id(c[0]) + "," + id(c[1]);
-    if (c[2] >= 0) out += "," + id(c[2]);
-    return out + ")";
-  };
   if (!captured_) {
     target_status_ = "stepper: " + (message_.empty() ? std::string("nothing recorded for frame ") + std::to_string(t.frame) : message_);
     return;
@@ -71,59 +67,18 @@ void StepperSession::apply_target(const SimView& sim) {
     target_status_ = "stepper: the pair is not among this frame's elements";
     return;
   }
-  PairCells cells;
-  for (int a = 0; a < e.dim; ++a) {
-    cells.i[static_cast<std::size_t>(a)] = trace_->grid.cell(e.axis(a)[t.pair.i], a);
-    cells.j[static_cast<std::size_t>(a)] = trace_->grid.cell(e.axis(a)[t.pair.j], a);
-    if (trace_->grid.periodic[a]) cells.wrap[static_cast<std::size_t>(a)] = trace_->grid.n[a];
-  }
-  const bool stray = t.invariant == Invariant::Cells && t.pair.i != t.pair.j;  // (stray, finder): a walked list
-  const PairLocation at = stray ? locate_stray(stepper_.events(), t.pair.i, t.pair.j, cells.i, e.dim)
-                                : locate_pair(stepper_.events(), t.pair.i, t.pair.j, cells, e.dim);
-  target_location_ = at;
-  if (at.event) stepper_.seek(*at.event + 1);
+  Violation v;
+  v.frame = t.frame;
+  v.pair = t.pair;
+  v.invariant = t.invariant;
+  v.what = t.what;
+  const Diagnosis d = diagnose(v, stepper_.events(), trace_->grid, e, algorithm_, trace_->pseudocode, id, book);
+  target_location_ = d.at;
+  if (d.at.event) stepper_.seek(*d.at.event + 1);
   focus_element = t.pair.i;
   breakpoint.kind = BreakKind::FirstPairOf;
   breakpoint.element = t.pair.i;
-  const std::string op = at.event ? "operation " + std::to_string(*at.event + 1) + " of " + std::to_string(stepper_.size()) + ": " : "";
-  const bool missing = t.invariant == Invariant::TInA || (t.invariant == Invariant::AEqualsR && std::string(t.what).find("missing") != std::string::npos);
-  switch (at.finding) {
-    case PairFinding::Tested:
-      target_status_ = op + "k=" + id(at.scanner) + " tested against " + id(at.other) + ": " + (at.contact ? "contact" : "no contact") + ". ";
-      if (stray && at.cell == cells.i) target_status_ += "That list is " + id(at.other) + "'s own cell's: this trace walks it rightly.";
-      else if (stray) target_status_ += id(at.other) + " lies in " + cell_text(cells.i) + ", not in " + cell_text(at.cell) + ", whose list k's mask walked here: the list holds an element of another cell.";
-      else if (missing && at.contact) target_status_ += "The detector found this contact here; it was lost after detection (an output fault), not by the lists.";
-      else if (missing) target_status_ += "The detector's test answered apart where the reference (or Box2D) says contact: the contact test is wrong.";
-      else if (std::string(t.what).find("twice") != std::string::npos) target_status_ += "This is the first of the pair's tests; the detector tested and reported it again later (a list that holds it twice, or stale).";
-      else if (t.invariant == Invariant::AInF) target_status_ += "The detector found this contact here; Box2D's contact list does not have it.";
-      else if (t.invariant == Invariant::AabbInCells) target_status_ += "The detector's own cells " + cell_text(cells.i) + " and " + cell_text(cells.j) + " are neighbours; the cells the check saw are not.";
-      else target_status_ += "The detector reported the pair from this test; the reference does not have it.";
-      break;
-    case PairFinding::CellVisited:
-      target_status_ = op + "the mask of k=" + id(at.scanner) + " visits cell " + cell_text(at.cell) + ", which holds " + id(at.other) +
-                       ", but the walk of that cell's list never reaches it: the list no longer holds it (a push or a clear cut it).";
-      break;
-    case PairFinding::CellNotVisited:
-      target_status_ = op + "cell " + cell_text(at.cell) + " of " + id(at.other) + " is in the contact mask of k=" + id(at.scanner) +
-                       " but is never visited: the contact mask leaves it out; this is the last cell k's mask visits, where that visit was due.";
-      break;
-    case PairFinding::WrongList:
-      target_status_ = op + "k=" + id(at.scanner) + " is pushed onto the list of cell " + cell_text(at.cell) + ", but its cell under the grid is " +
-                       cell_text(at.scanner == t.pair.i ? cells.i : cells.j) + ": the detector integerised it wrongly, and every mask that visits its own cell misses it.";
-      break;
-    case PairFinding::StaleLink:
-      target_status_ = op + id(at.scanner) + " is pushed onto the list of cell " + cell_text(at.cell) + " while its head still held " + id(at.other) +
-                       " of cell " + cell_text(cells.i) + ": that head was not cleared after its last use, so the list runs on into a stale chain, which k=" +
-                       id(t.pair.j) + "'s mask walks.";
-      break;
-    case PairFinding::NotNeighbours:
-      target_status_ = op + id(t.pair.i) + " lies in cell " + cell_text(cells.i) + " and " + id(t.pair.j) + " in " + cell_text(cells.j) +
-                       ": not neighbours, so no contact mask relates them; this operation puts " + id(t.pair.i) + " in its list.";
-      break;
-    case PairFinding::NotInTrace:
-      target_status_ = "frame " + std::to_string(t.frame) + "'s " + algorithm_ + " trace records nothing about " + id(t.pair.i) + " and " + id(t.pair.j) + ".";
-      break;
-  }
+  target_status_ = d.text;
   (void)sim;
 }
 

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <vector>
 #include <nlohmann/json.hpp>
+#include <map>
 #include <string>
 
 #include "support/paths.hpp"
@@ -92,6 +93,37 @@ TEST(ExampleCli, EachBugIsCaughtOnTheSceneTheReadmeNames) {
     EXPECT_EQ(exit_code, 1);
     EXPECT_EQ(v["invariant"], row.invariant) << v.dump();
     EXPECT_NE(summary.find(", " + declared(row.plugin) + " (" + row.plugin + ".so), "), std::string::npos) << summary;
+  }
+}
+
+// Each bug located from the command line (issue 37): the summary ends with the operation that
+// decided its first violation, the report's "located" object says which (kind, pseudocode line),
+// and the sentence is the diagnosis the window's Stepper gives for that bug.
+TEST(ExampleCli, EachBugIsLocatedInTheSummaryAndTheReport) {
+  const std::map<std::string, std::pair<std::string, std::string>> expected = {
+      {"nbs_bug_mask", {"visit-cell", "is never visited: the contact mask leaves it out"}},
+      {"nbs_bug_push", {"visit-cell", "the walk of that cell's list never reaches it"}},
+      {"nbs_bug_stale", {"push", "that head was not cleared after its last use"}},
+      {"nbs_bug_trunc", {"push", "the detector integerised it wrongly"}},
+      {"nbs_bug_strict", {"test-pair", "the contact test is wrong"}},
+  };
+  for (const ReadmeRow& row : readme_rows()) {
+    SCOPED_TRACE(row.plugin + " on " + row.scene);
+    const std::string dir = testcli::scratch_dir("example_cli_located_" + row.plugin);
+    const auto r = run("headless --scene '" + scene(row.scene) + "' --frames 120 --detector-lib '" + lib(row.plugin) +
+                       "' --stop-at-violation --report '" + dir + "/r.json'");
+    ASSERT_EQ(r.exit_code, 1) << r.out << r.err;
+    const auto& [kind, words] = expected.at(row.plugin);
+    EXPECT_NE(r.out.find("; located: operation "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(words), std::string::npos) << r.out;
+    const json located = json::parse(testcli::read_text(dir + "/r.json"))["runs"][0]["violations"]["located"];
+    ASSERT_TRUE(located.is_object()) << located.dump();
+    EXPECT_EQ(located["kind"], kind) << located.dump();
+    EXPECT_GT(located["operation"].get<int>(), 0);
+    EXPECT_LE(located["operation"].get<int>(), located["operations"].get<int>());
+    EXPECT_GT(located["line"].get<int>(), 0) << "a pseudocode line";
+    EXPECT_FALSE(located["pseudocode"].get<std::string>().empty());
+    EXPECT_NE(located["text"].get<std::string>().find(words), std::string::npos) << located.dump();
   }
 }
 

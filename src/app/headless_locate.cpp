@@ -1,0 +1,36 @@
+// nbscope app: a headless run's first violation followed to the operation that decided it
+// (check/diagnosis.hpp), for the summary line and the report (headless.hpp).
+#include <string>
+
+#include "app/frame_loop.hpp"
+#include "app/headless.hpp"
+#include "check/diagnosis.hpp"
+#include "core/detector.hpp"
+
+namespace nbscope {
+
+bool traces_every_frame(const std::string& algorithm) {
+  for (const DetectorInfo& d : detector_infos())
+    if (d.name == algorithm) return !d.library.empty() && d.traces;
+  return false;
+}
+
+std::optional<LocatedViolation> locate_violation(FrameLoop& loop, const Violation& v) {
+  if (v.frame != loop.source().frame()) return std::nullopt;  // only the frame shown has its trace at hand
+  const std::shared_ptr<const FrameTrace> trace = loop.pipeline().frame_trace();
+  if (!trace || !trace->refusal.empty()) return std::nullopt;  // nothing recorded: nothing to locate in
+  const LoopSource& source = loop.source();
+  const auto id = [&](std::int64_t row) { return std::to_string(source.element_name(v.frame, row)); };
+  const Diagnosis d = diagnose(v, trace->log.events(), trace->grid, trace->elements, trace->algorithm, trace->pseudocode, id);
+  LocatedViolation l;
+  l.frame = v.frame;
+  if (d.at.event) l.operation = static_cast<std::int64_t>(*d.at.event) + 1;
+  l.operations = static_cast<std::int64_t>(d.operations);
+  l.kind = d.kind;
+  l.line = d.line >= 0 ? d.line + 1 : -1;
+  l.pseudocode = d.pseudocode;
+  l.text = d.text;
+  return l;
+}
+
+}  // namespace nbscope
