@@ -405,9 +405,7 @@ DumpText& DumpCursor::text_at(const DumpFrameAt& at) {
 
 DumpFrame DumpCursor::read_frame(const DumpFrameAt& at, const DumpOptions& options) {
   DumpFrame f = CustomReader(text_at(at), options).next_frame();
-  if (f.timestep != at.timestep)
-    throw Error(f.where + ": timestep " + std::to_string(f.timestep) + " where timestep " + std::to_string(at.timestep) +
-                " was (the file changed since it was read?)");
+  dump::expect_indexed_timestep(f.where, f.timestep, at.timestep);
   return f;
 }
 

@@ -217,9 +217,7 @@ std::vector<DumpFrameAt> index_dump_contacts(const std::vector<std::string>& pat
 
 DumpContacts DumpCursor::read_contacts(const DumpFrameAt& at, const ContactColumns& columns) {
   DumpContacts c = LocalReader(text_at(at), columns).next_frame();
-  if (c.timestep != at.timestep)
-    throw Error(c.where + ": timestep " + std::to_string(c.timestep) + " where timestep " + std::to_string(at.timestep) +
-                " was (the file changed since it was read?)");
+  dump::expect_indexed_timestep(c.where, c.timestep, at.timestep);
   return c;
 }
 

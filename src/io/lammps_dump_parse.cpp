@@ -76,6 +76,12 @@ std::int64_t integer_line(DumpText& text, const char* item) {
   return v;
 }
 
+void expect_indexed_timestep(const std::string& where, std::int64_t got, std::int64_t wanted) {
+  if (got != wanted)
+    throw Error(where + ": timestep " + std::to_string(got) + " where timestep " + std::to_string(wanted) +
+                " was (the file changed since it was read?)");
+}
+
 void read_box(DumpText& text, std::string_view rest, DumpBox& box, Digits& digits) {
   const std::vector<std::string_view> words = words_of(rest);
   for (std::string_view w : words)

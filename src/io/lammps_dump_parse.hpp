@@ -48,6 +48,10 @@ struct Digits {
 // triclinic box. `digits` gets the bounds' digits (they scale xs ys zs).
 void read_box(DumpText& text, std::string_view rest, DumpBox& box, Digits& digits);
 
+// Error "<where>: timestep T where timestep W was (the file changed since it was read?)" unless a
+// frame read again at its place (`where`, timestep `got`) is the one indexed there (`wanted`).
+void expect_indexed_timestep(const std::string& where, std::int64_t got, std::int64_t wanted);
+
 // Sorts the frames of several files by timestep; Error for one timestep in two files.
 template <class Frame>
 void order_by_timestep(std::vector<Frame>& frames) {
