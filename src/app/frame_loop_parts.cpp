@@ -90,6 +90,7 @@ const std::vector<std::string>& LoopPipeline::comparison_algorithms() const { re
 const Detector& LoopPipeline::detector() const { return s_->pipeline.detector(); }
 
 void LoopPipeline::record_traces(bool on) { s_->pipeline.set_record_traces(on); }
+bool LoopPipeline::record_traces() const { return s_->pipeline.record_traces(); }
 
 std::shared_ptr<const FrameTrace> LoopPipeline::frame_trace() {
   if (!s_->loaded()) return nullptr;

@@ -130,6 +130,7 @@ class LoopPipeline {
   // Whether the frames to come record their trace in their one detection (Pipeline::set_record_traces),
   // so that frame_trace() calls the detector no second time. Re-runs nothing.
   void record_traces(bool on);
+  [[nodiscard]] bool record_traces() const;
 
  private:
   FrameLoopState* s_;

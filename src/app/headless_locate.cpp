@@ -9,14 +9,25 @@
 
 namespace nbscope {
 
-bool traces_every_frame(const std::string& algorithm) {
+namespace {
+const DetectorInfo* info_of(const std::string& algorithm) {
   for (const DetectorInfo& d : detector_infos())
-    if (d.name == algorithm) return !d.library.empty() && d.traces;
-  return false;
+    if (d.name == algorithm) return &d;
+  return nullptr;
+}
+}  // namespace
+
+bool traces_every_frame(const std::string& algorithm) {
+  const DetectorInfo* d = info_of(algorithm);
+  return d != nullptr && !d->library.empty() && d->traces;
 }
 
 std::optional<LocatedViolation> locate_violation(FrameLoop& loop, const Violation& v) {
   if (v.frame != loop.source().frame()) return std::nullopt;  // only the frame shown has its trace at hand
+  // A built-in that traces is traced once more for it (it keeps no state between calls); a plugin
+  // only when its frame's one detection recorded the trace: it is never called twice for a frame.
+  const DetectorInfo* info = info_of(loop.pipeline().algorithm());
+  if (info == nullptr || !info->traces || (!info->library.empty() && !loop.pipeline().record_traces())) return std::nullopt;
   const std::shared_ptr<const FrameTrace> trace = loop.pipeline().frame_trace();
   if (!trace || !trace->refusal.empty()) return std::nullopt;  // nothing recorded: nothing to locate in
   const LoopSource& source = loop.source();
