@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 #include "core/error.hpp"
 #include "core/plugin_detector.hpp"
@@ -73,7 +74,11 @@ void Pipeline::detect(Lane& lane, LaneResult& out, const Elements& input, const 
   try {
     const auto t0 = Clock::now();
     std::shared_ptr<const FrameTrace> trace;
-    if (traced) trace = trace_frame(*lane.detector, input, detect_options_, detect_options_.frame, make_grid(input, detect_options_.grid));
+    std::optional<Grid> fitted;  // the elements' own grid, fitted once for the trace and the lane
+    if (traced) {
+      fitted = make_grid(input, detect_options_.grid);
+      trace = trace_frame(*lane.detector, input, detect_options_, detect_options_.frame, *fitted);
+    }
     if (trace && trace->detected) {
       out.pairs = trace->pairs;  // the traced run is the frame's detection: the detector is called once
       result_.trace = std::move(trace);
@@ -82,7 +87,7 @@ void Pipeline::detect(Lane& lane, LaneResult& out, const Elements& input, const 
     }
     sort_pairs(out.pairs);
     const Grid* own = lane.detector->last_grid();
-    out.grid = own != nullptr ? *own : make_grid(input, detect_options_.grid);
+    out.grid = own != nullptr ? *own : fitted ? *fitted : make_grid(input, detect_options_.grid);
     integerise_cells(input, out.grid, out.cells);
     lane.grid_cells.clear();
     if (const std::vector<CellIndex>* own = lane.detector->own_cells()) {
