@@ -32,10 +32,11 @@ std::optional<LocatedViolation> locate_violation(FrameLoop& loop, const Violatio
   if (!trace || !trace->refusal.empty()) return std::nullopt;  // nothing recorded: nothing to locate in
   const LoopSource& source = loop.source();
   const auto id = [&](std::int64_t row) { return std::to_string(source.element_name(v.frame, row)); };
-  const Diagnosis d = diagnose(v, trace->log.events(), trace->grid, trace->elements, trace->algorithm, trace->pseudocode, id);
+  const Diagnosis d = diagnose_frame(v, *trace, id);
   LocatedViolation l;
   l.frame = v.frame;
-  if (d.at.event) l.operation = static_cast<std::int64_t>(*d.at.event) + 1;
+  if (d.event) l.operation = static_cast<std::int64_t>(*d.event) + 1;
+  if (d.contract) l.contract = contract_name(d.contract->contract);
   l.operations = static_cast<std::int64_t>(d.operations);
   l.kind = d.kind;
   l.line = d.line >= 0 ? d.line + 1 : -1;

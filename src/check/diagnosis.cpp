@@ -30,6 +30,7 @@ Diagnosis diagnose(const Violation& v, std::span<const TraceEvent> events, const
   const bool stray = v.invariant == Invariant::Cells && v.pair.i != v.pair.j;  // (stray, finder): a walked list
   const PairLocation at = stray ? locate_stray(events, v.pair.i, v.pair.j, cells.i, e.dim) : locate_pair(events, v.pair.i, v.pair.j, cells, e.dim);
   d.at = at;
+  d.event = at.event;
   if (at.event) {
     const TraceEvent& ev = events[*at.event];
     d.kind = trace_op_name(ev.op);
@@ -79,6 +80,37 @@ Diagnosis diagnose(const Violation& v, std::span<const TraceEvent> events, const
       t = "frame " + std::to_string(v.frame) + "'s " + algorithm + " trace records nothing about " + id(v.pair.i) + " and " + id(v.pair.j) + ".";
       break;
   }
+  return d;
+}
+
+Diagnosis diagnose_frame(const Violation& v, const FrameTrace& trace, const std::function<std::string(std::int64_t)>& id,
+                         bool book_numbering) {
+  const std::vector<TraceEvent>& events = trace.log.events();
+  Diagnosis d = diagnose(v, events, trace.grid, trace.elements, trace.algorithm, trace.pseudocode, id, book_numbering);
+  ContractNames names;
+  names.element = id;
+  names.book_numbering = book_numbering;
+  d.contract = first_broken_contract(trace, names);
+  if (!d.contract) return d;
+  const BrokenContract& c = *d.contract;
+  const TraceEvent& ev = events[c.event];
+  d.event = c.event;
+  d.kind = trace_op_name(ev.op);
+  d.line = -1;
+  d.pseudocode.clear();
+  if (ev.line < trace.pseudocode.size()) {
+    d.line = ev.line;
+    d.pseudocode = trace.pseudocode[ev.line];
+  }
+  std::string text = "operation " + std::to_string(c.event + 1) + " of " + std::to_string(events.size()) + ": contract " +
+                     contract_name(c.contract) + " broken: " + c.text + ".";
+  if (c.cost_count > 0) {
+    text += " It cost " + std::to_string(c.cost_count) + (c.cost_count == 1 ? " contact: " : " contacts: ");
+    for (std::size_t k = 0; k < c.cost.size(); ++k) text += (k > 0 ? ", (" : "(") + id(c.cost[k].i) + ", " + id(c.cost[k].j) + ")";
+    if (c.cost_count > static_cast<std::int64_t>(c.cost.size())) text += ", ...";
+    text += ".";
+  }
+  d.text = text + " Detail: " + d.text;
   return d;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "check/report.hpp"
+#include "core/contracts.hpp"
 #include "core/elements.hpp"
 #include "core/grid.hpp"
 #include "core/locate.hpp"
@@ -16,11 +17,14 @@
 
 namespace nbscope {
 
-// Where a violation was decided, and what that means.
+// Where a violation was decided, and what that means: the frame's first broken contract when its
+// trace has one (the diagnosis), with the pair's own finding as the detail under it.
 struct Diagnosis {
-  PairLocation at;               // the finding (core/locate.hpp); at.event the operation, 0-based
+  PairLocation at;               // the pair's finding (core/locate.hpp); at.event its operation, 0-based
+  std::optional<BrokenContract> contract;  // the frame's first broken contract (core/contracts.hpp)
+  std::optional<std::size_t> event;        // the operation to show: the contract's, else the pair's
   std::size_t operations = 0;    // the trace's length
-  std::string kind;              // the operation's kind (trace_op_name), "" without one
+  std::string kind;              // that operation's kind (trace_op_name), "" without one
   int line = -1;                 // its pseudocode line (0-based), -1 without one
   std::string pseudocode;        // that line's text ("" without one)
   std::string text;              // "operation 81 of 14929: k=79 ... : the contact mask leaves it out ..."
@@ -32,5 +36,10 @@ struct Diagnosis {
 [[nodiscard]] Diagnosis diagnose(const Violation& v, std::span<const TraceEvent> events, const Grid& grid, const Elements& elements,
                                  const std::string& algorithm, std::span<const char* const> pseudocode,
                                  const std::function<std::string(std::int64_t)>& id, bool book_numbering = false);
+
+// diagnose() of `v` in `trace`, led by the trace's first broken contract when it has one: the text
+// says the contract, its operation and the pairs it cost, then the pair's finding as "Detail: ...".
+[[nodiscard]] Diagnosis diagnose_frame(const Violation& v, const FrameTrace& trace,
+                                       const std::function<std::string(std::int64_t)>& id, bool book_numbering = false);
 
 }  // namespace nbscope

@@ -169,6 +169,7 @@ struct LocatedViolation {
   std::optional<std::int64_t> operation;  // 1-based, as the Stepper counts; none when the trace says nothing of the pair
   std::int64_t operations = 0;            // the trace's length
   std::string kind;                       // the operation's kind: "test-pair", "push", "visit-cell", ...
+  std::string contract;                   // the frame's first broken contract ("row-processed", ...), "" when all held
   int line = -1;                          // its pseudocode line, from 1 (-1: none)
   std::string pseudocode;                 // that line's text
   std::string text;                       // "operation 81 of 14929: ...", as the window's Violations panel says it

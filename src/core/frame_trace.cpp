@@ -17,6 +17,7 @@ std::shared_ptr<const FrameTrace> trace_frame(Detector& detector, const Elements
                                               std::int64_t frame, const Grid& frame_grid) {
   auto out = std::make_shared<FrameTrace>(refused_trace(frame, detector.name()));
   out->grid = frame_grid;
+  out->touching = options.touching;
   const std::string name = out->algorithm;
   if (!detector.supports_dim(elements.dim)) {
     out->refusal = name + " does not handle " + std::to_string(elements.dim) + "D elements";

@@ -33,6 +33,7 @@ struct FrameTrace {
   std::vector<const char*> pseudocode;  // TraceEvent::line indexes it
   std::string refusal;             // why nothing was recorded, in words for the panels
   bool detected = false;           // the detector ran (`pairs` is its answer), recorded or not
+  Touching touching = Touching::inclusive;  // the contact convention it detected under
 };
 
 // An empty trace of frame `frame` by `algorithm` with a fresh serial, for a caller to fill `refusal`.

@@ -106,6 +106,7 @@ json located_json(const std::optional<LocatedViolation>& l) {
           {"operation", l->operation ? json(*l->operation) : json(nullptr)},
           {"operations", l->operations},
           {"kind", l->kind.empty() ? json(nullptr) : json(l->kind)},
+          {"contract", l->contract.empty() ? json(nullptr) : json(l->contract)},
           {"line", l->line > 0 ? json(l->line) : json(nullptr)},
           {"pseudocode", l->pseudocode.empty() ? json(nullptr) : json(l->pseudocode)},
           {"text", l->text}};

@@ -72,9 +72,9 @@ void StepperSession::apply_target(const SimView& sim) {
   v.pair = t.pair;
   v.invariant = t.invariant;
   v.what = t.what;
-  const Diagnosis d = diagnose(v, stepper_.events(), trace_->grid, e, algorithm_, trace_->pseudocode, id, book);
+  const Diagnosis d = diagnose_frame(v, *trace_, id, book);  // the trace the stepper walks
   target_location_ = d.at;
-  if (d.at.event) stepper_.seek(*d.at.event + 1);
+  if (d.event) stepper_.seek(*d.event + 1);
   focus_element = t.pair.i;
   breakpoint.kind = BreakKind::FirstPairOf;
   breakpoint.element = t.pair.i;

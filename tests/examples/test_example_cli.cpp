@@ -98,14 +98,15 @@ TEST(ExampleCli, EachBugIsCaughtOnTheSceneTheReadmeNames) {
 
 // Each bug located from the command line (issue 37): the summary ends with the operation that
 // decided its first violation, the report's "located" object says which (kind, pseudocode line),
-// and the sentence is the diagnosis the window's Stepper gives for that bug.
+// the frame's first broken contract leads, the pair's finding is its detail, and the sentence is the
+// diagnosis the window's Stepper gives for that bug.
 TEST(ExampleCli, EachBugIsLocatedInTheSummaryAndTheReport) {
   const std::map<std::string, std::pair<std::string, std::string>> expected = {
-      {"nbs_bug_mask", {"visit-cell", "is never visited: the contact mask leaves it out"}},
-      {"nbs_bug_push", {"visit-cell", "the walk of that cell's list never reaches it"}},
-      {"nbs_bug_stale", {"push", "that head was not cleared after its last use"}},
-      {"nbs_bug_trunc", {"push", "the detector integerised it wrongly"}},
-      {"nbs_bug_strict", {"test-pair", "the contact test is wrong"}},
+      {"nbs_bug_mask", {"visit-cell", "contract mask-relates broken: no element's mask visits its neighbour at (+1,-1)"}},
+      {"nbs_bug_push", {"push", "contract list-link broken: the push of"}},
+      {"nbs_bug_stale", {"push", "the head was not cleared before the list was reused"}},
+      {"nbs_bug_trunc", {"push", "contract list-cell broken"}},
+      {"nbs_bug_strict", {"test-pair", "contract test-answer broken"}},
   };
   for (const ReadmeRow& row : readme_rows()) {
     SCOPED_TRACE(row.plugin + " on " + row.scene);
@@ -119,6 +120,8 @@ TEST(ExampleCli, EachBugIsLocatedInTheSummaryAndTheReport) {
     const json located = json::parse(testcli::read_text(dir + "/r.json"))["runs"][0]["violations"]["located"];
     ASSERT_TRUE(located.is_object()) << located.dump();
     EXPECT_EQ(located["kind"], kind) << located.dump();
+    EXPECT_FALSE(located["contract"].is_null()) << "the frame's first broken contract leads: " << located.dump();
+    EXPECT_NE(located["text"].get<std::string>().find(" Detail: "), std::string::npos) << "the pair's finding under it";
     EXPECT_GT(located["operation"].get<int>(), 0);
     EXPECT_LE(located["operation"].get<int>(), located["operations"].get<int>());
     EXPECT_GT(located["line"].get<int>(), 0) << "a pseudocode line";

@@ -1,0 +1,144 @@
+// nbscope core: the checker behind first_broken_contract (contracts.hpp), shared by its two files:
+// contracts.cpp walks the events in order, contracts_end.cpp checks what the frame never did
+// (coverage, the mask). Private to those two files.
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "core/contracts.hpp"
+
+namespace nbscope::contract_detail {
+
+using Cell = std::array<std::int32_t, 3>;
+inline constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+
+// Offset (-1..1 per axis) as a bit of a 27-bit mask: bit sum (o_a + 1) * 3^a.
+inline int offset_bit(const Cell& o, int dim) {
+  int bit = 0, scale = 1;
+  for (int a = 0; a < dim; ++a, scale *= 3) bit += (o[static_cast<std::size_t>(a)] + 1) * scale;
+  return bit;
+}
+inline Cell offset_of_bit(int bit, int dim) {
+  Cell o{0, 0, 0};
+  for (int a = 0; a < dim; ++a, bit /= 3) o[static_cast<std::size_t>(a)] = bit % 3 - 1;
+  return o;
+}
+
+class ContractChecker {
+ public:
+  // Each element's cell under the trace's grid, and the pairs it reported.
+  ContractChecker(const FrameTrace& t, const ContractNames& names);
+  // The first broken contract: the events in order, then what the frame never did.
+
+  std::optional<BrokenContract> run();
+
+ private:
+  // --- naming
+  std::string id(std::int64_t k) const { return names_.element(k); }
+  std::string cell_text(const Cell& c) const {
+    const auto index = [&](std::int32_t v) { return std::to_string(names_.book_numbering && v >= 0 ? v + 1 : v); };
+    std::string out = "(" + index(c[0]) + "," + index(c[1]);
+    if (dim_ == 3) out += "," + index(c[2]);
+    return out + ")";
+  }
+  std::string list_text(const TraceEvent& e, int heads) const {
+    const std::vector<TracedArray>& arrays = t_.log.arrays();
+    const std::string name = heads >= 0 && static_cast<std::size_t>(heads) < arrays.size() ? arrays[static_cast<std::size_t>(heads)].name : "?";
+    return std::string(e.label[0] != '\0' ? e.label : "list") + " " + name + "[" + std::to_string(e.index) + "]";
+  }
+  static std::int64_t key(std::int32_t i, std::int32_t j) {
+    const std::int32_t a = std::min(i, j), b = std::max(i, j);
+    return (std::int64_t{a} << 32) | static_cast<std::uint32_t>(b);
+  }
+  std::int64_t flat(const Cell& c) const { return (std::int64_t{c[0]} * g_.n[1] + c[1]) * g_.n[2] + std::max(c[2], 0); }
+  bool in_range(std::int32_t k) const { return k >= 0 && k < n_; }
+  std::int64_t row_key(const Cell& c) const { return dim_ == 3 ? std::int64_t{c[2]} * g_.n[1] + c[1] : c[1]; }
+
+  void breaks(Contract c, std::size_t at, std::string text, std::vector<Pair> cost = {}, std::int64_t cost_count = 0);
+
+  // --- the lists, per heads array: the head each list has in this frame, and who is on which build
+  struct Model {
+    std::size_t level = 0;                   // order of its first push: 0 holds the first-level lists
+    std::vector<std::int32_t> head;          // per slot: the head as the frame built it (-1 at the start)
+    std::vector<std::int64_t> build;         // per slot: bumped by every clear
+    std::vector<std::int64_t> member_slot;   // per element: the slot of its last push, -1 none
+    std::vector<std::int64_t> member_build;  // and that slot's build then
+    std::vector<Cell> member_cell;           // and the cell that push was keyed to
+  };
+  Model& model(int heads);
+  std::int32_t initial_head(int heads, std::int64_t slot) const {
+    const std::vector<TracedArray>& arrays = t_.log.arrays();
+    if (heads < 0 || static_cast<std::size_t>(heads) >= arrays.size()) return -1;
+    const std::vector<std::int32_t>& init = arrays[static_cast<std::size_t>(heads)].initial;
+    return slot >= 0 && static_cast<std::size_t>(slot) < init.size() ? init[static_cast<std::size_t>(slot)] : -1;
+  }
+
+  void on_phase(std::size_t at, const TraceEvent& e);
+
+  void on_push(std::size_t at, const TraceEvent& e);
+
+  void on_clear(std::size_t at, const TraceEvent& e);
+
+  void on_visit(std::size_t at, const TraceEvent& e);
+
+  void on_test(std::size_t at, const TraceEvent& e);
+
+  static std::string number(double v);
+  std::string grid_text() const;
+
+  // --- the end of the frame
+  // Where a row that was never processed was due: the start of the first processed row after it
+  // (2D rows go up; 3D's order is the layer lists', so its first later key), else the last row's start.
+  std::size_t row_due(std::int64_t row) const;
+  std::string row_text(const Cell& c) const;
+  // Contacts of element k with the elements of cell `c` (the cost of a skipped cell).
+  void cost_of_cell(std::int32_t k, const Cell& c, std::vector<Pair>& cost, std::int64_t& count) const;
+
+  void end_of_frame();
+
+  void coverage(std::size_t end);
+
+  void mask(std::size_t end);
+
+  // True when offset `o` leans the way the mask's visited offsets do: on its last nonzero axis, the
+  // sign most visited offsets have there.
+  bool leans_to(const Cell& o) const;
+  std::string offset_text(const Cell& o) const;
+  bool neighbour(const Cell& c, const Cell& o, Cell& out) const;
+
+  struct CellPush {
+    std::size_t at;
+    std::int32_t k;
+    bool full;
+  };
+
+  const FrameTrace& t_;
+  const Elements& e_;
+  const Grid& g_;
+  int dim_;
+  std::int64_t n_;
+  const ContractNames& names_;
+  std::vector<Cell> cells_;
+  std::unordered_set<std::int64_t> occupied_;
+  std::unordered_map<std::int64_t, std::vector<std::int32_t>> members_;
+  std::unordered_map<int, Model> models_;
+  std::vector<CellPush> cell_pushes_;
+  std::vector<std::pair<std::size_t, std::int64_t>> row_starts_;  // (event, row key) where a row's phases begin
+  std::vector<std::uint32_t> visits_;     // per element: offsets its mask visited (bits)
+  std::vector<std::size_t> last_visit_;   // per element: its last visit's event
+  std::vector<std::int32_t> first_level_; // per element: pushes onto first-level lists
+  std::vector<bool> on_cell_list_;        // per element: pushed onto a list keyed to all its axes
+  std::uint32_t union_ = 0;               // offsets any mask visited
+  std::int32_t visitor_ = -1;
+  Cell visited_{-1, -1, -1};
+  std::unordered_set<std::int64_t> tested_, reported_;
+  std::optional<BrokenContract> first_;
+};
+
+}  // namespace nbscope::contract_detail

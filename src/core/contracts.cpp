@@ -1,0 +1,310 @@
+// nbscope core: the list algorithms' contracts along a trace (contracts.hpp).
+//
+// Index: naming | Model (what the frame's lists hold so far, per heads array) | Checker: the events
+// in order (pushes, clears, visits, tests), then the end of the frame (coverage, the mask) | the API.
+#include "core/contracts.hpp"
+
+#include "core/contract_checker.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <array>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace nbscope {
+
+const char* contract_name(Contract c) {
+  switch (c) {
+    case Contract::FirstLevelOnce: return "first-level-once";
+    case Contract::ListCell: return "list-cell";
+    case Contract::ListLink: return "list-link";
+    case Contract::ListTwice: return "list-twice";
+    case Contract::ClearWrites: return "clear-writes";
+    case Contract::RowProcessed: return "row-processed";
+    case Contract::CellList: return "cell-list";
+    case Contract::MaskInGrid: return "mask-in-grid";
+    case Contract::MaskNeighbours: return "mask-neighbours";
+    case Contract::MaskRelates: return "mask-relates";
+    case Contract::MaskCell: return "mask-cell";
+    case Contract::WalkCell: return "walk-cell";
+    case Contract::TestSelf: return "test-self";
+    case Contract::TestAnswer: return "test-answer";
+    case Contract::TestOnce: return "test-once";
+    case Contract::TestReported: return "test-reported";
+  }
+  return "?";
+}
+
+const char* contract_rule(Contract c) {
+  switch (c) {
+    case Contract::FirstLevelOnce: return "every element goes onto exactly one first-level list (2D: y-list, 3D: z-list)";
+    case Contract::ListCell: return "an element goes only onto lists keyed to its own cell";
+    case Contract::ListLink: return "a push links the element to the head its list had in this frame";
+    case Contract::ListTwice: return "an element goes onto one build of a list once";
+    case Contract::ClearWrites: return "a clear leaves the head at -1";
+    case Contract::RowProcessed: return "every row that holds elements gets its cell lists built and its contacts tested";
+    case Contract::CellList: return "every element goes onto the list of its own cell";
+    case Contract::MaskInGrid: return "the contact mask visits cells of the grid only";
+    case Contract::MaskNeighbours: return "the contact mask visits only the cells next to the element's own";
+    case Contract::MaskRelates: return "for every neighbour offset the mask visits it or its opposite";
+    case Contract::MaskCell: return "each element's mask visits every mask cell that exists and holds elements";
+    case Contract::WalkCell: return "the walk of a visited cell's list meets only elements of that cell";
+    case Contract::TestSelf: return "no element is tested against itself";
+    case Contract::TestAnswer: return "each test answers the exact contact test";
+    case Contract::TestOnce: return "each pair is tested once";
+    case Contract::TestReported: return "a test that answered contact is reported as a pair";
+  }
+  return "?";
+}
+
+namespace contract_detail {
+
+ContractChecker::ContractChecker(const FrameTrace& t, const ContractNames& names)
+    : t_(t), e_(t.elements), g_(t.grid), dim_(t.elements.dim), n_(t.elements.size()), names_(names) {
+  cells_.resize(static_cast<std::size_t>(n_));
+  for (std::int64_t k = 0; k < n_; ++k) {
+    Cell c{0, 0, -1};
+    if (dim_ == 2) c[2] = -1;
+    for (int a = 0; a < dim_; ++a) c[static_cast<std::size_t>(a)] = g_.cell(e_.axis(a)[static_cast<Eigen::Index>(k)], a);
+    cells_[static_cast<std::size_t>(k)] = c;
+    occupied_.insert(flat(c));
+  }
+  visits_.assign(static_cast<std::size_t>(n_), 0);
+  last_visit_.assign(static_cast<std::size_t>(n_), kNone);
+  first_level_.assign(static_cast<std::size_t>(n_), 0);
+  on_cell_list_.assign(static_cast<std::size_t>(n_), false);
+  for (const Pair& p : t.pairs) reported_.insert(key(p.i, p.j));
+}
+
+std::optional<BrokenContract> ContractChecker::run() {
+  const std::vector<TraceEvent>& ev = t_.log.events();
+  for (std::size_t at = 0; at < ev.size(); ++at) {  // on past a break: coverage needs every event
+    const TraceEvent& e = ev[at];
+    switch (e.op) {
+      case TraceOp::Push: on_push(at, e); break;
+      case TraceOp::Clear: on_clear(at, e); break;
+      case TraceOp::VisitCell: on_visit(at, e); break;
+      case TraceOp::TestPair: on_test(at, e); break;
+      case TraceOp::Phase: on_phase(at, e); break;
+      case TraceOp::Set: break;
+    }
+  }
+  if (ev.empty()) return std::nullopt;
+  // The end of the frame: what was never done is located where it was due, and competes with the
+  // breaks found in order by its operation.
+  end_of_frame();
+  return first_;
+}
+
+void ContractChecker::breaks(Contract c, std::size_t at, std::string text, std::vector<Pair> cost, std::int64_t cost_count) {
+  if (first_ && first_->event <= at) return;
+  BrokenContract b;
+  b.contract = c;
+  b.event = at;
+  b.text = std::move(text);
+  b.cost_count = std::max<std::int64_t>(cost_count, static_cast<std::int64_t>(cost.size()));
+  if (cost.size() > kMaxCostListed) cost.resize(kMaxCostListed);
+  b.cost = std::move(cost);
+  first_ = std::move(b);
+}
+
+ContractChecker::Model& ContractChecker::model(int heads) {
+  auto found = models_.find(heads);
+  if (found != models_.end()) return found->second;
+  Model m;
+  m.level = models_.size();
+  const std::vector<TracedArray>& arrays = t_.log.arrays();
+  const std::size_t slots = heads >= 0 && static_cast<std::size_t>(heads) < arrays.size() ? arrays[static_cast<std::size_t>(heads)].initial.size() : 0;
+  m.head.assign(slots, -1);
+  m.build.assign(slots, 0);
+  m.member_slot.assign(static_cast<std::size_t>(n_), -1);
+  m.member_build.assign(static_cast<std::size_t>(n_), 0);
+  m.member_cell.assign(static_cast<std::size_t>(n_), Cell{-1, -1, -1});
+  return models_.emplace(heads, std::move(m)).first->second;
+}
+
+void ContractChecker::on_phase(std::size_t at, const TraceEvent& e) {
+  std::int64_t row = -1;
+  if (dim_ == 3 && e.cell[1] >= 0 && e.cell[2] >= 0) row = std::int64_t{e.cell[2]} * g_.n[1] + e.cell[1];
+  else if (dim_ == 2 && e.index >= 0) row = e.index;
+  if (row < 0) return;
+  if (row_starts_.empty() || row_starts_.back().second != row) row_starts_.emplace_back(at, row);
+}
+
+void ContractChecker::on_push(std::size_t at, const TraceEvent& e) {
+  const std::int32_t k = e.element;
+  if (!in_range(k) || e.write_count < 2) return;
+  const ArrayWrite& nw = e.writes[0];
+  const ArrayWrite& hw = e.writes[1];
+  Model& m = model(hw.array);
+  const auto slot = static_cast<std::size_t>(hw.index);
+  if (slot >= m.head.size()) return;
+  const Cell& own = cells_[static_cast<std::size_t>(k)];
+  const std::string list = list_text(e, hw.array);
+  if (m.level == 0 && first_level_[static_cast<std::size_t>(k)]++ > 0) {
+    breaks(Contract::FirstLevelOnce, at, id(k) + " is pushed onto " + list + ", a second first-level list in this frame: every element goes onto one");
+    return;
+  }
+  for (int a = 0; a < dim_; ++a) {
+    const std::int32_t keyed = e.cell[a];
+    if (keyed >= 0 && keyed != own[static_cast<std::size_t>(a)]) {
+      Cell shown = own;
+      for (int b = 0; b < dim_; ++b) if (e.cell[b] < 0) shown[static_cast<std::size_t>(b)] = -1;
+      Cell list_cell{e.cell[0], e.cell[1], e.cell[2]};
+      breaks(Contract::ListCell, at, id(k) + " lies in cell " + cell_text(own) + " but is pushed onto " + list + ", the list of cell " +
+                                         cell_text(list_cell) + ": its cell was integerised wrongly, or the wrong head was taken");
+      return;
+    }
+  }
+  const bool full_key = std::all_of(e.cell, e.cell + dim_, [](std::int32_t c) { return c >= 0; });
+  if (full_key) on_cell_list_[static_cast<std::size_t>(k)] = true;
+  const std::int32_t expected = m.head[slot];
+  if (m.member_slot[static_cast<std::size_t>(k)] == static_cast<std::int64_t>(slot) && m.member_build[static_cast<std::size_t>(k)] == m.build[slot]) {
+    breaks(Contract::ListTwice, at, id(k) + " is pushed onto " + list + " a second time in one build: the list now runs " + id(k) +
+                                        " -> ... -> " + id(k) + ", a cycle");
+    return;
+  }
+  if (hw.new_value != k) {
+    breaks(Contract::ListLink, at, "the push of " + id(k) + " onto " + list + " left its head at " + std::to_string(hw.new_value) +
+                                       ", not " + id(k) + ": the head was not written");
+    return;
+  }
+  if (nw.new_value != expected) {
+    const std::int32_t got = nw.new_value;
+    std::string text = "the push of " + id(k) + " onto " + list + " links it to ";
+    if (got == k) {
+      text += "itself: the list " + id(k) + " -> " + id(k) + " is a cycle";
+    } else if (got == -1) {
+      text += "-1, where the list held " + id(expected) + ": the push cuts the list, and what it held is lost";
+    } else if (!in_range(got)) {
+      text += std::to_string(got) + ", which is no element (" + std::to_string(n_) + " elements)";
+    } else if (m.member_slot[static_cast<std::size_t>(got)] == static_cast<std::int64_t>(slot) &&
+               m.member_build[static_cast<std::size_t>(got)] == m.build[slot]) {
+      text += id(got) + ", not to the head " + id(expected) + ": the elements pushed between them are cut out of the list";
+    } else {
+      const bool from_last_frame = initial_head(hw.array, hw.index) == got && m.build[slot] == 0;
+      text += id(got) + ", which was not pushed onto it in this frame (" + (expected == -1 ? "the list was empty" : "its head was " + id(expected)) +
+              "): the head was not cleared before reuse, so the list runs on into " +
+              (from_last_frame ? "the last frame's list" : "an earlier list of this frame");
+    }
+    breaks(Contract::ListLink, at, text);
+    return;
+  }
+  const Cell keyed{e.cell[0], e.cell[1], e.cell[2]};
+  if (expected >= 0 && m.member_cell[static_cast<std::size_t>(expected)] != keyed) {
+    breaks(Contract::ListLink, at, "the push of " + id(k) + " onto " + list + " for cell " + cell_text(keyed) + " links it to " + id(expected) +
+                                       ", pushed onto that list for cell " + cell_text(m.member_cell[static_cast<std::size_t>(expected)]) +
+                                       ": the head was not cleared before the list was reused, so it runs on into a stale chain");
+    return;
+  }
+  m.head[slot] = k;
+  m.member_cell[static_cast<std::size_t>(k)] = keyed;
+  m.member_slot[static_cast<std::size_t>(k)] = static_cast<std::int64_t>(slot);
+  m.member_build[static_cast<std::size_t>(k)] = m.build[slot];
+  cell_pushes_.push_back({at, k, full_key});
+}
+
+void ContractChecker::on_clear(std::size_t at, const TraceEvent& e) {
+  if (e.write_count < 1) return;
+  const ArrayWrite& hw = e.writes[0];
+  Model& m = model(hw.array);
+  const auto slot = static_cast<std::size_t>(hw.index);
+  if (slot >= m.head.size()) return;
+  if (hw.new_value != -1) {
+    breaks(Contract::ClearWrites, at, "the clear of " + list_text(e, hw.array) + " left it at " + std::to_string(hw.new_value) + ", not -1");
+    return;
+  }
+  m.head[slot] = -1;
+  ++m.build[slot];
+}
+
+void ContractChecker::on_visit(std::size_t at, const TraceEvent& e) {
+  const std::int32_t k = e.element;
+  if (!in_range(k)) return;
+  const Cell c{e.cell[0], e.cell[1], dim_ == 3 ? e.cell[2] : -1};
+  visitor_ = k;
+  visited_ = c;
+  for (int a = 0; a < dim_; ++a) {
+    if (c[static_cast<std::size_t>(a)] < 0 || c[static_cast<std::size_t>(a)] >= g_.n[a]) {
+      breaks(Contract::MaskInGrid, at, "the mask of " + id(k) + " visits cell " + cell_text(c) + ", outside the grid's " + grid_text() +
+                                           " cells: it reads a head past its array");
+      return;
+    }
+  }
+  const Cell& own = cells_[static_cast<std::size_t>(k)];
+  Cell o{0, 0, 0};
+  for (int a = 0; a < dim_; ++a) {
+    std::int32_t d = c[static_cast<std::size_t>(a)] - own[static_cast<std::size_t>(a)];
+    const auto last = static_cast<std::int32_t>(g_.n[a] - 1);
+    if (g_.periodic[a] && last >= 2 && (d == last || d == -last)) d = d > 0 ? -1 : 1;
+    if (d < -1 || d > 1) {
+      breaks(Contract::MaskNeighbours, at, "the mask of " + id(k) + " (cell " + cell_text(own) + ") visits cell " + cell_text(c) +
+                                               ", which is not next to it: the mask reaches too far");
+      return;
+    }
+    o[static_cast<std::size_t>(a)] = d;
+  }
+  const int bit = offset_bit(o, dim_);
+  visits_[static_cast<std::size_t>(k)] |= 1u << bit;
+  union_ |= 1u << bit;
+  last_visit_[static_cast<std::size_t>(k)] = at;
+}
+
+void ContractChecker::on_test(std::size_t at, const TraceEvent& e) {
+  const std::int32_t k = e.element, m = e.other;
+  if (!in_range(k) || !in_range(m)) return;
+  if (k == m) {
+    breaks(Contract::TestSelf, at, id(k) + " is tested against itself: a walk reached its own entry (the own cell's walk starts at k, not after it)");
+    return;
+  }
+  if (!models_.empty() && visitor_ == k) {
+    const Cell& other = cells_[static_cast<std::size_t>(m)];
+    bool same = true;
+    for (int a = 0; a < dim_; ++a) same = same && other[static_cast<std::size_t>(a)] == visited_[static_cast<std::size_t>(a)];
+    if (!same) {
+      breaks(Contract::WalkCell, at, "the walk of cell " + cell_text(visited_) + "'s list, visited by " + id(k) + "'s mask, meets " + id(m) +
+                                         ", which lies in cell " + cell_text(other) + ": the walk started at another cell's head, or the list holds a stale link");
+      return;
+    }
+  }
+  const bool truth = in_contact(e_, k, m, t_.touching);
+  if (truth != e.contact) {
+    const double gap = contact_gap(e_, k, m);
+    breaks(Contract::TestAnswer, at, "the test of " + id(k) + " against " + id(m) + " answered " + (e.contact ? "contact" : "no contact") +
+                                         " where the exact test says " + (truth ? "contact" : "apart") + " (gap " + number(gap) + ")",
+           truth ? std::vector<Pair>{Pair{std::min(k, m), std::max(k, m)}} : std::vector<Pair>{});
+    return;
+  }
+  if (!tested_.insert(key(k, m)).second) {
+    breaks(Contract::TestOnce, at, id(k) + " and " + id(m) + " are tested a second time: a list holds an element twice, or a mask visits a cell twice");
+    return;
+  }
+  if (e.contact && reported_.find(key(k, m)) == reported_.end()) {
+    breaks(Contract::TestReported, at, "the test of " + id(k) + " against " + id(m) + " answered contact, but the pair was never reported (add_pair)",
+           {Pair{std::min(k, m), std::max(k, m)}});
+  }
+}
+
+std::string ContractChecker::number(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", v);
+  return buffer;
+}
+
+std::string ContractChecker::grid_text() const {
+  std::string out = std::to_string(g_.n[0]) + " x " + std::to_string(g_.n[1]);
+  if (dim_ == 3) out += " x " + std::to_string(g_.n[2]);
+  return out;
+}
+
+}  // namespace contract_detail
+
+
+
+std::optional<BrokenContract> first_broken_contract(const FrameTrace& trace, const ContractNames& names) {
+  if (trace.log.events().empty() || trace.elements.size() == 0) return std::nullopt;
+  return contract_detail::ContractChecker(trace, names).run();
+}
+
+}  // namespace nbscope

@@ -1,0 +1,237 @@
+// first_broken_contract: every traced built-in keeps its contracts on every layout (no false alarm),
+// and each kind of break, planted in a real nbs trace by editing its events, is the first broken
+// contract at the operation that was edited (or where the missing work was due).
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <optional>
+
+#include "core/contracts.hpp"
+#include "core/detector.hpp"
+#include "core/layouts.hpp"
+#include "support/generators.hpp"
+
+namespace nbscope {
+namespace {
+
+// One traced detection, as trace_frame would make it.
+FrameTrace traced(const std::string& algorithm, Layout layout, std::int64_t n, int dim, std::uint64_t seed) {
+  FrameTrace t;
+  t.algorithm = algorithm;
+  t.elements = testdata::make_layout(layout, n, dim, seed);
+  auto d = make_detector(algorithm);
+  d->detect_traced(t.elements, DetectOptions{}, t.pairs, t.log);
+  t.grid = d->last_grid() != nullptr ? *d->last_grid() : make_grid(t.elements, GridOptions{});
+  return t;
+}
+
+// An edit of one event: return false to drop it; may change it.
+using Edit = std::function<bool(std::size_t at, TraceEvent& e)>;
+
+// `log` recorded again through TraceLog's public calls, each event through `edit`; `initial`
+// may change the arrays' contents before the first event.
+TraceLog rerecorded(const TraceLog& log, const Edit& edit,
+                    const std::function<void(std::size_t array, std::vector<std::int32_t>&)>& initial = {}) {
+  TraceLog out;
+  for (std::size_t a = 0; a < log.arrays().size(); ++a) {
+    std::vector<std::int32_t> contents = log.arrays()[a].initial;
+    if (initial) initial(a, contents);
+    out.declare_array(log.arrays()[a].name, log.arrays()[a].shape, contents);
+  }
+  for (std::size_t at = 0; at < log.events().size(); ++at) {
+    TraceEvent e = log.events()[at];
+    if (!edit(at, e)) continue;
+    switch (e.op) {
+      case TraceOp::Phase: out.phase(e.line, e.label, e.index, e.cell[0], e.cell[1], e.cell[2]); break;
+      case TraceOp::Push:
+        out.push_written(e.line, e.label, e.writes[1].array, e.writes[1].index, e.writes[0].array, e.element, e.writes[1].old_value,
+                         e.writes[0].old_value, e.writes[1].new_value, e.writes[0].new_value, e.cell[0], e.cell[1], e.cell[2]);
+        break;
+      case TraceOp::Clear:
+        out.clear_written(e.line, e.label, e.writes[0].array, e.writes[0].index, e.writes[0].old_value, e.writes[0].new_value);
+        break;
+      case TraceOp::VisitCell: out.visit_cell(e.line, e.element, e.cell[0], e.cell[1], e.cell[2]); break;
+      case TraceOp::TestPair: out.test_pair(e.line, e.element, e.other, e.contact); break;
+      case TraceOp::Set:
+        out.set(e.line, e.label, e.writes[0].array, e.writes[0].index, e.writes[0].old_value, e.writes[0].new_value, e.element);
+        break;
+    }
+  }
+  return out;
+}
+
+// The index of the first event of `log` that `pick` accepts.
+std::size_t first_event(const TraceLog& log, const std::function<bool(const TraceEvent&)>& pick) {
+  for (std::size_t at = 0; at < log.events().size(); ++at)
+    if (pick(log.events()[at])) return at;
+  ADD_FAILURE() << "no such event";
+  return 0;
+}
+
+TEST(Contracts, EveryTracedBuiltInKeepsThemOnEveryLayout) {
+  for (const DetectorInfo& info : detector_infos()) {
+    if (!info.traces || !info.library.empty()) continue;
+    for (const int dim : {2, 3}) {
+      if ((dim == 2 && !info.dim2) || (dim == 3 && !info.dim3)) continue;
+      for (const Layout layout : all_layouts()) {
+        SCOPED_TRACE(info.name + " " + std::to_string(dim) + "D " + layout_name(layout));
+        const FrameTrace t = traced(info.name, layout, 300, dim, 11);
+        const std::optional<BrokenContract> broken = first_broken_contract(t);
+        EXPECT_FALSE(broken) << contract_name(broken->contract) << " at " << broken->event << ": " << broken->text;
+      }
+    }
+  }
+}
+
+class PlantedBreak : public ::testing::Test {
+ protected:
+  void SetUp() override { t = traced("nbs", Layout::Dense, 400, 2, 3); }
+  // The first broken contract of `t` with its log replaced by `log`; it must be one.
+  BrokenContract broken_with(TraceLog log) {
+    t.log = std::move(log);
+    const std::optional<BrokenContract> b = first_broken_contract(t);
+    if (!b) {
+      ADD_FAILURE() << "no contract broken";
+      return {};
+    }
+    return *b;
+  }
+  FrameTrace t;
+};
+
+TEST_F(PlantedBreak, APushThatCutsTheListIsAListLink) {
+  // The second push onto one x-list: its next must be the first; written as -1 the list is cut.
+  const std::size_t first = first_event(t.log, [](const TraceEvent& e) { return e.op == TraceOp::Push && e.cell[0] >= 0; });
+  const TraceEvent head = t.log.events()[first];
+  const std::size_t second = first_event(t.log, [&](const TraceEvent& e) {
+    return e.op == TraceOp::Push && e.writes[1].array == head.writes[1].array && e.writes[1].old_value >= 0;
+  });
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (at == second) e.writes[0].new_value = -1;
+    return true;
+  }));
+  EXPECT_EQ(b.contract, Contract::ListLink);
+  EXPECT_EQ(b.event, second);
+  EXPECT_NE(b.text.find("cuts the list"), std::string::npos) << b.text;
+}
+
+TEST_F(PlantedBreak, AHeadLeftFromTheLastFrameIsAStaleLink) {
+  // y_heads[iy] holds an element when the frame begins: the first push onto it links into it.
+  const std::size_t push = first_event(t.log, [](const TraceEvent& e) { return e.op == TraceOp::Push; });
+  const TraceEvent p = t.log.events()[push];
+  const std::int32_t stale = p.element == 0 ? 1 : 0;
+  const BrokenContract b = broken_with(rerecorded(
+      t.log,
+      [&](std::size_t at, TraceEvent& e) {
+        if (e.op == TraceOp::Push && e.writes[1].array == p.writes[1].array && e.writes[1].index == p.writes[1].index &&
+            e.writes[0].new_value == -1 && at >= push)
+          e.writes[0].new_value = stale;  // the first push onto that list links to the stale head
+        return true;
+      },
+      [&](std::size_t array, std::vector<std::int32_t>& v) {
+        if (static_cast<int>(array) == p.writes[1].array) v[static_cast<std::size_t>(p.writes[1].index)] = stale;
+      }));
+  EXPECT_EQ(b.contract, Contract::ListLink);
+  EXPECT_EQ(b.event, push);
+  EXPECT_NE(b.text.find("the last frame's list"), std::string::npos) << b.text;
+}
+
+TEST_F(PlantedBreak, AWrongTestAnswerIsATestAnswer) {
+  const std::size_t test = first_event(t.log, [](const TraceEvent& e) { return e.op == TraceOp::TestPair && e.contact; });
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (at == test) e.contact = false;
+    return true;
+  }));
+  EXPECT_EQ(b.contract, Contract::TestAnswer);
+  EXPECT_EQ(b.event, test);
+  ASSERT_EQ(b.cost.size(), 1u);
+}
+
+TEST_F(PlantedBreak, AContactNotReportedIsATestReported) {
+  const std::size_t test = first_event(t.log, [](const TraceEvent& e) { return e.op == TraceOp::TestPair && e.contact; });
+  const TraceEvent e = t.log.events()[test];
+  std::erase_if(t.pairs, [&](const Pair& p) { return (p.i == e.element && p.j == e.other) || (p.j == e.element && p.i == e.other); });
+  const std::optional<BrokenContract> b = first_broken_contract(t);
+  ASSERT_TRUE(b);
+  EXPECT_EQ(b->contract, Contract::TestReported);
+  EXPECT_EQ(b->event, test);
+}
+
+TEST_F(PlantedBreak, ATestRepeatedIsATestOnce) {
+  const std::size_t test = first_event(t.log, [](const TraceEvent& e) { return e.op == TraceOp::TestPair; });
+  TraceLog twice = rerecorded(t.log, [&](std::size_t, TraceEvent&) { return true; });
+  const TraceEvent e = t.log.events()[test];
+  twice.test_pair(e.line, e.element, e.other, e.contact);  // the same test once more, at the end
+  const BrokenContract b = broken_with(std::move(twice));
+  EXPECT_EQ(b.contract, Contract::TestOnce);
+  EXPECT_EQ(b.event, t.log.events().size() - 1);
+}
+
+TEST_F(PlantedBreak, AMaskCellSkippedByOneElementIsAMaskCell) {
+  // Drop one element's visit of a cell below it (and the tests of that walk) where the cell holds elements.
+  std::size_t dropped = 0;
+  std::int32_t k = -1;
+  for (std::size_t at = 0; at < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    if (e.op == TraceOp::VisitCell && at + 1 < t.log.events().size() && t.log.events()[at + 1].op == TraceOp::TestPair &&
+        t.log.events()[at + 1].element == e.element && e.cell[1] < t.grid.cell(t.elements.y[e.element], 1)) {
+      dropped = at;
+      k = e.element;
+      break;
+    }
+  }
+  ASSERT_GE(k, 0);
+  bool walking = false;
+  TraceLog edited = rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (at == dropped) walking = true;
+    else if (e.op != TraceOp::TestPair) walking = false;
+    return !walking;
+  });
+  std::size_t last_kept = 0;  // k's last visit that is left
+  for (std::size_t at = 0; at < edited.events().size(); ++at)
+    if (edited.events()[at].op == TraceOp::VisitCell && edited.events()[at].element == k) last_kept = at;
+  const BrokenContract b = broken_with(std::move(edited));
+  EXPECT_EQ(b.contract, Contract::MaskCell) << b.text;
+  EXPECT_EQ(b.event, last_kept) << b.text;
+}
+
+TEST_F(PlantedBreak, ARowNeverProcessedIsARowProcessed) {
+  // Drop every event of one row's phases (its x-lists, contacts and clears) but keep the other rows.
+  std::int32_t row = -1;
+  std::size_t next_row_start = 0;
+  for (std::size_t at = 0; at < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    if (e.op != TraceOp::Phase || e.index < 0) continue;
+    if (row < 0 && e.index > 2) row = e.index;
+    else if (row >= 0 && e.index != row) {
+      next_row_start = at;
+      break;
+    }
+  }
+  ASSERT_GE(row, 0);
+  ASSERT_GT(next_row_start, 0u);
+  std::int32_t in_phase = -1;
+  std::size_t removed = 0;
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t, TraceEvent& e) {
+    if (e.op == TraceOp::Phase) in_phase = e.index;
+    const bool keep = in_phase != row;
+    if (!keep) ++removed;
+    return keep;
+  }));
+  EXPECT_EQ(b.contract, Contract::RowProcessed) << b.text;
+  EXPECT_EQ(b.event, next_row_start - removed);  // where the loop went on past it
+  EXPECT_NE(b.text.find("row " + std::to_string(row)), std::string::npos) << b.text;
+}
+
+TEST_F(PlantedBreak, AVisitOutsideTheGridIsAMaskInGrid) {
+  const std::size_t visit = first_event(t.log, [](const TraceEvent& e) { return e.op == TraceOp::VisitCell; });
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (at == visit) e.cell[0] = static_cast<std::int32_t>(t.grid.n[0]);
+    return true;
+  }));
+  EXPECT_EQ(b.contract, Contract::MaskInGrid);
+  EXPECT_EQ(b.event, visit);
+}
+
+}  // namespace
+}  // namespace nbscope
