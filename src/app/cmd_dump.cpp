@@ -48,8 +48,11 @@ int run_dump(Args& args) {
   PairList pairs;
   try {
     detector->detect_traced(elements, options, pairs, trace);
+    throw_if_misbehaved(*detector);  // a plugin's own bug: no check here to hold it
   } catch (const PluginError&) {
     throw;  // names its library and frame
+  } catch (const DetectorBug&) {
+    throw;  // likewise
   } catch (const Error& e) {
     throw Error(*input + ": " + e.what());  // where: the grid or the pairs of this file
   }

@@ -51,8 +51,11 @@ int run_pairs(Args& args) {
     const auto t0 = std::chrono::steady_clock::now();
     try {
       detector->detect(elements, options, pairs);
+      throw_if_misbehaved(*detector);  // no check here to hold it as a violation
     } catch (const PluginError&) {
       throw;  // names its library and frame
+    } catch (const DetectorBug&) {
+      throw;  // likewise
     } catch (const Error& e) {
       throw Error(*input + ": " + e.what());  // where: the grid or the pairs of this file
     }

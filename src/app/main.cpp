@@ -56,6 +56,9 @@ int main(int argc, char** argv) {
     nbscope::register_physics_detectors();  // "box2d" joins core's detectors
     nbscope::set_box2d_out_of_memory_cleanup(nbscope::remove_live_temporaries);
     return dispatch(command, rest);
+  } catch (const nbscope::DetectorBug& e) {
+    std::fprintf(stderr, "nbscope: error: %s\n", nbscope::printable_line(e.what()).c_str());
+    return 1;  // the detector's own bug, as a violation ends a run
   } catch (const nbscope::Error& e) {
     std::fprintf(stderr, "nbscope: error: %s\n", nbscope::printable_line(e.what()).c_str());
     return 2;

@@ -279,6 +279,19 @@ void FrameChecker::check(const CheckInput& in, FrameReport& out) {
   }
   invariant_ms(Invariant::Cells) += lap(t);
 
+  // contract: the frame's first broken contract (found by the pipeline in its trace), one violation.
+  out.contract_checked = in.contract_checked;
+  out.contract.clear();
+  if (in.contract != nullptr) {
+    const BrokenContract& c = *in.contract;
+    const bool named = c.subject.i >= 0 && c.subject.j >= 0 && c.subject.i < n && c.subject.j < n;
+    const Pair p = named ? c.subject : Pair{0, 0};
+    ++out.broken[static_cast<std::size_t>(Invariant::Contract)];
+    out.contract = std::string(contract_name(c.contract)) + ": " + c.text;
+    if (n > 0 && out.violations.size() < kMaxListedViolationsPerFrame)
+      out.violations.push_back({frame, Invariant::Contract, p, cell_of(p.i), cell_of(p.j), "breaks the detector's contract (the frame's first broken one)"});
+  }
+
   if (world_ == nullptr) return;  // recorded frames: the rest needs Box2D's world
   const Box2dFrame& world = *world_;
 

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "check/report.hpp"
+#include "core/contracts.hpp"
 #include "core/detector.hpp"
 #include "physics/box2d_frame.hpp"
 
@@ -47,6 +48,8 @@ struct CheckInput {
   // detector's); null when `cells` are the grid's, which holds `cells` by construction.
   const std::vector<CellIndex>* grid_cells = nullptr;
   const WalkCheck* walks = nullptr;             // the detector's walk check, or null when not checked
+  bool contract_checked = false;                // the detection's contracts were checked (a trace, or a misbehaviour)
+  const BrokenContract* contract = nullptr;     // its first broken contract, or null
   bool drop_box2d_contact = false;              // the drop-box2d-contact fault (check/faults.hpp)
   bool recorded = false;  // A is a recording's own pairs, not a detector's: violations of A say so in their words
   // The recorded pairs' precision band (FrameInput::precision): a disagreement of A and R whose gap is

@@ -93,24 +93,30 @@ Diagnosis diagnose_frame(const Violation& v, const FrameTrace& trace, const std:
   d.contract = first_broken_contract(trace, names);
   if (!d.contract) return d;
   const BrokenContract& c = *d.contract;
-  const TraceEvent& ev = events[c.event];
-  d.event = c.event;
-  d.kind = trace_op_name(ev.op);
+  d.event.reset();
+  d.kind.clear();
   d.line = -1;
   d.pseudocode.clear();
-  if (ev.line < trace.pseudocode.size()) {
-    d.line = ev.line;
-    d.pseudocode = trace.pseudocode[ev.line];
+  std::string text;
+  if (c.event < events.size()) {
+    const TraceEvent& ev = events[c.event];
+    d.event = c.event;
+    d.kind = trace_op_name(ev.op);
+    if (ev.line < trace.pseudocode.size()) {
+      d.line = ev.line;
+      d.pseudocode = trace.pseudocode[ev.line];
+    }
+    text = std::string(c.after ? "after " : "") + "operation " + std::to_string(c.event + 1) + " of " + std::to_string(events.size()) + ": ";
   }
-  std::string text = "operation " + std::to_string(c.event + 1) + " of " + std::to_string(events.size()) + ": contract " +
-                     contract_name(c.contract) + " broken: " + c.text + ".";
+  text += "contract " + std::string(contract_name(c.contract)) + " broken: " + c.text + ".";
   if (c.cost_count > 0) {
     text += " It cost " + std::to_string(c.cost_count) + (c.cost_count == 1 ? " contact: " : " contacts: ");
     for (std::size_t k = 0; k < c.cost.size(); ++k) text += (k > 0 ? ", (" : "(") + id(c.cost[k].i) + ", " + id(c.cost[k].j) + ")";
     if (c.cost_count > static_cast<std::int64_t>(c.cost.size())) text += ", ...";
     text += ".";
   }
-  d.text = text + " Detail: " + d.text;
+  // A `contract` violation is the break itself: its pair-level search has nothing to add.
+  d.text = v.invariant == Invariant::Contract ? text : text + " Detail: " + d.text;
   return d;
 }
 

@@ -155,7 +155,22 @@ const FrameResult& Pipeline::run(const FrameInput& in) {
     else checker_.begin_frame(now, frame, detect_options_);
     for (std::size_t k = 0; k < lanes_.size(); ++k) {
       LaneResult& lane = result_.lanes[k];
+      // The lane's contracts: along lane 0's trace when its one detection recorded it, else what the
+      // detector itself said it did wrong.
+      const auto c0 = Clock::now();
+      std::optional<BrokenContract> contract;
+      bool contract_checked = false;
+      if (k == 0 && result_.trace && result_.trace->detected && result_.trace->refusal.empty()) {
+        contract = first_broken_contract(*result_.trace);
+        contract_checked = true;
+      } else if (const Misbehaviour* m = lanes_[k].detector->misbehaviour()) {
+        contract = api_rule_break(*m);
+        contract_checked = true;
+      }
+      const double contract_ms = ms_since(c0);
       CheckInput check;
+      check.contract_checked = contract_checked;
+      check.contract = contract ? &*contract : nullptr;
       check.algorithm = lanes_[k].detector->name();
       check.pairs = &lane.pairs;
       check.cells = &lane.cells;
@@ -165,6 +180,7 @@ const FrameResult& Pipeline::run(const FrameInput& in) {
       check.recorded = lanes_[k].recorded != nullptr;
       if (check.recorded) check.precision = in.precision;
       checker_.check(check, lane.report);
+      lane.report.check_timings.invariant_ms[static_cast<std::size_t>(Invariant::Contract)] += contract_ms;
       if (k == 0) result_.reference = checker_.reference_pairs();
       lane.report.timings.check_ms = ms_since(t0);
       t0 = Clock::now();

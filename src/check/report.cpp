@@ -11,6 +11,7 @@ const char* invariant_name(Invariant invariant) {
     case Invariant::TInA: return "T-in-A";
     case Invariant::AabbInCells: return "AABB-in-cells";
     case Invariant::Cells: return "cells";
+    case Invariant::Contract: return "contract";
   }
   return "?";
 }
@@ -30,6 +31,10 @@ const char* invariant_description(Invariant invariant) {
       return "every element's cell as the detector integerised it (a plugin that reports its cells) equals the grid's "
              "(eq. 3.76), and every list the detector walks (a plugin that traces its lists) holds only elements of its "
              "cell; detectors that use the grid's own integerisation and lists hold it by construction";
+    case Invariant::Contract:
+      return "the detector's traced operations keep its algorithm's contracts (every element on its lists, every row "
+             "processed, the mask relating every neighbour, each test exact and reported once) and a plugin keeps the API's "
+             "rules (docs/diagnosis.md); checked on the frames whose detection was traced, and on every frame a plugin misbehaves";
   }
   return "?";
 }

@@ -25,9 +25,10 @@ enum class Invariant : std::uint8_t {
   TInA,         // "T-in-A": every pair of shapes touching now is in A
   AabbInCells,  // "AABB-in-cells": every tight-AABB pair lies in neighbouring cells of the detector's grid
   Cells,        // "cells": a detector's own integerisation (a plugin's) gives every element the grid's cell
+  Contract,     // "contract": the detector keeps its algorithm's contracts and the plugin API's rules (docs/diagnosis.md)
 };
-inline constexpr int kInvariantCount = 5;
-// Short name used in reports, summaries and test expectations ("A==R", "A-in-F", "T-in-A", "AABB-in-cells", "cells").
+inline constexpr int kInvariantCount = 6;
+// Short name used in reports, summaries and test expectations ("A==R", "A-in-F", "T-in-A", "AABB-in-cells", "cells", "contract").
 const char* invariant_name(Invariant invariant);
 
 // One sentence saying what the invariant checks.
@@ -120,6 +121,8 @@ struct FrameReport {
   bool box2d_stepped = false;    // A-in-F needs Box2D's contact list, which exists only after a step
   bool box2d_checks = true;      // A-in-F, T-in-A, AABB-in-cells ran: false for recorded frames (no Box2D world)
   bool cells_checked = false;    // `cells` applied: the detector's own cells or walked lists (a plugin's)
+  bool contract_checked = false; // `contract` applied: the frame was traced, or the detector misbehaved
+  std::string contract;          // the frame's first broken contract, "name: what broke" ("" when none)
   std::string reference;         // detector that computed R ("brute", "nbs", "box2d")
   FrameCounts counts;
   FrameTimings timings;
@@ -255,7 +258,7 @@ struct RunReport {
 
 // The invariants that need Box2D's world (A-in-F, T-in-A, AABB-in-cells), and why recorded frames skip them.
 [[nodiscard]] inline bool needs_box2d(Invariant invariant) {
-  return invariant != Invariant::AEqualsR && invariant != Invariant::Cells;
+  return invariant != Invariant::AEqualsR && invariant != Invariant::Cells && invariant != Invariant::Contract;
 }
 inline constexpr const char* kNoBox2dReason =
     "recorded frames have no Box2D world: A-in-F, T-in-A and AABB-in-cells are not available (not passed: not checked)";

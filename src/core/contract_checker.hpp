@@ -33,7 +33,8 @@ inline Cell offset_of_bit(int bit, int dim) {
 class ContractChecker {
  public:
   // Each element's cell under the trace's grid, and the pairs it reported.
-  ContractChecker(const FrameTrace& t, const ContractNames& names);
+  // `complete`: the trace holds the whole detection, so what it never did can be checked.
+  ContractChecker(const FrameTrace& t, const ContractNames& names, bool complete);
   // The first broken contract: the events in order, then what the frame never did.
 
   std::optional<BrokenContract> run();
@@ -118,6 +119,7 @@ class ContractChecker {
     bool full;
   };
 
+  bool complete_;
   const FrameTrace& t_;
   const Elements& e_;
   const Grid& g_;
@@ -138,6 +140,7 @@ class ContractChecker {
   std::int32_t visitor_ = -1;
   Cell visited_{-1, -1, -1};
   std::unordered_set<std::int64_t> tested_, reported_;
+  Pair subject_{-1, -1};  // the elements the event being checked names (BrokenContract::subject)
   std::optional<BrokenContract> first_;
 };
 

@@ -32,6 +32,7 @@ const char* contract_name(Contract c) {
     case Contract::TestAnswer: return "test-answer";
     case Contract::TestOnce: return "test-once";
     case Contract::TestReported: return "test-reported";
+    case Contract::ApiRule: return "api-rule";
   }
   return "?";
 }
@@ -54,14 +55,17 @@ const char* contract_rule(Contract c) {
     case Contract::TestAnswer: return "each test answers the exact contact test";
     case Contract::TestOnce: return "each pair is tested once";
     case Contract::TestReported: return "a test that answered contact is reported as a pair";
+    case Contract::ApiRule:
+      return "the plugin API's rules hold: pairs in range, never (k, k), never twice; trace calls name declared arrays, "
+             "entries and elements; every cell is written";
   }
   return "?";
 }
 
 namespace contract_detail {
 
-ContractChecker::ContractChecker(const FrameTrace& t, const ContractNames& names)
-    : t_(t), e_(t.elements), g_(t.grid), dim_(t.elements.dim), n_(t.elements.size()), names_(names) {
+ContractChecker::ContractChecker(const FrameTrace& t, const ContractNames& names, bool complete)
+    : complete_(complete), t_(t), e_(t.elements), g_(t.grid), dim_(t.elements.dim), n_(t.elements.size()), names_(names) {
   cells_.resize(static_cast<std::size_t>(n_));
   for (std::int64_t k = 0; k < n_; ++k) {
     Cell c{0, 0, -1};
@@ -93,7 +97,7 @@ std::optional<BrokenContract> ContractChecker::run() {
   if (ev.empty()) return std::nullopt;
   // The end of the frame: what was never done is located where it was due, and competes with the
   // breaks found in order by its operation.
-  end_of_frame();
+  if (complete_) end_of_frame();
   return first_;
 }
 
@@ -102,6 +106,7 @@ void ContractChecker::breaks(Contract c, std::size_t at, std::string text, std::
   BrokenContract b;
   b.contract = c;
   b.event = at;
+  b.subject = !cost.empty() ? cost.front() : subject_;  // the pair it cost, else what the event names
   b.text = std::move(text);
   b.cost_count = std::max<std::int64_t>(cost_count, static_cast<std::int64_t>(cost.size()));
   if (cost.size() > kMaxCostListed) cost.resize(kMaxCostListed);
@@ -135,6 +140,7 @@ void ContractChecker::on_phase(std::size_t at, const TraceEvent& e) {
 void ContractChecker::on_push(std::size_t at, const TraceEvent& e) {
   const std::int32_t k = e.element;
   if (!in_range(k) || e.write_count < 2) return;
+  subject_ = Pair{k, k};
   const ArrayWrite& nw = e.writes[0];
   const ArrayWrite& hw = e.writes[1];
   Model& m = model(hw.array);
@@ -211,6 +217,7 @@ void ContractChecker::on_clear(std::size_t at, const TraceEvent& e) {
   Model& m = model(hw.array);
   const auto slot = static_cast<std::size_t>(hw.index);
   if (slot >= m.head.size()) return;
+  subject_ = Pair{-1, -1};
   if (hw.new_value != -1) {
     breaks(Contract::ClearWrites, at, "the clear of " + list_text(e, hw.array) + " left it at " + std::to_string(hw.new_value) + ", not -1");
     return;
@@ -222,6 +229,7 @@ void ContractChecker::on_clear(std::size_t at, const TraceEvent& e) {
 void ContractChecker::on_visit(std::size_t at, const TraceEvent& e) {
   const std::int32_t k = e.element;
   if (!in_range(k)) return;
+  subject_ = Pair{k, k};
   const Cell c{e.cell[0], e.cell[1], dim_ == 3 ? e.cell[2] : -1};
   visitor_ = k;
   visited_ = c;
@@ -254,6 +262,7 @@ void ContractChecker::on_visit(std::size_t at, const TraceEvent& e) {
 void ContractChecker::on_test(std::size_t at, const TraceEvent& e) {
   const std::int32_t k = e.element, m = e.other;
   if (!in_range(k) || !in_range(m)) return;
+  subject_ = Pair{std::min(k, m), std::max(k, m)};
   if (k == m) {
     breaks(Contract::TestSelf, at, id(k) + " is tested against itself: a walk reached its own entry (the own cell's walk starts at k, not after it)");
     return;
@@ -302,9 +311,28 @@ std::string ContractChecker::grid_text() const {
 
 
 
+BrokenContract api_rule_break(const Misbehaviour& m) {
+  BrokenContract b;
+  b.contract = Contract::ApiRule;
+  b.event = m.operations > 0 ? m.operations - 1 : 0;
+  b.after = m.operations > 0;
+  b.text = m.text;
+  b.subject = m.subject;
+  return b;
+}
+
 std::optional<BrokenContract> first_broken_contract(const FrameTrace& trace, const ContractNames& names) {
-  if (trace.log.events().empty() || trace.elements.size() == 0) return std::nullopt;
-  return contract_detail::ContractChecker(trace, names).run();
+  std::optional<BrokenContract> found;
+  if (!trace.log.events().empty() && trace.elements.size() > 0) {
+    // A call stopped at a misbehaviour left a trace without its end: what it never did is not known.
+    const bool complete = !trace.misbehaviour || !trace.misbehaviour->cut;
+    found = contract_detail::ContractChecker(trace, names, complete).run();
+  }
+  if (trace.misbehaviour) {
+    const BrokenContract api = api_rule_break(*trace.misbehaviour);
+    if (!found || api.event < found->event || (api.event == found->event && !api.after)) found = api;
+  }
+  return found;
 }
 
 }  // namespace nbscope

@@ -36,6 +36,8 @@ enum class Contract : std::uint8_t {
   TestAnswer,      // each test answers the exact contact test (under --touching)
   TestOnce,        // each pair is tested once
   TestReported,    // a test that answered "contact" is reported as a pair
+  ApiRule,         // the plugin API's rules: pairs in range, never (k, k), never twice; trace calls naming
+                   // declared arrays, entries and elements; every cell written (a Misbehaviour)
 };
 // Its short name in reports: "first-level-once", "list-cell", "list-link", ..., "test-reported".
 [[nodiscard]] const char* contract_name(Contract c);
@@ -46,6 +48,8 @@ enum class Contract : std::uint8_t {
 struct BrokenContract {
   Contract contract = Contract::ListLink;
   std::size_t event = 0;     // index into the trace's events (0-based): the operation to show
+  bool after = false;        // the break came after `event` (a misbehaviour: the call that was refused)
+  Pair subject{-1, -1};      // the element(s) it names (k, k) or (k, m); -1 when it names none
   std::string text;          // what broke, in one sentence naming the elements, cells and lists
   std::vector<Pair> cost;    // contacts it cost, where known (the first few)
   std::int64_t cost_count = 0;  // all of them (cost holds the first kMaxCostListed)
@@ -59,7 +63,10 @@ struct ContractNames {
 };
 
 // The first broken contract of `trace` (a recorded detection: its events, arrays, elements, grid and
-// pairs), or none when every contract holds. O(events + elements * 3^dim).
+// pairs, and its misbehaviour), or none when every contract holds. O(events + elements * 3^dim).
 [[nodiscard]] std::optional<BrokenContract> first_broken_contract(const FrameTrace& trace, const ContractNames& names = {});
+
+// A misbehaviour as the ApiRule break it is, after the last of `operations` recorded before it.
+[[nodiscard]] BrokenContract api_rule_break(const Misbehaviour& m);
 
 }  // namespace nbscope

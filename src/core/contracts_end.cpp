@@ -57,6 +57,7 @@ void ContractChecker::coverage(std::size_t end) {
   }
   for (std::int64_t k = 0; k < n_ && first_level_start != kNone; ++k) {
     if (first_level_[static_cast<std::size_t>(k)] == 0) {
+      subject_ = Pair{static_cast<ElementId>(k), static_cast<ElementId>(k)};
       breaks(Contract::FirstLevelOnce, first_level_start, id(k) + " is never pushed onto a first-level list: the loop over all elements leaves it out");
       break;
     }
@@ -79,6 +80,7 @@ void ContractChecker::coverage(std::size_t end) {
           ++count;
           if (cost.size() < kMaxCostListed) cost.push_back(Pair{static_cast<ElementId>(k), static_cast<ElementId>(m)});
         }
+      subject_ = Pair{static_cast<ElementId>(k), static_cast<ElementId>(k)};
       breaks(Contract::RowProcessed, row_due(row), row_text(c) + " holds elements (" + id(k) + " in cell " + cell_text(c) +
                                                        ") but is never processed: its cell lists are not built and no element of it visits a cell",
              std::move(cost), count);
@@ -91,6 +93,7 @@ void ContractChecker::coverage(std::size_t end) {
           due = p->at;
           break;
         }
+      subject_ = Pair{static_cast<ElementId>(k), static_cast<ElementId>(k)};
       breaks(Contract::CellList, due, id(k) + " is never pushed onto the list of its cell " + cell_text(c) + ", while " + row_text(c) +
                                           "'s lists were built: the loop that builds them leaves it out");
       return;
@@ -118,6 +121,7 @@ void ContractChecker::mask(std::size_t end) {
       std::vector<Pair> cost;
       std::int64_t count = 0;
       cost_of_cell(static_cast<std::int32_t>(k), c, cost, count);
+      subject_ = Pair{static_cast<ElementId>(k), static_cast<ElementId>(k)};
       breaks(Contract::MaskRelates, last,
              "no element's mask visits its neighbour at " + offset_text(due) + " nor at " + offset_text(Cell{-due[0], -due[1], -due[2]}) +
                  ": the mask of " + id(k) + " (cell " + cell_text(cells_[static_cast<std::size_t>(k)]) + ") ends without cell " + cell_text(c) +
@@ -138,6 +142,7 @@ void ContractChecker::mask(std::size_t end) {
       std::vector<Pair> cost;
       std::int64_t count = 0;
       cost_of_cell(static_cast<std::int32_t>(k), c, cost, count);
+      subject_ = Pair{static_cast<ElementId>(k), static_cast<ElementId>(k)};
       breaks(Contract::MaskCell, last, "the mask of " + id(k) + " (cell " + cell_text(cells_[static_cast<std::size_t>(k)]) + ") never visits cell " +
                                            cell_text(c) + ", its neighbour at " + offset_text(o) + ", which holds elements and which other elements' masks visit at that offset",
              std::move(cost), count);

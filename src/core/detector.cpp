@@ -12,6 +12,10 @@ std::vector<DetectorInfo>& registry() {
 }
 }  // namespace
 
+void throw_if_misbehaved(const Detector& detector) {
+  if (const Misbehaviour* m = detector.misbehaviour()) throw DetectorBug(m->where + m->text);
+}
+
 const std::vector<const char*>& Detector::pseudocode(int /*dim*/) const {
   static const std::vector<const char*> none;
   return none;

@@ -53,6 +53,18 @@ struct WalkCheck {
   std::int64_t count = 0;
 };
 
+// A detector's own bug seen in what it told nbscope (a plugin: a pair (k, k), out of range or given
+// twice, a trace call naming what does not exist, a cell not written): evidence for its frame, a
+// `contract` violation located where it happened, never an error that ends the run.
+struct Misbehaviour {
+  std::string text;                 // "add_pair(447, 447): an element paired with itself"
+  Pair subject{-1, -1};             // the elements it names (in range), or -1
+  std::size_t operations = 0;       // trace operations recorded before it (its place in the trace)
+  bool cut = false;                 // the call was stopped there: the trace holds nothing after it
+  std::string where;                // "LIBRARY (NAME): frame N: ", for a message of its own
+};
+
+
 // A contact-detection algorithm. Instances keep their arrays between calls (as a simulation
 // would), so repeated detection does not reallocate.
 class Detector {
@@ -79,10 +91,16 @@ class Detector {
   // What the walk check of the last detection found, or nullptr when it was not checked (built-ins:
   // their lists are nbscope's own; plugins: DetectOptions::check_walks, 2D, traces and lists).
   [[nodiscard]] virtual const WalkCheck* walk_check() const { return nullptr; }
+  // The first misbehaviour of the last detection, or nullptr (built-ins: never).
+  [[nodiscard]] virtual const Misbehaviour* misbehaviour() const { return nullptr; }
   // The detector's loops in the book's wording for elements of dimension `dim`, one line each;
   // TraceEvent::line of a traced run indexes this list. Empty for detectors without a trace.
   [[nodiscard]] virtual const std::vector<const char*>& pseudocode(int dim) const;
 };
+
+// Throws DetectorBug with the last detection's misbehaviour (none: returns), where no check can hold
+// it as a violation (`pairs`, `scaling`).
+void throw_if_misbehaved(const Detector& detector);
 
 // Base of a detector written once as `template <int D, class Trace> void run(...)` for D = 2 and 3
 // (Self befriends this class): the dimension and the trace (NullTrace when off) are picked here.

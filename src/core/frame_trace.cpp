@@ -40,6 +40,7 @@ std::shared_ptr<const FrameTrace> trace_frame(Detector& detector, const Elements
   serial.threads = 1;  // the stepper walks the book's serial loops, whatever the run's --threads
   detector.detect_traced(elements, serial, out->pairs, out->log);
   out->detected = true;
+  if (const Misbehaviour* m = detector.misbehaviour()) out->misbehaviour = *m;
   if (out->log.events().empty()) {
     std::string tracing;
     for (const DetectorInfo& d : detector_infos())

@@ -4,6 +4,7 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,6 +35,7 @@ struct FrameTrace {
   std::string refusal;             // why nothing was recorded, in words for the panels
   bool detected = false;           // the detector ran (`pairs` is its answer), recorded or not
   Touching touching = Touching::inclusive;  // the contact convention it detected under
+  std::optional<Misbehaviour> misbehaviour;  // the detection's first misbehaviour (a plugin's), if any
 };
 
 // An empty trace of frame `frame` by `algorithm` with a fresh serial, for a caller to fill `refusal`.

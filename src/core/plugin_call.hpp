@@ -46,6 +46,7 @@ struct PluginCall {
   bool limit_hit = false;
   std::string failure;            // fail()'s message, cut (cut_plugin_text)
   std::string breach;             // the first broken rule, in words ("" while none)
+  Pair subject{-1, -1};           // the elements it names, when they are in range
   std::size_t pairs_at_breach = 0;  // pairs given before it (checked after the call: one may break first)
   std::exception_ptr exception;   // an exception of nbscope's own (out of memory, a trace consumer's)
   TraceLog* log = nullptr;        // null when untraced

@@ -43,21 +43,37 @@ void check_pseudocode(const char* const* lines, std::int32_t count, const char* 
     if (lines[i] == nullptr) throw Error(where + "[" + std::to_string(i) + "] is NULL");
 }
 
-// Throws the breach of the first entry of `raw` (2D cells as a plugin wrote them) outside `grid`.
-[[noreturn]] void throw_bad_cell(const std::vector<std::int32_t>& raw, const Grid& grid, const std::string& where) {
+// What a Misbehaviour says, where it was, and whether the call stopped there (`where` is added last).
+struct MisbehaviourAt {
+  std::string text;
+  Pair subject;
+  std::size_t operations;
+};
+Misbehaviour misbehaviour_at(MisbehaviourAt at, bool cut = false) {
+  Misbehaviour m;
+  m.text = std::move(at.text);
+  m.subject = at.subject;
+  m.operations = at.operations;
+  m.cut = cut;
+  return m;
+}
+
+// The first entry of `raw` (2D cells as a plugin wrote them) outside `grid`, as a misbehaviour.
+Misbehaviour bad_cell(const std::vector<std::int32_t>& raw, const Grid& grid, std::size_t operations) {
   static const char* const axis_names[2] = {"x", "y"};
   for (std::size_t k = 0; k < raw.size() / 2; ++k) {
     for (int a = 0; a < 2; ++a) {
       const std::int32_t v = raw[k * 2 + a];
+      const auto e = static_cast<std::int32_t>(k);
       if (v == -1)
-        throw PluginError(where + "cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] +
-                          " was not written (still -1)");
+        return misbehaviour_at({"cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] + " was not written (still -1)", Pair{e, e}, operations});
       if (v < 0 || v >= grid.n[a])
-        throw PluginError(where + "cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] + " is " +
-                          std::to_string(v) + ", outside [0, " + std::to_string(grid.n[a]) + ")");
+        return misbehaviour_at({"cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] + " is " + std::to_string(v) + ", outside [0, " +
+                    std::to_string(grid.n[a]) + ")",
+                Pair{e, e}, operations});
     }
   }
-  throw PluginError(where + "cells: an entry is outside the grid");  // not reached: the caller saw one
+  return misbehaviour_at({"cells: an entry is outside the grid", Pair{-1, -1}, operations});  // not reached: the caller saw one
 }
 
 }  // namespace
@@ -271,22 +287,31 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   out_pairs.resize(call.given());
 
   if (call.exception) std::rethrow_exception(call.exception);
-  // Every pair checked and put as i < j, and the first repeat found, in one pass; the breaches are
-  // then told in the order they happened: a bad pair given before the first broken rule, that rule, the
-  // pair limit, a failure, a repeat.
+  // A plugin's own bugs are its frame's evidence (Misbehaviour), the first of them told in the order
+  // they happened: a bad pair given before the first broken rule, that rule, a repeat, a cell. The
+  // pairs keep what can be checked; the run goes on. Only nbscope's limit and the plugin's own fail()
+  // end it.
+  misbehaviour_.reset();
+  const std::size_t operations = trace != nullptr ? trace->events().size() : 0;
   const PairScan scan = scan_pairs(out_pairs, elements.size(), pair_scan_);
-  if (!scan.all_valid)
-    throw_bad_pair(out_pairs, call.breach.empty() ? out_pairs.size() : call.pairs_at_breach, elements.size(), options.frame);
-  if (!call.breach.empty()) throw PluginError(where(options.frame) + call.breach);
+  if (!scan.all_valid) {
+    note_bad_pair(out_pairs, call.breach.empty() ? out_pairs.size() : call.pairs_at_breach, elements.size(), operations);
+    std::erase_if(out_pairs, [n = elements.size()](const Pair& p) { return p.i < 0 || p.j < 0 || p.i >= n || p.j >= n || p.i == p.j; });
+  }
+  if (!call.breach.empty() && !misbehaviour_) misbehaviour_ = misbehaviour_at({call.breach, call.subject, operations}, true);
   if (call.limit_hit) throw_pair_limit(options.max_pairs);  // told to stop: not the plugin's fault
-  if (status != 0)
+  if (status != 0 && call.breach.empty())
     throw PluginError(where(options.frame) + "nbscope_detect returned " + std::to_string(status) +
                       (call.failure.empty() ? " without a reason (fail() not called)" : ": " + printable_line(call.failure)));
   if (scan.first_repeat >= 0) {
     const Pair p = out_pairs[static_cast<std::size_t>(scan.first_repeat)];
-    throw PluginError(where(options.frame) + "add_pair: pair (" + std::to_string(p.i) + ", " + std::to_string(p.j) + ") given twice");
+    if (!misbehaviour_)
+      misbehaviour_ = misbehaviour_at({"add_pair: pair (" + std::to_string(p.i) + ", " + std::to_string(p.j) + ") given twice", p, operations});
+    sort_pairs(out_pairs);
+    out_pairs.erase(std::unique(out_pairs.begin(), out_pairs.end()), out_pairs.end());
   }
-  if (cells_wanted && elements.dim == 2) check_cells(elements, options.frame);
+  if (cells_wanted && elements.dim == 2) check_cells(elements, operations);
+  if (misbehaviour_) misbehaviour_->where = where(options.frame);
   walks_checked_ = walk;
 }
 
@@ -297,18 +322,24 @@ bool PluginDetector::wants_walk_check(const Elements& elements, const DetectOpti
 
 const WalkCheck* PluginDetector::walk_check() const { return walks_checked_ ? &walks_ : nullptr; }
 
-void PluginDetector::throw_bad_pair(const PairList& pairs, std::size_t given_before_breach, std::int64_t elements,
-                                    std::int64_t frame) const {
+void PluginDetector::note_bad_pair(const PairList& pairs, std::size_t given_before_breach, std::int64_t elements,
+                                   std::size_t operations) {
   const auto n = static_cast<std::uint32_t>(elements);
   for (std::size_t k = 0; k < given_before_breach; ++k) {
     const Pair p = pairs[k];
     const std::string call = "add_pair(" + std::to_string(p.i) + ", " + std::to_string(p.j) + "): ";
     if (static_cast<std::uint32_t>(p.i) >= n || static_cast<std::uint32_t>(p.j) >= n) {
-      const std::int32_t bad = static_cast<std::uint32_t>(p.i) >= n ? p.i : p.j;
-      throw PluginError(where(frame) + call + "element " + std::to_string(bad) + " is out of range [0, " +
-                        std::to_string(n) + ")");
+      const bool i_bad = static_cast<std::uint32_t>(p.i) >= n;
+      const std::int32_t bad = i_bad ? p.i : p.j, good = i_bad ? p.j : p.i;
+      const bool good_ok = static_cast<std::uint32_t>(good) < n;
+      misbehaviour_ = misbehaviour_at({call + "element " + std::to_string(bad) + " is out of range [0, " + std::to_string(n) + ")",
+                                   good_ok ? Pair{good, good} : Pair{-1, -1}, operations});
+      return;
     }
-    if (p.i == p.j) throw PluginError(where(frame) + call + "an element paired with itself");
+    if (p.i == p.j) {
+      misbehaviour_ = misbehaviour_at({call + "an element paired with itself", p, operations});
+      return;
+    }
   }
 }
 
@@ -316,7 +347,7 @@ std::string PluginDetector::where(std::int64_t frame) const {
   return symbols_.library + " (" + name_ + "): frame " + std::to_string(frame) + ": ";
 }
 
-void PluginDetector::check_cells(const Elements& elements, std::int64_t frame) {
+void PluginDetector::check_cells(const Elements& elements, std::size_t operations) {
   const auto n = static_cast<std::size_t>(elements.size());
   // Checks and copies ({ix, iy} as written) without a branch on the data: -1, negative and too large
   // alike fail the unsigned compare. Four elements a step, each lane with its own flag, so the
@@ -342,7 +373,10 @@ void PluginDetector::check_cells(const Elements& elements, std::int64_t frame) {
   }
   std::uint32_t any = 0;
   for (const std::uint32_t lane : outside) any |= lane;
-  if (any != 0) throw_bad_cell(raw_cells_, grid_, where(frame));
+  if (any != 0) {
+    if (!misbehaviour_) misbehaviour_ = bad_cell(raw_cells_, grid_, operations);
+    return;  // no own cells this frame: the misbehaviour says why
+  }
   has_cells_ = true;
 }
 

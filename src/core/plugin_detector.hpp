@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -148,6 +149,8 @@ class PluginDetector final : public Detector {
   // What the walk check of the last detection found (traced, or DetectOptions::check_walks; 2D
   // plugins declaring NBSCOPE_CAP_TRACES and NBSCOPE_CAP_LISTS), else nullptr.
   [[nodiscard]] const WalkCheck* walk_check() const override;
+  // The last detection's first misbehaviour (a bad pair, a broken trace rule, a cell), or nullptr.
+  [[nodiscard]] const Misbehaviour* misbehaviour() const override { return misbehaviour_ ? &*misbehaviour_ : nullptr; }
   // The plugin's pseudocode lines for `dim`.
   [[nodiscard]] const std::vector<const char*>& pseudocode(int dim) const override;
 
@@ -155,11 +158,11 @@ class PluginDetector final : public Detector {
   void run(const Elements& elements, const DetectOptions& options, PairList& out_pairs, TraceLog* trace);
   // "LIBRARY (NAME): frame N: ", the head of every breach's message: built only when one is thrown.
   [[nodiscard]] std::string where(std::int64_t frame) const;
-  void check_cells(const Elements& elements, std::int64_t frame);
-  // Throws the breach of the first of `pairs`' first `given_before_breach` that names an element out
-  // of [0, elements) or pairs one with itself; returns when none of them does.
-  void throw_bad_pair(const PairList& pairs, std::size_t given_before_breach, std::int64_t elements,
-                      std::int64_t frame) const;
+  // Copies the plugin's cells (has_cells_), or notes the first one not written or outside the grid.
+  void check_cells(const Elements& elements, std::size_t operations);
+  // Notes the first of `pairs`' first `given_before_breach` that names an element out of [0, elements)
+  // or pairs one with itself as the misbehaviour; leaves it unset when none of them does.
+  void note_bad_pair(const PairList& pairs, std::size_t given_before_breach, std::int64_t elements, std::size_t operations);
   // True when this detection's walks are checked: traced or asked, 2D, a plugin that traces its lists.
   [[nodiscard]] bool wants_walk_check(const Elements& elements, const DetectOptions& options, bool traced) const;
 
@@ -176,6 +179,7 @@ class PluginDetector final : public Detector {
   bool has_cells_ = false;               // the last detection was 2D with NBSCOPE_CAP_CELLS
   PairScanScratch pair_scan_;             // scan_pairs' memory (kept between frames)
   WalkCheck walks_;                      // the last detection's walk check
+  std::optional<Misbehaviour> misbehaviour_;  // the last detection's first misbehaviour
   bool walks_checked_ = false;
 };
 

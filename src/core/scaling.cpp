@@ -49,6 +49,7 @@ bool measure(Detector& detector, const Elements& elements, const ScalingPlan& pl
     if (cancelled(cancel)) return row.repeats > 0;
     const auto t0 = std::chrono::steady_clock::now();
     detector.detect(elements, options, pairs);
+    throw_if_misbehaved(detector);  // a plugin's bug: no check here to hold it
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     best = std::min(best, s);
     spent += s;
@@ -204,10 +205,14 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
             const Elements pilot = make_layout(layout, kPilotN, 2, plan.seed);
             PairList pairs;
             const auto t0 = std::chrono::steady_clock::now();
-            make_detector(name)->detect(pilot, options, pairs);
+            const std::unique_ptr<Detector> pilot_detector = make_detector(name);
+            pilot_detector->detect(pilot, options, pairs);
+            throw_if_misbehaved(*pilot_detector);
             last[a] = {kPilotN, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
           } catch (const PluginError&) {
             throw;  // a plugin that breaks the API ends the run, as in every command (docs/plugins.md)
+          } catch (const DetectorBug&) {
+            throw;  // as does its own bug
           } catch (const Error&) {
             // the point itself reports what is wrong
           }
@@ -233,6 +238,8 @@ ScalingResult run_scaling(const ScalingPlan& plan, const std::function<void(cons
           }
         } catch (const PluginError&) {
           throw;  // not a point to skip: the plugin broke the API
+        } catch (const DetectorBug&) {
+          throw;  // nor is a detector's own bug
         } catch (const Error& e) {  // e.g. screen's array past its memory limit on a sparse world
           report(point, nullptr, std::string("skipped: ") + e.what());
           continue;

@@ -6,13 +6,13 @@
 //   stopped_at_violation (null | frame), passed,
 //   violations_total, runs [one per algorithm:
 //     {algorithm, passed, frames_run, violations {total, by_invariant, frames_with_violations, first_frame,
-//      listed}, references_used {name: frames}, timing_ms {physics|detection|check: {mean, max, total}},
+//      listed, located (null | {frame, operation, operations, kind, contract, line, pseudocode, text})}, references_used {name: frames}, timing_ms {physics|detection|check: {mean, max, total}},
 //      check_ms_parts {R|F|G/T|A==R|A-in-F|T-in-A|AABB-in-cells: {mean, max, total}} (check split by part),
 //      frames [{frame, hash (16 hex digits: hash_elements of the frame's elements), elements, bodies, reference, pairs {A, R, F, T, G, A_in_scope},
 //               left_out_of_A_in_F {same_body, no_dynamic, joint, fixture_filter, beyond_aabb},
 //               aabb_float_rounding, ms {physics, detection, check},
-//               check_ms_parts {R, F, G/T, A==R, A-in-F, T-in-A, AABB-in-cells},
-//               held {invariant: true | false | null (not checked)},
+//               check_ms_parts {R, F, G/T, A==R, A-in-F, T-in-A, AABB-in-cells, cells, contract},
+//               held {invariant: true | false | null (not checked)}, contract (null | "name: the frame's first broken contract"),
 //               violations [{invariant, pair [i, j], cells [[ix, iy], [ix, iy]], what}],
 //               violations_not_listed, at_boundary {within_precision, exact_ties, listed [{pair, gap, resolution,
 //               tie, in ("R": not recorded, "A": recorded, not in R), what, ids}]}}]}]; with a dump's frames each
@@ -46,7 +46,8 @@ json frame_json(const FrameReport& f, const std::vector<std::int64_t>* ids) {
   json held = json::object();
   for (int k = 0; k < kInvariantCount; ++k) {
     const auto inv = static_cast<Invariant>(k);
-    const bool ran = f.checked && (!needs_box2d(inv) || f.box2d_checks) && (inv != Invariant::AInF || f.box2d_stepped);
+    const bool ran = f.checked && (!needs_box2d(inv) || f.box2d_checks) && (inv != Invariant::AInF || f.box2d_stepped) &&
+                     (inv != Invariant::Contract || f.contract_checked);
     held[invariant_name(inv)] = ran ? json(f.broken[static_cast<std::size_t>(k)] == 0) : json(nullptr);
   }
   json violations = json::array();
@@ -82,6 +83,7 @@ json frame_json(const FrameReport& f, const std::vector<std::int64_t>* ids) {
           {"ms", {{"physics", f.timings.physics_ms}, {"detection", f.timings.detection_ms}, {"check", f.timings.check_ms}}},
           {"check_ms_parts", check_parts_json(f.check_timings)},
           {"held", held},
+          {"contract", f.contract.empty() ? json(nullptr) : json(f.contract)},
           {"violations", violations},
           {"violations_not_listed", f.violation_count() - static_cast<std::int64_t>(f.violations.size())},
           {"at_boundary", {{"within_precision", c.boundary}, {"exact_ties", c.ties}, {"listed", boundary}}}};

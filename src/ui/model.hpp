@@ -153,7 +153,7 @@ struct UiState {
   std::optional<Pair> selected_pair;  // a violation's pair: both elements marked, the camera on them
   std::optional<std::array<std::int32_t, 2>> selected_cell;  // the cell last clicked (stepper: its operations)
   std::int64_t current_violation = -1;  // index into SimView::violations of the one gone to
-  std::array<bool, kInvariantCount> violation_filter{true, true, true, true, true};  // invariants listed
+  std::array<bool, kInvariantCount> violation_filter{true, true, true, true, true, true};  // invariants listed
   bool follow_operation = false;  // the camera follows the stepper's current operation
   // The lists overlay's filter; unset: Row past render::kRowFilterAbove elements, else All.
   std::optional<render::ListFilter> list_filter;

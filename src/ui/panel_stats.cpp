@@ -131,10 +131,13 @@ class StatsPanel final : public Panel {
     if (report == nullptr || !report->checked) {
       ImGui::TextDisabled("check: not run");
     } else if (report->ok() && report->box2d_checks) {
-      // `cells` is counted only where it applies (a plugin's own cells or walked lists).
-      ImGui::TextColored(ImVec4(0.4f, 0.9f, 0.5f, 1.0f), "check OK: all %d invariants (R = %s)", report->cells_checked ? 5 : 4,
-                         report->reference.c_str());
-      ImGui::TextDisabled(report->cells_checked ? "A == R, A in F, T in A, AABB in cells, cells" : "A == R, A in F, T in A, AABB in cells");
+      // `cells` and `contract` are counted only where they apply (a plugin's own cells or walked lists; a traced frame).
+      std::string covered = "A == R, A in F, T in A, AABB in cells";
+      if (report->cells_checked) covered += ", cells";
+      if (report->contract_checked) covered += ", contract";
+      ImGui::TextColored(ImVec4(0.4f, 0.9f, 0.5f, 1.0f), "check OK: all %d invariants (R = %s)",
+                         4 + (report->cells_checked ? 1 : 0) + (report->contract_checked ? 1 : 0), report->reference.c_str());
+      ImGui::TextDisabled("%s", covered.c_str());
     } else if (report->ok()) {
       ImGui::TextColored(ImVec4(0.4f, 0.9f, 0.5f, 1.0f), "check OK: A == %s", report->reference.c_str());
       ImGui::PushTextWrapPos(0.0f);

@@ -28,7 +28,7 @@ TEST(Headless, DefaultScenePassesAndReportsEveryFrame) {
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1);
   // Frames 0..90: frame 0 (the initial poses) is detected and checked like the others.
   EXPECT_NE(r.out.find("headless: default, nbs, 91 frames"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("all 5 invariants held in every frame (reference brute)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("all 6 invariants held in every frame (reference brute)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("ms per frame: physics"), std::string::npos);
 
   const json rep = json::parse(read_text(dir + "/r.json"));

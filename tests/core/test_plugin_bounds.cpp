@@ -71,6 +71,7 @@ std::string traced_error(const Body& body) {
   } catch (const PluginError& e) {
     return e.what();
   }
+  if (const Misbehaviour* m = detector.misbehaviour()) return m->where + m->text;  // the plugin's own bug: its frame's evidence
   return "";
 }
 
