@@ -47,9 +47,9 @@ std::unique_ptr<Detector> make_lane_detector(std::string_view name) {
   if (std::none_of(infos.begin(), infos.end(), [&](const DetectorInfo& d) { return d.name == name; }))
     throw Error("unknown algorithm '" + std::string(name) + "' (known: " + detector_names() + "; in a replay of a recording with pairs also " +
                 std::string(kRecordedAlgorithm) + ")");
-  std::unique_ptr<Detector> d = make_detector(name);
-  if (!d->supports_dim(2)) throw Error("algorithm '" + std::string(name) + "' does not handle 2D scenes");
-  return d;
+  // A detector of one dimension (a 3D-only plugin) is a lane like any: a frame of the other dimension
+  // is refused when it comes, naming both (Pipeline::detect).
+  return make_detector(name);
 }
 
 void check_recorded_fault(Fault fault) {

@@ -45,8 +45,8 @@ class RecordedPairsDetector final : public Detector {
 [[nodiscard]] const DetectorInfo& recorded_info();
 // recorded_info() for "recorded", else the registry's entry (Error for an unknown name).
 [[nodiscard]] const DetectorInfo& algorithm_info(std::string_view name);
-// A lane's detector: RecordedPairsDetector for "recorded", else the registry's, which must handle
-// 2D; Error for an unknown or 3D-only name.
+// A lane's detector: RecordedPairsDetector for "recorded", else the registry's (of either dimension:
+// a frame it does not handle is refused when it comes); Error for an unknown name.
 [[nodiscard]] std::unique_ptr<Detector> make_lane_detector(std::string_view name);
 // Error when `fault` cannot act on recorded pairs: the faults that emulate a detector's bug in its
 // input or cells (stale-positions, drop-mask-cell, off-by-one-cell) and Box2D's (drop-box2d-contact).

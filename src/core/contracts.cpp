@@ -32,6 +32,7 @@ const char* contract_name(Contract c) {
     case Contract::TestAnswer: return "test-answer";
     case Contract::TestOnce: return "test-once";
     case Contract::TestReported: return "test-reported";
+    case Contract::Cycle: return "cycle";
     case Contract::ApiRule: return "api-rule";
   }
   return "?";
@@ -55,6 +56,7 @@ const char* contract_rule(Contract c) {
     case Contract::TestAnswer: return "each test answers the exact contact test";
     case Contract::TestOnce: return "each pair is tested once";
     case Contract::TestReported: return "a test that answered contact is reported as a pair";
+    case Contract::Cycle: return "no list closes on itself";
     case Contract::ApiRule:
       return "the plugin API's rules hold: pairs in range, never (k, k), never twice; trace calls name declared arrays, "
              "entries and elements; every cell is written";
@@ -313,9 +315,9 @@ std::string ContractChecker::grid_text() const {
 
 BrokenContract api_rule_break(const Misbehaviour& m) {
   BrokenContract b;
-  b.contract = Contract::ApiRule;
+  b.contract = m.cycle ? Contract::Cycle : Contract::ApiRule;
   b.event = m.operations > 0 ? m.operations - 1 : 0;
-  b.after = m.operations > 0;
+  b.after = m.operations > 0 && !m.cycle;  // a cycle is the push or test that closed it: recorded
   b.text = m.text;
   b.subject = m.subject;
   return b;
@@ -330,7 +332,9 @@ std::optional<BrokenContract> first_broken_contract(const FrameTrace& trace, con
   }
   if (trace.misbehaviour) {
     const BrokenContract api = api_rule_break(*trace.misbehaviour);
-    if (!found || api.event < found->event || (api.event == found->event && !api.after)) found = api;
+    // At one operation the call nbscope stopped there says it best (a cycle names its list).
+    const bool tie = found && api.event == found->event && (!api.after || trace.misbehaviour->cut);
+    if (!found || api.event < found->event || tie) found = api;
   }
   return found;
 }

@@ -61,6 +61,7 @@ struct Misbehaviour {
   Pair subject{-1, -1};             // the elements it names (in range), or -1
   std::size_t operations = 0;       // trace operations recorded before it (its place in the trace)
   bool cut = false;                 // the call was stopped there: the trace holds nothing after it
+  bool cycle = false;               // it was stopped because a list closed on itself
   std::string where;                // "LIBRARY (NAME): frame N: ", for a message of its own
 };
 

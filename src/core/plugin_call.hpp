@@ -3,6 +3,7 @@
 #pragma once
 #include <nbscope/detector.h>
 
+#include <csetjmp>
 #include <cstdint>
 #include <exception>
 #include <string>
@@ -35,6 +36,21 @@ struct PluginCall {
     CellIndex visited;                                   // and the cell it visited
   };
 
+  // What the call's pushes and walks did so far, to stop it where a list closes on itself (a walk of
+  // it would never end): an element pushed twice onto one build of a list, a walk meeting an element twice.
+  struct ListWatch {
+    struct Heads {
+      std::vector<std::uint32_t> build;     // per slot: bumped by every clear
+      std::vector<std::int64_t> slot_of;    // per element: the slot of its last push (-1: none)
+      std::vector<std::uint32_t> build_of;  // and that slot's build then
+    };
+    std::vector<Heads> heads;             // by array id; empty until the array is pushed onto
+    std::vector<std::uint32_t> seen;      // per element: the walk that last tested it
+    std::uint32_t walk = 0;               // the current walk (one per visit_cell)
+    std::vector<std::int32_t> walked;     // its elements so far, in order (the first kShown)
+    static constexpr std::size_t kShown = 64;
+  };
+
   // add_pair writes at `next` into `pairs`, sized to its capacity for the call (then cut to given()).
   // One test per pair: at `stop` (the end of the buffer, the pair limit, or `next` once stopped) a
   // call goes the slow way, which grows the buffer or says stop.
@@ -53,6 +69,9 @@ struct PluginCall {
   std::int32_t lines = 0;         // the plugin's pseudocode lines in this dimension
   std::vector<Array> arrays;
   Walks walks;
+  ListWatch lists;
+  std::jmp_buf* escape = nullptr;  // where a call nbscope stops lands (call_detect in plugin_detector.cpp)
+  bool cycle = false;              // the breach is a list closed on itself: nbscope stopped the call
 
   // Notes a test of `other` by `k` that does not lie in the cell k's last visit walked (never throws).
   void check_walk(std::int32_t k, std::int32_t other) noexcept {
@@ -86,6 +105,9 @@ struct PluginCall {
       exception = std::current_exception();
     }
   }
+  // Ends the plugin's call now, back in call_detect (the breach says why). Only from a callback, with
+  // no object of its own alive: the plugin's C frames and the callback's are left without unwinding.
+  [[noreturn]] void stop_call() noexcept { std::longjmp(*escape, 1); }
   // Keeps the exception being handled (inside a catch block), unless one is already kept.
   void keep_exception() noexcept {
     stop = next;

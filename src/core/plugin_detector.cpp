@@ -43,6 +43,21 @@ void check_pseudocode(const char* const* lines, std::int32_t count, const char* 
     if (lines[i] == nullptr) throw Error(where + "[" + std::to_string(i) + "] is NULL");
 }
 
+// Calls the plugin's nbscope_detect; returns its status, or 1 when nbscope stopped the call from a
+// callback (PluginCall::stop_call; the breach says why). Its own frame holds nothing to unwind.
+[[gnu::noinline]] int call_detect(nbscope_detect_fn detect, void** state, const nbscope_frame* frame, const nbscope_output* output,
+                                  const nbscope_trace* trace, PluginCall& call) {
+  std::jmp_buf escape;
+  call.escape = &escape;
+  if (setjmp(escape) != 0) {
+    call.escape = nullptr;
+    return 1;
+  }
+  const int status = detect(state, frame, output, trace);
+  call.escape = nullptr;
+  return status;
+}
+
 // What a Misbehaviour says, where it was, and whether the call stopped there (`where` is added last).
 struct MisbehaviourAt {
   std::string text;
@@ -270,6 +285,8 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   walks_checked_ = false;
   walks_.first.clear();
   walks_.count = 0;
+  if ((trace != nullptr || walk) && (capabilities_ & NBSCOPE_CAP_LISTS) != 0)
+    call.lists.seen.assign(static_cast<std::size_t>(elements.size()), 0);  // the walks are watched for cycles
   if (walk) {
     walks_.first.reserve(WalkCheck::kKept);  // check_walk() never allocates
     call.walks.out = &walks_;
@@ -282,7 +299,7 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   own_bytes_known_ = false;  // the call may change the state
   {
     const PluginCallScope guarded(symbols_.guard.get(), PluginCallKind::detect, options.frame);
-    status = symbols_.detect(&state_, &frame, &output, trace != nullptr || walk ? &table : nullptr);
+    status = call_detect(symbols_.detect, &state_, &frame, &output, trace != nullptr || walk ? &table : nullptr, call);
   }
   out_pairs.resize(call.given());
 
@@ -298,7 +315,10 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
     note_bad_pair(out_pairs, call.breach.empty() ? out_pairs.size() : call.pairs_at_breach, elements.size(), operations);
     std::erase_if(out_pairs, [n = elements.size()](const Pair& p) { return p.i < 0 || p.j < 0 || p.i >= n || p.j >= n || p.i == p.j; });
   }
-  if (!call.breach.empty() && !misbehaviour_) misbehaviour_ = misbehaviour_at({call.breach, call.subject, operations}, true);
+  if (!call.breach.empty() && !misbehaviour_) {
+    misbehaviour_ = misbehaviour_at({call.breach, call.subject, operations}, true);
+    misbehaviour_->cycle = call.cycle;
+  }
   if (call.limit_hit) throw_pair_limit(options.max_pairs);  // told to stop: not the plugin's fault
   if (status != 0 && call.breach.empty())
     throw PluginError(where(options.frame) + "nbscope_detect returned " + std::to_string(status) +

@@ -63,6 +63,86 @@ std::pair<std::int32_t, std::int32_t> take_write(PluginCall& call, std::int32_t 
   return {old_value, a.shadow[i]};
 }
 
+// "17 -> 42 -> 17": the list of `next` from k, as the plugin's live array holds it, up to k again.
+std::string chain_from(const PluginCall& call, std::int32_t next, std::int32_t k) {
+  const PluginCall::Array& a = call.arrays[static_cast<std::size_t>(next)];
+  std::string out = number(k);
+  std::int32_t at = k;
+  for (int step = 0; step < 16; ++step) {
+    if (at < 0 || at >= a.size) return out;
+    at = a.live[at];
+    out += " -> " + number(at);
+    if (at == k || at == -1) return out;
+  }
+  return out + " -> ...";
+}
+
+// Notes the push of k onto slot `list` of heads array `heads`; true (the breach kept) when k is on that
+// build of the list already: the list now closes on itself.
+bool closes_list(PluginCall& call, std::int32_t heads, std::int64_t list, std::int32_t next, std::int32_t k) noexcept {
+  try {
+    auto& all = call.lists.heads;
+    if (all.size() <= static_cast<std::size_t>(heads)) all.resize(static_cast<std::size_t>(heads) + 1);
+    PluginCall::ListWatch::Heads& h = all[static_cast<std::size_t>(heads)];
+    if (h.build.empty()) {
+      h.build.assign(static_cast<std::size_t>(call.arrays[static_cast<std::size_t>(heads)].size), 0);
+      h.slot_of.assign(static_cast<std::size_t>(call.n), -1);
+      h.build_of.assign(static_cast<std::size_t>(call.n), 0);
+    }
+    const auto slot = static_cast<std::size_t>(list);
+    const auto e = static_cast<std::size_t>(k);
+    if (h.slot_of[e] == list && h.build_of[e] == h.build[slot]) {
+      call.breach_with("cycle: " + number(k) + " is pushed onto list " + number(list) + " of array " + number(heads) +
+                       " a second time with no clear between, so the list runs " + chain_from(call, next, k) +
+                       " (nbscope stopped the call: a walk of it would never end)");
+      call.subject = Pair{k, k};
+      call.cycle = true;
+      return true;
+    }
+    h.slot_of[e] = list;
+    h.build_of[e] = h.build[slot];
+  } catch (...) {
+    call.keep_exception();
+  }
+  return false;
+}
+
+// Notes the clear of slot `list` of heads array `heads`: a new build of that list begins.
+void list_cleared(PluginCall& call, std::int32_t heads, std::int64_t list) noexcept {
+  auto& all = call.lists.heads;
+  if (static_cast<std::size_t>(heads) < all.size() && !all[static_cast<std::size_t>(heads)].build.empty())
+    ++all[static_cast<std::size_t>(heads)].build[static_cast<std::size_t>(list)];
+}
+
+// Notes the test of `other` in k's current walk; true (the breach kept) when the walk met it before:
+// the list it follows closes on itself.
+bool walk_repeats(PluginCall& call, std::int32_t k, std::int32_t other) noexcept {
+  PluginCall::ListWatch& w = call.lists;
+  if (w.seen.empty() || call.walks.visitor != k) return false;
+  const auto e = static_cast<std::size_t>(other);
+  if (w.seen[e] != w.walk) {
+    w.seen[e] = w.walk;
+    if (w.walked.size() < PluginCall::ListWatch::kShown) w.walked.push_back(other);
+    return false;
+  }
+  try {
+    std::string chain;
+    bool from = false;
+    for (const std::int32_t m : w.walked) {
+      from = from || m == other;
+      if (from) chain += number(m) + " -> ";
+    }
+    call.breach_with("cycle: the walk of cell (" + number(call.walks.visited.ix) + "," + number(call.walks.visited.iy) + ")'s list for " +
+                     number(k) + " runs " + (from ? chain : "... -> ") + number(other) +
+                     ": the list closes on itself (nbscope stopped the call: the walk would never end)");
+    call.subject = Pair{std::min(k, other), std::max(k, other)};
+    call.cycle = true;
+  } catch (...) {
+    call.keep_exception();
+  }
+  return true;
+}
+
 // Runs `record` unless the call already stopped, keeping any exception it throws.
 template <class F>
 void guarded(PluginCall& call, F&& record) {
@@ -156,6 +236,7 @@ static void nbscope_plugin_push(void* ctx, std::int32_t line, const char* kind, 
     call.log->push_written(static_cast<std::uint8_t>(line), intern_plugin_label(kind), heads, list, next, k, old_head,
                            old_next, new_head, new_next, ix, iy, iz);
   });
+  if (call.escape != nullptr && !call.stopped() && closes_list(call, heads, list, next, k)) call.stop_call();
 }
 
 static void nbscope_plugin_clear(void* ctx, std::int32_t line, const char* kind, std::int32_t heads, std::int64_t list) {
@@ -167,6 +248,7 @@ static void nbscope_plugin_clear(void* ctx, std::int32_t line, const char* kind,
     const auto [old_head, new_head] = take_write(call, heads, list);
     call.log->clear_written(static_cast<std::uint8_t>(line), intern_plugin_label(kind), heads, list, old_head, new_head);
   });
+  list_cleared(call, heads, list);
 }
 
 static void nbscope_plugin_visit_cell(void* ctx, std::int32_t line, std::int32_t k, std::int32_t ix, std::int32_t iy,
@@ -175,6 +257,8 @@ static void nbscope_plugin_visit_cell(void* ctx, std::int32_t line, std::int32_t
   if (call.stopped() || !line_ok(call, "visit_cell", line) || !element_ok(call, "visit_cell", k, false)) return;
   call.walks.visitor = k;
   call.walks.visited = CellIndex{ix, iy};
+  ++call.lists.walk;
+  call.lists.walked.clear();
   guarded(call, [&] { call.log->visit_cell(static_cast<std::uint8_t>(line), k, ix, iy, iz); });
 }
 
@@ -186,6 +270,7 @@ static void nbscope_plugin_test_pair(void* ctx, std::int32_t line, std::int32_t 
     return;
   call.check_walk(k, other);
   guarded(call, [&] { call.log->test_pair(static_cast<std::uint8_t>(line), k, other, contact != 0); });
+  if (call.escape != nullptr && walk_repeats(call, k, other)) call.stop_call();
 }
 
 static void nbscope_plugin_set(void* ctx, std::int32_t line, const char* label, std::int32_t array, std::int64_t index,
