@@ -248,10 +248,11 @@ def evaluate(args, mutant, text):
 # ---- classify one run -------------------------------------------------------------------------------
 
 def error_line(stderr):
-    """nbscope's error line (the one that says why the run ended), else stderr's last line."""
+    """nbscope's error line (the one that says why the run ended), else stderr's first line; with
+    glibc's heap message after it when there is one (an error, then the process dies on its way out)."""
     lines = [l.strip() for l in stderr.splitlines() if l.strip()]
-    errors = [l for l in lines if "error:" in l or HEAP_ABORT.search(l)]
-    return ((errors or lines or [""])[0])[:400]
+    errors = [l for l in lines if "error:" in l][:1] + [l for l in lines if HEAP_ABORT.search(l)][:1]
+    return " / ".join(errors or lines[:1])[:400]
 
 
 def located_violation(report, stdout):
