@@ -71,6 +71,7 @@ class ContractChecker {
     std::vector<std::int64_t> member_slot;   // per element: the slot of its last push, -1 none
     std::vector<std::int64_t> member_build;  // and that slot's build then
     std::vector<Cell> member_cell;           // and the cell that push was keyed to
+    std::vector<std::size_t> member_at;      // and that push's event
   };
   Model& model(int heads);
   std::int32_t initial_head(int heads, std::int64_t slot) const {
@@ -140,6 +141,11 @@ class ContractChecker {
   std::int32_t visitor_ = -1;
   Cell visited_{-1, -1, -1};
   std::unordered_set<std::int64_t> tested_, reported_;
+  // Where the clear of a list that was pushed onto at `pushed` was due: the first phase after it of the
+  // pseudocode line that clears heads array `heads` elsewhere in the trace, if one comes before `before`.
+  [[nodiscard]] std::optional<std::size_t> clear_due(int heads, std::size_t pushed, std::size_t before) const;
+  std::unordered_map<int, std::vector<std::uint8_t>> clear_lines_;  // per heads array: the lines of its Clear events
+  std::vector<std::size_t> phases_;                            // every Phase event, in order
   Pair subject_{-1, -1};  // the elements the event being checked names (BrokenContract::subject)
   std::optional<BrokenContract> first_;
 };

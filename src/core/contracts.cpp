@@ -81,6 +81,23 @@ ContractChecker::ContractChecker(const FrameTrace& t, const ContractNames& names
   first_level_.assign(static_cast<std::size_t>(n_), 0);
   on_cell_list_.assign(static_cast<std::size_t>(n_), false);
   for (const Pair& p : t.pairs) reported_.insert(key(p.i, p.j));
+  const std::vector<TraceEvent>& ev = t.log.events();
+  for (std::size_t at = 0; at < ev.size(); ++at) {
+    if (ev[at].op == TraceOp::Phase) phases_.push_back(at);
+    if (ev[at].op == TraceOp::Clear && ev[at].write_count > 0) {
+      std::vector<std::uint8_t>& lines = clear_lines_[ev[at].writes[0].array];
+      if (std::find(lines.begin(), lines.end(), ev[at].line) == lines.end()) lines.push_back(ev[at].line);
+    }
+  }
+}
+
+std::optional<std::size_t> ContractChecker::clear_due(int heads, std::size_t pushed, std::size_t before) const {
+  const auto found = clear_lines_.find(heads);
+  if (found == clear_lines_.end()) return std::nullopt;
+  const std::vector<TraceEvent>& ev = t_.log.events();
+  for (auto p = std::upper_bound(phases_.begin(), phases_.end(), pushed); p != phases_.end() && *p < before; ++p)
+    if (std::find(found->second.begin(), found->second.end(), ev[*p].line) != found->second.end()) return *p;
+  return std::nullopt;
 }
 
 std::optional<BrokenContract> ContractChecker::run() {
@@ -128,6 +145,7 @@ ContractChecker::Model& ContractChecker::model(int heads) {
   m.member_slot.assign(static_cast<std::size_t>(n_), -1);
   m.member_build.assign(static_cast<std::size_t>(n_), 0);
   m.member_cell.assign(static_cast<std::size_t>(n_), Cell{-1, -1, -1});
+  m.member_at.assign(static_cast<std::size_t>(n_), 0);
   return models_.emplace(heads, std::move(m)).first->second;
 }
 
@@ -201,13 +219,18 @@ void ContractChecker::on_push(std::size_t at, const TraceEvent& e) {
   }
   const Cell keyed{e.cell[0], e.cell[1], e.cell[2]};
   if (expected >= 0 && m.member_cell[static_cast<std::size_t>(expected)] != keyed) {
-    breaks(Contract::ListLink, at, "the push of " + id(k) + " onto " + list + " for cell " + cell_text(keyed) + " links it to " + id(expected) +
-                                       ", pushed onto that list for cell " + cell_text(m.member_cell[static_cast<std::size_t>(expected)]) +
-                                       ": the head was not cleared before the list was reused, so it runs on into a stale chain");
+    // The list was built for another cell and never cleared: the break is the clear that was due.
+    const std::string text = "the push of " + id(k) + " onto " + list + " for cell " + cell_text(keyed) + " (operation " + std::to_string(at + 1) +
+                             ") links it to " + id(expected) + ", pushed onto that list for cell " +
+                             cell_text(m.member_cell[static_cast<std::size_t>(expected)]) + ": the head was not cleared before the list was reused";
+    const std::optional<std::size_t> due = clear_due(hw.array, m.member_at[static_cast<std::size_t>(expected)], at);
+    if (due) breaks(Contract::ListLink, *due, "this clearing leaves " + list + " set: " + text + ", so it runs on into a stale chain");
+    else breaks(Contract::ListLink, at, text + ", so it runs on into a stale chain");
     return;
   }
   m.head[slot] = k;
   m.member_cell[static_cast<std::size_t>(k)] = keyed;
+  m.member_at[static_cast<std::size_t>(k)] = at;
   m.member_slot[static_cast<std::size_t>(k)] = static_cast<std::int64_t>(slot);
   m.member_build[static_cast<std::size_t>(k)] = m.build[slot];
   cell_pushes_.push_back({at, k, full_key});
@@ -335,6 +358,7 @@ std::optional<BrokenContract> first_broken_contract(const FrameTrace& trace, con
     // At one operation the call nbscope stopped there says it best (a cycle names its list).
     const bool tie = found && api.event == found->event && (!api.after || trace.misbehaviour->cut);
     if (!found || api.event < found->event || tie) found = api;
+    else if (trace.misbehaviour->cut) found->text += " (then, at operation " + std::to_string(api.event + 1) + ": " + api.text + ")";
   }
   return found;
 }

@@ -79,7 +79,7 @@ std::string chain_from(const PluginCall& call, std::int32_t next, std::int32_t k
 
 // Notes the push of k onto slot `list` of heads array `heads`; true (the breach kept) when k is on that
 // build of the list already: the list now closes on itself.
-bool closes_list(PluginCall& call, std::int32_t heads, std::int64_t list, std::int32_t next, std::int32_t k) noexcept {
+bool closes_list(PluginCall& call, const char* kind, std::int32_t heads, std::int64_t list, std::int32_t next, std::int32_t k) noexcept {
   try {
     auto& all = call.lists.heads;
     if (all.size() <= static_cast<std::size_t>(heads)) all.resize(static_cast<std::size_t>(heads) + 1);
@@ -92,9 +92,10 @@ bool closes_list(PluginCall& call, std::int32_t heads, std::int64_t list, std::i
     const auto slot = static_cast<std::size_t>(list);
     const auto e = static_cast<std::size_t>(k);
     if (h.slot_of[e] == list && h.build_of[e] == h.build[slot]) {
-      call.breach_with("cycle: " + number(k) + " is pushed onto list " + number(list) + " of array " + number(heads) +
-                       " a second time with no clear between, so the list runs " + chain_from(call, next, k) +
-                       " (nbscope stopped the call: a walk of it would never end)");
+      const std::string array = call.log != nullptr ? call.log->arrays()[static_cast<std::size_t>(heads)].name : "array " + number(heads);
+      call.breach_with("cycle: " + cut_plugin_text(kind != nullptr && *kind != '\0' ? kind : "list") + " " + array + "[" + number(list) + "] runs " +
+                       chain_from(call, next, k) + ": " + number(k) + " is pushed onto it a second time with no clear between " +
+                       "(nbscope stopped the call: a walk of it would never end)");
       call.subject = Pair{k, k};
       call.cycle = true;
       return true;
@@ -236,7 +237,7 @@ static void nbscope_plugin_push(void* ctx, std::int32_t line, const char* kind, 
     call.log->push_written(static_cast<std::uint8_t>(line), intern_plugin_label(kind), heads, list, next, k, old_head,
                            old_next, new_head, new_next, ix, iy, iz);
   });
-  if (call.escape != nullptr && !call.stopped() && closes_list(call, heads, list, next, k)) call.stop_call();
+  if (call.escape != nullptr && !call.stopped() && closes_list(call, kind, heads, list, next, k)) call.stop_call();
 }
 
 static void nbscope_plugin_clear(void* ctx, std::int32_t line, const char* kind, std::int32_t heads, std::int64_t list) {

@@ -1,0 +1,75 @@
+// Bugs nobody planted (issue 37), through the binary: nbs_reference.c with one line changed
+// (tests/plugins/CMakeLists.txt), each diagnosed by the contract it breaks in the headless summary
+// and the report, and never a hang or an API error.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "support/paths.hpp"
+#include "support/run_cli.hpp"
+
+namespace nbscope {
+namespace {
+
+using nlohmann::json;
+using testcli::run;
+using testpaths::scene;
+
+std::string bug(const std::string& variant) { return std::string(NBSCOPE_PLUGIN_DIR) + "/test_bug_" + variant + ".so"; }
+
+struct Diagnosed {
+  testcli::Result run;
+  json report;
+};
+
+// A headless run of the bug on pile.json for `frames` frames, with its report.
+Diagnosed diagnose(const std::string& variant, int frames) {
+  const std::string dir = testcli::scratch_dir("unplanted_" + variant);
+  Diagnosed d;
+  d.run = run("headless --scene '" + scene("pile") + "' --frames " + std::to_string(frames) + " --detector-timeout 60 --detector-lib '" +
+              bug(variant) + "' --report '" + dir + "/r.json'");
+  d.report = json::parse(testcli::read_text(dir + "/r.json"));
+  return d;
+}
+
+// The row loop stops one row early: the top row's x-lists are never built and its contacts never
+// tested. Its cells on x are never written either (the reference writes them in the row loop), an
+// API rule broken only after the call: the row not processed comes first, at the loop that skipped it.
+TEST(UnplantedBugs, ARowLoopThatStopsEarlyIsARowNotProcessed) {
+  const Diagnosed d = diagnose("row_early", 2);
+  EXPECT_EQ(d.run.exit_code, 1) << d.run.out << d.run.err;
+  EXPECT_EQ(d.run.err, "");
+  EXPECT_NE(d.run.out.find("located: operation "), std::string::npos) << d.run.out;
+  EXPECT_NE(d.run.out.find("contract row-processed broken: row 39 holds elements"), std::string::npos) << d.run.out;
+  const json& located = d.report["runs"][0]["violations"]["located"];
+  ASSERT_TRUE(located.is_object()) << d.report.dump();
+  EXPECT_EQ(located["contract"], "row-processed");
+  EXPECT_EQ(located["kind"], "phase");
+  EXPECT_EQ(located["line"], 3) << "the loop over the rows: " << located.dump();
+  const json& frame0 = d.report["runs"][0]["frames"][0];
+  EXPECT_EQ(frame0["held"]["contract"], false);
+  EXPECT_EQ(frame0["contract"].get<std::string>().rfind("row-processed: row 39", 0), 0u) << frame0.dump();
+}
+
+// The y heads are never reset: frame 1's first push links into frame 0's list (a stale link), its
+// lists close into cycles, and nbscope stops the call there instead of waiting for the watchdog.
+TEST(UnplantedBugs, HeadsKeptBetweenFramesAreAStaleLinkAndTheCycleEndsTheFrameNotTheRun) {
+  const Diagnosed d = diagnose("heads_kept", 3);
+  EXPECT_EQ(d.run.exit_code, 1) << d.run.out << d.run.err;
+  EXPECT_EQ(d.run.err, "") << "no hang, no API error";
+  const json& located = d.report["runs"][0]["violations"]["located"];
+  ASSERT_TRUE(located.is_object()) << d.report.dump();
+  EXPECT_EQ(located["frame"], 1);
+  EXPECT_EQ(located["contract"], "list-link");
+  EXPECT_EQ(located["kind"], "push");
+  EXPECT_NE(located["text"].get<std::string>().find("runs on into the last frame's list"), std::string::npos) << located.dump();
+  EXPECT_NE(located["text"].get<std::string>().find("cycle: "), std::string::npos) << "the cycle that ended the call, named";
+  EXPECT_EQ(d.report["runs"][0]["frames_run"], 4) << "every frame ran: the cycle ended its frame only";
+  for (int f = 1; f <= 3; ++f) {
+    EXPECT_EQ(d.report["runs"][0]["frames"][f]["held"]["contract"], false) << "frame " << f;
+  }
+}
+
+}  // namespace
+}  // namespace nbscope
