@@ -20,7 +20,11 @@
  * own (NULL on the first call); keep arrays in it between frames, as a simulation would.
  *
  * Guarded: a crash or a call running past --detector-timeout in any of these (or in the library's
- * constructors, at load) ends nbscope with one line naming the library and the call, exit 2. Texts
+ * constructors, at load) ends nbscope with one line naming the library and the call, exit 2. A
+ * breach of the rules below in a frame (a pair (k, k), out of range or given twice, a trace call
+ * naming what does not exist, a cell not written) is that frame's violation (docs/diagnosis.md); a
+ * list that closes on itself ends the call there (nbscope returns from a trace callback straight to
+ * its own caller: memory the plugin allocated in that call is lost). Texts
  * (fail() messages, names, labels, summary, pseudocode) are kept to their first 300 bytes.
  */
 #ifndef NBSCOPE_DETECTOR_H
