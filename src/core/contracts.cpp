@@ -173,6 +173,18 @@ void ContractChecker::on_push(std::size_t at, const TraceEvent& e) {
     return;
   }
   for (int a = 0; a < dim_; ++a) {
+    if (e.cell[a] < g_.n[a]) continue;
+    // A list keyed past the grid: a loop that ran a row (or a column) too far. Located at that row's
+    // phase when one names it, else at the push.
+    const Cell list_cell{e.cell[0], e.cell[1], e.cell[2]};
+    std::int64_t row = dim_ == 3 ? std::int64_t{e.cell[2]} * g_.n[1] + e.cell[1] : e.cell[1];
+    const bool phase = !row_starts_.empty() && row_starts_.back().second == row;
+    breaks(Contract::ListCell, phase ? row_starts_.back().first : at,
+           id(k) + " is pushed onto " + list + ", the list of cell " + cell_text(list_cell) + ", outside the grid's " + grid_text() +
+               " cells: a loop ran past the last row or column");
+    return;
+  }
+  for (int a = 0; a < dim_; ++a) {
     const std::int32_t keyed = e.cell[a];
     if (keyed >= 0 && keyed != own[static_cast<std::size_t>(a)]) {
       Cell shown = own;

@@ -13,6 +13,7 @@
 #include "core/elements.hpp"
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
+#include "core/plugin_detector.hpp"
 #include "core/trace.hpp"
 
 namespace nbscope {
@@ -72,6 +73,15 @@ struct PluginCall {
   ListWatch lists;
   std::jmp_buf* escape = nullptr;  // where a call nbscope stops lands (call_detect in plugin_detector.cpp)
   bool cycle = false;              // the breach is a list closed on itself: nbscope stopped the call
+  PluginProgress* progress = nullptr;  // advanced by every trace call (plugin_trace.cpp)
+
+  // One trace call of kind `op` at pseudocode line `line` was made (relaxed: read by a crash report).
+  void advance(TraceOp op, std::int32_t line) noexcept {
+    if (progress == nullptr) return;
+    progress->op.store(static_cast<std::int32_t>(op), std::memory_order_relaxed);
+    progress->line.store(line, std::memory_order_relaxed);
+    progress->operations.fetch_add(1, std::memory_order_relaxed);
+  }
 
   // Notes a test of `other` by `k` that does not lie in the cell k's last visit walked (never throws).
   void check_walk(std::int32_t k, std::int32_t other) noexcept {

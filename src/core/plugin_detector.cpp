@@ -297,10 +297,16 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
 
   int status = 0;
   own_bytes_known_ = false;  // the call may change the state
+  progress_.operations.store(0);
+  progress_.op.store(-1);
+  progress_.line.store(-1);
+  call.progress = &progress_;
+  if (symbols_.guard) symbols_.guard->follow(&progress_);
   {
     const PluginCallScope guarded(symbols_.guard.get(), PluginCallKind::detect, options.frame);
     status = call_detect(symbols_.detect, &state_, &frame, &output, trace != nullptr || walk ? &table : nullptr, call);
   }
+  if (symbols_.guard) symbols_.guard->follow(nullptr);
   out_pairs.resize(call.given());
 
   if (call.exception) std::rethrow_exception(call.exception);

@@ -17,6 +17,7 @@
 #pragma once
 #include <nbscope/detector.h>
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -53,11 +54,22 @@ enum class PluginCallKind {
   own_bytes,  // nbscope_own_bytes
 };
 
+// How far a traced call got: its operations so far and the last one's kind and pseudocode line, read
+// by a crash report or a watchdog (from a signal handler: lock-free atomics) to say where it stopped.
+struct PluginProgress {
+  std::atomic<std::int64_t> operations{0};  // trace calls made so far in this call
+  std::atomic<std::int32_t> op{-1};          // the last one's TraceOp, -1 none
+  std::atomic<std::int32_t> line{-1};        // its pseudocode line (0-based), -1 none
+};
+
 // Brackets every call into a plugin (io installs crash handlers and a watchdog there:
 // io/plugin_library.hpp); core itself needs none.
 class PluginCallGuard {
  public:
   virtual ~PluginCallGuard() = default;
+  // Before the detect call: where its progress is kept while it runs (null: none), so that a crash or a
+  // hang can be located at the last operation it traced.
+  virtual void follow(const PluginProgress* progress) { (void)progress; }
   // Called just before the call `kind` runs (on frame `frame` for detect).
   virtual void enter(PluginCallKind kind, std::int64_t frame) = 0;
   // Called as soon as it returns.
@@ -180,6 +192,7 @@ class PluginDetector final : public Detector {
   PairScanScratch pair_scan_;             // scan_pairs' memory (kept between frames)
   WalkCheck walks_;                      // the last detection's walk check
   std::optional<Misbehaviour> misbehaviour_;  // the last detection's first misbehaviour
+  PluginProgress progress_;               // the running call's, for a crash report or a watchdog
   bool walks_checked_ = false;
 };
 

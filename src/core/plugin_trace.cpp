@@ -222,6 +222,7 @@ static void nbscope_plugin_phase(void* ctx, std::int32_t line, const char* label
   PluginCall& call = call_of(ctx);
   if (call.stopped() || !line_ok(call, "phase", line)) return;
   guarded(call, [&] { call.log->phase(static_cast<std::uint8_t>(line), intern_plugin_label(label), index); });
+  call.advance(TraceOp::Phase, line);
 }
 
 static void nbscope_plugin_push(void* ctx, std::int32_t line, const char* kind, std::int32_t heads, std::int64_t list,
@@ -237,6 +238,7 @@ static void nbscope_plugin_push(void* ctx, std::int32_t line, const char* kind, 
     call.log->push_written(static_cast<std::uint8_t>(line), intern_plugin_label(kind), heads, list, next, k, old_head,
                            old_next, new_head, new_next, ix, iy, iz);
   });
+  call.advance(TraceOp::Push, line);
   if (call.escape != nullptr && !call.stopped() && closes_list(call, kind, heads, list, next, k)) call.stop_call();
 }
 
@@ -249,6 +251,7 @@ static void nbscope_plugin_clear(void* ctx, std::int32_t line, const char* kind,
     const auto [old_head, new_head] = take_write(call, heads, list);
     call.log->clear_written(static_cast<std::uint8_t>(line), intern_plugin_label(kind), heads, list, old_head, new_head);
   });
+  call.advance(TraceOp::Clear, line);
   list_cleared(call, heads, list);
 }
 
@@ -261,6 +264,7 @@ static void nbscope_plugin_visit_cell(void* ctx, std::int32_t line, std::int32_t
   ++call.lists.walk;
   call.lists.walked.clear();
   guarded(call, [&] { call.log->visit_cell(static_cast<std::uint8_t>(line), k, ix, iy, iz); });
+  call.advance(TraceOp::VisitCell, line);
 }
 
 static void nbscope_plugin_test_pair(void* ctx, std::int32_t line, std::int32_t k, std::int32_t other,
@@ -271,6 +275,7 @@ static void nbscope_plugin_test_pair(void* ctx, std::int32_t line, std::int32_t 
     return;
   call.check_walk(k, other);
   guarded(call, [&] { call.log->test_pair(static_cast<std::uint8_t>(line), k, other, contact != 0); });
+  call.advance(TraceOp::TestPair, line);
   if (call.escape != nullptr && walk_repeats(call, k, other)) call.stop_call();
 }
 
@@ -284,6 +289,7 @@ static void nbscope_plugin_set(void* ctx, std::int32_t line, const char* label, 
     const auto [old_value, new_value] = take_write(call, array, index);
     call.log->set(static_cast<std::uint8_t>(line), intern_plugin_label(label), array, index, old_value, new_value, k);
   });
+  call.advance(TraceOp::Set, line);
 }
 }  // extern "C"
 

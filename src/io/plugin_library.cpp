@@ -38,10 +38,12 @@ class Watchdog {
     static Watchdog* watchdog = new Watchdog();  // never destroyed: its thread runs until the process ends
     return *watchdog;
   }
-  // Ends the process with `message` (which stays valid until disarm()) unless disarm() comes within `seconds`.
-  void arm(double seconds, const char* message) {
+  // Ends the process with `message` (which stays valid until disarm()), then where `progress` says the
+  // call got to, unless disarm() comes within `seconds`.
+  void arm(double seconds, const char* message, const PluginProgress* progress) {
     const std::lock_guard<std::mutex> lock(mutex_);
     message_ = message;
+    progress_ = progress;
     deadline_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
     armed_ = true;
     if (idle_) wake_.notify_one();
@@ -64,7 +66,8 @@ class Watchdog {
       }
       wake_.wait_until(lock, deadline_);
       if (armed_ && Clock::now() >= deadline_) {
-        const ssize_t written = ::write(STDERR_FILENO, message_, std::strlen(message_));
+        const std::string line = message_ + progress_text(progress_) + "\n";
+        const ssize_t written = ::write(STDERR_FILENO, line.data(), line.size());
         (void)written;  // nothing better to do: the process ends either way
         remove_live_temporaries();
         ::_exit(2);
@@ -78,6 +81,7 @@ class Watchdog {
   bool idle_ = false;
   Clock::time_point deadline_{};
   const char* message_ = "";
+  const PluginProgress* progress_ = nullptr;
 };
 
 // Held during every plugin call: detector.h promises a library one thread at a time (the window's
@@ -108,14 +112,16 @@ class PluginGuard final : public PluginCallGuard {
     if (kind != kind_ || frame != frame_ || crash_tail_.empty()) {  // the lines change with the call only
       kind_ = kind;
       frame_ = frame;
-      crash_tail_ = call_text(kind, frame) + "\n";
+      crash_tail_ = call_text(kind, frame);  // the report adds where the call got to, and the newline
       char seconds[32];
       std::snprintf(seconds, sizeof seconds, "%g", timeout_);
       hang_line_ = who_ + "did not return within " + seconds + " s" + crash_tail_;
     }
-    arm_crash_report(crash_head_.c_str(), crash_tail_.c_str());
-    if (timeout_ > 0) Watchdog::instance().arm(timeout_, hang_line_.c_str());
+    const PluginProgress* progress = kind == PluginCallKind::detect ? progress_ : nullptr;
+    arm_crash_report(crash_head_.c_str(), crash_tail_.c_str(), progress);
+    if (timeout_ > 0) Watchdog::instance().arm(timeout_, hang_line_.c_str(), progress);
   }
+  void follow(const PluginProgress* progress) override { progress_ = progress; }
   void leave() override {
     if (timeout_ > 0) Watchdog::instance().disarm();
     disarm_crash_report();
@@ -124,6 +130,7 @@ class PluginGuard final : public PluginCallGuard {
 
  private:
   std::string who_, crash_head_, crash_tail_, hang_line_;
+  const PluginProgress* progress_ = nullptr;  // the detect call's, while one is followed
   PluginCallKind kind_ = PluginCallKind::detect;
   std::int64_t frame_ = 0;
   double timeout_;

@@ -8,6 +8,9 @@
 // only reads and writes lock-free atomics, calls the cleanups, sigaction and raise.
 #pragma once
 #include <memory>
+#include <string>
+
+#include "core/plugin_detector.hpp"
 
 namespace nbscope {
 
@@ -29,9 +32,13 @@ void install_stop_handlers();
 [[nodiscard]] const char* signal_name(int sig);
 
 // Until disarm_crash_report(), a crash (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT) writes `head`, the
-// signal's name and `tail` to stderr, removes the live temporaries and _exit(2)s: a detector plugin's
-// crash as one error line (io/plugin_library.hpp, io/signals_crash.cpp). Both strings outlive the arming.
-void arm_crash_report(const char* head, const char* tail);
+// signal's name, `tail` and where `progress` (when not null) says the call got to, to stderr, removes
+// the live temporaries and _exit(2)s: a detector plugin's crash as one error line
+// (io/plugin_library.hpp, io/signals_crash.cpp). Both strings and the progress outlive the arming.
+void arm_crash_report(const char* head, const char* tail, const PluginProgress* progress = nullptr);
+// ", after operation 812 of its trace (visit-cell, pseudocode line 7)", or "" before any; not for a
+// signal handler (the crash report writes the same words its own way).
+[[nodiscard]] std::string progress_text(const PluginProgress* progress);
 // Ends the report: from now on these signals go to the actions arm_crash_report() replaced.
 void disarm_crash_report();
 

@@ -16,13 +16,48 @@ namespace nbscope {
 
 namespace {
 
+void write_all(const char* text);
+
 constexpr std::array<int, 5> kCrashSignals{SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT};
 std::atomic<const char*> g_head{nullptr};  // non-null while a plugin's call runs
 std::atomic<const char*> g_tail{nullptr};
+std::atomic<const PluginProgress*> g_progress{nullptr};
 std::array<struct sigaction, kCrashSignals.size()> g_previous{};
 std::atomic<bool> g_installed{false};
-static_assert(std::atomic<const char*>::is_always_lock_free && std::atomic<bool>::is_always_lock_free,
+static_assert(std::atomic<const char*>::is_always_lock_free && std::atomic<bool>::is_always_lock_free &&
+                  std::atomic<std::int64_t>::is_always_lock_free && std::atomic<std::int32_t>::is_always_lock_free,
               "the signal handler reads them");
+
+// `v` in decimal into `out` (at least 21 bytes), for the handler (no printf there).
+const char* decimal(std::int64_t v, char* out) {
+  char digits[21];
+  int n = 0;
+  do {
+    digits[n++] = static_cast<char>('0' + v % 10);
+    v /= 10;
+  } while (v > 0 && n < 20);
+  for (int k = 0; k < n; ++k) out[k] = digits[n - 1 - k];
+  out[n] = '\0';
+  return out;
+}
+
+// Where the call got to, in the words of progress_text(), written piece by piece.
+void write_progress(const PluginProgress* p) {
+  if (p == nullptr) return;
+  const std::int64_t ops = p->operations.load(std::memory_order_relaxed);
+  if (ops <= 0) return;
+  char number[24];
+  write_all(", after operation ");
+  write_all(decimal(ops, number));
+  write_all(" of its trace (");
+  write_all(trace_op_name(static_cast<TraceOp>(p->op.load(std::memory_order_relaxed))));
+  const std::int32_t line = p->line.load(std::memory_order_relaxed);
+  if (line >= 0) {
+    write_all(", pseudocode line ");
+    write_all(decimal(line + 1, number));
+  }
+  write_all(")");
+}
 
 const char* crash_name(int sig) {
   switch (sig) {
@@ -57,6 +92,8 @@ extern "C" void on_crash_signal(int sig, siginfo_t* info, void* /*context*/) {
     write_all(head);
     write_all(crash_name(sig));
     write_all(g_tail.load());
+    write_progress(g_progress.load());
+    write_all("\n");
     remove_live_temporaries();
     ::_exit(2);
   }
@@ -82,8 +119,16 @@ void ensure_alternate_stack() {
 
 // Installed at the first arming and left in place (ten sigaction calls a frame cost more than a small
 // plugin's detection); between calls the handler hands any signal back to the action it replaced.
-void arm_crash_report(const char* head, const char* tail) {
+std::string progress_text(const PluginProgress* p) {
+  if (p == nullptr || p->operations.load() <= 0) return "";
+  const std::int32_t line = p->line.load();
+  return ", after operation " + std::to_string(p->operations.load()) + " of its trace (" +
+         trace_op_name(static_cast<TraceOp>(p->op.load())) + (line >= 0 ? ", pseudocode line " + std::to_string(line + 1) : "") + ")";
+}
+
+void arm_crash_report(const char* head, const char* tail, const PluginProgress* progress) {
   g_tail.store(tail);
+  g_progress.store(progress);
   if (!g_installed.load()) {
     ensure_alternate_stack();
     struct sigaction ours {};
