@@ -71,5 +71,18 @@ TEST(UnplantedBugs, HeadsKeptBetweenFramesAreAStaleLinkAndTheCycleEndsTheFrameNo
   }
 }
 
+// A crash and a hang inside a traced call: the one line (exit 2) names the last operation the call
+// traced, so the Stepper can be taken there on a run that stops before it (--frames up to the one before).
+TEST(UnplantedBugs, ACrashOrAHangInATracedCallNamesItsLastOperation) {
+  for (const std::string& variant : {std::string("crash_traced"), std::string("hang_traced")}) {
+    SCOPED_TRACE(variant);
+    const auto r = run("headless --scene '" + scene("pile") + "' --frames 2 --detector-timeout 2 --detector-lib '" + bug(variant) + "'");
+    EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+    const std::string what = variant == "crash_traced" ? "crashed with SIGSEGV" : "did not return within 2 s";
+    EXPECT_NE(r.err.find(what + " in nbscope_detect() on frame 0, after operation "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(" of its trace (visit-cell, pseudocode line 7)\n"), std::string::npos) << r.err;
+  }
+}
+
 }  // namespace
 }  // namespace nbscope
