@@ -71,6 +71,23 @@ TEST(UnplantedBugs, HeadsKeptBetweenFramesAreAStaleLinkAndTheCycleEndsTheFrameNo
   }
 }
 
+// A 3D NBS (3D-only, as nbs3d_reference.c) whose mask leaves out the cell (+1, +1, -1) of the layer
+// below: replayed on the LIGGGHTS pour's 3D frame, the mask relates no two cells that way.
+TEST(UnplantedBugs, A3DMaskThatLeavesOutACellOfTheLayerBelowRelatesNoCellsThatWay) {
+  const std::string dir = testcli::scratch_dir("unplanted_mask3d");
+  const auto r = run("replay --headless --dump '" + std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/pour3d/atoms.6000.dump' --detector-lib '" +
+                     bug("mask3d") + "' --report '" + dir + "/r.json'");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_EQ(r.err, "") << "a 3D-only plugin replays a 3D dump";
+  EXPECT_NE(r.out.find("contract mask-relates broken: no element's mask visits its neighbour at (+1,+1,-1) nor at (-1,-1,+1)"),
+            std::string::npos) << r.out;
+  const json located = json::parse(testcli::read_text(dir + "/r.json"))["runs"][0]["violations"]["located"];
+  ASSERT_TRUE(located.is_object());
+  EXPECT_EQ(located["contract"], "mask-relates");
+  EXPECT_EQ(located["kind"], "visit-cell");
+  EXPECT_EQ(located["line"], 11) << "the mask's pseudocode line: " << located.dump();
+}
+
 // A crash and a hang inside a traced call: the one line (exit 2) names the last operation the call
 // traced, so the Stepper can be taken there on a run that stops before it (--frames up to the one before).
 TEST(UnplantedBugs, ACrashOrAHangInATracedCallNamesItsLastOperation) {
