@@ -97,7 +97,9 @@ TEST(PluginCli, WindowRunsThePluginAndShowsItsBreachAsAViolation) {
 // screenshot with the lists overlay and the window with it; only --repeat calls it twice, as it says.
 class CallLog {
  public:
-  explicit CallLog(const std::string& name) : path_(testcli::scratch_dir("plugin_calls") + "/" + name) {
+  // A directory of its own: scratch_dir() empties the one it names, and the tests that log calls run in
+  // parallel (one shared directory let the window test wipe the headless test's log mid-run).
+  explicit CallLog(const std::string& name) : path_(testcli::scratch_dir("plugin_calls_" + name) + "/calls") {
     std::remove(path_.c_str());
     ::setenv("NBSCOPE_TEST_CALLS", path_.c_str(), 1);
   }
