@@ -36,10 +36,11 @@ class ContractChecker {
   // `complete`: the trace holds the whole detection, so what it never did can be checked.
   ContractChecker(const FrameTrace& t, const ContractNames& names, bool complete);
   // The first broken contract: the events in order, then what the frame never did.
-
   std::optional<BrokenContract> run();
 
  private:
+  // test-once and test-reported, over every test at once.
+  void check_tests();
   // --- naming
   std::string id(std::int64_t k) const { return names_.element(k); }
   std::string cell_text(const Cell& c) const {
@@ -140,7 +141,8 @@ class ContractChecker {
   std::uint32_t union_ = 0;               // offsets any mask visited
   std::int32_t visitor_ = -1;
   Cell visited_{-1, -1, -1};
-  std::unordered_set<std::int64_t> tested_, reported_;
+  std::vector<std::pair<std::int64_t, std::size_t>> tested_;  // every test's pair key and event, in order
+  std::vector<std::int64_t> reported_;                         // the reported pairs' keys, sorted
   // Where the clear of a list that was pushed onto at `pushed` was due: the first phase after it of the
   // pseudocode line that clears heads array `heads` elsewhere in the trace, if one comes before `before`.
   [[nodiscard]] std::optional<std::size_t> clear_due(int heads, std::size_t pushed, std::size_t before) const;

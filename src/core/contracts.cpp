@@ -80,7 +80,9 @@ ContractChecker::ContractChecker(const FrameTrace& t, const ContractNames& names
   last_visit_.assign(static_cast<std::size_t>(n_), kNone);
   first_level_.assign(static_cast<std::size_t>(n_), 0);
   on_cell_list_.assign(static_cast<std::size_t>(n_), false);
-  for (const Pair& p : t.pairs) reported_.insert(key(p.i, p.j));
+  reported_.reserve(t.pairs.size());
+  for (const Pair& p : t.pairs) reported_.push_back(key(p.i, p.j));
+  std::sort(reported_.begin(), reported_.end());
   const std::vector<TraceEvent>& ev = t.log.events();
   for (std::size_t at = 0; at < ev.size(); ++at) {
     if (ev[at].op == TraceOp::Phase) phases_.push_back(at);
@@ -116,6 +118,7 @@ std::optional<BrokenContract> ContractChecker::run() {
   if (ev.empty()) return std::nullopt;
   // The end of the frame: what was never done is located where it was due, and competes with the
   // breaks found in order by its operation.
+  check_tests();
   if (complete_) end_of_frame();
   return first_;
 }
@@ -322,13 +325,30 @@ void ContractChecker::on_test(std::size_t at, const TraceEvent& e) {
            truth ? std::vector<Pair>{Pair{std::min(k, m), std::max(k, m)}} : std::vector<Pair>{});
     return;
   }
-  if (!tested_.insert(key(k, m)).second) {
-    breaks(Contract::TestOnce, at, id(k) + " and " + id(m) + " are tested a second time: a list holds an element twice, or a mask visits a cell twice");
-    return;
+  tested_.emplace_back(key(k, m), at);  // once and reported: checked together at the end (sorted, not hashed)
+}
+
+void ContractChecker::check_tests() {
+  const std::vector<TraceEvent>& ev = t_.log.events();
+  std::vector<std::pair<std::int64_t, std::size_t>> by_pair = tested_;
+  std::sort(by_pair.begin(), by_pair.end());
+  for (std::size_t i = 1; i < by_pair.size(); ++i) {
+    if (by_pair[i].first != by_pair[i - 1].first) continue;
+    const std::size_t at = by_pair[i].second;
+    if (first_ && first_->event <= at) continue;
+    const std::int32_t k = ev[at].element, m = ev[at].other;
+    subject_ = Pair{std::min(k, m), std::max(k, m)};
+    breaks(Contract::TestOnce, at, id(k) + " and " + id(m) + " are tested a second time (first at operation " + std::to_string(by_pair[i - 1].second + 1) +
+                                       "): a list holds an element twice, or a mask visits a cell twice");
   }
-  if (e.contact && reported_.find(key(k, m)) == reported_.end()) {
+  for (const auto& [pair, at] : tested_) {  // in order: the first contact never reported
+    if (first_ && first_->event <= at) break;
+    if (!ev[at].contact || std::binary_search(reported_.begin(), reported_.end(), pair)) continue;
+    const std::int32_t k = ev[at].element, m = ev[at].other;
+    subject_ = Pair{std::min(k, m), std::max(k, m)};
     breaks(Contract::TestReported, at, "the test of " + id(k) + " against " + id(m) + " answered contact, but the pair was never reported (add_pair)",
-           {Pair{std::min(k, m), std::max(k, m)}});
+           {subject_});
+    break;
   }
 }
 

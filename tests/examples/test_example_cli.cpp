@@ -104,7 +104,7 @@ TEST(ExampleCli, EachBugIsLocatedInTheSummaryAndTheReport) {
   const std::map<std::string, std::pair<std::string, std::string>> expected = {
       {"nbs_bug_mask", {"visit-cell", "contract mask-relates broken: no element's mask visits its neighbour at (+1,-1)"}},
       {"nbs_bug_push", {"push", "contract list-link broken: the push of"}},
-      {"nbs_bug_stale", {"push", "the head was not cleared before the list was reused"}},
+      {"nbs_bug_stale", {"phase", "this clearing leaves x-list B["}},
       {"nbs_bug_trunc", {"push", "contract list-cell broken"}},
       {"nbs_bug_strict", {"test-pair", "contract test-answer broken"}},
   };
