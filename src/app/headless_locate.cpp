@@ -31,7 +31,7 @@ std::optional<LocatedViolation> locate_violation(FrameLoop& loop, const Violatio
   const std::shared_ptr<const FrameTrace> trace = loop.pipeline().frame_trace();
   if (!trace || !trace->refusal.empty()) return std::nullopt;  // nothing recorded: nothing to locate in
   const LoopSource& source = loop.source();
-  const auto id = [&](std::int64_t row) { return std::to_string(source.element_name(v.frame, row)); };
+  const auto id = [&](std::int64_t row) { return element_label(source.element_name(v.frame, row), row); };
   const Diagnosis d = diagnose_frame(v, *trace, id);
   LocatedViolation l;
   l.frame = v.frame;

@@ -83,6 +83,10 @@ Diagnosis diagnose(const Violation& v, std::span<const TraceEvent> events, const
   return d;
 }
 
+std::string element_label(std::int64_t atom, std::int64_t row) {
+  return atom == row ? std::to_string(atom) : std::to_string(atom) + " (row " + std::to_string(row) + ")";
+}
+
 Diagnosis diagnose_frame(const Violation& v, const FrameTrace& trace, const std::function<std::string(std::int64_t)>& id,
                          bool book_numbering) {
   const std::vector<TraceEvent>& events = trace.log.events();

@@ -37,6 +37,10 @@ struct Diagnosis {
                                  const std::string& algorithm, std::span<const char* const> pseudocode,
                                  const std::function<std::string(std::int64_t)>& id, bool book_numbering = false);
 
+// How a diagnosis names element `row` whose atom id is `atom` (a dump's): "9 (row 8)" where they
+// differ, else the one number.
+[[nodiscard]] std::string element_label(std::int64_t atom, std::int64_t row);
+
 // diagnose() of `v` in `trace`, led by the trace's first broken contract when it has one: the text
 // says the contract, its operation and the pairs it cost, then the pair's finding as "Detail: ...".
 [[nodiscard]] Diagnosis diagnose_frame(const Violation& v, const FrameTrace& trace,

@@ -161,7 +161,7 @@ class StatsPanel final : public Panel {
         // The line's cells are the detector's; where the grid puts the elements elsewhere, say so.
         const Violation& v = report->violations[i];
         if (const auto truth = grid_cells(s, v); truth && !(v.cell_i == (*truth)[0] && v.cell_j == (*truth)[1]))
-          ImGui::TextDisabled("  true cells (the grid's): %s", cell_pair_text((*truth)[0], (*truth)[1], c.state.book_numbering).c_str());
+          ImGui::TextDisabled("  true cells (the grid's): %s", cell_pair_text((*truth)[0], (*truth)[1], c.state.book_numbering, c.sim.elements != nullptr ? c.sim.elements->dim : 2).c_str());
       }
       ImGui::PopStyleColor();
       // Never cut silently: say how many more, and where they all are.

@@ -15,6 +15,12 @@ namespace nbscope::ui {
 
 namespace {
 
+// The dimension of the run's frames (the frame on screen's): 3D cells carry their layer iz.
+int frame_dim(const SimView& sim) { return sim.elements != nullptr ? sim.elements->dim : 2; }
+
+// "(5,6)" and "(4,7)" joined by `between`, with iz in 3D.
+std::string cells_joined(const CellIndex& a, const CellIndex& b, bool book, int dim, const char* between);
+
 const ImVec4 kRed(1.0f, 0.4f, 0.4f, 1.0f);
 const ImVec4 kOrange(1.0f, 0.65f, 0.3f, 1.0f);
 
@@ -86,11 +92,11 @@ class ViolationsPanel final : public Panel {
       const Violation& v = all[static_cast<std::size_t>(c.state.current_violation)];
       ImGui::Separator();
       ImGui::PushTextWrapPos(0.0f);
-      ImGui::TextColored(kRed, "%s", describe_violation(v, book, s.ids_of(v.frame)).c_str());
+      ImGui::TextColored(kRed, "%s", describe_violation(v, book, s.ids_of(v.frame), frame_dim(s)).c_str());
       const auto truth = grid_cells(s, v);
       if (truth && !same_cells(v, *truth))
         ImGui::TextColored(kOrange, "The grid puts them in %s: the detector's cells are not the true ones.",
-                           cell_pair_text((*truth)[0], (*truth)[1], book).c_str());
+                           cell_pair_text((*truth)[0], (*truth)[1], book, frame_dim(s)).c_str());
       if (!s.locate_status.empty()) ImGui::TextWrapped("%s", s.locate_status.c_str());
       ImGui::PopTextWrapPos();
     }
@@ -187,7 +193,7 @@ class ViolationsPanel final : public Panel {
         std::snprintf(frame, sizeof frame, "%lld##v%zu", static_cast<long long>(v.frame), index);
         const bool current = static_cast<std::int64_t>(index) == c.state.current_violation;
         if (ImGui::Selectable(frame, current, ImGuiSelectableFlags_SpanAllColumns)) go(c, index);
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe_violation(v, book, c.sim.ids_of(v.frame)).c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe_violation(v, book, c.sim.ids_of(v.frame), frame_dim(c.sim)).c_str());
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(invariant_name(v.invariant));
         const auto truth = grid_cells(c.sim, v);
@@ -198,9 +204,10 @@ class ViolationsPanel final : public Panel {
                     static_cast<long long>(element_number(v.pair.j, book, ids)));
         if (wrong) ImGui::TextDisabled("true");  // under the pair, beside the grid's cells
         ImGui::TableNextColumn();
-        if (wrong) ImGui::TextColored(kOrange, "%s", cell_pair_text(v.cell_i, v.cell_j, book).c_str());
-        else ImGui::TextUnformatted(cell_pair_text(v.cell_i, v.cell_j, book).c_str());
-        if (wrong) ImGui::TextDisabled("%s", cell_pair_text((*truth)[0], (*truth)[1], book).c_str());
+        const int dim = frame_dim(c.sim);
+        if (wrong) ImGui::TextColored(kOrange, "%s", cell_pair_text(v.cell_i, v.cell_j, book, dim).c_str());
+        else ImGui::TextUnformatted(cell_pair_text(v.cell_i, v.cell_j, book, dim).c_str());
+        if (wrong) ImGui::TextDisabled("%s", cell_pair_text((*truth)[0], (*truth)[1], book, dim).c_str());
         else if (two_lines) ImGui::TextUnformatted("");
       }
     }
@@ -267,11 +274,9 @@ std::optional<std::size_t> violation_index(const SimView& sim, const Violation& 
   return std::nullopt;
 }
 
-std::string describe_violation(const Violation& v, bool book, const std::vector<std::int64_t>* ids) {
-  const auto id = [&](std::int64_t k) { return std::to_string(shown(k, book)); };
+std::string describe_violation(const Violation& v, bool book, const std::vector<std::int64_t>* ids, int dim) {
   return std::string(invariant_name(v.invariant)) + " in frame " + std::to_string(v.frame) + ": " + pair_text(v.pair, book, ids) + " " +
-         v.what + "; the detector's cells (" + id(v.cell_i.ix) + "," + id(v.cell_i.iy) + ") and (" + id(v.cell_j.ix) + "," +
-         id(v.cell_j.iy) + ")";
+         v.what + "; the detector's cells " + cells_joined(v.cell_i, v.cell_j, book, dim, " and ");
 }
 
 std::string boundary_line(const BoundaryPair& b, bool book, const std::vector<std::int64_t>* ids) {
@@ -288,10 +293,16 @@ std::optional<std::array<CellIndex, 2>> grid_cells(const SimView& sim, const Vio
   return std::array<CellIndex, 2>{cell(v.pair.i), cell(v.pair.j)};
 }
 
-std::string cell_pair_text(const CellIndex& a, const CellIndex& b, bool book) {
+namespace {
+std::string cells_joined(const CellIndex& a, const CellIndex& b, bool book, int dim, const char* between) {
   const auto id = [&](std::int64_t k) { return std::to_string(shown(k, book)); };
-  return "(" + id(a.ix) + "," + id(a.iy) + ") (" + id(b.ix) + "," + id(b.iy) + ")";
+  const auto cell = [&](const CellIndex& c) { return "(" + id(c.ix) + "," + id(c.iy) + (dim == 3 ? "," + id(c.iz) : "") + ")"; };
+  return cell(a) + between + cell(b);
 }
+
+}  // namespace
+
+std::string cell_pair_text(const CellIndex& a, const CellIndex& b, bool book, int dim) { return cells_joined(a, b, book, dim, " "); }
 
 std::unique_ptr<Panel> make_violations_panel() { return std::make_unique<ViolationsPanel>(); }
 

@@ -57,7 +57,13 @@ void StepperSession::apply_target(const SimView& sim) {
   const PairTarget t = *target_;
   target_.reset();
   const bool book = book_numbering;
-  const auto id = [&](std::int64_t k) { return std::to_string(shown(k, book)); };
+  // A dump's atoms by id, with the row beside it where it differs (the Stepper counts rows).
+  const std::vector<std::int64_t>* ids = sim.ids_of(t.frame);
+  const auto id = [&](std::int64_t k) {
+    const std::int64_t row = shown(k, book);
+    return ids != nullptr && k >= 0 && k < static_cast<std::int64_t>(ids->size()) ? element_label((*ids)[static_cast<std::size_t>(k)], row)
+                                                                                  : std::to_string(row);
+  };
   if (!captured_) {
     target_status_ = "stepper: " + (message_.empty() ? std::string("nothing recorded for frame ") + std::to_string(t.frame) : message_);
     return;
@@ -79,7 +85,6 @@ void StepperSession::apply_target(const SimView& sim) {
   breakpoint.kind = BreakKind::FirstPairOf;
   breakpoint.element = t.pair.i;
   target_status_ = d.text;
-  (void)sim;
 }
 
 bool StepperSession::seek_touching(BreakKind kind, std::int32_t element, const std::array<std::int32_t, 2>& cell, int direction,

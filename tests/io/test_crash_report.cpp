@@ -38,29 +38,43 @@ bool handed_back(int status, int sig) {
 TEST(CrashReport, ArmedCrashIsOneLineAndExit2) {
   EXPECT_EXIT(
       {
-        arm_crash_report("nbscope: error: lib.so (x): crashed with ", " in frame 3\n");
+        arm_crash_report("nbscope: error: lib.so (x): crashed with ", " in frame 3");
         write_through_null();
       },
       ::testing::ExitedWithCode(2), "^nbscope: error: lib.so \\(x\\): crashed with SIGSEGV in frame 3\n$");
   EXPECT_EXIT(
       {
-        arm_crash_report("head ", " tail\n");
+        arm_crash_report("head ", " tail");
         std::abort();
       },
       ::testing::ExitedWithCode(2), "^head SIGABRT tail\n$");
 }
 
+// A traced call's crash names the last operation it traced (its progress, read in the handler).
+TEST(CrashReport, ATracedCallsCrashNamesItsLastOperation) {
+  EXPECT_EXIT(
+      {
+        static PluginProgress progress;
+        progress.operations.store(812);
+        progress.op.store(static_cast<std::int32_t>(TraceOp::VisitCell));
+        progress.line.store(6);
+        arm_crash_report("head ", " tail", &progress);
+        write_through_null();
+      },
+      ::testing::ExitedWithCode(2), "^head SIGSEGV tail, after operation 812 of its trace \\(visit-cell, pseudocode line 7\\)\n$");
+}
+
 TEST(CrashReport, DisarmedSignalGoesToTheActionItReplaced) {
   EXPECT_EXIT(
       {
-        arm_crash_report("head ", " tail\n");
+        arm_crash_report("head ", " tail");
         disarm_crash_report();
         write_through_null();
       },
       [](int status) { return handed_back(status, SIGSEGV); }, "");
   EXPECT_EXIT(
       {
-        arm_crash_report("head ", " tail\n");
+        arm_crash_report("head ", " tail");
         disarm_crash_report();
         no_core_file();
         std::raise(SIGFPE);
