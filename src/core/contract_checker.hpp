@@ -68,6 +68,8 @@ class ContractChecker {
   struct Model {
     std::size_t level = 0;                   // order of its first push: 0 holds the first-level lists
     std::vector<std::int32_t> head;          // per slot: the head as the frame built it (-1 at the start)
+    std::vector<std::int32_t> actual;        // per slot: the head as the detector really left it
+    std::vector<std::size_t> last_push;      // per slot: the event of its last push (kNone: none)
     std::vector<std::int64_t> build;         // per slot: bumped by every clear
     std::vector<std::int64_t> member_slot;   // per element: the slot of its last push, -1 none
     std::vector<std::int64_t> member_build;  // and that slot's build then
@@ -106,6 +108,8 @@ class ContractChecker {
   void end_of_frame();
 
   void coverage(std::size_t end);
+  // heads-cleared: every head the frame set is -1 again when it ends.
+  void heads_cleared(std::size_t end);
 
   void mask(std::size_t end);
 

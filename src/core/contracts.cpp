@@ -32,6 +32,7 @@ const char* contract_name(Contract c) {
     case Contract::TestAnswer: return "test-answer";
     case Contract::TestOnce: return "test-once";
     case Contract::TestReported: return "test-reported";
+    case Contract::HeadsCleared: return "heads-cleared";
     case Contract::Cycle: return "cycle";
     case Contract::ApiRule: return "api-rule";
   }
@@ -56,6 +57,7 @@ const char* contract_rule(Contract c) {
     case Contract::TestAnswer: return "each test answers the exact contact test";
     case Contract::TestOnce: return "each pair is tested once";
     case Contract::TestReported: return "a test that answered contact is reported as a pair";
+    case Contract::HeadsCleared: return "every head the frame set is -1 again when it ends";
     case Contract::Cycle: return "no list closes on itself";
     case Contract::ApiRule:
       return "the plugin API's rules hold: pairs in range, never (k, k), never twice; trace calls name declared arrays, "
@@ -149,6 +151,9 @@ ContractChecker::Model& ContractChecker::model(int heads) {
   m.member_build.assign(static_cast<std::size_t>(n_), 0);
   m.member_cell.assign(static_cast<std::size_t>(n_), Cell{-1, -1, -1});
   m.member_at.assign(static_cast<std::size_t>(n_), 0);
+  m.actual.assign(slots, -1);
+  for (std::size_t slot = 0; slot < slots; ++slot) m.actual[slot] = initial_head(heads, static_cast<std::int64_t>(slot));
+  m.last_push.assign(slots, kNone);
   return models_.emplace(heads, std::move(m)).first->second;
 }
 
@@ -169,6 +174,8 @@ void ContractChecker::on_push(std::size_t at, const TraceEvent& e) {
   Model& m = model(hw.array);
   const auto slot = static_cast<std::size_t>(hw.index);
   if (slot >= m.head.size()) return;
+  m.actual[slot] = hw.new_value;  // what the next frame finds, whatever the contracts say of it
+  m.last_push[slot] = at;
   const Cell& own = cells_[static_cast<std::size_t>(k)];
   const std::string list = list_text(e, hw.array);
   if (m.level == 0 && first_level_[static_cast<std::size_t>(k)]++ > 0) {
@@ -257,6 +264,7 @@ void ContractChecker::on_clear(std::size_t at, const TraceEvent& e) {
   Model& m = model(hw.array);
   const auto slot = static_cast<std::size_t>(hw.index);
   if (slot >= m.head.size()) return;
+  m.actual[slot] = hw.new_value;
   subject_ = Pair{-1, -1};
   if (hw.new_value != -1) {
     breaks(Contract::ClearWrites, at, "the clear of " + list_text(e, hw.array) + " left it at " + std::to_string(hw.new_value) + ", not -1");
@@ -386,7 +394,17 @@ std::optional<BrokenContract> first_broken_contract(const FrameTrace& trace, con
     found = contract_detail::ContractChecker(trace, names, complete).run();
   }
   if (trace.misbehaviour) {
-    const BrokenContract api = api_rule_break(*trace.misbehaviour);
+    BrokenContract api = api_rule_break(*trace.misbehaviour);
+    // A cell not written was found where the element went onto a list keyed on that axis: located there.
+    const Misbehaviour& m = *trace.misbehaviour;
+    const std::vector<TraceEvent>& ev = trace.log.events();
+    for (std::size_t at = 0; m.cell_element >= 0 && at < ev.size(); ++at) {
+      if (ev[at].op != TraceOp::Push || ev[at].element != m.cell_element || ev[at].cell[m.cell_axis] < 0) continue;
+      api.event = at;
+      api.after = false;
+      api.text += ", though this push keys it to its cell on that axis: the cell was found, and never written to out->cells";
+      break;
+    }
     // At one operation the call nbscope stopped there says it best (a cycle names its list).
     const bool tie = found && api.event == found->event && (!api.after || trace.misbehaviour->cut);
     if (!found || api.event < found->event || tie) found = api;

@@ -36,6 +36,7 @@ enum class Contract : std::uint8_t {
   TestAnswer,      // each test answers the exact contact test (under --touching)
   TestOnce,        // each pair is tested once
   TestReported,    // a test that answered "contact" is reported as a pair
+  HeadsCleared,    // every head the frame set is -1 again when it ends (the next frame's lists start empty)
   Cycle,           // no list closes on itself (nbscope stops the call where one does: its walk would never end)
   ApiRule,         // the plugin API's rules: pairs in range, never (k, k), never twice; trace calls naming
                    // declared arrays, entries and elements; every cell written (a Misbehaviour)

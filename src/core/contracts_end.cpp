@@ -36,8 +36,32 @@ void ContractChecker::cost_of_cell(std::int32_t k, const Cell& c, std::vector<Pa
 void ContractChecker::end_of_frame() {
   const std::size_t end = t_.log.events().size() - 1;
   for (std::int64_t k = 0; k < n_; ++k) members_[flat(cells_[static_cast<std::size_t>(k)])].push_back(static_cast<std::int32_t>(k));
-  if (!models_.empty()) coverage(end);
+  if (!models_.empty()) {
+    coverage(end);
+    heads_cleared(end);
+  }
   if (union_ != 0) mask(end);
+}
+
+void ContractChecker::heads_cleared(std::size_t end) {
+  // A detector that clears no head (the tree rebuilds its leaves' lists) keeps no lists between frames.
+  if (clear_lines_.empty()) return;
+  const std::vector<TracedArray>& arrays = t_.log.arrays();
+  for (const auto& [heads, m] : models_) {
+    for (std::size_t slot = 0; slot < m.actual.size(); ++slot) {
+      if (m.last_push[slot] == kNone || m.actual[slot] == -1) continue;
+      // Due at the clearing of this array after the slot's last push (the loop that left it set), else the end.
+      const std::optional<std::size_t> due = clear_due(heads, m.last_push[slot], end + 1);
+      const std::size_t at = due ? *due : end;
+      if (first_ && first_->event <= at) continue;
+      const std::string name = static_cast<std::size_t>(heads) < arrays.size() ? arrays[static_cast<std::size_t>(heads)].name : "?";
+      const std::int32_t held = m.actual[slot];
+      subject_ = in_range(held) ? Pair{held, held} : Pair{-1, -1};
+      breaks(Contract::HeadsCleared, at, name + "[" + std::to_string(slot) + "] still holds " + (in_range(held) ? id(held) : std::to_string(held)) +
+                                         " when the frame ends: " + (due ? "this clearing leaves it set" : "no clearing resets it") +
+                                         ", so the next frame's first push onto it links into this frame's list");
+    }
+  }
 }
 
 void ContractChecker::coverage(std::size_t end) {

@@ -62,6 +62,8 @@ struct Misbehaviour {
   std::size_t operations = 0;       // trace operations recorded before it (its place in the trace)
   bool cut = false;                 // the call was stopped there: the trace holds nothing after it
   bool cycle = false;               // it was stopped because a list closed on itself
+  std::int32_t cell_element = -1;   // a cell not written (or outside the grid): its element,
+  int cell_axis = -1;               // and its axis
   std::string where;                // "LIBRARY (NAME): frame N: ", for a message of its own
 };
 

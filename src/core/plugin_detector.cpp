@@ -80,12 +80,15 @@ Misbehaviour bad_cell(const std::vector<std::int32_t>& raw, const Grid& grid, st
     for (int a = 0; a < 2; ++a) {
       const std::int32_t v = raw[k * 2 + a];
       const auto e = static_cast<std::int32_t>(k);
-      if (v == -1)
-        return misbehaviour_at({"cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] + " was not written (still -1)", Pair{e, e}, operations});
-      if (v < 0 || v >= grid.n[a])
-        return misbehaviour_at({"cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] + " is " + std::to_string(v) + ", outside [0, " +
-                    std::to_string(grid.n[a]) + ")",
-                Pair{e, e}, operations});
+      if (v != -1 && v >= 0 && v < grid.n[a]) continue;
+      Misbehaviour m = misbehaviour_at(
+          {"cells: element " + std::to_string(k) + "'s cell on " + axis_names[a] +
+               (v == -1 ? std::string(" was not written (still -1)")
+                        : " is " + std::to_string(v) + ", outside [0, " + std::to_string(grid.n[a]) + ")"),
+           Pair{e, e}, operations});
+      m.cell_element = e;
+      m.cell_axis = a;
+      return m;
     }
   }
   return misbehaviour_at({"cells: an entry is outside the grid", Pair{-1, -1}, operations});  // not reached: the caller saw one

@@ -52,7 +52,8 @@ TEST(UnplantedBugs, ARowLoopThatStopsEarlyIsARowNotProcessed) {
   EXPECT_EQ(frame0["contract"].get<std::string>().rfind("row-processed: row 39", 0), 0u) << frame0.dump();
 }
 
-// The y heads are never reset: frame 1's first push links into frame 0's list (a stale link), its
+// The y heads are never reset: frame 0 ends with its y heads set (heads-cleared, at the clearing of
+// the y-lists, the bug's own line); frame 1's first push links into frame 0's list (a stale link), its
 // lists close into cycles, and nbscope stops the call there instead of waiting for the watchdog.
 TEST(UnplantedBugs, HeadsKeptBetweenFramesAreAStaleLinkAndTheCycleEndsTheFrameNotTheRun) {
   const Diagnosed d = diagnose("heads_kept", 3);
@@ -60,14 +61,19 @@ TEST(UnplantedBugs, HeadsKeptBetweenFramesAreAStaleLinkAndTheCycleEndsTheFrameNo
   EXPECT_EQ(d.run.err, "") << "no hang, no API error";
   const json& located = d.report["runs"][0]["violations"]["located"];
   ASSERT_TRUE(located.is_object()) << d.report.dump();
-  EXPECT_EQ(located["frame"], 1);
-  EXPECT_EQ(located["contract"], "list-link");
-  EXPECT_EQ(located["kind"], "push");
-  EXPECT_NE(located["text"].get<std::string>().find("runs on into the last frame's list"), std::string::npos) << located.dump();
-  EXPECT_NE(located["text"].get<std::string>().find("cycle: "), std::string::npos) << "the cycle that ended the call, named";
-  EXPECT_EQ(d.report["runs"][0]["frames_run"], 4) << "every frame ran: the cycle ended its frame only";
-  for (int f = 1; f <= 3; ++f) {
-    EXPECT_EQ(d.report["runs"][0]["frames"][f]["held"]["contract"], false) << "frame " << f;
+  EXPECT_EQ(located["frame"], 0);
+  EXPECT_EQ(located["contract"], "heads-cleared");
+  EXPECT_EQ(located["kind"], "phase");
+  EXPECT_EQ(located["line"], 10) << "the clearing of the y heads: " << located.dump();
+  EXPECT_NE(located["text"].get<std::string>().find("y_heads["), std::string::npos) << located.dump();
+  const json& frames = d.report["runs"][0]["frames"];
+  ASSERT_EQ(frames.size(), 4u) << "every frame ran: the cycle ended its frame only";
+  const std::string frame1 = frames[1]["contract"].get<std::string>();
+  EXPECT_EQ(frame1.rfind("list-link: ", 0), 0u) << frame1;
+  EXPECT_NE(frame1.find("runs on into the last frame's list"), std::string::npos) << frame1;
+  EXPECT_NE(frame1.find("cycle: "), std::string::npos) << "the cycle that ended the call, named: " << frame1;
+  for (int f = 0; f <= 3; ++f) {
+    EXPECT_EQ(frames[f]["held"]["contract"], false) << "frame " << f;
   }
 }
 
