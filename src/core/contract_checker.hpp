@@ -70,6 +70,7 @@ class ContractChecker {
     std::vector<std::int32_t> head;          // per slot: the head as the frame built it (-1 at the start)
     std::vector<std::int32_t> actual;        // per slot: the head as the detector really left it
     std::vector<std::size_t> last_push;      // per slot: the event of its last push (kNone: none)
+    std::vector<std::int64_t> count;         // per slot: pushes onto its current build
     std::vector<std::int64_t> build;         // per slot: bumped by every clear
     std::vector<std::int64_t> member_slot;   // per element: the slot of its last push, -1 none
     std::vector<std::int64_t> member_build;  // and that slot's build then
@@ -150,6 +151,22 @@ class ContractChecker {
   // Where the clear of a list that was pushed onto at `pushed` was due: the first phase after it of the
   // pseudocode line that clears heads array `heads` elsewhere in the trace, if one comes before `before`.
   [[nodiscard]] std::optional<std::size_t> clear_due(int heads, std::size_t pushed, std::size_t before) const;
+  // The walk of a cell the current visit began (not k's own: the whole list is walked there).
+  struct Walk {
+    std::size_t visit;
+    std::int32_t k;
+    Cell cell;
+    std::int64_t tested;
+  };
+  struct CellList {
+    int heads;
+    std::int64_t slot;
+  };
+  // Ends the current walk at event `at`: list-complete and walk-complete.
+  void end_walk(std::size_t at);
+  std::optional<Walk> walk_;
+  std::unordered_map<std::int64_t, CellList> cell_list_;  // per cell: the list of its last full-keyed push
+  std::unordered_map<std::int64_t, std::size_t> last_row_push_;  // per row: the event of its last full-keyed push
   std::unordered_map<int, std::vector<std::uint8_t>> clear_lines_;  // per heads array: the lines of its Clear events
   std::vector<std::size_t> phases_;                            // every Phase event, in order
   Pair subject_{-1, -1};  // the elements the event being checked names (BrokenContract::subject)

@@ -28,6 +28,8 @@ const char* contract_name(Contract c) {
     case Contract::MaskRelates: return "mask-relates";
     case Contract::MaskCell: return "mask-cell";
     case Contract::WalkCell: return "walk-cell";
+    case Contract::ListComplete: return "list-complete";
+    case Contract::WalkComplete: return "walk-complete";
     case Contract::TestSelf: return "test-self";
     case Contract::TestAnswer: return "test-answer";
     case Contract::TestOnce: return "test-once";
@@ -53,6 +55,8 @@ const char* contract_rule(Contract c) {
     case Contract::MaskRelates: return "for every neighbour offset the mask visits it or its opposite";
     case Contract::MaskCell: return "each element's mask visits every mask cell that exists and holds elements";
     case Contract::WalkCell: return "the walk of a visited cell's list meets only elements of that cell";
+    case Contract::ListComplete: return "a cell's list holds every element of the cell when a mask walks it";
+    case Contract::WalkComplete: return "a walk tests every element of the list it walks";
     case Contract::TestSelf: return "no element is tested against itself";
     case Contract::TestAnswer: return "each test answers the exact contact test";
     case Contract::TestOnce: return "each pair is tested once";
@@ -77,6 +81,7 @@ ContractChecker::ContractChecker(const FrameTrace& t, const ContractNames& names
     for (int a = 0; a < dim_; ++a) c[static_cast<std::size_t>(a)] = g_.cell(e_.axis(a)[static_cast<Eigen::Index>(k)], a);
     cells_[static_cast<std::size_t>(k)] = c;
     occupied_.insert(flat(c));
+    members_[flat(c)].push_back(static_cast<std::int32_t>(k));
   }
   visits_.assign(static_cast<std::size_t>(n_), 0);
   last_visit_.assign(static_cast<std::size_t>(n_), kNone);
@@ -95,6 +100,36 @@ ContractChecker::ContractChecker(const FrameTrace& t, const ContractNames& names
   }
 }
 
+void ContractChecker::end_walk(std::size_t at) {
+  if (!walk_) return;
+  const Walk w = *walk_;
+  walk_.reset();
+  const auto members = members_.find(flat(w.cell));
+  const auto list = cell_list_.find(flat(w.cell));
+  if (members == members_.end() || list == cell_list_.end()) return;  // an empty cell: nothing to walk
+  const Model& m = models_.at(list->second.heads);
+  const auto slot = static_cast<std::size_t>(list->second.slot);
+  const auto holds = static_cast<std::int64_t>(members->second.size());
+  // The slot holds this cell's list only while its head was pushed for this cell (a slot is reused row by row).
+  const std::int32_t head = m.head[slot];
+  const std::int64_t listed = head >= 0 && m.member_cell[static_cast<std::size_t>(head)] == w.cell ? m.count[slot] : 0;
+  const std::string text = "cell " + cell_text(w.cell) + " holds " + std::to_string(holds) + (holds == 1 ? " element" : " elements");
+  subject_ = Pair{w.k, w.k};
+  if (listed < holds) {
+    // The list the mask walked was built short: located at its build's last push (the loop that stopped
+    // early), or, built for this row not at all, at the last push of the loop that builds this row's lists.
+    std::size_t due = listed > 0 ? m.last_push[slot] : w.visit;
+    const auto row_push = last_row_push_.find(row_key(w.cell));
+    const std::size_t row_start = row_starts_.empty() ? 0 : row_starts_.back().first;
+    if (listed == 0 && row_push != last_row_push_.end() && row_push->second > row_start) due = row_push->second;
+    breaks(Contract::ListComplete, due, text + ", but its list holds " + std::to_string(listed) + " when " + id(w.k) +
+                                            "'s mask walks it (operation " + std::to_string(w.visit + 1) + "): the loop that builds it stops early");
+  } else if (w.tested < holds) {
+    breaks(Contract::WalkComplete, at, text + " on its list, but the walk for " + id(w.k) + " (operation " + std::to_string(w.visit + 1) + ") tests " +
+                                           std::to_string(w.tested) + " of them and stops here");
+  }
+}
+
 std::optional<std::size_t> ContractChecker::clear_due(int heads, std::size_t pushed, std::size_t before) const {
   const auto found = clear_lines_.find(heads);
   if (found == clear_lines_.end()) return std::nullopt;
@@ -108,6 +143,7 @@ std::optional<BrokenContract> ContractChecker::run() {
   const std::vector<TraceEvent>& ev = t_.log.events();
   for (std::size_t at = 0; at < ev.size(); ++at) {  // on past a break: coverage needs every event
     const TraceEvent& e = ev[at];
+    if (e.op != TraceOp::TestPair) end_walk(at);
     switch (e.op) {
       case TraceOp::Push: on_push(at, e); break;
       case TraceOp::Clear: on_clear(at, e); break;
@@ -120,6 +156,7 @@ std::optional<BrokenContract> ContractChecker::run() {
   if (ev.empty()) return std::nullopt;
   // The end of the frame: what was never done is located where it was due, and competes with the
   // breaks found in order by its operation.
+  end_walk(ev.empty() ? 0 : ev.size() - 1);
   check_tests();
   if (complete_) end_of_frame();
   return first_;
@@ -154,6 +191,7 @@ ContractChecker::Model& ContractChecker::model(int heads) {
   m.actual.assign(slots, -1);
   for (std::size_t slot = 0; slot < slots; ++slot) m.actual[slot] = initial_head(heads, static_cast<std::int64_t>(slot));
   m.last_push.assign(slots, kNone);
+  m.count.assign(slots, 0);
   return models_.emplace(heads, std::move(m)).first->second;
 }
 
@@ -251,6 +289,11 @@ void ContractChecker::on_push(std::size_t at, const TraceEvent& e) {
     return;
   }
   m.head[slot] = k;
+  ++m.count[slot];
+  if (full_key) {
+    cell_list_[flat(keyed)] = CellList{hw.array, static_cast<std::int64_t>(slot)};
+    last_row_push_[row_key(keyed)] = at;
+  }
   m.member_cell[static_cast<std::size_t>(k)] = keyed;
   m.member_at[static_cast<std::size_t>(k)] = at;
   m.member_slot[static_cast<std::size_t>(k)] = static_cast<std::int64_t>(slot);
@@ -271,6 +314,7 @@ void ContractChecker::on_clear(std::size_t at, const TraceEvent& e) {
     return;
   }
   m.head[slot] = -1;
+  m.count[slot] = 0;
   ++m.build[slot];
 }
 
@@ -305,6 +349,7 @@ void ContractChecker::on_visit(std::size_t at, const TraceEvent& e) {
   visits_[static_cast<std::size_t>(k)] |= 1u << bit;
   union_ |= 1u << bit;
   last_visit_[static_cast<std::size_t>(k)] = at;
+  if (o != Cell{0, 0, 0}) walk_ = Walk{at, k, c, 0};  // own cell: only the elements after k are walked
 }
 
 void ContractChecker::on_test(std::size_t at, const TraceEvent& e) {
@@ -333,7 +378,8 @@ void ContractChecker::on_test(std::size_t at, const TraceEvent& e) {
            truth ? std::vector<Pair>{Pair{std::min(k, m), std::max(k, m)}} : std::vector<Pair>{});
     return;
   }
-  tested_.emplace_back(key(k, m), at);  // once and reported: checked together at the end (sorted, not hashed)
+  tested_.emplace_back(key(k, m), at);
+  if (walk_ && walk_->k == k) ++walk_->tested;  // once and reported: checked together at the end (sorted, not hashed)
 }
 
 void ContractChecker::check_tests() {

@@ -32,6 +32,8 @@ enum class Contract : std::uint8_t {
   MaskRelates,     // for every neighbour offset, the mask visits it or its opposite (every cell pair is related)
   MaskCell,        // k's mask visits each of its mask cells that exists and holds elements
   WalkCell,        // a walk of a visited cell's list meets only elements of that cell
+  ListComplete,    // a cell's list holds every element of the cell when a mask walks it
+  WalkComplete,    // a walk tests every element of the list it walks
   TestSelf,        // no element is tested against itself
   TestAnswer,      // each test answers the exact contact test (under --touching)
   TestOnce,        // each pair is tested once

@@ -35,7 +35,6 @@ void ContractChecker::cost_of_cell(std::int32_t k, const Cell& c, std::vector<Pa
 
 void ContractChecker::end_of_frame() {
   const std::size_t end = t_.log.events().size() - 1;
-  for (std::int64_t k = 0; k < n_; ++k) members_[flat(cells_[static_cast<std::size_t>(k)])].push_back(static_cast<std::int32_t>(k));
   if (!models_.empty()) {
     coverage(end);
     heads_cleared(end);
