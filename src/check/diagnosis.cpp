@@ -28,7 +28,18 @@ Diagnosis diagnose(const Violation& v, std::span<const TraceEvent> events, const
     if (grid.periodic[a]) cells.wrap[static_cast<std::size_t>(a)] = grid.n[a];
   }
   const bool stray = v.invariant == Invariant::Cells && v.pair.i != v.pair.j;  // (stray, finder): a walked list
-  const PairLocation at = stray ? locate_stray(events, v.pair.i, v.pair.j, cells.i, e.dim) : locate_pair(events, v.pair.i, v.pair.j, cells, e.dim);
+  PairLocation at = stray ? locate_stray(events, v.pair.i, v.pair.j, cells.i, e.dim) : locate_pair(events, v.pair.i, v.pair.j, cells, e.dim);
+  // A cell the detector wrote wrongly while its lists have k right: the push that keyed k on that axis
+  // is where it had the right cell (cell_i is the written one, cell_j the grid's).
+  const bool written_wrong = v.invariant == Invariant::Cells && v.pair.i == v.pair.j && at.finding == PairFinding::NotInTrace;
+  int axis = -1;
+  if (written_wrong) axis = v.cell_i.ix != v.cell_j.ix ? 0 : v.cell_i.iy != v.cell_j.iy ? 1 : 2;
+  for (std::size_t k = 0; written_wrong && axis >= 0 && k < events.size(); ++k) {
+    if (events[k].op == TraceOp::Push && events[k].element == v.pair.i && events[k].cell[axis] >= 0) {
+      at.event = k;
+      break;
+    }
+  }
   d.at = at;
   d.event = at.event;
   if (at.event) {
@@ -77,7 +88,14 @@ Diagnosis diagnose(const Violation& v, std::span<const TraceEvent> events, const
           ": not neighbours, so no contact mask relates them; this operation puts " + id(v.pair.i) + " in its list.";
       break;
     case PairFinding::NotInTrace:
-      t = "frame " + std::to_string(v.frame) + "'s " + algorithm + " trace records nothing about " + id(v.pair.i) + " and " + id(v.pair.j) + ".";
+      if (written_wrong && at.event) {
+        const char* axis_name = axis == 0 ? "x" : axis == 1 ? "y" : "z";
+        t = op + "this push keys " + id(v.pair.i) + " to its cell on " + axis_name + " as the grid does, but the cell it wrote to out->cells on " +
+            axis_name + " is another (" + std::to_string(axis == 0 ? v.cell_i.ix : axis == 1 ? v.cell_i.iy : v.cell_i.iz) +
+            "): its cells output is not the cell it used.";
+      } else {
+        t = "frame " + std::to_string(v.frame) + "'s " + algorithm + " trace records nothing about " + id(v.pair.i) + " and " + id(v.pair.j) + ".";
+      }
       break;
   }
   return d;

@@ -329,9 +329,12 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
     misbehaviour_->cycle = call.cycle;
   }
   if (call.limit_hit) throw_pair_limit(options.max_pairs);  // told to stop: not the plugin's fault
-  if (status != 0 && call.breach.empty())
-    throw PluginError(where(options.frame) + "nbscope_detect returned " + std::to_string(status) +
-                      (call.failure.empty() ? " without a reason (fail() not called)" : ": " + printable_line(call.failure)));
+  // A failure the plugin explains (fail()) is its own verdict on the frame: an error. One it does not
+  // explain is a bug in it, like any other misbehaviour (a test of add_pair's answer turned round).
+  if (status != 0 && call.breach.empty() && !call.failure.empty())
+    throw PluginError(where(options.frame) + "nbscope_detect returned " + std::to_string(status) + ": " + printable_line(call.failure));
+  if (status != 0 && call.breach.empty() && !misbehaviour_)
+    misbehaviour_ = misbehaviour_at({"nbscope_detect returned " + std::to_string(status) + " without a reason (fail() not called)", Pair{-1, -1}, operations});
   if (scan.first_repeat >= 0) {
     const Pair p = out_pairs[static_cast<std::size_t>(scan.first_repeat)];
     if (!misbehaviour_)

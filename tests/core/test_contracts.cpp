@@ -233,5 +233,40 @@ TEST_F(PlantedBreak, AVisitOutsideTheGridIsAMaskInGrid) {
   EXPECT_EQ(b.event, visit);
 }
 
+TEST_F(PlantedBreak, HeadsLeftSetAtTheEndAreAHeadsCleared) {
+  // Every clear of the y heads dropped: the frame ends with them set.
+  const int y_heads = t.log.array_id("y_heads");
+  ASSERT_GE(y_heads, 0);
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t, TraceEvent& e) {
+    return !(e.op == TraceOp::Clear && e.writes[0].array == y_heads);
+  }));
+  EXPECT_EQ(b.contract, Contract::HeadsCleared) << b.text;
+  EXPECT_NE(b.text.find("y_heads["), std::string::npos) << b.text;
+}
+
+TEST_F(PlantedBreak, AWalkThatStopsShortIsAWalkComplete) {
+  // The tests of one walk of a cell that is not the visitor's own dropped: the visit is left, the walk not.
+  std::size_t visit = 0;
+  for (std::size_t at = 0; at + 1 < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    if (e.op == TraceOp::VisitCell && e.cell[0] != t.grid.cell(t.elements.x[e.element], 0) && t.log.events()[at + 1].op == TraceOp::TestPair) {
+      visit = at;
+      break;
+    }
+  }
+  ASSERT_GT(visit, 0u);
+  bool walking = false;
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (at == visit) {
+      walking = true;
+      return true;
+    }
+    if (e.op != TraceOp::TestPair) walking = false;
+    return !walking;
+  }));
+  EXPECT_EQ(b.contract, Contract::WalkComplete) << b.text;
+  EXPECT_EQ(b.event, visit + 1) << "where the walk stopped: the operation after its visit";
+}
+
 }  // namespace
 }  // namespace nbscope
