@@ -334,7 +334,8 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   if (status != 0 && call.breach.empty() && !call.failure.empty())
     throw PluginError(where(options.frame) + "nbscope_detect returned " + std::to_string(status) + ": " + printable_line(call.failure));
   if (status != 0 && call.breach.empty() && !misbehaviour_)
-    misbehaviour_ = misbehaviour_at({"nbscope_detect returned " + std::to_string(status) + " without a reason (fail() not called)", Pair{-1, -1}, operations});
+    misbehaviour_ = misbehaviour_at({"nbscope_detect returned " + std::to_string(status) + " without a reason (fail() not called)", Pair{-1, -1}, operations},
+                                    true);  // it ended the frame early: the trace holds nothing after it
   if (scan.first_repeat >= 0) {
     const Pair p = out_pairs[static_cast<std::size_t>(scan.first_repeat)];
     if (!misbehaviour_)
