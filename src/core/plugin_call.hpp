@@ -74,13 +74,30 @@ struct PluginCall {
   std::jmp_buf* escape = nullptr;  // where a call nbscope stops lands (call_detect in plugin_detector.cpp)
   bool cycle = false;              // the breach is a list closed on itself: nbscope stopped the call
   PluginProgress* progress = nullptr;  // advanced by every trace call (plugin_trace.cpp)
+  std::int64_t operations = 0;         // trace calls so far
+  std::int64_t max_operations = 0;     // more is a loop that does not end: the call is stopped (0: no limit)
 
   // One trace call of kind `op` at pseudocode line `line` was made (relaxed: read by a crash report).
+  // Past max_operations the call is stopped there: a runaway loop, whose recording would fill memory.
   void advance(TraceOp op, std::int32_t line) noexcept {
-    if (progress == nullptr) return;
-    progress->op.store(static_cast<std::int32_t>(op), std::memory_order_relaxed);
-    progress->line.store(line, std::memory_order_relaxed);
-    progress->operations.fetch_add(1, std::memory_order_relaxed);
+    if (progress != nullptr) {
+      progress->op.store(static_cast<std::int32_t>(op), std::memory_order_relaxed);
+      progress->line.store(line, std::memory_order_relaxed);
+      progress->operations.fetch_add(1, std::memory_order_relaxed);
+    }
+    if (++operations <= max_operations || max_operations == 0 || escape == nullptr || stopped()) return;
+    runaway();
+    stop_call();
+  }
+  // Keeps the breach of a call past max_operations (never throws).
+  void runaway() noexcept {
+    try {
+      breach_with("runaway: " + std::to_string(operations) + " trace operations for " + std::to_string(n) +
+                  " elements, more than the book's loops ever make (each pair tested once is n(n-1)/2): a loop that does "
+                  "not end (nbscope stopped the call)");
+    } catch (...) {
+      keep_exception();
+    }
   }
 
   // Notes a test of `other` by `k` that does not lie in the cell k's last visit walked (never throws).

@@ -74,7 +74,7 @@ Misbehaviour misbehaviour_at(MisbehaviourAt at, bool cut = false) {
 }
 
 // The first entry of `raw` (2D cells as a plugin wrote them) outside `grid`, as a misbehaviour.
-Misbehaviour bad_cell(const std::vector<std::int32_t>& raw, const Grid& grid, std::size_t operations) {
+Misbehaviour bad_cell(std::span<const std::int32_t> raw, const Grid& grid, std::size_t operations) {
   static const char* const axis_names[2] = {"x", "y"};
   for (std::size_t k = 0; k < raw.size() / 2; ++k) {
     for (int a = 0; a < 2; ++a) {
@@ -304,6 +304,9 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
   progress_.op.store(-1);
   progress_.line.store(-1);
   call.progress = &progress_;
+  // Every pair tested once, and a few dozen operations an element besides: no book loop makes more.
+  const auto n = static_cast<std::int64_t>(elements.size());
+  call.max_operations = operation_limit_ > 0 ? operation_limit_ : std::max<std::int64_t>(std::int64_t{1} << 23, n * (n - 1) / 2 + 64 * n);
   if (symbols_.guard) symbols_.guard->follow(&progress_);
   {
     const PluginCallScope guarded(symbols_.guard.get(), PluginCallKind::detect, options.frame);
@@ -407,7 +410,7 @@ void PluginDetector::check_cells(const Elements& elements, std::size_t operation
   std::uint32_t any = 0;
   for (const std::uint32_t lane : outside) any |= lane;
   if (any != 0) {
-    if (!misbehaviour_) misbehaviour_ = bad_cell(raw_cells_, grid_, operations);
+    if (!misbehaviour_) misbehaviour_ = bad_cell(raw_cells_.view(), grid_, operations);
     return;  // no own cells this frame: the misbehaviour says why
   }
   has_cells_ = true;

@@ -27,6 +27,7 @@
 
 #include "core/detector.hpp"
 #include "core/error.hpp"
+#include "core/guarded_ints.hpp"
 #include "core/pair_scan.hpp"
 
 namespace nbscope {
@@ -163,6 +164,9 @@ class PluginDetector final : public Detector {
   [[nodiscard]] const WalkCheck* walk_check() const override;
   // The last detection's first misbehaviour (a bad pair, a broken trace rule, a cell), or nullptr.
   [[nodiscard]] const Misbehaviour* misbehaviour() const override { return misbehaviour_ ? &*misbehaviour_ : nullptr; }
+  // Most trace operations one call may make before it is stopped as a runaway loop; 0 (the default):
+  // max(2^23, n(n-1)/2 + 64n), more than any book loop makes. Tests set a small one.
+  void set_operation_limit(std::int64_t limit) { operation_limit_ = limit; }
   // The plugin's pseudocode lines for `dim`.
   [[nodiscard]] const std::vector<const char*>& pseudocode(int dim) const override;
 
@@ -186,13 +190,14 @@ class PluginDetector final : public Detector {
   mutable std::size_t own_bytes_ = 0;     // nbscope_own_bytes' answer for the state as it is
   mutable bool own_bytes_known_ = false;  // false until asked after the last detection
   Grid grid_;
-  std::vector<std::int32_t> raw_cells_;  // what the plugin wrote: n * dim, prefilled -1
+  GuardedInts raw_cells_;                // what the plugin wrote: n * dim, prefilled -1, a guard page after it
   std::vector<CellIndex> cells_;
   bool has_cells_ = false;               // the last detection was 2D with NBSCOPE_CAP_CELLS
   PairScanScratch pair_scan_;             // scan_pairs' memory (kept between frames)
   WalkCheck walks_;                      // the last detection's walk check
   std::optional<Misbehaviour> misbehaviour_;  // the last detection's first misbehaviour
   PluginProgress progress_;               // the running call's, for a crash report or a watchdog
+  std::int64_t operation_limit_ = 0;      // set_operation_limit()
   bool walks_checked_ = false;
 };
 

@@ -107,5 +107,15 @@ TEST(UnplantedBugs, ACrashOrAHangInATracedCallNamesItsLastOperation) {
   }
 }
 
+// A write past the cells buffer (a loop one element too far) faults on its guard page inside the
+// plugin's call: a located crash, never nbscope's own heap corrupted (glibc's "free(): invalid size").
+TEST(UnplantedBugs, AWritePastTheCellsIsALocatedCrashNotACorruptedHeap) {
+  const auto r = run("headless --scene '" + scene("pile") + "' --frames 2 --detector-lib '" + bug("cells_past") + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("crashed with SIGSEGV in nbscope_detect() on frame 0, after operation "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" of its trace (push, pseudocode line 2)\n"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("free()"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace nbscope

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/guarded_ints.hpp"
 #include "core/plugin_detector.hpp"
 
 namespace nbscope {
@@ -167,6 +168,36 @@ TEST(PluginBounds, DetectOwnBytesAndReleaseAreEachGuarded) {
   }
   EXPECT_EQ(guard->calls, (std::vector<std::string>{"enter detect 7", "leave", "enter own_bytes", "leave", "enter detect 8",
                                                     "leave", "enter own_bytes", "leave", "enter release", "leave"}));
+}
+
+// A call that traces without end (a loop that never stops) is stopped at the operation limit: its
+// frame's misbehaviour says so, and nbscope goes on.
+TEST(PluginBounds, ARunawayCallIsStoppedAtTheOperationLimit) {
+  g_body = [](void**, const nbscope_frame*, const nbscope_output*, const nbscope_trace* t) {
+    for (;;) t->phase(t->ctx, 0, "forever", -1);
+    return 0;
+  };
+  PluginDetector detector(symbols(), info());
+  detector.set_operation_limit(1000);
+  PairList pairs;
+  TraceLog log;
+  detector.detect_traced(three(), DetectOptions{}, pairs, log);
+  ASSERT_NE(detector.misbehaviour(), nullptr);
+  EXPECT_EQ(detector.misbehaviour()->text.rfind("runaway: 1001 trace operations for 3 elements", 0), 0u) << detector.misbehaviour()->text;
+  EXPECT_TRUE(detector.misbehaviour()->cut);
+  EXPECT_EQ(log.events().size(), 1001u);
+}
+
+// The cells a plugin writes end at a guard page: one past the end faults (where the crash report
+// names the call), never the heap behind them.
+TEST(PluginBounds, TheCellsBufferEndsAtAGuardPage) {
+  GuardedInts cells;
+  cells.assign(6, -1);
+  EXPECT_EQ(cells.view().size(), 6u);
+  EXPECT_EQ(cells.view()[5], -1);
+  EXPECT_DEATH({ cells.data()[6] = 7; }, "");
+  cells.assign(1000, 0);  // grown: a new mapping, its end at the guard again
+  EXPECT_DEATH({ cells.data()[1000] = 7; }, "");
 }
 
 }  // namespace
