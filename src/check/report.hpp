@@ -85,7 +85,7 @@ struct FrameCounts {
 struct FrameTimings {
   double physics_ms = 0;    // Box2D step(s), emitters, elements and AABBs at the new transforms
   double detection_ms = 0;  // the chosen algorithm (and any injected fault)
-  double check_ms = 0;      // reference detection, Box2D's sets, the five invariants
+  double check_ms = 0;      // reference detection, Box2D's sets, the six invariants
 };
 
 // Where one frame's check time (FrameTimings::check_ms) went, in milliseconds: the sets, then each
