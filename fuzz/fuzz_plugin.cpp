@@ -4,13 +4,16 @@
 // and undeclared arrays, entries inside and outside their shapes, lines past the pseudocode; cells in
 // and out of the grid; any return status. The plugin keeps its own account of which calls break the
 // rules of include/nbscope/detector.h, written independently of the adapter, and the target holds the
-// adapter to it: a PluginError exactly when a rule was broken; otherwise the pairs the plugin gave,
-// in its order, an event per trace call, and a trace whose replay ends on the plugin's real arrays.
+// adapter to it: a PluginError or a misbehaviour (docs/diagnosis.md) exactly when a rule was broken;
+// otherwise the pairs the plugin gave, in its order, an event per trace call, and a trace whose replay
+// ends on the plugin's real arrays. A list closed on itself (an element pushed onto one build of a list
+// twice, a walk meeting an element twice) breaks a rule too: nbscope stops the call there.
 #include <nbscope/detector.h>
 
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -46,6 +49,11 @@ struct Script {
   std::set<Pair> seen;
   std::size_t events = 0;              // trace calls that must become events
   std::vector<std::vector<std::int32_t>> arrays;  // the plugin's declared arrays (never reallocated)
+  // Closed lists: per heads array, each element's last list and that list's build (clears) then.
+  std::map<std::int64_t, std::map<std::int64_t, std::pair<std::int64_t, std::int64_t>>> last_push;
+  std::map<std::pair<std::int64_t, std::int64_t>, std::int64_t> builds;  // (heads, list) -> clears so far
+  std::int64_t visitor = -1;           // the element of the last visit, whose tests walk one list
+  std::set<std::int64_t> walked;       // the elements its walk has met
 };
 Script* g_script = nullptr;
 
@@ -108,6 +116,12 @@ bool trace_op(Bytes& in, const nbscope_trace* t, std::uint8_t op) {
         const bool right = in.u8() % 4 != 0;
         entry(next, k) = right ? entry(heads, list) : -1;
         entry(heads, list) = static_cast<std::int32_t>(k);
+        // Onto the list it is on (no clear since): the list closes; nbscope stops the call in this push.
+        const std::int64_t build = s.builds[{heads, list}];
+        auto& last = s.last_push[heads];
+        const auto before = last.find(k);
+        if (before != last.end() && before->second == std::make_pair(list, build)) s.broke_rule = true;
+        last[k] = {list, build};
       }
       t->push(t->ctx, line, "list", static_cast<std::int32_t>(heads), list, static_cast<std::int32_t>(next),
               static_cast<std::int32_t>(k), 0, 0, -1);
@@ -117,7 +131,10 @@ bool trace_op(Bytes& in, const nbscope_trace* t, std::uint8_t op) {
       const std::int64_t heads = index_for(in, declared);
       const std::int64_t list = index_for(in, array_ok(heads) ? static_cast<std::int64_t>(s.arrays[static_cast<std::size_t>(heads)].size()) : 1);
       ok = ok && entry_ok(heads, list);
-      if (ok) entry(heads, list) = -1;
+      if (ok) {
+        entry(heads, list) = -1;
+        ++s.builds[{heads, list}];
+      }
       t->clear(t->ctx, line, "list", static_cast<std::int32_t>(heads), list);
       break;
     }
@@ -133,12 +150,18 @@ bool trace_op(Bytes& in, const nbscope_trace* t, std::uint8_t op) {
     case 4: {  // visit a cell
       const std::int64_t k = index_for(in, s.n);
       ok = ok && element_ok(k, false);
+      if (ok) {
+        s.visitor = k;
+        s.walked.clear();
+      }
       t->visit_cell(t->ctx, line, static_cast<std::int32_t>(k), in.u8(), in.u8(), -1);
       break;
     }
     case 5: {  // test a pair
       const std::int64_t k = index_for(in, s.n), other = index_for(in, s.n);
       ok = ok && element_ok(k, false) && element_ok(other, false);
+      // A walk that meets an element twice follows a list closed on itself: nbscope stops the call.
+      if (ok && k == s.visitor && !s.walked.insert(other).second) s.broke_rule = true;
       t->test_pair(t->ctx, line, static_cast<std::int32_t>(k), static_cast<std::int32_t>(other), in.u8() % 2);
       break;
     }
@@ -226,6 +249,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const nbscope::PluginError&) {
     refused = true;
   }
+  refused = refused || detector.misbehaviour() != nullptr;  // a rule broken in a frame: its violation
   g_script = nullptr;
 
   FUZZ_CHECK(refused == script.broke_rule, std::string(refused ? "a plugin that kept every rule was refused"
