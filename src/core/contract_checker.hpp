@@ -8,7 +8,6 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 #include "core/contracts.hpp"
@@ -134,8 +133,7 @@ class ContractChecker {
   std::int64_t n_;
   const ContractNames& names_;
   std::vector<Cell> cells_;
-  std::unordered_set<std::int64_t> occupied_;
-  std::unordered_map<std::int64_t, std::vector<std::int32_t>> members_;
+  std::unordered_map<std::int64_t, std::vector<std::int32_t>> members_;  // per occupied cell: its elements
   std::unordered_map<int, Model> models_;
   std::vector<CellPush> cell_pushes_;
   std::vector<std::pair<std::size_t, std::int64_t>> row_starts_;  // (event, row key) where a row's phases begin

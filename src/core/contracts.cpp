@@ -10,7 +10,6 @@
 #include <cstdio>
 #include <array>
 #include <unordered_map>
-#include <unordered_set>
 
 namespace nbscope {
 
@@ -76,11 +75,9 @@ ContractChecker::ContractChecker(const FrameTrace& t, const ContractNames& names
     : complete_(complete), t_(t), e_(t.elements), g_(t.grid), dim_(t.elements.dim), n_(t.elements.size()), names_(names) {
   cells_.resize(static_cast<std::size_t>(n_));
   for (std::int64_t k = 0; k < n_; ++k) {
-    Cell c{0, 0, -1};
-    if (dim_ == 2) c[2] = -1;
+    Cell c{0, 0, -1};  // iz -1 in 2D
     for (int a = 0; a < dim_; ++a) c[static_cast<std::size_t>(a)] = g_.cell(e_.axis(a)[static_cast<Eigen::Index>(k)], a);
     cells_[static_cast<std::size_t>(k)] = c;
-    occupied_.insert(flat(c));
     members_[flat(c)].push_back(static_cast<std::int32_t>(k));
   }
   visits_.assign(static_cast<std::size_t>(n_), 0);

@@ -140,7 +140,7 @@ void ContractChecker::mask(std::size_t end) {
       const std::size_t last = last_visit_[static_cast<std::size_t>(k)];
       Cell c{};
       if (last == kNone || (first_ && first_->event <= last)) continue;
-      if (!neighbour(cells_[static_cast<std::size_t>(k)], due, c) || !occupied_.count(flat(c))) continue;
+      if (!neighbour(cells_[static_cast<std::size_t>(k)], due, c) || !members_.count(flat(c))) continue;
       std::vector<Pair> cost;
       std::int64_t count = 0;
       cost_of_cell(static_cast<std::int32_t>(k), c, cost, count);
@@ -161,7 +161,7 @@ void ContractChecker::mask(std::size_t end) {
       if ((union_ >> bit & 1u) == 0 || (visits_[static_cast<std::size_t>(k)] >> bit & 1u) != 0) continue;
       Cell c{};
       const Cell o = offset_of_bit(bit, dim_);
-      if (!neighbour(cells_[static_cast<std::size_t>(k)], o, c) || !occupied_.count(flat(c))) continue;
+      if (!neighbour(cells_[static_cast<std::size_t>(k)], o, c) || !members_.count(flat(c))) continue;
       std::vector<Pair> cost;
       std::int64_t count = 0;
       cost_of_cell(static_cast<std::int32_t>(k), c, cost, count);
