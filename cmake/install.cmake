@@ -1,5 +1,6 @@
 # nbscope's install tree (GNU layout), its CMake package and the .deb (docs/install.md):
 #   bin/nbscope                       the binary; it finds ../share/nbscope itself (src/io/data_dir.cpp)
+#   libexec/nbscope/nbscope-plugin-host  the process a detector plugin runs in (src/io/plugin_host.hpp)
 #   share/nbscope/assets/{scenes,examples}, share/nbscope/shaders   what it reads at run time
 #   include/nbscope/detector.h        the plugin API
 #   share/doc/nbscope/examples/       the example plugins' sources (examples/), to copy from (their
@@ -12,6 +13,7 @@ set(NBSCOPE_INSTALL_DATADIR "${CMAKE_INSTALL_DATADIR}/nbscope")
 set(NBSCOPE_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/nbscope")
 
 install(TARGETS nbscope RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+install(TARGETS nbscope-plugin-host RUNTIME DESTINATION "${CMAKE_INSTALL_LIBEXECDIR}/nbscope")
 # Only what the binary reads at run time: the golden screenshots are the tests' own.
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/assets/scenes" "${PROJECT_SOURCE_DIR}/assets/examples"
         DESTINATION "${NBSCOPE_INSTALL_DATADIR}/assets")

@@ -19,8 +19,11 @@
  * Threading: nbscope calls one library from one thread at a time. The state pointer is the plugin's
  * own (NULL on the first call); keep arrays in it between frames, as a simulation would.
  *
- * Guarded: a crash or a call running past --detector-timeout in any of these (or in the library's
- * constructors, at load) ends nbscope with one line naming the library and the call, exit 2. A
+ * Isolated: each detector instance runs its calls in a process of its own (nbscope-plugin-host). A
+ * crash or a call running past --detector-timeout in nbscope_detect is that frame's violation, located
+ * after the last operation traced, and the next frame starts a new process (state NULL again); in the
+ * library's constructors, describe, release or own_bytes (or with --detector-isolation none, where the
+ * plugin runs in nbscope's process) it ends nbscope with one line naming the library and the call. A
  * breach of the rules below in a frame (a pair (k, k), out of range or given twice, a trace call
  * naming what does not exist, a cell not written) is that frame's violation (docs/diagnosis.md); a
  * list that closes on itself ends the call there (nbscope returns from a trace callback straight to

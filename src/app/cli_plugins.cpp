@@ -1,4 +1,4 @@
-// --detector-lib and --detector-timeout (cli.hpp): the plugins load before any algorithm name is
+// --detector-lib, --detector-timeout and --detector-isolation (cli.hpp): the plugins load before any algorithm name is
 // resolved, so --algorithm, --compare lanes, the Algorithm panel and `nbscope algorithms` see them
 // as they see the built-ins. A library named without --algorithm is the one that runs (a built-in
 // run instead would pass the user's bug unseen), and --algorithm takes a library's file name too.
@@ -58,6 +58,11 @@ void load_detector_libs(Args& args, const std::string& command) {
   if (const auto seconds = args.number("--detector-timeout")) {
     if (*seconds < 0 || *seconds > 1e6) throw Error("--detector-timeout: the seconds must be from 0 (no limit) to 1e6");
     set_detector_timeout(*seconds);
+  }
+  if (const auto isolation = args.value("--detector-isolation")) {
+    if (*isolation != "process" && *isolation != "none")
+      throw Error("--detector-isolation: '" + excerpt(*isolation) + "' is not process or none");
+    set_plugin_isolation(*isolation == "process" ? PluginIsolation::process : PluginIsolation::none);
   }
   std::vector<LoadedLibrary> libraries;
   std::vector<std::string> declared;  // each detector once (the same file named twice loads once)

@@ -48,12 +48,14 @@ const std::vector<OptionSpec>& grid_options() {
 const std::vector<OptionSpec>& plugin_options() {
   static const std::vector<OptionSpec> options = {
       {"--detector-lib", "PATH.so", "",
-       "loads a detector plugin (include/nbscope/detector.h), named then as a built-in (or by its file name); repeatable. "
-       "Without --algorithm its detector is the one run. One that breaks the API, crashes or hangs stops the run: exit 2, "
-       "naming it and the call"},
+       "loads a detector plugin (include/nbscope/detector.h), named as a built-in (or by its file name); repeatable; "
+       "without --algorithm, the one run. One unusable stops the run (exit 2); a detection that breaks the API, crashes "
+       "or hangs is its frame's violation"},
       {"--detector-timeout", "SECONDS", "60",
-       "how long one call into a plugin (its load, describe, detect, release, own_bytes) may take before the run stops "
-       "(0: no limit)"},
+       "how long one call into a plugin (its load, describe, detect, release, own_bytes) may take (0: no limit)"},
+      {"--detector-isolation", "process|none", "process",
+       "where a plugin's calls run: in a host process of its own (a crash or a write out of bounds takes only the host "
+       "down: nbscope starts a new one), or in nbscope's process (cheaper; a crash in a detection then ends the run, exit 2)"},
   };
   return options;
 }

@@ -41,7 +41,7 @@ std::shared_ptr<const FrameTrace> trace_frame(Detector& detector, const Elements
   detector.detect_traced(elements, serial, out->pairs, out->log);
   out->detected = true;
   if (const Misbehaviour* m = detector.misbehaviour()) out->misbehaviour = *m;
-  if (out->log.events().empty()) {
+  if (out->log.events().empty() && !out->misbehaviour) {  // a bug before its first operation is still located there
     std::string tracing;
     for (const DetectorInfo& d : detector_infos())
       if (d.traces && (elements.dim == 3 ? d.dim3 : d.dim2)) tracing += (tracing.empty() ? "" : ", ") + d.name;

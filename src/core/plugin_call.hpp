@@ -145,8 +145,4 @@ struct PluginCall {
 // The trace table whose ctx is `call` (plugin_trace.cpp).
 nbscope_trace plugin_trace_table(PluginCall& call);
 
-// `text` (a plugin's label or kind; may be null), cut (cut_plugin_text), as a string that lives as long
-// as the process.
-const char* intern_plugin_label(const char* text);
-
 }  // namespace nbscope

@@ -300,14 +300,14 @@ void PluginDetector::run(const Elements& elements, const DetectOptions& options,
 
   int status = 0;
   own_bytes_known_ = false;  // the call may change the state
-  progress_.operations.store(0);
-  progress_.op.store(-1);
-  progress_.line.store(-1);
-  call.progress = &progress_;
+  progress_->operations.store(0);
+  progress_->op.store(-1);
+  progress_->line.store(-1);
+  call.progress = progress_;
   // Every pair tested once, and a few dozen operations an element besides: no book loop makes more.
   const auto n = static_cast<std::int64_t>(elements.size());
   call.max_operations = operation_limit_ > 0 ? operation_limit_ : std::max<std::int64_t>(std::int64_t{1} << 23, n * (n - 1) / 2 + 64 * n);
-  if (symbols_.guard) symbols_.guard->follow(&progress_);
+  if (symbols_.guard) symbols_.guard->follow(progress_);
   {
     const PluginCallScope guarded(symbols_.guard.get(), PluginCallKind::detect, options.frame);
     status = call_detect(symbols_.detect, &state_, &frame, &output, trace != nullptr || walk ? &table : nullptr, call);

@@ -46,6 +46,10 @@ inline constexpr std::size_t kMaxPluginTextBytes = 300;
 // else its first bytes up to that (cut at a UTF-8 character) and "... (1,048,276 more bytes)".
 std::string cut_plugin_text(const char* text);
 
+// `text` (a plugin's label or kind; may be null), cut (cut_plugin_text), as a string that lives as long
+// as the process: a trace event's label.
+const char* intern_plugin_label(const char* text);
+
 // The calls into a plugin library, each bracketed by a PluginCallGuard.
 enum class PluginCallKind {
   load,       // dlopen, which runs the library's constructors
@@ -169,6 +173,11 @@ class PluginDetector final : public Detector {
   void set_operation_limit(std::int64_t limit) { operation_limit_ = limit; }
   // The plugin's pseudocode lines for `dim`.
   [[nodiscard]] const std::vector<const char*>& pseudocode(int dim) const override;
+  // What the plugin described (shared by its instances).
+  [[nodiscard]] const std::shared_ptr<const PluginDescription>& description() const { return description_; }
+  // Keeps the progress of each call at `progress` (which must outlive this detector), e.g. in memory
+  // shared with another process that reports a crash of this one (io/plugin_host.hpp).
+  void set_progress(PluginProgress* progress) { progress_ = progress; }
 
  private:
   void run(const Elements& elements, const DetectOptions& options, PairList& out_pairs, TraceLog* trace);
@@ -196,7 +205,8 @@ class PluginDetector final : public Detector {
   PairScanScratch pair_scan_;             // scan_pairs' memory (kept between frames)
   WalkCheck walks_;                      // the last detection's walk check
   std::optional<Misbehaviour> misbehaviour_;  // the last detection's first misbehaviour
-  PluginProgress progress_;               // the running call's, for a crash report or a watchdog
+  PluginProgress own_progress_;           // the running call's, for a crash report or a watchdog,
+  PluginProgress* progress_ = &own_progress_;  // or where set_progress() keeps it
   std::int64_t operation_limit_ = 0;      // set_operation_limit()
   bool walks_checked_ = false;
 };

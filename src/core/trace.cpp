@@ -131,6 +131,14 @@ void TraceLog::record(const TraceEvent& e) {
   events_.push_back(e);
 }
 
+void TraceLog::append(std::span<const TraceEvent> events) {
+  if (probe_ || consumer_) {
+    for (const TraceEvent& e : events) record(e);
+    return;
+  }
+  events_.insert(events_.end(), events.begin(), events.end());
+}
+
 void TraceLog::apply(const TraceEvent& e, std::vector<std::vector<std::int32_t>>& state) {
   for (int w = 0; w < e.write_count; ++w) {
     const ArrayWrite& a = e.writes[w];

@@ -97,6 +97,13 @@ class TraceLog {
   // When false, VisitCell and TestPair events are not recorded (every array write still is), so a
   // large detection can be replayed for its arrays (`nbscope dump`) in memory O(writes). Survives reset().
   void set_keep_tests(bool keep) { keep_tests_ = keep; }
+  // False when VisitCell and TestPair events are dropped (set_keep_tests).
+  [[nodiscard]] bool keeps_tests() const { return keep_tests_; }
+  // Records `e`, made by another TraceLog (a plugin's host process), as if it happened here; its arrays
+  // must be declared here first, in the same order.
+  void append(const TraceEvent& e) { record(e); }
+  // The same for many, in order (one copy when no probe or consumer watches).
+  void append(std::span<const TraceEvent> events);
   // Test hook: called just before each event is recorded with its position, the event, and the
   // detector's arrays as they really are at that moment, which a faithful trace makes equal to
   // state_after(position). The detector's arrays must not move while it runs. Survives reset().

@@ -28,6 +28,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double g_timeout_seconds = kDefaultDetectorTimeout;
+PluginIsolation g_isolation = PluginIsolation::process;
 
 // One thread that ends the process when a plugin's call outlives its deadline. Arming costs two
 // uncontended locks: the thread is woken only when it sleeps without a deadline, and otherwise wakes
@@ -188,6 +189,8 @@ void check_name_free(const std::string& path, const std::string& name) {
 
 void set_detector_timeout(double seconds) { g_timeout_seconds = seconds; }
 
+void set_plugin_isolation(PluginIsolation isolation) { g_isolation = isolation; }
+
 std::string load_detector_plugin(const std::string& path) {
   PluginGuard unnamed(printable_line(path), g_timeout_seconds);  // until its describe names it
   void* handle = open_library(path, unnamed);  // never closed: its code may be running until the process ends
@@ -223,7 +226,14 @@ std::string load_detector_plugin(const std::string& path) {
   const std::string name = description->name;
   check_name_free(path, name);
   symbols.guard = std::make_shared<PluginGuard>(printable_line(path) + " (" + name + ")", g_timeout_seconds);
-  register_detector(plugin_detector_info(symbols, description));
+  DetectorInfo entry = plugin_detector_info(symbols, description);
+  if (g_isolation == PluginIsolation::process) {
+    plugin_host_path();  // a missing host is said now, at the load, not at the first frame
+    entry.make = [path, description, timeout = g_timeout_seconds]() -> std::unique_ptr<Detector> {
+      return std::make_unique<IsolatedPluginDetector>(path, description, timeout);
+    };
+  }
+  register_detector(std::move(entry));
   plugin_libraries()[name] = path;
   loaded_handles()[handle] = name;
   std::error_code ec;

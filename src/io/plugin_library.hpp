@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "io/plugin_host.hpp"
+
 namespace nbscope {
 
 // Default of --detector-timeout: the seconds one call into a plugin may take.
@@ -24,5 +26,9 @@ std::vector<std::string> loaded_detector_libraries();
 // The seconds one call into a plugin (its load, describe, detect, release, own_bytes) may run before
 // the process ends with an error line and exit 2 (0: no limit); for plugins loaded from now on.
 void set_detector_timeout(double seconds);
+
+// Where the detectors of libraries loaded from now on run their calls (--detector-isolation; the
+// default: PluginIsolation::process, each instance in a host process of its own).
+void set_plugin_isolation(PluginIsolation isolation);
 
 }  // namespace nbscope

@@ -1,13 +1,15 @@
 // --detector-lib through the nbscope binary with the test plugins of tests/plugins/: a good plugin runs
 // and compares like a built-in, a wrong but well-formed one fails its checks (exit 1), one that breaks
 // the API in a frame has a `contract` violation there (exit 1; one error line, exit 1, where nothing is
-// checked), and every unusable plugin (refused at load, crashing or hanging in any call) is one error
-// line naming the library (and the call or the frame), exit 2.
+// checked), so does one that crashes or hangs in a detection (in its host process), and every unusable
+// plugin (refused at load, crashing or hanging in its load, describe, release or own_bytes, or in a
+// detection in nbscope's process) is one error line naming the library (and the call or the frame), exit 2.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -89,6 +91,14 @@ TEST(PluginCli, WindowRunsThePluginAndShowsItsBreachAsAViolation) {
           testcli::on_display());
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;  // violations, as headless says them
   EXPECT_EQ(r.err.find("nbscope: error:"), std::string::npos) << r.err;
+  // A crash in a traced detection takes only the plugin's host down: the window stays open on the
+  // frame and shows it as its violation.
+  lib = std::string(NBSCOPE_PLUGIN_DIR) + "/test_bug_crash_traced.so";
+  r = run("gui --scene '" + scene("pile") + "' --frames 2 --screenshot '" + dir + "/crash.png' --detector-lib '" + lib + "'",
+          testcli::on_display());
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_EQ(r.err.find("nbscope: error:"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir + "/crash.png"));
 }
 #endif
 
@@ -241,10 +251,18 @@ TEST(PluginCli, BrokenTraceCallsAreNamed) {
              lib + " (test-index-shape): frame 0: trace set: index 23 is outside array 0 of 18 entries");
 }
 
-TEST(PluginCli, CrashIsOneLineNamingTheLibraryAndFrame) {
+// In a host process of its own (the default) a crash is frame 3's violation and the run goes on;
+// in nbscope's it ends the run with one line naming the library and the frame.
+TEST(PluginCli, CrashIsFrame3sViolationOrInProcessOneLineNamingTheLibraryAndFrame) {
   const std::string lib = plugin("crash");
-  expect_error(run("headless --scene '" + scene("default") + "' --frames 30 --detector-lib '" + lib + "' --algorithm test-crash"),
-               lib + " (test-crash): crashed with SIGSEGV in nbscope_detect() on frame 3");
+  const std::string command = "headless --scene '" + scene("default") + "' --frames 30 --detector-lib '" + lib + "' --algorithm test-crash";
+  const auto r = run(command);
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_NE(r.out.find("first in frame 3: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("contract api-rule broken: crashed with SIGSEGV in nbscope_detect() on frame 3"), std::string::npos) << r.out;
+  expect_error(run(command + " --detector-isolation none"), lib + " (test-crash): crashed with SIGSEGV in nbscope_detect() on frame 3");
+  expect_error(run(command + " --detector-isolation thread"), "--detector-isolation: 'thread' is not process or none");
 }
 
 TEST(PluginCli, CrashWhileDescribingItselfIsNamedToo) {
@@ -254,9 +272,12 @@ TEST(PluginCli, CrashWhileDescribingItselfIsNamedToo) {
 
 TEST(PluginCli, HangIsStoppedByTheWatchdog) {
   const std::string lib = plugin("hang");
-  expect_error(run("headless --scene '" + scene("default") + "' --frames 30 --detector-timeout 1 --detector-lib '" + lib +
-                   "' --algorithm test-hang"),
+  expect_error(run("headless --scene '" + scene("default") + "' --frames 30 --detector-timeout 1 --detector-isolation none --detector-lib '" +
+                   lib + "' --algorithm test-hang"),
                lib + " (test-hang): did not return within 1 s in nbscope_detect() on frame 2");
+  const auto r = run("headless --scene '" + scene("default") + "' --frames 3 --detector-timeout 1 --detector-lib '" + lib + "' --algorithm test-hang");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("contract api-rule broken: did not return within 1 s in nbscope_detect() on frame 2"), std::string::npos) << r.out;
   expect_error(run("headless --scene '" + scene("default") + "' --detector-timeout -1"),
                "--detector-timeout: the seconds must be from 0 (no limit) to 1e6");
 }

@@ -94,14 +94,31 @@ TEST(UnplantedBugs, A3DMaskThatLeavesOutACellOfTheLayerBelowRelatesNoCellsThatWa
   EXPECT_EQ(located["line"], 11) << "the mask's pseudocode line: " << located.dump();
 }
 
-// A crash and a hang inside a traced call: the one line (exit 2) names the last operation the call
-// traced, so the Stepper can be taken there on a run that stops before it (--frames up to the one before).
-TEST(UnplantedBugs, ACrashOrAHangInATracedCallNamesItsLastOperation) {
+// A crash and a hang inside a traced call take only the plugin's host process down: each is its
+// frame's api-rule violation (exit 1), located after the last operation the call traced, with the
+// trace recorded again up to it (the Stepper goes there). In nbscope's process (--detector-isolation
+// none) the one line (exit 2) names that operation instead.
+TEST(UnplantedBugs, ACrashOrAHangInATracedCallIsLocatedAtItsLastOperation) {
   for (const std::string& variant : {std::string("crash_traced"), std::string("hang_traced")}) {
     SCOPED_TRACE(variant);
-    const auto r = run("headless --scene '" + scene("pile") + "' --frames 2 --detector-timeout 2 --detector-lib '" + bug(variant) + "'");
-    EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+    const std::string dir = testcli::scratch_dir("unplanted_last_" + variant);
     const std::string what = variant == "crash_traced" ? "crashed with SIGSEGV" : "did not return within 2 s";
+    const std::string flags = " --frames 2 --detector-timeout 2 --detector-lib '" + bug(variant) + "'";
+    auto r = run("headless --scene '" + scene("pile") + "'" + flags + " --report '" + dir + "/r.json'");
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_EQ(r.err, "");
+    EXPECT_NE(r.out.find("contract api-rule broken: " + what + " in nbscope_detect() on frame 0, after operation "), std::string::npos)
+        << r.out;
+    const json located = json::parse(testcli::read_text(dir + "/r.json"))["runs"][0]["violations"]["located"];
+    ASSERT_TRUE(located.is_object());
+    EXPECT_EQ(located["contract"], "api-rule");
+    EXPECT_EQ(located["line"], 7) << "the visit of the mask: " << located.dump();
+    const std::string at = std::to_string(located["operation"].get<long long>());
+    EXPECT_NE(r.out.find("located: after operation " + at + " of " + at + ": "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("after operation " + at + " of its trace (visit-cell, pseudocode line 7)"), std::string::npos) << r.out;
+
+    r = run("headless --scene '" + scene("pile") + "'" + flags + " --detector-isolation none");
+    EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
     EXPECT_NE(r.err.find(what + " in nbscope_detect() on frame 0, after operation "), std::string::npos) << r.err;
     EXPECT_NE(r.err.find(" of its trace (visit-cell, pseudocode line 7)\n"), std::string::npos) << r.err;
   }
@@ -110,11 +127,16 @@ TEST(UnplantedBugs, ACrashOrAHangInATracedCallNamesItsLastOperation) {
 // A write past the cells buffer (a loop one element too far) faults on its guard page inside the
 // plugin's call: a located crash, never nbscope's own heap corrupted (glibc's "free(): invalid size").
 TEST(UnplantedBugs, AWritePastTheCellsIsALocatedCrashNotACorruptedHeap) {
-  const auto r = run("headless --scene '" + scene("pile") + "' --frames 2 --detector-lib '" + bug("cells_past") + "'");
-  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
-  EXPECT_NE(r.err.find("crashed with SIGSEGV in nbscope_detect() on frame 0, after operation "), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find(" of its trace (push, pseudocode line 2)\n"), std::string::npos) << r.err;
-  EXPECT_EQ(r.err.find("free()"), std::string::npos) << r.err;
+  for (const std::string isolation : {"process", "none"}) {
+    SCOPED_TRACE(isolation);
+    const auto r = run("headless --scene '" + scene("pile") + "' --frames 2 --detector-isolation " + isolation + " --detector-lib '" +
+                       bug("cells_past") + "'");
+    EXPECT_EQ(r.exit_code, isolation == "none" ? 2 : 1) << r.out << r.err;
+    const std::string& said = isolation == "none" ? r.err : r.out;
+    EXPECT_NE(said.find("crashed with SIGSEGV in nbscope_detect() on frame 0, after operation "), std::string::npos) << said;
+    EXPECT_NE(said.find(" of its trace (push, pseudocode line 2)"), std::string::npos) << said;
+    EXPECT_EQ(r.err.find("free()"), std::string::npos) << r.err;
+  }
 }
 
 }  // namespace

@@ -30,6 +30,7 @@ need() { [ -e "$1" ] || fail "$1 is missing"; }
 stage_tree() {
   install_tree
   need "$prefix/bin/nbscope"
+  need "$prefix/libexec/nbscope/nbscope-plugin-host"
   need "$prefix/share/nbscope/assets/scenes/default.json"
   need "$prefix/share/nbscope/assets/examples/nine.csv"
   need "$prefix/share/nbscope/shaders/circle.vert"
@@ -110,7 +111,7 @@ stage_deb() {
     [[ ", $depends," == *", $package "* || ", $depends," == *", $package,"* ]] || fail "Depends lacks $package: $depends"
   done
   [[ "$depends" == *libosmesa6* || "$depends" == *libegl1* ]] || fail "Depends names no off-screen GL library: $depends"
-  for path in ./usr/bin/nbscope ./usr/share/nbscope/assets/scenes/default.json ./usr/share/nbscope/shaders/circle.vert \
+  for path in ./usr/bin/nbscope ./usr/libexec/nbscope/nbscope-plugin-host ./usr/share/nbscope/assets/scenes/default.json ./usr/share/nbscope/shaders/circle.vert \
               ./usr/include/nbscope/detector.h /cmake/nbscope/nbscopeConfig.cmake; do
     grep -q -- "$path" <<<"$files" || fail "the package lacks $path"
   done
@@ -120,6 +121,11 @@ stage_deb() {
   version="$(root/usr/bin/nbscope --version)" || fail "the packaged nbscope --version failed"
   [[ "$version" == *"data: $work/cwd/root/usr/share/nbscope (installed)"* ]] || fail "the packaged binary reads other data: $version"
   root/usr/bin/nbscope headless --scene default.json --frames 2 --quiet || fail "the packaged binary cannot run default.json"
+  # A plugin runs in the packaged host process (usr/libexec/nbscope), found from the packaged binary.
+  "$cc" -std=c99 -shared -fPIC -I"root/usr/include" "$source/tests/install/plugin_project/brute_plugin.c" -o brute.so ||
+    fail "the plugin does not build against the packaged header"
+  root/usr/bin/nbscope headless --scene default.json --frames 2 --quiet --detector-lib ./brute.so >"$work/deb-plugin.log" 2>&1 ||
+    fail "the packaged binary cannot run a plugin: $(cat "$work/deb-plugin.log")"
   echo "install test (deb): $(basename "$deb"), Depends: $depends"
 }
 

@@ -12,6 +12,7 @@
  *   PLUGIN_DESCRIBE_HANG never says what it is        PLUGIN_RELEASE_CRASH / _HANG   in nbscope_release
  *   PLUGIN_OWN_BYTES_CRASH / _HANG in nbscope_own_bytes  PLUGIN_LONG_FAIL  fails on frame 0 with 1 MB of text
  *   PLUGIN_NULL_ARRAY_NAME declares an array named NULL  PLUGIN_ONCE_PER_FRAME  refuses a frame given twice in a row
+ *   PLUGIN_HEAP_SMASH frees a block twice on frame 1 (the heap it shares with its process corrupted)
  * PLUGIN_NAME is the detector's registry name. */
 #include <nbscope/detector.h>
 #include <stdio.h>
@@ -168,6 +169,13 @@ NBSCOPE_EXPORT int DETECT_SYMBOL(void **state_pointer, const nbscope_frame *f, c
 #endif
 #if defined(PLUGIN_HANG)
   if (f->frame == 2) hang();
+#endif
+#if defined(PLUGIN_HEAP_SMASH)
+  if (f->frame == 1) {
+    void *volatile block = malloc(32);
+    free(block);
+    free(block); /* glibc aborts ("double free detected"); a sanitizer's allocator reports it */
+  }
 #endif
 #if defined(PLUGIN_LONG_FAIL)
   if (f->frame == 0) {
