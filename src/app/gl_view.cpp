@@ -4,6 +4,7 @@
 #include "app/gl_view.hpp"
 
 #include "app/clock.hpp"
+#include "app/headless.hpp"
 #include "check/recorded_lane.hpp"
 #include "app/view_spec.hpp"
 
@@ -339,7 +340,8 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   auto t0 = Clock::now();
   const bool stepper_wants = stepper_panels_open() && stepper_->wants_trace(loop.source().frame(), session.paused);
   // The frames to come record it in their one detection, while it is wanted: a plugin is called once a frame.
-  loop.pipeline().record_traces(state_.overlays.lists || stepper_wants);
+  // A plugin that traces records every frame, as headless does: its contracts are checked along each.
+  loop.pipeline().record_traces(state_.overlays.lists || stepper_wants || traces_every_frame(loop.pipeline().algorithm()));
   const std::shared_ptr<const FrameTrace> trace = state_.overlays.lists || stepper_wants ? loop.pipeline().frame_trace() : nullptr;
   cost_.trace_ms = ms_since(t0);
   update_lists(loop, trace);

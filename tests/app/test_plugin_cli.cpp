@@ -99,6 +99,15 @@ TEST(PluginCli, WindowRunsThePluginAndShowsItsBreachAsAViolation) {
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_EQ(r.err.find("nbscope: error:"), std::string::npos) << r.err;
   EXPECT_TRUE(std::filesystem::is_regular_file(dir + "/crash.png"));
+  // A bug that only the trace shows (a push traced with another row's cell, the lists and pairs right)
+  // is found in the window, which records a tracing plugin's every frame for its contracts.
+  lib = std::string(NBSCOPE_PLUGIN_DIR) + "/test_bug_trace_cell.so";
+  const std::string scene_flags = "--scene '" + scene("pile") + "' --frames 2 --detector-lib '" + lib + "'";
+  r = run("gui " + scene_flags + " --screenshot '" + dir + "/trace_cell.png'", testcli::on_display());
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  r = run("headless " + scene_flags);
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("violations in 3 frames (contract 3)"), std::string::npos) << r.out;
 }
 #endif
 
