@@ -155,6 +155,8 @@ void StepperSession::capture(const SimView& sim) {
   tests_.clear();
   algorithm_ = sim.algorithm;
   frame_ = sim.frame_number();
+  if (const std::vector<std::int64_t>* ids = sim.ids_of(frame_)) ids_ = *ids;
+  else ids_.clear();
   trace_ = sim.trace;
   held_serial_ = trace_ ? trace_->serial : 0;
   if (sim.elements == nullptr) {
@@ -198,6 +200,12 @@ void StepperSession::capture(const SimView& sim) {
   captured_ = true;
   // The next frame keeps the place in the sequence, so stepping frame by frame compares like with like.
   stepper_.seek(pending_step_.value_or(keep_position));
+}
+
+std::string StepperSession::element_text(std::int64_t k) const {
+  const std::int64_t row = shown(k, book_numbering);
+  if (k < 0 || static_cast<std::size_t>(k) >= ids_.size()) return std::to_string(row);
+  return element_label(ids_[static_cast<std::size_t>(k)], row);
 }
 
 bool StepperSession::is_set_after(int array, std::int64_t index, std::size_t position) const {
@@ -311,7 +319,7 @@ std::string describe_event(const StepperSession& session, const TraceEvent& e) {
     case TraceOp::Push: {
       const ArrayWrite& next = e.writes[0];
       const ArrayWrite& head = e.writes[1];
-      return "push k=" + id(e.element) + " onto " + e.label + " " + name(head) + ": " + name(next) + " = " +
+      return "push k=" + session.element_text(e.element) + " onto " + e.label + " " + name(head) + ": " + name(next) + " = " +
              value(next.array, next.new_value) + ", " + name(head) + " = " + value(head.array, head.new_value);
     }
     case TraceOp::Clear: {
@@ -320,9 +328,10 @@ std::string describe_event(const StepperSession& session, const TraceEvent& e) {
              "): " + name(head) + " = -1";
     }
     case TraceOp::VisitCell:
-      return "k=" + id(e.element) + ": visit cell " + cell() + " of the contact mask";
+      return "k=" + session.element_text(e.element) + ": visit cell " + cell() + " of the contact mask";
     case TraceOp::TestPair:
-      return "test k=" + id(e.element) + " against " + id(e.other) + ": " + (e.contact ? "contact" : "no contact");
+      return "test k=" + session.element_text(e.element) + " against " + session.element_text(e.other) + ": " +
+             (e.contact ? "contact" : "no contact");
     default:
       break;
   }
@@ -338,7 +347,7 @@ std::string describe_event(const StepperSession& session, const TraceEvent& e) {
     if (w > 0) out += ", ";
     out += name(wr) + " = " + value(wr.array, wr.new_value) + " (was " + (was_set ? value(wr.array, wr.old_value) : "unset") + ")";
   }
-  if (e.element >= 0) out += " for k=" + id(e.element);
+  if (e.element >= 0) out += " for k=" + session.element_text(e.element);
   return out;
 }
 

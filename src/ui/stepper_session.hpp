@@ -90,6 +90,9 @@ class StepperSession {
   // True for arrays whose values are element ids (list heads and next arrays), shifted by one in
   // book numbering like the indices.
   [[nodiscard]] bool holds_elements(int array) const;
+  // Element `k` of the held frame as the step texts name it: a dump's atom by its id with the row
+  // beside it where they differ ("923 (row 922)"), else its row (shifted in book numbering).
+  [[nodiscard]] std::string element_text(std::int64_t k) const;
 
   // ---- a violation's pair to find (the Violations panel, headless --stop-at-violation) ----
   // What the stepper is asked to find: pair (i, j) of frame `frame` and the check that flagged it.
@@ -158,6 +161,7 @@ class StepperSession {
   bool capture_requested_ = false;           // capture() asked while no trace was made: take the next
   std::string algorithm_;
   std::int64_t frame_ = -1;
+  std::vector<std::int64_t> ids_;  // the held frame's atom ids (a dump's), else empty
   std::vector<bool> element_valued_;
   std::vector<std::vector<std::uint32_t>> first_write_;  // per array and entry: first writing event (+1), 0 = never
   std::vector<std::pair<std::uint64_t, std::size_t>> cell_pushes_;  // (cell key, event), sorted

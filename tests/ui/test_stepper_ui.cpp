@@ -97,6 +97,24 @@ TEST(StepperSession, ElementEntriesNotWrittenYetShowAsUnset) {
 
 // Sort's mapping: a first write says "was unset" in the Stepper's line as in the Arrays panel, and
 // the permutation `order` is a position, not a next array.
+// A dump's frame: the step texts name each element by its atom id with the row beside it (issue 37:
+// the Stepper said k=8 where the Violations panel said atom 9), the arrays' entries still by row.
+TEST(StepperSession, NamesADumpsElementsByAtomIdWithTheRowBeside) {
+  BookFrame f;
+  const std::vector<std::int64_t> ids{101, 102, 103, 104, 105, 106, 107, 108, 109};
+  const std::int64_t shown = f.sim.frame_number();
+  f.sim.element_ids = [&ids, shown](std::int64_t frame) { return frame == shown ? &ids : nullptr; };
+  StepperSession s;
+  s.capture(f.traced());
+  ASSERT_TRUE(s.has_capture()) << s.message();
+  s.stepper().seek(5);
+  EXPECT_EQ(describe_event(s, *s.stepper().current()), "push k=104 (row 3) onto cell list C[4][6]: E[3] = 1, C[4][6] = 3");
+  s.book_numbering = true;
+  EXPECT_EQ(describe_event(s, *s.stepper().current()), "push k=104 (row 4) onto cell list C[5][7]: E[4] = 2, C[5][7] = 4");
+  s.stepper().seek(20);
+  EXPECT_EQ(describe_event(s, *s.stepper().current()), "test k=102 (row 2) against 101 (row 1): contact");
+}
+
 TEST(StepperSession, SortWordsFirstWritesAsUnsetAndOrderAsAPosition) {
   BookFrame f;
   f.sim.algorithm = "sort";
