@@ -26,8 +26,9 @@
  * plugin runs in nbscope's process) it ends nbscope with one line naming the library and the call. A
  * breach of the rules below in a frame (a pair (k, k), out of range or given twice, a trace call
  * naming what does not exist, a cell not written) is that frame's violation (docs/diagnosis.md); a
- * list that closes on itself ends the call there (nbscope returns from a trace callback straight to
- * its own caller: memory the plugin allocated in that call is lost). Texts
+ * trace call that breaks a rule, or a list that closes on itself, ends the call there (nbscope returns
+ * from the trace callback straight to its own caller: memory the plugin allocated in that call is
+ * lost). Texts
  * (fail() messages, names, labels, summary, pseudocode) are kept to their first 300 bytes.
  */
 #ifndef NBSCOPE_DETECTOR_H

@@ -5,7 +5,8 @@
 // updates the shadow. Every callback checks what it is told and never throws.
 //
 // The same table serves the walk check of an untraced checked frame (PluginCall::walks, log null):
-// every call is still validated, visits and tests feed the check, and nothing is recorded.
+// every call is still validated, visits and tests feed the check, and nothing is recorded. A call
+// that breaks a rule ends the plugin's call there (end_at_breach), as a list closed on itself does.
 #include <cassert>
 #include <mutex>
 #include <set>
@@ -144,6 +145,13 @@ bool walk_repeats(PluginCall& call, std::int32_t k, std::int32_t other) noexcept
   return true;
 }
 
+// Ends the plugin's call at a trace call that broke a rule (the breach kept), as a cycle does: what the
+// plugin does next runs on what it got wrong (an element out of range, an index past an array), most
+// often into a crash that would hide the first bug. No object of the callback is alive here.
+void end_at_breach(PluginCall& call) noexcept {
+  if (call.escape != nullptr && !call.breach.empty() && !call.exception) call.stop_call();
+}
+
 // Runs `record` unless the call already stopped, keeping any exception it throws.
 template <class F>
 void guarded(PluginCall& call, F&& record) {
@@ -181,11 +189,13 @@ static int nbscope_plugin_declare_array(void* ctx, const char* name, std::int32_
   if (name == nullptr || *name == '\0') {  // the Arrays panel and dump name arrays by it
     call.breach_with(std::string("trace declare_array: array ") + number(static_cast<std::int64_t>(call.arrays.size())) +
                      "'s name is " + (name == nullptr ? "NULL" : "empty") + " (name it as the book does: heads, next, ...)");
+    end_at_breach(call);
     return -1;
   }
   if (rank < 1 || rank > 3 || shape == nullptr) {
     call.breach_with("trace declare_array: rank " + number(rank) + (shape == nullptr ? " with no shape" : "") +
                      " (from 1 to 3, with a shape)");
+    end_at_breach(call);
     return -1;
   }
   std::int64_t size = 1;
@@ -193,12 +203,14 @@ static int nbscope_plugin_declare_array(void* ctx, const char* name, std::int32_
     if (shape[a] < 0 || shape[a] > kMaxDeclaredEntries || size * shape[a] > kMaxDeclaredEntries) {
       call.breach_with("trace declare_array: shape entry " + number(a) + " is " + number(shape[a]) +
                        ", or the array is over " + number(kMaxDeclaredEntries) + " entries");
+      end_at_breach(call);
       return -1;
     }
     size *= shape[a];
   }
   if (size > 0 && data == nullptr) {
     call.breach_with("trace declare_array: data is NULL for " + number(size) + " entries");
+    end_at_breach(call);
     return -1;
   }
   const auto id = static_cast<int>(call.arrays.size());
@@ -220,7 +232,8 @@ static int nbscope_plugin_declare_array(void* ctx, const char* name, std::int32_
 
 static void nbscope_plugin_phase(void* ctx, std::int32_t line, const char* label, std::int32_t index) {
   PluginCall& call = call_of(ctx);
-  if (call.stopped() || !line_ok(call, "phase", line)) return;
+  if (call.stopped()) return;
+  if (!line_ok(call, "phase", line)) return end_at_breach(call);
   guarded(call, [&] { call.log->phase(static_cast<std::uint8_t>(line), intern_plugin_label(label), index); });
   call.advance(TraceOp::Phase, line);
 }
@@ -228,10 +241,11 @@ static void nbscope_plugin_phase(void* ctx, std::int32_t line, const char* label
 static void nbscope_plugin_push(void* ctx, std::int32_t line, const char* kind, std::int32_t heads, std::int64_t list,
                                 std::int32_t next, std::int32_t k, std::int32_t ix, std::int32_t iy, std::int32_t iz) {
   PluginCall& call = call_of(ctx);
-  if (call.stopped() || !line_ok(call, "push", line) || !array_ok(call, "push", heads) || !array_ok(call, "push", next) ||
+  if (call.stopped()) return;
+  if (!line_ok(call, "push", line) || !array_ok(call, "push", heads) || !array_ok(call, "push", next) ||
       !entry_ok(call, "push", "list", heads, list) || !element_ok(call, "push", k, false) ||
       !entry_ok(call, "push", "element", next, k))
-    return;
+    return end_at_breach(call);
   guarded(call, [&] {
     const auto [old_next, new_next] = take_write(call, next, k);
     const auto [old_head, new_head] = take_write(call, heads, list);
@@ -244,9 +258,9 @@ static void nbscope_plugin_push(void* ctx, std::int32_t line, const char* kind, 
 
 static void nbscope_plugin_clear(void* ctx, std::int32_t line, const char* kind, std::int32_t heads, std::int64_t list) {
   PluginCall& call = call_of(ctx);
-  if (call.stopped() || !line_ok(call, "clear", line) || !array_ok(call, "clear", heads) ||
-      !entry_ok(call, "clear", "list", heads, list))
-    return;
+  if (call.stopped()) return;
+  if (!line_ok(call, "clear", line) || !array_ok(call, "clear", heads) || !entry_ok(call, "clear", "list", heads, list))
+    return end_at_breach(call);
   guarded(call, [&] {
     const auto [old_head, new_head] = take_write(call, heads, list);
     call.log->clear_written(static_cast<std::uint8_t>(line), intern_plugin_label(kind), heads, list, old_head, new_head);
@@ -258,7 +272,8 @@ static void nbscope_plugin_clear(void* ctx, std::int32_t line, const char* kind,
 static void nbscope_plugin_visit_cell(void* ctx, std::int32_t line, std::int32_t k, std::int32_t ix, std::int32_t iy,
                                       std::int32_t iz) {
   PluginCall& call = call_of(ctx);
-  if (call.stopped() || !line_ok(call, "visit_cell", line) || !element_ok(call, "visit_cell", k, false)) return;
+  if (call.stopped()) return;
+  if (!line_ok(call, "visit_cell", line) || !element_ok(call, "visit_cell", k, false)) return end_at_breach(call);
   call.walks.visitor = k;
   call.walks.visited = CellIndex{ix, iy};
   ++call.lists.walk;
@@ -270,9 +285,9 @@ static void nbscope_plugin_visit_cell(void* ctx, std::int32_t line, std::int32_t
 static void nbscope_plugin_test_pair(void* ctx, std::int32_t line, std::int32_t k, std::int32_t other,
                                      std::int32_t contact) {
   PluginCall& call = call_of(ctx);
-  if (call.stopped() || !line_ok(call, "test_pair", line) || !element_ok(call, "test_pair", k, false) ||
-      !element_ok(call, "test_pair", other, false))
-    return;
+  if (call.stopped()) return;
+  if (!line_ok(call, "test_pair", line) || !element_ok(call, "test_pair", k, false) || !element_ok(call, "test_pair", other, false))
+    return end_at_breach(call);
   call.check_walk(k, other);
   guarded(call, [&] { call.log->test_pair(static_cast<std::uint8_t>(line), k, other, contact != 0); });
   call.advance(TraceOp::TestPair, line);
@@ -282,9 +297,10 @@ static void nbscope_plugin_test_pair(void* ctx, std::int32_t line, std::int32_t 
 static void nbscope_plugin_set(void* ctx, std::int32_t line, const char* label, std::int32_t array, std::int64_t index,
                                std::int32_t k) {
   PluginCall& call = call_of(ctx);
-  if (call.stopped() || !line_ok(call, "set", line) || !array_ok(call, "set", array) ||
-      !entry_ok(call, "set", "index", array, index) || !element_ok(call, "set", k, true))
-    return;
+  if (call.stopped()) return;
+  if (!line_ok(call, "set", line) || !array_ok(call, "set", array) || !entry_ok(call, "set", "index", array, index) ||
+      !element_ok(call, "set", k, true))
+    return end_at_breach(call);
   guarded(call, [&] {
     const auto [old_value, new_value] = take_write(call, array, index);
     call.log->set(static_cast<std::uint8_t>(line), intern_plugin_label(label), array, index, old_value, new_value, k);

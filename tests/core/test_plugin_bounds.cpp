@@ -188,6 +188,31 @@ TEST(PluginBounds, ARunawayCallIsStoppedAtTheOperationLimit) {
   EXPECT_EQ(log.events().size(), 1001u);
 }
 
+// A trace call that breaks a rule ends the call there: the plugin's next step (here a write past its
+// array with the index it just traced wrongly, a crash in the mutants that did so) never runs.
+TEST(PluginBounds, ATraceCallThatBreaksARuleEndsTheCall) {
+  bool went_on = false;
+  g_body = [&went_on](void**, const nbscope_frame*, const nbscope_output*, const nbscope_trace* t) {
+    static const std::int32_t heads[2] = {-1, -1};
+    const std::int64_t shape[1] = {2};
+    const int array = t->declare_array(t->ctx, "heads", 1, shape, heads);
+    t->phase(t->ctx, 0, "rows", 0);
+    t->set(t->ctx, 1, "head", array, 2, -1);  // entry 2 of a 2-entry array
+    went_on = true;
+    return 0;
+  };
+  PluginDetector detector(symbols(), info());
+  PairList pairs;
+  TraceLog log;
+  detector.detect_traced(three(), DetectOptions{}, pairs, log);
+  EXPECT_FALSE(went_on);
+  ASSERT_NE(detector.misbehaviour(), nullptr);
+  EXPECT_EQ(detector.misbehaviour()->text, "trace set: index 2 is outside array 0 of 2 entries");
+  EXPECT_TRUE(detector.misbehaviour()->cut);
+  EXPECT_EQ(detector.misbehaviour()->operations, 1u) << "after the phase, where the call ended";
+  EXPECT_EQ(log.events().size(), 1u);
+}
+
 // The cells a plugin writes end at a guard page: one past the end faults (where the crash report
 // names the call), never the heap behind them.
 TEST(PluginBounds, TheCellsBufferEndsAtAGuardPage) {
