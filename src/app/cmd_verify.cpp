@@ -2,7 +2,7 @@
 // (--pairs), or their heads and next arrays against the book (--arrays). Exit 0 right, 1 wrong, 2 bad input.
 //
 // Index: flags | --pairs (summary, then every wrong pair with both cells and distance - radii) |
-// --arrays (the first problem in the book's terms, more, the count) | run_verify.
+// --arrays (the first broken contract and its problem in the book's terms, more, the count) | run_verify.
 #include <cmath>
 #include <algorithm>
 #include <cstdio>
@@ -171,11 +171,20 @@ int report_arrays(const VerifyArraysInputs& in, const VerifyArraysRun& run) {
     std::fflush(stdout);
     return 0;
   }
-  const verify::Problem& first = v.problems.front();
-  print_line("nbscope verify: " + in.arrays_path + ": " + first.where + ": " + first.text);
-  for (std::size_t i = 1; i < v.problems.size() && i <= kProblemsShown; ++i)
+  // The lead: the first problem that breaks a contract, named by it as headless names a frame's
+  // diagnosis; the first problem when none does (an order, an entry the file leaves out).
+  const std::size_t lead = verify::first_contract_problem(v).value_or(0);
+  const verify::Problem& first = v.problems[lead];
+  const std::string contract = first.contract ? std::string("contract ") + contract_name(*first.contract) + " broken: " : "";
+  print_line("nbscope verify: " + in.arrays_path + ": " + contract + first.where + ": " + first.text);
+  // The others in the order found, the lead left out.
+  std::size_t listed = 0;
+  for (std::size_t i = 0; i < v.problems.size() && listed < kProblemsShown; ++i) {
+    if (i == lead) continue;
     print_line("  " + v.problems[i].where + ": " + v.problems[i].text);
-  const std::int64_t shown = static_cast<std::int64_t>(std::min(v.problems.size(), kProblemsShown + 1));
+    ++listed;
+  }
+  const auto shown = static_cast<std::int64_t>(listed + 1);
   if (v.problem_count > shown) print_line("  ... and " + std::to_string(v.problem_count - shown) + " more");
   // The count by kind, in the order of ProblemKind.
   std::int64_t by_kind[8] = {};

@@ -93,6 +93,11 @@ class Checker {
     ++out_.problem_count;
     if (out_.problems.size() < kMaxKeptProblems) out_.problems.push_back(std::move(p));
   }
+  // A problem of the lists' content, found walking `f`: it breaks the contract its kind maps to there.
+  void add(Problem p, const ListFamily& f) {
+    p.contract = contract_broken_by(p.kind, f);
+    add(std::move(p));
+  }
   [[nodiscard]] std::string el(ElementId k) const { return std::to_string(k + user_.base); }
   [[nodiscard]] std::string value(std::int64_t v) const { return file_index(v, user_.base); }
   [[nodiscard]] bool in_range(std::int64_t v) const { return v >= 0 && v < n_; }
@@ -217,21 +222,21 @@ class Checker {
       const auto from_text = [&] { return prev == -1 ? head() : pre + f.next_name + "[" + el(prev) + "]"; };
       const auto where_text = [&] { return prev == -1 ? list_where(f, l) : next_path(f, prev); };
       if (!in_range(k)) {
-        add({ProblemKind::OutOfRange, from_text() + " = " + value(k) + ", but " + range_text(), where_text(), {}, {}, fi, li});
+        add({ProblemKind::OutOfRange, from_text() + " = " + value(k) + ", but " + range_text(), where_text(), {}, {}, fi, li}, f);
         walked.cut = true;
         break;
       }
       const auto i = static_cast<std::size_t>(k);
       if (owner_[i] == li) {
         add({ProblemKind::Cycle, pre + path_text(f, l, chain, k) + ": a cycle (" + f.next_name + "[" + el(prev) + "] = " +
-             el(k) + " leads back)", where_text(), {k}, std::pair{prev, k}, fi, li});
+             el(k) + " leads back)", where_text(), {k}, std::pair{prev, k}, fi, li}, f);
         walked.cut = true;
         break;
       }
       if (owner_[i] != -1) {
         const UserList& other = f.lists[static_cast<std::size_t>(owner_[i])];
         add({ProblemKind::TwoLists, from_text() + " = " + el(k) + ", but element " + el(k) + " is already on " +
-             slot_name(f, other.slot, user_.base) + "'s list (an element is on one list only)", where_text(), {k}, std::pair{prev, k}, fi, li});
+             slot_name(f, other.slot, user_.base) + "'s list (an element is on one list only)", where_text(), {k}, std::pair{prev, k}, fi, li}, f);
         walked.cut = true;
         break;
       }
@@ -245,14 +250,14 @@ class Checker {
         } else {
           text += " and element " + el(prev) + " in " + place(prev, f, l.cell);
         }
-        add({ProblemKind::WrongList, text, where_text(), {k}, std::pair{prev, k}, fi, li});
+        add({ProblemKind::WrongList, text, where_text(), {k}, std::pair{prev, k}, fi, li}, f);
       }
       if (prev != -1 && ordered && (f.ascending ? k < prev : k > prev)) {
         ordered = false;
         if (exact_) {
           add({ProblemKind::WrongOrder, head() + " -> ... -> " + el(prev) + " -> " + el(k) + ": " + el(k) + " follows " + el(prev) +
                ", but in the book's order ids " + (f.ascending ? "rise" : "fall") + " along " + order_reason(f),
-               where_text(), {k}, std::pair{prev, k}, fi, li});
+               where_text(), {k}, std::pair{prev, k}, fi, li}, f);
         } else {
           ++out_.other_order_lists;
         }
@@ -260,7 +265,7 @@ class Checker {
       const std::int32_t nk = next_of(f, k);
       if (nk == kUnset) {
         add({ProblemKind::NotGiven, pre + path_text(f, l, chain, kUnset) + ", but " + f.next_name + "[" +
-             el(k) + "] is not given in " + f.next_path, f.next_path, {k}, {}, fi, li});
+             el(k) + "] is not given in " + f.next_path, f.next_path, {k}, {}, fi, li}, f);
         walked.cut = true;
         break;
       }
@@ -321,7 +326,7 @@ class Checker {
         const UserList& l = f.lists[static_cast<std::size_t>(it->second)];
         text += ": " + slot_name(f, l.slot, user_.base) + " misses it";
       }
-      add({ProblemKind::NotListed, text, f.next_path, {k}, {}, fi, it == list_of_cell.end() ? -1 : it->second});
+      add({ProblemKind::NotListed, text, f.next_path, {k}, {}, fi, it == list_of_cell.end() ? -1 : it->second}, f);
     }
     for (auto& [li, ids] : cut_off) report_cut_off(f, fi, li, pre, std::move(ids));
   }
@@ -340,7 +345,7 @@ class Checker {
     const UserList& l = f.lists[static_cast<std::size_t>(li)];
     const std::string count = n == 1 ? "1 element" : std::to_string(n) + " elements";
     add({ProblemKind::NotListed, pre + slot_name(f, l.slot, user_.base) + ": " + count + " after the cut, " + names +
-         (n == 1 ? ", is" : ", are") + " on no list", f.next_path, std::move(ids), {}, fi, li});
+         (n == 1 ? ", is" : ", are") + " on no list", f.next_path, std::move(ids), {}, fi, li}, f);
   }
 
   // The elements whose cell matches `scope` on every axis it fixes: all, or one bucket of an

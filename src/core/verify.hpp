@@ -4,7 +4,8 @@
 // never followed — and every element is held to one list, the list of its own cell.
 //
 // Index: UserList, ListFamily, SortArrays, UserArrays (what was given) | ProblemKind, Problem,
-// WalkedList, ArraysVerdict (what was found) | verify_arrays | names in the book's terms.
+// WalkedList, ArraysVerdict (what was found) | verify_arrays | the contract a problem breaks |
+// names in the book's terms.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "core/array_schema.hpp"
+#include "core/contracts.hpp"
 #include "core/elements.hpp"
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
@@ -103,6 +105,9 @@ struct Problem {
   std::optional<std::pair<ElementId, ElementId>> link;
   int family = -1;                        // index into UserArrays::families, or -1 (sort)
   int list = -1;                          // index into that family's lists, or -1
+  // The contract of docs/diagnosis.md the lists break here (contract_broken_by); none for a problem
+  // of the file's form, of the order, or of sort's arrays.
+  std::optional<Contract> contract{};
 };
 
 // One list as its links were followed, for drawing: the elements reached, head first.
@@ -131,6 +136,19 @@ inline constexpr double kBoundaryTolerance = 1e-9;
 // rounding of a cell boundary may be on either side's list), sort's permutation and keys; with
 // `exact`, also the book's order in every list. O(N + heads + entries given).
 ArraysVerdict verify_arrays(const Elements& elements, const Grid& grid, const UserArrays& user, bool exact);
+
+// ---- the contract a problem breaks (docs/verify.md "The first broken contract") ----
+
+// The contract broken by a problem of `kind` found walking `family`'s lists: list-cell (on the list
+// of another cell or row), cycle, list-link (a head or link naming no element), first-level-once
+// (a first-level family: on no list, or on two) or cell-list (a family of a row or layer: on no list),
+// list-cell (on two lists of a row or layer: one is not its cell's). None for order and not given.
+// The final arrays hold no operation, so the rules of clears, masks, walks and tests never apply.
+[[nodiscard]] std::optional<Contract> contract_broken_by(ProblemKind kind, const ListFamily& family);
+
+// The index into `verdict.problems` of the first problem that breaks a contract, in the order found
+// (the first-level lists before each row's, as the book builds them; list by list from its head).
+[[nodiscard]] std::optional<std::size_t> first_contract_problem(const ArraysVerdict& verdict);
 
 // ---- pairs (`nbscope verify --pairs`) ----
 

@@ -1,7 +1,8 @@
 // `nbscope verify` through the binary: exit 0 for nbscope's own dumps, 1 with the planted entry
 // named for a user's wrong pairs or arrays, 2 with the file and the JSON path for bad input.
 //
-// Index: helpers | --pairs | --arrays (right, wrong, base 1, a 1e6-element cycle) | bad input.
+// Index: helpers | --pairs | --arrays (right, wrong, base 1, a 1e6-element cycle) | the first broken
+// contract | bad input.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -164,6 +165,92 @@ TEST(VerifyCli, AMillionElementFileWithACycleIsRefusedAfterOneWalk) {
   EXPECT_NE(r.out.find("$.y_next[0]: y_heads[0] -> 999999 -> 999998 -> 999997 -> ... (999994 more) -> 2 -> 1 -> 0 -> 999999: a cycle"),
             std::string::npos) << r.out.substr(0, 300);
   EXPECT_NE(r.out.find("1 problem in the nbs arrays of 1000000 elements (1 cycle)"), std::string::npos) << r.out.substr(0, 600);
+}
+
+// ---- the first broken contract (docs/verify.md): verify leads with it, as headless does ----
+
+// verify --arrays on a bundled planted-bug file (assets/examples/NAME), its output whole.
+testcli::Result verify_example(const std::string& name) {
+  return run("verify --input " + testpaths::nine_csv() + " --arrays " + std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/" + name);
+}
+
+TEST(VerifyCliContract, TheBundledPlantedBugsLeadWithTheContractTheyBreak) {
+  const std::string dir = std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/";
+  auto r = verify_example("nine_screen_bug.json");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.out, "nbscope verify: " + dir + "nine_screen_bug.json: contract list-cell broken: $.next[5]: E[5] = 3, but element 3 "
+                   "lies in cell (4,6) and element 5 in cell (4,5)\n"
+                   "nbscope verify: 1 problem in the screen arrays of 9 elements (1 wrong list): WRONG\n");
+  r = verify_example("nine_screen_bug_book.json");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.out, "nbscope verify: " + dir + "nine_screen_bug_book.json: contract list-cell broken: $.next[5]: E[6] = 4, but "
+                   "element 4 lies in cell (5,7) and element 6 in cell (5,6)\n"
+                   "nbscope verify: 1 problem in the screen arrays of 9 elements (1 wrong list): WRONG\n");
+  r = verify_example("nine_nbs_bug_base1.json");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.out, "nbscope verify: " + dir + "nine_nbs_bug_base1.json: contract cycle broken: $.y_next[6]: y_heads[7] -> 9 -> 7 -> 9: "
+                   "a cycle (Y[7] = 9 leads back)\n"
+                   "  $.y_next: y_heads[7]: 5 elements after the cut, 1, 2, 3, 4 and 5, are on no list\n"
+                   "nbscope verify: 2 problems in the nbs arrays of 9 elements (1 cycle, 1 dropped): WRONG\n");
+}
+
+// The first line of verify --arrays on `doc`, from its contract on ("contract NAME broken: ...").
+std::string lead_contract(const std::string& test, const json& doc, const std::string& flags = "") {
+  const auto r = verify_arrays(test, doc, flags);
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  const std::string first = r.out.substr(0, r.out.find('\n'));
+  const std::size_t at = first.find("contract ");
+  return at == std::string::npos ? "(no contract) " + first : first.substr(at);
+}
+
+TEST(VerifyCliContract, EachMappedContractLeadsOnArraysThatBreakIt) {
+  json d = nine_dump("screen");  // 0-based Fig. 3.20: C[4][6] -> 3 -> 1 -> 0, C[1][6] -> 8 -> 6 -> 4 -> 2
+  d["next"][6] = 2;               // 4 skipped
+  EXPECT_EQ(lead_contract("verify_contract_first_level", d),
+            "contract first-level-once broken: $.next: element 4 is on no list, but lies in cell (1,6): C[1][6] misses it");
+  d = nine_dump("screen");
+  d["next"][1] = 3;
+  EXPECT_EQ(lead_contract("verify_contract_cycle", d), "contract cycle broken: $.next[1]: C[4][6] -> 3 -> 1 -> 3: a cycle (E[1] = 3 leads back)");
+  d = nine_dump("screen");
+  d["next"][8] = 9;
+  EXPECT_EQ(lead_contract("verify_contract_link", d), "contract list-link broken: $.next[8]: E[8] = 9, but elements are 0..8, and -1 ends a list");
+  d = nine_dump("screen");
+  d["next"][7] = 0;
+  EXPECT_EQ(lead_contract("verify_contract_twice", d),
+            "contract first-level-once broken: $.next[7]: E[7] = 0, but element 0 is already on C[4][6]'s list (an element is on one list only)");
+  d = nine_dump("nbs");  // row 6's x-lists: x_heads[1] -> 2 -> 4 -> 6 -> 8, x_heads[4] -> 0 -> 1 -> 3
+  for (json& row : d["rows"])
+    if (row["iy"] == 6)
+      for (json& p : row["x_next"])
+        if (p[0] == 6) p[1] = -1;  // 8 left out of its cell's x-list
+  EXPECT_EQ(lead_contract("verify_contract_cell_list", d),
+            "contract cell-list broken: $.rows[1].x_next: row 6: element 8 is on no list, but lies in cell (1,6): x_heads[1] misses it");
+}
+
+TEST(VerifyCliContract, AProblemThatBreaksNoContractIsListedAfterTheOneThatDoes) {
+  json d = nine_dump("screen");
+  d["heads"][4][6] = 0;  // C[4][6] -> 0 -> 1 -> 3: not the book's order, found first (--exact)
+  d["next"][0] = 1;
+  d["next"][1] = 3;
+  d["next"][3] = -1;
+  d["heads"][5][5] = -1;  // 7 on no list
+  const auto r = verify_arrays("verify_contract_after_order", d, " --exact");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  const std::string first = r.out.substr(0, r.out.find('\n'));
+  EXPECT_NE(first.find(": contract first-level-once broken: $.next: element 7 is on no list"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\n  $.next[0]: C[4][6] -> ... -> 0 -> 1: 1 follows 0"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("2 problems in the screen arrays of 9 elements (1 dropped, 1 order): WRONG"), std::string::npos) << r.out;
+  // Order alone breaks no contract: the first problem leads, named by no contract.
+  d["heads"][5][5] = 7;
+  EXPECT_EQ(lead_contract("verify_contract_order_only", d, " --exact").rfind("(no contract) ", 0), 0u);
+}
+
+TEST(VerifyCliContract, PairsNameNoContract) {
+  const std::string dir = scratch_dir("verify_contract_pairs");
+  write_text(dir + "/p.csv", "2 4\n");  // apart; the contact 1,2 missing
+  const auto r = run("verify --input " + testpaths::nine_csv() + " --pairs " + dir + "/p.csv --base 1");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.out.find("broken"), std::string::npos) << r.out;
 }
 
 // ---- bad input: exit 2, one line naming the file and the JSON path ----
