@@ -77,8 +77,8 @@ CommandSpec verify_command() {
        "then every missing, extra, duplicated, i == j and out-of-range pair with both elements' cells and distance - radii.",
        "--arrays: your heads and next arrays, in the schema dump writes (\"base\": 1 for 1-based), against the book: every list ends (a "
        "cycle or a bad index is found, never followed), every element on one list, the list of its own cell; --exact also the book's "
-       "order. The first problem in the book's terms (E[7] = 5, but element 5 lies in cell (2,7) ...), then the count. Exit 0 right, 1 "
-       "wrong.",
+       "order. The first problem in the book's terms, led by the contract it breaks (contract list-cell broken: E[7] = 5, but element 5 "
+       "lies in cell (2,7) ...), then the count. Exit 0 right, 1 wrong.",
        "--screenshot draws your lists with the wrong links red, as gui --arrays shows them (its rendering options as below; numbered as "
        "the file counts, so --book-numbering only with --base 1; --step does not apply). 3D arrays are drawn one layer of cells at a "
        "time, as the window draws a 3D frame: --layer K, or auto, the first problem's layer."},
