@@ -78,6 +78,10 @@ HEAP_ABORT = re.compile(r"free\(\): invalid|double free|malloc\(\): |corrupted (
 # plugin_library.cpp's guard (signals_crash.cpp names the signal) and its watchdog.
 CRASH_LINE = re.compile(r"crashed with SIG[A-Z]+")
 HANG_LINE = "did not return within"
+# A crash or hang in nbscope_release, when nbscope closes the plugin's host after the run: the heap the
+# plugin corrupted in a detection gives way there (glibc's words come from the host, passed on). The
+# frames were checked before it: the run's report is its verdict; nbscope itself did not abort.
+RELEASE_LINE = re.compile(r"nbscope: error: .*(crashed with SIG[A-Z]+|did not return within .*) in nbscope_release\(\)")
 
 
 @dataclass
@@ -392,8 +396,12 @@ def classify(code, stderr, stdout, report, tag):
     nbscope's own death is asked first: its messages may follow a plugin's crash line."""
     if code == "timeout":
         return HANG, None
-    if code < 0 or code in (134, 139) or HEAP_ABORT.search(stderr):
+    released = code == 2 and RELEASE_LINE.search(stderr) is not None
+    # glibc's heap words with nbscope's own exit (1, 2) are the plugin's host's, passed on: nbscope lived.
+    if code < 0 or code in (134, 139) or (HEAP_ABORT.search(stderr) and code not in (0, 1, 2)):
         return ABORTED, None
+    if released:  # the run's frames were checked (and located) before the host's release gave way
+        code, stderr = (1, "") if report is not None else (code, stderr)
     if HANG_LINE in stderr:
         return HANG, None
     if CRASH_LINE.search(stderr):
