@@ -24,6 +24,7 @@ const char* contract_name(Contract c) {
     case Contract::CellList: return "cell-list";
     case Contract::MaskInGrid: return "mask-in-grid";
     case Contract::MaskNeighbours: return "mask-neighbours";
+    case Contract::MaskHalf: return "mask-half";
     case Contract::MaskRelates: return "mask-relates";
     case Contract::MaskCell: return "mask-cell";
     case Contract::WalkCell: return "walk-cell";
@@ -51,6 +52,7 @@ const char* contract_rule(Contract c) {
     case Contract::CellList: return "every element goes onto the list of its own cell";
     case Contract::MaskInGrid: return "the contact mask visits cells of the grid only";
     case Contract::MaskNeighbours: return "the contact mask visits only the cells next to the element's own";
+    case Contract::MaskHalf: return "a half mask visits only its own half of the neighbours (the book's: the cells before the element's own)";
     case Contract::MaskRelates: return "for every neighbour offset the mask visits it or its opposite";
     case Contract::MaskCell: return "each element's mask visits every mask cell that exists and holds elements";
     case Contract::WalkCell: return "the walk of a visited cell's list meets only elements of that cell";
@@ -87,9 +89,14 @@ ContractChecker::ContractChecker(const FrameTrace& t, const ContractNames& names
   reported_.reserve(t.pairs.size());
   for (const Pair& p : t.pairs) reported_.push_back(key(p.i, p.j));
   std::sort(reported_.begin(), reported_.end());
+  for (std::int64_t k = n_; k-- > 0;) row_member_[row_key(cells_[static_cast<std::size_t>(k)])] = static_cast<std::int32_t>(k);
   const std::vector<TraceEvent>& ev = t.log.events();
+  std::size_t phase = kNone;
   for (std::size_t at = 0; at < ev.size(); ++at) {
-    if (ev[at].op == TraceOp::Phase) phases_.push_back(at);
+    if (ev[at].op == TraceOp::Phase) phases_.push_back(at), phase = at;
+    if (ev[at].op == TraceOp::VisitCell && phase != kNone &&
+        std::find(visit_lines_.begin(), visit_lines_.end(), ev[phase].line) == visit_lines_.end())
+      visit_lines_.push_back(ev[phase].line);
     if (ev[at].op == TraceOp::Clear && ev[at].write_count > 0) {
       std::vector<std::uint8_t>& lines = clear_lines_[ev[at].writes[0].array];
       if (std::find(lines.begin(), lines.end(), ev[at].line) == lines.end()) lines.push_back(ev[at].line);
@@ -136,8 +143,22 @@ std::optional<std::size_t> ContractChecker::clear_due(int heads, std::size_t pus
   return std::nullopt;
 }
 
+std::size_t ContractChecker::clear_was_due(int heads, std::size_t pushed, std::size_t at) const {
+  const std::vector<TraceEvent>& ev = t_.log.events();
+  std::optional<std::size_t> phase = clear_due(heads, pushed, at);
+  if (!phase) {  // no clear of this array is traced: the phase before the reusing push's own
+    const auto after = std::upper_bound(phases_.begin(), phases_.end(), at);
+    if (after - phases_.begin() >= 2 && *(after - 2) > pushed) phase = *(after - 2);
+  }
+  if (!phase) return at;
+  for (std::size_t e = *phase + 1; e < at && ev[e].op != TraceOp::Phase; ++e)
+    if (ev[e].op == TraceOp::Clear && ev[e].write_count > 0 && ev[e].writes[0].array == heads) return *phase;
+  return *phase + 1;  // the clearing cleared nothing of it: due at its first clear
+}
+
 std::optional<BrokenContract> ContractChecker::run() {
   const std::vector<TraceEvent>& ev = t_.log.events();
+  half_ = half_of_visits();
   for (std::size_t at = 0; at < ev.size(); ++at) {  // on past a break: coverage needs every event
     const TraceEvent& e = ev[at];
     if (e.op != TraceOp::TestPair) end_walk(at);
@@ -151,6 +172,7 @@ std::optional<BrokenContract> ContractChecker::run() {
     }
   }
   if (ev.empty()) return std::nullopt;
+  close_phase(ev.size());
   // The end of the frame: what was never done is located where it was due, and competes with the
   // breaks found in order by its operation.
   end_walk(ev.empty() ? 0 : ev.size() - 1);
@@ -192,11 +214,31 @@ ContractChecker::Model& ContractChecker::model(int heads) {
   return models_.emplace(heads, std::move(m)).first->second;
 }
 
+void ContractChecker::close_phase(std::size_t at) {
+  const std::size_t phase = open_phase_;
+  open_phase_ = kNone;
+  if (phase == kNone || !complete_ || at != phase + 1) return;  // the segment did something
+  const TraceEvent& e = t_.log.events()[phase];
+  // Which lines visit is read off the trace; where no phase visits at all, every row phase must do something.
+  if (!visit_lines_.empty() && std::find(visit_lines_.begin(), visit_lines_.end(), e.line) == visit_lines_.end()) return;
+  const std::int64_t row = dim_ == 3 ? std::int64_t{e.cell[2]} * g_.n[1] + e.cell[1] : e.index;
+  const auto held = row_member_.find(row);
+  if (held == row_member_.end()) return;
+  const std::int32_t k = held->second;
+  subject_ = Pair{k, k};
+  const std::string phase_name = e.label[0] != '\0' ? std::string(e.label) : std::string("its phase");
+  breaks(Contract::RowProcessed, std::min(phase + 1, t_.log.events().size() - 1),
+         row_text(cells_[static_cast<std::size_t>(k)]) + " holds elements (" + id(k) + " in cell " + cell_text(cells_[static_cast<std::size_t>(k)]) +
+             ") but its phase '" + phase_name + "' (operation " + std::to_string(phase + 1) + ") does nothing: no element of it visits a cell");
+}
+
 void ContractChecker::on_phase(std::size_t at, const TraceEvent& e) {
+  close_phase(at);
   std::int64_t row = -1;
   if (dim_ == 3 && e.cell[1] >= 0 && e.cell[2] >= 0) row = std::int64_t{e.cell[2]} * g_.n[1] + e.cell[1];
   else if (dim_ == 2 && e.index >= 0) row = e.index;
   if (row < 0) return;
+  open_phase_ = at;
   if (row_starts_.empty() || row_starts_.back().second != row) row_starts_.emplace_back(at, row);
 }
 
@@ -253,7 +295,11 @@ void ContractChecker::on_push(std::size_t at, const TraceEvent& e) {
                                        ", not " + id(k) + ": the head was not written");
     return;
   }
-  if (nw.new_value != expected) {
+  const Cell keyed{e.cell[0], e.cell[1], e.cell[2]};
+  // The list was built for another cell: the clear that was due before its reuse is missing (traced
+  // or done), whether the push then links to the old head or to -1.
+  const bool reused = expected >= 0 && m.member_cell[static_cast<std::size_t>(expected)] != keyed;
+  if (nw.new_value != expected && !(reused && nw.new_value == -1)) {
     const std::int32_t got = nw.new_value;
     std::string text = "the push of " + id(k) + " onto " + list + " links it to ";
     if (got == k) {
@@ -274,15 +320,16 @@ void ContractChecker::on_push(std::size_t at, const TraceEvent& e) {
     breaks(Contract::ListLink, at, text);
     return;
   }
-  const Cell keyed{e.cell[0], e.cell[1], e.cell[2]};
-  if (expected >= 0 && m.member_cell[static_cast<std::size_t>(expected)] != keyed) {
-    // The list was built for another cell and never cleared: the break is the clear that was due.
-    const std::string text = "the push of " + id(k) + " onto " + list + " for cell " + cell_text(keyed) + " (operation " + std::to_string(at + 1) +
-                             ") links it to " + id(expected) + ", pushed onto that list for cell " +
-                             cell_text(m.member_cell[static_cast<std::size_t>(expected)]) + ": the head was not cleared before the list was reused";
-    const std::optional<std::size_t> due = clear_due(hw.array, m.member_at[static_cast<std::size_t>(expected)], at);
-    if (due) breaks(Contract::ListLink, *due, "this clearing leaves " + list + " set: " + text + ", so it runs on into a stale chain");
-    else breaks(Contract::ListLink, at, text + ", so it runs on into a stale chain");
+  if (reused) {
+    // The list was built for another cell and its clear is not in the trace: the break is the clear that was due.
+    const std::string text = nw.new_value == -1
+        ? "the push of " + id(k) + " onto " + list + " for cell " + cell_text(keyed) + " (operation " + std::to_string(at + 1) + ") finds it empty, but no clear of " +
+              id(expected) + "'s list (cell " + cell_text(m.member_cell[static_cast<std::size_t>(expected)]) + ") was traced"
+        : "the push of " + id(k) + " onto " + list + " for cell " + cell_text(keyed) + " (operation " + std::to_string(at + 1) + ") links it to " +
+              id(expected) + ", pushed onto that list for cell " + cell_text(m.member_cell[static_cast<std::size_t>(expected)]) +
+              ": the head was not cleared before the list was reused, so it runs on into a stale chain";
+    breaks(Contract::ListLink, clear_was_due(hw.array, m.member_at[static_cast<std::size_t>(expected)], at),
+           "this clearing leaves " + list + " set: " + text);
     return;
   }
   m.head[slot] = k;
@@ -331,22 +378,60 @@ void ContractChecker::on_visit(std::size_t at, const TraceEvent& e) {
   }
   const Cell& own = cells_[static_cast<std::size_t>(k)];
   Cell o{0, 0, 0};
-  for (int a = 0; a < dim_; ++a) {
-    std::int32_t d = c[static_cast<std::size_t>(a)] - own[static_cast<std::size_t>(a)];
-    const auto last = static_cast<std::int32_t>(g_.n[a] - 1);
-    if (g_.periodic[a] && last >= 2 && (d == last || d == -last)) d = d > 0 ? -1 : 1;
-    if (d < -1 || d > 1) {
-      breaks(Contract::MaskNeighbours, at, "the mask of " + id(k) + " (cell " + cell_text(own) + ") visits cell " + cell_text(c) +
-                                               ", which is not next to it: the mask reaches too far");
-      return;
-    }
-    o[static_cast<std::size_t>(a)] = d;
+  if (!offset_from(k, c, o)) {
+    breaks(Contract::MaskNeighbours, at, "the mask of " + id(k) + " (cell " + cell_text(own) + ") visits cell " + cell_text(c) +
+                                             ", which is not next to it: the mask reaches too far");
+    return;
+  }
+  Cell mirror{};
+  if (half_ != 0 && lean(o, dim_) == -half_ && !(neighbour(own, Cell{-o[0], -o[1], -o[2]}, mirror) && mirror == c)) {
+    breaks(Contract::MaskHalf, at, "the mask of " + id(k) + " (cell " + cell_text(own) + ") visits cell " + cell_text(c) + ", its neighbour at " +
+                                       offset_text(o) + ", outside the half mask every other visit keeps: the wrong row, layer or column was taken");
+    return;
   }
   const int bit = offset_bit(o, dim_);
   visits_[static_cast<std::size_t>(k)] |= 1u << bit;
   union_ |= 1u << bit;
   last_visit_[static_cast<std::size_t>(k)] = at;
   if (o != Cell{0, 0, 0}) walk_ = Walk{at, k, c, 0};  // own cell: only the elements after k are walked
+}
+
+bool ContractChecker::offset_from(std::int32_t k, const Cell& c, Cell& o) const {
+  const Cell& own = cells_[static_cast<std::size_t>(k)];
+  o = Cell{0, 0, 0};
+  for (int a = 0; a < dim_; ++a) {
+    std::int32_t d = c[static_cast<std::size_t>(a)] - own[static_cast<std::size_t>(a)];
+    const auto last = static_cast<std::int32_t>(g_.n[a] - 1);
+    if (g_.periodic[a] && last >= 2 && (d == last || d == -last)) d = d > 0 ? -1 : 1;
+    if (d < -1 || d > 1) return false;
+    o[static_cast<std::size_t>(a)] = d;
+  }
+  return true;
+}
+
+int ContractChecker::half_of_visits() const {
+  std::int64_t down = 0, up = 0;
+  for (const TraceEvent& e : t_.log.events()) {
+    Cell o{};
+    if (e.op != TraceOp::VisitCell || !in_range(e.element)) continue;
+    if (!offset_from(e.element, Cell{e.cell[0], e.cell[1], dim_ == 3 ? e.cell[2] : -1}, o)) continue;
+    const int l = lean(o, dim_);
+    if (l < 0) ++down;
+    else if (l > 0) ++up;
+  }
+  // A few visits the other way are a bug's; as many both ways is a full mask.
+  if (down > 0 && up * 8 <= down) return -1;
+  if (up > 0 && down * 8 <= up) return 1;
+  return 0;
+}
+
+std::uint32_t ContractChecker::mask_bits() const {
+  if (half_ == 0) return union_;
+  const int offsets = dim_ == 3 ? 27 : 9;
+  std::uint32_t bits = union_ & (1u << offset_bit(Cell{0, 0, 0}, dim_));
+  for (int bit = 0; bit < offsets; ++bit)
+    if (lean(offset_of_bit(bit, dim_), dim_) == half_) bits |= 1u << bit;
+  return bits;
 }
 
 void ContractChecker::on_test(std::size_t at, const TraceEvent& e) {

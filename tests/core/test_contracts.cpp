@@ -268,5 +268,73 @@ TEST_F(PlantedBreak, AWalkThatStopsShortIsAWalkComplete) {
   EXPECT_EQ(b.event, visit + 1) << "where the walk stopped: the operation after its visit";
 }
 
+
+TEST_F(PlantedBreak, AVisitOfTheMirrorOffsetIsAMaskHalfAtTheVisit) {
+  // One visit of the row below moved to the row above (in the grid): the book's half mask never
+  // looks up, so the visit itself is the break, whatever the offsets the rest of the trace visits.
+  std::size_t visit = 0;
+  std::int32_t up = -1;
+  for (std::size_t at = 0; at < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    const std::int32_t own = t.grid.cell(t.elements.y[e.element], 1);
+    if (e.op == TraceOp::VisitCell && e.cell[1] == own - 1 && own + 1 < t.grid.n[1]) {
+      visit = at;
+      up = own + 1;
+      break;
+    }
+  }
+  ASSERT_GE(up, 0);
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (at == visit) e.cell[1] = up;
+    return true;
+  }));
+  EXPECT_EQ(b.contract, Contract::MaskHalf) << b.text;
+  EXPECT_EQ(b.event, visit) << b.text;
+}
+
+TEST_F(PlantedBreak, ARowWhoseContactsPhaseDoesNothingIsARowProcessedWhereItsFirstVisitWasDue) {
+  // Every visit and test of one row's "contacts of row" phase dropped: its lists are built and cleared.
+  std::size_t contacts = 0;
+  for (std::size_t at = 0; at + 1 < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    if (e.op == TraceOp::Phase && e.index > 2 && t.log.events()[at + 1].op == TraceOp::VisitCell) {
+      contacts = at;
+      break;
+    }
+  }
+  ASSERT_GT(contacts, 0u);
+  bool in_contacts = false;
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (e.op == TraceOp::Phase) in_contacts = at == contacts;
+    return !in_contacts || e.op == TraceOp::Phase;
+  }));
+  EXPECT_EQ(b.contract, Contract::RowProcessed) << b.text;
+  EXPECT_EQ(b.event, contacts + 1) << b.text;
+}
+
+TEST_F(PlantedBreak, ARowsClearsLeftOutAreAListLinkWhereTheFirstClearWasDue) {
+  // Every clear of one row's clearing phase dropped (the heads are still reset, untraced): the next
+  // push onto one of those lists for another cell finds it empty, though the trace never emptied it.
+  const int heads = t.log.array_id("B");
+  ASSERT_GE(heads, 0);
+  std::size_t clearing = 0;
+  for (std::size_t at = 0; at + 1 < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    const TraceEvent& next = t.log.events()[at + 1];
+    if (e.op == TraceOp::Phase && e.index > 2 && next.op == TraceOp::Clear && next.writes[0].array == heads) {
+      clearing = at;
+      break;
+    }
+  }
+  ASSERT_GT(clearing, 0u);
+  bool in_clearing = false;
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (e.op == TraceOp::Phase) in_clearing = at == clearing;
+    return !(in_clearing && e.op == TraceOp::Clear);
+  }));
+  EXPECT_EQ(b.contract, Contract::ListLink) << b.text;
+  EXPECT_EQ(b.event, clearing + 1) << b.text;
+}
+
 }  // namespace
 }  // namespace nbscope
