@@ -191,7 +191,16 @@ class ContractChecker {
   int half_ = 0;                                                // half_of_visits(), fixed before the events
   std::vector<std::uint8_t> visit_lines_;                      // lines of the phases whose segments visit cells
   std::unordered_map<std::int64_t, std::int32_t> row_member_;  // per row that holds elements: one of them
-  std::size_t open_phase_ = kNone;                             // the current row phase, while its segment is empty
+  std::size_t open_phase_ = kNone;
+  std::unordered_map<std::size_t, Cell> phase_cells_;          // 3D: per phase, the row (-1,iy,iz) or layer (-1,-1,iz) it works on
+  // 3D plugins' phases name only an index: infers each phase's row or layer (phase_cells_).
+  void infer_phase_cells();
+  Cell phase_cell(std::size_t at) const {
+    const auto found = phase_cells_.find(at);
+    if (found != phase_cells_.end()) return found->second;
+    const TraceEvent& e = t_.log.events()[at];
+    return Cell{e.cell[0], e.cell[1], e.cell[2]};
+  }                             // the current row phase, while its segment is empty
   Pair subject_{-1, -1};  // the elements the event being checked names (BrokenContract::subject)
   std::optional<BrokenContract> first_;
 };

@@ -143,6 +143,40 @@ std::optional<std::size_t> ContractChecker::clear_due(int heads, std::size_t pus
   return std::nullopt;
 }
 
+void ContractChecker::infer_phase_cells() {
+  const std::vector<TraceEvent>& ev = t_.log.events();
+  // A plugin's phase names only its index: a row's (iy) or a layer's (iz). Which, and the row's layer,
+  // is read off the first operation of its segment; phases of the same line are of the same kind.
+  std::unordered_map<std::uint8_t, bool> line_is_row;
+  std::unordered_map<std::size_t, std::int32_t> row_layer;
+  for (std::size_t i = 0; i < phases_.size(); ++i) {
+    const TraceEvent& e = ev[phases_[i]];
+    if (e.cell[0] >= 0 || e.cell[1] >= 0 || e.cell[2] >= 0 || e.index < 0) continue;
+    const std::size_t q = phases_[i] + 1;
+    if (q >= ev.size() || ev[q].op == TraceOp::Phase) continue;
+    const TraceEvent& first = ev[q];
+    const bool keyed_row = (first.op == TraceOp::VisitCell || (first.op == TraceOp::Push && first.cell[0] >= 0)) && first.cell[1] == e.index;
+    if (keyed_row) {
+      line_is_row[e.line] = true;
+      row_layer[phases_[i]] = first.cell[2];
+    } else if (first.op == TraceOp::Push && first.cell[0] < 0 && first.cell[1] >= 0 && first.cell[2] == e.index) {
+      line_is_row.emplace(e.line, false);
+    }
+  }
+  std::int32_t layer = -1;
+  for (const std::size_t p : phases_) {
+    const TraceEvent& e = ev[p];
+    Cell c{e.cell[0], e.cell[1], e.cell[2]};
+    const auto kind = line_is_row.find(e.line);
+    if (c == Cell{-1, -1, -1} && e.index >= 0 && kind != line_is_row.end()) {
+      const auto known = row_layer.find(p);
+      if (!kind->second) layer = e.index;
+      c = kind->second ? Cell{-1, e.index, known != row_layer.end() ? known->second : layer} : Cell{-1, -1, e.index};
+    }
+    phase_cells_.emplace(p, c);
+  }
+}
+
 std::size_t ContractChecker::clear_was_due(int heads, std::size_t pushed, std::size_t at) const {
   const std::vector<TraceEvent>& ev = t_.log.events();
   std::optional<std::size_t> phase = clear_due(heads, pushed, at);
@@ -159,6 +193,7 @@ std::size_t ContractChecker::clear_was_due(int heads, std::size_t pushed, std::s
 std::optional<BrokenContract> ContractChecker::run() {
   const std::vector<TraceEvent>& ev = t_.log.events();
   half_ = half_of_visits();
+  if (dim_ == 3) infer_phase_cells();
   for (std::size_t at = 0; at < ev.size(); ++at) {  // on past a break: coverage needs every event
     const TraceEvent& e = ev[at];
     if (e.op != TraceOp::TestPair) end_walk(at);
@@ -221,7 +256,9 @@ void ContractChecker::close_phase(std::size_t at) {
   const TraceEvent& e = t_.log.events()[phase];
   // Which lines visit is read off the trace; where no phase visits at all, every row phase must do something.
   if (!visit_lines_.empty() && std::find(visit_lines_.begin(), visit_lines_.end(), e.line) == visit_lines_.end()) return;
-  const std::int64_t row = dim_ == 3 ? std::int64_t{e.cell[2]} * g_.n[1] + e.cell[1] : e.index;
+  const Cell pc = phase_cell(phase);
+  if (dim_ == 3 && (pc[1] < 0 || pc[2] < 0)) return;
+  const std::int64_t row = dim_ == 3 ? std::int64_t{pc[2]} * g_.n[1] + pc[1] : e.index;
   const auto held = row_member_.find(row);
   if (held == row_member_.end()) return;
   const std::int32_t k = held->second;
@@ -235,7 +272,8 @@ void ContractChecker::close_phase(std::size_t at) {
 void ContractChecker::on_phase(std::size_t at, const TraceEvent& e) {
   close_phase(at);
   std::int64_t row = -1;
-  if (dim_ == 3 && e.cell[1] >= 0 && e.cell[2] >= 0) row = std::int64_t{e.cell[2]} * g_.n[1] + e.cell[1];
+  const Cell pc = phase_cell(at);
+  if (dim_ == 3 && pc[1] >= 0 && pc[2] >= 0) row = std::int64_t{pc[2]} * g_.n[1] + pc[1];
   else if (dim_ == 2 && e.index >= 0) row = e.index;
   if (row < 0) return;
   open_phase_ = at;

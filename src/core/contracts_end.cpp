@@ -31,17 +31,17 @@ std::size_t ContractChecker::row_due_3d(std::int64_t row) const {
   std::size_t last_of_layer = kNone;  // the layer's last phase (a row's, or the layer's own first)
   bool row_phase_seen = false;
   for (const std::size_t p : phases_) {
-    const TraceEvent& e = ev[p];
-    if (e.cell[2] != layer) continue;
-    const bool row_phase = e.cell[1] >= 0;
+    const Cell e = phase_cell(p);
+    if (e[2] != layer) continue;
+    const bool row_phase = e[1] >= 0;
     if (row_phase || !row_phase_seen) last_of_layer = p;
     row_phase_seen = row_phase_seen || row_phase;
   }
   const std::size_t first_push = cell_pushes_.empty() ? 0 : cell_pushes_.front().at;
   for (const std::size_t p : phases_) {
-    const TraceEvent& e = ev[p];
-    if (last_of_layer != kNone ? p <= last_of_layer || (e.cell[2] == layer && e.cell[1] >= 0)
-                               : p <= first_push || (e.cell[2] >= 0 && e.cell[2] < layer))
+    const Cell e = phase_cell(p);
+    if (last_of_layer != kNone ? p <= last_of_layer || (e[2] == layer && e[1] >= 0)
+                               : p <= first_push || (e[2] >= 0 && e[2] < layer))
       continue;
     return p;
   }
