@@ -149,6 +149,9 @@ void ContractChecker::infer_phase_cells() {
   // is read off the first operation of its segment; phases of the same line are of the same kind.
   std::unordered_map<std::uint8_t, bool> line_is_row;
   std::unordered_map<std::size_t, std::int32_t> row_layer;
+  std::unordered_map<int, bool> array_is_row;  // per heads array: its pushes key a whole cell (a row's lists) or a row of a layer
+  for (const TraceEvent& e : ev)
+    if (e.op == TraceOp::Push && e.write_count > 1 && e.cell[1] >= 0) array_is_row.emplace(e.writes[1].array, e.cell[0] >= 0);
   for (std::size_t i = 0; i < phases_.size(); ++i) {
     const TraceEvent& e = ev[phases_[i]];
     if (e.cell[0] >= 0 || e.cell[1] >= 0 || e.cell[2] >= 0 || e.index < 0) continue;
@@ -161,14 +164,20 @@ void ContractChecker::infer_phase_cells() {
       row_layer[phases_[i]] = first.cell[2];
     } else if (first.op == TraceOp::Push && first.cell[0] < 0 && first.cell[1] >= 0 && first.cell[2] == e.index) {
       line_is_row.emplace(e.line, false);
+    } else if (first.op == TraceOp::Clear && first.write_count > 0) {  // a clearing: of the lists of a row, or of a layer
+      const auto kind = array_is_row.find(first.writes[0].array);
+      if (kind != array_is_row.end()) line_is_row.emplace(e.line, kind->second);
     }
   }
-  std::int32_t layer = -1;
+  std::int32_t layer = -1, row = -1;
   for (const std::size_t p : phases_) {
     const TraceEvent& e = ev[p];
     Cell c{e.cell[0], e.cell[1], e.cell[2]};
-    const auto kind = line_is_row.find(e.line);
+    auto kind = line_is_row.find(e.line);
+    // A line never resolved (a row's contacts that visit nothing anywhere): the row's phase when it follows that row's.
+    if (kind == line_is_row.end() && e.index >= 0 && e.index == row) kind = line_is_row.emplace(e.line, true).first;
     if (c == Cell{-1, -1, -1} && e.index >= 0 && kind != line_is_row.end()) {
+      row = kind->second ? e.index : -1;
       const auto known = row_layer.find(p);
       if (!kind->second) layer = e.index;
       c = kind->second ? Cell{-1, e.index, known != row_layer.end() ? known->second : layer} : Cell{-1, -1, e.index};
@@ -263,8 +272,15 @@ void ContractChecker::close_phase(std::size_t at) {
   if (held == row_member_.end()) return;
   const std::int32_t k = held->second;
   subject_ = Pair{k, k};
+  // The row's phases before it that did nothing too (its lists built from nothing): due at the first.
+  std::size_t due = phase + 1;
+  for (auto p = std::lower_bound(phases_.begin(), phases_.end(), phase); p != phases_.begin(); --p) {
+    const std::size_t before = *(p - 1);
+    if (before + 1 != *p || phase_cell(before) != phase_cell(phase) || (dim_ == 2 && t_.log.events()[before].index != e.index)) break;
+    due = before + 1;
+  }
   const std::string phase_name = e.label[0] != '\0' ? std::string(e.label) : std::string("its phase");
-  breaks(Contract::RowProcessed, std::min(phase + 1, t_.log.events().size() - 1),
+  breaks(Contract::RowProcessed, std::min(due, t_.log.events().size() - 1),
          row_text(cells_[static_cast<std::size_t>(k)]) + " holds elements (" + id(k) + " in cell " + cell_text(cells_[static_cast<std::size_t>(k)]) +
              ") but its phase '" + phase_name + "' (operation " + std::to_string(phase + 1) + ") does nothing: no element of it visits a cell");
 }
@@ -457,9 +473,9 @@ int ContractChecker::half_of_visits() const {
     if (l < 0) ++down;
     else if (l > 0) ++up;
   }
-  // A few visits the other way are a bug's; as many both ways is a full mask.
-  if (down > 0 && up * 8 <= down) return -1;
-  if (up > 0 && down * 8 <= up) return 1;
+  // Visits the other way are a bug's while they are fewer than half; as many both ways is a full mask.
+  if (down > 0 && up * 2 < down) return -1;
+  if (up > 0 && down * 2 < up) return 1;
   return 0;
 }
 

@@ -41,7 +41,7 @@ std::size_t ContractChecker::row_due_3d(std::int64_t row) const {
   for (const std::size_t p : phases_) {
     const Cell e = phase_cell(p);
     if (last_of_layer != kNone ? p <= last_of_layer || (e[2] == layer && e[1] >= 0)
-                               : p <= first_push || (e[2] >= 0 && e[2] < layer))
+                               : p <= first_push || (e[2] >= 0 ? e[2] < layer : ev[p].index >= 0))
       continue;
     return p;
   }
