@@ -192,6 +192,9 @@ class ContractChecker {
   std::vector<std::uint8_t> visit_lines_;                      // lines of the phases whose segments visit cells
   std::unordered_map<std::int64_t, std::int32_t> row_member_;  // per row that holds elements: one of them
   std::size_t open_phase_ = kNone;
+  bool builds_cell_lists_ = false;        // the trace builds row lists, so each row builds its cells' lists
+  std::vector<std::size_t> cell_listed_at_;  // per element: its last push onto a list keyed to its whole cell
+  std::size_t last_cell_push_ = kNone;    // the last such push of any element
   std::unordered_map<std::size_t, Cell> phase_cells_;          // 3D: per phase, the row (-1,iy,iz) or layer (-1,-1,iz) it works on
   // 3D plugins' phases name only an index: infers each phase's row or layer (phase_cells_).
   void infer_phase_cells();

@@ -90,9 +90,12 @@ ContractChecker::ContractChecker(const FrameTrace& t, const ContractNames& names
   for (const Pair& p : t.pairs) reported_.push_back(key(p.i, p.j));
   std::sort(reported_.begin(), reported_.end());
   for (std::int64_t k = n_; k-- > 0;) row_member_[row_key(cells_[static_cast<std::size_t>(k)])] = static_cast<std::int32_t>(k);
+  cell_listed_at_.assign(static_cast<std::size_t>(n_), kNone);
   const std::vector<TraceEvent>& ev = t.log.events();
   std::size_t phase = kNone;
   for (std::size_t at = 0; at < ev.size(); ++at) {
+    // Lists keyed to a row but not a cell (2D's y-lists, 3D's y-lists of a layer): the book's, whose rows build cell lists.
+    if (ev[at].op == TraceOp::Push && ev[at].cell[0] < 0 && ev[at].cell[1] >= 0) builds_cell_lists_ = true;
     if (ev[at].op == TraceOp::Phase) phases_.push_back(at), phase = at;
     if (ev[at].op == TraceOp::VisitCell && phase != kNone &&
         std::find(visit_lines_.begin(), visit_lines_.end(), ev[phase].line) == visit_lines_.end())
@@ -389,6 +392,8 @@ void ContractChecker::on_push(std::size_t at, const TraceEvent& e) {
   m.head[slot] = k;
   ++m.count[slot];
   if (full_key) {
+    cell_listed_at_[static_cast<std::size_t>(k)] = at;
+    last_cell_push_ = at;
     cell_list_[flat(keyed)] = CellList{hw.array, static_cast<std::int64_t>(slot)};
     last_row_push_[row_key(keyed)] = at;
   }
@@ -442,6 +447,17 @@ void ContractChecker::on_visit(std::size_t at, const TraceEvent& e) {
     breaks(Contract::MaskHalf, at, "the mask of " + id(k) + " (cell " + cell_text(own) + ") visits cell " + cell_text(c) + ", its neighbour at " +
                                        offset_text(o) + ", outside the half mask every other visit keeps: the wrong row, layer or column was taken");
     return;
+  }
+  if (o == Cell{0, 0, 0} && builds_cell_lists_ && !row_starts_.empty()) {
+    const std::size_t row_start = row_starts_.back().first;
+    const std::size_t listed = cell_listed_at_[static_cast<std::size_t>(k)];
+    if (listed == kNone || listed < row_start) {
+      // Due where this row's build stopped: after its last push, or at its first operation when it pushed nothing.
+      const std::size_t due = last_cell_push_ != kNone && last_cell_push_ > row_start ? last_cell_push_ + 1 : row_start + 1;
+      breaks(Contract::CellList, std::min(due, at), id(k) + " visits its own cell " + cell_text(own) + " (operation " + std::to_string(at + 1) +
+                                                        "), but was not pushed onto that cell's list when its row's lists were built: the loop that builds them left it out");
+      return;
+    }
   }
   const int bit = offset_bit(o, dim_);
   visits_[static_cast<std::size_t>(k)] |= 1u << bit;

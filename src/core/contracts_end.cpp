@@ -28,14 +28,12 @@ std::size_t ContractChecker::row_due_3d(std::int64_t row) const {
   const auto lowest = [&](std::int64_t r) { const auto f = row_member_.find(r); return f == row_member_.end() ? -1 : f->second; };
   for (const auto& [at, key] : row_starts_)
     if (key / g_.n[1] == layer && lowest(key) < lowest(row)) return at;
-  std::size_t last_of_layer = kNone;  // the layer's last phase (a row's, or the layer's own first)
-  bool row_phase_seen = false;
+  std::size_t last_of_layer = kNone;  // the layer's last row phase, or the layer's own first
   for (const std::size_t p : phases_) {
     const Cell e = phase_cell(p);
     if (e[2] != layer) continue;
     const bool row_phase = e[1] >= 0;
-    if (row_phase || !row_phase_seen) last_of_layer = p;
-    row_phase_seen = row_phase_seen || row_phase;
+    if (row_phase || last_of_layer == kNone) last_of_layer = p;  // with no row begun: the layer's first phase
   }
   const std::size_t first_push = cell_pushes_.empty() ? 0 : cell_pushes_.front().at;
   for (const std::size_t p : phases_) {

@@ -336,5 +336,25 @@ TEST_F(PlantedBreak, ARowsClearsLeftOutAreAListLinkWhereTheFirstClearWasDue) {
   EXPECT_EQ(b.event, clearing + 1) << b.text;
 }
 
+TEST_F(PlantedBreak, ARowWhoseCellListsAreNotBuiltIsACellListWhereItsBuildWasDue) {
+  // Every x-list push of one row's build dropped: its elements then visit their own cells, not on their lists.
+  std::size_t build = 0;
+  for (std::size_t at = 0; at + 1 < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    if (e.op == TraceOp::Phase && e.index > 2 && t.log.events()[at + 1].op == TraceOp::Push) {
+      build = at;
+      break;
+    }
+  }
+  ASSERT_GT(build, 0u);
+  bool in_build = false;
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (e.op == TraceOp::Phase) in_build = at == build;
+    return !(in_build && e.op == TraceOp::Push);
+  }));
+  EXPECT_EQ(b.contract, Contract::CellList) << b.text;
+  EXPECT_EQ(b.event, build + 1) << b.text;
+}
+
 }  // namespace
 }  // namespace nbscope
