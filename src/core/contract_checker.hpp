@@ -195,6 +195,10 @@ class ContractChecker {
   bool builds_cell_lists_ = false;        // the trace builds row lists, so each row builds its cells' lists
   std::vector<std::size_t> cell_listed_at_;  // per element: its last push onto a list keyed to its whole cell
   std::size_t last_cell_push_ = kNone;    // the last such push of any element
+  std::size_t rows_checked_at_ = kNone;   // the row start whose neighbour rows' builds were checked
+  // list-complete, at a row's first visit: every row its half mask reaches that holds elements was built
+  // into cell lists since the row began; due at the phase before the visit, where the build ended.
+  void check_rows_built(std::size_t at, const Cell& own);
   std::unordered_map<std::size_t, Cell> phase_cells_;          // 3D: per phase, the row (-1,iy,iz) or layer (-1,-1,iz) it works on
   // 3D plugins' phases name only an index: infers each phase's row or layer (phase_cells_).
   void infer_phase_cells();

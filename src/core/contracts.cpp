@@ -448,6 +448,10 @@ void ContractChecker::on_visit(std::size_t at, const TraceEvent& e) {
                                        offset_text(o) + ", outside the half mask every other visit keeps: the wrong row, layer or column was taken");
     return;
   }
+  if (builds_cell_lists_ && half_ != 0 && !row_starts_.empty() && rows_checked_at_ != row_starts_.back().first) {
+    rows_checked_at_ = row_starts_.back().first;
+    check_rows_built(at, own);
+  }
   if (o == Cell{0, 0, 0} && builds_cell_lists_ && !row_starts_.empty()) {
     const std::size_t row_start = row_starts_.back().first;
     const std::size_t listed = cell_listed_at_[static_cast<std::size_t>(k)];
@@ -464,6 +468,32 @@ void ContractChecker::on_visit(std::size_t at, const TraceEvent& e) {
   union_ |= 1u << bit;
   last_visit_[static_cast<std::size_t>(k)] = at;
   if (o != Cell{0, 0, 0}) walk_ = Walk{at, k, c, 0};  // own cell: only the elements after k are walked
+}
+
+void ContractChecker::check_rows_built(std::size_t at, const Cell& own) {
+  const std::size_t row_start = row_starts_.back().first;
+  const auto phase = std::upper_bound(phases_.begin(), phases_.end(), at);
+  const std::size_t due = phase == phases_.begin() ? at : *(phase - 1);  // the contacts' phase: where the build ended
+  const int offsets = dim_ == 3 ? 27 : 9;
+  for (int bit = 0; bit < offsets; ++bit) {
+    const Cell o = offset_of_bit(bit, dim_);
+    if (o[0] != 0 || (lean(o, dim_) != half_ && o != Cell{0, 0, 0})) continue;  // each row the half mask reaches, once
+    Cell c = own;
+    bool inside = true;
+    for (int a = 1; a < dim_; ++a) {
+      c[static_cast<std::size_t>(a)] = g_.neighbour(own[static_cast<std::size_t>(a)], o[static_cast<std::size_t>(a)], a);
+      inside = inside && c[static_cast<std::size_t>(a)] >= 0;
+    }
+    const std::int64_t row = row_key(c);
+    if (!inside || o == Cell{0, 0, 0} || !row_member_.count(row)) continue;  // the own row: cell-list at its own visit
+    const auto pushed = last_row_push_.find(row);
+    if (pushed != last_row_push_.end() && pushed->second > row_start) continue;
+    const std::int32_t m = row_member_.at(row);
+    breaks(Contract::ListComplete, due, row_text(cells_[static_cast<std::size_t>(m)]) + " holds elements (" + id(m) + " in cell " +
+                                           cell_text(cells_[static_cast<std::size_t>(m)]) + "), which " + row_text(own) + "'s mask reaches, but " +
+                                           row_text(own) + "'s build (operation " + std::to_string(row_start + 1) + ") put none of them on a cell list");
+    return;
+  }
 }
 
 bool ContractChecker::offset_from(std::int32_t k, const Cell& c, Cell& o) const {

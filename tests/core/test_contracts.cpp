@@ -337,23 +337,53 @@ TEST_F(PlantedBreak, ARowsClearsLeftOutAreAListLinkWhereTheFirstClearWasDue) {
 }
 
 TEST_F(PlantedBreak, ARowWhoseCellListsAreNotBuiltIsACellListWhereItsBuildWasDue) {
-  // Every x-list push of one row's build dropped: its elements then visit their own cells, not on their lists.
-  std::size_t build = 0;
+  // The pushes of one row's own elements dropped from its build (the row below is still built): its
+  // elements then visit their own cells, not on their lists; due where the build ended.
+  std::size_t build = 0, contacts = 0;
   for (std::size_t at = 0; at + 1 < t.log.events().size(); ++at) {
     const TraceEvent& e = t.log.events()[at];
-    if (e.op == TraceOp::Phase && e.index > 2 && t.log.events()[at + 1].op == TraceOp::Push) {
-      build = at;
+    if (build == 0 && e.op == TraceOp::Phase && e.index > 2 && t.log.events()[at + 1].op == TraceOp::Push) build = at;
+    else if (build > 0 && e.op == TraceOp::Phase) {
+      contacts = at;
       break;
     }
   }
-  ASSERT_GT(build, 0u);
-  bool in_build = false;
+  ASSERT_GT(contacts, 0u);
+  const std::int32_t row = t.log.events()[build].index;
+  std::size_t removed = 0;
   const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
-    if (e.op == TraceOp::Phase) in_build = at == build;
-    return !(in_build && e.op == TraceOp::Push);
+    const bool drop = at > build && at < contacts && e.op == TraceOp::Push && e.cell[1] == row;
+    removed += drop ? 1 : 0;
+    return !drop;
   }));
+  ASSERT_GT(removed, 0u);
   EXPECT_EQ(b.contract, Contract::CellList) << b.text;
-  EXPECT_EQ(b.event, build + 1) << b.text;
+  EXPECT_EQ(b.event, contacts - removed) << b.text;
+}
+
+TEST_F(PlantedBreak, ARowBelowLeftOutOfTheBuildIsAListCompleteWhereTheBuildEnded) {
+  // The pushes of the row below dropped from one row's build: that row's masks reach cells of it whose
+  // lists were never built; due at the contacts' phase, where the build ended.
+  std::size_t build = 0, contacts = 0;
+  for (std::size_t at = 0; at + 1 < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    if (build == 0 && e.op == TraceOp::Phase && e.index > 2 && t.log.events()[at + 1].op == TraceOp::Push) build = at;
+    else if (build > 0 && e.op == TraceOp::Phase) {
+      contacts = at;
+      break;
+    }
+  }
+  ASSERT_GT(contacts, 0u);
+  const std::int32_t row = t.log.events()[build].index;
+  std::size_t removed = 0;
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    const bool drop = at > build && at < contacts && e.op == TraceOp::Push && e.cell[1] == row - 1;
+    removed += drop ? 1 : 0;
+    return !drop;
+  }));
+  ASSERT_GT(removed, 0u);
+  EXPECT_EQ(b.contract, Contract::ListComplete) << b.text;
+  EXPECT_EQ(b.event, contacts - removed) << b.text;
 }
 
 }  // namespace
