@@ -14,8 +14,15 @@ std::size_t ContractChecker::row_due(std::int64_t row) const {
   if (dim_ == 3) return row_due_3d(row);
   for (const auto& [at, key] : row_starts_)
     if (key > row) return at;
+  // No row after it was processed: the last row's start (the loop over the rows, which stopped there);
+  // no row processed at all: the first phase after the first-level lists' pushes began, where the loop
+  // went on past every row.
   if (!row_starts_.empty()) return row_starts_.back().first;
-  return t_.log.events().size() - 1;
+  const std::vector<TraceEvent>& ev = t_.log.events();
+  const std::size_t after = cell_pushes_.empty() ? 0 : cell_pushes_.front().at;
+  for (auto p = std::upper_bound(phases_.begin(), phases_.end(), after); p != phases_.end(); ++p)
+    if (ev[*p].index < 0) return *p;
+  return ev.size() - 1;
 }
 
 // 3D: the book walks a layer's rows in the order its z-list loop meets their heads, the row whose lowest

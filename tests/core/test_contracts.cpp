@@ -386,5 +386,22 @@ TEST_F(PlantedBreak, ARowBelowLeftOutOfTheBuildIsAListCompleteWhereTheBuildEnded
   EXPECT_EQ(b.event, contacts - removed) << b.text;
 }
 
+TEST_F(PlantedBreak, NoRowProcessedAtAllIsARowProcessedWhereTheRowLoopWentOnPastThem) {
+  // Every event of every row's phases dropped (a row test that always says "empty"): the loop over the
+  // rows goes straight on to the clearing of the y-lists.
+  std::int32_t in_row = -1;
+  TraceLog edited = rerecorded(t.log, [&](std::size_t, TraceEvent& e) {
+    if (e.op == TraceOp::Phase) in_row = e.index;
+    return in_row < 0;
+  });
+  std::size_t push = 0;
+  while (edited.events()[push].op != TraceOp::Push) ++push;
+  std::size_t after = push;
+  while (edited.events()[after].op != TraceOp::Phase) ++after;
+  const BrokenContract b = broken_with(std::move(edited));
+  EXPECT_EQ(b.contract, Contract::RowProcessed) << b.text;
+  EXPECT_EQ(b.event, after) << b.text;
+}
+
 }  // namespace
 }  // namespace nbscope
