@@ -199,6 +199,8 @@ class ContractChecker {
   // list-complete, at a row's first visit: every row its half mask reaches that holds elements was built
   // into cell lists since the row began; due at the phase before the visit, where the build ended.
   void check_rows_built(std::size_t at, const Cell& own);
+  // True when row key `row` is `building` itself or a row its half mask reaches.
+  bool row_reaches(std::int64_t building, std::int64_t row) const;
   std::unordered_map<std::size_t, Cell> phase_cells_;          // 3D: per phase, the row (-1,iy,iz) or layer (-1,-1,iz) it works on
   // 3D plugins' phases name only an index: infers each phase's row or layer (phase_cells_).
   void infer_phase_cells();

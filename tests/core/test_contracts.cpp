@@ -403,5 +403,25 @@ TEST_F(PlantedBreak, NoRowProcessedAtAllIsARowProcessedWhereTheRowLoopWentOnPast
   EXPECT_EQ(b.event, after) << b.text;
 }
 
+TEST_F(PlantedBreak, APushInTheBuildOfARowItsMaskDoesNotReachIsACellListAtThePush) {
+  // One row's build phase named three rows up: the pushes of its rows are then in the build of a row
+  // whose half mask does not reach them (the wrong row's lists were taken).
+  std::size_t build = 0;
+  for (std::size_t at = 0; at + 1 < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    if (e.op == TraceOp::Phase && e.index > 2 && e.index + 3 < t.grid.n[1] && t.log.events()[at + 1].op == TraceOp::Push) {
+      build = at;
+      break;
+    }
+  }
+  ASSERT_GT(build, 0u);
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (at == build) e.index += 3;
+    return true;
+  }));
+  EXPECT_EQ(b.contract, Contract::CellList) << b.text;
+  EXPECT_EQ(b.event, build + 1) << b.text;
+}
+
 }  // namespace
 }  // namespace nbscope
