@@ -137,15 +137,6 @@ void ContractChecker::end_walk(std::size_t at) {
   }
 }
 
-std::optional<std::size_t> ContractChecker::clear_due(int heads, std::size_t pushed, std::size_t before) const {
-  const auto found = clear_lines_.find(heads);
-  if (found == clear_lines_.end()) return std::nullopt;
-  const std::vector<TraceEvent>& ev = t_.log.events();
-  for (auto p = std::upper_bound(phases_.begin(), phases_.end(), pushed); p != phases_.end() && *p < before; ++p)
-    if (std::find(found->second.begin(), found->second.end(), ev[*p].line) != found->second.end()) return *p;
-  return std::nullopt;
-}
-
 std::optional<BrokenContract> ContractChecker::run() {
   const std::vector<TraceEvent>& ev = t_.log.events();
   half_ = half_of_visits();
