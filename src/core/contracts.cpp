@@ -54,7 +54,7 @@ const char* contract_rule(Contract c) {
     case Contract::MaskNeighbours: return "the contact mask visits only the cells next to the element's own";
     case Contract::MaskHalf: return "a half mask visits only its own half of the neighbours (the book's: the cells before the element's own)";
     case Contract::MaskRelates: return "for every neighbour offset the mask visits it or its opposite";
-    case Contract::MaskCell: return "each element's mask visits every mask cell that exists and holds elements";
+    case Contract::MaskCell: return "each element's mask visits every mask cell that exists and holds elements, once";
     case Contract::WalkCell: return "the walk of a visited cell's list meets only elements of that cell";
     case Contract::ListComplete: return "a cell's list holds every element of the cell when a mask walks it";
     case Contract::WalkComplete: return "a walk tests every element of the list it walks";
@@ -379,9 +379,13 @@ void ContractChecker::on_visit(std::size_t at, const TraceEvent& e) {
     }
   }
   const int bit = offset_bit(o, dim_);
+  last_visit_[static_cast<std::size_t>(k)] = at;  // a cell visited twice (offsets are distinct cells from 3 per axis): the wrong cell
+  if (std::all_of(g_.n, g_.n + dim_, [](std::int64_t cells) { return cells >= 3; }) && (visits_[static_cast<std::size_t>(k)] >> bit & 1u) != 0) {
+    breaks(Contract::MaskCell, at, "the mask of " + id(k) + " (cell " + cell_text(own) + ") visits cell " + cell_text(c) + " a second time: the visit names the wrong cell");
+    return;
+  }
   visits_[static_cast<std::size_t>(k)] |= 1u << bit;
   union_ |= 1u << bit;
-  last_visit_[static_cast<std::size_t>(k)] = at;
   if (o != Cell{0, 0, 0}) walk_ = Walk{at, k, c, 0};  // own cell: only the elements after k are walked
 }
 

@@ -423,5 +423,24 @@ TEST_F(PlantedBreak, APushInTheBuildOfARowItsMaskDoesNotReachIsACellListAtThePus
   EXPECT_EQ(b.event, build + 1) << b.text;
 }
 
+TEST_F(PlantedBreak, ACellVisitedTwiceByOneMaskIsAMaskCellAtTheSecondVisit) {
+  // One element's visit of the cell to its left renamed to its own cell, which it visited first.
+  std::size_t visit = 0;
+  for (std::size_t at = 0; at < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    if (e.op == TraceOp::VisitCell && e.cell[1] == t.grid.cell(t.elements.y[e.element], 1) && e.cell[0] + 1 == t.grid.cell(t.elements.x[e.element], 0)) {
+      visit = at;
+      break;
+    }
+  }
+  ASSERT_GT(visit, 0u);
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (at == visit) e.cell[0] += 1;
+    return true;
+  }));
+  EXPECT_EQ(b.contract, Contract::MaskCell) << b.text;
+  EXPECT_EQ(b.event, visit) << b.text;
+}
+
 }  // namespace
 }  // namespace nbscope
