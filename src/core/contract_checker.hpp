@@ -23,6 +23,13 @@ inline int offset_bit(const Cell& o, int dim) {
   for (int a = 0; a < dim; ++a, scale *= 3) bit += (o[static_cast<std::size_t>(a)] + 1) * scale;
   return bit;
 }
+// The sign of an offset's last nonzero axis: -1 for the book's half mask (the cells before k's own, row
+// by row and layer by layer), +1 for its mirror, 0 for the own cell.
+inline int lean(const Cell& o, int dim) {
+  for (int a = dim - 1; a >= 0; --a)
+    if (o[static_cast<std::size_t>(a)] != 0) return o[static_cast<std::size_t>(a)] < 0 ? -1 : 1;
+  return 0;
+}
 inline Cell offset_of_bit(int bit, int dim) {
   Cell o{0, 0, 0};
   for (int a = 0; a < dim; ++a, bit /= 3) o[static_cast<std::size_t>(a)] = bit % 3 - 1;
@@ -91,6 +98,16 @@ class ContractChecker {
   void on_clear(std::size_t at, const TraceEvent& e);
 
   void on_visit(std::size_t at, const TraceEvent& e);
+  // The offset of cell `c` from k's own (periodic wrap folded in); false when it is not next to it.
+  bool offset_from(std::int32_t k, const Cell& c, Cell& o) const;
+  // The half mask the trace's visits keep, from the book: -1 (the book's), +1 (its mirror) when nearly
+  // every visit leans that way, else 0 (a full mask, or none: the offsets are then read off the trace).
+  int half_of_visits() const;
+  // The mask's offsets as bits: the whole half the visits keep, else every offset visited.
+  std::uint32_t mask_bits() const;
+  // row-processed, in order: a row phase of a row that holds elements whose segment (up to `at`) did
+  // nothing, where that line's segments visit cells elsewhere: its contacts were due at the phase's next operation.
+  void close_phase(std::size_t at);
 
   void on_test(std::size_t at, const TraceEvent& e);
 
@@ -101,6 +118,7 @@ class ContractChecker {
   // Where a row that was never processed was due: the start of the first processed row after it
   // (2D rows go up; 3D's order is the layer lists', so its first later key), else the last row's start.
   std::size_t row_due(std::int64_t row) const;
+  std::size_t row_due_3d(std::int64_t row) const;
   std::string row_text(const Cell& c) const;
   // Contacts of element k with the elements of cell `c` (the cost of a skipped cell).
   void cost_of_cell(std::int32_t k, const Cell& c, std::vector<Pair>& cost, std::int64_t& count) const;
@@ -149,6 +167,9 @@ class ContractChecker {
   // Where the clear of a list that was pushed onto at `pushed` was due: the first phase after it of the
   // pseudocode line that clears heads array `heads` elsewhere in the trace, if one comes before `before`.
   [[nodiscard]] std::optional<std::size_t> clear_due(int heads, std::size_t pushed, std::size_t before) const;
+  // Where the clear of a list pushed onto at `pushed` and reused at `at` was due: clear_due's phase (its
+  // first operation when that clearing cleared nothing of the array), else the phase before `at`'s own.
+  [[nodiscard]] std::size_t clear_was_due(int heads, std::size_t pushed, std::size_t at) const;
   // The walk of a cell the current visit began (not k's own: the whole list is walked there).
   struct Walk {
     std::size_t visit;
@@ -167,6 +188,28 @@ class ContractChecker {
   std::unordered_map<std::int64_t, std::size_t> last_row_push_;  // per row: the event of its last full-keyed push
   std::unordered_map<int, std::vector<std::uint8_t>> clear_lines_;  // per heads array: the lines of its Clear events
   std::vector<std::size_t> phases_;                            // every Phase event, in order
+  int half_ = 0;                                                // half_of_visits(), fixed before the events
+  std::vector<std::uint8_t> visit_lines_;                      // lines of the phases whose segments visit cells
+  std::unordered_map<std::int64_t, std::int32_t> row_member_;  // per row that holds elements: one of them
+  std::size_t open_phase_ = kNone;
+  bool builds_cell_lists_ = false;        // the trace builds row lists, so each row builds its cells' lists
+  std::vector<std::size_t> cell_listed_at_;  // per element: its last push onto a list keyed to its whole cell
+  std::size_t last_cell_push_ = kNone;    // the last such push of any element
+  std::size_t rows_checked_at_ = kNone;   // the row start whose neighbour rows' builds were checked
+  // list-complete, at a row's first visit: every row its half mask reaches that holds elements was built
+  // into cell lists since the row began; due at the phase before the visit, where the build ended.
+  void check_rows_built(std::size_t at, const Cell& own);
+  // True when row key `row` is `building` itself or a row its half mask reaches.
+  bool row_reaches(std::int64_t building, std::int64_t row) const;
+  std::unordered_map<std::size_t, Cell> phase_cells_;          // 3D: per phase, the row (-1,iy,iz) or layer (-1,-1,iz) it works on
+  // 3D plugins' phases name only an index: infers each phase's row or layer (phase_cells_).
+  void infer_phase_cells();
+  Cell phase_cell(std::size_t at) const {
+    const auto found = phase_cells_.find(at);
+    if (found != phase_cells_.end()) return found->second;
+    const TraceEvent& e = t_.log.events()[at];
+    return Cell{e.cell[0], e.cell[1], e.cell[2]};
+  }                             // the current row phase, while its segment is empty
   Pair subject_{-1, -1};  // the elements the event being checked names (BrokenContract::subject)
   std::optional<BrokenContract> first_;
 };

@@ -24,6 +24,7 @@ const char* contract_name(Contract c) {
     case Contract::CellList: return "cell-list";
     case Contract::MaskInGrid: return "mask-in-grid";
     case Contract::MaskNeighbours: return "mask-neighbours";
+    case Contract::MaskHalf: return "mask-half";
     case Contract::MaskRelates: return "mask-relates";
     case Contract::MaskCell: return "mask-cell";
     case Contract::WalkCell: return "walk-cell";
@@ -51,8 +52,9 @@ const char* contract_rule(Contract c) {
     case Contract::CellList: return "every element goes onto the list of its own cell";
     case Contract::MaskInGrid: return "the contact mask visits cells of the grid only";
     case Contract::MaskNeighbours: return "the contact mask visits only the cells next to the element's own";
+    case Contract::MaskHalf: return "a half mask visits only its own half of the neighbours (the book's: the cells before the element's own)";
     case Contract::MaskRelates: return "for every neighbour offset the mask visits it or its opposite";
-    case Contract::MaskCell: return "each element's mask visits every mask cell that exists and holds elements";
+    case Contract::MaskCell: return "each element's mask visits every mask cell that exists and holds elements, once";
     case Contract::WalkCell: return "the walk of a visited cell's list meets only elements of that cell";
     case Contract::ListComplete: return "a cell's list holds every element of the cell when a mask walks it";
     case Contract::WalkComplete: return "a walk tests every element of the list it walks";
@@ -87,9 +89,17 @@ ContractChecker::ContractChecker(const FrameTrace& t, const ContractNames& names
   reported_.reserve(t.pairs.size());
   for (const Pair& p : t.pairs) reported_.push_back(key(p.i, p.j));
   std::sort(reported_.begin(), reported_.end());
+  for (std::int64_t k = n_; k-- > 0;) row_member_[row_key(cells_[static_cast<std::size_t>(k)])] = static_cast<std::int32_t>(k);
+  cell_listed_at_.assign(static_cast<std::size_t>(n_), kNone);
   const std::vector<TraceEvent>& ev = t.log.events();
+  std::size_t phase = kNone;
   for (std::size_t at = 0; at < ev.size(); ++at) {
-    if (ev[at].op == TraceOp::Phase) phases_.push_back(at);
+    // Lists keyed to a row but not a cell (2D's y-lists, 3D's y-lists of a layer): the book's, whose rows build cell lists.
+    if (ev[at].op == TraceOp::Push && ev[at].cell[0] < 0 && ev[at].cell[1] >= 0) builds_cell_lists_ = true;
+    if (ev[at].op == TraceOp::Phase) phases_.push_back(at), phase = at;
+    if (ev[at].op == TraceOp::VisitCell && phase != kNone &&
+        std::find(visit_lines_.begin(), visit_lines_.end(), ev[phase].line) == visit_lines_.end())
+      visit_lines_.push_back(ev[phase].line);
     if (ev[at].op == TraceOp::Clear && ev[at].write_count > 0) {
       std::vector<std::uint8_t>& lines = clear_lines_[ev[at].writes[0].array];
       if (std::find(lines.begin(), lines.end(), ev[at].line) == lines.end()) lines.push_back(ev[at].line);
@@ -127,17 +137,10 @@ void ContractChecker::end_walk(std::size_t at) {
   }
 }
 
-std::optional<std::size_t> ContractChecker::clear_due(int heads, std::size_t pushed, std::size_t before) const {
-  const auto found = clear_lines_.find(heads);
-  if (found == clear_lines_.end()) return std::nullopt;
-  const std::vector<TraceEvent>& ev = t_.log.events();
-  for (auto p = std::upper_bound(phases_.begin(), phases_.end(), pushed); p != phases_.end() && *p < before; ++p)
-    if (std::find(found->second.begin(), found->second.end(), ev[*p].line) != found->second.end()) return *p;
-  return std::nullopt;
-}
-
 std::optional<BrokenContract> ContractChecker::run() {
   const std::vector<TraceEvent>& ev = t_.log.events();
+  half_ = half_of_visits();
+  if (dim_ == 3) infer_phase_cells();
   for (std::size_t at = 0; at < ev.size(); ++at) {  // on past a break: coverage needs every event
     const TraceEvent& e = ev[at];
     if (e.op != TraceOp::TestPair) end_walk(at);
@@ -151,6 +154,7 @@ std::optional<BrokenContract> ContractChecker::run() {
     }
   }
   if (ev.empty()) return std::nullopt;
+  close_phase(ev.size());
   // The end of the frame: what was never done is located where it was due, and competes with the
   // breaks found in order by its operation.
   end_walk(ev.empty() ? 0 : ev.size() - 1);
@@ -193,10 +197,13 @@ ContractChecker::Model& ContractChecker::model(int heads) {
 }
 
 void ContractChecker::on_phase(std::size_t at, const TraceEvent& e) {
+  close_phase(at);
   std::int64_t row = -1;
-  if (dim_ == 3 && e.cell[1] >= 0 && e.cell[2] >= 0) row = std::int64_t{e.cell[2]} * g_.n[1] + e.cell[1];
+  const Cell pc = phase_cell(at);
+  if (dim_ == 3 && pc[1] >= 0 && pc[2] >= 0) row = std::int64_t{pc[2]} * g_.n[1] + pc[1];
   else if (dim_ == 2 && e.index >= 0) row = e.index;
   if (row < 0) return;
+  open_phase_ = at;
   if (row_starts_.empty() || row_starts_.back().second != row) row_starts_.emplace_back(at, row);
 }
 
@@ -241,6 +248,13 @@ void ContractChecker::on_push(std::size_t at, const TraceEvent& e) {
     }
   }
   const bool full_key = std::all_of(e.cell, e.cell + dim_, [](std::int32_t c) { return c >= 0; });
+  if (full_key && builds_cell_lists_ && half_ != 0 && !row_starts_.empty() && !row_reaches(row_starts_.back().second, row_key(own))) {
+    const std::int64_t building = row_starts_.back().second;
+    const Cell row_cell{0, static_cast<std::int32_t>(dim_ == 3 ? building % g_.n[1] : building), static_cast<std::int32_t>(dim_ == 3 ? building / g_.n[1] : -1)};
+    breaks(Contract::CellList, at, id(k) + " (cell " + cell_text(own) + ") is pushed onto " + list + " while " + row_text(row_cell) +
+                                       "'s lists are built, but its row is not one that row's mask reaches: the wrong row's list was taken");
+    return;
+  }
   if (full_key) on_cell_list_[static_cast<std::size_t>(k)] = true;
   const std::int32_t expected = m.head[slot];
   if (m.member_slot[static_cast<std::size_t>(k)] == static_cast<std::int64_t>(slot) && m.member_build[static_cast<std::size_t>(k)] == m.build[slot]) {
@@ -253,7 +267,11 @@ void ContractChecker::on_push(std::size_t at, const TraceEvent& e) {
                                        ", not " + id(k) + ": the head was not written");
     return;
   }
-  if (nw.new_value != expected) {
+  const Cell keyed{e.cell[0], e.cell[1], e.cell[2]};
+  // The list was built for another cell: the clear that was due before its reuse is missing (traced
+  // or done), whether the push then links to the old head or to -1.
+  const bool reused = expected >= 0 && m.member_cell[static_cast<std::size_t>(expected)] != keyed;
+  if (nw.new_value != expected && !(reused && nw.new_value == -1)) {
     const std::int32_t got = nw.new_value;
     std::string text = "the push of " + id(k) + " onto " + list + " links it to ";
     if (got == k) {
@@ -274,20 +292,23 @@ void ContractChecker::on_push(std::size_t at, const TraceEvent& e) {
     breaks(Contract::ListLink, at, text);
     return;
   }
-  const Cell keyed{e.cell[0], e.cell[1], e.cell[2]};
-  if (expected >= 0 && m.member_cell[static_cast<std::size_t>(expected)] != keyed) {
-    // The list was built for another cell and never cleared: the break is the clear that was due.
-    const std::string text = "the push of " + id(k) + " onto " + list + " for cell " + cell_text(keyed) + " (operation " + std::to_string(at + 1) +
-                             ") links it to " + id(expected) + ", pushed onto that list for cell " +
-                             cell_text(m.member_cell[static_cast<std::size_t>(expected)]) + ": the head was not cleared before the list was reused";
-    const std::optional<std::size_t> due = clear_due(hw.array, m.member_at[static_cast<std::size_t>(expected)], at);
-    if (due) breaks(Contract::ListLink, *due, "this clearing leaves " + list + " set: " + text + ", so it runs on into a stale chain");
-    else breaks(Contract::ListLink, at, text + ", so it runs on into a stale chain");
+  if (reused) {
+    // The list was built for another cell and its clear is not in the trace: the break is the clear that was due.
+    const std::string text = nw.new_value == -1
+        ? "the push of " + id(k) + " onto " + list + " for cell " + cell_text(keyed) + " (operation " + std::to_string(at + 1) + ") finds it empty, but no clear of " +
+              id(expected) + "'s list (cell " + cell_text(m.member_cell[static_cast<std::size_t>(expected)]) + ") was traced"
+        : "the push of " + id(k) + " onto " + list + " for cell " + cell_text(keyed) + " (operation " + std::to_string(at + 1) + ") links it to " +
+              id(expected) + ", pushed onto that list for cell " + cell_text(m.member_cell[static_cast<std::size_t>(expected)]) +
+              ": the head was not cleared before the list was reused, so it runs on into a stale chain";
+    breaks(Contract::ListLink, clear_was_due(hw.array, m.member_at[static_cast<std::size_t>(expected)], at),
+           "this clearing leaves " + list + " set: " + text);
     return;
   }
   m.head[slot] = k;
   ++m.count[slot];
   if (full_key) {
+    cell_listed_at_[static_cast<std::size_t>(k)] = at;
+    last_cell_push_ = at;
     cell_list_[flat(keyed)] = CellList{hw.array, static_cast<std::int64_t>(slot)};
     last_row_push_[row_key(keyed)] = at;
   }
@@ -331,21 +352,40 @@ void ContractChecker::on_visit(std::size_t at, const TraceEvent& e) {
   }
   const Cell& own = cells_[static_cast<std::size_t>(k)];
   Cell o{0, 0, 0};
-  for (int a = 0; a < dim_; ++a) {
-    std::int32_t d = c[static_cast<std::size_t>(a)] - own[static_cast<std::size_t>(a)];
-    const auto last = static_cast<std::int32_t>(g_.n[a] - 1);
-    if (g_.periodic[a] && last >= 2 && (d == last || d == -last)) d = d > 0 ? -1 : 1;
-    if (d < -1 || d > 1) {
-      breaks(Contract::MaskNeighbours, at, "the mask of " + id(k) + " (cell " + cell_text(own) + ") visits cell " + cell_text(c) +
-                                               ", which is not next to it: the mask reaches too far");
+  if (!offset_from(k, c, o)) {
+    breaks(Contract::MaskNeighbours, at, "the mask of " + id(k) + " (cell " + cell_text(own) + ") visits cell " + cell_text(c) +
+                                             ", which is not next to it: the mask reaches too far");
+    return;
+  }
+  Cell mirror{};
+  if (half_ != 0 && lean(o, dim_) == -half_ && !(neighbour(own, Cell{-o[0], -o[1], -o[2]}, mirror) && mirror == c)) {
+    breaks(Contract::MaskHalf, at, "the mask of " + id(k) + " (cell " + cell_text(own) + ") visits cell " + cell_text(c) + ", its neighbour at " +
+                                       offset_text(o) + ", outside the half mask every other visit keeps: the wrong row, layer or column was taken");
+    return;
+  }
+  if (builds_cell_lists_ && half_ != 0 && !row_starts_.empty() && rows_checked_at_ != row_starts_.back().first) {
+    rows_checked_at_ = row_starts_.back().first;
+    check_rows_built(at, own);
+  }
+  if (o == Cell{0, 0, 0} && builds_cell_lists_ && !row_starts_.empty()) {
+    const std::size_t row_start = row_starts_.back().first;
+    const std::size_t listed = cell_listed_at_[static_cast<std::size_t>(k)];
+    if (listed == kNone || listed < row_start) {
+      // Due where this row's build stopped: after its last push, or at its first operation when it pushed nothing.
+      const std::size_t due = last_cell_push_ != kNone && last_cell_push_ > row_start ? last_cell_push_ + 1 : row_start + 1;
+      breaks(Contract::CellList, std::min(due, at), id(k) + " visits its own cell " + cell_text(own) + " (operation " + std::to_string(at + 1) +
+                                                        "), but was not pushed onto that cell's list when its row's lists were built: the loop that builds them left it out");
       return;
     }
-    o[static_cast<std::size_t>(a)] = d;
   }
   const int bit = offset_bit(o, dim_);
+  last_visit_[static_cast<std::size_t>(k)] = at;  // a cell visited twice (offsets are distinct cells from 3 per axis): the wrong cell
+  if (std::all_of(g_.n, g_.n + dim_, [](std::int64_t cells) { return cells >= 3; }) && (visits_[static_cast<std::size_t>(k)] >> bit & 1u) != 0) {
+    breaks(Contract::MaskCell, at, "the mask of " + id(k) + " (cell " + cell_text(own) + ") visits cell " + cell_text(c) + " a second time: the visit names the wrong cell");
+    return;
+  }
   visits_[static_cast<std::size_t>(k)] |= 1u << bit;
   union_ |= 1u << bit;
-  last_visit_[static_cast<std::size_t>(k)] = at;
   if (o != Cell{0, 0, 0}) walk_ = Walk{at, k, c, 0};  // own cell: only the elements after k are walked
 }
 

@@ -29,8 +29,9 @@ enum class Contract : std::uint8_t {
   CellList,        // every element goes onto the list of its own cell (2D: x-list, 3D: x-list of its row)
   MaskInGrid,      // the mask visits cells of the grid only
   MaskNeighbours,  // the mask visits only the cells next to k's own
+  MaskHalf,        // a half mask (the book's) visits only its own half: never a neighbour its mirror relates
   MaskRelates,     // for every neighbour offset, the mask visits it or its opposite (every cell pair is related)
-  MaskCell,        // k's mask visits each of its mask cells that exists and holds elements
+  MaskCell,        // k's mask visits each of its mask cells that exists and holds elements, once
   WalkCell,        // a walk of a visited cell's list meets only elements of that cell
   ListComplete,    // a cell's list holds every element of the cell when a mask walks it
   WalkComplete,    // a walk tests every element of the list it walks

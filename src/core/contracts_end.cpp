@@ -11,10 +11,46 @@ namespace nbscope::contract_detail {
 // Where a row that was never processed was due: the start of the first processed row after it
 // (2D rows go up; 3D's order is the layer lists', so its first later key), else the last row's start.
 std::size_t ContractChecker::row_due(std::int64_t row) const {
+  if (dim_ == 3) return row_due_3d(row);
   for (const auto& [at, key] : row_starts_)
     if (key > row) return at;
+  // No row after it was processed: the last row's start (the loop over the rows, which stopped there);
+  // no row processed at all: the first phase after the first-level lists' pushes began, where the loop
+  // went on past every row.
   if (!row_starts_.empty()) return row_starts_.back().first;
-  return t_.log.events().size() - 1;
+  const std::vector<TraceEvent>& ev = t_.log.events();
+  const std::size_t after = cell_pushes_.empty() ? 0 : cell_pushes_.front().at;
+  for (auto p = std::upper_bound(phases_.begin(), phases_.end(), after); p != phases_.end(); ++p)
+    if (ev[*p].index < 0) return *p;
+  return ev.size() - 1;
+}
+
+// 3D: the book walks a layer's rows in the order its z-list loop meets their heads, the row whose lowest
+// element is highest first. Due at the first processed row of the layer that comes after it so, else
+// where the layer's rows end (its next phase that is no row's), else, a layer never begun, where the
+// loop went on to the next layer or past the last.
+std::size_t ContractChecker::row_due_3d(std::int64_t row) const {
+  const std::vector<TraceEvent>& ev = t_.log.events();
+  const std::int64_t layer = row / g_.n[1];
+  const auto lowest = [&](std::int64_t r) { const auto f = row_member_.find(r); return f == row_member_.end() ? -1 : f->second; };
+  for (const auto& [at, key] : row_starts_)
+    if (key / g_.n[1] == layer && lowest(key) < lowest(row)) return at;
+  std::size_t last_of_layer = kNone;  // the layer's last row phase, or the layer's own first
+  for (const std::size_t p : phases_) {
+    const Cell e = phase_cell(p);
+    if (e[2] != layer) continue;
+    const bool row_phase = e[1] >= 0;
+    if (row_phase || last_of_layer == kNone) last_of_layer = p;  // with no row begun: the layer's first phase
+  }
+  const std::size_t first_push = cell_pushes_.empty() ? 0 : cell_pushes_.front().at;
+  for (const std::size_t p : phases_) {
+    const Cell e = phase_cell(p);
+    if (last_of_layer != kNone ? p <= last_of_layer || (e[2] == layer && e[1] >= 0)
+                               : p <= first_push || (e[2] >= 0 ? e[2] < layer : ev[p].index >= 0))
+      continue;
+    return p;
+  }
+  return row_starts_.empty() ? ev.size() - 1 : row_starts_.back().first;
 }
 
 std::string ContractChecker::row_text(const Cell& c) const {
@@ -90,12 +126,15 @@ void ContractChecker::coverage(std::size_t end) {
   std::unordered_map<std::int64_t, bool> row_visited;
   for (std::int64_t k = 0; k < n_; ++k)
     if (last_visit_[static_cast<std::size_t>(k)] != kNone) row_visited[row_key(cells_[static_cast<std::size_t>(k)])] = true;
-  const bool visits = union_ != 0;
+  // A detector that visits no cell at all while its phases run its loops has processed no row.
+  const bool visits = union_ != 0 || !phases_.empty();
+  bool cell_list_checked = false;
   for (std::int64_t k = 0; k < n_; ++k) {
     const Cell& c = cells_[static_cast<std::size_t>(k)];
     const std::int64_t row = row_key(c);
     const bool listed = !has_cell_lists || on_cell_list_[static_cast<std::size_t>(k)];
     if (visits && !row_visited[row]) {
+      row_visited[row] = true;  // each row once; the earliest due is the break
       std::vector<Pair> cost;
       std::int64_t count = 0;
       for (std::int64_t m = 0; m < n_; ++m)
@@ -107,9 +146,10 @@ void ContractChecker::coverage(std::size_t end) {
       breaks(Contract::RowProcessed, row_due(row), row_text(c) + " holds elements (" + id(k) + " in cell " + cell_text(c) +
                                                        ") but is never processed: its cell lists are not built and no element of it visits a cell",
              std::move(cost), count);
-      return;
+      continue;
     }
-    if (!listed) {
+    if (!listed && !cell_list_checked) {
+      cell_list_checked = true;
       std::size_t due = end;
       for (auto p = cell_pushes_.rbegin(); p != cell_pushes_.rend(); ++p)
         if (p->full && row_key(cells_[static_cast<std::size_t>(p->k)]) == row) {
@@ -119,7 +159,6 @@ void ContractChecker::coverage(std::size_t end) {
       subject_ = Pair{static_cast<ElementId>(k), static_cast<ElementId>(k)};
       breaks(Contract::CellList, due, id(k) + " is never pushed onto the list of its cell " + cell_text(c) + ", while " + row_text(c) +
                                           "'s lists were built: the loop that builds them leaves it out");
-      return;
     }
   }
 }
@@ -127,15 +166,21 @@ void ContractChecker::coverage(std::size_t end) {
 void ContractChecker::mask(std::size_t end) {
   (void)end;
   const int offsets = dim_ == 3 ? 27 : 9;
+  // The book's half mask when the visits keep one (so a bug's wrong visits do not redefine it), else
+  // what the masks of all elements visit.
+  const std::uint32_t bits = mask_bits();
   // Offsets related by neither direction: no mask relates those neighbouring cells. The direction
   // due is the one the mask's other offsets lean to (the book's half masks look down a row or layer).
   for (int bit = 0; bit < offsets; ++bit) {
     const Cell o = offset_of_bit(bit, dim_);
     const Cell opposite{-o[0], -o[1], -o[2]};
     const int back = offset_bit(opposite, dim_);
-    if (bit == back && (union_ >> bit & 1u) != 0) continue;
-    if ((union_ >> bit & 1u) != 0 || (union_ >> back & 1u) != 0 || back < bit) continue;
-    const Cell due = leans_to(o) ? o : opposite;
+    if (bit == back) continue;
+    // An offset of the book's half that no mask visits; with no half, one visited in neither direction.
+    if (half_ != 0 ? lean(o, dim_) != half_ || (union_ >> bit & 1u) != 0
+                   : (union_ >> bit & 1u) != 0 || (union_ >> back & 1u) != 0 || back < bit)
+      continue;
+    const Cell due = half_ != 0 || leans_to(o) ? o : opposite;
     for (std::int64_t k = 0; k < n_; ++k) {
       const std::size_t last = last_visit_[static_cast<std::size_t>(k)];
       Cell c{};
@@ -158,7 +203,7 @@ void ContractChecker::mask(std::size_t end) {
     if (last == kNone) continue;
     if (first_ && first_->event <= last) continue;
     for (int bit = 0; bit < offsets; ++bit) {
-      if ((union_ >> bit & 1u) == 0 || (visits_[static_cast<std::size_t>(k)] >> bit & 1u) != 0) continue;
+      if (((bits & union_) >> bit & 1u) == 0 || (visits_[static_cast<std::size_t>(k)] >> bit & 1u) != 0) continue;
       Cell c{};
       const Cell o = offset_of_bit(bit, dim_);
       if (!neighbour(cells_[static_cast<std::size_t>(k)], o, c) || !members_.count(flat(c))) continue;
@@ -167,7 +212,7 @@ void ContractChecker::mask(std::size_t end) {
       cost_of_cell(static_cast<std::int32_t>(k), c, cost, count);
       subject_ = Pair{static_cast<ElementId>(k), static_cast<ElementId>(k)};
       breaks(Contract::MaskCell, last, "the mask of " + id(k) + " (cell " + cell_text(cells_[static_cast<std::size_t>(k)]) + ") never visits cell " +
-                                           cell_text(c) + ", its neighbour at " + offset_text(o) + ", which holds elements and which other elements' masks visit at that offset",
+                                           cell_text(c) + ", its neighbour at " + offset_text(o) + ", which holds elements and is in the contact mask",
              std::move(cost), count);
       break;
     }

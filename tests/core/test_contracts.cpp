@@ -268,5 +268,179 @@ TEST_F(PlantedBreak, AWalkThatStopsShortIsAWalkComplete) {
   EXPECT_EQ(b.event, visit + 1) << "where the walk stopped: the operation after its visit";
 }
 
+
+TEST_F(PlantedBreak, AVisitOfTheMirrorOffsetIsAMaskHalfAtTheVisit) {
+  // One visit of the row below moved to the row above (in the grid): the book's half mask never
+  // looks up, so the visit itself is the break, whatever the offsets the rest of the trace visits.
+  std::size_t visit = 0;
+  std::int32_t up = -1;
+  for (std::size_t at = 0; at < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    const std::int32_t own = t.grid.cell(t.elements.y[e.element], 1);
+    if (e.op == TraceOp::VisitCell && e.cell[1] == own - 1 && own + 1 < t.grid.n[1]) {
+      visit = at;
+      up = own + 1;
+      break;
+    }
+  }
+  ASSERT_GE(up, 0);
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (at == visit) e.cell[1] = up;
+    return true;
+  }));
+  EXPECT_EQ(b.contract, Contract::MaskHalf) << b.text;
+  EXPECT_EQ(b.event, visit) << b.text;
+}
+
+TEST_F(PlantedBreak, ARowWhoseContactsPhaseDoesNothingIsARowProcessedWhereItsFirstVisitWasDue) {
+  // Every visit and test of one row's "contacts of row" phase dropped: its lists are built and cleared.
+  std::size_t contacts = 0;
+  for (std::size_t at = 0; at + 1 < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    if (e.op == TraceOp::Phase && e.index > 2 && t.log.events()[at + 1].op == TraceOp::VisitCell) {
+      contacts = at;
+      break;
+    }
+  }
+  ASSERT_GT(contacts, 0u);
+  bool in_contacts = false;
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (e.op == TraceOp::Phase) in_contacts = at == contacts;
+    return !in_contacts || e.op == TraceOp::Phase;
+  }));
+  EXPECT_EQ(b.contract, Contract::RowProcessed) << b.text;
+  EXPECT_EQ(b.event, contacts + 1) << b.text;
+}
+
+TEST_F(PlantedBreak, ARowsClearsLeftOutAreAListLinkWhereTheFirstClearWasDue) {
+  // Every clear of one row's clearing phase dropped (the heads are still reset, untraced): the next
+  // push onto one of those lists for another cell finds it empty, though the trace never emptied it.
+  const int heads = t.log.array_id("B");
+  ASSERT_GE(heads, 0);
+  std::size_t clearing = 0;
+  for (std::size_t at = 0; at + 1 < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    const TraceEvent& next = t.log.events()[at + 1];
+    if (e.op == TraceOp::Phase && e.index > 2 && next.op == TraceOp::Clear && next.writes[0].array == heads) {
+      clearing = at;
+      break;
+    }
+  }
+  ASSERT_GT(clearing, 0u);
+  bool in_clearing = false;
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (e.op == TraceOp::Phase) in_clearing = at == clearing;
+    return !(in_clearing && e.op == TraceOp::Clear);
+  }));
+  EXPECT_EQ(b.contract, Contract::ListLink) << b.text;
+  EXPECT_EQ(b.event, clearing + 1) << b.text;
+}
+
+TEST_F(PlantedBreak, ARowWhoseCellListsAreNotBuiltIsACellListWhereItsBuildWasDue) {
+  // The pushes of one row's own elements dropped from its build (the row below is still built): its
+  // elements then visit their own cells, not on their lists; due where the build ended.
+  std::size_t build = 0, contacts = 0;
+  for (std::size_t at = 0; at + 1 < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    if (build == 0 && e.op == TraceOp::Phase && e.index > 2 && t.log.events()[at + 1].op == TraceOp::Push) build = at;
+    else if (build > 0 && e.op == TraceOp::Phase) {
+      contacts = at;
+      break;
+    }
+  }
+  ASSERT_GT(contacts, 0u);
+  const std::int32_t row = t.log.events()[build].index;
+  std::size_t removed = 0;
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    const bool drop = at > build && at < contacts && e.op == TraceOp::Push && e.cell[1] == row;
+    removed += drop ? 1 : 0;
+    return !drop;
+  }));
+  ASSERT_GT(removed, 0u);
+  EXPECT_EQ(b.contract, Contract::CellList) << b.text;
+  EXPECT_EQ(b.event, contacts - removed) << b.text;
+}
+
+TEST_F(PlantedBreak, ARowBelowLeftOutOfTheBuildIsAListCompleteWhereTheBuildEnded) {
+  // The pushes of the row below dropped from one row's build: that row's masks reach cells of it whose
+  // lists were never built; due at the contacts' phase, where the build ended.
+  std::size_t build = 0, contacts = 0;
+  for (std::size_t at = 0; at + 1 < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    if (build == 0 && e.op == TraceOp::Phase && e.index > 2 && t.log.events()[at + 1].op == TraceOp::Push) build = at;
+    else if (build > 0 && e.op == TraceOp::Phase) {
+      contacts = at;
+      break;
+    }
+  }
+  ASSERT_GT(contacts, 0u);
+  const std::int32_t row = t.log.events()[build].index;
+  std::size_t removed = 0;
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    const bool drop = at > build && at < contacts && e.op == TraceOp::Push && e.cell[1] == row - 1;
+    removed += drop ? 1 : 0;
+    return !drop;
+  }));
+  ASSERT_GT(removed, 0u);
+  EXPECT_EQ(b.contract, Contract::ListComplete) << b.text;
+  EXPECT_EQ(b.event, contacts - removed) << b.text;
+}
+
+TEST_F(PlantedBreak, NoRowProcessedAtAllIsARowProcessedWhereTheRowLoopWentOnPastThem) {
+  // Every event of every row's phases dropped (a row test that always says "empty"): the loop over the
+  // rows goes straight on to the clearing of the y-lists.
+  std::int32_t in_row = -1;
+  TraceLog edited = rerecorded(t.log, [&](std::size_t, TraceEvent& e) {
+    if (e.op == TraceOp::Phase) in_row = e.index;
+    return in_row < 0;
+  });
+  std::size_t push = 0;
+  while (edited.events()[push].op != TraceOp::Push) ++push;
+  std::size_t after = push;
+  while (edited.events()[after].op != TraceOp::Phase) ++after;
+  const BrokenContract b = broken_with(std::move(edited));
+  EXPECT_EQ(b.contract, Contract::RowProcessed) << b.text;
+  EXPECT_EQ(b.event, after) << b.text;
+}
+
+TEST_F(PlantedBreak, APushInTheBuildOfARowItsMaskDoesNotReachIsACellListAtThePush) {
+  // One row's build phase named three rows up: the pushes of its rows are then in the build of a row
+  // whose half mask does not reach them (the wrong row's lists were taken).
+  std::size_t build = 0;
+  for (std::size_t at = 0; at + 1 < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    if (e.op == TraceOp::Phase && e.index > 2 && e.index + 3 < t.grid.n[1] && t.log.events()[at + 1].op == TraceOp::Push) {
+      build = at;
+      break;
+    }
+  }
+  ASSERT_GT(build, 0u);
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (at == build) e.index += 3;
+    return true;
+  }));
+  EXPECT_EQ(b.contract, Contract::CellList) << b.text;
+  EXPECT_EQ(b.event, build + 1) << b.text;
+}
+
+TEST_F(PlantedBreak, ACellVisitedTwiceByOneMaskIsAMaskCellAtTheSecondVisit) {
+  // One element's visit of the cell to its left renamed to its own cell, which it visited first.
+  std::size_t visit = 0;
+  for (std::size_t at = 0; at < t.log.events().size(); ++at) {
+    const TraceEvent& e = t.log.events()[at];
+    if (e.op == TraceOp::VisitCell && e.cell[1] == t.grid.cell(t.elements.y[e.element], 1) && e.cell[0] + 1 == t.grid.cell(t.elements.x[e.element], 0)) {
+      visit = at;
+      break;
+    }
+  }
+  ASSERT_GT(visit, 0u);
+  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (at == visit) e.cell[0] += 1;
+    return true;
+  }));
+  EXPECT_EQ(b.contract, Contract::MaskCell) << b.text;
+  EXPECT_EQ(b.event, visit) << b.text;
+}
+
 }  // namespace
 }  // namespace nbscope

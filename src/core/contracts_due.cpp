@@ -1,0 +1,179 @@
+// nbscope core: where the book's loops say work was due (contract_checker.hpp): which row or layer a
+// plugin's phase works on, the half mask the visits keep, the rows a row's build must reach, a row
+// phase that did nothing, and the clearing where a missing clear was due.
+#include <algorithm>
+
+#include "core/contract_checker.hpp"
+
+namespace nbscope::contract_detail {
+
+void ContractChecker::infer_phase_cells() {
+  const std::vector<TraceEvent>& ev = t_.log.events();
+  // A plugin's phase names only its index: a row's (iy) or a layer's (iz). Which, and the row's layer,
+  // is read off the first operation of its segment; phases of the same line are of the same kind.
+  std::unordered_map<std::uint8_t, bool> line_is_row;
+  std::unordered_map<std::size_t, std::int32_t> row_layer;
+  std::unordered_map<int, bool> array_is_row;  // per heads array: its pushes key a whole cell (a row's lists) or a row of a layer
+  for (const TraceEvent& e : ev)
+    if (e.op == TraceOp::Push && e.write_count > 1 && e.cell[1] >= 0) array_is_row.emplace(e.writes[1].array, e.cell[0] >= 0);
+  for (std::size_t i = 0; i < phases_.size(); ++i) {
+    const TraceEvent& e = ev[phases_[i]];
+    if (e.cell[0] >= 0 || e.cell[1] >= 0 || e.cell[2] >= 0 || e.index < 0) continue;
+    const std::size_t q = phases_[i] + 1;
+    if (q >= ev.size() || ev[q].op == TraceOp::Phase) continue;
+    const TraceEvent& first = ev[q];
+    const bool keyed_row = (first.op == TraceOp::VisitCell || (first.op == TraceOp::Push && first.cell[0] >= 0)) && first.cell[1] == e.index;
+    if (keyed_row) {
+      line_is_row[e.line] = true;
+      row_layer[phases_[i]] = first.cell[2];
+    } else if (first.op == TraceOp::Push && first.cell[0] < 0 && first.cell[1] >= 0 && first.cell[2] == e.index) {
+      line_is_row.emplace(e.line, false);
+    } else if (first.op == TraceOp::Clear && first.write_count > 0) {  // a clearing: of the lists of a row, or of a layer
+      const auto kind = array_is_row.find(first.writes[0].array);
+      if (kind != array_is_row.end()) line_is_row.emplace(e.line, kind->second);
+    }
+  }
+  std::int32_t layer = -1, row = -1;
+  for (const std::size_t p : phases_) {
+    const TraceEvent& e = ev[p];
+    Cell c{e.cell[0], e.cell[1], e.cell[2]};
+    auto kind = line_is_row.find(e.line);
+    // A line never resolved (a row's contacts that visit nothing anywhere): the row's phase when it follows that row's.
+    if (kind == line_is_row.end() && e.index >= 0 && e.index == row) kind = line_is_row.emplace(e.line, true).first;
+    if (c == Cell{-1, -1, -1} && e.index >= 0 && kind != line_is_row.end()) {
+      row = kind->second ? e.index : -1;
+      const auto known = row_layer.find(p);
+      if (!kind->second) layer = e.index;
+      c = kind->second ? Cell{-1, e.index, known != row_layer.end() ? known->second : layer} : Cell{-1, -1, e.index};
+    }
+    phase_cells_.emplace(p, c);
+  }
+}
+
+std::optional<std::size_t> ContractChecker::clear_due(int heads, std::size_t pushed, std::size_t before) const {
+  const auto found = clear_lines_.find(heads);
+  if (found == clear_lines_.end()) return std::nullopt;
+  const std::vector<TraceEvent>& ev = t_.log.events();
+  for (auto p = std::upper_bound(phases_.begin(), phases_.end(), pushed); p != phases_.end() && *p < before; ++p)
+    if (std::find(found->second.begin(), found->second.end(), ev[*p].line) != found->second.end()) return *p;
+  return std::nullopt;
+}
+
+std::size_t ContractChecker::clear_was_due(int heads, std::size_t pushed, std::size_t at) const {
+  const std::vector<TraceEvent>& ev = t_.log.events();
+  std::optional<std::size_t> phase = clear_due(heads, pushed, at);
+  if (!phase) {  // no clear of this array is traced: the phase before the reusing push's own
+    const auto after = std::upper_bound(phases_.begin(), phases_.end(), at);
+    if (after - phases_.begin() >= 2 && *(after - 2) > pushed) phase = *(after - 2);
+  }
+  if (!phase) return at;
+  for (std::size_t e = *phase + 1; e < at && ev[e].op != TraceOp::Phase; ++e)
+    if (ev[e].op == TraceOp::Clear && ev[e].write_count > 0 && ev[e].writes[0].array == heads) return *phase;
+  return *phase + 1;  // the clearing cleared nothing of it: due at its first clear
+}
+
+void ContractChecker::close_phase(std::size_t at) {
+  const std::size_t phase = open_phase_;
+  open_phase_ = kNone;
+  if (phase == kNone || !complete_ || at != phase + 1) return;  // the segment did something
+  const TraceEvent& e = t_.log.events()[phase];
+  // Which lines visit is read off the trace; where no phase visits at all, every row phase must do something.
+  if (!visit_lines_.empty() && std::find(visit_lines_.begin(), visit_lines_.end(), e.line) == visit_lines_.end()) return;
+  const Cell pc = phase_cell(phase);
+  if (dim_ == 3 && (pc[1] < 0 || pc[2] < 0)) return;
+  const std::int64_t row = dim_ == 3 ? std::int64_t{pc[2]} * g_.n[1] + pc[1] : e.index;
+  const auto held = row_member_.find(row);
+  if (held == row_member_.end()) return;
+  const std::int32_t k = held->second;
+  subject_ = Pair{k, k};
+  // The row's phases before it that did nothing too (its lists built from nothing): due at the first.
+  std::size_t due = phase + 1;
+  for (auto p = std::lower_bound(phases_.begin(), phases_.end(), phase); p != phases_.begin(); --p) {
+    const std::size_t before = *(p - 1);
+    if (before + 1 != *p || phase_cell(before) != phase_cell(phase) || (dim_ == 2 && t_.log.events()[before].index != e.index)) break;
+    due = before + 1;
+  }
+  const std::string phase_name = e.label[0] != '\0' ? std::string(e.label) : std::string("its phase");
+  breaks(Contract::RowProcessed, std::min(due, t_.log.events().size() - 1),
+         row_text(cells_[static_cast<std::size_t>(k)]) + " holds elements (" + id(k) + " in cell " + cell_text(cells_[static_cast<std::size_t>(k)]) +
+             ") but its phase '" + phase_name + "' (operation " + std::to_string(phase + 1) + ") does nothing: no element of it visits a cell");
+}
+
+void ContractChecker::check_rows_built(std::size_t at, const Cell& own) {
+  const std::size_t row_start = row_starts_.back().first;
+  const auto phase = std::upper_bound(phases_.begin(), phases_.end(), at);
+  const std::size_t due = phase == phases_.begin() ? at : *(phase - 1);  // the contacts' phase: where the build ended
+  const int offsets = dim_ == 3 ? 27 : 9;
+  for (int bit = 0; bit < offsets; ++bit) {
+    const Cell o = offset_of_bit(bit, dim_);
+    if (o[0] != 0 || (lean(o, dim_) != half_ && o != Cell{0, 0, 0})) continue;  // each row the half mask reaches, once
+    Cell c = own;
+    bool inside = true;
+    for (int a = 1; a < dim_; ++a) {
+      c[static_cast<std::size_t>(a)] = g_.neighbour(own[static_cast<std::size_t>(a)], o[static_cast<std::size_t>(a)], a);
+      inside = inside && c[static_cast<std::size_t>(a)] >= 0;
+    }
+    const std::int64_t row = row_key(c);
+    if (!inside || o == Cell{0, 0, 0} || !row_member_.count(row)) continue;  // the own row: cell-list at its own visit
+    const auto pushed = last_row_push_.find(row);
+    if (pushed != last_row_push_.end() && pushed->second > row_start) continue;
+    const std::int32_t m = row_member_.at(row);
+    breaks(Contract::ListComplete, due, row_text(cells_[static_cast<std::size_t>(m)]) + " holds elements (" + id(m) + " in cell " +
+                                           cell_text(cells_[static_cast<std::size_t>(m)]) + "), which " + row_text(own) + "'s mask reaches, but " +
+                                           row_text(own) + "'s build (operation " + std::to_string(row_start + 1) + ") put none of them on a cell list");
+    return;
+  }
+}
+
+bool ContractChecker::row_reaches(std::int64_t building, std::int64_t row) const {
+  const std::int64_t ny = g_.n[1];
+  const std::int32_t by = static_cast<std::int32_t>(dim_ == 3 ? building % ny : building), ry = static_cast<std::int32_t>(dim_ == 3 ? row % ny : row);
+  const std::int32_t bz = static_cast<std::int32_t>(dim_ == 3 ? building / ny : 0), rz = static_cast<std::int32_t>(dim_ == 3 ? row / ny : 0);
+  for (std::int32_t dz = dim_ == 3 ? -1 : 0; dz <= (dim_ == 3 ? 1 : 0); ++dz)
+    for (std::int32_t dy = -1; dy <= 1; ++dy) {
+      const Cell o{0, dy, dz};
+      if (o != Cell{0, 0, 0} && lean(o, dim_) != half_) continue;
+      if (g_.neighbour(by, dy, 1) == ry && (dim_ != 3 || g_.neighbour(bz, dz, 2) == rz)) return true;
+    }
+  return false;
+}
+
+bool ContractChecker::offset_from(std::int32_t k, const Cell& c, Cell& o) const {
+  const Cell& own = cells_[static_cast<std::size_t>(k)];
+  o = Cell{0, 0, 0};
+  for (int a = 0; a < dim_; ++a) {
+    std::int32_t d = c[static_cast<std::size_t>(a)] - own[static_cast<std::size_t>(a)];
+    const auto last = static_cast<std::int32_t>(g_.n[a] - 1);
+    if (g_.periodic[a] && last >= 2 && (d == last || d == -last)) d = d > 0 ? -1 : 1;
+    if (d < -1 || d > 1) return false;
+    o[static_cast<std::size_t>(a)] = d;
+  }
+  return true;
+}
+
+int ContractChecker::half_of_visits() const {
+  std::int64_t down = 0, up = 0;
+  for (const TraceEvent& e : t_.log.events()) {
+    Cell o{};
+    if (e.op != TraceOp::VisitCell || !in_range(e.element)) continue;
+    if (!offset_from(e.element, Cell{e.cell[0], e.cell[1], dim_ == 3 ? e.cell[2] : -1}, o)) continue;
+    const int l = lean(o, dim_);
+    if (l < 0) ++down;
+    else if (l > 0) ++up;
+  }
+  // Visits the other way are a bug's while they are fewer than half; as many both ways is a full mask.
+  if (down > 0 && up * 2 < down) return -1;
+  if (up > 0 && down * 2 < up) return 1;
+  return 0;
+}
+
+std::uint32_t ContractChecker::mask_bits() const {
+  if (half_ == 0) return union_;
+  const int offsets = dim_ == 3 ? 27 : 9;
+  std::uint32_t bits = union_ & (1u << offset_bit(Cell{0, 0, 0}, dim_));
+  for (int bit = 0; bit < offsets; ++bit)
+    if (lean(offset_of_bit(bit, dim_), dim_) == half_) bits |= 1u << bit;
+  return bits;
+}
+
+}  // namespace nbscope::contract_detail
