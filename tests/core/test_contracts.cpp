@@ -292,6 +292,32 @@ TEST_F(PlantedBreak, AVisitOfTheMirrorOffsetIsAMaskHalfAtTheVisit) {
   EXPECT_EQ(b.event, visit) << b.text;
 }
 
+TEST_F(PlantedBreak, AMirrorHalfLateInTheFrameDoesNotRedefineTheMask) {
+  // From the frame's middle visit on, every visit of the row below goes to the row above: the whole
+  // trace leans both ways nearly alike (as the stale lists of a wrong clear made 3D mutants do), but
+  // its first quarter keeps the book's half, so the first turned visit is the break, not an element
+  // before it blamed for a mask the late visits made up.
+  std::vector<std::size_t> visits;
+  for (std::size_t at = 0; at < t.log.events().size(); ++at)
+    if (t.log.events()[at].op == TraceOp::VisitCell) visits.push_back(at);
+  ASSERT_GE(visits.size(), 64u);
+  const std::size_t from = visits[visits.size() / 2];
+  std::size_t first = t.log.events().size();
+  const TraceLog turned = rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
+    if (at < from || e.op != TraceOp::VisitCell) return true;
+    const std::int32_t own = t.grid.cell(t.elements.y[e.element], 1);
+    if (e.cell[1] == own - 1 && own + 1 < t.grid.n[1]) {
+      e.cell[1] = own + 1;
+      first = std::min(first, at);
+    }
+    return true;
+  });
+  ASSERT_LT(first, t.log.events().size());
+  const BrokenContract b = broken_with(turned);
+  EXPECT_EQ(b.contract, Contract::MaskHalf) << b.text;
+  EXPECT_EQ(b.event, first) << b.text;
+}
+
 TEST_F(PlantedBreak, ARowWhoseContactsPhaseDoesNothingIsARowProcessedWhereItsFirstVisitWasDue) {
   // Every visit and test of one row's "contacts of row" phase dropped: its lists are built and cleared.
   std::size_t contacts = 0;
