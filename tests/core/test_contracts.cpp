@@ -276,8 +276,9 @@ TEST_F(PlantedBreak, AVisitOfTheMirrorOffsetIsAMaskHalfAtTheVisit) {
   std::int32_t up = -1;
   for (std::size_t at = 0; at < t.log.events().size(); ++at) {
     const TraceEvent& e = t.log.events()[at];
+    if (e.op != TraceOp::VisitCell) continue;  // only a visit names an element to look up
     const std::int32_t own = t.grid.cell(t.elements.y[e.element], 1);
-    if (e.op == TraceOp::VisitCell && e.cell[1] == own - 1 && own + 1 < t.grid.n[1]) {
+    if (e.cell[1] == own - 1 && own + 1 < t.grid.n[1]) {
       visit = at;
       up = own + 1;
       break;
