@@ -67,7 +67,8 @@ bool give_pair(const nbscope_output* out, std::int32_t i, std::int32_t j) {
   return out->add_pair(out->ctx, i, j) == 0 && !s.broke_rule;
 }
 
-// A traced operation on the plugin's arrays. Returns false once a rule is broken (nbscope stops listening).
+// A traced operation on the plugin's arrays. Returns false once a rule is broken; a breaking trace call
+// never returns (nbscope ends the plugin's call in it), so the account is kept before each call.
 bool trace_op(Bytes& in, const nbscope_trace* t, std::uint8_t op) {
   Script& s = *g_script;
   const auto line = static_cast<std::int32_t>(index_for(in, 4));
@@ -97,6 +98,7 @@ bool trace_op(Bytes& in, const nbscope_trace* t, std::uint8_t op) {
       }
       ok = rank >= 1 && rank <= 3 && !negative;
       if (!ok) {
+        s.broke_rule = true;  // before the call: nbscope ends the call inside it
         t->declare_array(t->ctx, "bad", rank, shape, nullptr);
         break;
       }
@@ -123,6 +125,7 @@ bool trace_op(Bytes& in, const nbscope_trace* t, std::uint8_t op) {
         if (before != last.end() && before->second == std::make_pair(list, build)) s.broke_rule = true;
         last[k] = {list, build};
       }
+      s.broke_rule = s.broke_rule || !ok;  // known before the call: nbscope ends the call inside a breaking one
       t->push(t->ctx, line, "list", static_cast<std::int32_t>(heads), list, static_cast<std::int32_t>(next),
               static_cast<std::int32_t>(k), 0, 0, -1);
       break;
@@ -135,6 +138,7 @@ bool trace_op(Bytes& in, const nbscope_trace* t, std::uint8_t op) {
         entry(heads, list) = -1;
         ++s.builds[{heads, list}];
       }
+      s.broke_rule = s.broke_rule || !ok;  // known before the call: nbscope ends the call inside a breaking one
       t->clear(t->ctx, line, "list", static_cast<std::int32_t>(heads), list);
       break;
     }
@@ -144,6 +148,7 @@ bool trace_op(Bytes& in, const nbscope_trace* t, std::uint8_t op) {
       const std::int64_t k = in.u8() % 2 == 0 ? -1 : index_for(in, s.n);
       ok = ok && entry_ok(array, index) && element_ok(k, true);
       if (ok) entry(array, index) = static_cast<std::int32_t>(in.u8()) - 1;
+      s.broke_rule = s.broke_rule || !ok;  // known before the call: nbscope ends the call inside a breaking one
       t->set(t->ctx, line, "entry", static_cast<std::int32_t>(array), index, static_cast<std::int32_t>(k));
       break;
     }
@@ -154,6 +159,7 @@ bool trace_op(Bytes& in, const nbscope_trace* t, std::uint8_t op) {
         s.visitor = k;
         s.walked.clear();
       }
+      s.broke_rule = s.broke_rule || !ok;  // known before the call: nbscope ends the call inside a breaking one
       t->visit_cell(t->ctx, line, static_cast<std::int32_t>(k), in.u8(), in.u8(), -1);
       break;
     }
@@ -162,10 +168,12 @@ bool trace_op(Bytes& in, const nbscope_trace* t, std::uint8_t op) {
       ok = ok && element_ok(k, false) && element_ok(other, false);
       // A walk that meets an element twice follows a list closed on itself: nbscope stops the call.
       if (ok && k == s.visitor && !s.walked.insert(other).second) s.broke_rule = true;
+      s.broke_rule = s.broke_rule || !ok;  // known before the call: nbscope ends the call inside a breaking one
       t->test_pair(t->ctx, line, static_cast<std::int32_t>(k), static_cast<std::int32_t>(other), in.u8() % 2);
       break;
     }
     default:  // a phase
+      s.broke_rule = s.broke_rule || !ok;  // known before the call: nbscope ends the call inside a breaking one
       t->phase(t->ctx, line, in.u8() % 2 == 0 ? "rows" : nullptr, static_cast<std::int32_t>(in.u8()) - 1);
       break;
   }
