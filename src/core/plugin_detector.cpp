@@ -210,11 +210,7 @@ PluginDetector::~PluginDetector() {
   symbols_.release(state_);
 }
 
-bool PluginDetector::supports_dim(int dim) const {
-  if (dim == 2) return (capabilities_ & NBSCOPE_CAP_2D) != 0;
-  if (dim == 3) return (capabilities_ & NBSCOPE_CAP_3D) != 0;
-  return false;
-}
+bool PluginDetector::supports_dim(int dim) const { return description_->handles(dim); }
 
 void PluginDetector::detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) {
   run(elements, options, out_pairs, nullptr);
@@ -238,9 +234,7 @@ std::size_t PluginDetector::own_bytes() const {
 
 const std::vector<CellIndex>* PluginDetector::own_cells() const { return has_cells_ ? &cells_ : nullptr; }
 
-const std::vector<const char*>& PluginDetector::pseudocode(int dim) const {
-  return description_->line_texts[dim == 3 ? 1 : 0];
-}
+const std::vector<const char*>& PluginDetector::pseudocode(int dim) const { return description_->lines_of(dim); }
 
 void PluginDetector::run(const Elements& elements, const DetectOptions& options, PairList& out_pairs, TraceLog* trace) {
   if (!supports_dim(elements.dim))

@@ -128,6 +128,13 @@ struct PluginDescription {
   std::uint32_t capabilities = 0;
   std::vector<std::string> lines[2];        // pseudocode, 2D and 3D
   std::vector<const char*> line_texts[2];   // c_str() of each of lines[]
+
+  // True when the plugin declared NBSCOPE_CAP_2D (dim 2) or NBSCOPE_CAP_3D (dim 3).
+  [[nodiscard]] bool handles(int dim) const {
+    return (dim == 2 && (capabilities & NBSCOPE_CAP_2D) != 0) || (dim == 3 && (capabilities & NBSCOPE_CAP_3D) != 0);
+  }
+  // Its pseudocode lines for `dim`.
+  [[nodiscard]] const std::vector<const char*>& lines_of(int dim) const { return line_texts[dim == 3 ? 1 : 0]; }
 };
 
 // The registry entry of a described plugin: capabilities as DetectorInfo's, `make` building a

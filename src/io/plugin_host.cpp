@@ -224,13 +224,9 @@ IsolatedPluginDetector::~IsolatedPluginDetector() {
   }
 }
 
-bool IsolatedPluginDetector::supports_dim(int dim) const {
-  return (dim == 2 && (description_->capabilities & NBSCOPE_CAP_2D) != 0) || (dim == 3 && (description_->capabilities & NBSCOPE_CAP_3D) != 0);
-}
+bool IsolatedPluginDetector::supports_dim(int dim) const { return description_->handles(dim); }
 
-const std::vector<const char*>& IsolatedPluginDetector::pseudocode(int dim) const {
-  return description_->line_texts[dim == 3 ? 1 : 0];
-}
+const std::vector<const char*>& IsolatedPluginDetector::pseudocode(int dim) const { return description_->lines_of(dim); }
 
 void IsolatedPluginDetector::detect(const Elements& elements, const DetectOptions& options, PairList& out_pairs) {
   run(elements, options, out_pairs, nullptr);
