@@ -6,7 +6,8 @@ mutated one change at a time, each mutant is built as a plugin and run headless 
 nbscope said: equivalent on this data, located at the mutated line, located at the first operation it
 changed, located elsewhere, caught but not located, API error, hang, crash, or nbscope itself aborted.
 "The first operation it changed": the located operation is the first at which the frame's trace
-differs from the unmodified reference's on the same frame (scripts/mutants_trace_shim.c writes both).
+differs from the unmodified reference's on the same frame (scripts/mutants_trace_shim.c writes both);
+a crash or hang located "after operation N" where the mutant's trace ends at N is located there too.
 
 Index: constants | tagged lines (code and comments apart) | the four operators | mutants (ids, subset)
 | build | run one mutant over the scenes | the first changed operation | classify one run |
@@ -307,6 +308,9 @@ _reference_traces = {}
 _reference_lock = threading.Lock()
 
 
+SHIM_WORDS = {"call", "declare", "phase", "push", "clear", "visit", "test", "set"}  # mutants_trace_shim.c's lines
+
+
 def frame_trace(args, name, scene, frame):
     """The operations of frame `frame` of OUT/NAME.traced.so on `scene`, one text line each (the shim's),
     and how many calls nbscope made for that frame; (None, 0) when none was written."""
@@ -322,9 +326,13 @@ def frame_trace(args, name, scene, frame):
             lines = f.read().split("\n")
     except OSError:
         return None, 0
+    lines.pop()  # a crash inside a trace call leaves its line unfinished (no newline): no operation
+    # A crashed call's host and the host nbscope starts to record it again up to the crash both write
+    # the file: a fragment one left is no operation.
+    lines = [l for l in lines if l.split(" ", 1)[0] in SHIM_WORDS]
     calls = sum(1 for l in lines if l.startswith("call "))
     last = max(i for i, l in enumerate(lines) if l.startswith("call ")) if calls else -1
-    return [l for l in lines[last + 1:] if l and not l.startswith("declare ")], calls
+    return [l for l in lines[last + 1:] if not l.startswith("declare ")], calls
 
 
 def reference_trace(args, scene, frame):
@@ -363,6 +371,10 @@ def credit_first_change(args, mutant, scene, text):
         change["note"] = "the shim's trace (%d operations, %d calls) is not the one nbscope located in (%s)" % (
             len(mine), calls, located.get("operations"))
     elif operation == first + 1:
+        mutant.verdict = FIRST_CHANGED
+    elif first == len(mine) and operation == first and located.get("text", "").startswith("after operation"):
+        # A crash or hang ends the trace: nbscope names the boundary ("after operation N"), and the
+        # first change is the operation N+1 the mutant never made.
         mutant.verdict = FIRST_CHANGED
     mutant.first_change = change
 

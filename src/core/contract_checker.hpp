@@ -199,6 +199,22 @@ class ContractChecker {
   // list-complete, at a row's first visit: every row its half mask reaches that holds elements was built
   // into cell lists since the row began; due at the phase before the visit, where the build ended.
   void check_rows_built(std::size_t at, const Cell& own);
+  // 3D list-complete, at a layer's first row phase (or its next phase, when it has no row): every row of this layer, and every row of the layer
+  // its half mask reaches next to one of this layer's rows, had all its elements pushed onto the y-lists
+  // since the layer's phase; due after the last push onto that layer's lists (the loop that stopped).
+  void check_layer_built(std::size_t at, std::int32_t layer);
+  std::vector<std::uint8_t> layer_build_lines_;                // lines of the phases that build a layer's y-lists (3D)
+  std::size_t layer_start_ = kNone;                            // the phase of the layer being built (3D)
+  bool layer_checked_ = false;                                 // its build was checked at its first row phase
+  std::unordered_map<std::int64_t, std::int64_t> layer_row_pushes_;  // per row key: y-list pushes since layer_start_
+  std::unordered_map<std::int32_t, std::size_t> layer_last_push_;   // per layer: its last y-list push since layer_start_
+  std::unordered_map<std::int64_t, std::int64_t> row_count_;         // per row key: elements it holds
+  std::unordered_map<std::int32_t, std::vector<std::int32_t>> layer_rows_;  // per layer: its rows that hold elements
+  // list-complete, at a row's second phase (its build done): every element of the row itself went onto a cell list.
+  void check_own_row_built(std::size_t at);
+  std::int64_t own_row_pushes_ = 0;          // pushes of the row's own elements onto cell lists since its start
+  std::size_t own_row_last_push_ = kNone;    // and the last of them
+  std::size_t own_row_checked_at_ = kNone;   // the row start whose own row was checked
   // True when row key `row` is `building` itself or a row its half mask reaches.
   bool row_reaches(std::int64_t building, std::int64_t row) const;
   std::unordered_map<std::size_t, Cell> phase_cells_;          // 3D: per phase, the row (-1,iy,iz) or layer (-1,-1,iz) it works on
@@ -209,7 +225,15 @@ class ContractChecker {
     if (found != phase_cells_.end()) return found->second;
     const TraceEvent& e = t_.log.events()[at];
     return Cell{e.cell[0], e.cell[1], e.cell[2]};
-  }                             // the current row phase, while its segment is empty
+  }
+  // True when the phase at `at` itself says its work is at `value` on axis a (its cell, or its index:
+  // a row's on y, a layer's on z), not only a cell inferred from the operations after it.
+  bool phase_names(std::size_t at, int a, std::int32_t value) const {
+    const TraceEvent& e = t_.log.events()[at];
+    if (e.cell[0] >= 0 || e.cell[1] >= 0 || e.cell[2] >= 0) return e.cell[a] == value;
+    const Cell c = phase_cell(at);
+    return e.index == value && a == (c[1] >= 0 || dim_ == 2 ? 1 : 2);
+  }
   Pair subject_{-1, -1};  // the elements the event being checked names (BrokenContract::subject)
   std::optional<BrokenContract> first_;
 };

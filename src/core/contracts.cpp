@@ -1,6 +1,7 @@
-// nbscope core: the list algorithms' contracts along a trace (contracts.hpp).
+// nbscope core: the list algorithms' contracts along a trace (contracts.hpp); each contract's name
+// and rule are in contract_names.cpp.
 //
-// Index: naming | Model (what the frame's lists hold so far, per heads array) | Checker: the events
+// Index: Model (what the frame's lists hold so far, per heads array) | Checker: the events
 // in order (pushes, clears, visits, tests), then the end of the frame (coverage, the mask) | the API.
 #include "core/contracts.hpp"
 
@@ -12,64 +13,6 @@
 #include <unordered_map>
 
 namespace nbscope {
-
-const char* contract_name(Contract c) {
-  switch (c) {
-    case Contract::FirstLevelOnce: return "first-level-once";
-    case Contract::ListCell: return "list-cell";
-    case Contract::ListLink: return "list-link";
-    case Contract::ListTwice: return "list-twice";
-    case Contract::ClearWrites: return "clear-writes";
-    case Contract::RowProcessed: return "row-processed";
-    case Contract::CellList: return "cell-list";
-    case Contract::MaskInGrid: return "mask-in-grid";
-    case Contract::MaskNeighbours: return "mask-neighbours";
-    case Contract::MaskHalf: return "mask-half";
-    case Contract::MaskRelates: return "mask-relates";
-    case Contract::MaskCell: return "mask-cell";
-    case Contract::WalkCell: return "walk-cell";
-    case Contract::ListComplete: return "list-complete";
-    case Contract::WalkComplete: return "walk-complete";
-    case Contract::TestSelf: return "test-self";
-    case Contract::TestAnswer: return "test-answer";
-    case Contract::TestOnce: return "test-once";
-    case Contract::TestReported: return "test-reported";
-    case Contract::HeadsCleared: return "heads-cleared";
-    case Contract::Cycle: return "cycle";
-    case Contract::ApiRule: return "api-rule";
-  }
-  return "?";
-}
-
-const char* contract_rule(Contract c) {
-  switch (c) {
-    case Contract::FirstLevelOnce: return "every element goes onto exactly one first-level list (2D: y-list, 3D: z-list)";
-    case Contract::ListCell: return "an element goes only onto lists keyed to its own cell";
-    case Contract::ListLink: return "a push links the element to the head its list had in this frame";
-    case Contract::ListTwice: return "an element goes onto one build of a list once";
-    case Contract::ClearWrites: return "a clear leaves the head at -1";
-    case Contract::RowProcessed: return "every row that holds elements gets its cell lists built and its contacts tested";
-    case Contract::CellList: return "every element goes onto the list of its own cell";
-    case Contract::MaskInGrid: return "the contact mask visits cells of the grid only";
-    case Contract::MaskNeighbours: return "the contact mask visits only the cells next to the element's own";
-    case Contract::MaskHalf: return "a half mask visits only its own half of the neighbours (the book's: the cells before the element's own)";
-    case Contract::MaskRelates: return "for every neighbour offset the mask visits it or its opposite";
-    case Contract::MaskCell: return "each element's mask visits every mask cell that exists and holds elements, once";
-    case Contract::WalkCell: return "the walk of a visited cell's list meets only elements of that cell";
-    case Contract::ListComplete: return "a cell's list holds every element of the cell when a mask walks it";
-    case Contract::WalkComplete: return "a walk tests every element of the list it walks";
-    case Contract::TestSelf: return "no element is tested against itself";
-    case Contract::TestAnswer: return "each test answers the exact contact test";
-    case Contract::TestOnce: return "each pair is tested once";
-    case Contract::TestReported: return "a test that answered contact is reported as a pair";
-    case Contract::HeadsCleared: return "every head the frame set is -1 again when it ends";
-    case Contract::Cycle: return "no list closes on itself";
-    case Contract::ApiRule:
-      return "the plugin API's rules hold: pairs in range, never (k, k), never twice; trace calls name declared arrays, "
-             "entries and elements; every cell is written";
-  }
-  return "?";
-}
 
 namespace contract_detail {
 
@@ -89,7 +32,11 @@ ContractChecker::ContractChecker(const FrameTrace& t, const ContractNames& names
   reported_.reserve(t.pairs.size());
   for (const Pair& p : t.pairs) reported_.push_back(key(p.i, p.j));
   std::sort(reported_.begin(), reported_.end());
-  for (std::int64_t k = n_; k-- > 0;) row_member_[row_key(cells_[static_cast<std::size_t>(k)])] = static_cast<std::int32_t>(k);
+  for (std::int64_t k = n_; k-- > 0;) {
+    const Cell& c = cells_[static_cast<std::size_t>(k)];
+    row_member_[row_key(c)] = static_cast<std::int32_t>(k);  // the lowest k last
+    if (row_count_[row_key(c)]++ == 0 && dim_ == 3) layer_rows_[c[2]].push_back(c[1]);
+  }
   cell_listed_at_.assign(static_cast<std::size_t>(n_), kNone);
   const std::vector<TraceEvent>& ev = t.log.events();
   std::size_t phase = kNone;
@@ -140,7 +87,15 @@ void ContractChecker::end_walk(std::size_t at) {
 std::optional<BrokenContract> ContractChecker::run() {
   const std::vector<TraceEvent>& ev = t_.log.events();
   half_ = half_of_visits();
-  if (dim_ == 3) infer_phase_cells();
+  if (dim_ == 3) {
+    infer_phase_cells();
+    for (const std::size_t p : phases_) {  // the lines of the layers' builds: a layer phase whose first operation pushes onto its y-lists
+      const Cell pc = phase_cell(p);
+      const bool build = pc[1] < 0 && pc[2] >= 0 && p + 1 < ev.size() && ev[p + 1].op == TraceOp::Push && ev[p + 1].cell[0] < 0 && ev[p + 1].cell[2] == pc[2];
+      if (build && std::find(layer_build_lines_.begin(), layer_build_lines_.end(), ev[p].line) == layer_build_lines_.end())
+        layer_build_lines_.push_back(ev[p].line);
+    }
+  }
   for (std::size_t at = 0; at < ev.size(); ++at) {  // on past a break: coverage needs every event
     const TraceEvent& e = ev[at];
     if (e.op != TraceOp::TestPair) end_walk(at);
@@ -200,11 +155,37 @@ void ContractChecker::on_phase(std::size_t at, const TraceEvent& e) {
   close_phase(at);
   std::int64_t row = -1;
   const Cell pc = phase_cell(at);
+  // 3D: a layer's build ends at its first row phase, or at any other phase when it has no row (checked once).
+  if (dim_ == 3 && layer_start_ != kNone && !layer_checked_ && at != layer_start_) {
+    const std::int32_t layer = phase_cell(layer_start_)[2];
+    if (pc[1] < 0 || pc[2] == layer) {
+      layer_checked_ = true;
+      check_layer_built(at, layer);
+    }
+  }
+  if (dim_ == 3 && pc[1] < 0 && pc[2] >= 0) {
+    // A layer's phase is a build when its line's phases push onto y-lists, and its own first push (if
+    // any) is of its layer: one that names another layer is a trace that names the wrong one.
+    const std::vector<TraceEvent>& ev = t_.log.events();
+    const bool own = at + 1 >= ev.size() || ev[at + 1].op != TraceOp::Push || ev[at + 1].cell[2] == pc[2];
+    const bool line = std::find(layer_build_lines_.begin(), layer_build_lines_.end(), e.line) != layer_build_lines_.end();
+    layer_start_ = own && line ? at : kNone;
+    layer_checked_ = false;
+    layer_row_pushes_.clear();
+    layer_last_push_.clear();
+  }
   if (dim_ == 3 && pc[1] >= 0 && pc[2] >= 0) row = std::int64_t{pc[2]} * g_.n[1] + pc[1];
   else if (dim_ == 2 && e.index >= 0) row = e.index;
   if (row < 0) return;
   open_phase_ = at;
-  if (row_starts_.empty() || row_starts_.back().second != row) row_starts_.emplace_back(at, row);
+  if (row_starts_.empty() || row_starts_.back().second != row) {
+    row_starts_.emplace_back(at, row);
+    own_row_pushes_ = 0;
+    own_row_last_push_ = kNone;
+  } else if (builds_cell_lists_ && own_row_checked_at_ != row_starts_.back().first) {
+    own_row_checked_at_ = row_starts_.back().first;
+    check_own_row_built(at);
+  }
 }
 
 void ContractChecker::on_push(std::size_t at, const TraceEvent& e) {
@@ -230,7 +211,7 @@ void ContractChecker::on_push(std::size_t at, const TraceEvent& e) {
     // phase when one names it, else at the push.
     const Cell list_cell{e.cell[0], e.cell[1], e.cell[2]};
     std::int64_t row = dim_ == 3 ? std::int64_t{e.cell[2]} * g_.n[1] + e.cell[1] : e.cell[1];
-    const bool phase = !row_starts_.empty() && row_starts_.back().second == row;
+    const bool phase = !row_starts_.empty() && row_starts_.back().second == row && phase_names(row_starts_.back().first, a, e.cell[a]);
     breaks(Contract::ListCell, phase ? row_starts_.back().first : at,
            id(k) + " is pushed onto " + list + ", the list of cell " + cell_text(list_cell) + ", outside the grid's " + grid_text() +
                " cells: a loop ran past the last row or column");
@@ -306,11 +287,16 @@ void ContractChecker::on_push(std::size_t at, const TraceEvent& e) {
   }
   m.head[slot] = k;
   ++m.count[slot];
+  if (layer_start_ != kNone && !full_key && e.cell[1] >= 0 && dim_ == 3 && e.cell[2] >= 0) {
+    ++layer_row_pushes_[row_key(keyed)];
+    layer_last_push_[keyed[2]] = at;
+  }
   if (full_key) {
     cell_listed_at_[static_cast<std::size_t>(k)] = at;
     last_cell_push_ = at;
     cell_list_[flat(keyed)] = CellList{hw.array, static_cast<std::int64_t>(slot)};
     last_row_push_[row_key(keyed)] = at;
+    if (!row_starts_.empty() && row_key(keyed) == row_starts_.back().second) ++own_row_pushes_, own_row_last_push_ = at;
   }
   m.member_cell[static_cast<std::size_t>(k)] = keyed;
   m.member_at[static_cast<std::size_t>(k)] = at;

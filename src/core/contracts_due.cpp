@@ -34,6 +34,15 @@ void ContractChecker::infer_phase_cells() {
       if (kind != array_is_row.end()) line_is_row.emplace(e.line, kind->second);
     }
   }
+  // A line no segment resolves (a row's build that pushed nothing anywhere): a row's when its phase is
+  // followed at once by a row phase of the same index.
+  for (std::size_t i = 0; i + 1 < phases_.size(); ++i) {
+    const TraceEvent& e = ev[phases_[i]];
+    const TraceEvent& next = ev[phases_[i + 1]];
+    const auto next_kind = line_is_row.find(next.line);
+    if (phases_[i] + 1 == phases_[i + 1] && e.index >= 0 && next.index == e.index && next_kind != line_is_row.end() && next_kind->second)
+      line_is_row.emplace(e.line, true);
+  }
   std::int32_t layer = -1, row = -1;
   for (const std::size_t p : phases_) {
     const TraceEvent& e = ev[p];
@@ -124,6 +133,65 @@ void ContractChecker::check_rows_built(std::size_t at, const Cell& own) {
                                            row_text(own) + "'s build (operation " + std::to_string(row_start + 1) + ") put none of them on a cell list");
     return;
   }
+}
+
+void ContractChecker::check_layer_built(std::size_t at, std::int32_t layer) {
+  if (!builds_cell_lists_ || half_ == 0) return;
+  const auto rows = layer_rows_.find(layer);
+  if (rows == layer_rows_.end()) return;
+  std::size_t due = kNone;
+  std::int64_t short_row = -1;
+  const auto pushed_of = [this](std::int64_t row) {
+    const auto p = layer_row_pushes_.find(row);
+    return p == layer_row_pushes_.end() ? std::int64_t{0} : p->second;
+  };
+  for (const std::int32_t iy : rows->second)
+    for (std::int32_t dz = -1; dz <= 1; ++dz)
+      for (std::int32_t dy = -1; dy <= 1; ++dy) {
+        const Cell o{0, dy, dz};
+        if (o != Cell{0, 0, 0} && lean(o, dim_) != half_) continue;  // the rows the half mask reaches
+        const std::int32_t ry = g_.neighbour(iy, dy, 1), rz = g_.neighbour(layer, dz, 2);
+        if (ry < 0 || rz < 0) continue;
+        const std::int64_t row = std::int64_t{rz} * g_.n[1] + ry;
+        const auto holds = row_count_.find(row);
+        if (holds == row_count_.end() || pushed_of(row) >= holds->second) continue;
+        // The loop over that layer stopped after its last push; one that never pushed was due where the build ended.
+        const auto last = layer_last_push_.find(rz);
+        const auto build_end = std::max_element(layer_last_push_.begin(), layer_last_push_.end(),
+                                                [](const auto& a, const auto& b) { return a.second < b.second; });
+        const std::size_t row_due = last != layer_last_push_.end() ? last->second + 1
+                                    : build_end != layer_last_push_.end() ? build_end->second + 1 : at;
+        if (std::min(row_due, at) < due) due = std::min(row_due, at), short_row = row;
+      }
+  if (short_row < 0) return;
+  const std::int32_t m = row_member_.at(short_row);
+  const Cell& c = cells_[static_cast<std::size_t>(m)];
+  subject_ = Pair{m, m};
+  breaks(Contract::ListComplete, due,
+         row_text(c) + " holds " + std::to_string(row_count_.at(short_row)) + " element(s) (" + id(m) + " in cell " + cell_text(c) + "), which the mask of layer " +
+             std::to_string(names_.book_numbering ? layer + 1 : layer) + " reaches, but that layer's build (operation " + std::to_string(layer_start_ + 1) + ") pushed " +
+             std::to_string(pushed_of(short_row)) + " of them onto its y-lists before its first row (operation " + std::to_string(at + 1) +
+             "): the loop over layer " + std::to_string(names_.book_numbering ? c[2] + 1 : c[2]) + "'s list stops early or never runs");
+}
+
+void ContractChecker::check_own_row_built(std::size_t at) {
+  const auto [row_start, row] = row_starts_.back();
+  // Only a row begun by its build: a phase that says it visits or clears begins no build (a phase naming the wrong row).
+  const std::uint8_t line = t_.log.events()[row_start].line;
+  if (std::find(visit_lines_.begin(), visit_lines_.end(), line) != visit_lines_.end()) return;
+  for (const auto& [heads, lines] : clear_lines_)
+    if (std::find(lines.begin(), lines.end(), line) != lines.end()) return;
+  const auto holds = row_count_.find(row);
+  if (holds == row_count_.end() || own_row_pushes_ >= holds->second) return;
+  const std::int32_t m = row_member_.at(row);
+  const Cell& c = cells_[static_cast<std::size_t>(m)];
+  subject_ = Pair{m, m};
+  // Its own row's elements first, as the book builds them: due after the last of them, or at the build's start.
+  const std::size_t due = own_row_last_push_ != kNone ? own_row_last_push_ + 1 : row_start + 1;
+  breaks(Contract::ListComplete, std::min(due, at),
+         row_text(c) + " holds " + std::to_string(holds->second) + (holds->second == 1 ? " element" : " elements") + " (" + id(m) + " in cell " + cell_text(c) +
+             "), but its build (operation " + std::to_string(row_start + 1) + ") put " + std::to_string(own_row_pushes_) +
+             " of them on cell lists before its next phase (operation " + std::to_string(at + 1) + "): the loop over its own y-list stops early or never runs");
 }
 
 bool ContractChecker::row_reaches(std::int64_t building, std::int64_t row) const {
