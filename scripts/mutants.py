@@ -7,7 +7,8 @@ nbscope said: equivalent on this data, located at the mutated line, located at t
 changed, located elsewhere, caught but not located, API error, hang, crash, or nbscope itself aborted.
 "The first operation it changed": the located operation is the first at which the frame's trace
 differs from the unmodified reference's on the same frame (scripts/mutants_trace_shim.c writes both);
-a crash or hang located "after operation N" where the mutant's trace ends at N is located there too.
+a crash, hang or refused trace call located "after operation N" where the first change is operation
+N+1 is located there too.
 
 Index: constants | tagged lines (code and comments apart) | the four operators | mutants (ids, subset)
 | build | run one mutant over the scenes | the first changed operation | classify one run |
@@ -365,16 +366,18 @@ def credit_first_change(args, mutant, scene, text):
     change = {"operation": first + 1, "operations": len(mine), "calls": calls,
               "mutant": mine[first] if first < len(mine) else "(its trace ends)",
               "reference": theirs[first] if first < len(theirs) else "(its trace ends)"}
+    # A crash, a hang or a trace call nbscope refused ends the call: nbscope names the boundary ("after
+    # operation N"), the first change is operation N+1, the one the call never made right (the shim
+    # wrote a refused call before nbscope saw it: one operation more than nbscope's).
+    after = located.get("text", "").startswith("after operation") and located.get("operations") in (len(mine), len(mine) - 1)
     if mine == theirs:
         change = {"note": "its trace of frame %d equals the reference's" % frame, "operations": len(mine)}
+    elif after and calls == 1 and operation == first:
+        mutant.verdict = FIRST_CHANGED
     elif calls != 1 or (located.get("operations") is not None and located["operations"] != len(mine)):
         change["note"] = "the shim's trace (%d operations, %d calls) is not the one nbscope located in (%s)" % (
             len(mine), calls, located.get("operations"))
     elif operation == first + 1:
-        mutant.verdict = FIRST_CHANGED
-    elif first == len(mine) and operation == first and located.get("text", "").startswith("after operation"):
-        # A crash or hang ends the trace: nbscope names the boundary ("after operation N"), and the
-        # first change is the operation N+1 the mutant never made.
         mutant.verdict = FIRST_CHANGED
     mutant.first_change = change
 

@@ -212,7 +212,8 @@ void ContractChecker::on_push(std::size_t at, const TraceEvent& e) {
     const Cell list_cell{e.cell[0], e.cell[1], e.cell[2]};
     std::int64_t row = dim_ == 3 ? std::int64_t{e.cell[2]} * g_.n[1] + e.cell[1] : e.cell[1];
     const bool phase = !row_starts_.empty() && row_starts_.back().second == row && phase_names(row_starts_.back().first, a, e.cell[a]);
-    breaks(Contract::ListCell, phase ? row_starts_.back().first : at,
+    const bool layer = !phase && dim_ == 3 && layer_start_ != kNone && phase_names(layer_start_, a, e.cell[a]);  // a layer loop ran past the last
+    breaks(Contract::ListCell, phase ? row_starts_.back().first : layer ? layer_start_ : at,
            id(k) + " is pushed onto " + list + ", the list of cell " + cell_text(list_cell) + ", outside the grid's " + grid_text() +
                " cells: a loop ran past the last row or column");
     return;
