@@ -36,14 +36,18 @@ class PlantedBreak : public ::testing::Test {
  protected:
   void SetUp() override { t = traced("nbs", Layout::Dense, 400, 2, 3); }
   // The first broken contract of `t` with its log replaced by `log`; it must be one.
-  BrokenContract broken_with(TraceLog log) {
-    t.log = std::move(log);
-    const std::optional<BrokenContract> b = first_broken_contract(t);
-    if (!b) {
-      ADD_FAILURE() << "no contract broken";
-      return {};
+  BrokenContract broken_with(TraceLog log) { return testdata::broken_with(t, std::move(log)); }
+  // The build phase of the first row above row 2 whose build pushes, and the phase after it (its contacts').
+  void find_row_build(std::size_t& build, std::size_t& contacts) const {
+    build = contacts = 0;
+    for (std::size_t at = 0; at + 1 < t.log.events().size(); ++at) {
+      const TraceEvent& e = t.log.events()[at];
+      if (build == 0 && e.op == TraceOp::Phase && e.index > 2 && t.log.events()[at + 1].op == TraceOp::Push) build = at;
+      else if (build > 0 && e.op == TraceOp::Phase) {
+        contacts = at;
+        return;
+      }
     }
-    return *b;
   }
   FrameTrace t;
 };
@@ -316,14 +320,7 @@ TEST_F(PlantedBreak, ARowWhoseOwnElementsAreLeftOutOfItsBuildIsAListCompleteWher
   // The pushes of one row's own elements dropped from its build (the row below is still built): the
   // book builds a row's own lists first, so they were due at the build's first operation.
   std::size_t build = 0, contacts = 0;
-  for (std::size_t at = 0; at + 1 < t.log.events().size(); ++at) {
-    const TraceEvent& e = t.log.events()[at];
-    if (build == 0 && e.op == TraceOp::Phase && e.index > 2 && t.log.events()[at + 1].op == TraceOp::Push) build = at;
-    else if (build > 0 && e.op == TraceOp::Phase) {
-      contacts = at;
-      break;
-    }
-  }
+  find_row_build(build, contacts);
   ASSERT_GT(contacts, 0u);
   const std::int32_t row = t.log.events()[build].index;
   std::size_t removed = 0;
@@ -341,14 +338,7 @@ TEST_F(PlantedBreak, ARowBelowLeftOutOfTheBuildIsAListCompleteWhereTheBuildEnded
   // The pushes of the row below dropped from one row's build: that row's masks reach cells of it whose
   // lists were never built; due at the contacts' phase, where the build ended.
   std::size_t build = 0, contacts = 0;
-  for (std::size_t at = 0; at + 1 < t.log.events().size(); ++at) {
-    const TraceEvent& e = t.log.events()[at];
-    if (build == 0 && e.op == TraceOp::Phase && e.index > 2 && t.log.events()[at + 1].op == TraceOp::Push) build = at;
-    else if (build > 0 && e.op == TraceOp::Phase) {
-      contacts = at;
-      break;
-    }
-  }
+  find_row_build(build, contacts);
   ASSERT_GT(contacts, 0u);
   const std::int32_t row = t.log.events()[build].index;
   std::size_t removed = 0;

@@ -15,15 +15,7 @@ using testdata::traced;
 class PlantedBreak3D : public ::testing::Test {
  protected:
   void SetUp() override { t = traced("nbs", Layout::Dense, 600, 3, 7); }
-  BrokenContract broken_with(TraceLog log) {
-    t.log = std::move(log);
-    const std::optional<BrokenContract> b = first_broken_contract(t);
-    if (!b) {
-      ADD_FAILURE() << "no contract broken";
-      return {};
-    }
-    return *b;
-  }
+  BrokenContract broken_with(TraceLog log) { return testdata::broken_with(t, std::move(log)); }
   // The phase of the first layer above layer 0 whose build pushes, and its first row's phase.
   void find_layer_build(std::size_t& layer, std::size_t& first_row) const {
     layer = first_row = 0;

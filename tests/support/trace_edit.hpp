@@ -1,9 +1,10 @@
 // Traces to plant breaks in (tests of first_broken_contract): one traced detection as trace_frame
-// would make it, and a log recorded again event by event through an edit.
+// would make it, a log recorded again event by event through an edit, and the contract it breaks.
 #pragma once
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,17 @@ inline std::size_t first_event(const TraceLog& log, const std::function<bool(con
     if (pick(log.events()[at])) return at;
   ADD_FAILURE() << "no such event";
   return 0;
+}
+
+// The first broken contract of `t` with its log replaced by `log`; it must be one.
+inline BrokenContract broken_with(FrameTrace& t, TraceLog log) {
+  t.log = std::move(log);
+  const std::optional<BrokenContract> b = first_broken_contract(t);
+  if (!b) {
+    ADD_FAILURE() << "no contract broken";
+    return {};
+  }
+  return *b;
 }
 
 }  // namespace nbscope::testdata
