@@ -168,7 +168,7 @@ void ContractChecker::check_layer_built(std::size_t at, std::int32_t layer) {
   const Cell& c = cells_[static_cast<std::size_t>(m)];
   subject_ = Pair{m, m};
   breaks(Contract::ListComplete, due,
-         row_text(c) + " holds " + std::to_string(row_count_.at(short_row)) + " element(s) (" + id(m) + " in cell " + cell_text(c) + "), which the mask of layer " +
+         row_text(c) + " holds " + std::to_string(row_count_.at(short_row)) + (row_count_.at(short_row) == 1 ? " element (" : " elements (") + id(m) + " in cell " + cell_text(c) + "), which the mask of layer " +
              std::to_string(names_.book_numbering ? layer + 1 : layer) + " reaches, but that layer's build (operation " + std::to_string(layer_start_ + 1) + ") pushed " +
              std::to_string(pushed_of(short_row)) + " of them onto its y-lists before its first row (operation " + std::to_string(at + 1) +
              "): the loop over layer " + std::to_string(names_.book_numbering ? c[2] + 1 : c[2]) + "'s list stops early or never runs");
