@@ -145,6 +145,9 @@ void ContractChecker::check_layer_built(std::size_t at, std::int32_t layer) {
     const auto p = layer_row_pushes_.find(row);
     return p == layer_row_pushes_.end() ? std::int64_t{0} : p->second;
   };
+  // The loop over a layer stopped after its last push; one that never pushed was due where the build's pushes ended.
+  const auto build_end = std::max_element(layer_last_push_.begin(), layer_last_push_.end(),
+                                          [](const auto& a, const auto& b) { return a.second < b.second; });
   for (const std::int32_t iy : rows->second)
     for (std::int32_t dz = -1; dz <= 1; ++dz)
       for (std::int32_t dy = -1; dy <= 1; ++dy) {
@@ -155,10 +158,7 @@ void ContractChecker::check_layer_built(std::size_t at, std::int32_t layer) {
         const std::int64_t row = std::int64_t{rz} * g_.n[1] + ry;
         const auto holds = row_count_.find(row);
         if (holds == row_count_.end() || pushed_of(row) >= holds->second) continue;
-        // The loop over that layer stopped after its last push; one that never pushed was due where the build ended.
         const auto last = layer_last_push_.find(rz);
-        const auto build_end = std::max_element(layer_last_push_.begin(), layer_last_push_.end(),
-                                                [](const auto& a, const auto& b) { return a.second < b.second; });
         const std::size_t row_due = last != layer_last_push_.end() ? last->second + 1
                                     : build_end != layer_last_push_.end() ? build_end->second + 1 : at;
         if (std::min(row_due, at) < due) due = std::min(row_due, at), short_row = row;
@@ -170,7 +170,7 @@ void ContractChecker::check_layer_built(std::size_t at, std::int32_t layer) {
   breaks(Contract::ListComplete, due,
          row_text(c) + " holds " + std::to_string(row_count_.at(short_row)) + (row_count_.at(short_row) == 1 ? " element (" : " elements (") + id(m) + " in cell " + cell_text(c) + "), which the mask of layer " +
              std::to_string(names_.book_numbering ? layer + 1 : layer) + " reaches, but that layer's build (operation " + std::to_string(layer_start_ + 1) + ") pushed " +
-             std::to_string(pushed_of(short_row)) + " of them onto its y-lists before its first row (operation " + std::to_string(at + 1) +
+             std::to_string(pushed_of(short_row)) + " of them onto its y-lists when it ended (operation " + std::to_string(at + 1) +
              "): the loop over layer " + std::to_string(names_.book_numbering ? c[2] + 1 : c[2]) + "'s list stops early or never runs");
 }
 
