@@ -16,6 +16,7 @@ namespace {
 using testdata::first_event;
 using testdata::rerecorded;
 using testdata::traced;
+using testdata::without;
 
 TEST(Contracts, EveryTracedBuiltInKeepsThemOnEveryLayout) {
   for (const DetectorInfo& info : detector_infos()) {
@@ -324,11 +325,9 @@ TEST_F(PlantedBreak, ARowWhoseOwnElementsAreLeftOutOfItsBuildIsAListCompleteWher
   ASSERT_GT(contacts, 0u);
   const std::int32_t row = t.log.events()[build].index;
   std::size_t removed = 0;
-  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
-    const bool drop = at > build && at < contacts && e.op == TraceOp::Push && e.cell[1] == row;
-    removed += drop ? 1 : 0;
-    return !drop;
-  }));
+  const BrokenContract b = broken_with(without(t.log, [&](std::size_t at, const TraceEvent& e) {
+    return at > build && at < contacts && e.op == TraceOp::Push && e.cell[1] == row;
+  }, removed));
   ASSERT_GT(removed, 0u);
   EXPECT_EQ(b.contract, Contract::ListComplete) << b.text;
   EXPECT_EQ(b.event, build + 1) << b.text;
@@ -342,11 +341,9 @@ TEST_F(PlantedBreak, ARowBelowLeftOutOfTheBuildIsAListCompleteWhereTheBuildEnded
   ASSERT_GT(contacts, 0u);
   const std::int32_t row = t.log.events()[build].index;
   std::size_t removed = 0;
-  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
-    const bool drop = at > build && at < contacts && e.op == TraceOp::Push && e.cell[1] == row - 1;
-    removed += drop ? 1 : 0;
-    return !drop;
-  }));
+  const BrokenContract b = broken_with(without(t.log, [&](std::size_t at, const TraceEvent& e) {
+    return at > build && at < contacts && e.op == TraceOp::Push && e.cell[1] == row - 1;
+  }, removed));
   ASSERT_GT(removed, 0u);
   EXPECT_EQ(b.contract, Contract::ListComplete) << b.text;
   EXPECT_EQ(b.event, contacts - removed) << b.text;

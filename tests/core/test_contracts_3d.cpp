@@ -11,6 +11,7 @@ namespace {
 
 using testdata::rerecorded;
 using testdata::traced;
+using testdata::without;
 
 class PlantedBreak3D : public ::testing::Test {
  protected:
@@ -41,11 +42,9 @@ TEST_F(PlantedBreak3D, ALayerBelowLeftOutOfALayersBuildIsAListCompleteWhereTheBu
   ASSERT_GT(first_row, 0u);
   const std::int32_t iz = t.log.events()[layer].cell[2];
   std::size_t removed = 0;
-  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
-    const bool drop = at > layer && at < first_row && e.op == TraceOp::Push && e.cell[2] == iz - 1;
-    removed += drop ? 1 : 0;
-    return !drop;
-  }));
+  const BrokenContract b = broken_with(without(t.log, [&](std::size_t at, const TraceEvent& e) {
+    return at > layer && at < first_row && e.op == TraceOp::Push && e.cell[2] == iz - 1;
+  }, removed));
   ASSERT_GT(removed, 0u);
   EXPECT_EQ(b.contract, Contract::ListComplete) << b.text;
   EXPECT_EQ(b.event, first_row - removed) << b.text;
@@ -62,11 +61,9 @@ TEST_F(PlantedBreak3D, ALayerWithNoRowIsCheckedWhereItsBuildEnded) {
   while (clearing < t.log.events().size() && !(t.log.events()[clearing].op == TraceOp::Phase && t.log.events()[clearing].cell[1] < 0)) ++clearing;
   ASSERT_LT(clearing, t.log.events().size());
   std::size_t removed = 0;
-  const BrokenContract b = broken_with(rerecorded(t.log, [&](std::size_t at, TraceEvent& e) {
-    const bool drop = (at > layer && at < first_row && e.op == TraceOp::Push && e.cell[2] == iz - 1) || (at >= first_row && at < clearing);
-    removed += drop ? 1 : 0;
-    return !drop;
-  }));
+  const BrokenContract b = broken_with(without(t.log, [&](std::size_t at, const TraceEvent& e) {
+    return (at > layer && at < first_row && e.op == TraceOp::Push && e.cell[2] == iz - 1) || (at >= first_row && at < clearing);
+  }, removed));
   EXPECT_EQ(b.contract, Contract::ListComplete) << b.text;
   EXPECT_EQ(b.event, clearing - removed) << b.text;
 }

@@ -69,6 +69,16 @@ inline std::size_t first_event(const TraceLog& log, const std::function<bool(con
   return 0;
 }
 
+// `log` without the events `drop` picks; `removed` counts them.
+inline TraceLog without(const TraceLog& log, const std::function<bool(std::size_t at, const TraceEvent& e)>& drop, std::size_t& removed) {
+  removed = 0;
+  return rerecorded(log, [&](std::size_t at, TraceEvent& e) {
+    const bool gone = drop(at, e);
+    removed += gone ? 1 : 0;
+    return !gone;
+  });
+}
+
 // The first broken contract of `t` with its log replaced by `log`; it must be one.
 inline BrokenContract broken_with(FrameTrace& t, TraceLog log) {
   t.log = std::move(log);
