@@ -4,6 +4,7 @@
 //
 // Index: loading | one frame | time travel | the parts.
 #include "app/frame_loop_impl.hpp"
+#include "app/frame_sources.hpp"
 #include "io/scene_json.hpp"
 
 namespace nbscope {
@@ -24,12 +25,23 @@ void load_recording_file(FrameLoop& loop, const std::string& path, std::int64_t 
   loop.load_recording(read_recording(path, max_frames));
 }
 
-void FrameLoop::load_scene(const Scene& scene) { impl_->build(scene); }
+void FrameLoop::load(std::unique_ptr<FrameSource> source) { impl_->load(std::move(source)); }
+void FrameLoop::load_scene(const Scene& scene) {
+  impl_->wait_for_worker();  // no Box2D call beside the worker's; a scene refused leaves its step pending
+  load(simulated_source(scene, impl_->options.max_contacts));
+}
 void FrameLoop::load_recording(Recording recording) { load_recording(held_frames(std::move(recording))); }
-void FrameLoop::load_recording(std::unique_ptr<RecordedFrames> frames) { impl_->build(std::move(frames)); }
+void FrameLoop::load_recording(std::unique_ptr<RecordedFrames> frames) {
+  load(recorded_source(std::move(frames), impl_->options.history_budget));
+}
 void FrameLoop::restart() {
-  if (impl_->live) impl_->build(Scene(impl_->scene));
-  else if (impl_->replay) impl_->start();
+  FrameLoopState& m = *impl_;
+  if (!m.loaded()) return;
+  m.watch.disarm();  // its note describes the old world
+  m.watch.reset();   // a new run
+  m.discard_step();
+  m.frames->rewind();
+  m.start();
 }
 
 // ---- one frame -----------------------------------------------------------------------------
@@ -37,27 +49,25 @@ void FrameLoop::restart() {
 void FrameLoop::step() {
   FrameLoopState& m = *impl_;
   if (m.settle()) return;  // the frame begin_step() started
-  if (m.resume.active()) return;
-  if (m.kept) {
-    // A past frame: the next one is the run's own, kept (or the live one).
+  if (m.resuming()) return;
+  if (!m.loaded()) return;
+  if (m.frames->showing_past()) {
+    // A past frame: the next one is the run's own, kept (or the newest).
     if (const auto next = history_.neighbour(1)) {
       show_frame(*next);
       m.change.kind = FrameChange::Kind::stepped;  // forwards through the run's own frames: a step, to the views
     }
     return;
   }
-  if (!m.loaded() || !m.source().can_step()) return;
+  if (!m.frames->can_step()) return;
   const FrameLoopState::Unwatch unwatch{m.watch};
-  if (m.replay) {
-    // A recorded frame's predecessor is read again if the stale-positions fault asks for it: no copy per frame.
-    m.set_physics_ms(m.replay->step());  // nothing is simulated: 0
-    m.detect_and_check(FrameChange::Kind::stepped);
-    return;
-  }
-  Elements previous = m.now();  // the stale-positions fault's positions for the next frame
-  m.watch_physics();
-  m.set_physics_ms(m.live->step());
-  m.pipeline.remember_previous(m.frame_number(), std::move(previous));
+  // The stale-positions fault detects the next frame on this one's positions: kept now, when it is
+  // on (else a source reads the frame before again if the fault is turned on later).
+  const bool stale = m.pipeline.options().fault == Fault::StalePositions;
+  Elements previous = stale ? m.now() : Elements{};
+  m.watch_step();
+  m.set_physics_ms(m.frames->step());  // 0 when nothing is simulated
+  if (stale) m.pipeline.remember_previous(m.frame_number(), std::move(previous));
   m.detect_and_check(FrameChange::Kind::stepped);
 }
 
@@ -69,7 +79,7 @@ void FrameLoop::show_frame(std::int64_t frame) {
   FrameLoopState& m = *impl_;
   if (!m.loaded()) return;
   m.settle();  // the newest frame first, so that the run (and its history) is whole
-  if (m.resume.active()) throw Error("frame " + std::to_string(frame) + ": the simulation is being resumed; wait or cancel");
+  if (m.resuming()) throw Error("frame " + std::to_string(frame) + ": the simulation is being resumed; wait or cancel");
   if (!history_.can_show(frame)) {
     const auto first = m.history.first_kept();
     const std::int64_t newest = history_.newest_frame();
@@ -78,16 +88,9 @@ void FrameLoop::show_frame(std::int64_t frame) {
                 " are; a larger history budget keeps more)");
   }
   if (frame == m.frame_number()) return;
-  const double physics_ms = 0;  // nothing was simulated to show it
-  if (m.replay) {
-    m.replay->show(frame);
-  } else if (frame == m.live->world().frame()) {
-    m.kept.reset();
-  } else {
-    m.live->release_drag();  // leaving the live frame: nobody holds a body in the past
-    m.kept = std::make_unique<KeptWorldFrame>(m.live->world(), m.history.state(*m.history.find(frame)));
-  }
-  m.set_physics_ms(physics_ms);
+  const auto index = m.history.find(frame);
+  m.frames->show(frame, index ? m.history.state(*index) : nullptr);
+  m.set_physics_ms(0);  // nothing was simulated to show it
   m.detect_and_check(FrameChange::Kind::shown);
 }
 

@@ -43,6 +43,7 @@
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
 #include "core/frame_trace.hpp"
+#include "io/frame_source.hpp"
 #include "io/recorded_frames.hpp"
 #include "io/recording.hpp"
 #include "physics/scene.hpp"
@@ -105,6 +106,9 @@ class FrameLoop {
   FrameLoop& operator=(const FrameLoop&) = delete;
 
   // ---- loading ----
+  // Runs `source`'s frames (app/frame_sources.hpp makes them): its first frame detected and checked,
+  // a new run. On error (a `recorded` lane it cannot feed) the old source stays.
+  void load(std::unique_ptr<FrameSource> source);
   // Builds the scene, then computes frame 0. On error the old scene stays.
   void load_scene(const Scene& scene);
   // Replays a recording (at least one frame) instead of a world: its first frame detected and checked,

@@ -1,13 +1,13 @@
 // nbscope app: FrameLoop's private state, shared by the .cpp files that implement the loop
 // (frame_loop.cpp: frames, configuration, accessors; frame_loop_history.cpp: showing kept frames and
-// resuming; frame_loop_overlap.cpp: the overlapped step). Not for anyone else: it includes Box2D.
+// resuming; frame_loop_overlap.cpp: the overlapped step). Not for anyone else.
 //
-// Who owns what: the frame sources (physics/live_world.hpp, physics/kept_frame.hpp,
-// io/recording_source.hpp) make frames; the pipeline (check/pipeline.hpp) detects and checks them
-// into a FrameResult; the history and the violation log keep the run; FrameLoopState coordinates them.
+// Who owns what: the frame source (io/frame_source.hpp; made in app/frame_sources.cpp) makes frames
+// and shows past ones; the pipeline (check/pipeline.hpp) detects and checks them into a FrameResult;
+// the history and the violation log keep the run; FrameLoopState coordinates them and names no
+// concrete source.
 #pragma once
 #include <algorithm>
-#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -18,31 +18,21 @@
 #include "app/frame_watch.hpp"
 #include "check/pipeline.hpp"
 #include "core/error.hpp"
-#include "io/recording_source.hpp"
-#include "physics/kept_frame.hpp"
-#include "physics/live_world.hpp"
-#include "physics/resume.hpp"
+#include "io/frame_source.hpp"
 
 namespace nbscope {
 
 struct FrameLoopState {
   FrameLoopOptions options;
-  Scene scene;
-  // The frame sources: the live world for a scene, or a recording (the other null); `kept` when a
-  // past frame is shown. source() is the one shown.
-  std::unique_ptr<LiveWorld> live;
-  std::unique_ptr<RecordingSource> replay;
-  std::unique_ptr<KeptWorldFrame> kept;  // the past frame shown, or null for the live world's
-  // The recorded frame LoopSource::element_ids() last looked up, held while its ids are used.
-  mutable std::shared_ptr<const RecordedFrame> looked_up;
+  // The run's frames: a simulated scene or recorded frames, or null before the first load.
+  std::unique_ptr<FrameSource> frames;
+  // The atom ids LoopSource::element_ids() last looked up, held while they are used.
+  mutable std::shared_ptr<const std::vector<std::int64_t>> looked_up;
   Pipeline pipeline;
 
   // ---- history ----
   FrameHistory history;
   ViolationLog violations;
-
-  // ---- resume ----
-  Resume resume;  // a fresh world re-simulated to the past frame shown (physics/resume.hpp)
 
   FrameChange change;               // what the last detect_and_check() published (FrameLoop::change)
   bool load_unpublished = false;    // a new source whose first detection threw: the next change carries it
@@ -51,12 +41,9 @@ struct FrameLoopState {
   // The slow-frame note (app/frame_watch.hpp). Declared last: its thread, which may read the world's
   // counters, is joined before anything else goes.
   FrameWatch watch;
-  // The frame the live world's step() is making: the note describes Box2D's step.
-  void watch_physics() {
-    const PhysicsWorld* w = &live->world();
-    watch.arm(w->frame() + 1, [w] {
-      return "Box2D step: " + grouped(w->bodies_now()) + " bodies, about " + grouped(w->estimated_contacts()) + " contacts";
-    });
+  // The frame the source's step() is making, when the source says what that is (Box2D's step).
+  void watch_step() {
+    if (auto note = frames->step_note()) watch.arm(frames->newest_frame() + 1, std::move(note));
   }
   // Disarms the note when a frame is done, returned or thrown.
   struct Unwatch {
@@ -69,39 +56,44 @@ struct FrameLoopState {
   FrameLoopState(const FrameLoopState&) = delete;
   FrameLoopState& operator=(const FrameLoopState&) = delete;
 
+  // The source's simulation (the overlapped step, drags, resume), or null.
+  [[nodiscard]] Simulation* simulation() const { return frames ? frames->simulation() : nullptr; }
   // True while a step begun by FrameLoop::begin_step() has not been adopted.
-  [[nodiscard]] bool pending() const { return live && live->pending(); }
+  [[nodiscard]] bool pending() const {
+    const Simulation* sim = simulation();
+    return sim != nullptr && sim->pending();
+  }
+  // True while a resume re-simulates towards the past frame shown.
+  [[nodiscard]] bool resuming() const {
+    const Simulation* sim = simulation();
+    return sim != nullptr && sim->resuming();
+  }
   // Returns once the worker is done with the world (the accessors still show the current frame).
   void wait_for_worker() const {
-    if (live) live->wait();
+    if (const Simulation* sim = simulation()) sim->wait();
   }
   // The step in flight made the current frame (detected and checked, as step() does); true if there
   // was one. Throws Error as step() does.
   bool settle();
   // The step in flight forgotten, its world about to be replaced (a load or restart).
-  void discard_step();
+  void discard_step() {
+    if (Simulation* sim = simulation()) sim->discard_step();
+  }
 
   // ---- the frame source ----
-  [[nodiscard]] bool loaded() const { return live != nullptr || replay != nullptr; }
-  // The frame shown: a kept past frame, the live world's (its snapshot while a step is pending), or
-  // the recording's.
-  [[nodiscard]] const FrameSource& source() const {
-    if (kept) return *kept;
-    if (live) return *live;
-    return *replay;
-  }
+  [[nodiscard]] bool loaded() const { return frames != nullptr; }
+  // The frame shown (loaded() first).
+  [[nodiscard]] const FrameSource& source() const { return *frames; }
   [[nodiscard]] const Elements& now() const { return source().elements(); }
   [[nodiscard]] std::int64_t frame_number() const { return source().frame(); }
-  // The live world's frame: the newest of the run (the one shown while a step is pending).
-  [[nodiscard]] std::int64_t live_frame() const { return live->newest_frame(); }
 
   // The shown frame through the pipeline (lanes, faults, check), then into the history; then
   // published as a change of `kind` (a redetect that finds another frame shown moved it too).
   void detect_and_check(FrameChange::Kind kind);
   // The current frame detected and checked again (a step in flight is adopted instead).
   void redetect();
-  // The shown frame's summary into the history (a new live frame is pushed with its kept state; a
-  // frame shown again has its counts replaced), and its violations into the run's log.
+  // The shown frame's summary into the history (a new frame is pushed with what the source keeps of
+  // it; a frame shown again has its counts replaced), and its violations into the run's log.
   void record_frame();
   // The current frame's physics time, measured on this thread (settle() marks the worker's).
   void set_physics_ms(double ms) {
@@ -112,13 +104,12 @@ struct FrameLoopState {
   static void check_recorded_source(bool wanted, const Recording* rec, const std::string& path);
   // Refuses a `recorded` lane where the fault or the frame source gives it nothing to check.
   void accept_recorded() const;
-  // A new world from `s` (frame 0); on error the old scene stays.
-  void build(const Scene& s);
-  // Replays `frames` instead of a world: its grid pins as a scene's would, its name the file's stem.
-  void build(std::unique_ptr<RecordedFrames> frames);
+  // Replaces the frame source by `fresh` at its first frame; on error (a `recorded` lane it cannot
+  // feed) the old one stays.
+  void load(std::unique_ptr<FrameSource> fresh);
   // The frame source's first frame, detected and checked; a new run: the history starts again.
   void start();
-  // The elements of the frame before `frame` when it can be shown, else `frame`'s own (the
+  // The elements of the frame before `frame` when it can be had, else `frame`'s own (the
   // stale-positions fault then has nothing older to give).
   Elements elements_before(std::int64_t frame) const;
 };

@@ -11,26 +11,22 @@ namespace nbscope {
 
 void FrameLoop::begin_step() {
   FrameLoopState& m = *impl_;
-  if (m.pending() || !m.live || m.kept || m.resume.active()) return;
+  Simulation* sim = m.simulation();
+  if (sim == nullptr || sim->pending() || m.source().showing_past() || sim->resuming()) return;
   // As step() does: the stale-positions fault detects the next frame on this one's positions.
-  m.pipeline.remember_previous(m.live->world().frame() + 1, m.live->world().elements());
-  m.watch_physics();  // settle() moves the note on to the detection, and ends it
-  if (!m.live->begin_step()) m.watch.disarm();  // no thread: the next step() steps here as it always did
+  if (m.pipeline.options().fault == Fault::StalePositions) m.pipeline.remember_previous(m.frame_number() + 1, m.now());
+  m.watch_step();  // settle() moves the note on to the detection, and ends it
+  if (!sim->begin_step()) m.watch.disarm();  // no thread: the next step() steps here as it always did
 }
-
 
 bool FrameLoopState::settle() {
   if (!pending()) return false;
   const Unwatch unwatch{watch};
-  const double physics_ms = live->finish_step();  // rethrows the step's Error; the future is spent either way
+  const double physics_ms = simulation()->finish_step();  // rethrows the step's Error; the future is spent either way
   set_physics_ms(physics_ms);
   physics_overlapped = true;
   detect_and_check(FrameChange::Kind::stepped);
   return true;
-}
-
-void FrameLoopState::discard_step() {
-  if (live) live->discard_step();
 }
 
 }  // namespace nbscope

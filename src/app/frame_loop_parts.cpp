@@ -11,29 +11,36 @@ namespace nbscope {
 // ---- source --------------------------------------------------------------------------------
 
 bool LoopSource::has_scene() const { return s_->loaded(); }
-const Scene& LoopSource::scene() const { return s_->scene; }
-bool LoopSource::replaying() const { return s_->replay != nullptr; }
-std::int64_t LoopSource::recorded_frames() const {
-  return s_->replay ? static_cast<std::int64_t>(s_->replay->entries().size()) : 0;
+const Scene& LoopSource::scene() const {
+  static const Scene kNone;
+  return s_->loaded() ? s_->source().scene() : kNone;
 }
-bool LoopSource::carries_pairs() const { return s_->replay && s_->replay->header().has_pairs; }
-const Recording* LoopSource::recording() const { return s_->replay ? &s_->replay->header() : nullptr; }
-const PairList* LoopSource::recorded_pairs() const { return carries_pairs() ? &s_->replay->current().pairs : nullptr; }
-int LoopSource::pair_base() const { return s_->replay ? s_->replay->header().pair_base : 0; }
+bool LoopSource::replaying() const { return recording() != nullptr; }
+std::int64_t LoopSource::recorded_frames() const {
+  return s_->loaded() ? static_cast<std::int64_t>(s_->source().entries().size()) : 0;
+}
+bool LoopSource::carries_pairs() const { return recording() != nullptr && recording()->has_pairs; }
+const Recording* LoopSource::recording() const { return s_->loaded() ? s_->source().recording() : nullptr; }
+const PairList* LoopSource::recorded_pairs() const { return s_->loaded() ? s_->source().recorded_pairs() : nullptr; }
+int LoopSource::pair_base() const { return recording() != nullptr ? recording()->pair_base : 0; }
 const std::vector<std::int64_t>* LoopSource::element_ids(std::int64_t frame) const {
-  if (!s_->replay) return nullptr;
-  const RecordingSource& r = *s_->replay;
-  const std::size_t index = r.index_of(frame);
-  if (index >= r.entries().size() || r.entries()[index].number != frame) return nullptr;
-  s_->looked_up = r.frame_at(index);  // held while the pointer is used
-  return s_->looked_up->ids.empty() ? nullptr : &s_->looked_up->ids;
+  if (!s_->loaded()) return nullptr;
+  if (frame == s_->frame_number()) {
+    const std::vector<std::int64_t>& ids = s_->source().ids();  // the frame shown carries its own
+    return ids.empty() ? nullptr : &ids;
+  }
+  s_->looked_up = s_->source().ids_of(frame);  // held while the pointer is used
+  return s_->looked_up.get();
 }
 std::int64_t LoopSource::element_name(std::int64_t frame, std::int64_t row) const {
   return element_id(element_ids(frame), row);
 }
-bool LoopSource::at_end() const { return s_->replay && !s_->replay->can_step(); }
+bool LoopSource::at_end() const { return s_->loaded() && !s_->source().showing_past() && !s_->source().can_step(); }
 bool LoopSource::step_pending() const { return s_->pending(); }
-bool LoopSource::step_ready() const { return s_->live && s_->live->step_ready(); }
+bool LoopSource::step_ready() const {
+  const Simulation* sim = s_->simulation();
+  return sim != nullptr && sim->step_ready();
+}
 bool LoopSource::physics_overlapped() const { return s_->physics_overlapped; }
 std::int64_t LoopSource::frame() const { return s_->loaded() ? s_->frame_number() : 0; }
 double LoopSource::time() const { return s_->loaded() ? s_->source().time() : 0; }
@@ -99,22 +106,26 @@ std::shared_ptr<const FrameTrace> LoopPipeline::frame_trace() {
 
 // ---- drag ----------------------------------------------------------------------------------
 
+Simulation* LoopDrag::live() const {
+  Simulation* sim = s_->simulation();
+  return sim != nullptr && !s_->source().showing_past() && !sim->resuming() ? sim : nullptr;
+}
 bool LoopDrag::begin(double x, double y) {
-  FrameLoopState& m = *s_;
-  m.settle();  // the drag acts on the newest frame
-  if (!m.live || m.kept || m.resume.active()) return false;
-  return m.live->begin_drag(x, y);
+  s_->settle();  // the drag acts on the newest frame
+  Simulation* sim = live();
+  return sim != nullptr && sim->begin_drag(x, y);
 }
 void LoopDrag::move_to(double x, double y) {
-  FrameLoopState& m = *s_;
-  m.settle();
-  if (m.live && !m.kept && !m.resume.active()) m.live->drag_to(x, y);
+  s_->settle();
+  if (Simulation* sim = live()) sim->drag_to(x, y);
 }
 void LoopDrag::end() {
-  FrameLoopState& m = *s_;
-  m.settle();
-  if (m.live && !m.kept && !m.resume.active()) m.live->end_drag();
+  s_->settle();
+  if (Simulation* sim = live()) sim->end_drag();
 }
-bool LoopDrag::active() const { return s_->live && !s_->kept && s_->live->dragging(); }
+bool LoopDrag::active() const {
+  const Simulation* sim = s_->simulation();
+  return sim != nullptr && !s_->source().showing_past() && sim->dragging();
+}
 
 }  // namespace nbscope

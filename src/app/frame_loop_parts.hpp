@@ -23,6 +23,7 @@
 namespace nbscope {
 
 struct FrameLoopState;
+class Simulation;
 
 // The frame shown and where it comes from (a Box2D world, or a recording: io/recording.hpp).
 struct Recording;
@@ -209,6 +210,8 @@ class LoopDrag {
   [[nodiscard]] bool active() const;
 
  private:
+  // The simulation when a drag can act on it (the newest frame shown, no resume), else null.
+  [[nodiscard]] Simulation* live() const;
   FrameLoopState* s_;
 };
 

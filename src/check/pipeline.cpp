@@ -106,7 +106,7 @@ void Pipeline::detect(Lane& lane, LaneResult& out, const Elements& input, const 
 }
 
 const FrameResult& Pipeline::run(const FrameInput& in) {
-  const FrameSource& source = *in.source;
+  const Frame& source = *in.source;
   const Elements& now = source.elements();
   const std::int64_t frame = source.frame();
   detected_on_source_ = true;
@@ -130,7 +130,7 @@ const FrameResult& Pipeline::run(const FrameInput& in) {
   result_.frame = frame;
   result_.time = source.time();
   for (std::size_t k = 0; k < lanes_.size(); ++k) {
-    if (lanes_[k].recorded) lanes_[k].recorded->set_pairs(in.given_pairs);
+    if (lanes_[k].recorded) lanes_[k].recorded->set_pairs(source.recorded_pairs());
     detect(lanes_[k], result_.lanes[k], input, in.where, k == 0 && record_traces_ && !lanes_[k].recorded);
   }
 
@@ -178,7 +178,7 @@ const FrameResult& Pipeline::run(const FrameInput& in) {
       check.walks = lanes_[k].detector->walk_check();
       check.drop_box2d_contact = options_.fault == Fault::DropBox2dContact;
       check.recorded = lanes_[k].recorded != nullptr;
-      if (check.recorded) check.precision = in.precision;
+      if (check.recorded) check.precision = source.precision();
       checker_.check(check, lane.report);
       lane.report.check_timings.invariant_ms[static_cast<std::size_t>(Invariant::Contract)] += contract_ms;
       if (k == 0) result_.reference = checker_.reference_pairs();
@@ -192,7 +192,7 @@ const FrameResult& Pipeline::run(const FrameInput& in) {
   return result_;
 }
 
-std::shared_ptr<const FrameTrace> Pipeline::trace(const FrameSource& source) {
+std::shared_ptr<const FrameTrace> Pipeline::trace(const Frame& source) {
   Lane& lane = lanes_.front();
   if (!result_.trace && lane.recorded) {
     // Read, not detected: nothing to step through, said in the panels' words.

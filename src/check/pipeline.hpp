@@ -1,4 +1,4 @@
-// nbscope check: one frame's pipeline. Given a frame (physics/frame_source.hpp) it runs every lane
+// nbscope check: one frame's pipeline. Given a frame (physics/frame.hpp) it runs every lane
 // (the selected detector, then the comparison ones, on the same elements with the same fault), then
 // the cross-check (check/check.hpp), and returns one FrameResult (check/frame_result.hpp).
 //
@@ -21,7 +21,7 @@
 #include "check/faults.hpp"
 #include "check/frame_result.hpp"
 #include "check/recorded_lane.hpp"
-#include "physics/frame_source.hpp"
+#include "physics/frame.hpp"
 
 namespace nbscope {
 
@@ -34,10 +34,8 @@ struct PipelineOptions {
 
 // What the pipeline is told of one frame beside its source.
 struct FrameInput {
-  const FrameSource* source = nullptr;
-  bool first = false;                     // no frame before it: stale positions are its own
-  const PairList* given_pairs = nullptr;  // the frame's own pairs (a recording's) for a `recorded` lane
-  double precision = 0;                   // the given pairs' precision band (RecordedFrame::precision; check/check.hpp)
+  const Frame* source = nullptr;  // with its own pairs and their precision for a `recorded` lane
+  bool first = false;             // no frame before it: stale positions are its own
   std::function<Elements()> previous;     // the frame before's elements, when not remembered
   std::string where;                      // "path: frame K: ", for errors
 };
@@ -85,7 +83,7 @@ class Pipeline {
   // Lane 0's traced run on what it was given this frame (`source` is the frame's, as at run()): the
   // frame's own detection when traces are recorded, else made on the first request (the detector
   // called once more, traced) and kept in the result until the next run.
-  std::shared_ptr<const FrameTrace> trace(const FrameSource& source);
+  std::shared_ptr<const FrameTrace> trace(const Frame& source);
   // From the next run on, lane 0's detection records its trace (on one thread) and is the frame's
   // only call of the detector: what the window does while its lists overlay or stepper is open, so a
   // plugin is not called twice for one frame. Detects nothing now.
@@ -102,7 +100,7 @@ class Pipeline {
   // Runs `lane` on `input` into `out`; traced (into result_.trace) when `traced`.
   void detect(Lane& lane, LaneResult& out, const Elements& input, const std::string& where, bool traced);
   // What the detectors are given this frame.
-  const Elements& detector_input(const FrameSource& source) const { return detected_on_source_ ? source.elements() : detected_on_; }
+  const Elements& detector_input(const Frame& source) const { return detected_on_source_ ? source.elements() : detected_on_; }
 
   PipelineOptions options_;
   bool record_traces_ = false;

@@ -2,12 +2,22 @@
 #include "io/recording_source.hpp"
 
 #include <algorithm>
+#include <filesystem>
 
 namespace nbscope {
 
 RecordingSource::RecordingSource(std::unique_ptr<RecordedFrames> frames, std::size_t budget)
     : frames_(std::move(frames)), budget_(budget) {
   current_ = frame_at(0);
+  const Recording& rec = header();
+  scene_.path = rec.path;
+  scene_.name = std::filesystem::path(rec.path).stem().string();
+  scene_.grid = rec.grid;
+  // The recorded time per frame, for the panels (the recording's own times are shown per frame).
+  const RecordedEntry& first = entries().front();
+  const RecordedEntry& last = entries().back();
+  if (last.number > first.number && last.time > first.time)
+    scene_.time_step = (last.time - first.time) / static_cast<double>(last.number - first.number);
 }
 
 const std::vector<ElementSource>& RecordingSource::element_sources() const {
@@ -32,7 +42,50 @@ std::size_t RecordingSource::index_of(std::int64_t frame) const {
   return static_cast<std::size_t>(it - e.begin());
 }
 
-Elements RecordingSource::previous_elements() const { return frame_at(index_ > 0 ? index_ - 1 : 0)->elements; }
+void RecordingSource::show(std::int64_t frame, const std::shared_ptr<const WorldState>& kept) {
+  (void)kept;
+  show_index(index_of(frame));
+}
+
+Elements RecordingSource::previous_elements(const std::shared_ptr<const WorldState>& kept_before) const {
+  (void)kept_before;
+  return frame_at(index_ > 0 ? index_ - 1 : 0)->elements;
+}
+
+std::shared_ptr<const std::vector<std::int64_t>> RecordingSource::ids_of(std::int64_t frame) const {
+  const std::size_t index = index_of(frame);
+  if (index >= entries().size() || entries()[index].number != frame) return nullptr;
+  std::shared_ptr<const RecordedFrame> f = frame_at(index);
+  if (f->ids.empty()) return nullptr;
+  return {f, &f->ids};  // holds the frame while its ids are used
+}
+
+void RecordingSource::element_path(const FrameHistory& history, ElementId k, std::int64_t from, std::int64_t to,
+                                   std::vector<std::array<double, 2>>& out) const {
+  out.clear();
+  if (k < 0) return;
+  // From the first summary at or after `from` (a trail is a few hundred frames of a long history).
+  const auto& summaries = history.summaries();
+  const auto begin = std::lower_bound(summaries.begin(), summaries.end(), from,
+                                      [](const FrameSummary& f, std::int64_t n) { return f.frame < n; });
+  // A dump's rows shift as atoms come and go: the atom at row k of frame `to` is followed by its id.
+  const std::size_t to_index = index_of(to);
+  const std::shared_ptr<const RecordedFrame> frame_to = to_index < entries().size() ? frame_at(to_index) : nullptr;
+  const bool by_atom = frame_to != nullptr && static_cast<std::size_t>(k) < frame_to->ids.size();
+  const std::int64_t atom = by_atom ? frame_to->ids[static_cast<std::size_t>(k)] : -1;
+  for (auto i = static_cast<std::size_t>(begin - summaries.begin()); i < history.size(); ++i) {
+    const FrameSummary& f = history.at(i);
+    if (f.frame > to) break;
+    const std::shared_ptr<const RecordedFrame> rf = held(index_of(f.frame));
+    if (!rf) continue;
+    std::int64_t row = k;
+    if (by_atom) {
+      const auto it = std::lower_bound(rf->ids.begin(), rf->ids.end(), atom);  // ascending (io/recording.hpp)
+      row = it != rf->ids.end() && *it == atom ? it - rf->ids.begin() : -1;     // -1: not in that frame
+    }
+    if (row >= 0 && row < rf->elements.size()) out.push_back({rf->elements.x[row], rf->elements.y[row]});
+  }
+}
 
 std::shared_ptr<const RecordedFrame> RecordingSource::held(std::size_t index) const {
   if (current_ && index == index_) return current_;

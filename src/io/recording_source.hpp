@@ -1,4 +1,4 @@
-// nbscope io: recorded frames (io/recorded_frames.hpp) as a frame source: one after the other, no
+// nbscope io: recorded frames (io/recorded_frames.hpp) as a frame source (io/frame_source.hpp): one after the other, no
 // bodies (each element is drawn as a dynamic circle) and no Box2D side (the check runs only A==R).
 // Frames read from files are kept within a byte budget (the history's): the current one always, the
 // others until the budget is spent, oldest dropped first; a dropped frame is read again when shown.
@@ -9,8 +9,8 @@
 #include <memory>
 #include <vector>
 
+#include "io/frame_source.hpp"
 #include "io/recorded_frames.hpp"
-#include "physics/frame_source.hpp"
 
 namespace nbscope {
 
@@ -20,6 +20,7 @@ class RecordingSource final : public FrameSource {
   // of other frames read from files.
   RecordingSource(std::unique_ptr<RecordedFrames> frames, std::size_t budget);
 
+  // ---- Frame ----
   [[nodiscard]] std::int64_t frame() const override { return current_->number; }
   [[nodiscard]] double time() const override { return current_->time; }
   [[nodiscard]] const Elements& elements() const override { return current_->elements; }
@@ -29,33 +30,48 @@ class RecordingSource final : public FrameSource {
   // One dynamic circle per element.
   void body_shapes(std::vector<BodyShape>& out) const override { circles_of(elements(), out); }
   [[nodiscard]] const Box2dFrame* box2d() const override { return nullptr; }
+  [[nodiscard]] const std::vector<std::int64_t>& ids() const override { return current_->ids; }
+  // The frame's `pairs` block when the recording carries pairs, else null.
+  [[nodiscard]] const PairList* recorded_pairs() const override { return header().has_pairs ? &current_->pairs : nullptr; }
+  [[nodiscard]] double precision() const override { return current_->precision; }
+
+  // ---- FrameSource ----
+  [[nodiscard]] const Scene& scene() const override { return scene_; }
+  [[nodiscard]] const Recording* recording() const override { return &header(); }
+  // Every frame's number, time and element count.
+  [[nodiscard]] const std::vector<RecordedEntry>& entries() const override { return frames_->entries(); }
+  [[nodiscard]] bool first() const override { return index_ == 0; }
+  [[nodiscard]] std::int64_t newest_frame() const override { return entries().back().number; }
   // False on the last frame.
   [[nodiscard]] bool can_step() const override { return index_ + 1 < entries().size(); }
   // The next recorded frame (nothing simulated: 0 ms); no effect on the last. Error, unmoved, for a
   // frame whose text is wrong.
   double step() override;
+  // Recorded frame number `frame` (it must exist); `kept` is not needed. Error, unmoved, as step().
+  void show(std::int64_t frame, const std::shared_ptr<const WorldState>& kept) override;
+  void rewind() override { show_index(0); }
+  // The frame before the current one (the first frame's own for the first), read when not kept.
+  [[nodiscard]] Elements previous_elements(const std::shared_ptr<const WorldState>& kept_before) const override;
+  // Through the frames held (none is read again for a trail), each atom followed by its id.
+  void element_path(const FrameHistory& history, ElementId k, std::int64_t from, std::int64_t to,
+                    std::vector<std::array<double, 2>>& out) const override;
+  [[nodiscard]] std::shared_ptr<const std::vector<std::int64_t>> ids_of(std::int64_t frame) const override;
+  // The bytes of frames kept beside the current one, and their budget.
+  [[nodiscard]] std::size_t held_bytes() const override { return kept_bytes_; }
+  void set_budget(std::size_t bytes) override;
 
-  // The recording's facts (its `frames` empty) and every frame's number, time and element count.
+  // ---- the recording ----
+  // The recording's facts (its `frames` empty).
   [[nodiscard]] const Recording& header() const { return frames_->header(); }
-  [[nodiscard]] const std::vector<RecordedEntry>& entries() const { return frames_->entries(); }
   // The index of the current frame, and the frame.
   [[nodiscard]] std::size_t index() const { return index_; }
   [[nodiscard]] const RecordedFrame& current() const { return *current_; }
-  // Makes the first frame current again.
-  void rewind() { show_index(0); }
-  // Makes recorded frame number `frame` current (it must exist); Error, unmoved, as step().
-  void show(std::int64_t frame) { show_index(index_of(frame)); }
-  // Index of recorded frame number `frame` (it must exist).
+  // Index of recorded frame number `frame` (entries().size() when there is none).
   [[nodiscard]] std::size_t index_of(std::int64_t frame) const;
-  // The frame before the current one (the first frame's own for the first), read when not kept.
-  [[nodiscard]] Elements previous_elements() const;
   // Frame `index` when it is in memory (the current one, or kept), else null: nothing is read.
   [[nodiscard]] std::shared_ptr<const RecordedFrame> held(std::size_t index) const;
   // Frame `index`, read when it is not in memory (and then kept as the budget allows).
   [[nodiscard]] std::shared_ptr<const RecordedFrame> frame_at(std::size_t index) const;
-  // The bytes of frames kept beside the current one, and their budget.
-  [[nodiscard]] std::size_t kept_bytes() const { return kept_bytes_; }
-  void set_budget(std::size_t bytes);
 
  private:
   void show_index(std::size_t index);
@@ -63,6 +79,7 @@ class RecordingSource final : public FrameSource {
   void trim() const;
 
   std::unique_ptr<RecordedFrames> frames_;
+  Scene scene_;
   std::size_t index_ = 0;
   std::shared_ptr<const RecordedFrame> current_;
   std::size_t budget_ = 0;

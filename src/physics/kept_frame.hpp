@@ -8,13 +8,13 @@
 #include <memory>
 #include <vector>
 
-#include "physics/frame_source.hpp"
+#include "physics/frame.hpp"
 #include "physics/world.hpp"
 
 namespace nbscope {
 
-// Also a frame source: the frame a past frame shows (it cannot step: the run's own next frame is kept).
-class KeptWorldFrame final : public Box2dFrame, public FrameSource {
+// Also a Frame: the frame a past frame shows (the run's own next frame is kept, nothing steps it).
+class KeptWorldFrame final : public Box2dFrame, public Frame {
  public:
   // `world` supplies the shapes and bodies (it must be the same scene's world, at this frame or
   // later, and outlive this object); `state` the frame's transforms and contact list.
@@ -28,12 +28,10 @@ class KeptWorldFrame final : public Box2dFrame, public FrameSource {
   void ground_truth(PairList& tight_aabb_pairs, PairList& touching) const override;
   void in_box2d_scope(const PairList& pairs, PairList& out, Box2dScope& why_not) const override;
   void shapes(std::vector<BodyShape>& out) const override;
-  // FrameSource: the world's element sources, the shapes, this frame as Box2D's side.
+  // Frame: the world's element sources, the shapes, this frame as Box2D's side.
   [[nodiscard]] const std::vector<ElementSource>& element_sources() const override { return world_.sources(); }
   void body_shapes(std::vector<BodyShape>& out) const override { shapes(out); }
   [[nodiscard]] const Box2dFrame* box2d() const override { return this; }
-  [[nodiscard]] bool can_step() const override { return false; }
-  double step() override { return 0; }
   // The kept state this frame was rebuilt from.
   [[nodiscard]] const WorldState& state() const { return *state_; }
 

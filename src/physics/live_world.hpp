@@ -4,7 +4,7 @@
 //
 // Why the overlapped step is safe: the worker touches only the PhysicsWorld, and between
 // begin_step() and finish_step() the owner calls nothing of it, nor any Box2D code that keeps global
-// state: the FrameSource accessors read a snapshot taken before the worker starts (ShownFrame).
+// state: the Frame accessors read a snapshot taken before the worker starts (ShownFrame).
 // Every call that needs the world finishes the step first or waits for the worker. The future's
 // get()/wait() is the synchronisation point: the worker's writes happen-before its return.
 // Why it is the same frame: the worker runs the very PhysicsWorld::step() that step() runs, on the
@@ -15,7 +15,7 @@
 #include <memory>
 #include <vector>
 
-#include "physics/frame_source.hpp"
+#include "physics/frame.hpp"
 #include "physics/world.hpp"
 
 namespace nbscope {
@@ -30,7 +30,7 @@ struct DragInput {
 // Replays `in` on `world` as the user's own call was made.
 void replay_drag(PhysicsWorld& world, const DragInput& in);
 
-class LiveWorld final : public FrameSource {
+class LiveWorld final : public Frame {
  public:
   // Takes a built world (frame 0 or any later frame).
   explicit LiveWorld(std::unique_ptr<PhysicsWorld> world);
@@ -38,7 +38,7 @@ class LiveWorld final : public FrameSource {
   LiveWorld(const LiveWorld&) = delete;
   LiveWorld& operator=(const LiveWorld&) = delete;
 
-  // ---- FrameSource: while a step is pending, the frame shown (the snapshot) ----
+  // ---- Frame: while a step is pending, the frame shown (the snapshot) ----
   [[nodiscard]] std::int64_t frame() const override;
   [[nodiscard]] double time() const override;
   [[nodiscard]] const Elements& elements() const override;
@@ -47,10 +47,8 @@ class LiveWorld final : public FrameSource {
   void body_shapes(std::vector<BodyShape>& out) const override;
   // The world itself (only when no step is pending).
   [[nodiscard]] const Box2dFrame* box2d() const override { return world_.get(); }
-  // A live world always has a next frame.
-  [[nodiscard]] bool can_step() const override { return true; }
   // Box2D's step on this thread; its milliseconds. Throws Error as PhysicsWorld::step().
-  double step() override;
+  double step();
 
   // ---- the overlapped step ----
   // Starts the next step on a worker thread; false (nothing pending) when no thread can be had.

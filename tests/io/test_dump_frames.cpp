@@ -271,16 +271,16 @@ TEST(RecordingSource, AStraightReplayReadsEachFrameOnceAndKeepsNoneWithoutABudge
   RecordingSource s(std::move(counted), 0);
   while (s.can_step()) {
     s.step();
-    EXPECT_EQ(s.kept_bytes(), 0u);
+    EXPECT_EQ(s.held_bytes(), 0u);
   }
   EXPECT_EQ(*reads, 8);
   EXPECT_EQ(s.frame(), 70);
   EXPECT_EQ(s.elements().x[0], 7.0);
   EXPECT_EQ(s.held(6), nullptr) << "nothing but the frame shown is in memory";
-  s.show(0);
+  s.show(0, nullptr);
   EXPECT_EQ(*reads, 9) << "a frame dropped is read again";
   EXPECT_EQ(s.elements().x[0], 0.0);
-  EXPECT_EQ(s.previous_elements().x[0], 0.0);
+  EXPECT_EQ(s.previous_elements(nullptr).x[0], 0.0);
 }
 
 TEST(RecordingSource, KeepsTheNewestFramesItsBudgetHoldsAndDropsTheRestAtOnce) {
@@ -288,15 +288,15 @@ TEST(RecordingSource, KeepsTheNewestFramesItsBudgetHoldsAndDropsTheRestAtOnce) {
   const std::shared_ptr<int> reads = counted->reads;
   RecordingSource s(std::move(counted), frame_bytes(1000) * 3);
   while (s.can_step()) s.step();
-  EXPECT_LE(s.kept_bytes(), frame_bytes(1000) * 3);
+  EXPECT_LE(s.held_bytes(), frame_bytes(1000) * 3);
   for (std::size_t k : {5, 6, 7}) EXPECT_NE(s.held(k), nullptr) << k;
   EXPECT_EQ(s.held(4), nullptr);
-  s.show(50);  // kept: not read again
+  s.show(50, nullptr);  // kept: not read again
   EXPECT_EQ(*reads, 8);
-  EXPECT_EQ(s.previous_elements().x[0], 4.0);  // read, and kept in place of the oldest
+  EXPECT_EQ(s.previous_elements(nullptr).x[0], 4.0);  // read, and kept in place of the oldest
   EXPECT_EQ(*reads, 9);
   s.set_budget(0);
-  EXPECT_EQ(s.kept_bytes(), 0u);
+  EXPECT_EQ(s.held_bytes(), 0u);
   EXPECT_NE(s.held(5), nullptr) << "the frame shown stays";
 }
 

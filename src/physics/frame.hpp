@@ -1,20 +1,22 @@
-// nbscope physics: where a frame comes from. The pipeline (check/pipeline.hpp) and the views read a
-// frame only through this interface, so the live Box2D world (physics/live_world.hpp), a kept past
-// frame (physics/kept_frame.hpp) and a recording (io/recording_source.hpp) are one kind of thing;
-// frames from other codes and 3D frames come in as more implementations.
+// nbscope physics: one frame as the pipeline (check/pipeline.hpp) and the views read it: its
+// elements, shapes and Box2D side, and what travels with it (atom ids, a code's own pairs and their
+// precision). The live Box2D world (physics/live_world.hpp), a kept past frame
+// (physics/kept_frame.hpp) and a recorded frame are one kind of thing; the run they belong to,
+// stepped and shown, is a FrameSource (io/frame_source.hpp).
 #pragma once
 #include <cstdint>
 #include <vector>
 
 #include "core/elements.hpp"
+#include "core/pairs.hpp"
 #include "physics/box2d_frame.hpp"
 #include "physics/shapes.hpp"
 
 namespace nbscope {
 
-class FrameSource {
+class Frame {
  public:
-  virtual ~FrameSource() = default;
+  virtual ~Frame() = default;
   // The frame's number and simulated time in seconds (a recording's own).
   [[nodiscard]] virtual std::int64_t frame() const = 0;
   [[nodiscard]] virtual double time() const = 0;
@@ -28,11 +30,18 @@ class FrameSource {
   virtual void body_shapes(std::vector<BodyShape>& out) const = 0;
   // Box2D's side of the frame for the check, or null when there is none (recorded frames).
   [[nodiscard]] virtual const Box2dFrame* box2d() const = 0;
-  // True when step() can make a next frame.
-  [[nodiscard]] virtual bool can_step() const = 0;
-  // Makes the next frame; returns the milliseconds spent simulating it (0 when nothing is simulated).
-  virtual double step() = 0;
+  // The atom ids of the elements' rows (a dump's, ascending), or empty when rows name them.
+  [[nodiscard]] virtual const std::vector<std::int64_t>& ids() const;
+  // The code's own contact pairs of this frame (0-based rows), or null when it gives none.
+  [[nodiscard]] virtual const PairList* recorded_pairs() const { return nullptr; }
+  // What the positions behind recorded_pairs() resolve (check/check.hpp's precision band); 0: exact.
+  [[nodiscard]] virtual double precision() const { return 0; }
 };
+
+inline const std::vector<std::int64_t>& Frame::ids() const {
+  static const std::vector<std::int64_t> kRows;
+  return kRows;
+}
 
 // One dynamic circle per element: how frames without bodies are drawn.
 inline void circles_of(const Elements& e, std::vector<BodyShape>& out) {
