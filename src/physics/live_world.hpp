@@ -8,7 +8,7 @@
 // Every call that needs the world finishes the step first or waits for the worker. The future's
 // get()/wait() is the synchronisation point: the worker's writes happen-before its return.
 // Why it is the same frame: the worker runs the very PhysicsWorld::step() that step() runs, on the
-// same world in the same order (Box2D is deterministic) (tests/test_frame_loop_overlap.cpp).
+// same world in the same order (Box2D is deterministic) (tests/app/test_frame_loop_overlap.cpp).
 #pragma once
 #include <cstdint>
 #include <future>

@@ -72,7 +72,7 @@ PhysicsWorld::PhysicsWorld(const Scene& scene) : scene_(scene) {
   b2BodyDef ground_def;
   ground_ = world_->CreateBody(&ground_def);
   const Box2dAllocScope alloc_scope(world_.get(), 1, (scene_.path.empty() ? "" : scene_.path + ": ") + "building the world: ");
-  world_->SetAllowSleeping(false);  // every body moves through the broadphase every frame (STACK.md "Ground truth")
+  world_->SetAllowSleeping(false);  // every body moves through the broadphase every frame (docs/architecture.md, "Invariants")
   world_->SetContinuousPhysics(scene_.continuous);
   elements_.dim = 2;
   max_contacts_ = scene_.max_contacts;

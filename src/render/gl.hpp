@@ -1,5 +1,6 @@
 // nbscope render: the one way GL is included. Every GL call goes through glad's pointers, never
-// through libGL's exported symbols (libGL and libOSMesa both export gl*; ../shared/STACK.md).
+// through libGL's exported symbols: libGL and libOSMesa both export gl*, and libGL's win when both
+// are linked (docs/install.md, "Building from source").
 #pragma once
 #include <glad/gl.h>
 

@@ -1,66 +1,17 @@
-// The cross-check: every invariant holds on a correct frame and breaks, naming the pair, its cells
-// and the invariant, when its input is wrong; the faults produce exactly the pairs a buggy
-// detector would (computed here by hand).
+// The cross-check (check/check.hpp, the checker): every invariant holds on a correct frame and
+// breaks, naming the pair, its cells and the invariant, when its input is wrong; R is brute force up
+// to the limit, and R computed beside F, G and T gives the plain order's reports. The faults are in
+// test_faults.cpp, the pipeline that runs the checker in test_pipeline.cpp.
 #include <gtest/gtest.h>
 
 #include "check/check.hpp"
 #include "physics/world.hpp"
 #include "check/faults.hpp"
 #include "core/brute.hpp"
-#include "core/error.hpp"
 #include "io/scene_json.hpp"
 
 namespace nbscope {
 namespace {
-
-// ---- faults --------------------------------------------------------------------------------
-
-TEST(Faults, NamesRoundTrip) {
-  for (Fault f : {Fault::None, Fault::DropMaskCell, Fault::OffByOneCell, Fault::StalePositions, Fault::DropPair,
-                  Fault::DropBox2dContact})
-    EXPECT_EQ(parse_fault(fault_name(f)), f);
-  EXPECT_THROW(parse_fault("drop-everything"), Error);
-  EXPECT_NE(fault_names().find("stale-positions"), std::string::npos);
-}
-
-// Four elements in cells (1,1), (0,0), (2,2), (2,1) of a 4x4 grid, and four pairs among them.
-struct FaultCase {
-  Grid grid;
-  std::vector<CellIndex> cells{{1, 1}, {0, 0}, {2, 2}, {2, 1}};
-  PairList pairs{{0, 1}, {0, 2}, {0, 3}, {1, 2}};
-  FaultCase() {
-    grid.n[0] = 4;
-    grid.n[1] = 4;
-  }
-};
-
-TEST(Faults, DropMaskCellRemovesTheDiagonalNeighbours) {
-  FaultCase c;
-  apply_output_fault(Fault::DropMaskCell, c.grid, c.cells, c.pairs);
-  // (0,1): element 1 is down-left of 0; (0,2): element 2 is up-right of 0. Both are that mask cell.
-  EXPECT_EQ(c.pairs, (PairList{{0, 3}, {1, 2}}));
-}
-
-TEST(Faults, OffByOneCellShiftsTheRightHalfAndLosesPairsAcrossTheSeam) {
-  FaultCase c;
-  apply_output_fault(Fault::OffByOneCell, c.grid, c.cells, c.pairs);
-  EXPECT_EQ(c.cells, (std::vector<CellIndex>{{1, 1}, {0, 0}, {3, 2}, {3, 1}}));
-  EXPECT_EQ(c.pairs, (PairList{{0, 1}}));
-}
-
-TEST(Faults, DropPairRemovesTheMiddlePair) {
-  FaultCase c;
-  apply_output_fault(Fault::DropPair, c.grid, c.cells, c.pairs);
-  EXPECT_EQ(c.pairs, (PairList{{0, 1}, {0, 2}, {1, 2}}));
-}
-
-TEST(Faults, InputFaultsLeaveTheOutputAlone) {
-  for (Fault f : {Fault::None, Fault::StalePositions, Fault::DropBox2dContact}) {
-    FaultCase c;
-    apply_output_fault(f, c.grid, c.cells, c.pairs);
-    EXPECT_EQ(c.pairs.size(), 4u) << fault_name(f);
-  }
-}
 
 // ---- the checker ---------------------------------------------------------------------------
 
@@ -106,6 +57,7 @@ class CheckerTest : public ::testing::Test {
   std::vector<CellIndex> cells_;
 };
 
+// Brute force's own pairs hold every invariant, and the counts are the row's (five elements, three pairs).
 TEST_F(CheckerTest, CorrectPairsHoldEveryInvariant) {
   ASSERT_EQ(correct_, (PairList{{0, 1}, {0, 4}, {1, 2}}));
   const FrameReport r = run(correct_, cells_);
@@ -121,6 +73,7 @@ TEST_F(CheckerTest, CorrectPairsHoldEveryInvariant) {
   EXPECT_TRUE(r.violations.empty());
 }
 
+// A touching pair left out is missing from A (A==R) and a touching pair not in A (T-in-A), with its cells.
 TEST_F(CheckerTest, AMissingTouchingPairBreaksAEqualsRAndTInA) {
   const FrameReport r = run(PairList{{0, 1}, {0, 4}}, cells_);
   EXPECT_FALSE(r.ok());
@@ -138,6 +91,7 @@ TEST_F(CheckerTest, AMissingTouchingPairBreaksAEqualsRAndTInA) {
   EXPECT_EQ(r.violations[1].invariant, Invariant::TInA);
 }
 
+// Two far circles paired are extra in A (A==R) and not in Box2D's contact list (A-in-F).
 TEST_F(CheckerTest, AnExtraCirclePairBreaksAEqualsRAndAInF) {
   PairList a = correct_;
   a.push_back({2, 3});  // two dynamic circles 4 m apart: Box2D's broadphase must refute it too
@@ -150,6 +104,7 @@ TEST_F(CheckerTest, AnExtraCirclePairBreaksAEqualsRAndAInF) {
   EXPECT_STREQ(r.violations[1].what, "not in Box2D's contact list");
 }
 
+// A far pair with a polygon breaks A==R only: A-in-F leaves it out and counts why (beyond its AABB).
 TEST_F(CheckerTest, AnExtraPolygonPairIsLeftOutOfAInFAndCounted) {
   PairList a = correct_;
   a.push_back({3, 4});  // circle and floor box far apart: a polygon's bounding circle is no AABB
@@ -160,6 +115,7 @@ TEST_F(CheckerTest, AnExtraPolygonPairIsLeftOutOfAInFAndCounted) {
   EXPECT_EQ(r.counts.beyond_aabb, 1);
 }
 
+// An element integerised three cells off breaks AABB-in-cells for the pair whose AABBs overlap.
 TEST_F(CheckerTest, WrongCellsBreakAabbInCells) {
   std::vector<CellIndex> cells = cells_;
   cells[2].ix += 3;  // element 2 integerised three cells too far right
@@ -209,12 +165,14 @@ TEST_F(CheckerTest, StrayTestsOnAWalkedListBreakCells) {
   EXPECT_NE(std::string(r.violations[0].what).find("stale list"), std::string::npos);
 }
 
+// Box2D's contact list losing a pair A needs breaks A-in-F once.
 TEST_F(CheckerTest, ALostBox2dContactBreaksAInF) {
   const FrameReport r = run(correct_, cells_, true);
   EXPECT_EQ(r.broken[static_cast<int>(Invariant::AInF)], 1);
   EXPECT_EQ(r.violation_count(), 1);
 }
 
+// Repeats, self-pairs, unknown elements and disorder in A are A==R violations named for what they are.
 TEST_F(CheckerTest, MalformedPairsAreFlaggedNotTrusted) {
   const FrameReport r = run(PairList{{0, 1}, {0, 1}, {0, 4}, {1, 2}, {2, 2}, {3, 99}}, cells_);
   EXPECT_EQ(r.broken[static_cast<int>(Invariant::AEqualsR)], 3);
@@ -233,6 +191,7 @@ TEST_F(CheckerTest, MalformedPairsAreFlaggedNotTrusted) {
   EXPECT_STREQ(unsorted.violations[0].what, "out of order in A (not i < j, or not sorted)");
 }
 
+// One begin_frame serves several algorithms' checks, each judged on its own pairs.
 TEST_F(CheckerTest, SeveralAlgorithmsShareOneFrame) {
   checker_.begin_frame(world_, DetectOptions{});
   const PairList wrong{{0, 1}};
@@ -247,6 +206,7 @@ TEST_F(CheckerTest, SeveralAlgorithmsShareOneFrame) {
   }
 }
 
+// R is brute up to the limit, then sort (nbs when sort is tested, and for brute itself).
 TEST(FrameChecker, ReferenceIsBruteForceUpToTheLimitThenAnotherDetector) {
   FrameChecker c(CheckOptions{100});
   EXPECT_EQ(c.reference_for(100, "nbs"), "brute");
