@@ -2,7 +2,7 @@
 // frame source and one Pipeline run on its frames the way the frame loop runs them, so a test says
 // only what it sets and what it expects. The sources are the product's own (the live Box2D world of
 // a scene, or recorded frames held in memory: io/recording_source.hpp over io/recorded_frames.hpp),
-// made and driven here alone: the one place to adapt when the FrameSource interface changes.
+// made and driven here alone: the one place to adapt when the Frame interfaces change.
 //
 // Beside it, the tests' oracle: every touching pair by a double loop over all pairs, independent of
 // every detector and of the checker.
@@ -90,18 +90,16 @@ class CheckTestContext {
   }
 
   [[nodiscard]] Pipeline& pipeline() { return pipeline_; }
-  [[nodiscard]] const FrameSource& source() const { return *source_; }
+  [[nodiscard]] const Frame& source() const { return *source_; }
   [[nodiscard]] const Elements& elements() const { return source_->elements(); }
 
-  // Detects and checks the current frame, as the frame loop does (the frame's pairs, precision and
-  // predecessor given as it gives them).
+  // Detects and checks the current frame, as the frame loop does (the frame carries its pairs and
+  // precision; its predecessor is given as the loop gives it).
   const FrameResult& run() {
     FrameInput in;
     in.source = source_.get();
-    in.first = live_ != nullptr ? live_->frame() == 0 : recording_->index() == 0;
-    in.given_pairs = recording_ != nullptr ? &recording_->current().pairs : nullptr;
-    in.precision = recording_ != nullptr ? recording_->current().precision : 0;
-    if (recording_ != nullptr) in.previous = [this] { return recording_->previous_elements(); };
+    in.first = live_ != nullptr ? live_->frame() == 0 : recording_->first();
+    if (recording_ != nullptr) in.previous = [this] { return recording_->previous_elements(nullptr); };
     in.where = "test: frame " + std::to_string(source_->frame()) + ": ";
     return pipeline_.run(in);
   }
@@ -125,7 +123,7 @@ class CheckTestContext {
   explicit CheckTestContext(const PipelineOptions& options) : pipeline_(options) {}
 
   Pipeline pipeline_;
-  std::unique_ptr<FrameSource> source_;
+  std::unique_ptr<Frame> source_;
   LiveWorld* live_ = nullptr;            // source_, when a scene's
   RecordingSource* recording_ = nullptr;  // source_, when recorded frames
 };
