@@ -16,9 +16,6 @@
 
 namespace nbscope {
 
-// The name `--algorithm`, the picker and reports use.
-inline constexpr std::string_view kRecordedAlgorithm = "recorded";
-
 // Returns the pairs of the recorded frame it is given: normalised to i < j (i == j and repeats are
 // kept, for the check to report as the user's bugs); the lane sorts them as it sorts any detector's.
 class RecordedPairsDetector final : public Detector {

@@ -166,6 +166,11 @@ struct DetectorInfo {
   std::function<std::unique_ptr<Detector>()> make;
 };
 
+// The `--algorithm` names that are not a detector: every detector, and a recording's own pairs (the
+// `recorded` lane, check/recorded_lane.hpp). No detector or plugin may take them.
+inline constexpr std::string_view kAllAlgorithms = "all";
+inline constexpr std::string_view kRecordedAlgorithm = "recorded";
+
 // All registered algorithms, in registration order (core's own first).
 const std::vector<DetectorInfo>& detector_infos();
 // Adds an algorithm defined outside core (e.g. physics' "box2d"); a second add of a name is ignored.

@@ -15,7 +15,6 @@
 #include <mutex>
 #include <thread>
 
-#include "check/recorded_lane.hpp"
 #include "core/error.hpp"
 #include "core/plugin_detector.hpp"
 #include "io/atomic_file.hpp"
@@ -175,7 +174,7 @@ T symbol(void* handle, const char* name) {
 }
 
 void check_name_free(const std::string& path, const std::string& name) {
-  if (name == "all" || name == kRecordedAlgorithm)
+  if (name == kAllAlgorithms || name == kRecordedAlgorithm)
     throw Error(path + ": its name '" + name + "' is reserved (--algorithm " + name + " means something else)");
   for (const DetectorInfo& known : detector_infos()) {
     if (known.name != name) continue;
