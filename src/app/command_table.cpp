@@ -78,6 +78,22 @@ const std::vector<OptionSpec>& gui_input_options() {
   return options;
 }
 
+}  // namespace
+
+OptionGroup rendering_group() { return {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()}; }
+OptionGroup plugin_group() { return {kPluginOptionsTitle, plugin_options()}; }
+OptionGroup dump_input_group() { return {"--input FILE.dump: a LAMMPS or LIGGGHTS dump (docs/dem.md)", dump_input_options()}; }
+OptionGroup dump_replay_group() { return {"frames from LAMMPS and LIGGGHTS dumps (docs/dem.md)", dump_replay_options()}; }
+OptionGroup gui_input_group() { return {"gui --input FILE (without --arrays): a dump or ELEMENTS.csv", gui_input_options()}; }
+
+std::vector<OptionSpec> joined(std::initializer_list<std::vector<OptionSpec>> parts) {
+  std::vector<OptionSpec> out;
+  for (const std::vector<OptionSpec>& p : parts) out.insert(out.end(), p.begin(), p.end());
+  return out;
+}
+
+namespace {
+
 // `nbscope [gui]`: the window.
 CommandSpec gui_command() {
   std::vector<OptionSpec> arrays = {
@@ -125,7 +141,7 @@ CommandSpec gui_command() {
        "tooltip. Numbered as the file counts (--base 1: from 1). Panels: overlays, problems, lists. Exit 0 right, 1 wrong. Without a "
        "display it renders headless into --screenshot (default $TMPDIR/nbscope-verify-ARRAYS.png) and prints the path."},
       {{"options",
-        {{"--scene", "FILE", "the last scene used, else assets/scenes/default.json", "the scene to simulate (assets/scenes/*.json)"},
+        joined({{{"--scene", "FILE", "the last scene used, else assets/scenes/default.json", "the scene to simulate (assets/scenes/*.json)"},
          {"--algorithm", "NAME", "a --detector-lib's detector, else the last algorithm used, else nbs",
           "the detector (nbscope algorithms); with --arrays the arrays' algorithm, as verify --arrays"},
          {"--inject-fault", "NAME", "", "breaks the detection (or Box2D's side) on purpose, as headless --inject-fault"},
@@ -138,10 +154,12 @@ CommandSpec gui_command() {
                              "took"},
          {"--screenshot", "OUT.png", "", "with --frames: the picture saved before exiting (without a display: where the headless "
                                          "rendering goes)"},
-         {"--size", "WxH", "", "the window's (and the screenshot's) size in pixels"}}},
+         {"--size", "WxH", "", "the window's (and the screenshot's) size in pixels"}},
+                {threads_option(), touching_option()}})},
+       gui_input_group(),
        {"your arrays (gui --input ELEMENTS.csv --arrays ARRAYS.json)", arrays},
-       {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()},
-       {kPluginOptionsTitle, plugin_options()}},
+       rendering_group(),
+       plugin_group()},
       {"nbscope", "nbscope --scene assets/scenes/gas.json --algorithm sort",
        "xvfb-run nbscope gui --scene assets/scenes/pile.json --frames 60 --screenshot pile.png",
        "nbscope gui --input assets/examples/nine.csv --arrays assets/examples/nine_screen_bug.json"},
@@ -176,7 +194,7 @@ CommandSpec headless_command() {
        "A frame running over 5 s (or 10 frames together) says so once on stderr. A body that is not finite after a step, or beyond "
        "+-1e6 m, stops the run with exit 2 naming the body and the frame."},
       {{"options",
-        {{"--scene", "FILE", "", "the scene to run (required)"},
+        joined({{{"--scene", "FILE", "", "the scene to run (required)"},
          {"--frames", "N", "600", "the steps to run: frames 0..N, frame 0 (the initial poses) checked and counted too"},
          {"--algorithm", "NAME[,NAME...]|all", "the --detector-lib detectors, else nbs", "the detectors run and checked on the same frames"},
          {"--report", "OUT.json", "", "writes per-frame counts, timings and every violation as JSON"},
@@ -211,10 +229,11 @@ CommandSpec headless_command() {
           "and --threads threads)"},
          {"--layout", "L[,L...]", "loose", "with --scaling run: the layouts, as nbscope scaling --layout"},
          {"--n", "MIN..MAX", "1000..1000000", "with --scaling run: the sizes, as nbscope scaling --n"},
-         {"--points-per-decade", "K", "2", "with --scaling run: sizes a decade, as nbscope scaling --points-per-decade"}}},
+         {"--points-per-decade", "K", "2", "with --scaling run: sizes a decade, as nbscope scaling --points-per-decade"}},
+                {threads_option(), touching_option()}})},
        {"screenshot (no display needed)", output},
-       {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()},
-       {kPluginOptionsTitle, plugin_options()}},
+       rendering_group(),
+       plugin_group()},
       {"nbscope headless --scene assets/scenes/default.json --frames 120 --algorithm all",
        "nbscope headless --scene assets/scenes/pile.json --inject-fault drop-pair --stop-at-violation --screenshot v.png",
        "nbscope headless --scene assets/scenes/gas.json --record gas.nbsrec --report gas.json"},
@@ -255,7 +274,7 @@ CommandSpec replay_command() {
        "  pairs                    optional, after the rows: then one contact pair a line, i,j\n"
        "                           (every frame has a pairs block, or none)"},
       {{"options",
-        {{"--headless", "", "", "no window even when there is a display"},
+        joined({{{"--headless", "", "", "no window even when there is a display"},
          {"--frames", "N", "every recorded frame", "the first N frames only"},
          {"--algorithm", "NAME[,NAME...]|all", "the --detector-lib detectors, else nbs, or recorded when the frames carry pairs", "the detectors run and checked"},
          {"--report", "OUT.json", "", "as headless --report"},
@@ -270,9 +289,11 @@ CommandSpec replay_command() {
          {"--record", "OUT.nbsrec", "", "headless: writes the frames replayed (2D or 3D, with their pairs); a recording recorded again is the same file"},
          {"--screenshot", "OUT.png", "", "headless: renders the last frame off-screen, as headless --screenshot"},
          {"--size", "WxH", "", "the window's or the screenshot's size in pixels"},
-         gl_option()}},
-       {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()},
-       {kPluginOptionsTitle, plugin_options()}},
+         gl_option()},
+                {threads_option(), touching_option()}})},
+       dump_replay_group(),
+       rendering_group(),
+       plugin_group()},
       {"nbscope replay gas.nbsrec", "nbscope replay gas.nbsrec --headless --algorithm all --report replay.json"},
       "0 every check passed, 1 a check failed, 2 bad input (one line on stderr)",
   };
@@ -285,18 +306,6 @@ const std::vector<CommandSpec>& command_table() {
   static const std::vector<CommandSpec> table = [] {
     std::vector<CommandSpec> t = {gui_command(), headless_command(), replay_command()};
     for (CommandSpec& c : file_commands()) t.push_back(std::move(c));
-    // The contact convention and the threads on every command that detects (dump's arrays are its
-    // traced run, the book's serial loops: no threads); the dump flags where frames are read.
-    for (CommandSpec& c : t) {
-      const std::string name = c.name;
-      if (name != "algorithms" && name != "dump") c.groups.front().options.push_back(threads_option());
-      if (name == "algorithms") continue;
-      c.groups.front().options.push_back(touching_option());
-      if (name == "replay") c.groups.insert(c.groups.begin() + 1, {"frames from LAMMPS and LIGGGHTS dumps (docs/dem.md)", dump_replay_options()});
-      if (name == "gui") c.groups.insert(c.groups.begin() + 1, {"gui --input FILE (without --arrays): a dump or ELEMENTS.csv", gui_input_options()});
-      if (name == "pairs" || name == "dump" || name == "verify")
-        c.groups.insert(c.groups.begin() + 1, {"--input FILE.dump: a LAMMPS or LIGGGHTS dump (docs/dem.md)", dump_input_options()});
-    }
     return t;
   }();
   return table;
