@@ -54,7 +54,7 @@ std::string declared_name(const std::string& name, const std::vector<LoadedLibra
 }  // namespace
 
 void load_detector_libs(Args& args, const std::string& command) {
-  if ((", " + commands_taking("--detector-lib") + ", ").find(", " + command + ", ") == std::string::npos) return;
+  if (!args.offers("--detector-lib")) return;
   if (const auto seconds = args.number("--detector-timeout")) {
     if (*seconds < 0 || *seconds > 1e6) throw Error("--detector-timeout: the seconds must be from 0 (no limit) to 1e6");
     set_detector_timeout(*seconds);
@@ -71,7 +71,7 @@ void load_detector_libs(Args& args, const std::string& command) {
     if (std::find(declared.begin(), declared.end(), libraries.back().name) == declared.end()) declared.push_back(libraries.back().name);
   }
   if (libraries.empty() || command == "algorithms") return;
-  if (const auto given = args.peek("--algorithm")) {
+  if (const auto given = args.value("--algorithm")) {
     std::vector<std::string> names;
     for (const std::string& name : split_names("--algorithm", *given)) names.push_back(declared_name(name, libraries));
     args.set("--algorithm", join(names, ","));

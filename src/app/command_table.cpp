@@ -6,6 +6,7 @@
 #include "app/commands.hpp"
 #include "app/dump_input.hpp"
 #include "app/threads_flag.hpp"
+#include "physics/scene.hpp"
 
 namespace nbscope {
 
@@ -16,7 +17,7 @@ const std::vector<OptionSpec>& rendering_options() {
       {"--panels", "SPEC", "", "the same for panels: controls scenes algorithm overlays stats selection metrics violations timeline "
                                "stepper pseudocode arrays scaling"},
       {"--select", "K", "", "select element K as shown (its cell, lists and pairs highlighted, its trail drawn): from 0, or from 1 with "
-                            "--book-numbering; on a dump's frames, the atom id K"},
+                            "--book-numbering; on a dump's frames, the atom id K", integer_value(0, 100'000'000)},
       {"--lists", "FILTER", "row past 300 elements, else all",
        "the lists overlay draws all lists, the selected element's, or one row's (all | selected | row)"},
       {"--layer", "K|auto", "auto",
@@ -24,11 +25,11 @@ const std::vector<OptionSpec>& rendering_options() {
        "selected or violating pair's layer, else the selected element's, else the busiest (Up/Down move it in the window)"},
       {"--camera", "X,Y,PPM", "", "put (X, Y) in the middle of the view the panels leave free, at PPM pixels per metre, instead of fitting "
                                   "the scene"},
-      {"--no-timings", "", "", "show \"-\" for wall-clock numbers (reproducible screenshots)"},
+      {"--no-timings", "", "", "show \"-\" for wall-clock numbers (reproducible screenshots)", flag_value()},
       {"--step", "K", "", "open the Stepper, Arrays and Pseudocode panels on the state after K operations of the last frame's detection "
                           "of one algorithm that records them (not box2d); K past its last operation is an error (headless: needs "
-                          "--screenshot)"},
-      {"--book-numbering", "", "", "number elements and cells from 1 everywhere, as the book does"},
+                          "--screenshot)", integer_value(0, std::int64_t{1} << 53)},
+      {"--book-numbering", "", "", "number elements and cells from 1 everywhere, as the book does", flag_value()},
       {"--shader-dir", "DIR", "$NBSCOPE_SHADER_DIR if set, else $NBSCOPE_DATA_DIR/shaders, else an installed share/nbscope/shaders "
                               "beside the binary, else the source tree's shaders/ (nbscope --version says which)",
        "GLSL sources"},
@@ -38,7 +39,8 @@ const std::vector<OptionSpec>& rendering_options() {
 
 const std::vector<OptionSpec>& grid_options() {
   static const std::vector<OptionSpec> options = {
-      {"--cell-size", "D", "cells of the largest diameter", "pins the grid's cell size (D must be at least the largest diameter)"},
+      {"--cell-size", "D", "cells of the largest diameter", "pins the grid's cell size (D must be at least the largest diameter)",
+       number_value()},
       {"--origin", "X,Y[,Z]", "the smallest centre coordinates", "pins the grid's origin"},
       {"--cells", "NX,NY[,NZ]", "", "pins the number of cells per axis (the book's Fig. 3.15 is --cell-size 1 --origin 0,0 --cells 10,10)"},
   };
@@ -50,9 +52,10 @@ const std::vector<OptionSpec>& plugin_options() {
       {"--detector-lib", "PATH.so", "",
        "loads a detector plugin (include/nbscope/detector.h), named as a built-in (or by its file name); repeatable; "
        "without --algorithm, the one run. One unusable stops the run (exit 2); a detection that breaks the API, crashes "
-       "or hangs is its frame's violation"},
+       "or hangs is its frame's violation", repeated_value()},
       {"--detector-timeout", "SECONDS", "60",
-       "how long one call into a plugin (its load, describe, detect, release, own_bytes) may take (0: no limit)"},
+       "how long one call into a plugin (its load, describe, detect, release, own_bytes) may take (0: no limit)",
+       number_value()},
       {"--detector-isolation", "process|none", "process",
        "where a plugin's calls run: in a host process of its own (a crash or a write out of bounds takes only the host "
        "down: nbscope starts a new one), or in nbscope's process (cheaper; a crash in a detection then ends the run, exit 2)"},
@@ -67,12 +70,14 @@ OptionSpec gl_option() {
 
 namespace {
 
-// gui --input's dump flags: the dump's own (no --timestep: every frame is shown; no --contact-ids: no contacts).
+// gui --input's dump flags: the dump's own (no --timestep: every frame is shown; --contact-ids hidden:
+// taken only to be refused with its reason, gui --input reads no contacts).
 const std::vector<OptionSpec>& gui_input_options() {
   static const std::vector<OptionSpec> options = [] {
     std::vector<OptionSpec> o;
     for (const OptionSpec& s : dump_input_options())
-      if (std::string_view(s.name) != "--timestep" && std::string_view(s.name) != "--contact-ids") o.push_back(s);
+      if (std::string_view(s.name) != "--timestep") o.push_back(s);
+    for (OptionSpec& s : o) s.hidden = std::string_view(s.name) == "--contact-ids";
     return o;
   }();
   return options;
@@ -100,8 +105,8 @@ CommandSpec gui_command() {
       {"--input", "ELEMENTS.csv", "", "with --arrays: the elements the arrays index (x,y,r a line); without --arrays: ELEMENTS.csv "
                                       "(x,y,r or x,y,z,r) or a dump, opened in the window"},
       {"--arrays", "ARRAYS.json", "", "with --input: your heads and next arrays, in the schema dump writes (see verify --arrays)"},
-      {"--base", "1", "0", "the arrays count elements from 1 (numbered as the file counts: from 1)"},
-      {"--exact", "", "", "also the book's order within every list (as verify --exact)"},
+      {"--base", "1", "0", "the arrays count elements from 1 (numbered as the file counts: from 1)", integer_value(0, 1)},
+      {"--exact", "", "", "also the book's order within every list (as verify --exact)", flag_value()},
   };
   arrays.insert(arrays.end(), grid_options().begin(), grid_options().end());
   return {
@@ -145,13 +150,14 @@ CommandSpec gui_command() {
          {"--algorithm", "NAME", "a --detector-lib's detector, else the last algorithm used, else nbs",
           "the detector (nbscope algorithms); with --arrays the arrays' algorithm, as verify --arrays"},
          {"--inject-fault", "NAME", "", "breaks the detection (or Box2D's side) on purpose, as headless --inject-fault"},
-         {"--history-mb", "N", "256, saved with the settings", "memory for the frames the Timeline keeps"},
-         {"--max-contacts", "N", "1,000,000", "the Box2D contacts a frame may create, as headless --max-contacts"},
+         {"--history-mb", "N", "256, saved with the settings", "memory for the frames the Timeline keeps", integer_value(0, 1'000'000)},
+         {"--max-contacts", "N", "1,000,000", "the Box2D contacts a frame may create, as headless --max-contacts",
+          integer_value(0, kMaxMaxContacts)},
          {"--frames", "N", "", "runs N frames of simulation (drawn at the window's own pace meanwhile; stderr gives both rates), "
                                "saves --screenshot and exits (no input, no settings: for tests under Xvfb); with "
-                               "--arrays: the frames drawn before the screenshot"},
+                               "--arrays: the frames drawn before the screenshot", integer_value(0, kMaxFrames)},
          {"--back", "K", "", "with --frames: then goes K frames back through the history first, each drawn, and says how long a frame "
-                             "took"},
+                             "took", integer_value(1, 100'000'000)},
          {"--screenshot", "OUT.png", "", "with --frames: the picture saved before exiting (without a display: where the headless "
                                          "rendering goes)"},
          {"--size", "WxH", "", "the window's (and the screenshot's) size in pixels"}},
@@ -195,41 +201,43 @@ CommandSpec headless_command() {
        "+-1e6 m, stops the run with exit 2 naming the body and the frame."},
       {{"options",
         joined({{{"--scene", "FILE", "", "the scene to run (required)"},
-         {"--frames", "N", "600", "the steps to run: frames 0..N, frame 0 (the initial poses) checked and counted too"},
+         {"--frames", "N", "600", "the steps to run: frames 0..N, frame 0 (the initial poses) checked and counted too",
+          integer_value(1, kMaxFrames)},
          {"--algorithm", "NAME[,NAME...]|all", "the --detector-lib detectors, else nbs", "the detectors run and checked on the same frames"},
          {"--report", "OUT.json", "", "writes per-frame counts, timings and every violation as JSON"},
          {"--inject-fault", "NAME", "",
           "drop-mask-cell | off-by-one-cell | stale-positions | drop-pair | drop-box2d-contact breaks the detection (or Box2D's "
           "side) on purpose: proofs that each invariant can fail. Bugs in a detector's own code, to follow to the operation that "
           "lost a pair, are the plugins of examples/detectors/ (--detector-lib)"},
-         {"--brute-limit", "N", "2000", "the elements up to which brute force is the reference R (sort above)"},
-         {"--quiet", "", "", "no progress bar"},
+         {"--brute-limit", "N", "2000", "the elements up to which brute force is the reference R (sort above)", integer_value(0, 1'000'000)},
+         {"--quiet", "", "", "no progress bar", flag_value()},
          {"--record", "OUT.nbsrec", "", "writes every frame's elements (frame 0 too) and the scene's pinned grid"},
          {"--stop-at-violation", "", "",
           "stops on the first frame with a violation and (with --screenshot) shows it as the window's Violations panel does: the pair "
           "selected, the camera on it, the stepper at the operation that decided it; exit 1, or 0 when no frame broke (one algorithm "
-          "only)"},
+          "only)", flag_value()},
          {"--rewind", "FROM:TO", "",
           "runs to frame FROM, goes back to kept frame TO and resumes to --frames: the frames after TO are simulated again "
           "(deterministically, from the scene) and replace the first ones; every report frame carries \"hash\", the hash of its "
           "elements, so a rewound run can be compared with a straight one frame by frame"},
          {"--back", "K", "", "after the last frame goes K frames back through the history (each detected and checked again); "
-                             "--screenshot then shows that frame"},
+                             "--screenshot then shows that frame", integer_value(1, 100'000'000)},
          {"--violation", "N", "", "instead of --back, goes to the run's N-th violation (from 1, as the Violations panel lists them) and shows it as "
-                                  "choosing it there does"},
+                                  "choosing it there does", integer_value(1, 1'000'000'000)},
          {"--history-mb", "N", "256 with --rewind, --back, --violation or --screenshot, else 0",
-          "memory for kept frames (0: a run that never goes back keeps only summaries)"},
+          "memory for kept frames (0: a run that never goes back keeps only summaries)", integer_value(0, 1'000'000)},
          {"--max-contacts", "N", "1,000,000, ~1.7 GB",
           "the Box2D contacts a frame may create (the scene's \"max_contacts\" sets it too): before every step the pairs of fat AABBs "
           "are counted and a world past it stops with exit 2 naming the count; no more than the memory this process can get (rlimits, "
-          "cgroup, MemAvailable) at ~1.7 kB a contact, whatever N says"},
+          "cgroup, MemAvailable) at ~1.7 kB a contact, whatever N says", integer_value(0, kMaxMaxContacts)},
          {"--scaling", "FILE.csv|run", "",
           "(with --screenshot) opens the Scaling panel on a CSV of nbscope scaling (a bad row: exit 2 naming FILE:LINE); --scaling run "
           "measures first, as nbscope scaling does, the detectors of --algorithm on --layout, --n and --points-per-decade (nbs at 1 "
           "and --threads threads)"},
          {"--layout", "L[,L...]", "loose", "with --scaling run: the layouts, as nbscope scaling --layout"},
          {"--n", "MIN..MAX", "1000..1000000", "with --scaling run: the sizes, as nbscope scaling --n"},
-         {"--points-per-decade", "K", "2", "with --scaling run: sizes a decade, as nbscope scaling --points-per-decade"}},
+         {"--points-per-decade", "K", "2", "with --scaling run: sizes a decade, as nbscope scaling --points-per-decade",
+                  integer_value(1, 20)}},
                 {threads_option(), touching_option()}})},
        {"screenshot (no display needed)", output},
        rendering_group(),
@@ -274,18 +282,19 @@ CommandSpec replay_command() {
        "  pairs                    optional, after the rows: then one contact pair a line, i,j\n"
        "                           (every frame has a pairs block, or none)"},
       {{"options",
-        joined({{{"--headless", "", "", "no window even when there is a display"},
-         {"--frames", "N", "every recorded frame", "the first N frames only"},
+        joined({{{"--headless", "", "", "no window even when there is a display", flag_value()},
+         {"--frames", "N", "every recorded frame", "the first N frames only", integer_value(1, kMaxFrames)},
          {"--algorithm", "NAME[,NAME...]|all", "the --detector-lib detectors, else nbs, or recorded when the frames carry pairs", "the detectors run and checked"},
          {"--report", "OUT.json", "", "as headless --report"},
          {"--inject-fault", "NAME", "", "drop-pair, drop-mask-cell, off-by-one-cell or stale-positions (as headless)"},
-         {"--brute-limit", "N", "2000", "as headless --brute-limit"},
-         {"--quiet", "", "", "no progress bar"},
-         {"--stop-at-violation", "", "", "as headless --stop-at-violation"},
-         {"--back", "K", "", "headless: after the last frame goes K frames back (as headless --back)"},
-         {"--violation", "N", "", "headless: goes to the N-th listed violation (as headless --violation)"},
+         {"--brute-limit", "N", "2000", "as headless --brute-limit", integer_value(0, 1'000'000)},
+         {"--quiet", "", "", "no progress bar", flag_value()},
+         {"--stop-at-violation", "", "", "as headless --stop-at-violation", flag_value()},
+         {"--back", "K", "", "headless: after the last frame goes K frames back (as headless --back)", integer_value(1, 100'000'000)},
+         {"--violation", "N", "", "headless: goes to the N-th listed violation (as headless --violation)", integer_value(1, 1'000'000'000)},
          {"--history-mb", "N", "256 with --back, --violation or --screenshot, else 0",
-          "memory for kept frames: a dump's frames are read as shown, and this many MB of them stay (a frame dropped is read again)"},
+          "memory for kept frames: a dump's frames are read as shown, and this many MB of them stay (a frame dropped is read again)",
+          integer_value(0, 1'000'000)},
          {"--record", "OUT.nbsrec", "", "headless: writes the frames replayed (2D or 3D, with their pairs); a recording recorded again is the same file"},
          {"--screenshot", "OUT.png", "", "headless: renders the last frame off-screen, as headless --screenshot"},
          {"--size", "WxH", "", "the window's or the screenshot's size in pixels"},
@@ -320,7 +329,8 @@ const CommandSpec* find_command(const std::string& name) {
 std::vector<std::string> option_names(const CommandSpec& command) {
   std::vector<std::string> names;
   for (const OptionGroup& g : command.groups)
-    for (const OptionSpec& o : g.options) names.emplace_back(o.name);
+    for (const OptionSpec& o : g.options)
+      if (!o.hidden) names.emplace_back(o.name);
   return names;
 }
 

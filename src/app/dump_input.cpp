@@ -270,14 +270,17 @@ std::unique_ptr<RecordedFrames> read_input_recording(const std::string& path, co
 
 const std::vector<OptionSpec>& dump_input_options() {
   static const std::vector<OptionSpec> options = {
-      {"--timestep", "S", "the only frame", "with --input FILE.dump: the frame of timestep S (a dump with several frames needs it)"},
+      {"--timestep", "S", "the only frame", "with --input FILE.dump: the frame of timestep S (a dump with several frames needs it)",
+       integer_value(0, std::numeric_limits<long long>::max())},
       {"--contact-ids", "A,B", "id1 id2 by name, else LIGGGHTS's pair/gran/local `pos id` order (7,8)",
        "the two columns of a dump local file holding a contact's atom ids: numbers from 1, or ENTRIES names"},
-      {"--radius", "R", "", "every atom's radius, for a dump without a radius or diameter column"},
+      {"--radius", "R", "", "every atom's radius, for a dump without a radius or diameter column", number_value()},
       {"--type-radius", "T:R,...", "", "radii by atom type, for a dump without a radius or diameter column (1:0.0015,2:0.00225)"},
-      {"--2d", "", "2D when the dump has no z column", "read a dump as 2D: z dropped (LIGGGHTS's dimension 2 writes z = 0)"},
+      {"--2d", "", "2D when the dump has no z column", "read a dump as 2D: z dropped (LIGGGHTS's dimension 2 writes z = 0)",
+       flag_value()},
       {"--tolerance", "L", "half a unit of the last printed digit", "the precision band of a dump's contacts: a disagreement whose "
-                                                                   "gap is within L is at the boundary, not a violation"},
+                                                                   "gap is within L is at the boundary, not a violation",
+       number_value()},
       {"--periodic", "x,y[,z]", "a dump's pp axes", "these axes periodic: contacts by the minimum image (nbs and brute)"},
       {"--box", "XLO:XHI,YLO:YHI[,ZLO:ZHI]", "a dump's BOX BOUNDS", "the periodic box of elements from a CSV file (with --periodic)"},
   };
@@ -288,9 +291,11 @@ const std::vector<OptionSpec>& dump_replay_options() {
   static const std::vector<OptionSpec> options = [] {
     std::vector<OptionSpec> o = {
         {"--dump", "FILES", "", "LAMMPS/LIGGGHTS dump custom frames (id, x y [z], radius ...): a file or a quoted glob, .gz too; "
-                                "repeatable; frames ordered by timestep"},
-        {"--contacts", "FILES", "", "the code's contact list, dump local (LIGGGHTS compute pair/gran/local pos id): the recorded pairs"},
-        {"--dt", "S", "", "seconds per timestep: a frame's time is S x timestep (ITEM: TIME wins; neither: the timestep)"},
+                                "repeatable; frames ordered by timestep", repeated_value()},
+        {"--contacts", "FILES", "", "the code's contact list, dump local (LIGGGHTS compute pair/gran/local pos id): the recorded pairs",
+         repeated_value()},
+        {"--dt", "S", "", "seconds per timestep: a frame's time is S x timestep (ITEM: TIME wins; neither: the timestep)",
+         number_value()},
     };
     for (const OptionSpec& s : dump_input_options())
       if (std::string_view(s.name) != "--timestep") o.push_back(s);
