@@ -19,7 +19,8 @@ const std::vector<OptionSpec>& rendering_options() {
       {"--select", "K", "", "select element K as shown (its cell, lists and pairs highlighted, its trail drawn): from 0, or from 1 with "
                             "--book-numbering; on a dump's frames, the atom id K", integer_value(0, 100'000'000)},
       {"--lists", "FILTER", "row past 300 elements, else all",
-       "the lists overlay draws all lists, the selected element's, or one row's (all | selected | row)"},
+       "the lists overlay draws all lists, the selected element's, or one row's (all | selected | row)",
+       choice_value({"all", "selected", "row"})},
       {"--layer", "K|auto", "auto",
        "the layer of a 3D frame shown (from 0, the bottom; K past the top layer, or on a 2D frame, is an error); auto: the "
        "selected or violating pair's layer, else the selected element's, else the busiest (Up/Down move it in the window)"},
@@ -55,17 +56,19 @@ const std::vector<OptionSpec>& plugin_options() {
        "or hangs is its frame's violation", repeated_value()},
       {"--detector-timeout", "SECONDS", "60",
        "how long one call into a plugin (its load, describe, detect, release, own_bytes) may take (0: no limit)",
-       number_value()},
+       number_value(0, 1e6, "the seconds must be from 0 (no limit) to 1e6")},
       {"--detector-isolation", "process|none", "process",
        "where a plugin's calls run: in a host process of its own (a crash or a write out of bounds takes only the host "
-       "down: nbscope starts a new one), or in nbscope's process (cheaper; a crash in a detection then ends the run, exit 2)"},
+       "down: nbscope starts a new one), or in nbscope's process (cheaper; a crash in a detection then ends the run, exit 2)",
+       choice_value({"process", "none"}, "{} is not process or none")},
   };
   return options;
 }
 
 OptionSpec gl_option() {
   return {"--gl", "osmesa|egl|auto", "auto",
-          "the off-screen GL of --screenshot: OSMesa or EGL (surfaceless); auto takes OSMesa when libOSMesa.so.8 is there, else EGL"};
+          "the off-screen GL of --screenshot: OSMesa or EGL (surfaceless); auto takes OSMesa when libOSMesa.so.8 is there, else EGL",
+          choice_value({"osmesa", "egl", "auto"})};
 }
 
 namespace {

@@ -223,6 +223,31 @@ TEST(CliOptions, EveryPageNamesItsOptionsAndTheSummaryEveryCommand) {
   EXPECT_EQ(command_help(*find_command("gui")).find("--contact-ids"), std::string::npos);
 }
 
+// The error of parsing `args` against `command`'s row, or "".
+std::string parse_error(const std::vector<std::string>& args, const std::string& command) {
+  try {
+    Args a(args, *find_command(command));
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// The choices and ranges the commands checked by hand are their rows' now, in the same words.
+TEST(CliOptions, TheRowsChoicesAndRangesKeepTheirWords) {
+  EXPECT_EQ(parse_error({"--touching", "loose"}, "pairs"),
+            "--touching: 'loose' is not inclusive (|c_i - c_j| <= r_i + r_j, the default) or strict (<, as LAMMPS and LIGGGHTS)");
+  EXPECT_EQ(parse_error({"--detector-isolation", "thread"}, "scaling"), "--detector-isolation: 'thread' is not process or none");
+  EXPECT_EQ(parse_error({"--detector-timeout", "-1"}, "pairs"), "--detector-timeout: the seconds must be from 0 (no limit) to 1e6");
+  EXPECT_EQ(parse_error({"--gl", "vulkan"}, "headless"), "--gl: 'vulkan' is not one of osmesa, egl, auto");
+  EXPECT_EQ(parse_error({"--lists", "rows"}, "verify"), "--lists: 'rows' is not one of all, selected, row");
+  EXPECT_EQ(parse_error({"--radius", "0"}, "pairs"), "--radius: must be positive and finite");
+  EXPECT_EQ(parse_error({"--tolerance", "-1e-9"}, "verify"), "--tolerance: must be 0 or more (a length)");
+  EXPECT_EQ(parse_error({"--dt", "0"}, "replay"), "--dt: must be positive (seconds per timestep)");
+  EXPECT_EQ(parse_error({"--threads", "65"}, "scaling"), "--threads: '65' is not a whole number from 1 to 64");
+  EXPECT_EQ(parse_error({"--dt", "1e-300", "--touching", "strict", "--gl", "egl"}, "replay"), "");
+}
+
 std::string command_error(const std::vector<std::string>& args, const std::string& command, bool positional) {
   try {
     Args a(args, *find_command(command));
