@@ -1,9 +1,14 @@
-// nbscope app: a small command-line parser. Flags are taken by name; whatever is left over is an
-// error, so every command refuses unknown flags the same way.
+// nbscope app: the one option parser. A command's arguments are parsed against its command-table
+// row (app/command_table.hpp: every option's kind, range, choices, repeat) before the command runs:
+// an unknown option, a missing or bad value, a value out of range and a repeat are refused there.
+// The command then reads typed values by name; a name not in its row is a programming error
+// (std::logic_error at the read), so no option is read that the table does not list.
 #pragma once
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "app/option_spec.hpp"
 
 namespace nbscope {
 
@@ -11,59 +16,66 @@ namespace nbscope {
 // since a run's memory no longer grows with its length (docs: README "Long runs").
 inline constexpr long long kMaxFrames = 100'000'000;
 
+struct CommandSpec;
+
 class Args {
  public:
-  // Wraps the arguments after the command name; `command` names the command in errors.
-  explicit Args(std::vector<std::string> args, std::string command = {})
-      : args_(std::move(args)), used_(args_.size(), false), command_(std::move(command)) {}
+  // Parses `args` (the words after the command's name) against `command`'s row, every group.
+  Args(std::vector<std::string> args, const CommandSpec& command);
+  // Against `options`, for what has no row (help, --version); `command` names it in errors.
+  Args(std::vector<std::string> args, std::string command, std::vector<OptionSpec> options);
 
-  // True (and consumed) when `--name` is present.
+  // True when the flag `--name` was given.
   bool flag(const std::string& name);
-  // The value of `--name VALUE` or `--name=VALUE`; Error when the value is missing.
+  // The value of `--name VALUE` or `--name=VALUE` (a text or choice option).
   std::optional<std::string> value(const std::string& name);
-  // Every value of a repeatable `--name VALUE` (or `--name=VALUE`), in order; Error when one is missing.
+  // Every value of a repeatable `--name VALUE`, in order.
   std::vector<std::string> values(const std::string& name);
-  // True when `--name` or `--name=VALUE` is among the arguments not yet taken; takes nothing.
-  [[nodiscard]] bool has(const std::string& name) const;
-  // The value of `--name` among the arguments not yet taken (the first one), taking nothing.
-  [[nodiscard]] std::optional<std::string> peek(const std::string& name) const;
-  // Makes `value` the value of `--name`: the first one not yet taken replaced, else `--name value` added.
-  void set(const std::string& name, const std::string& value);
-  // Like value(), parsed as an integer in [min, max] ("1e6" is one too); Error names the flag otherwise.
-  std::optional<long long> integer(const std::string& name, long long min, long long max);
-  // Like value(), parsed as a finite double.
+  // The value of an integer option, within its row's range.
+  std::optional<long long> integer(const std::string& name);
+  // The value of a number option: finite, within its row's range.
   std::optional<double> number(const std::string& name);
-  // The next unconsumed argument not starting with "--", consumed. Taken after every option: an
-  // option nobody took is refused first (by its name, so that its value is not blamed instead).
+  // True when `--name` was given; reads nothing (the option still has to be read, or it does not apply).
+  [[nodiscard]] bool has(const std::string& name) const;
+  // True when the command's row has `--name` (given or not).
+  [[nodiscard]] bool offers(const std::string& name) const;
+  // Makes `value` the one value of the text option `--name`, as if it had been given so.
+  void set(const std::string& name, const std::string& value);
+  // The next argument that is no option and no option's value. Read after every option: an option
+  // given but not read is refused first (by its name, so that its value is not blamed instead).
   std::optional<std::string> positional();
-  // Error for an option nobody consumed, named as such ("gui: --report is not an option of gui (it
-  // is one of headless, replay)"), else for the first argument nobody consumed.
+  // Error for an option given but not read ("replay: --gl does not apply here (see nbscope --help)"),
+  // else for the first argument nobody read.
   void finish() const;
-  // Error for the first option (an argument starting with "-") nobody consumed.
-  void refuse_unknown_options() const;
 
  private:
-  // The index of the first argument from `from` on, not yet taken, that is `--name` or `--name=VALUE`; npos if none.
-  [[nodiscard]] std::size_t untaken(const std::string& name, std::size_t from = 0) const;
-  // Takes the option at `i` and returns its value (the next argument, or what follows "=").
-  std::string take(const std::string& name, std::size_t i);
-  void refuse_repeat(const std::string& name) const;
+  struct Given {
+    std::vector<std::string> values;  // one "" per time a flag was given
+    std::size_t first = 0;            // where in the arguments it was first given
+    bool read = false;
+  };
+  void parse(const std::vector<std::string>& args);
+  // The option `name` of the row, marked read; std::logic_error when the row has no such option or
+  // it is not of `kind`.
+  std::size_t index(const std::string& name) const;
+  Given& read(const std::string& name, OptionKind kind);
+  void refuse_unread() const;
 
-  std::vector<std::string> args_;
-  std::vector<bool> used_;
   std::string command_;
+  std::vector<OptionSpec> options_;
+  std::vector<Given> given_;  // one per option of options_
+  std::vector<std::string> positionals_;
+  std::size_t next_positional_ = 0;
 };
 
-// Loads the detector plugins of every --detector-lib (after --detector-timeout) when `command` takes
-// them, before the command resolves an algorithm name (app/cli_plugins.cpp).
+// Loads the detector plugins of every --detector-lib (after --detector-timeout) when the command's
+// row offers them, before the command resolves an algorithm name (app/cli_plugins.cpp).
 void load_detector_libs(Args& args, const std::string& command);
 
 // The names of a comma-separated list ("nbs,sort"); Error naming `flag` for an empty or repeated name.
 std::vector<std::string> split_names(const std::string& flag, const std::string& text);
 
-// The options each command takes ("gui", "headless", "replay", "pairs", "dump", "scaling"), as --help lists
-// them; the commands of the ones that take `option` (without any "=VALUE"), comma-separated.
-const std::vector<std::pair<const char*, std::vector<const char*>>>& command_options();
+// The commands whose rows list `option` (hidden rows aside), comma-separated in the table's order.
 std::string commands_taking(const std::string& option);
 
 // "W" "x" "H" into width and height; Error names `flag` otherwise.

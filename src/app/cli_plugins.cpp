@@ -54,16 +54,11 @@ std::string declared_name(const std::string& name, const std::vector<LoadedLibra
 }  // namespace
 
 void load_detector_libs(Args& args, const std::string& command) {
-  if ((", " + commands_taking("--detector-lib") + ", ").find(", " + command + ", ") == std::string::npos) return;
-  if (const auto seconds = args.number("--detector-timeout")) {
-    if (*seconds < 0 || *seconds > 1e6) throw Error("--detector-timeout: the seconds must be from 0 (no limit) to 1e6");
-    set_detector_timeout(*seconds);
-  }
-  if (const auto isolation = args.value("--detector-isolation")) {
-    if (*isolation != "process" && *isolation != "none")
-      throw Error("--detector-isolation: '" + excerpt(*isolation) + "' is not process or none");
+  if (!args.offers("--detector-lib")) return;
+  // Their ranges and choices are their rows' (command_table.cpp: plugin_options), refused when parsed.
+  if (const auto seconds = args.number("--detector-timeout")) set_detector_timeout(*seconds);
+  if (const auto isolation = args.value("--detector-isolation"))
     set_plugin_isolation(*isolation == "process" ? PluginIsolation::process : PluginIsolation::none);
-  }
   std::vector<LoadedLibrary> libraries;
   std::vector<std::string> declared;  // each detector once (the same file named twice loads once)
   for (const std::string& path : args.values("--detector-lib")) {
@@ -71,7 +66,7 @@ void load_detector_libs(Args& args, const std::string& command) {
     if (std::find(declared.begin(), declared.end(), libraries.back().name) == declared.end()) declared.push_back(libraries.back().name);
   }
   if (libraries.empty() || command == "algorithms") return;
-  if (const auto given = args.peek("--algorithm")) {
+  if (const auto given = args.value("--algorithm")) {
     std::vector<std::string> names;
     for (const std::string& name : split_names("--algorithm", *given)) names.push_back(declared_name(name, libraries));
     args.set("--algorithm", join(names, ","));

@@ -23,7 +23,7 @@ int run_dump(Args& args) {
   const std::string format = args.value("--format").value_or("json");
   const Touching touching = take_touching(args);
   DumpFlags dump_flags = take_dump_flags(args);
-  dump_flags.timestep = args.integer("--timestep", 0, std::numeric_limits<long long>::max());
+  dump_flags.timestep = args.integer("--timestep");
   args.finish();
   if (dump_flags.columns.numbers || dump_flags.columns.names)
     throw Error("--contact-ids: needs --contacts (a dump local file's columns): dump reads no contacts (replay --contacts FILES and verify --pairs FILE.dump do)");

@@ -71,10 +71,10 @@ GuiOptions parse_gui_options(Args& args) {
   o.touching = take_touching(args);
   o.threads = take_threads(args);
   if (auto f = args.value("--inject-fault")) o.fault = parse_fault(*f);
-  if (auto n = args.integer("--frames", 0, kMaxFrames)) o.frames = *n;
-  if (auto mb = args.integer("--history-mb", 0, 1'000'000)) o.history_mb = *mb;
-  if (auto n = args.integer("--max-contacts", 0, kMaxMaxContacts)) o.max_contacts = *n;
-  o.back = args.integer("--back", 1, 100'000'000).value_or(0);
+  if (auto n = args.integer("--frames")) o.frames = *n;
+  if (auto mb = args.integer("--history-mb")) o.history_mb = *mb;
+  if (auto n = args.integer("--max-contacts")) o.max_contacts = *n;
+  o.back = args.integer("--back").value_or(0);
   parse_view_options(args, false, o.view);
   if (auto p = args.positional()) throw Error(*p + ": unexpected argument (the scene goes after --scene)");
   args.finish();

@@ -23,14 +23,14 @@ int run_pairs(Args& args) {
   const auto input = args.value("--input");
   const std::string algorithm = args.value("--algorithm").value_or("nbs");
   const auto output = args.value("--output");
-  const long long repeat = args.integer("--repeat", 1, 1'000'000).value_or(1);
+  const long long repeat = args.integer("--repeat").value_or(1);
   DetectOptions options;
-  options.max_pairs = static_cast<std::size_t>(args.integer("--max-pairs", 0, 1'000'000'000).value_or(kDefaultMaxPairs));
+  options.max_pairs = static_cast<std::size_t>(args.integer("--max-pairs").value_or(kDefaultMaxPairs));
   const GridFlags grid_flags = take_grid_flags(args);
   options.touching = take_touching(args);
   options.threads = take_threads(args);
   DumpFlags dump_flags = take_dump_flags(args);
-  dump_flags.timestep = args.integer("--timestep", 0, std::numeric_limits<long long>::max());
+  dump_flags.timestep = args.integer("--timestep");
   args.finish();
   if (dump_flags.columns.numbers || dump_flags.columns.names)
     throw Error("--contact-ids: needs --contacts (a dump local file's columns): pairs reads no contacts (replay --contacts FILES and verify --pairs FILE.dump do)");

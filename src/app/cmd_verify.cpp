@@ -205,11 +205,11 @@ int report_arrays(const VerifyArraysInputs& in, const VerifyArraysRun& run) {
 int run_verify(Args& args) {
   VerifyArraysInputs in = take_verify_inputs(args);
   const auto pairs = args.value("--pairs");
-  const std::int64_t brute_limit = args.integer("--brute-limit", 0, 1'000'000).value_or(2000);
+  const std::int64_t brute_limit = args.integer("--brute-limit").value_or(2000);
   const Touching touching = take_touching(args);
   const int threads = take_threads(args);
   DumpFlags dump = take_dump_flags(args);
-  dump.timestep = args.integer("--timestep", 0, std::numeric_limits<long long>::max());
+  dump.timestep = args.integer("--timestep");
   ViewOptions view;
   parse_view_options(args, true, view);
   args.finish();

@@ -6,6 +6,7 @@
 #include "app/commands.hpp"
 #include "app/dump_input.hpp"
 #include "app/threads_flag.hpp"
+#include "physics/scene.hpp"
 
 namespace nbscope {
 
@@ -16,19 +17,20 @@ const std::vector<OptionSpec>& rendering_options() {
       {"--panels", "SPEC", "", "the same for panels: controls scenes algorithm overlays stats selection metrics violations timeline "
                                "stepper pseudocode arrays scaling"},
       {"--select", "K", "", "select element K as shown (its cell, lists and pairs highlighted, its trail drawn): from 0, or from 1 with "
-                            "--book-numbering; on a dump's frames, the atom id K"},
+                            "--book-numbering; on a dump's frames, the atom id K", integer_value(0, 100'000'000)},
       {"--lists", "FILTER", "row past 300 elements, else all",
-       "the lists overlay draws all lists, the selected element's, or one row's (all | selected | row)"},
+       "the lists overlay draws all lists, the selected element's, or one row's (all | selected | row)",
+       choice_value({"all", "selected", "row"})},
       {"--layer", "K|auto", "auto",
        "the layer of a 3D frame shown (from 0, the bottom; K past the top layer, or on a 2D frame, is an error); auto: the "
        "selected or violating pair's layer, else the selected element's, else the busiest (Up/Down move it in the window)"},
       {"--camera", "X,Y,PPM", "", "put (X, Y) in the middle of the view the panels leave free, at PPM pixels per metre, instead of fitting "
                                   "the scene"},
-      {"--no-timings", "", "", "show \"-\" for wall-clock numbers (reproducible screenshots)"},
+      {"--no-timings", "", "", "show \"-\" for wall-clock numbers (reproducible screenshots)", flag_value()},
       {"--step", "K", "", "open the Stepper, Arrays and Pseudocode panels on the state after K operations of the last frame's detection "
                           "of one algorithm that records them (not box2d); K past its last operation is an error (headless: needs "
-                          "--screenshot)"},
-      {"--book-numbering", "", "", "number elements and cells from 1 everywhere, as the book does"},
+                          "--screenshot)", integer_value(0, std::int64_t{1} << 53)},
+      {"--book-numbering", "", "", "number elements and cells from 1 everywhere, as the book does", flag_value()},
       {"--shader-dir", "DIR", "$NBSCOPE_SHADER_DIR if set, else $NBSCOPE_DATA_DIR/shaders, else an installed share/nbscope/shaders "
                               "beside the binary, else the source tree's shaders/ (nbscope --version says which)",
        "GLSL sources"},
@@ -38,7 +40,8 @@ const std::vector<OptionSpec>& rendering_options() {
 
 const std::vector<OptionSpec>& grid_options() {
   static const std::vector<OptionSpec> options = {
-      {"--cell-size", "D", "cells of the largest diameter", "pins the grid's cell size (D must be at least the largest diameter)"},
+      {"--cell-size", "D", "cells of the largest diameter", "pins the grid's cell size (D must be at least the largest diameter)",
+       number_value()},
       {"--origin", "X,Y[,Z]", "the smallest centre coordinates", "pins the grid's origin"},
       {"--cells", "NX,NY[,NZ]", "", "pins the number of cells per axis (the book's Fig. 3.15 is --cell-size 1 --origin 0,0 --cells 10,10)"},
   };
@@ -50,33 +53,54 @@ const std::vector<OptionSpec>& plugin_options() {
       {"--detector-lib", "PATH.so", "",
        "loads a detector plugin (include/nbscope/detector.h), named as a built-in (or by its file name); repeatable; "
        "without --algorithm, the one run. One unusable stops the run (exit 2); a detection that breaks the API, crashes "
-       "or hangs is its frame's violation"},
+       "or hangs is its frame's violation", repeated_value()},
       {"--detector-timeout", "SECONDS", "60",
-       "how long one call into a plugin (its load, describe, detect, release, own_bytes) may take (0: no limit)"},
+       "how long one call into a plugin (its load, describe, detect, release, own_bytes) may take (0: no limit)",
+       number_value(0, 1e6, "the seconds must be from 0 (no limit) to 1e6")},
       {"--detector-isolation", "process|none", "process",
        "where a plugin's calls run: in a host process of its own (a crash or a write out of bounds takes only the host "
-       "down: nbscope starts a new one), or in nbscope's process (cheaper; a crash in a detection then ends the run, exit 2)"},
+       "down: nbscope starts a new one), or in nbscope's process (cheaper; a crash in a detection then ends the run, exit 2)",
+       choice_value({"process", "none"}, "{} is not process or none")},
   };
   return options;
 }
 
 OptionSpec gl_option() {
   return {"--gl", "osmesa|egl|auto", "auto",
-          "the off-screen GL of --screenshot: OSMesa or EGL (surfaceless); auto takes OSMesa when libOSMesa.so.8 is there, else EGL"};
+          "the off-screen GL of --screenshot: OSMesa or EGL (surfaceless); auto takes OSMesa when libOSMesa.so.8 is there, else EGL",
+          choice_value({"osmesa", "egl", "auto"})};
 }
 
 namespace {
 
-// gui --input's dump flags: the dump's own (no --timestep: every frame is shown; no --contact-ids: no contacts).
+// gui --input's dump flags: the dump's own (no --timestep: every frame is shown; --contact-ids hidden:
+// taken only to be refused with its reason, gui --input reads no contacts).
 const std::vector<OptionSpec>& gui_input_options() {
   static const std::vector<OptionSpec> options = [] {
     std::vector<OptionSpec> o;
     for (const OptionSpec& s : dump_input_options())
-      if (std::string_view(s.name) != "--timestep" && std::string_view(s.name) != "--contact-ids") o.push_back(s);
+      if (std::string_view(s.name) != "--timestep") o.push_back(s);
+    for (OptionSpec& s : o) s.hidden = std::string_view(s.name) == "--contact-ids";
     return o;
   }();
   return options;
 }
+
+}  // namespace
+
+OptionGroup rendering_group() { return {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()}; }
+OptionGroup plugin_group() { return {kPluginOptionsTitle, plugin_options()}; }
+OptionGroup dump_input_group() { return {"--input FILE.dump: a LAMMPS or LIGGGHTS dump (docs/dem.md)", dump_input_options()}; }
+OptionGroup dump_replay_group() { return {"frames from LAMMPS and LIGGGHTS dumps (docs/dem.md)", dump_replay_options()}; }
+OptionGroup gui_input_group() { return {"gui --input FILE (without --arrays): a dump or ELEMENTS.csv", gui_input_options()}; }
+
+std::vector<OptionSpec> joined(std::initializer_list<std::vector<OptionSpec>> parts) {
+  std::vector<OptionSpec> out;
+  for (const std::vector<OptionSpec>& p : parts) out.insert(out.end(), p.begin(), p.end());
+  return out;
+}
+
+namespace {
 
 // `nbscope [gui]`: the window.
 CommandSpec gui_command() {
@@ -84,8 +108,8 @@ CommandSpec gui_command() {
       {"--input", "ELEMENTS.csv", "", "with --arrays: the elements the arrays index (x,y,r a line); without --arrays: ELEMENTS.csv "
                                       "(x,y,r or x,y,z,r) or a dump, opened in the window"},
       {"--arrays", "ARRAYS.json", "", "with --input: your heads and next arrays, in the schema dump writes (see verify --arrays)"},
-      {"--base", "1", "0", "the arrays count elements from 1 (numbered as the file counts: from 1)"},
-      {"--exact", "", "", "also the book's order within every list (as verify --exact)"},
+      {"--base", "1", "0", "the arrays count elements from 1 (numbered as the file counts: from 1)", integer_value(0, 1)},
+      {"--exact", "", "", "also the book's order within every list (as verify --exact)", flag_value()},
   };
   arrays.insert(arrays.end(), grid_options().begin(), grid_options().end());
   return {
@@ -125,23 +149,26 @@ CommandSpec gui_command() {
        "tooltip. Numbered as the file counts (--base 1: from 1). Panels: overlays, problems, lists. Exit 0 right, 1 wrong. Without a "
        "display it renders headless into --screenshot (default $TMPDIR/nbscope-verify-ARRAYS.png) and prints the path."},
       {{"options",
-        {{"--scene", "FILE", "the last scene used, else assets/scenes/default.json", "the scene to simulate (assets/scenes/*.json)"},
+        joined({{{"--scene", "FILE", "the last scene used, else assets/scenes/default.json", "the scene to simulate (assets/scenes/*.json)"},
          {"--algorithm", "NAME", "a --detector-lib's detector, else the last algorithm used, else nbs",
           "the detector (nbscope algorithms); with --arrays the arrays' algorithm, as verify --arrays"},
          {"--inject-fault", "NAME", "", "breaks the detection (or Box2D's side) on purpose, as headless --inject-fault"},
-         {"--history-mb", "N", "256, saved with the settings", "memory for the frames the Timeline keeps"},
-         {"--max-contacts", "N", "1,000,000", "the Box2D contacts a frame may create, as headless --max-contacts"},
+         {"--history-mb", "N", "256, saved with the settings", "memory for the frames the Timeline keeps", integer_value(0, 1'000'000)},
+         {"--max-contacts", "N", "1,000,000", "the Box2D contacts a frame may create, as headless --max-contacts",
+          integer_value(0, kMaxMaxContacts)},
          {"--frames", "N", "", "runs N frames of simulation (drawn at the window's own pace meanwhile; stderr gives both rates), "
                                "saves --screenshot and exits (no input, no settings: for tests under Xvfb); with "
-                               "--arrays: the frames drawn before the screenshot"},
+                               "--arrays: the frames drawn before the screenshot", integer_value(0, kMaxFrames)},
          {"--back", "K", "", "with --frames: then goes K frames back through the history first, each drawn, and says how long a frame "
-                             "took"},
+                             "took", integer_value(1, 100'000'000)},
          {"--screenshot", "OUT.png", "", "with --frames: the picture saved before exiting (without a display: where the headless "
                                          "rendering goes)"},
-         {"--size", "WxH", "", "the window's (and the screenshot's) size in pixels"}}},
+         {"--size", "WxH", "", "the window's (and the screenshot's) size in pixels"}},
+                {threads_option(), touching_option()}})},
+       gui_input_group(),
        {"your arrays (gui --input ELEMENTS.csv --arrays ARRAYS.json)", arrays},
-       {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()},
-       {kPluginOptionsTitle, plugin_options()}},
+       rendering_group(),
+       plugin_group()},
       {"nbscope", "nbscope --scene assets/scenes/gas.json --algorithm sort",
        "xvfb-run nbscope gui --scene assets/scenes/pile.json --frames 60 --screenshot pile.png",
        "nbscope gui --input assets/examples/nine.csv --arrays assets/examples/nine_screen_bug.json"},
@@ -176,45 +203,48 @@ CommandSpec headless_command() {
        "A frame running over 5 s (or 10 frames together) says so once on stderr. A body that is not finite after a step, or beyond "
        "+-1e6 m, stops the run with exit 2 naming the body and the frame."},
       {{"options",
-        {{"--scene", "FILE", "", "the scene to run (required)"},
-         {"--frames", "N", "600", "the steps to run: frames 0..N, frame 0 (the initial poses) checked and counted too"},
+        joined({{{"--scene", "FILE", "", "the scene to run (required)"},
+         {"--frames", "N", "600", "the steps to run: frames 0..N, frame 0 (the initial poses) checked and counted too",
+          integer_value(1, kMaxFrames)},
          {"--algorithm", "NAME[,NAME...]|all", "the --detector-lib detectors, else nbs", "the detectors run and checked on the same frames"},
          {"--report", "OUT.json", "", "writes per-frame counts, timings and every violation as JSON"},
          {"--inject-fault", "NAME", "",
           "drop-mask-cell | off-by-one-cell | stale-positions | drop-pair | drop-box2d-contact breaks the detection (or Box2D's "
           "side) on purpose: proofs that each invariant can fail. Bugs in a detector's own code, to follow to the operation that "
           "lost a pair, are the plugins of examples/detectors/ (--detector-lib)"},
-         {"--brute-limit", "N", "2000", "the elements up to which brute force is the reference R (sort above)"},
-         {"--quiet", "", "", "no progress bar"},
+         {"--brute-limit", "N", "2000", "the elements up to which brute force is the reference R (sort above)", integer_value(0, 1'000'000)},
+         {"--quiet", "", "", "no progress bar", flag_value()},
          {"--record", "OUT.nbsrec", "", "writes every frame's elements (frame 0 too) and the scene's pinned grid"},
          {"--stop-at-violation", "", "",
           "stops on the first frame with a violation and (with --screenshot) shows it as the window's Violations panel does: the pair "
           "selected, the camera on it, the stepper at the operation that decided it; exit 1, or 0 when no frame broke (one algorithm "
-          "only)"},
+          "only)", flag_value()},
          {"--rewind", "FROM:TO", "",
           "runs to frame FROM, goes back to kept frame TO and resumes to --frames: the frames after TO are simulated again "
           "(deterministically, from the scene) and replace the first ones; every report frame carries \"hash\", the hash of its "
           "elements, so a rewound run can be compared with a straight one frame by frame"},
          {"--back", "K", "", "after the last frame goes K frames back through the history (each detected and checked again); "
-                             "--screenshot then shows that frame"},
+                             "--screenshot then shows that frame", integer_value(1, 100'000'000)},
          {"--violation", "N", "", "instead of --back, goes to the run's N-th violation (from 1, as the Violations panel lists them) and shows it as "
-                                  "choosing it there does"},
+                                  "choosing it there does", integer_value(1, 1'000'000'000)},
          {"--history-mb", "N", "256 with --rewind, --back, --violation or --screenshot, else 0",
-          "memory for kept frames (0: a run that never goes back keeps only summaries)"},
+          "memory for kept frames (0: a run that never goes back keeps only summaries)", integer_value(0, 1'000'000)},
          {"--max-contacts", "N", "1,000,000, ~1.7 GB",
           "the Box2D contacts a frame may create (the scene's \"max_contacts\" sets it too): before every step the pairs of fat AABBs "
           "are counted and a world past it stops with exit 2 naming the count; no more than the memory this process can get (rlimits, "
-          "cgroup, MemAvailable) at ~1.7 kB a contact, whatever N says"},
+          "cgroup, MemAvailable) at ~1.7 kB a contact, whatever N says", integer_value(0, kMaxMaxContacts)},
          {"--scaling", "FILE.csv|run", "",
           "(with --screenshot) opens the Scaling panel on a CSV of nbscope scaling (a bad row: exit 2 naming FILE:LINE); --scaling run "
           "measures first, as nbscope scaling does, the detectors of --algorithm on --layout, --n and --points-per-decade (nbs at 1 "
           "and --threads threads)"},
          {"--layout", "L[,L...]", "loose", "with --scaling run: the layouts, as nbscope scaling --layout"},
          {"--n", "MIN..MAX", "1000..1000000", "with --scaling run: the sizes, as nbscope scaling --n"},
-         {"--points-per-decade", "K", "2", "with --scaling run: sizes a decade, as nbscope scaling --points-per-decade"}}},
+         {"--points-per-decade", "K", "2", "with --scaling run: sizes a decade, as nbscope scaling --points-per-decade",
+                  integer_value(1, 20)}},
+                {threads_option(), touching_option()}})},
        {"screenshot (no display needed)", output},
-       {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()},
-       {kPluginOptionsTitle, plugin_options()}},
+       rendering_group(),
+       plugin_group()},
       {"nbscope headless --scene assets/scenes/default.json --frames 120 --algorithm all",
        "nbscope headless --scene assets/scenes/pile.json --inject-fault drop-pair --stop-at-violation --screenshot v.png",
        "nbscope headless --scene assets/scenes/gas.json --record gas.nbsrec --report gas.json"},
@@ -255,24 +285,27 @@ CommandSpec replay_command() {
        "  pairs                    optional, after the rows: then one contact pair a line, i,j\n"
        "                           (every frame has a pairs block, or none)"},
       {{"options",
-        {{"--headless", "", "", "no window even when there is a display"},
-         {"--frames", "N", "every recorded frame", "the first N frames only"},
+        joined({{{"--headless", "", "", "no window even when there is a display", flag_value()},
+         {"--frames", "N", "every recorded frame", "the first N frames only", integer_value(1, kMaxFrames)},
          {"--algorithm", "NAME[,NAME...]|all", "the --detector-lib detectors, else nbs, or recorded when the frames carry pairs", "the detectors run and checked"},
          {"--report", "OUT.json", "", "as headless --report"},
          {"--inject-fault", "NAME", "", "drop-pair, drop-mask-cell, off-by-one-cell or stale-positions (as headless)"},
-         {"--brute-limit", "N", "2000", "as headless --brute-limit"},
-         {"--quiet", "", "", "no progress bar"},
-         {"--stop-at-violation", "", "", "as headless --stop-at-violation"},
-         {"--back", "K", "", "headless: after the last frame goes K frames back (as headless --back)"},
-         {"--violation", "N", "", "headless: goes to the N-th listed violation (as headless --violation)"},
+         {"--brute-limit", "N", "2000", "as headless --brute-limit", integer_value(0, 1'000'000)},
+         {"--quiet", "", "", "no progress bar", flag_value()},
+         {"--stop-at-violation", "", "", "as headless --stop-at-violation", flag_value()},
+         {"--back", "K", "", "headless: after the last frame goes K frames back (as headless --back)", integer_value(1, 100'000'000)},
+         {"--violation", "N", "", "headless: goes to the N-th listed violation (as headless --violation)", integer_value(1, 1'000'000'000)},
          {"--history-mb", "N", "256 with --back, --violation or --screenshot, else 0",
-          "memory for kept frames: a dump's frames are read as shown, and this many MB of them stay (a frame dropped is read again)"},
+          "memory for kept frames: a dump's frames are read as shown, and this many MB of them stay (a frame dropped is read again)",
+          integer_value(0, 1'000'000)},
          {"--record", "OUT.nbsrec", "", "headless: writes the frames replayed (2D or 3D, with their pairs); a recording recorded again is the same file"},
          {"--screenshot", "OUT.png", "", "headless: renders the last frame off-screen, as headless --screenshot"},
          {"--size", "WxH", "", "the window's or the screenshot's size in pixels"},
-         gl_option()}},
-       {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()},
-       {kPluginOptionsTitle, plugin_options()}},
+         gl_option()},
+                {threads_option(), touching_option()}})},
+       dump_replay_group(),
+       rendering_group(),
+       plugin_group()},
       {"nbscope replay gas.nbsrec", "nbscope replay gas.nbsrec --headless --algorithm all --report replay.json"},
       "0 every check passed, 1 a check failed, 2 bad input (one line on stderr)",
   };
@@ -285,18 +318,6 @@ const std::vector<CommandSpec>& command_table() {
   static const std::vector<CommandSpec> table = [] {
     std::vector<CommandSpec> t = {gui_command(), headless_command(), replay_command()};
     for (CommandSpec& c : file_commands()) t.push_back(std::move(c));
-    // The contact convention and the threads on every command that detects (dump's arrays are its
-    // traced run, the book's serial loops: no threads); the dump flags where frames are read.
-    for (CommandSpec& c : t) {
-      const std::string name = c.name;
-      if (name != "algorithms" && name != "dump") c.groups.front().options.push_back(threads_option());
-      if (name == "algorithms") continue;
-      c.groups.front().options.push_back(touching_option());
-      if (name == "replay") c.groups.insert(c.groups.begin() + 1, {"frames from LAMMPS and LIGGGHTS dumps (docs/dem.md)", dump_replay_options()});
-      if (name == "gui") c.groups.insert(c.groups.begin() + 1, {"gui --input FILE (without --arrays): a dump or ELEMENTS.csv", gui_input_options()});
-      if (name == "pairs" || name == "dump" || name == "verify")
-        c.groups.insert(c.groups.begin() + 1, {"--input FILE.dump: a LAMMPS or LIGGGHTS dump (docs/dem.md)", dump_input_options()});
-    }
     return t;
   }();
   return table;
@@ -311,7 +332,8 @@ const CommandSpec* find_command(const std::string& name) {
 std::vector<std::string> option_names(const CommandSpec& command) {
   std::vector<std::string> names;
   for (const OptionGroup& g : command.groups)
-    for (const OptionSpec& o : g.options) names.emplace_back(o.name);
+    for (const OptionSpec& o : g.options)
+      if (!o.hidden) names.emplace_back(o.name);
   return names;
 }
 

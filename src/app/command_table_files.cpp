@@ -3,16 +3,17 @@
 
 #include "app/command_table_parts.hpp"
 #include "app/commands.hpp"
+#include "app/dump_input.hpp"
+#include "app/threads_flag.hpp"
 #include "core/detector.hpp"
 
 namespace nbscope {
 
 namespace {
 
-// The options of a command: `own`, then the grid pins.
-std::vector<OptionSpec> with_grid(std::vector<OptionSpec> own) {
-  own.insert(own.end(), grid_options().begin(), grid_options().end());
-  return own;
+// The options of a command: `own`, then the grid pins, then `shared` (--threads, --touching).
+std::vector<OptionSpec> with_grid(std::vector<OptionSpec> own, const std::vector<OptionSpec>& shared) {
+  return joined({own, grid_options(), shared});
 }
 
 CommandSpec pairs_command() {
@@ -27,10 +28,12 @@ CommandSpec pairs_command() {
       {{"options", with_grid({{"--input", "ELEMENTS.csv", "", "the elements, one x,y,r or x,y,z,r a row (required)"},
                               {"--algorithm", "NAME", "a --detector-lib's detector, else nbs", "the detector (nbscope algorithms)"},
                               {"--output", "PAIRS.csv", "stdout", "where the pairs go"},
-                              {"--repeat", "K", "1", "runs detection K times and checks that every run agrees"},
+                              {"--repeat", "K", "1", "runs detection K times and checks that every run agrees", integer_value(1, 1'000'000)},
                               {"--max-pairs", "M", "50,000,000: 400 MB of pairs, about 600 MB at the peak while the list grows",
-                               "stops with an error past M pairs"}})},
-       {kPluginOptionsTitle, plugin_options()}},
+                               "stops with an error past M pairs", integer_value(0, 1'000'000'000)}},
+                             {threads_option(), touching_option()})},
+       dump_input_group(),
+       plugin_group()},
       {"nbscope pairs --input assets/examples/nine.csv", "nbscope pairs --input big.csv --algorithm sort --output pairs.csv --repeat 3"},
       "0 pairs written, 2 bad input (one line on stderr)",
   };
@@ -49,8 +52,10 @@ CommandSpec dump_command() {
        "and next; sort: sorted cell keys and order; brute, box2d: counts only."},
       {{"options", with_grid({{"--input", "ELEMENTS.csv", "", "the elements (required)"},
                               {"--algorithm", "NAME", "a --detector-lib's detector", "the detector whose arrays are written (required without --detector-lib)"},
-                              {"--format", "json", "json", "the output format (JSON is the only one)"}})},
-       {kPluginOptionsTitle, plugin_options()}},
+                              {"--format", "json", "json", "the output format (JSON is the only one)"}},
+                             {touching_option()})},  // no --threads: the arrays are its traced run, the book's serial loops
+       dump_input_group(),
+       plugin_group()},
       {"nbscope dump --input assets/examples/nine.csv --algorithm screen --cell-size 1 --origin 0,0 --cells 10,10"},
       "0 arrays written, 2 bad input (one line on stderr)",
   };
@@ -86,12 +91,14 @@ CommandSpec verify_command() {
                               {"--pairs", "PAIRS.csv", "", "your contact pairs, one i,j a line"},
                               {"--arrays", "ARRAYS.json", "", "your heads and next arrays, in the schema dump writes"},
                               {"--algorithm", "screen|nbs|tree|sort", "", "with --arrays: the algorithm the arrays belong to"},
-                              {"--base", "1", "0", "your file counts elements from 1"},
-                              {"--exact", "", "", "with --arrays: also the book's order within every list"},
+                              {"--base", "1", "0", "your file counts elements from 1", integer_value(0, 1)},
+                              {"--exact", "", "", "with --arrays: also the book's order within every list", flag_value()},
                               {"--brute-limit", "N", "2000", "with --pairs: the elements up to which brute force is the reference "
-                                                             "(sort above)"}})},
+                                                             "(sort above)", integer_value(0, 1'000'000)}},
+                             {threads_option(), touching_option()})},
+       dump_input_group(),
        {"screenshot (with --arrays)", screenshot},
-       {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()}},
+       rendering_group()},
       {"nbscope verify --input assets/examples/nine.csv --pairs my_pairs.csv",
        "nbscope verify --input assets/examples/nine.csv --arrays assets/examples/nine_screen_bug.json --screenshot bug.png"},
       "0 right, 1 wrong, 2 bad input (one line on stderr)",
@@ -118,10 +125,12 @@ CommandSpec scaling_command() {
                     {"--layout", "NAME[,NAME...]", "loose", "the generated layouts: loose, dense, clustered, touching, unequal_radii, "
                                                             "far_away, on_line"},
                     {"--n", "MIN..MAX", "1000..1000000", "the range of N (1e3-style powers too)"},
-                    {"--points-per-decade", "K", "2", "sizes a decade, on a log scale"},
+                    {"--points-per-decade", "K", "2", "sizes a decade, on a log scale", integer_value(1, 20)},
                     {"--output", "OUT.csv", "", "writes the table as CSV"},
-                    {"--quiet", "", "", "no progress bar"}}},
-       {kPluginOptionsTitle, plugin_options()}},
+                    {"--quiet", "", "", "no progress bar", flag_value()},
+                    threads_option(),
+                    touching_option()}},
+       plugin_group()},
       {"nbscope scaling --algorithm nbs,sort --n 1e3..1e5 --output scaling.csv"},
       "0 measured, 2 bad input (one line on stderr)",
   };
@@ -133,7 +142,7 @@ CommandSpec algorithms_command() {
           "lists the detectors",
           {"nbscope algorithms [--detector-lib PATH.so ...]"},
           {"One line per detector: its name, the dimensions it handles (2D, 3D) and what it is; a plugin's (--detector-lib) too."},
-          {{kPluginOptionsTitle, plugin_options()}},
+          {plugin_group()},
           {"nbscope algorithms", "nbscope algorithms --detector-lib ./my_nbs.so"},
           "0, 2 bad input (one line on stderr)"};
 }

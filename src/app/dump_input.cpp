@@ -120,13 +120,10 @@ std::string timesteps_text(const std::vector<DumpFrameAt>& frames) {
 DumpFlags take_dump_flags(Args& args) {
   DumpFlags f;
   if (const auto c = args.value("--contact-ids")) f.columns = parse_contact_ids(*c);
-  f.options.radius = args.number("--radius");
-  if (f.options.radius && !(*f.options.radius >= kMinRadius && *f.options.radius <= kMaxRadius))
-    throw Error("--radius: must be positive and finite");
+  f.options.radius = args.number("--radius");  // its range is its row's (dump_input_options)
   if (const auto t = args.value("--type-radius")) f.options.type_radius = parse_type_radius(*t);
   f.options.force_2d = args.flag("--2d");
   f.options.tolerance = args.number("--tolerance");
-  if (f.options.tolerance && !(*f.options.tolerance >= 0)) throw Error("--tolerance: must be 0 or more (a length)");
   if (const auto p = args.value("--periodic")) f.options.periodic = parse_periodic(*p);
   if (const auto b = args.value("--box")) f.box = parse_box(*b);
   return f;
@@ -270,14 +267,18 @@ std::unique_ptr<RecordedFrames> read_input_recording(const std::string& path, co
 
 const std::vector<OptionSpec>& dump_input_options() {
   static const std::vector<OptionSpec> options = {
-      {"--timestep", "S", "the only frame", "with --input FILE.dump: the frame of timestep S (a dump with several frames needs it)"},
+      {"--timestep", "S", "the only frame", "with --input FILE.dump: the frame of timestep S (a dump with several frames needs it)",
+       integer_value(0, std::numeric_limits<long long>::max())},
       {"--contact-ids", "A,B", "id1 id2 by name, else LIGGGHTS's pair/gran/local `pos id` order (7,8)",
        "the two columns of a dump local file holding a contact's atom ids: numbers from 1, or ENTRIES names"},
-      {"--radius", "R", "", "every atom's radius, for a dump without a radius or diameter column"},
+      {"--radius", "R", "", "every atom's radius, for a dump without a radius or diameter column",
+       number_value(kMinRadius, kMaxRadius, "must be positive and finite")},
       {"--type-radius", "T:R,...", "", "radii by atom type, for a dump without a radius or diameter column (1:0.0015,2:0.00225)"},
-      {"--2d", "", "2D when the dump has no z column", "read a dump as 2D: z dropped (LIGGGHTS's dimension 2 writes z = 0)"},
+      {"--2d", "", "2D when the dump has no z column", "read a dump as 2D: z dropped (LIGGGHTS's dimension 2 writes z = 0)",
+       flag_value()},
       {"--tolerance", "L", "half a unit of the last printed digit", "the precision band of a dump's contacts: a disagreement whose "
-                                                                   "gap is within L is at the boundary, not a violation"},
+                                                                   "gap is within L is at the boundary, not a violation",
+       number_value(0, std::numeric_limits<double>::infinity(), "must be 0 or more (a length)")},
       {"--periodic", "x,y[,z]", "a dump's pp axes", "these axes periodic: contacts by the minimum image (nbs and brute)"},
       {"--box", "XLO:XHI,YLO:YHI[,ZLO:ZHI]", "a dump's BOX BOUNDS", "the periodic box of elements from a CSV file (with --periodic)"},
   };
@@ -288,9 +289,12 @@ const std::vector<OptionSpec>& dump_replay_options() {
   static const std::vector<OptionSpec> options = [] {
     std::vector<OptionSpec> o = {
         {"--dump", "FILES", "", "LAMMPS/LIGGGHTS dump custom frames (id, x y [z], radius ...): a file or a quoted glob, .gz too; "
-                                "repeatable; frames ordered by timestep"},
-        {"--contacts", "FILES", "", "the code's contact list, dump local (LIGGGHTS compute pair/gran/local pos id): the recorded pairs"},
-        {"--dt", "S", "", "seconds per timestep: a frame's time is S x timestep (ITEM: TIME wins; neither: the timestep)"},
+                                "repeatable; frames ordered by timestep", repeated_value()},
+        {"--contacts", "FILES", "", "the code's contact list, dump local (LIGGGHTS compute pair/gran/local pos id): the recorded pairs",
+         repeated_value()},
+        {"--dt", "S", "", "seconds per timestep: a frame's time is S x timestep (ITEM: TIME wins; neither: the timestep)",
+         number_value(std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::infinity(),
+                      "must be positive (seconds per timestep)")},
     };
     for (const OptionSpec& s : dump_input_options())
       if (std::string_view(s.name) != "--timestep") o.push_back(s);
@@ -301,7 +305,9 @@ const std::vector<OptionSpec>& dump_replay_options() {
 
 OptionSpec touching_option() {
   return {"--touching", "inclusive|strict", "inclusive",
-          "whether a pair at exactly zero gap is a contact: inclusive |c_i - c_j| <= r_i + r_j, or strict < (LAMMPS, LIGGGHTS)"};
+          "whether a pair at exactly zero gap is a contact: inclusive |c_i - c_j| <= r_i + r_j, or strict < (LAMMPS, LIGGGHTS)",
+          choice_value({"inclusive", "strict"},
+                       "{} is not inclusive (|c_i - c_j| <= r_i + r_j, the default) or strict (<, as LAMMPS and LIGGGHTS)")};
 }
 
 }  // namespace nbscope

@@ -82,6 +82,7 @@ std::string command_help(const CommandSpec& c) {
   for (const OptionGroup& g : c.groups) {
     out += "\n" + std::string(g.title) + ":\n";
     for (const OptionSpec& o : g.options) {
+      if (o.hidden) continue;
       const std::string head = "  " + spelled(o);
       out += head;
       if (head.size() + 2 > kOptionColumn) {
@@ -122,7 +123,8 @@ std::string cli_markdown() {
     for (const char* p : c.paragraphs) out += "\n" + (preformatted(p) ? "```\n" + std::string(p) + "\n```" : std::string(p)) + "\n";
     for (const OptionGroup& g : c.groups) {
       out += "\n### " + std::string(g.title) + "\n\n| option | default | what it does |\n|---|---|---|\n";
-      for (const OptionSpec& o : g.options) out += "| `" + cell(spelled(o)) + "` | " + cell(o.default_value) + " | " + cell(o.help) + " |\n";
+      for (const OptionSpec& o : g.options)
+        if (!o.hidden) out += "| `" + cell(spelled(o)) + "` | " + cell(o.default_value) + " | " + cell(o.help) + " |\n";
     }
     if (!c.examples.empty()) {
       out += "\n### examples\n\n```\n";
@@ -133,6 +135,8 @@ std::string cli_markdown() {
   }
   return out;
 }
+
+OptionSpec help_markdown_option() { return {"--markdown", "", "", "every command's page as Markdown (docs/cli.md)", flag_value(), true}; }
 
 int run_help(Args& args) {
   const bool markdown = args.flag("--markdown");  // hidden: writes docs/cli.md

@@ -19,5 +19,7 @@ std::string command_help(const CommandSpec& command);
 std::string cli_markdown();
 // `nbscope help [COMMAND] [--markdown]`: prints one of the three; Error for an unknown command.
 int run_help(Args& args);
+// help's one option, --markdown (hidden: it writes docs/cli.md), for the parser.
+OptionSpec help_markdown_option();
 
 }  // namespace nbscope

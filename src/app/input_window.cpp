@@ -26,7 +26,7 @@ int run_input_gui(Args& args) {
   DumpFlags dump = take_dump_flags(args);
   if (dump.columns.numbers || dump.columns.names)
     throw Error("--contact-ids: gui --input reads no contacts (replay --dump FILES --contacts FILES reads a dump's contacts)");
-  const auto frames = args.integer("--frames", 0, kMaxFrames);
+  const auto frames = args.integer("--frames");
   parse_view_options(args, false, o.view);
   if (auto p = args.positional()) throw Error(*p + ": unexpected argument (the elements go after --input)");
   args.finish();

@@ -22,11 +22,11 @@ bool is_help(const std::string& a) { return a == "--help" || a == "-h" || a == "
 
 int dispatch(const std::string& command, const std::vector<std::string>& rest) {
   if (is_help(command)) {  // `nbscope help [COMMAND]`, `nbscope --help`
-    nbscope::Args args(rest, "help");
+    nbscope::Args args(rest, "help", {nbscope::help_markdown_option()});
     return nbscope::run_help(args);
   }
   if (command == "--version") {
-    nbscope::Args args(rest, command);
+    nbscope::Args args(rest, command, {});
     args.finish();
     std::printf("nbscope %s\n%s\n", nbscope::kVersion, nbscope::window_build_line());
     std::fputs(nbscope::data_dirs_text().c_str(), stdout);  // which scenes and shaders it reads
@@ -39,7 +39,7 @@ int dispatch(const std::string& command, const std::vector<std::string>& rest) {
     std::fputs(nbscope::command_help(*spec).c_str(), stdout);
     return 0;
   }
-  nbscope::Args args(rest, command);
+  nbscope::Args args(rest, *spec);  // every option parsed from the command's row (app/cli.hpp)
   nbscope::load_detector_libs(args, command);  // before any algorithm name is resolved
   return spec->run(args);
 }

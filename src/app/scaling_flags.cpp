@@ -85,7 +85,7 @@ ScalingPlan take_scaling_plan_flags(Args& args, const std::string& algorithms, i
   plan.n_max = 1'000'000;
   const auto range = args.value("--n");
   if (range) parse_n_range("--n", *range, plan.n_min, plan.n_max);
-  const auto per_decade = args.integer("--points-per-decade", 1, 20);
+  const auto per_decade = args.integer("--points-per-decade");
   plan.points_per_decade = static_cast<int>(per_decade.value_or(plan.points_per_decade));
   if (given != nullptr) *given = layouts || range || per_decade;
   return plan;

@@ -73,7 +73,7 @@ VerifyArraysInputs take_verify_inputs(Args& args) {
   in.elements_path = args.value("--input").value_or("");
   in.arrays_path = args.value("--arrays").value_or("");
   in.algorithm = args.value("--algorithm");
-  if (const auto b = args.integer("--base", 0, 1)) in.base = static_cast<int>(*b);
+  if (const auto b = args.integer("--base")) in.base = static_cast<int>(*b);
   in.exact = args.flag("--exact");
   in.grid_flags = take_grid_flags(args);
   return in;

@@ -48,7 +48,7 @@ int run_verify_gui(Args& args) {
     throw Error("--arrays: missing: gui --input draws someone's own heads and next arrays on its elements (ARRAYS.json, "
                 "the schema nbscope dump writes)");
   ViewOptions view;
-  if (auto n = args.integer("--frames", 0, kMaxFrames)) view.frames = *n;
+  if (auto n = args.integer("--frames")) view.frames = *n;
   parse_view_options(args, false, view);
   // The window's simulation flags mean nothing here: the arrays are drawn on --input's elements.
   for (const char* flag : {"--scene", "--inject-fault", "--history-mb", "--max-contacts", "--back"})
