@@ -1,7 +1,8 @@
 # Run with cmake -DLINKS_FILE=<build>/floors_links.cmake -P check_floors.cmake (cmake/floors.cmake).
-# Fails when a floor links a floor above it, or when a file of a floor (its target's sources, and
-# the headers those include from the same folder, transitively) includes a floor its target does
-# not link. Prints one line per offence: FILE:LINE: includes "F/..." but nbscope_X links only ...
+# Fails when a floor links a floor above it, when a file of a floor (its target's sources, and the
+# headers those include from the same folder, transitively) includes a floor its target does not
+# link, or another floor's header that floor keeps to itself (not in its NBSCOPE_PUBLIC_HEADERS).
+# Prints one line per offence: FILE: #include "F/...", but ...
 cmake_minimum_required(VERSION 3.25)
 include(${LINKS_FILE})
 set(errors 0)
@@ -29,6 +30,12 @@ foreach(floor IN LISTS FLOORS)
   if(NOT DEFINED FILES_${floor})
     continue()
   endif()
+  foreach(header IN LISTS PUBLIC_${floor})
+    if(NOT EXISTS "${SOURCE_DIR}/${floor}/${header}")
+      message("src/${floor}/CMakeLists.txt: public header ${header} is not in src/${floor}")
+      math(EXPR errors "${errors} + 1")
+    endif()
+  endforeach()
   list(FIND FLOORS ${floor} own_rank)
   foreach(link IN LISTS LINKS_${floor})
     list(FIND FLOORS ${link} rank)
@@ -60,6 +67,13 @@ foreach(floor IN LISTS FLOORS)
         endif()
         message("${shown}: ${line}, but nbscope_${floor} links only: ${links}")
         math(EXPR errors "${errors} + 1")
+      elseif(included IN_LIST FLOORS AND NOT included STREQUAL floor)
+        string(REGEX REPLACE "^#include \"[a-z0-9_]+/([^\"]+)\".*" "\\1" header "${line}")
+        if(NOT header IN_LIST PUBLIC_${included})
+          file(RELATIVE_PATH shown "${SOURCE_DIR}/.." "${file}")
+          message("${shown}: ${line}, but ${header} is ${included}'s own: not in the public headers src/${included}/CMakeLists.txt lists")
+          math(EXPR errors "${errors} + 1")
+        endif()
       endif()
     endforeach()
   endforeach()

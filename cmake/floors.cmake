@@ -1,7 +1,8 @@
 # nbscope's floors: each folder of src/ is one floor with one CMake target (nbscope_<floor>), and
 # the map has to tell the truth (docs/architecture.md, "Floors"): a floor includes only itself and
 # the floors its target links, and links only floors below it in NBSCOPE_FLOORS. Configuration
-# writes each floor's links into floors_links.cmake; the `nbscope_floors` target (part of `all`)
+# writes each floor's links and its public headers (the NBSCOPE_PUBLIC_HEADERS its CMakeLists.txt
+# lists: what other floors may include, as Box2D keeps include/ apart from src/) into floors_links.cmake; the `nbscope_floors` target (part of `all`)
 # runs check_floors.cmake whenever a source changes, so a wrong #include fails the build.
 
 # Bottom to top.
@@ -30,6 +31,10 @@ function(nbscope_floors_check)
         list(APPEND linked ${CMAKE_MATCH_1})
       endif()
     endforeach()
+    get_target_property(public nbscope_${floor} NBSCOPE_PUBLIC_HEADERS)
+    if(NOT public)
+      set(public "")  # app: the top floor, nobody includes it
+    endif()
     get_target_property(sources nbscope_${floor} SOURCES)
     get_target_property(dir nbscope_${floor} SOURCE_DIR)
     set(files "")
@@ -39,7 +44,7 @@ function(nbscope_floors_check)
       endif()
       list(APPEND files "${source}")
     endforeach()
-    string(APPEND content "set(LINKS_${floor} ${linked})\nset(FILES_${floor} \"${files}\")\n")
+    string(APPEND content "set(LINKS_${floor} ${linked})\nset(FILES_${floor} \"${files}\")\nset(PUBLIC_${floor} ${public})\n")
     list(APPEND depends ${files})
   endforeach()
   file(CONFIGURE OUTPUT "${links_file}" CONTENT "${content}")

@@ -369,7 +369,7 @@ int run_replay_window(const HeadlessOptions& o) {
   FrameLoop loop(loop_options);
   loop.load_recording(read_replay_input(o));
   // No --algorithm: a recording that carries the user's pairs opens on them (headless does the same).
-  if (o.algorithm_from_recording && loop.source().carries_pairs()) loop.pipeline().set_algorithm(kRecordedAlgorithm);
+  if (o.algorithm_from_recording && loop.source().carries_pairs()) loop.redetect_with_algorithm(kRecordedAlgorithm);
   check_step_algorithm(o.view, loop.pipeline().algorithm());
   GuiOptions g;
   g.algorithm = loop.pipeline().algorithm();

@@ -318,17 +318,17 @@ std::unique_ptr<FrameLoop> open_headless_loop(const HeadlessOptions& o, std::vec
     if (!other_dim.empty())
       std::fprintf(stderr, "nbscope: note: --algorithm all: %s left out (%s only; the frames are %dD)\n", other_dim.c_str(),
                    dim == 3 ? "2D" : "3D", dim);
-    loop.pipeline().set_algorithm(names.front());
+    loop.redetect_with_algorithm(names.front());
   } else if (o.algorithm_from_recording && loop.source().carries_pairs()) {
     // No --algorithm: a recording that carries the user's pairs is replayed to check them.
     names = {std::string(kRecordedAlgorithm)};
     check_step_algorithm(o.view, names.front());
-    loop.pipeline().set_algorithm(names.front());
+    loop.redetect_with_algorithm(names.front());
   }
   if (loop.source().carries_pairs() && loop.source().pair_base() != 0)
     note += (note.empty() ? "" : "; ") + std::string("element ids are 0-based rows here; the recording numbers its pairs from ") +
             std::to_string(loop.source().pair_base());
-  loop.pipeline().set_comparison_algorithms(std::vector<std::string>(names.begin() + 1, names.end()));
+  loop.redetect_with_comparisons(std::vector<std::string>(names.begin() + 1, names.end()));
   if (o.stop_at_violation && nothing_to_check(loop))
     throw Error("--stop-at-violation: " + (o.replay ? *o.replay : o.scene) +
                 " has no elements in any frame (and nothing adds any): there is nothing to check");

@@ -53,10 +53,7 @@ void FrameLoop::step() {
   if (!m.loaded()) return;
   if (m.frames->showing_past()) {
     // A past frame: the next one is the run's own, kept (or the newest).
-    if (const auto next = history_.neighbour(1)) {
-      show_frame(*next);
-      m.change.kind = FrameChange::Kind::stepped;  // forwards through the run's own frames: a step, to the views
-    }
+    if (const auto next = history_.neighbour(1)) show(*next, FrameChange::Kind::stepped);  // forwards through the run's own frames: a step, to the views
     return;
   }
   if (!m.frames->can_step()) return;
@@ -73,9 +70,40 @@ void FrameLoop::step() {
 
 void FrameLoop::redetect() { impl_->redetect(); }
 
+void FrameLoop::redetect_with_algorithm(std::string_view name) {
+  FrameLoopState& m = *impl_;
+  if (name == m.pipeline.options().algorithm) return;  // the same detector: nothing to detect again
+  m.pipeline.set_algorithm(name, [&m] { m.accept_recorded(); });
+  m.redetect();
+}
+
+void FrameLoop::redetect_with_fault(Fault fault) {
+  FrameLoopState& m = *impl_;
+  if (fault == m.pipeline.options().fault) return;
+  if (m.pipeline.has_recorded_lane()) check_recorded_fault(fault);
+  m.pipeline.set_fault(fault);
+  m.redetect();
+}
+
+void FrameLoop::redetect_with_checks(bool on) {
+  FrameLoopState& m = *impl_;
+  if (on == m.pipeline.options().checks) return;
+  m.pipeline.set_checks(on);
+  m.redetect();
+}
+
+void FrameLoop::redetect_with_comparisons(const std::vector<std::string>& names) {
+  FrameLoopState& m = *impl_;
+  if (names == m.pipeline.comparison_algorithms()) return;  // nothing changes: no detector is called again
+  m.pipeline.set_comparison_algorithms(names, [&m] { m.accept_recorded(); });
+  m.redetect();
+}
+
 // ---- time travel ---------------------------------------------------------------------------
 
-void FrameLoop::show_frame(std::int64_t frame) {
+void FrameLoop::show_frame(std::int64_t frame) { show(frame, FrameChange::Kind::shown); }
+
+void FrameLoop::show(std::int64_t frame, FrameChange::Kind kind) {
   FrameLoopState& m = *impl_;
   if (!m.loaded()) return;
   m.settle();  // the newest frame first, so that the run (and its history) is whole
@@ -91,7 +119,7 @@ void FrameLoop::show_frame(std::int64_t frame) {
   const auto index = m.history.find(frame);
   m.frames->show(frame, index ? m.history.state(*index) : nullptr);
   m.set_physics_ms(0);  // nothing was simulated to show it
-  m.detect_and_check(FrameChange::Kind::shown);
+  m.detect_and_check(kind);
 }
 
 bool FrameLoop::step_back() {

@@ -19,7 +19,7 @@
 // pipeline() (the detector, the trace). Nothing here exposes Box2D: render and ui include this header only.
 //
 // Errors: load_scene_file() throws Error "file:line: field: what" and keeps the previous scene;
-// pipeline().set_algorithm() throws Error for an unknown or 3D-only name and keeps the previous one; `recorded`
+// redetect_with_algorithm() throws Error for an unknown or 3D-only name and keeps the previous one; `recorded`
 // (the recording's own pairs) is refused with a scene, a recording without pairs, and the faults
 // that act on detection's input (check/recorded_lane.hpp: check_recorded_fault), wherever it comes in; step()
 // and redetect() throw Error when detection refuses the frame (pair limit, a grid too large), with
@@ -135,6 +135,20 @@ class FrameLoop {
   // Detects and checks the current frame again without stepping (e.g. while paused).
   void redetect();
 
+  // ---- what detects and checks: each call that changes something detects and checks the frame
+  // shown again (each lane's detector called once more); one that changes nothing runs nothing ----
+  // Switches the detector; Error (old one kept) for an unknown or 3D-only name, or `recorded` where
+  // it has no pairs or the fault cannot act on them.
+  void redetect_with_algorithm(std::string_view name);
+  // Injects `fault` into detection (check/faults.hpp); Error, old kept, for one a `recorded` lane cannot take.
+  void redetect_with_fault(Fault fault);
+  // Runs the cross-check every frame, or not.
+  void redetect_with_checks(bool on);
+  // More detectors run and checked on every frame beside the chosen one, on the same elements with
+  // the same fault (headless --algorithm a,b,c; the window leaves this empty). Error, old list kept,
+  // for an unknown or 3D-only name.
+  void redetect_with_comparisons(const std::vector<std::string>& names);
+
   // ---- time travel ----
   // Makes frame `frame` current, with detection and every check run on it again (the overlays,
   // panels and stepper then show it as they show a live frame). Throws Error when it is not kept.
@@ -166,6 +180,8 @@ class FrameLoop {
   [[nodiscard]] const LoopDrag& drag() const;
 
  private:
+  // show_frame(), published as a change of `kind` (a step forwards through kept frames is `stepped`).
+  void show(std::int64_t frame, FrameChange::Kind kind);
   std::unique_ptr<FrameLoopState> impl_;
   LoopSource source_;
   LoopPipeline pipeline_;

@@ -62,37 +62,14 @@ void LoopSource::body_shapes(std::vector<BodyShape>& out) const {
 
 // ---- pipeline ------------------------------------------------------------------------------
 
-void LoopPipeline::set_algorithm(std::string_view name) {
-  if (name == s_->pipeline.options().algorithm) return;  // the same detector: nothing to detect again
-  s_->pipeline.set_algorithm(name, [this] { s_->accept_recorded(); });
-  s_->redetect();
-}
 const std::string& LoopPipeline::algorithm() const { return s_->pipeline.options().algorithm; }
-
-void LoopPipeline::set_fault(Fault fault) {
-  if (fault == s_->pipeline.options().fault) return;
-  if (s_->pipeline.has_recorded_lane()) check_recorded_fault(fault);
-  s_->pipeline.set_fault(fault);
-  s_->redetect();
-}
 Fault LoopPipeline::fault() const { return s_->pipeline.options().fault; }
-
-void LoopPipeline::set_checks_enabled(bool on) {
-  if (on == s_->pipeline.options().checks) return;
-  s_->pipeline.set_checks(on);
-  s_->redetect();
-}
 bool LoopPipeline::checks_enabled() const { return s_->pipeline.options().checks; }
 Touching LoopPipeline::touching() const { return s_->pipeline.detect_options().touching; }
 int LoopPipeline::threads() const { return s_->options.threads; }
 std::string LoopPipeline::reference_policy() const { return s_->pipeline.reference_policy(); }
 std::string LoopPipeline::scope_note() { return FrameChecker::scope_note(); }
 
-void LoopPipeline::set_comparison_algorithms(const std::vector<std::string>& names) {
-  if (names == s_->pipeline.comparison_algorithms()) return;  // nothing changes: no detector is called again
-  s_->pipeline.set_comparison_algorithms(names, [this] { s_->accept_recorded(); });
-  s_->redetect();
-}
 const std::vector<std::string>& LoopPipeline::comparison_algorithms() const { return s_->pipeline.comparison_algorithms(); }
 const Detector& LoopPipeline::detector() const { return s_->pipeline.detector(); }
 

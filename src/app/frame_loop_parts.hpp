@@ -86,25 +86,16 @@ class LoopSource {
   FrameLoopState* s_;
 };
 
-// Configuration of detection and checking; each change takes effect at once (the current frame is
-// detected and checked again).
+// What detects and checks each frame, read (the calls that change it are FrameLoop's
+// redetect_with_*: each detects the frame shown again), and the frame's trace.
 class LoopPipeline {
  public:
   // A view of `state` (FrameLoop makes it).
   explicit LoopPipeline(FrameLoopState& state) : s_(&state) {}
-  // Each setter below that changes something detects the frame shown again (each detector called
-  // once more); one that changes nothing calls no detector.
-  // Switches the detector; throws Error (old one kept) for an unknown or 3D-only name, or `recorded`
-  // where it has no pairs or the fault cannot act on them.
-  void set_algorithm(std::string_view name);
-  // The chosen detector's registry name (or "recorded").
+  // The chosen detector's registry name (or "recorded"); FrameLoop::redetect_with_algorithm changes it.
   [[nodiscard]] const std::string& algorithm() const;
-  // Injects `fault` into detection (check/faults.hpp).
-  void set_fault(Fault fault);
-  // The injected fault.
+  // The injected fault (check/faults.hpp).
   [[nodiscard]] Fault fault() const;
-  // Runs the cross-check every frame, or not.
-  void set_checks_enabled(bool on);
   // True when the cross-check runs.
   [[nodiscard]] bool checks_enabled() const;
   // Whether a pair at exactly zero gap is a contact (--touching), for every lane and the check.
@@ -115,10 +106,6 @@ class LoopPipeline {
   [[nodiscard]] std::string reference_policy() const;
   // Which pairs A-in-F applies to, in words.
   [[nodiscard]] static std::string scope_note();
-  // More detectors to run and check on every frame beside the chosen one, on the same elements
-  // with the same fault (headless --algorithm a,b,c compares them on identical frames; the window
-  // leaves this empty). Throws Error for an unknown or 3D-only name and keeps the previous list.
-  void set_comparison_algorithms(const std::vector<std::string>& names);
   // The comparison detectors, in the order given.
   [[nodiscard]] const std::vector<std::string>& comparison_algorithms() const;
   // The detector in use (for its name, own_bytes(), pseudocode()).

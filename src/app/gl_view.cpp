@@ -377,20 +377,23 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
         render::Vec2(static_cast<float>(e.x[state_.selected]), static_cast<float>(e.y[state_.selected])),
         state_.mouse_world->cast<float>()};
 
+  // The panels' view of this frame, filled before anything draws: the panels' scene parts read it too.
   ui::UiRequests requests;
   ui::SimView sim;
+  const auto fill_start = Clock::now();
+  fill_panels_view(loop, session, trace, sim);
+  const double fill_ms = ms_since(fill_start);
   ui::UiContext ctx{sim, state_, requests, camera_};
   renderer_->begin_frame(camera_);
   render::draw_scene(scene, state_.overlays, camera_, *renderer_);
   host_.draw_scene(ctx, *renderer_);
-  cost_.overlay_ms = ms_since(t0);
+  cost_.overlay_ms = ms_since(t0) - fill_ms;
   t0 = Clock::now();
   renderer_->draw(render::palette::kBackground);
   cost_.render_ms = ms_since(t0);
+  fill_drawing(loop, session, sim);  // this frame's overlay and render times
 
-  // The panels' view of this frame.
   t0 = Clock::now();
-  fill_panels_view(loop, session, trace, sim);
 
   imgui_->new_frame(live_input, context_.width(), context_.height(), dt,
                     live_input ? std::function<void()>([this] { input_.apply(); }) : std::function<void()>());
@@ -398,7 +401,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   if (!panel_open(ui::kScalingTitle)) scaling_->cancel();  // a closed panel's run stops
   renderer_->emit_labels(ImGui::GetBackgroundDrawList());
   imgui_->render();
-  cost_.ui_ms = ms_since(t0);
+  cost_.ui_ms = ms_since(t0) + fill_ms;
 
   // The loop's whole-frame time when it measures one (the window), else this view's share.
   frame_history_.push_back(static_cast<float>(session.frame_ms > 0 ? session.frame_ms : ms_since(frame_start)));

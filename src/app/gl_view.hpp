@@ -142,6 +142,8 @@ class GlView {
   // Fills the panels' view of this frame (gl_view_panels.cpp).
   void fill_panels_view(const FrameLoop& loop, const Session& session, const std::shared_ptr<const FrameTrace>& trace,
                         ui::SimView& sim);
+  // The view's drawing costs into `sim` (the window's whole frame split when it measured one).
+  void fill_drawing(const FrameLoop& loop, const Session& session, ui::SimView& sim) const;
   void fit_camera(const FrameLoop& loop);
   // follow()'s cases: a new source (with `fit`, the camera on it), one step forwards, another frame shown.
   void source_loaded(const FrameLoop& loop, bool fit);

@@ -60,9 +60,7 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
                                      : "Open the Stepper (View menu) to see the operation that decided this pair.";
   sim.scene_insets = host_.insets(state_);
   sim.hide_timings = hide_timings_;
-  sim.drawing = session.split.measured ? session.split : cost_;  // a window's whole frame split, else this view's parts
-  sim.drawing.physics_overlapped = loop.source().physics_overlapped();
-  if (!session.split.measured) sim.drawing.frame_ms = session.frame_ms;
+  fill_drawing(loop, session, sim);
   sim.fps = session.fps;
   sim.sim_rate = session.sim_rate;
   sim.frame_history_ms = frame_history_;
@@ -75,6 +73,12 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
   sim.gl_description = gl_description_;
   sim.width = context_.width();
   sim.height = context_.height();
+}
+
+void GlView::fill_drawing(const FrameLoop& loop, const Session& session, ui::SimView& sim) const {
+  sim.drawing = session.split.measured ? session.split : cost_;  // a window's whole frame split, else this view's parts
+  sim.drawing.physics_overlapped = loop.source().physics_overlapped();
+  if (!session.split.measured) sim.drawing.frame_ms = session.frame_ms;
 }
 
 }  // namespace nbscope

@@ -34,7 +34,7 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
     session.play_direction = *r.play;
   }
   if (r.speed) session.speed = *r.speed;
-  if (r.algorithm) attempt([&] { loop.pipeline().set_algorithm(*r.algorithm); });
+  if (r.algorithm) attempt([&] { loop.redetect_with_algorithm(*r.algorithm); });
   // A new run (another scene, a restart, a new time step): nothing of the old one's playback stays.
   const auto new_run = [&] {
     session.resume_note.clear();

@@ -68,9 +68,9 @@ TEST(FrameLoopOverlap, SameFramesWithEveryFaultAndAComparisonLane) {
     FrameLoopOptions options;
     options.fault = fault;
     compare_runs("default", 25, options, [](FrameLoop& loop, int k) {
-      if (k == 0) loop.pipeline().set_comparison_algorithms({"screen", "box2d"});
-      if (k == 10) loop.pipeline().set_checks_enabled(false);
-      if (k == 15) loop.pipeline().set_checks_enabled(true);
+      if (k == 0) loop.redetect_with_comparisons({"screen", "box2d"});
+      if (k == 10) loop.redetect_with_checks(false);
+      if (k == 15) loop.redetect_with_checks(true);
     });
   }
 }
@@ -160,9 +160,9 @@ TEST(FrameLoopOverlap, CallsThatNeedTheWorldAdoptTheStepFirst) {
   }
   // A new algorithm: the adopted frame is detected with it.
   plain.step();
-  plain.pipeline().set_algorithm("screen");
+  plain.redetect_with_algorithm("screen");
   loop.begin_step();
-  loop.pipeline().set_algorithm("screen");
+  loop.redetect_with_algorithm("screen");
   EXPECT_FALSE(loop.source().step_pending());
   expect_same_frame(facts_of(plain), facts_of(loop));
   EXPECT_TRUE(loop.source().physics_overlapped());
@@ -180,7 +180,7 @@ TEST(FrameLoopOverlap, CallsThatNeedTheWorldAdoptTheStepFirst) {
   loop.redetect();
   EXPECT_EQ(loop.source().frame(), 13);
   loop.begin_step();
-  loop.pipeline().set_fault(Fault::DropPair);
+  loop.redetect_with_fault(Fault::DropPair);
   EXPECT_EQ(loop.source().frame(), 14);
   loop.begin_step();
   loop.restart();
@@ -233,11 +233,11 @@ void compare_async(const std::string& name, int frames, FrameLoopOptions options
       } else if (k % 11 == 0) {
         // Another algorithm for a frame, and back: the adopted frame is detected with it.
         plain.step();
-        plain.pipeline().set_algorithm("screen");
-        async.pipeline().set_algorithm("screen");
+        plain.redetect_with_algorithm("screen");
+        async.redetect_with_algorithm("screen");
         expect_same_frame(facts_of(plain), facts_of(async));
-        plain.pipeline().set_algorithm("nbs");
-        async.pipeline().set_algorithm("nbs");
+        plain.redetect_with_algorithm("nbs");
+        async.redetect_with_algorithm("nbs");
       } else {
         plain.step();
         async.step();  // adopted: no wait

@@ -80,7 +80,7 @@ TEST(GlView, ADetectorWithoutATraceSaysSoInTheStepperPanels) {
   o.overlays = "+lists";
   o.panels = "+stepper,+arrays,+pseudocode";
   ViewRig rig(o, "book-fig-3-15.json");
-  rig.loop.pipeline().set_algorithm("box2d");
+  rig.loop.redetect_with_algorithm("box2d");
   rig.frames(2);
   const ui::StepperSession& s = rig.view->stepper();
   EXPECT_FALSE(s.has_capture());
@@ -294,7 +294,7 @@ TEST(GlViewFollow, NoChangeAndARedetectLeaveTrailsAndFlashesAlone) {
   EXPECT_EQ(rig.view->flashes(), flashes) << "no change: the flashes did not fade";
   EXPECT_EQ(rig.view->trails(), trails);
   rig.loop.redetect();
-  rig.loop.pipeline().set_algorithm("sort");
+  rig.loop.redetect_with_algorithm("sort");
   rig.view->follow(rig.loop);
   EXPECT_EQ(rig.view->flashes(), flashes) << "the same frame detected again";
   EXPECT_EQ(rig.view->trails(), trails);

@@ -72,7 +72,7 @@ TEST(FrameLoop, GenerationCountsEveryChangeOfTheShownFrame) {
   EXPECT_EQ(loop.change().moved_at, g);
   loop.redetect();
   EXPECT_TRUE(moved(Kind::redetected)) << "redetect";
-  loop.pipeline().set_algorithm("sort");
+  loop.redetect_with_algorithm("sort");
   EXPECT_TRUE(moved(Kind::redetected)) << "algorithm";
   EXPECT_EQ(loop.change().moved_at, g - 2) << "a redetect does not move the frame shown";
   loop.begin_step();
@@ -164,32 +164,32 @@ TEST(FrameLoop, SwitchesAlgorithmFaultAndChecksLive) {
   load_scene_file(loop, scene("default"));
   for (int k = 0; k < 10; ++k) loop.step();
   const PairList before = loop.result().selected().pairs;
-  loop.pipeline().set_algorithm("box2d");
+  loop.redetect_with_algorithm("box2d");
   EXPECT_EQ(loop.pipeline().algorithm(), "box2d");
   EXPECT_EQ(loop.pipeline().detector().name(), "box2d");
   EXPECT_EQ(loop.source().frame(), 10);  // the same frame, detected again
   EXPECT_EQ(loop.result().selected().pairs, before);
   EXPECT_TRUE(loop.result().report().ok());
 
-  loop.pipeline().set_fault(Fault::DropPair);
+  loop.redetect_with_fault(Fault::DropPair);
   EXPECT_EQ(loop.result().selected().pairs.size() + 1, before.size());
   EXPECT_FALSE(loop.result().report().ok());
   EXPECT_GT(loop.result().report().broken[static_cast<int>(Invariant::AEqualsR)], 0);
-  loop.pipeline().set_checks_enabled(false);
+  loop.redetect_with_checks(false);
   EXPECT_FALSE(loop.result().report().checked);
   EXPECT_TRUE(loop.result().reference.empty());
-  loop.pipeline().set_checks_enabled(true);
-  loop.pipeline().set_fault(Fault::None);
+  loop.redetect_with_checks(true);
+  loop.redetect_with_fault(Fault::None);
   EXPECT_TRUE(loop.result().report().ok());
 
-  EXPECT_THROW(loop.pipeline().set_algorithm("quadtree"), Error);
+  EXPECT_THROW(loop.redetect_with_algorithm("quadtree"), Error);
   EXPECT_EQ(loop.pipeline().algorithm(), "box2d");  // kept
 }
 
 TEST(FrameLoop, ComparisonLanesAreCheckedOnTheSameFrame) {
   FrameLoop loop;
   load_scene_file(loop, scene("pile"));
-  loop.pipeline().set_comparison_algorithms({"box2d", "brute"});
+  loop.redetect_with_comparisons({"box2d", "brute"});
   ASSERT_EQ(loop.result().lanes.size(), 3u);  // the selected lane, then the comparisons in the order given
   for (int k = 0; k < 5; ++k) {
     loop.step();
@@ -201,7 +201,7 @@ TEST(FrameLoop, ComparisonLanesAreCheckedOnTheSameFrame) {
     }
   }
   EXPECT_EQ(loop.result().lanes[2].report.reference, "sort");  // brute never checks itself
-  EXPECT_THROW(loop.pipeline().set_comparison_algorithms({"nbs", "nope"}), Error);
+  EXPECT_THROW(loop.redetect_with_comparisons({"nbs", "nope"}), Error);
   EXPECT_EQ(loop.pipeline().comparison_algorithms().size(), 2u);  // kept
 }
 
@@ -210,7 +210,7 @@ TEST(FrameLoop, StalePositionsAreLastFramesPositions) {
   load_scene_file(loop, scene("gas"));
   loop.step();
   const Elements previous = loop.source().elements();
-  loop.pipeline().set_fault(Fault::StalePositions);
+  loop.redetect_with_fault(Fault::StalePositions);
   loop.step();
   EXPECT_EQ(loop.result().selected().pairs, brute_pairs(previous));
   EXPECT_NE(loop.result().selected().pairs, brute_pairs(loop.source().elements()));
@@ -245,7 +245,7 @@ TEST(FrameLoop, ABadSceneKeepsTheOldOneAndRestartGoesBackToFrameZero) {
   loop.step();
   EXPECT_NE(loop.pipeline().frame_trace()->serial, trace->serial);
   EXPECT_EQ(loop.pipeline().frame_trace()->frame, loop.source().frame());
-  loop.pipeline().set_algorithm("box2d");
+  loop.redetect_with_algorithm("box2d");
   EXPECT_TRUE(loop.pipeline().frame_trace()->log.events().empty());
   EXPECT_NE(loop.pipeline().frame_trace()->refusal.find("records no operations"), std::string::npos);
 }
@@ -287,7 +287,7 @@ TEST(FrameLoop, ATraceTheDetectorRefusesCarriesTheReason) {
       {"shape": "circle", "radius": 0.01, "position": [90000, 90000]}]})",
                                    "sparse.json"));
   try {
-    loop.pipeline().set_algorithm("screen");
+    loop.redetect_with_algorithm("screen");
   } catch (const Error&) {
     // the detector is switched; the frame's detection is what failed
   }

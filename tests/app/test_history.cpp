@@ -198,7 +198,7 @@ TEST(History, ChecksSwitchedOffKeepTheRunsViolations) {
   run_default(loop, 10);
   const std::int64_t total = loop.history().violation_log().total();
   ASSERT_GT(total, 0);
-  loop.pipeline().set_checks_enabled(false);
+  loop.redetect_with_checks(false);
   EXPECT_EQ(loop.history().violation_log().total(), total);
   loop.show_frame(5);
   EXPECT_EQ(loop.history().violation_log().total(), total);
@@ -263,7 +263,7 @@ TEST(History, TheViolationLogFollowsTheRun) {
   // Showing a frame again checks it again: its violations are replaced, not added.
   loop.show_frame(10);
   EXPECT_EQ(log.total(), total);
-  loop.pipeline().set_fault(Fault::None);  // frame 10 re-checked without the fault
+  loop.redetect_with_fault(Fault::None);  // frame 10 re-checked without the fault
   EXPECT_LT(log.total(), total);
   for (const Violation& v : log.listed()) EXPECT_NE(v.frame, 10);
   // Resuming from frame 10 drops the later frames' violations.

@@ -113,13 +113,13 @@ TEST(ReplayFrameLoopRecorded, IsRefusedWhereThereAreNoPairsAndTheOldStateStays) 
   FrameLoop loop;
   loop.load_recording(three_frames());  // no pairs blocks
   EXPECT_FALSE(loop.source().carries_pairs());
-  EXPECT_THROW(loop.pipeline().set_algorithm("recorded"), Error);
+  EXPECT_THROW(loop.redetect_with_algorithm("recorded"), Error);
   EXPECT_EQ(loop.pipeline().algorithm(), "nbs");
-  EXPECT_THROW(loop.pipeline().set_comparison_algorithms({"recorded"}), Error);
+  EXPECT_THROW(loop.redetect_with_comparisons({"recorded"}), Error);
   EXPECT_TRUE(loop.pipeline().comparison_algorithms().empty());
 
   loop.load_recording(three_frames_with_pairs());
-  loop.pipeline().set_algorithm("recorded");
+  loop.redetect_with_algorithm("recorded");
   EXPECT_THROW(loop.load_recording(three_frames()), Error) << "the recording without pairs is refused";
   EXPECT_TRUE(loop.source().carries_pairs()) << "the old recording stays";
   EXPECT_THROW(load_scene_file(loop, std::string(NBSCOPE_SOURCE_DIR) + "/assets/scenes/book-fig-3-15.json"), Error);
@@ -138,16 +138,16 @@ TEST(ReplayFrameLoopRecorded, OnlyTheFaultThatActsOnThePairsIsTaken) {
   FrameLoop loop(o);
   loop.load_recording(three_frames_with_pairs());
   for (const Fault f : {Fault::StalePositions, Fault::DropMaskCell, Fault::OffByOneCell, Fault::DropBox2dContact}) {
-    EXPECT_THROW(loop.pipeline().set_fault(f), Error) << fault_name(f);
+    EXPECT_THROW(loop.redetect_with_fault(f), Error) << fault_name(f);
     EXPECT_EQ(loop.pipeline().fault(), Fault::None);
   }
-  loop.pipeline().set_fault(Fault::DropPair);
+  loop.redetect_with_fault(Fault::DropPair);
   EXPECT_TRUE(loop.result().selected().pairs.empty()) << "frame 3's only pair dropped";
   EXPECT_FALSE(loop.result().report().ok());
-  loop.pipeline().set_fault(Fault::None);
-  loop.pipeline().set_algorithm("nbs");
-  loop.pipeline().set_fault(Fault::StalePositions);  // a detector takes it
-  EXPECT_THROW(loop.pipeline().set_algorithm("recorded"), Error);
+  loop.redetect_with_fault(Fault::None);
+  loop.redetect_with_algorithm("nbs");
+  loop.redetect_with_fault(Fault::StalePositions);  // a detector takes it
+  EXPECT_THROW(loop.redetect_with_algorithm("recorded"), Error);
   EXPECT_EQ(loop.pipeline().algorithm(), "nbs");
   o.fault = Fault::OffByOneCell;
   EXPECT_THROW(FrameLoop{o}, Error);
