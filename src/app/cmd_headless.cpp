@@ -51,8 +51,8 @@ std::string broken_text(const AlgorithmRun& run) {
 // from 1 also gets the pair as its file numbers it, a dump's frame names the atoms by their ids.
 std::string violation_text(const Violation& v, const LoopSource& source) {
   std::string pair = std::to_string(v.pair.i) + ", " + std::to_string(v.pair.j);
-  if (source.element_ids(v.frame) != nullptr) {
-    pair = "atoms " + std::to_string(source.element_name(v.frame, v.pair.i)) + ", " + std::to_string(source.element_name(v.frame, v.pair.j));
+  if (v.atom_i >= 0) {
+    pair = "atoms " + std::to_string(v.atom_i) + ", " + std::to_string(v.atom_j);
   } else if (const int base = source.carries_pairs() ? source.pair_base() : 0; base != 0) {
     pair += "; the file's " + std::to_string(v.pair.i + base) + "," + std::to_string(v.pair.j + base);
   }
@@ -379,7 +379,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   const auto add_frame = [&] {
     const auto add = [&](std::size_t r, const FrameReport& f) {
       report.runs[r].add(f);
-      if (writer) writer->add_frame(r, f, loop.source().element_ids(f.frame));
+      if (writer) writer->add_frame(r, f, loop.result().ids.get());
     };
     add(0, loop.result().report());
     for (std::size_t lane = 1; lane < loop.result().lanes.size(); ++lane) add(lane, loop.result().lanes[lane].report);

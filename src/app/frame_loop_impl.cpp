@@ -102,7 +102,6 @@ void FrameLoopState::load(std::unique_ptr<FrameSource> fresh) {
   watch.disarm();  // its note describes the old source
   watch.reset();   // a new run
   discard_step();  // the world it steps goes
-  looked_up.reset();
   frames = std::move(fresh);
   pipeline.set_detect_options(opts);
   start();

@@ -26,8 +26,6 @@ struct FrameLoopState {
   FrameLoopOptions options;
   // The run's frames: a simulated scene or recorded frames, or null before the first load.
   std::unique_ptr<FrameSource> frames;
-  // The atom ids LoopSource::element_ids() last looked up, held while they are used.
-  mutable std::shared_ptr<const std::vector<std::int64_t>> looked_up;
   Pipeline pipeline;
 
   // ---- history ----

@@ -23,18 +23,6 @@ bool LoopSource::carries_pairs() const { return recording() != nullptr && record
 const Recording* LoopSource::recording() const { return s_->loaded() ? s_->source().recording() : nullptr; }
 const PairList* LoopSource::recorded_pairs() const { return s_->loaded() ? s_->source().recorded_pairs() : nullptr; }
 int LoopSource::pair_base() const { return recording() != nullptr ? recording()->pair_base : 0; }
-const std::vector<std::int64_t>* LoopSource::element_ids(std::int64_t frame) const {
-  if (!s_->loaded()) return nullptr;
-  if (frame == s_->frame_number()) {
-    const std::vector<std::int64_t>& ids = s_->source().ids();  // the frame shown carries its own
-    return ids.empty() ? nullptr : &ids;
-  }
-  s_->looked_up = s_->source().ids_of(frame);  // held while the pointer is used
-  return s_->looked_up.get();
-}
-std::int64_t LoopSource::element_name(std::int64_t frame, std::int64_t row) const {
-  return element_id(element_ids(frame), row);
-}
 bool LoopSource::at_end() const { return s_->loaded() && !s_->source().showing_past() && !s_->source().can_step(); }
 bool LoopSource::step_pending() const { return s_->pending(); }
 bool LoopSource::step_ready() const {

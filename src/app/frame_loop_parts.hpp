@@ -52,12 +52,6 @@ class LoopSource {
   // The recording's `base`: its pairs number elements from 0 or 1 (0 for a scene). Element ids
   // here stay 0-based rows either way.
   [[nodiscard]] int pair_base() const;
-  // The atom ids of recorded frame `frame`'s rows (a dump's; io/recording.hpp), or null when its
-  // elements are named by their rows (a scene, a .nbsrec, a frame not recorded). A frame out of
-  // memory is read again; the pointer holds until the next call for another such frame.
-  [[nodiscard]] const std::vector<std::int64_t>* element_ids(std::int64_t frame) const;
-  // Element `row` of frame `frame` as messages name it: its atom id, else the row.
-  [[nodiscard]] std::int64_t element_name(std::int64_t frame, std::int64_t row) const;
   // True on a recording's last frame, where step() does nothing (always false for a scene).
   [[nodiscard]] bool at_end() const;
   // True between FrameLoop::begin_step() and the call that adopts its frame.

@@ -117,7 +117,7 @@ void GlView::fit_camera(const FrameLoop& loop) {
 void GlView::check_selection(const FrameLoop& loop) const {
   if (select_option_ < 0) return;
   // A dump's frame shows atom ids: --select names one of them.
-  if (const std::vector<std::int64_t>* ids = loop.source().element_ids(loop.source().frame())) {
+  if (const std::vector<std::int64_t>* ids = loop.result().ids.get()) {
     if (std::find(ids->begin(), ids->end(), select_option_) == ids->end())
       throw Error("--select: atom " + std::to_string(select_option_) + " is not in frame " + std::to_string(loop.source().frame()) +
                   " (its elements are named by their atom ids)");
@@ -162,6 +162,7 @@ void GlView::follow(const FrameLoop& loop) {
     frame_shown(loop);  // a frame of the history, or several changes at once: as a jump unless a neighbour
   }
   // Only redetected: the same frame, nothing seen changes (the lists follow the trace, update_lists).
+  followed_ids_ = loop.result().ids;
 }
 
 void GlView::source_loaded(const FrameLoop& loop, bool fit) {
@@ -172,7 +173,7 @@ void GlView::source_loaded(const FrameLoop& loop, bool fit) {
     stepper_->focus_element = -1;
   }
   // --select on a dump's first frame names an atom id (as shown), not a row.
-  const std::vector<std::int64_t>* ids = loop.source().element_ids(loop.source().frame());
+  const std::vector<std::int64_t>* ids = loop.result().ids.get();
   if (loaded_scene_.empty() && select_option_ >= 0 && ids != nullptr) {
     const auto it = std::find(ids->begin(), ids->end(), select_option_);
     state_.selected = it == ids->end() ? -1 : static_cast<ElementId>(it - ids->begin());
@@ -200,9 +201,9 @@ void GlView::source_loaded(const FrameLoop& loop, bool fit) {
 }
 
 void GlView::follow_atoms(const FrameLoop& loop) {
-  // previous_frame_ is the frame last followed, of the same recording (a new source is not followed here).
-  const std::vector<std::int64_t>* before = loop.source().element_ids(previous_frame_);
-  const std::vector<std::int64_t>* after = loop.source().element_ids(loop.source().frame());
+  // The ids of the frame last followed, of the same recording (a new source is not followed here).
+  const std::vector<std::int64_t>* before = followed_ids_.get();
+  const std::vector<std::int64_t>* after = loop.result().ids.get();
   if (before == nullptr || after == nullptr || before == after) return;
   const bool trail_is_selection = trail_element_ == state_.selected;
   state_.selected = row_of_atom(*before, *after, state_.selected);
@@ -371,7 +372,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   scene.insets = host_.insets(state_);  // last frame's panels: labels keep to the part of the view they leave free
   scene.covered = host_.covered();
   scene.book_numbering = state_.book_numbering;
-  scene.ids = loop.source().element_ids(loop.source().frame());  // a dump's atoms are labelled by their ids
+  scene.ids = loop.result().ids.get();  // a dump's atoms are labelled by their ids
   if (loop.drag().active() && state_.selected >= 0 && state_.mouse_world)
     scene.drag = std::array<render::Vec2, 2>{
         render::Vec2(static_cast<float>(e.x[state_.selected]), static_cast<float>(e.y[state_.selected])),

@@ -208,6 +208,7 @@ class GlView {
   std::vector<std::vector<render::Vec2>> trails_;
   std::vector<CellIndex> previous_cells_;
   std::int64_t previous_frame_ = -1;  // the frame previous_cells_ belong to
+  std::shared_ptr<const std::vector<std::int64_t>> followed_ids_;  // its atom ids (a dump's), kept with it
   std::vector<float> flash_;
   std::vector<float> frame_history_;
 };

@@ -21,7 +21,6 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
   sim.error = session.error;
   sim.touching = loop.pipeline().touching();
   sim.threads = loop.pipeline().threads();
-  sim.element_ids = [&loop](std::int64_t f) { return loop.source().element_ids(f); };  // a dump's atoms, named by their ids
   sim.paused = session.paused;
   sim.time_step = loop.source().scene().time_step;
   sim.speed = session.speed;

@@ -30,8 +30,8 @@ std::optional<LocatedViolation> locate_violation(FrameLoop& loop, const Violatio
   if (info == nullptr || !info->traces || (!info->library.empty() && !loop.pipeline().record_traces())) return std::nullopt;
   const std::shared_ptr<const FrameTrace> trace = loop.pipeline().frame_trace();
   if (!trace || !trace->refusal.empty()) return std::nullopt;  // nothing recorded: nothing to locate in
-  const LoopSource& source = loop.source();
-  const auto id = [&](std::int64_t row) { return element_label(source.element_name(v.frame, row), row); };
+  const std::vector<std::int64_t>* ids = loop.result().ids.get();  // the frame shown's atoms (a dump's)
+  const auto id = [&](std::int64_t row) { return element_label(element_id(ids, row), row); };
   const Diagnosis d = diagnose_frame(v, *trace, id);
   LocatedViolation l;
   l.frame = v.frame;

@@ -27,6 +27,8 @@ struct FrameResult {
   std::int64_t frame = 0;
   double time = 0;
   std::uint64_t hash = 0;         // hash_elements() of the frame's elements
+  // The atom ids of the elements' rows as the frame carries them (a dump's), or null: rows name them.
+  std::shared_ptr<const std::vector<std::int64_t>> ids;
   // Lane 0 is the selected detector, then the comparison ones in the order given.
   std::vector<LaneResult> lanes = std::vector<LaneResult>(1);
   // The check's sets, sorted (empty when checks are off): R of lane 0, F (Box2D's contact list),

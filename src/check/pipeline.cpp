@@ -129,6 +129,7 @@ const FrameResult& Pipeline::run(const FrameInput& in) {
   result_.trace.reset();  // made again on request, for this frame and detector
   result_.frame = frame;
   result_.time = source.time();
+  result_.ids = source.ids();
   for (std::size_t k = 0; k < lanes_.size(); ++k) {
     if (lanes_[k].recorded) lanes_[k].recorded->set_pairs(source.recorded_pairs());
     detect(lanes_[k], result_.lanes[k], input, in.where, k == 0 && record_traces_ && !lanes_[k].recorded);
@@ -180,6 +181,7 @@ const FrameResult& Pipeline::run(const FrameInput& in) {
       check.recorded = lanes_[k].recorded != nullptr;
       if (check.recorded) check.precision = source.precision();
       checker_.check(check, lane.report);
+      name_atoms(lane.report, result_.ids.get());
       lane.report.check_timings.invariant_ms[static_cast<std::size_t>(Invariant::Contract)] += contract_ms;
       if (k == 0) result_.reference = checker_.reference_pairs();
       lane.report.timings.check_ms = ms_since(t0);

@@ -49,4 +49,15 @@ std::string boundary_text(const BoundaryPair& b) {
   return buf;
 }
 
+void name_atoms(FrameReport& report, const std::vector<std::int64_t>* ids) {
+  if (ids == nullptr) return;
+  const auto atom = [ids](ElementId row) {
+    return row >= 0 && static_cast<std::size_t>(row) < ids->size() ? (*ids)[static_cast<std::size_t>(row)] : std::int64_t{-1};
+  };
+  for (Violation& v : report.violations) {
+    v.atom_i = atom(v.pair.i);
+    v.atom_j = atom(v.pair.j);
+  }
+}
+
 }  // namespace nbscope

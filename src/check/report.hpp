@@ -45,6 +45,9 @@ struct Violation {
   Pair pair;
   CellIndex cell_i, cell_j;  // cells of pair.i and pair.j (cells: the detector's, then the grid's)
   const char* what = "";     // static text: "missing from A", "extra in A", "not in Box2D's contact list", ...
+  // The atom ids of pair.i and pair.j when the frame names its elements by them (a dump's), else -1:
+  // the violation names its atoms after the frame is gone (the run's log, reports).
+  std::int64_t atom_i = -1, atom_j = -1;
 };
 
 // A pair on which A and R disagree only at the contact boundary: the recorded pairs came from a file,
@@ -140,6 +143,10 @@ struct FrameReport {
   // True when checked and nothing broke.
   [[nodiscard]] bool ok() const { return checked && violation_count() == 0; }
 };
+
+// Gives each violation of `report` the atom ids of its pair from `ids` (the frame's, by row); no
+// effect when `ids` is null (rows name the elements).
+void name_atoms(FrameReport& report, const std::vector<std::int64_t>* ids);
 
 // What the timeline shows of one frame of a run: kept for every frame, whether or not the frame
 // itself can still be shown (the history keeps frames within a memory budget, check/history.hpp).

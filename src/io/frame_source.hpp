@@ -79,12 +79,6 @@ class FrameSource : public Frame {
   // at each that can be had without reading a file, oldest first (a dump's atom followed by its id).
   virtual void element_path(const FrameHistory& history, ElementId k, std::int64_t from, std::int64_t to,
                             std::vector<std::array<double, 2>>& out) const = 0;
-  // The atom ids of frame `frame`'s rows, or null when rows name them (or the frame is not the run's);
-  // a frame out of memory is read again.
-  [[nodiscard]] virtual std::shared_ptr<const std::vector<std::int64_t>> ids_of(std::int64_t frame) const {
-    (void)frame;
-    return nullptr;
-  }
   // Bytes of frames held beside the one shown, within a budget the history's sets.
   [[nodiscard]] virtual std::size_t held_bytes() const { return 0; }
   virtual void set_budget(std::size_t bytes) { (void)bytes; }

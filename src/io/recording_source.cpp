@@ -52,12 +52,9 @@ Elements RecordingSource::previous_elements(const std::shared_ptr<const WorldSta
   return frame_at(index_ > 0 ? index_ - 1 : 0)->elements;
 }
 
-std::shared_ptr<const std::vector<std::int64_t>> RecordingSource::ids_of(std::int64_t frame) const {
-  const std::size_t index = index_of(frame);
-  if (index >= entries().size() || entries()[index].number != frame) return nullptr;
-  std::shared_ptr<const RecordedFrame> f = frame_at(index);
-  if (f->ids.empty()) return nullptr;
-  return {f, &f->ids};  // holds the frame while its ids are used
+std::shared_ptr<const std::vector<std::int64_t>> RecordingSource::ids() const {
+  if (current_->ids.empty()) return nullptr;
+  return {current_, &current_->ids};  // holds the frame while its ids are used
 }
 
 void RecordingSource::element_path(const FrameHistory& history, ElementId k, std::int64_t from, std::int64_t to,

@@ -30,7 +30,7 @@ class RecordingSource final : public FrameSource {
   // One dynamic circle per element.
   void body_shapes(std::vector<BodyShape>& out) const override { circles_of(elements(), out); }
   [[nodiscard]] const Box2dFrame* box2d() const override { return nullptr; }
-  [[nodiscard]] const std::vector<std::int64_t>& ids() const override { return current_->ids; }
+  [[nodiscard]] std::shared_ptr<const std::vector<std::int64_t>> ids() const override;
   // The frame's `pairs` block when the recording carries pairs, else null.
   [[nodiscard]] const PairList* recorded_pairs() const override { return header().has_pairs ? &current_->pairs : nullptr; }
   [[nodiscard]] double precision() const override { return current_->precision; }
@@ -55,7 +55,6 @@ class RecordingSource final : public FrameSource {
   // Through the frames held (none is read again for a trail), each atom followed by its id.
   void element_path(const FrameHistory& history, ElementId k, std::int64_t from, std::int64_t to,
                     std::vector<std::array<double, 2>>& out) const override;
-  [[nodiscard]] std::shared_ptr<const std::vector<std::int64_t>> ids_of(std::int64_t frame) const override;
   // The bytes of frames kept beside the current one, and their budget.
   [[nodiscard]] std::size_t held_bytes() const override { return kept_bytes_; }
   void set_budget(std::size_t bytes) override;

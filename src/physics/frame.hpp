@@ -5,6 +5,7 @@
 // stepped and shown, is a FrameSource (io/frame_source.hpp).
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/elements.hpp"
@@ -30,18 +31,13 @@ class Frame {
   virtual void body_shapes(std::vector<BodyShape>& out) const = 0;
   // Box2D's side of the frame for the check, or null when there is none (recorded frames).
   [[nodiscard]] virtual const Box2dFrame* box2d() const = 0;
-  // The atom ids of the elements' rows (a dump's, ascending), or empty when rows name them.
-  [[nodiscard]] virtual const std::vector<std::int64_t>& ids() const;
+  // The atom ids of the elements' rows (a dump's, ascending), or null when rows name them.
+  [[nodiscard]] virtual std::shared_ptr<const std::vector<std::int64_t>> ids() const { return nullptr; }
   // The code's own contact pairs of this frame (0-based rows), or null when it gives none.
   [[nodiscard]] virtual const PairList* recorded_pairs() const { return nullptr; }
   // What the positions behind recorded_pairs() resolve (check/check.hpp's precision band); 0: exact.
   [[nodiscard]] virtual double precision() const { return 0; }
 };
-
-inline const std::vector<std::int64_t>& Frame::ids() const {
-  static const std::vector<std::int64_t> kRows;
-  return kRows;
-}
 
 // One dynamic circle per element: how frames without bodies are drawn.
 inline void circles_of(const Elements& e, std::vector<BodyShape>& out) {

@@ -42,6 +42,17 @@ namespace nbscope::ui {
   return std::string(ids != nullptr ? "atoms (" : "(") + std::to_string(element_number(p.i, book, ids)) + ", " +
          std::to_string(element_number(p.j, book, ids)) + ")";
 }
+// Row `row` of violation `v`'s pair as its frame named it: the atom id the violation carries, else
+// the row in the chosen numbering.
+[[nodiscard]] inline std::int64_t element_number(const Violation& v, std::int64_t row, bool book) {
+  const std::int64_t atom = row == v.pair.i ? v.atom_i : row == v.pair.j ? v.atom_j : -1;
+  return atom >= 0 ? atom : shown(row, book);
+}
+// Violation `v`'s pair as its frame named it: "atoms (12, 40)" for a dump's, else "(4, 6)".
+[[nodiscard]] inline std::string pair_text(const Violation& v, bool book) {
+  return std::string(v.atom_i >= 0 ? "atoms (" : "(") + std::to_string(element_number(v, v.pair.i, book)) + ", " +
+         std::to_string(element_number(v, v.pair.j, book)) + ")";
+}
 
 // Where the window's own part of a frame's time went, in milliseconds (the pipeline's part, physics,
 // detection and check, is FrameTimings, check/report.hpp).
@@ -74,9 +85,6 @@ struct SimView {
   std::string error;  // the last failed request (bad scene file, ...), shown in red
   Touching touching = Touching::inclusive;  // the contact convention (--touching), shown in Stats
   int threads = 1;  // threads a detection may use (--threads): the Scaling panel compares 1 and this
-  // The atom ids of recorded frame F's rows (a dump's, LoopSource::element_ids), or null (unset, or
-  // the rows are the elements): every panel names an element by them.
-  std::function<const std::vector<std::int64_t>*(std::int64_t frame)> element_ids;
 
   bool paused = false;
   double time_step = 1.0 / 60.0;
@@ -139,10 +147,10 @@ struct SimView {
   [[nodiscard]] const PairList* pairs() const { return frame != nullptr ? &frame->selected().pairs : nullptr; }
   // The chosen detector's report this frame: counts, timings, check, violations (null with nothing loaded).
   [[nodiscard]] const FrameReport* report() const { return frame != nullptr ? &frame->report() : nullptr; }
-  // The atom ids of frame `f`'s rows, or null when its elements are named by their rows.
-  [[nodiscard]] const std::vector<std::int64_t>* ids_of(std::int64_t f) const { return element_ids ? element_ids(f) : nullptr; }
-  // The atom ids of the shown frame's rows, or null.
-  [[nodiscard]] const std::vector<std::int64_t>* ids() const { return frame != nullptr ? ids_of(frame_number()) : nullptr; }
+  // The atom ids of the shown frame's rows as the frame carries them (a dump's), or null when its
+  // elements are named by their rows: every panel names an element by them. A violation of another
+  // frame names its own atoms (Violation::atom_i, atom_j).
+  [[nodiscard]] const std::vector<std::int64_t>* ids() const { return frame != nullptr ? frame->ids.get() : nullptr; }
 };
 
 // Open/closed panels, overlays and interaction state: owned by the app, edited by the UI.

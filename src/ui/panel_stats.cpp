@@ -18,9 +18,9 @@ std::string format_ms(const SimView& sim, double ms) {
   return buf;
 }
 
-std::string violation_line(const Violation& v, bool book, const std::vector<std::int64_t>* ids) {
+std::string violation_line(const Violation& v, bool book) {
   const auto num = [&](std::int64_t value) { return std::to_string(shown(value, book)); };
-  return std::string(invariant_name(v.invariant)) + ": " + pair_text(v.pair, book, ids) + " " + v.what + ", cells (" +
+  return std::string(invariant_name(v.invariant)) + ": " + pair_text(v, book) + " " + v.what + ", cells (" +
          num(v.cell_i.ix) + "," + num(v.cell_i.iy) + ") (" + num(v.cell_j.ix) + "," + num(v.cell_j.iy) + ")";
 }
 
@@ -149,7 +149,7 @@ class StatsPanel final : public Panel {
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.5f, 0.5f, 1.0f));
       const std::size_t lines = std::min(report->violations.size(), kViolationLines);
       for (std::size_t i = 0; i < lines; ++i) {
-        ImGui::TextWrapped("%s", violation_line(report->violations[i], c.state.book_numbering, s.ids()).c_str());
+        ImGui::TextWrapped("%s", violation_line(report->violations[i], c.state.book_numbering).c_str());
         // One click from "check FAILED" to the violation: chosen as a click in the Violations panel chooses it.
         if (ImGui::IsItemHovered()) {
           ImGui::GetWindowDrawList()->AddRectFilled(ImGui::GetItemRectMin(), ImGui::GetItemRectMax(), IM_COL32(255, 90, 90, 40));

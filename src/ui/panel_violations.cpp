@@ -92,7 +92,7 @@ class ViolationsPanel final : public Panel {
       const Violation& v = all[static_cast<std::size_t>(c.state.current_violation)];
       ImGui::Separator();
       ImGui::PushTextWrapPos(0.0f);
-      ImGui::TextColored(kRed, "%s", describe_violation(v, book, s.ids_of(v.frame), frame_dim(s)).c_str());
+      ImGui::TextColored(kRed, "%s", describe_violation(v, book, frame_dim(s)).c_str());
       const auto truth = grid_cells(s, v);
       if (truth && !same_cells(v, *truth))
         ImGui::TextColored(kOrange, "The grid puts them in %s: the detector's cells are not the true ones.",
@@ -193,15 +193,15 @@ class ViolationsPanel final : public Panel {
         std::snprintf(frame, sizeof frame, "%lld##v%zu", static_cast<long long>(v.frame), index);
         const bool current = static_cast<std::int64_t>(index) == c.state.current_violation;
         if (ImGui::Selectable(frame, current, ImGuiSelectableFlags_SpanAllColumns)) go(c, index);
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe_violation(v, book, c.sim.ids_of(v.frame), frame_dim(c.sim)).c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe_violation(v, book, frame_dim(c.sim)).c_str());
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(invariant_name(v.invariant));
         const auto truth = grid_cells(c.sim, v);
         const bool wrong = truth && !same_cells(v, *truth);
         ImGui::TableNextColumn();
-        const std::vector<std::int64_t>* ids = c.sim.ids_of(v.frame);  // a dump's frame: its atoms' ids
-        ImGui::Text("%lld, %lld", static_cast<long long>(element_number(v.pair.i, book, ids)),
-                    static_cast<long long>(element_number(v.pair.j, book, ids)));
+        // A dump's frame: its atoms' ids, which the violation carries.
+        ImGui::Text("%lld, %lld", static_cast<long long>(element_number(v, v.pair.i, book)),
+                    static_cast<long long>(element_number(v, v.pair.j, book)));
         if (wrong) ImGui::TextDisabled("true");  // under the pair, beside the grid's cells
         ImGui::TableNextColumn();
         const int dim = frame_dim(c.sim);
@@ -274,8 +274,8 @@ std::optional<std::size_t> violation_index(const SimView& sim, const Violation& 
   return std::nullopt;
 }
 
-std::string describe_violation(const Violation& v, bool book, const std::vector<std::int64_t>* ids, int dim) {
-  return std::string(invariant_name(v.invariant)) + " in frame " + std::to_string(v.frame) + ": " + pair_text(v.pair, book, ids) + " " +
+std::string describe_violation(const Violation& v, bool book, int dim) {
+  return std::string(invariant_name(v.invariant)) + " in frame " + std::to_string(v.frame) + ": " + pair_text(v, book) + " " +
          v.what + "; the detector's cells " + cells_joined(v.cell_i, v.cell_j, book, dim, " and ");
 }
 

@@ -42,9 +42,9 @@ std::optional<std::size_t> step_violation(const SimView& sim, const UiState& sta
 // nullopt when the log does not list it.
 std::optional<std::size_t> violation_index(const SimView& sim, const Violation& violation);
 // "A==R in frame 3: (4, 6) missing from A (in R); the detector's cells (5,6) and (4,7)", in the
-// chosen numbering (cells of a 3D frame, `dim` 3, with iz); its elements named "atoms (2753, 12)" by
-// `ids` (its frame's, SimView::ids_of) when given.
-std::string describe_violation(const Violation& violation, bool book, const std::vector<std::int64_t>* ids = nullptr, int dim = 2);
+// chosen numbering (cells of a 3D frame, `dim` 3, with iz); its elements named "atoms (2753, 12)" when
+// it carries their atom ids (a dump's frame: Violation::atom_i, atom_j).
+std::string describe_violation(const Violation& violation, bool book, int dim = 2);
 // The cells the grid gives the violation's two elements (core/cells.hpp's integerisation: what the
 // Selection panel and the picture show), to hold against the detector's (Violation::cell_i, cell_j);
 // nullopt unless the violation is of the frame on screen (only its elements are at hand).
@@ -52,8 +52,8 @@ std::optional<std::array<CellIndex, 2>> grid_cells(const SimView& sim, const Vio
 // "(5,6) (4,7)": two cells in the chosen numbering; "(5,6,1) (4,7,0)" in 3D (`dim` 3).
 std::string cell_pair_text(const CellIndex& a, const CellIndex& b, bool book, int dim = 2);
 // The Stats panel's line for one of the frame's violations: "A==R: (4, 6) missing from A (in R),
-// cells (5,6) (4,7)", in the chosen numbering; its elements named by `ids` when given.
-std::string violation_line(const Violation& violation, bool book, const std::vector<std::int64_t>* ids = nullptr);
+// cells (5,6) (4,7)", in the chosen numbering; its elements named by the atom ids it carries.
+std::string violation_line(const Violation& violation, bool book);
 // The Violations panel's line for a pair at the boundary: "atoms (2753, 12): at the boundary, within ... (R has it, A not)".
 std::string boundary_line(const BoundaryPair& b, bool book, const std::vector<std::int64_t>* ids);
 // The Stats panel's line for the contact convention: "touching: inclusive (<=)" or "touching: strict (<)".

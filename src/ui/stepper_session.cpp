@@ -58,7 +58,7 @@ void StepperSession::apply_target(const SimView& sim) {
   target_.reset();
   const bool book = book_numbering;
   // A dump's atoms by id, with the row beside it where it differs (the Stepper counts rows).
-  const std::vector<std::int64_t>* ids = sim.ids_of(t.frame);
+  const std::vector<std::int64_t>* ids = sim.ids();  // the target's frame is the one shown (update)
   const auto id = [&](std::int64_t k) {
     const std::int64_t row = shown(k, book);
     return ids != nullptr && k >= 0 && k < static_cast<std::int64_t>(ids->size()) ? element_label((*ids)[static_cast<std::size_t>(k)], row)
@@ -155,7 +155,7 @@ void StepperSession::capture(const SimView& sim) {
   tests_.clear();
   algorithm_ = sim.algorithm;
   frame_ = sim.frame_number();
-  if (const std::vector<std::int64_t>* ids = sim.ids_of(frame_)) ids_ = *ids;
+  if (const std::vector<std::int64_t>* ids = sim.ids()) ids_ = *ids;
   else ids_.clear();
   trace_ = sim.trace;
   held_serial_ = trace_ ? trace_->serial : 0;

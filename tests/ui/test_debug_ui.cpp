@@ -300,20 +300,23 @@ TEST(DebugPanels, AtomsAreNamedByTheirIdsAndBoundaryPairsAreListedApart) {
   UiHost host;
   BookFrame f;
   const std::vector<std::int64_t> ids{2753, 12, 99, 100, 101, 102, 103, 104, 105};
-  const Violation v{0, Invariant::AEqualsR, Pair{2, 3}, {1, 2}, {3, 4}, "missing from A"};
-  EXPECT_EQ(violation_line(v, true, &ids), "A==R: atoms (99, 100) missing from A, cells (2,3) (4,5)");
-  EXPECT_EQ(describe_violation(v, false, &ids),
-            "A==R in frame 0: atoms (99, 100) missing from A; the detector's cells (1,2) and (3,4)");
-  EXPECT_EQ(describe_violation(v, false), "A==R in frame 0: (2, 3) missing from A; the detector's cells (1,2) and (3,4)");
+  const Violation rows{0, Invariant::AEqualsR, Pair{2, 3}, {1, 2}, {3, 4}, "missing from A"};
+  FrameReport named;
+  named.violations.push_back(rows);
+  name_atoms(named, &ids);  // as the pipeline names a dump frame's violations
+  const Violation& v = named.violations.front();
+  EXPECT_EQ(violation_line(v, true), "A==R: atoms (99, 100) missing from A, cells (2,3) (4,5)");
+  EXPECT_EQ(describe_violation(v, false), "A==R in frame 0: atoms (99, 100) missing from A; the detector's cells (1,2) and (3,4)");
+  EXPECT_EQ(describe_violation(rows, false), "A==R in frame 0: (2, 3) missing from A; the detector's cells (1,2) and (3,4)");
   BoundaryPair tie{Pair{0, 1}, 0.0, 0.0, true, true};
   EXPECT_EQ(boundary_line(tie, false, &ids),
             "atoms (2753, 12): an exact tie (gap 0): a contact under --touching inclusive, not under strict (R has it, A not)");
   EXPECT_EQ(touching_line(Touching::strict), "touching: strict (<)");
   EXPECT_EQ(touching_line(Touching::inclusive), "touching: inclusive (<=)");
-  // The frame's ids reach the panels through SimView::element_ids, per frame.
-  f.sim.element_ids = [&ids](std::int64_t frame) { return frame == 0 ? &ids : nullptr; };
-  EXPECT_EQ(f.sim.ids(), &ids);
-  EXPECT_EQ(f.sim.ids_of(1), nullptr);
+  // The frame's ids reach the panels in the frame itself (FrameResult::ids).
+  EXPECT_EQ(f.sim.ids(), nullptr);
+  f.result.ids = std::make_shared<const std::vector<std::int64_t>>(ids);
+  EXPECT_EQ(*f.sim.ids(), ids);
   // No violation, one tie: the Violations panel shows, for its boundary section.
   FrameReport& report = f.result.lanes.front().report;
   report.checked = true;

@@ -102,8 +102,7 @@ TEST(StepperSession, ElementEntriesNotWrittenYetShowAsUnset) {
 TEST(StepperSession, NamesADumpsElementsByAtomIdWithTheRowBeside) {
   BookFrame f;
   const std::vector<std::int64_t> ids{101, 102, 103, 104, 105, 106, 107, 108, 109};
-  const std::int64_t shown = f.sim.frame_number();
-  f.sim.element_ids = [&ids, shown](std::int64_t frame) { return frame == shown ? &ids : nullptr; };
+  f.result.ids = std::make_shared<const std::vector<std::int64_t>>(ids);  // the frame carries its atoms' ids
   StepperSession s;
   s.capture(f.traced());
   ASSERT_TRUE(s.has_capture()) << s.message();
