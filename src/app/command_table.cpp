@@ -103,7 +103,7 @@ CommandSpec gui_command() {
       {"The window (default: the last scene and algorithm used, else assets/scenes/default.json and nbs; $NBSCOPE_DATA_DIR overrides "
        "where assets/ is found): Box2D bodies, the cell grid, the detector's lists, pairs and check results over them, ImGui panels. "
        "`nbscope` alone, or with options only (`nbscope --scene F`), is `nbscope gui`.",
-       "Keys: P play/pause, O single step, R restart, Home fit, 1..9 algorithm, Esc clear the selection, overlays B E G L M C K F I T H; "
+       "Keys: P play/pause, O single step, R restart, Home fit, 1..N algorithm (the Algorithm panel's numbers), Esc clear the selection, overlays B E G L M C K F I T H; "
        "the Timeline: , and . one frame back/forward (Shift: 10), J play backwards; the Violations panel: [ and ] previous/next, "
        "Shift+[ the first; the Stepper (a paused frame): -> and <- one operation (Shift: one phase), Space play/pause, PageDown and "
        "PageUp the operation after/before on the selected element (Shift: on the selected cell); a 3D frame: Up and Down the layer above/below (see Help in the menu bar). Mouse: left "

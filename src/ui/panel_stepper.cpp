@@ -85,7 +85,7 @@ class StepperPanel final : public Panel {
   void draw_scene(const UiContext& c, render::DrawSink& sink) override {
     // The scene may be drawn before the view of this frame is filled in: then trust the last update.
     const bool current = c.sim.elements != nullptr ? session_->current_for(c.sim) : session_->was_current();
-    if (current) draw_stepper_scene(*session_, sink, c.state.overlays.lists, c.sim.layer);
+    if (current) draw_stepper_scene(*session_, sink, c.state.overlays.lists, c.sim.layer, c.state.overlays.ids);
   }
 
   bool handle_keys(UiContext& c) override {
