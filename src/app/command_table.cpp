@@ -138,7 +138,7 @@ CommandSpec gui_command() {
                              "took"},
          {"--screenshot", "OUT.png", "", "with --frames: the picture saved before exiting (without a display: where the headless "
                                          "rendering goes)"},
-         {"--size", "WxH", "", "the window's (and the screenshot's) size in pixels"}}},
+         {"--size", "WxH", "", "the window's (and the screenshot's) size in pixels; without it the window opens to the screen's work area, or at the size it last closed at (a scripted --frames run: 1280x720)"}}},
        {"your arrays (gui --input ELEMENTS.csv --arrays ARRAYS.json)", arrays},
        {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()},
        {kPluginOptionsTitle, plugin_options()}},
@@ -269,7 +269,7 @@ CommandSpec replay_command() {
           "memory for kept frames: a dump's frames are read as shown, and this many MB of them stay (a frame dropped is read again)"},
          {"--record", "OUT.nbsrec", "", "headless: writes the frames replayed (2D or 3D, with their pairs); a recording recorded again is the same file"},
          {"--screenshot", "OUT.png", "", "headless: renders the last frame off-screen, as headless --screenshot"},
-         {"--size", "WxH", "", "the window's or the screenshot's size in pixels"},
+         {"--size", "WxH", "", "the window's or the screenshot's size in pixels (without it the window opens to the screen's work area)"},
          gl_option()}},
        {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()},
        {kPluginOptionsTitle, plugin_options()}},
