@@ -219,8 +219,12 @@ void save_settings(ui::Settings& settings, GlView& view, const FrameLoop& loop, 
 int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Settings* settings, const std::string& stopped = "") {
   install_stop_handlers();  // before the window exists: a SIGTERM once it is shown closes it, never kills the process
   const std::string title = loop.source().has_scene() ? loop.source().scene().name : std::filesystem::path(session.scene_path).stem().string();
-  render::GlfwWindow window(o.view.width, o.view.height, "nbscope - " + title);
   const bool scripted = o.frames.has_value();
+  // --size, or a scripted picture's fixed size; else the last size, within the screen's work area.
+  const bool fixed = scripted || o.view.size_given;
+  const std::array<int, 2> size = fixed ? std::array<int, 2>{o.view.width, o.view.height}
+                                        : ui::opening_window_size(settings ? settings->window_size : std::nullopt, render::GlfwWindow::primary_work_area());
+  render::GlfwWindow window(size[0], size[1], "nbscope - " + title, !fixed && (settings == nullptr || !settings->window_size));
   window.set_vsync(!scripted);
   GlView view(window, window.handle(), o.view);
   if (loop.source().has_scene()) {
@@ -348,7 +352,10 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       fps_frames = 0;
     }
   }
-  if (settings != nullptr) save_settings(*settings, view, loop, session);
+  if (settings != nullptr) {
+    save_settings(*settings, view, loop, session);
+    settings->window_size = window.window_size();
+  }
   if (!world_error.empty()) throw Error(world_error);
   return failed ? 1 : 0;
 }

@@ -127,7 +127,7 @@ CommandSpec gui_command() {
       {"The window (default: the last scene and algorithm used, else assets/scenes/default.json and nbs; $NBSCOPE_DATA_DIR overrides "
        "where assets/ is found): Box2D bodies, the cell grid, the detector's lists, pairs and check results over them, ImGui panels. "
        "`nbscope` alone, or with options only (`nbscope --scene F`), is `nbscope gui`.",
-       "Keys: P play/pause, O single step, R restart, Home fit, 1..9 algorithm, Esc clear the selection, overlays B E G L M C K F I T H; "
+       "Keys: P play/pause, O single step, R restart, Home fit, 1..N algorithm (the Algorithm panel's numbers), Esc clear the selection, overlays B E G L M C K F I T H; "
        "the Timeline: , and . one frame back/forward (Shift: 10), J play backwards; the Violations panel: [ and ] previous/next, "
        "Shift+[ the first; the Stepper (a paused frame): -> and <- one operation (Shift: one phase), Space play/pause, PageDown and "
        "PageUp the operation after/before on the selected element (Shift: on the selected cell); a 3D frame: Up and Down the layer above/below (see Help in the menu bar). Mouse: left "
@@ -163,7 +163,7 @@ CommandSpec gui_command() {
                              "took", integer_value(1, 100'000'000)},
          {"--screenshot", "OUT.png", "", "with --frames: the picture saved before exiting (without a display: where the headless "
                                          "rendering goes)"},
-         {"--size", "WxH", "", "the window's (and the screenshot's) size in pixels"}},
+         {"--size", "WxH", "", "the window's (and the screenshot's) size in pixels; without it the window opens to the screen's work area, or at the size it last closed at (a scripted --frames run: 1280x720)"}},
                 {threads_option(), touching_option()}})},
        gui_input_group(),
        {"your arrays (gui --input ELEMENTS.csv --arrays ARRAYS.json)", arrays},
@@ -300,7 +300,7 @@ CommandSpec replay_command() {
           integer_value(0, 1'000'000)},
          {"--record", "OUT.nbsrec", "", "headless: writes the frames replayed (2D or 3D, with their pairs); a recording recorded again is the same file"},
          {"--screenshot", "OUT.png", "", "headless: renders the last frame off-screen, as headless --screenshot"},
-         {"--size", "WxH", "", "the window's or the screenshot's size in pixels"},
+         {"--size", "WxH", "", "the window's or the screenshot's size in pixels (without it the window opens to the screen's work area)"},
          gl_option()},
                 {threads_option(), touching_option()}})},
        dump_replay_group(),

@@ -59,6 +59,7 @@ void parse_view_options(Args& args, bool headless, ViewOptions& out) {
   };
   if (auto v = args.value("--size")) {
     parse_size("--size", *v, out.width, out.height);
+    out.size_given = true;
     drawing("--size", true);
   }
   if (headless) {

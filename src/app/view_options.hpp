@@ -22,8 +22,9 @@ struct ScalingShown {
 
 struct ViewOptions {
   std::optional<std::string> screenshot;  // --screenshot OUT.png
-  int width = 1280;                       // --size WxH
+  int width = 1280;                       // --size WxH (a scripted or headless picture's size without it)
   int height = 720;
+  bool size_given = false;                // --size was given: the window opens at it, whatever the screen
   std::string gl = "auto";                // --gl osmesa|egl|auto (headless only)
   std::string shader_dir;                 // --shader-dir DIR ("" = $NBSCOPE_SHADER_DIR or the built-in one)
   std::string overlays;                   // --overlays SPEC, e.g. "all,-lists" or "+lists" (see help)

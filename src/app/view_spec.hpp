@@ -62,7 +62,7 @@ inline void apply_overlay_spec(const std::string& spec, render::OverlayFlags& fl
       },
       [&](const std::string& name, bool on) {
         for (const auto& o : render::overlay_infos())
-          if (name == o.name) flags.*o.flag = on;
+          if (name == o.name) render::set_overlay(flags, o.flag, on);
       });
 }
 

@@ -143,8 +143,10 @@ void Stepper::seek_phase(std::size_t n) {
 }
 
 bool Stepper::next_phase() {
-  // The first phase whose event has not been applied yet.
-  auto it = std::lower_bound(phases_.begin(), phases_.end(), position_,
+  // The first phase whose event has not been applied yet; before anything, a phase marked at the
+  // very first event is where the stepper already stands (its mark changes no array).
+  const std::size_t from = position_ == 0 && !phases_.empty() && phases_.front().event == 0 ? 1 : position_;
+  auto it = std::lower_bound(phases_.begin(), phases_.end(), from,
                              [](const PhaseMark& p, std::size_t pos) { return p.event < pos; });
   if (it == phases_.end()) return false;
   seek(it->event + 1);

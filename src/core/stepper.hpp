@@ -104,7 +104,8 @@ class Stepper {
   [[nodiscard]] std::int64_t current_phase() const;
   // Moves onto the Phase event of phases()[n] (position = its event + 1).
   void seek_phase(std::size_t n);
-  // Moves onto the next phase's Phase event; false (unmoved) when there is none.
+  // Moves onto the next phase's Phase event; false (unmoved) when there is none. At position 0 a
+  // phase marked at event 0 counts as the current one: the first move goes past it (not one event).
   bool next_phase();
   // Moves onto the current phase's Phase event, or the previous phase's when already on one;
   // false (unmoved) when there is none.

@@ -34,7 +34,18 @@ void on_mouse_button(GLFWwindow* handle, int button, int action, int /*mods*/) {
 }
 }  // namespace
 
-GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
+std::optional<std::array<int, 2>> GlfwWindow::primary_work_area() {
+  glfwSetErrorCallback(&remember_error);
+  if (glfwInit() != GLFW_TRUE) return std::nullopt;
+  GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+  if (monitor == nullptr) return std::nullopt;
+  int x = 0, y = 0, w = 0, h = 0;
+  glfwGetMonitorWorkarea(monitor, &x, &y, &w, &h);
+  if (w <= 0 || h <= 0) return std::nullopt;
+  return std::array<int, 2>{w, h};
+}
+
+GlfwWindow::GlfwWindow(int width, int height, const std::string& title, bool maximized) {
   glfwSetErrorCallback(&remember_error);
   g_last_glfw_error.clear();
   if (glfwInit() != GLFW_TRUE) throw Error("window: cannot open: " + g_last_glfw_error);
@@ -42,6 +53,7 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+  glfwWindowHint(GLFW_MAXIMIZED, maximized ? GLFW_TRUE : GLFW_FALSE);
   window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (window_ == nullptr) {
     const std::string why = g_last_glfw_error;
@@ -77,6 +89,12 @@ int GlfwWindow::height() const {
   int w = 0, h = 0;
   glfwGetFramebufferSize(window_, &w, &h);
   return h;
+}
+
+std::array<int, 2> GlfwWindow::window_size() const {
+  std::array<int, 2> size{};
+  glfwGetWindowSize(window_, &size[0], &size[1]);
+  return size;
 }
 
 void GlfwWindow::make_current() { glfwMakeContextCurrent(window_); }

@@ -1,7 +1,9 @@
 // nbscope render: a GLFW window with a GL 3.3 core context. Only the windowed loop creates one;
 // the headless path never touches GLFW (glfwInit fails without a display).
 #pragma once
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,8 +25,12 @@ struct InputEvent {
 
 class GlfwWindow final : public GlContext {
  public:
-  // Opens a window of width x height pixels; Error("window: cannot open: <reason>") otherwise.
-  GlfwWindow(int width, int height, const std::string& title);
+  // Opens a window of width x height pixels (`maximized`: asks the window manager to maximise it,
+  // which leaves room for its frame); Error("window: cannot open: <reason>") otherwise.
+  GlfwWindow(int width, int height, const std::string& title, bool maximized = false);
+  // The primary monitor's work area (its size less task bars and docks), or nullopt when GLFW
+  // cannot start or knows no monitor. Starts GLFW if needed (the window's constructor starts it too).
+  [[nodiscard]] static std::optional<std::array<int, 2>> primary_work_area();
   ~GlfwWindow() override;
   GlfwWindow(const GlfwWindow&) = delete;
   GlfwWindow& operator=(const GlfwWindow&) = delete;
@@ -32,6 +38,8 @@ class GlfwWindow final : public GlContext {
   [[nodiscard]] const char* kind() const override { return "window"; }
   [[nodiscard]] int width() const override;
   [[nodiscard]] int height() const override;
+  // The window's size in screen coordinates (what a next start reopens at).
+  [[nodiscard]] std::array<int, 2> window_size() const;
   void make_current() override;
   void present() override;
 

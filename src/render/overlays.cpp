@@ -43,6 +43,11 @@ std::span<const OverlayInfo> overlay_infos() {
   return infos;
 }
 
+void set_overlay(OverlayFlags& flags, bool OverlayFlags::*flag, bool on) {
+  if (on && flag == &OverlayFlags::lists && !flags.lists) flags.ids = true;
+  flags.*flag = on;
+}
+
 // ---- picking helpers --------------------------------------------------------------------------
 
 ElementId element_at(const Elements& e, const Eigen::Vector2d& world) { return element_at(e, world, nullptr); }
@@ -390,7 +395,7 @@ void draw_scene(const OverlayScene& scene, const OverlayFlags& f, const Camera& 
   // A violation keeps its red in the layer view (its partner in another layer marked above).
   if (violations) draw_violations(e, s.layer != nullptr ? violations_here : s.checks->violations, sink);
   if (s.focus_pair) draw_focus_pair(s, v, labels, sink);
-  if (f.ids || f.lists) draw_ids(e, s.layer, view, ppm, s.selected, s.book_numbering, s.ids, labels, sink);
+  if (f.ids) draw_ids(e, s.layer, view, ppm, s.selected, s.book_numbering, s.ids, labels, sink);
   if (f.lists && s.lists != nullptr) draw_head_labels(s, v, labels, sink);
   if (s.drag) sink.line(Layer::Top, (*s.drag)[0], (*s.drag)[1], palette::kDragLine, 1.5f);
 }

@@ -61,7 +61,7 @@ struct OverlayFlags {
   bool pairs = true;        // detected pairs
   bool checks = true;       // confirmed pairs and violations
   bool broadphase = false;  // Box2D-only broadphase pairs (fat AABBs)
-  bool ids = false;         // element ids, inside the circle or beside it, never over another label (always with lists)
+  bool ids = false;         // element ids, inside the circle or beside it, never over another label
   bool trails = true;       // trails of selected elements
   bool flash = true;        // elements that changed cell this frame
 };
@@ -75,6 +75,9 @@ struct OverlayInfo {
 };
 // All overlays in panel order.
 std::span<const OverlayInfo> overlay_infos();
+// Sets one overlay; turning the lists on turns the ids on too (the lists read by them), and I alone
+// turns the ids off again: ids are drawn only while `ids` is on.
+void set_overlay(OverlayFlags& flags, bool OverlayFlags::*flag, bool on);
 
 // Which lists the lists overlay draws.
 enum class ListFilter : std::uint8_t {

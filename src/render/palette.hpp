@@ -48,6 +48,7 @@ inline constexpr Rgba kViolation{255, 50, 50};
 inline constexpr Rgba kViolationText{255, 120, 115};  // red text on the dark background (a problem's words)
 inline constexpr Rgba kSelection{255, 255, 255};
 inline constexpr Rgba kSelectionCell{255, 255, 255, 45};
+inline constexpr Rgba kOperation{255, 80, 230};  // the stepper's current element: never the selection's white
 inline constexpr Rgba kTrail{255, 140, 200, 200};
 inline constexpr Rgba kFlash{255, 255, 120, 200};
 inline constexpr Rgba kDragLine{255, 255, 255, 200};

@@ -54,7 +54,7 @@ float button_width(const char* label) { return ImGui::CalcTextSize(label, nullpt
 std::span<const char* const> help_lines() {
   static constexpr const char* kLines[] = {
       "P play/pause   O single step (held: repeats)   R restart   Home: fit the scene",
-      "1..9 algorithm   Esc: clear the selection   (R asks first when the run has frames or violations)",
+      "1..N the algorithm (the Algorithm panel's order)   Esc: clear the selection   (R asks first when the run has frames or violations)",
       "",
       "Timeline: , / . one frame back / forward (held: repeats; Shift: 10)   J play backwards",
       "          P on a past frame plays on through the kept frames; Resume here re-simulates",
@@ -386,8 +386,15 @@ void UiHost::handle_keys(UiContext& ctx) {
     ctx.state.selected_cell.reset();
   }
   toggle_overlays_by_key(ctx.state.overlays);
-  for (std::size_t i = 0; i < ctx.sim.algorithms.size() && i < 9; ++i)
-    if (pressed('1' + static_cast<int>(i))) ctx.requests.algorithm = ctx.sim.algorithms[i];
+  for (std::size_t i = 0; i < 9; ++i) {
+    if (!pressed('1' + static_cast<int>(i))) continue;
+    if (i < ctx.sim.algorithms.size()) {
+      ctx.requests.algorithm = ctx.sim.algorithms[i];
+      ctx.state.algorithm_key_note.clear();
+    } else {
+      ctx.state.algorithm_key_note = algorithm_key_note(i + 1, ctx.sim.algorithms.size());
+    }
+  }
 }
 
 void UiHost::handle_mouse(UiContext& ctx) {

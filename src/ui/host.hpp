@@ -1,7 +1,7 @@
 // nbscope ui: the host of all panels. Draws the menu bar and each open panel's window in its place
 // — a column at the left or right edge, the bottom dock between them, or floating — collapsing the
 // least important panels of a column that would run off the display; routes keys (P pause, O step,
-// R restart, Home, overlay letters, 1..9 algorithms) and scene mouse input (left: select and drag a
+// R restart, Home, overlay letters, 1..N algorithms) and scene mouse input (left: select and drag a
 // body, right-drag: pan, wheel: zoom about the cursor); reports the part of the display the panels
 // leave to the scene.
 //

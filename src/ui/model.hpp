@@ -175,6 +175,7 @@ struct UiState {
   std::optional<Eigen::Vector2d> mouse_world;
   bool dragging = false;
   std::string open_path;  // the Scenes panel's file field
+  std::string algorithm_key_note;  // a digit key with no algorithm: the Algorithm panel says so
 };
 
 // What the user asked for this frame; the app applies it after the UI is drawn.

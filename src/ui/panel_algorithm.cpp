@@ -1,4 +1,4 @@
-// The Algorithm panel: the detector is switched live, between two frames (keys 1..9).
+// The Algorithm panel: the detector is switched live, between two frames (keys 1..N, as numbered).
 #include <imgui.h>
 
 #include <algorithm>
@@ -35,10 +35,16 @@ class AlgorithmPanel final : public Panel {
       if (ImGui::RadioButton(label, name == s.algorithm) && name != s.algorithm) c.requests.algorithm = name;
     }
     ImGui::EndTable();
+    if (!c.state.algorithm_key_note.empty()) ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.4f, 1.0f), "%s", c.state.algorithm_key_note.c_str());
   }
 };
 
 }  // namespace
+
+std::string algorithm_key_note(std::size_t key, std::size_t offered) {
+  return "key " + std::to_string(key) + ": no algorithm " + std::to_string(key) + " here; keys 1.." + std::to_string(offered) +
+         " choose those above";
+}
 
 std::unique_ptr<Panel> make_algorithm_panel() { return std::make_unique<AlgorithmPanel>(); }
 

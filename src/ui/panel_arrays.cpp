@@ -139,10 +139,10 @@ const char* const* nbs_row_names(const StepperSession& s, const TracedArray& a) 
   return nullptr;
 }
 
-// A 2D array (or the slice of a 3D one at the focus's last index) as a matrix, as the book prints
-// C[ix][iy] (eq. 3.31): rows are the first index, columns the second. An array whose second index
-// only picks one of a few parallel arrays (the tree's child[m][0/1]) is shown the other way round,
-// one row per choice, so it reads like a next array.
+// A 2D array (or the slice of a 3D one at the focus's last index) as a matrix: rows are the first
+// index, columns the second, except that a cell matrix (screen's C[ix][iy], eq. 3.31) is drawn as the
+// scene shows its cells, ix across and iy upwards, and an array whose second index only picks one of a
+// few parallel arrays (the tree's child[m][0/1]) one row per choice, so it reads like a next array.
 void draw_matrix_array(const StepperSession& s, const Marks& m, int array) {
   const TracedArray& a = s.stepper().trace().arrays()[array];
   const std::vector<std::int32_t>& values = s.stepper().state()[array];
@@ -150,7 +150,8 @@ void draw_matrix_array(const StepperSession& s, const Marks& m, int array) {
   const std::int64_t focus = focus_index(s, m, array, a);
   const std::int64_t fz = focus % depth;
   const std::int64_t f[2] = {focus / depth / a.shape[1], (focus / depth) % a.shape[1]};
-  const int row_dim = index_is_selector(a, 1) ? 1 : 0, col_dim = 1 - row_dim;
+  const bool cells = is_cell_matrix(a, s.grid());
+  const int row_dim = cells || index_is_selector(a, 1) ? 1 : 0, col_dim = 1 - row_dim;
   const auto [r0, r1] = window_range(a.shape[row_dim], f[row_dim], kMaxRows);
   const auto [c0, c1] =
       window_range(a.shape[col_dim], f[col_dim], fit_columns(a.shape[col_dim], s.holds_elements(array) ? m.n : 0));
@@ -161,7 +162,7 @@ void draw_matrix_array(const StepperSession& s, const Marks& m, int array) {
     return;
   ImGui::TableNextRow();
   ImGui::TableSetColumnIndex(0);
-  ImGui::TextColored(kIndex, "%s%s%s", a.name.c_str(), row_dim == 1 ? "[..][r]" : "", c0 > 0 ? " ..." : "");
+  ImGui::TextColored(kIndex, "%s%s%s", a.name.c_str(), cells ? " iy\\ix" : row_dim == 1 ? "[..][r]" : "", c0 > 0 ? " ..." : "");
   for (std::int64_t c = c0; c < c1; ++c) {
     ImGui::TableSetColumnIndex(static_cast<int>(c - c0) + 1);
     ImGui::TextColored(kIndex, "%lld", static_cast<long long>(shown(c, book && !index_is_selector(a, col_dim))));
@@ -169,27 +170,29 @@ void draw_matrix_array(const StepperSession& s, const Marks& m, int array) {
   // NBS's x heads: the current row's lists over the row below's (book p.102); in 3D the y heads of
   // the layer and the layer below, and the x heads of the five rows the mask reaches (p.123).
   const char* const* row_names = nbs_row_names(s, a);
-  for (std::int64_t r = r0; r < r1; ++r) {
+  // A cell matrix's rows run downwards from the highest iy shown, as the scene's rows do.
+  const std::int64_t rows_before = cells ? a.shape[row_dim] - r1 : r0, rows_after = cells ? r0 : a.shape[row_dim] - r1;
+  for (std::int64_t i = 0; i < r1 - r0; ++i) {
+    const std::int64_t r = cells ? r1 - 1 - i : r0 + i;
     ImGui::TableNextRow();
     ImGui::TableSetColumnIndex(0);
     if (row_names != nullptr) {
       ImGui::TextColored(kIndex, "[%lld] %s", static_cast<long long>(r), row_names[r]);
     } else {
       ImGui::TextColored(kIndex, "[%lld]%s", static_cast<long long>(shown(r, book && !index_is_selector(a, row_dim))),
-                         r == r0 && r0 > 0 ? " ..." : "");
+                         i == 0 && rows_before > 0 ? " ..." : "");
     }
     for (std::int64_t c = c0; c < c1; ++c) {
       ImGui::TableSetColumnIndex(static_cast<int>(c - c0) + 1);
-      std::int64_t i[2];
-      i[row_dim] = r;
-      i[col_dim] = c;
-      const std::int64_t flat = (i[0] * a.shape[1] + i[1]) * depth + fz;
+      std::int64_t at[2];
+      at[row_dim] = r;
+      at[col_dim] = c;
+      const std::int64_t flat = (at[0] * a.shape[1] + at[1]) * depth + fz;
       value_cell(s, m, array, flat, values[static_cast<std::size_t>(flat)], false);
     }
   }
   ImGui::EndTable();
-  if (r1 < a.shape[row_dim])
-    ImGui::TextColored(kIndex, "... %s more", plural(static_cast<long long>(a.shape[row_dim] - r1), "row").c_str());
+  if (rows_after > 0) ImGui::TextColored(kIndex, "... %s more", plural(static_cast<long long>(rows_after), "row").c_str());
 }
 
 // Where the filtered element is: its cell, the lists holding it now, the next entries after it and

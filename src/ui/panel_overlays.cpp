@@ -1,10 +1,12 @@
 // The Overlays panel: one checkbox per overlay, each also toggled by its key, and the lists filter.
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <string>
 
+#include "core/detector.hpp"
 #include "ui/panels.hpp"
 
 namespace nbscope::ui {
@@ -22,7 +24,8 @@ class OverlaysPanel final : public Panel {
       ImGui::TableNextColumn();
       char label[48];
       std::snprintf(label, sizeof label, "%s (%c)", o.name, o.key);
-      ImGui::Checkbox(label, &(c.state.overlays.*o.flag));
+      bool on = c.state.overlays.*o.flag;
+      if (ImGui::Checkbox(label, &on)) render::set_overlay(c.state.overlays, o.flag, on);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", o.help);
     }
     ImGui::EndTable();
@@ -39,13 +42,19 @@ class OverlaysPanel final : public Panel {
             c.state.list_filter = i == 0 ? std::nullopt : std::optional(static_cast<render::ListFilter>(i - 1));
         ImGui::EndCombo();
       }
-      if (c.sim.lists != nullptr && c.sim.lists->empty())
-        ImGui::TextDisabled("%s builds no lists", c.sim.algorithm.c_str());
+      if (c.sim.lists != nullptr && c.sim.lists->empty()) ImGui::TextDisabled("%s", no_lists_note(c.sim.algorithm).c_str());
     }
   }
 };
 
 }  // namespace
+
+std::string no_lists_note(const std::string& algorithm) {
+  // Empty lists of a detector that builds them: the stepper stands before its first push.
+  const auto& infos = detector_infos();
+  const bool builds = std::any_of(infos.begin(), infos.end(), [&](const DetectorInfo& d) { return d.name == algorithm && d.has_lists; });
+  return algorithm + (builds ? " has built no lists yet" : " builds no lists");
+}
 
 std::unique_ptr<Panel> make_overlays_panel() { return std::make_unique<OverlaysPanel>(); }
 

@@ -83,7 +83,7 @@ class StepperPanel final : public Panel {
   }
 
   void draw_scene(const UiContext& c, render::DrawSink& sink) override {
-    if (session_->current_for(c.sim)) draw_stepper_scene(*session_, sink, c.state.overlays.lists, c.sim.layer);
+    if (session_->current_for(c.sim)) draw_stepper_scene(*session_, sink, c.state.overlays.lists, c.sim.layer, c.state.overlays.ids);
   }
 
   bool handle_keys(UiContext& c) override {

@@ -14,10 +14,16 @@ namespace nbscope::ui {
 std::unique_ptr<Panel> make_controls_panel();
 // Every scene in assets/scenes, and a field to open any scene file.
 std::unique_ptr<Panel> make_scenes_panel();
-// The detection algorithm, switched live (keys 1..9).
+// The detection algorithm, switched live (keys 1..N, N the algorithms offered, at most 9).
 std::unique_ptr<Panel> make_algorithm_panel();
+// What the Algorithm panel says when digit `key` names none of the `offered` algorithms:
+// "key 7: no algorithm 7 here; keys 1..6 choose those above".
+std::string algorithm_key_note(std::size_t key, std::size_t offered);
 // One checkbox per overlay, with its key.
 std::unique_ptr<Panel> make_overlays_panel();
+// What the Overlays panel says when the lists shown are empty: "nbs has built no lists yet" (the
+// stepper before its first push), "brute builds no lists".
+std::string no_lists_note(const std::string& algorithm);
 // N, cells, pairs, per-algorithm time and bytes, check status, FPS, frame time split.
 std::unique_ptr<Panel> make_stats_panel();
 // The selected element: position, cell, lists with their next entries, pairs.

@@ -62,6 +62,7 @@ Settings load_settings(const std::string& path, std::vector<std::string>& ignore
   s.speed = v.speed;
   s.history_mb = v.history_mb;
   s.side_view_yz = v.side_view_yz;
+  s.window_size = v.window_size;
   return s;
 }
 
@@ -83,10 +84,16 @@ bool restore_camera(const Settings& s, const std::string& scene, render::Camera&
   return true;
 }
 
+std::array<int, 2> opening_window_size(const std::optional<std::array<int, 2>>& saved, const std::optional<std::array<int, 2>>& work_area) {
+  if (!work_area || (*work_area)[0] < kMinWindowSide || (*work_area)[1] < kMinWindowSide) return saved.value_or(kFallbackWindowSize);
+  if (!saved) return *work_area;
+  return {std::min((*saved)[0], (*work_area)[0]), std::min((*saved)[1], (*work_area)[1])};
+}
+
 void save_settings(const std::string& path, const Settings& s) {
   if (path.empty()) throw Error("settings: no config directory (neither XDG_CONFIG_HOME nor HOME is set)");
   SettingsValues values{{}, s.panels, s.last_scene, s.algorithm, s.detector_libs, s.camera, s.speed, s.history_mb,
-                        s.side_view_yz};
+                        s.side_view_yz, s.window_size};
   for (const render::OverlayInfo& o : render::overlay_infos()) values.overlays[o.name] = s.overlays.*o.flag;
   const std::string text = settings_json_text(values);
   std::error_code ec;

@@ -28,7 +28,15 @@ struct Settings {
   double speed = 1.0;
   std::int64_t history_mb = 256;  // the Timeline's memory budget for kept frames
   bool side_view_yz = false;      // the Layers panel's side view shows y-z (UiState::side_view_yz)
+  std::optional<std::array<int, 2>> window_size;  // the window's size when it last closed
 };
+
+// The size a window opens at without --size when nothing better is known (no monitor, a tiny one).
+inline constexpr std::array<int, 2> kFallbackWindowSize{1280, 720};
+// The size an interactive window opens at without --size: the size it was closed at (`saved`), made
+// no larger than the monitor's work area; else the work area; else the saved size or
+// kFallbackWindowSize when the work area is unknown or under 320 px a side.
+std::array<int, 2> opening_window_size(const std::optional<std::array<int, 2>>& saved, const std::optional<std::array<int, 2>>& work_area);
 
 // $XDG_CONFIG_HOME/nbscope/settings.json, else $HOME/.config/nbscope/settings.json, else "".
 std::string settings_path();

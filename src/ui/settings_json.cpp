@@ -118,6 +118,17 @@ SettingsValues parse_settings_json(std::string_view text, std::span<const std::s
     if (it->is_boolean()) out.side_view_yz = it->get<bool>();
     else ignored.push_back(phrase("side_view_yz", *it, "not true or false"));
   }
+  if (const auto it = j.find("window_size"); it != j.end()) {
+    bool good = it->is_array() && it->size() == 2;
+    std::array<int, 2> size{};
+    for (std::size_t k = 0; good && k < 2; ++k) {
+      const auto& v = (*it)[k];
+      good = (v.is_number_unsigned() || v.is_number_integer()) && v.get<std::int64_t>() >= kMinWindowSide && v.get<std::int64_t>() <= 100000;
+      if (good) size[k] = static_cast<int>(v.get<std::int64_t>());
+    }
+    if (good) out.window_size = size;
+    else ignored.push_back(phrase("window_size", *it, "not [width, height] in pixels, each 320..100,000"));
+  }
   return out;
 }
 
@@ -133,6 +144,7 @@ std::string settings_json_text(const SettingsValues& values) {
   j["speed"] = values.speed;
   j["history_mb"] = values.history_mb;
   j["side_view_yz"] = values.side_view_yz;
+  if (values.window_size) j["window_size"] = *values.window_size;
   return j.dump(2);
 }
 

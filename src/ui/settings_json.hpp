@@ -28,7 +28,11 @@ struct SettingsValues {
   double speed = 1.0;                           // in (0, 100]
   std::int64_t history_mb = 256;                // in [0, 1,000,000]
   bool side_view_yz = false;                    // the Layers panel's side view shows y-z (else x-z)
+  std::optional<std::array<int, 2>> window_size;  // the window's size when it closed, each side in [kMinWindowSide, 100000]
 };
+
+// The smallest side of a window worth opening (a saved or work-area size is never made smaller).
+inline constexpr int kMinWindowSide = 320;
 
 // Parses `text`. Error (its what() a short phrase, no path) when the whole file is unusable: not
 // JSON, not an object, another "version", past kMaxSettingsBytes or the JSON limits. Otherwise each

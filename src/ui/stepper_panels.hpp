@@ -31,8 +31,9 @@ std::unique_ptr<Panel> make_pseudocode_panel(std::shared_ptr<StepperSession> ses
 std::unique_ptr<Panel> make_layers_panel(std::shared_ptr<StepperSession> session);
 // Draws the session's current event into the scene (used by the Stepper panel); with `lists_drawn`
 // the lists overlay already draws the list being written, highlighted, so its chain is left out;
-// with `layer` (a 3D frame's layer view) only what the view shows: the layer below fainter, the rest not.
+// with `layer` (a 3D frame's layer view) only what the view shows: the layer below fainter, the rest not;
+// with `ids_drawn` (the ids overlay on) the ringed elements get no id of their own.
 void draw_stepper_scene(const StepperSession& session, render::DrawSink& sink, bool lists_drawn = false,
-                        const LayerSlice* layer = nullptr);
+                        const LayerSlice* layer = nullptr, bool ids_drawn = false);
 
 }  // namespace nbscope::ui

@@ -1,5 +1,5 @@
 // The stepper's scene overlay: the current operation drawn over the bodies — the element it is
-// about ringed, the list being built (or walked) as an arrow chain growing arrow by arrow, the cell
+// about ringed (magenta: the selected element keeps its white ring), the list being built (or walked) as an arrow chain growing arrow by arrow, the cell
 // (or row) it works on outlined, and the pair being tested as a segment coloured by its result. On
 // a 3D frame's layer view, what lies in the layer below is drawn fainter and what lies further
 // away not at all (core/layers.hpp).
@@ -99,11 +99,11 @@ class SceneWriter {
 
 }  // namespace
 
-void draw_stepper_scene(const StepperSession& s, render::DrawSink& sink, bool lists_drawn, const LayerSlice* layer) {
+void draw_stepper_scene(const StepperSession& s, render::DrawSink& sink, bool lists_drawn, const LayerSlice* layer, bool ids_drawn) {
   const Stepper& st = s.stepper();
   const TraceEvent* e = st.current();
   if (e == nullptr) return;
-  SceneWriter w(s, sink, lists_drawn, layer);  // the lists overlay numbers every element
+  SceneWriter w(s, sink, ids_drawn, layer);
   const LoopVars v = st.loop_vars();
   const std::int32_t cell[3] = {v.ix, v.iy, v.iz};
   switch (e->op) {
@@ -112,14 +112,14 @@ void draw_stepper_scene(const StepperSession& s, render::DrawSink& sink, bool li
       const Rgba colour = SceneWriter::list_colour(e->label, v.heads_array, v.list, s);
       w.cell(cell, colour.with_alpha(35), colour);
       if (!lists_drawn) w.list(v.heads_array, v.list, colour);
-      w.ring(e->element, palette::kSelection, 3.0f);
+      w.ring(e->element, palette::kOperation, 3.0f);
       break;
     }
     case TraceOp::VisitCell:
     case TraceOp::TestPair: {
       w.cell(cell, palette::kMaskCell, palette::kMaskCentre.with_alpha(255));
       if (const auto l = s.list_of_cell(cell); l && !lists_drawn) w.list(l->heads, l->list, SceneWriter::list_colour(l->kind, l->heads, l->list, s));
-      w.ring(e->element, palette::kSelection, 3.0f);
+      w.ring(e->element, palette::kOperation, 3.0f);
       if (e->op == TraceOp::TestPair && w.valid(e->other) && w.valid(e->element)) {
         const Rgba colour = e->contact ? palette::kConfirmedPair : kNoContact;
         sink.line(Layer::Top, w.centre(e->element), w.centre(e->other), colour, e->contact ? 4.0f : 2.0f);
@@ -136,7 +136,7 @@ void draw_stepper_scene(const StepperSession& s, render::DrawSink& sink, bool li
       w.cell(e->cell, palette::kSelectionCell, palette::kTextDim);
       break;
     default:
-      w.ring(e->element, palette::kSelection, 3.0f);
+      w.ring(e->element, palette::kOperation, 3.0f);
       break;
   }
 }

@@ -245,6 +245,14 @@ bool index_is_selector(const TracedArray& array, std::size_t dim) {
   return array.name == "child" && array.shape[1] == 2;
 }
 
+bool is_cell_matrix(const TracedArray& array, const Grid* grid) {
+  if (grid == nullptr || array.shape.size() < 2 || array.shape.size() > 3 || index_is_selector(array, 0) || index_is_selector(array, 1))
+    return false;
+  for (std::size_t a = 0; a < array.shape.size(); ++a)
+    if (array.shape[a] != grid->n[a]) return false;
+  return true;
+}
+
 std::string entry_name(const TracedArray& array, std::int64_t flat, bool book) {
   std::string out = array.name;
   if (array.shape.size() <= 1) return out + "[" + std::to_string(shown(flat, book)) + "]";

@@ -179,6 +179,9 @@ class StepperSession {
 // True when index `dim` of `array` picks one of a few parallel arrays rather than a cell or an element
 // (NBS's B[0]/B[1] and A[0..4], the tree's child[m][0/1]): the book numbers those from 0 too.
 [[nodiscard]] bool index_is_selector(const TracedArray& array, std::size_t dim);
+// True when `array` is indexed by cells [ix][iy] (or [ix][iy][iz]) of `grid` (screen's C): the Arrays
+// panel draws it as the scene shows the cells, ix across and iy upwards.
+[[nodiscard]] bool is_cell_matrix(const TracedArray& array, const Grid* grid);
 // "C[4][6]" for flat index `flat` of `array` (indices in the chosen numbering).
 [[nodiscard]] std::string entry_name(const TracedArray& array, std::int64_t flat, bool book);
 // What the Arrays panel's element section says about element k's entries at the current position,

@@ -49,7 +49,8 @@ void draw_overlays(VerifyUiState& state, VerifyUiRequests& requests) {
   int column = 0;
   for (const Toggle& t : kToggles) {
     if (column++ % 3 != 0) ImGui::SameLine(column % 3 == 2 ? 130.0f : 250.0f);
-    ImGui::Checkbox(t.label, &(state.overlays.*t.flag));
+    bool on = state.overlays.*t.flag;
+    if (ImGui::Checkbox(t.label, &on)) render::set_overlay(state.overlays, t.flag, on);
   }
   if (ImGui::SmallButton("Home")) requests.camera_home = true;
   ImGui::SameLine();

@@ -32,7 +32,7 @@ void move_camera_by_mouse(render::Camera& camera, const Eigen::Vector2d& mouse, 
 void toggle_overlays_by_key(render::OverlayFlags& flags, std::string_view letters) {
   for (const render::OverlayInfo& o : render::overlay_infos())
     if ((letters.empty() || letters.find(o.key) != std::string_view::npos) && ImGui::IsKeyPressed(o.key, false))
-      flags.*o.flag = !(flags.*o.flag);
+      render::set_overlay(flags, o.flag, !(flags.*o.flag));
 }
 
 void InputReplay::add(std::span<const render::InputEvent> events) { queue_.insert(queue_.end(), events.begin(), events.end()); }

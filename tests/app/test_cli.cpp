@@ -207,7 +207,7 @@ TEST(Cli, HelpAndTheReadmeNameEveryKeyOfTheWindow) {
   const std::size_t keys_at = readme.find("Keys: P play/pause");
   ASSERT_NE(keys_at, std::string::npos);
   const std::string keys = one_line(readme.substr(keys_at, readme.find("\n\n", keys_at) - keys_at));
-  for (const char* key : {"P play", "O single step", "R restart", "Home", "1..9", "Esc", "J play backwards", "Shift+[", "->",
+  for (const char* key : {"P play", "O single step", "R restart", "Home", "1..N", "Esc", "J play backwards", "Shift+[", "->",
                           "<-", "Space", "PageUp", "PageDown", "Shift: one phase", "Shift: on the selected cell"}) {
     EXPECT_NE(help.find(key), std::string::npos) << key << " missing from gui --help";
     EXPECT_NE(keys.find(key), std::string::npos) << key << " missing from docs/window.md's key list";

@@ -221,5 +221,23 @@ TEST(GuiSettings, ACorruptFileIsIgnoredWhole) {
   expect_one_note(r, dir, {"ignored the whole file (not JSON: ", "; the defaults are used"});
 }
 
+// ---- the window's size ------------------------------------------------------------------------------
+
+// Without --size the window opens to the screen's work area (the test's Xvfb: 1280x720) and the size
+// it closed at is saved; a saved size opens again (within the work area); --size wins over both.
+TEST(GuiSettings, TheWindowOpensToTheWorkAreaAndRemembersItsSize) {
+  NBSCOPE_SKIP_WITHOUT_XVFB();
+  const std::string dir = scratch_dir("gui_settings_window_size");
+  const auto size_saved = [&] { return nlohmann::json::parse(testcli::read_text(dir + "/nbscope/settings.json")).at("window_size"); };
+  expect_closed_by_sigterm(window_with_settings(dir, R"({"version": 1})"));
+  EXPECT_EQ(size_saved(), nlohmann::json::parse("[1280, 720]"));
+  expect_closed_by_sigterm(window_with_settings(dir, R"({"version": 1, "window_size": [900, 600]})"));
+  EXPECT_EQ(size_saved(), nlohmann::json::parse("[900, 600]"));
+  expect_closed_by_sigterm(window_with_settings(dir, R"({"version": 1, "window_size": [4000, 600]})"));
+  EXPECT_EQ(size_saved(), nlohmann::json::parse("[1280, 600]")) << "a saved size larger than the screen";
+  expect_closed_by_sigterm(window_with_settings(dir, R"({"version": 1, "window_size": [900, 600]})", " --size 700x450"));
+  EXPECT_EQ(size_saved(), nlohmann::json::parse("[700, 450]"));
+}
+
 }  // namespace
 }  // namespace nbscope

@@ -239,7 +239,15 @@ TEST(Stepper, PhaseJumpsLandOnEveryPhaseEventInOrder) {
     Stepper s;
     s.load(run.log);
     ASSERT_EQ(s.phases().size(), expected.size());
-    for (std::size_t i = 0; i < expected.size(); ++i) {
+    // Before anything, a phase marked at the first event is the one the stepper stands in: the first
+    // jump goes to the phase after it (it moved one event, which looked like a single step).
+    const std::size_t first = !expected.empty() && expected.front() == 0 ? 1 : 0;
+    if (first == 1) {
+      ASSERT_TRUE(s.next_phase());
+      ASSERT_EQ(s.position(), expected.size() > 1 ? expected[1] + 1 : std::size_t{0}) << "the first jump from 0";
+      s.seek(expected[0] + 1);
+    }
+    for (std::size_t i = first; i < expected.size(); ++i) {
       ASSERT_TRUE(s.next_phase());
       ASSERT_EQ(s.position(), expected[i] + 1);
       ASSERT_EQ(s.current()->op, TraceOp::Phase);

@@ -148,7 +148,7 @@ struct Small {
 TEST(Overlays, ListArrowsFollowTheNextArrayAndVanishWhenTheOverlayIsOff) {
   Small t;
   OverlayFlags on;
-  on.lists = true;
+  set_overlay(on, &OverlayFlags::lists, true);  // L: the lists, and their ids with them
   on.grid = false;  // its axis labels are numbers too
   Recorder rec;
   draw_scene(t.scene(), on, t.camera, rec);
@@ -192,6 +192,30 @@ TEST(Overlays, ListArrowsFollowTheNextArrayAndVanishWhenTheOverlayIsOff) {
   draw_scene(t.scene(), off, t.camera, none);
   EXPECT_TRUE(none.arrows.empty());
   EXPECT_EQ(std::find(none.texts.begin(), none.texts.end(), "4"), none.texts.end());
+}
+
+// I alone draws the ids: L turns them on with the lists (the checkbox shows it), and I turns them
+// off again while the lists stay (a student pressing I saw nothing change).
+TEST(Overlays, IdsAreDrawnOnlyWhileTheirOverlayIsOn) {
+  Small t;
+  OverlayFlags f;
+  f.grid = false;  // its axis labels are numbers too
+  ASSERT_FALSE(f.ids);
+  set_overlay(f, &OverlayFlags::lists, true);
+  EXPECT_TRUE(f.ids) << "turning the lists on turns their ids on";
+  set_overlay(f, &OverlayFlags::ids, false);
+  EXPECT_TRUE(f.lists);
+  Recorder rec;
+  draw_scene(t.scene(), f, t.camera, rec);
+  EXPECT_FALSE(rec.arrows.empty()) << "the lists are drawn";
+  for (const char* id : {"0", "1", "2", "3", "4"}) EXPECT_EQ(std::count(rec.texts.begin(), rec.texts.end(), id), 0) << "id " << id;
+  // The lists turned off and on again bring the ids back; already on, they stay as they are.
+  set_overlay(f, &OverlayFlags::lists, false);
+  set_overlay(f, &OverlayFlags::lists, true);
+  EXPECT_TRUE(f.ids);
+  set_overlay(f, &OverlayFlags::ids, false);
+  set_overlay(f, &OverlayFlags::lists, true);
+  EXPECT_FALSE(f.ids);
 }
 
 TEST(Overlays, GridDrawsOnlyTheCellsInView) {

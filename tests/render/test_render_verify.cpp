@@ -70,7 +70,7 @@ Drawn draw(const PlantedBug& p, bool with_marks, int selected = 0, OverlayFlags 
   s.lists = &d.lists;
   s.book_numbering = p.run.user.base == 1;
   s.verify = with_marks ? &d.marks : nullptr;
-  flags.lists = true;
+  set_overlay(flags, &OverlayFlags::lists, true);  // and their ids with them, as the verify view opens
   draw_scene(s, flags, p.camera, d.rec);
   return d;
 }

@@ -81,7 +81,11 @@ struct BookFrame {
 struct Recorder final : render::DrawSink {
   int circles = 0, rects = 0, lines = 0, arrows = 0;
   std::vector<std::string> texts;
-  void circle(render::Layer, render::Vec2, float, render::Rgba, render::Rgba, float, float) override { ++circles; }
+  std::vector<render::Rgba> outlines;  // each circle's outline colour
+  void circle(render::Layer, render::Vec2, float, render::Rgba, render::Rgba outline, float, float) override {
+    ++circles;
+    outlines.push_back(outline);
+  }
   void polygon(render::Layer, std::span<const render::Vec2>, render::Rgba, render::Rgba) override {}
   void line(render::Layer, render::Vec2, render::Vec2, render::Rgba, float) override { ++lines; }
   void arrow(render::Layer, render::Vec2, render::Vec2, render::Rgba, float) override { ++arrows; }

@@ -156,5 +156,32 @@ TEST(Settings, SavedDetectorLibrariesAreLoadedBeforeTheAlgorithmIsLookedUp) {
   EXPECT_EQ(s.detector_libs, (std::vector<std::string>{"/here.so"}));
 }
 
+// The window's size when it closed is kept; a size it could not open at is named and ignored.
+TEST(SettingsJson, TheWindowSizeRoundTripsAndABadOneIsNamed) {
+  std::vector<std::string> ignored;
+  SettingsValues v;
+  v.window_size = std::array<int, 2>{1500, 930};
+  EXPECT_EQ(parse(settings_json_text(v), ignored).window_size, v.window_size);
+  EXPECT_TRUE(ignored.empty());
+  for (const char* bad : {R"([100, 900])", R"([1500])", R"("big")", R"([1500.5, 900])", R"([-1, 900])"}) {
+    ignored.clear();
+    EXPECT_FALSE(parse(std::string(R"({"version": 1, "window_size": )") + bad + "}", ignored).window_size) << bad;
+    EXPECT_TRUE(mentions(ignored, "window_size")) << bad;
+  }
+}
+
+// Without --size the window opens at the size it closed at, within the work area; else the work
+// area; with no monitor known (or a tiny one) at the saved size, else 1280x720.
+TEST(Settings, TheWindowOpensToTheWorkAreaAndRemembersItsSize) {
+  using Size = std::optional<std::array<int, 2>>;
+  const Size screen = std::array<int, 2>{1600, 1000};
+  EXPECT_EQ(opening_window_size(std::nullopt, screen), (std::array<int, 2>{1600, 1000}));
+  EXPECT_EQ(opening_window_size(std::array<int, 2>{1400, 800}, screen), (std::array<int, 2>{1400, 800}));
+  EXPECT_EQ(opening_window_size(std::array<int, 2>{2400, 800}, screen), (std::array<int, 2>{1600, 800})) << "another, smaller screen";
+  EXPECT_EQ(opening_window_size(std::nullopt, std::nullopt), kFallbackWindowSize);
+  EXPECT_EQ(opening_window_size(std::nullopt, std::array<int, 2>{200, 100}), kFallbackWindowSize);
+  EXPECT_EQ(opening_window_size(std::array<int, 2>{1400, 800}, std::nullopt), (std::array<int, 2>{1400, 800}));
+}
+
 }  // namespace
 }  // namespace nbscope::ui

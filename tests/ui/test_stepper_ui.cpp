@@ -6,11 +6,13 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 
 #include "core/detector.hpp"
 #include "core/traced_lists.hpp"
+#include "render/palette.hpp"
 #include "ui/host.hpp"
 #include "ui/panels.hpp"
 #include "ui/stepper_panels.hpp"
@@ -210,7 +212,7 @@ using testui::run_frame;
 TEST(HelpMenu, NamesEveryKeyOfTheHostAndTheStepper) {
   std::string text;
   for (const char* line : help_lines()) text += std::string(line) + "\n";
-  for (const char* key : {"P play", "O single step", "R restart", "Home", "1..9", "Esc", "J play backwards", "Shift+[", "->",
+  for (const char* key : {"P play", "O single step", "R restart", "Home", "1..N", "Esc", "J play backwards", "Shift+[", "->",
                           "<-", "Shift+->", "Space", "PageUp", "PageDown", "Shift+PageUp", ",", ".", "@overlays"})
     EXPECT_NE(text.find(key), std::string::npos) << key;
 }
@@ -300,6 +302,67 @@ TEST(StepperPanels, KeysStepPhaseAndPlayAndTheSceneShowsTheOperation) {
   run_frame(host, f);
   run_frame(host, f);
   EXPECT_GT(st.position(), 20u);
+}
+
+// The current operation's element wears a ring of its own colour, never the selection's white, so
+// the selected element and the element being pushed or tested are told apart.
+TEST(StepperScene, TheCurrentElementsRingIsNotTheSelections) {
+  BookFrame f;
+  StepperSession s;
+  s.update(f.traced(), 0, 1);
+  ASSERT_TRUE(s.has_capture()) << s.message();
+  for (const std::size_t op : {std::size_t{5}, std::size_t{20}}) {  // a push, a test
+    s.stepper().seek(op);
+    Recorder r;
+    draw_stepper_scene(s, r);
+    const auto count = [&](render::Rgba c) { return std::count(r.outlines.begin(), r.outlines.end(), c); };
+    EXPECT_GE(count(render::palette::kOperation), 1) << "operation " << op;
+    EXPECT_EQ(count(render::palette::kSelection), 0) << "operation " << op << ": the selection's white ring";
+  }
+}
+
+// Screen's C[ix][iy] is drawn as the scene shows its cells (ix across, iy upwards); NBS's B[2][nx]
+// keeps the current row over the row below, and the tree's child[m][2] one row per child.
+TEST(StepperArrays, OnlyACellMatrixIsDrawnAsTheScene) {
+  BookFrame f;
+  f.sim.algorithm = "screen";
+  StepperSession s;
+  s.update(f.traced(), 0, 1);
+  ASSERT_TRUE(s.has_capture()) << s.message();
+  const TracedArray& c = s.stepper().trace().arrays()[0];
+  ASSERT_EQ(c.name, "C");
+  EXPECT_TRUE(is_cell_matrix(c, s.grid()));
+  EXPECT_FALSE(is_cell_matrix(c, nullptr));
+  EXPECT_FALSE(is_cell_matrix(TracedArray{"B", {2, 10}, {}}, s.grid()));
+  EXPECT_FALSE(is_cell_matrix(TracedArray{"child", {10, 2}, {}}, s.grid()));
+  EXPECT_FALSE(is_cell_matrix(TracedArray{"E", {9}, {}}, s.grid()));
+}
+
+// Digits past the algorithms offered say so in the Algorithm panel (they did nothing, silently).
+TEST(AlgorithmKeys, ADigitWithNoAlgorithmSaysSo) {
+  ImGuiScope scope;
+  UiHost host;
+  BookFrame f;
+  f.sim.algorithms = {"brute", "tree", "sort", "screen", "nbs", "box2d"};
+  testui::press('7');
+  testui::run_frame(host, f);
+  testui::release();
+  EXPECT_FALSE(f.requests.algorithm.has_value());
+  EXPECT_EQ(f.state.algorithm_key_note, "key 7: no algorithm 7 here; keys 1..6 choose those above");
+  testui::run_frame(host, f);
+  testui::press('2');
+  testui::run_frame(host, f);
+  testui::release();
+  EXPECT_EQ(f.requests.algorithm, std::optional<std::string>("tree"));
+  EXPECT_TRUE(f.state.algorithm_key_note.empty());
+}
+
+// At operation 0 a detector that builds lists has built none yet; one without lists builds none.
+TEST(OverlaysPanel, EmptyListsSayWhetherTheyAreToComeOrNeverAre) {
+  EXPECT_EQ(no_lists_note("nbs"), "nbs has built no lists yet");
+  EXPECT_EQ(no_lists_note("screen"), "screen has built no lists yet");
+  EXPECT_EQ(no_lists_note("brute"), "brute builds no lists");
+  EXPECT_EQ(no_lists_note("recorded"), "recorded builds no lists");
 }
 
 }  // namespace
