@@ -131,8 +131,8 @@ TEST(StepperScene3d, LeavesOutWhatTheLayerViewHides) {
   Recorder flat, layered;
   draw_stepper_scene(s, flat, true);
   draw_stepper_scene(s, layered, true, &f.slice);
-  EXPECT_GT(flat.circles, 0) << "without a layer the element is ringed";
-  EXPECT_EQ(layered.circles, 0);
+  EXPECT_GT(flat.circles.size(), 0u) << "without a layer the element is ringed";
+  EXPECT_EQ(layered.circles.size(), 0u);
   EXPECT_TRUE(layered.texts.empty());
 }
 
