@@ -12,8 +12,6 @@
 #include "core/error.hpp"
 #include "io/scene_json.hpp"
 #include "physics/box2d_detector.hpp"
-#include "physics/kept_frame.hpp"
-#include "physics/world.hpp"
 
 namespace nbscope {
 namespace {
@@ -74,26 +72,6 @@ TEST(History, AKeptFrameIsTheLiveFrameAgain) {
       expect_same_frame(live[k], facts_of(loop));
     }
   }
-}
-
-// The kept frame finds G and T from its own poses (tight AABBs, shapes) as the live world does from its bodies.
-TEST(History, KeptGroundTruthEqualsTheWorldsQuery) {
-  Scene s = read_scene_json(scene("mixed-sizes"));
-  PhysicsWorld world(s);
-  for (int k = 0; k < 40; ++k) world.step();
-  auto state = std::make_shared<WorldState>();
-  world.capture(*state);
-  KeptWorldFrame kept(world, state);
-  PairList g1, t1, g2, t2, f1, f2;
-  world.ground_truth(g1, t1);
-  kept.ground_truth(g2, t2);
-  EXPECT_FALSE(g1.empty());
-  EXPECT_EQ(g1, g2);
-  EXPECT_EQ(t1, t2);
-  world.contact_pairs(f1);
-  kept.contact_pairs(f2);
-  EXPECT_EQ(f1, f2);
-  EXPECT_EQ(kept.body_count(), world.body_count());
 }
 
 // Resuming from a past frame re-simulates the scene to it and continues exactly as the original run.

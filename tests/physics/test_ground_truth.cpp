@@ -1,97 +1,28 @@
-// The check's fast set computations against the straightforward ones: the AABB-pair grid against
-// every pair tested with b2TestOverlap, the linear pair sort against std::sort, and a world's G, T,
-// F and A-in-F scope against world.QueryAABB per fixture, a sorted walk of the contact list and
-// Box2D's filters read from the bodies, on random scenes with circles, boxes and polygons.
+// The check's fast set computations against the straightforward ones: the linear pair sort against
+// std::sort, and a world's G, T, F and A-in-F scope against world.QueryAABB per fixture, a sorted
+// walk of the contact list and Box2D's filters read from the bodies, on random scenes with circles,
+// boxes and polygons (the AABB-pair grid behind G: test_aabb_pairs.cpp).
 #include <gtest/gtest.h>
 
 #include <box2d/box2d.h>
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <random>
 
-#include "io/scene_json.hpp"
-#include "physics/aabb_pairs.hpp"
 #include "physics/kept_frame.hpp"
 #include "physics/world.hpp"
+#include "support/physics_context.hpp"
 
 namespace nbscope {
 namespace {
 
-PairList all_overlapping(const std::vector<b2AABB>& boxes) {
-  PairList out;
-  for (std::size_t i = 0; i < boxes.size(); ++i)
-    for (std::size_t j = i + 1; j < boxes.size(); ++j)
-      if (b2TestOverlap(boxes[i], boxes[j])) out.push_back({static_cast<ElementId>(i), static_cast<ElementId>(j)});
-  return out;
-}
-
-b2AABB box(float x0, float y0, float x1, float y1) {
-  b2AABB b;
-  b.lowerBound.Set(x0, y0);
-  b.upperBound.Set(x1, y1);
-  return b;
-}
-
-// ---- the AABB-pair grid ---------------------------------------------------------------------
-
-TEST(AabbPairFinder, EqualsEveryPairTestedOnRandomBoxes) {
-  AabbPairFinder finder;
-  PairList found;
-  for (std::uint32_t seed = 0; seed < 60; ++seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> pos(-20, 20), size(0, 1.5f), unit(0, 1);
-    const std::size_t n = 1 + seed * 7 % 400;
-    std::vector<b2AABB> boxes;
-    for (std::size_t k = 0; k < n; ++k) {
-      const float u = unit(rng);
-      if (u < 0.3f) {
-        // On an integer lattice: unit boxes that touch exactly, edge to edge and corner to corner.
-        const float x = std::round(pos(rng) / 4), y = std::round(pos(rng) / 4);
-        boxes.push_back(box(x, y, x + 1, y + 1));
-      } else if (u < 0.35f) {
-        const float x = pos(rng), y = pos(rng);
-        boxes.push_back(box(x, y, x, y));  // a point
-      } else if (u < 0.38f) {
-        const float x = pos(rng), y = pos(rng);
-        boxes.push_back(box(x - 15 * size(rng), y, x + 15 * size(rng), y + 0.5f));  // a long wall
-      } else if (u < 0.40f && !boxes.empty()) {
-        boxes.push_back(boxes[static_cast<std::size_t>(rng()) % boxes.size()]);  // a duplicate
-      } else {
-        const float x = pos(rng), y = pos(rng);
-        boxes.push_back(box(x, y, x + size(rng), y + size(rng)));
-      }
-    }
-    finder.find(boxes.data(), boxes.size(), found);
-    ASSERT_EQ(found, all_overlapping(boxes)) << "seed " << seed;
-  }
-}
-
-TEST(AabbPairFinder, HandlesTheOddCases) {
-  AabbPairFinder finder;
-  PairList found;
-  finder.find(nullptr, 0, found);
-  EXPECT_TRUE(found.empty());
-  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
-  const std::vector<std::vector<b2AABB>> cases = {
-      {box(0, 0, 1, 1)},
-      {box(0, 0, 1, 1), box(1, 1, 2, 2)},                      // corners touching
-      {box(0, 0, 0, 0), box(0, 0, 0, 0), box(0, 0, 0, 0)},     // three equal points
-      {box(0, 0, 1, 1), box(nan, 0, 1, 1), box(5, 5, 6, 6)},   // b2TestOverlap calls a NaN box overlapping
-      {box(0, 0, 1, 1), box(-inf, -1, inf, 0.5f), box(3, 3, 4, 4)},
-      {box(0, 0, 1, 1), box(2, 2, 1.5f, 3), box(1.2f, 2.5f, 3, 4)},  // an inverted box
-      {box(-1e30f, -1e30f, -1e30f, -1e30f), box(0, 0, 1, 1), box(1e30f, 1e30f, 1e30f, 1e30f), box(0.5f, 0.5f, 2, 2)},
-      {box(-1e6f, 0, -1e6f + 0.5f, 0.5f), box(-1e6f + 0.5f, 0.5f, -1e6f + 1, 1), box(1e6f, 0, 1e6f + 1, 1)},
-  };
-  for (std::size_t c = 0; c < cases.size(); ++c) {
-    finder.find(cases[c].data(), cases[c].size(), found);
-    EXPECT_EQ(found, all_overlapping(cases[c])) << "case " << c;
-  }
-}
+using testphysics::fixtures_of;
+using testphysics::PhysicsTestContext;
+using testphysics::tight_aabb;
 
 // ---- the linear pair sort --------------------------------------------------------------------
 
+// The linear pair sort gives std::sort's order, duplicates and out-of-range ids included.
 TEST(PairSorter, SortsAsStdSort) {
   PairSorter sorter;
   for (std::uint32_t seed = 0; seed < 20; ++seed) {
@@ -134,20 +65,6 @@ std::string jumble(int seed) {
      "body": {"shape": "polygon", "vertices": [[-0.3, -0.3], [0.4, -0.2], [0, 0.5]]}}]})";
 }
 
-std::vector<const b2Fixture*> fixtures_of(const PhysicsWorld& w) {
-  std::vector<const b2Fixture*> out(static_cast<std::size_t>(w.elements().size()));
-  for (const b2Body* b = w.world().GetBodyList(); b != nullptr; b = b->GetNext())
-    for (const b2Fixture* f = b->GetFixtureList(); f != nullptr; f = f->GetNext())
-      out[static_cast<std::size_t>(const_cast<b2Fixture*>(f)->GetUserData().pointer)] = f;
-  return out;
-}
-
-b2AABB tight(const b2Fixture* f) {
-  b2AABB b;
-  f->GetShape()->ComputeAABB(&b, f->GetBody()->GetTransform(), 0);
-  return b;
-}
-
 // G and T the straightforward way: world.QueryAABB with each fixture's tight AABB, keeping the
 // tight overlaps, then each i's partners sorted.
 void ground_truth_by_query(const PhysicsWorld& w, PairList& g, PairList& t) {
@@ -164,13 +81,13 @@ void ground_truth_by_query(const PhysicsWorld& w, PairList& g, PairList& t) {
   t.clear();
   for (std::size_t i = 0; i < fixtures.size(); ++i) {
     query.hits.clear();
-    const b2AABB bi = tight(fixtures[i]);
+    const b2AABB bi = tight_aabb(fixtures[i]);
     w.world().QueryAABB(&query, bi);
     std::sort(query.hits.begin(), query.hits.end());
     for (const ElementId j : query.hits) {
       const b2Fixture* a = fixtures[i];
       const b2Fixture* b = fixtures[static_cast<std::size_t>(j)];
-      if (j <= static_cast<ElementId>(i) || !b2TestOverlap(bi, tight(b))) continue;
+      if (j <= static_cast<ElementId>(i) || !b2TestOverlap(bi, tight_aabb(b))) continue;
       const Pair p{static_cast<ElementId>(i), j};
       g.push_back(p);
       bool touch = false;
@@ -209,7 +126,7 @@ PairList scope_by_bodies(const PhysicsWorld& w, const PairList& pairs, Box2dScop
     } else if (filter != nullptr && !filter->ShouldCollide(fa, fb)) {
       ++why.fixture_filter;
     } else if (!(fa->GetType() == b2Shape::e_circle && fb->GetType() == b2Shape::e_circle) &&
-               !b2TestOverlap(tight(fa), tight(fb))) {
+               !b2TestOverlap(tight_aabb(fa), tight_aabb(fb))) {
       ++why.beyond_aabb;
     } else {
       out.push_back(p);
@@ -218,9 +135,11 @@ PairList scope_by_bodies(const PhysicsWorld& w, const PairList& pairs, Box2dScop
   return out;
 }
 
+// G, T, F and the scope (with its reasons) equal the straightforward way's on random worlds, drags too.
 TEST(WorldSets, EqualTheStraightforwardWayOnRandomWorlds) {
   for (int seed = 1; seed <= 6; ++seed) {
-    PhysicsWorld w(parse_scene_json(jumble(seed), "jumble.json"));
+    PhysicsTestContext c(jumble(seed));
+    PhysicsWorld& w = c.world();
     for (int frame = 0; frame < 40; ++frame) {
       if (frame == 10) (void)w.begin_drag(w.elements().x[30], w.elements().y[30]);  // a mouse joint: the joint path
       w.step();
@@ -264,9 +183,7 @@ TEST(WorldSets, EqualTheStraightforwardWayOnRandomWorlds) {
       }
 
       // A kept frame rebuilt from the history finds the same sets.
-      auto state = std::make_shared<WorldState>();
-      w.capture(*state);
-      const KeptWorldFrame kept(w, state);
+      const KeptWorldFrame kept(w, c.capture());
       PairList g1, t1;
       kept.ground_truth(g1, t1);
       EXPECT_EQ(g1, g);

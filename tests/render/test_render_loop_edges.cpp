@@ -12,31 +12,12 @@
 #include "core/traced_lists.hpp"
 #include "render/overlays.hpp"
 #include "support/generators.hpp"
+#include "support/draw_recorder.hpp"
 
 namespace nbscope::render {
 namespace {
 
-// Every call with what tests here look at.
-struct Recorder final : DrawSink {
-  struct Item {
-    Vec2 a, b;
-    Rgba colour;
-    std::string text;
-  };
-  std::vector<Item> arrows, lines, rects, circles, texts;
-  void circle(Layer, Vec2 c, float, Rgba fill, Rgba, float, float) override { circles.push_back({c, c, fill, {}}); }
-  void polygon(Layer, std::span<const Vec2>, Rgba, Rgba) override {}
-  void line(Layer, Vec2 a, Vec2 b, Rgba c, float) override { lines.push_back({a, b, c, {}}); }
-  void arrow(Layer, Vec2 a, Vec2 b, Rgba c, float) override { arrows.push_back({a, b, c, {}}); }
-  void rect(Layer, Vec2 a, Vec2 b, Rgba c) override { rects.push_back({a, b, c, {}}); }
-  void text(Vec2 at, std::string_view t, Rgba c) override { texts.push_back({at, at, c, std::string(t)}); }
-  [[nodiscard]] long count(const std::vector<Item>& items, Rgba c) const {
-    return std::count_if(items.begin(), items.end(), [&](const Item& i) { return i.colour == c; });
-  }
-  [[nodiscard]] bool has_text(const std::string& part) const {
-    return std::any_of(texts.begin(), texts.end(), [&](const Item& t) { return t.text.find(part) != std::string::npos; });
-  }
-};
+using testdraw::Recorder;  // support/draw_recorder.hpp
 
 // A detection's lists, pairs and grid of `e`, as the window's trace gives them.
 struct Traced {
@@ -123,19 +104,19 @@ TEST(ListsOverlay, ARailLongerThanFitsShowsItsNumberedEndsAndHowManyAreBetween) 
   draw_scene(s, f, camera, rec);
   std::vector<float> slots;
   for (const auto& c : rec.circles)
-    if (c.colour == palette::kYList) slots.push_back(c.a.x());
+    if (c.fill == palette::kYList) slots.push_back(c.centre.x());
   std::sort(slots.begin(), slots.end());
   ASSERT_GE(slots.size(), 4u);
   EXPECT_LT(slots.size(), static_cast<std::size_t>(n)) << "every slot drawn: a solid band";
   const double ppm = camera.pixels_per_metre();
   for (std::size_t i = 1; i < slots.size(); ++i) EXPECT_GE((slots[i] - slots[i - 1]) * ppm, 9.9) << "slots run together";
   const std::string more = "... " + std::to_string(n - static_cast<int>(slots.size())) + " more ...";
-  EXPECT_TRUE(rec.has_text(more)) << "no '" << more << "'";
+  EXPECT_TRUE(rec.has_text_containing(more)) << "no '" << more << "'";
   // Its ends are numbered: the list's first and last elements (the y-list runs from the highest id down).
   const auto y_list = std::find_if(t.lists.begin(), t.lists.end(), [](const TracedList& l) { return l.kind == "y-list"; });
   ASSERT_NE(y_list, t.lists.end());
-  EXPECT_TRUE(rec.has_text(std::to_string(y_list->chain.front())));
-  EXPECT_TRUE(rec.has_text(std::to_string(y_list->chain.back())));
+  EXPECT_TRUE(rec.has_text_containing(std::to_string(y_list->chain.front())));
+  EXPECT_TRUE(rec.has_text_containing(std::to_string(y_list->chain.back())));
 }
 
 // large.json's shape: 20,000 elements in a wide box whose cells are a few pixels at the fitted view.
@@ -155,7 +136,7 @@ TEST(GridOverview, KeepsAxisNumbersAtItsMajorLines) {
   OverlayFlags f;
   Recorder rec;
   draw_scene(o.t.scene(), f, o.camera, rec);
-  ASSERT_TRUE(rec.has_text("lines every ")) << "the title names the major lines' step";
+  ASSERT_TRUE(rec.has_text_containing("lines every ")) << "the title names the major lines' step";
   std::string title;
   for (const auto& t : rec.texts)
     if (t.text.find("lines every ") != std::string::npos) title = t.text;
@@ -167,8 +148,8 @@ TEST(GridOverview, KeepsAxisNumbersAtItsMajorLines) {
     if (!(t.colour == palette::kTextDim) || t.text.empty() || !std::all_of(t.text.begin(), t.text.end(), ::isdigit)) continue;
     const int k = std::stoi(t.text);
     EXPECT_EQ(k % step, 0) << t.text << " is not at a major line";
-    if (std::abs(double(t.a.x()) - (x0 + d * k)) < 1e-3 * d * step) ++columns;
-    else if (std::abs(double(t.a.y()) - (y0 + d * k)) < 1e-3 * d * step) ++rows;
+    if (std::abs(double(t.at.x()) - (x0 + d * k)) < 1e-3 * d * step) ++columns;
+    else if (std::abs(double(t.at.y()) - (y0 + d * k)) < 1e-3 * d * step) ++rows;
   }
   EXPECT_GE(columns, 3) << "the overview lost its column numbers";
   EXPECT_GE(rows, 2) << "the overview lost its row numbers";
@@ -188,7 +169,7 @@ TEST(GridOverview, TheHeatMapIsNotBuriedUnderPairsAndChecks) {
   EXPECT_GT(rec.rects.size(), 100u) << "no heat map";
   EXPECT_EQ(rec.count(rec.lines, palette::kPair), 0) << "pair segments over the heat map";
   EXPECT_EQ(rec.count(rec.lines, palette::kConfirmedPair), 0) << "confirmed pairs over the heat map";
-  EXPECT_TRUE(rec.has_text("zoom in")) << "the legend does not say where the pairs went";
+  EXPECT_TRUE(rec.has_text_containing("zoom in")) << "the legend does not say where the pairs went";
   // Zoomed in past the overview, pairs are drawn again.
   Camera close = o.camera;
   close.zoom_at(Eigen::Vector2d(640, 360), 8.0);

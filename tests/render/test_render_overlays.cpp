@@ -12,39 +12,12 @@
 #include "core/stepper.hpp"
 #include "render/overlays.hpp"
 #include "support/generators.hpp"
+#include "support/draw_recorder.hpp"
 
 namespace nbscope::render {
 namespace {
 
-// Records every call, as a debug recorder would.
-struct Recorder final : DrawSink {
-  struct Arrow {
-    Layer layer;
-    Vec2 from, to;
-    Rgba colour;
-  };
-  std::vector<Arrow> arrows, segments;
-  int circles = 0, lines = 0, rects = 0, polygons = 0;
-  std::vector<float> top_circle_min_px;
-  std::vector<std::string> texts;
-  void circle(Layer layer, Vec2, float, Rgba, Rgba, float, float min_px) override {
-    ++circles;
-    if (layer == Layer::Top) top_circle_min_px.push_back(min_px);
-  }
-  void polygon(Layer, std::span<const Vec2>, Rgba, Rgba) override { ++polygons; }
-  void line(Layer layer, Vec2 a, Vec2 b, Rgba c, float) override {
-    ++lines;
-    segments.push_back({layer, a, b, c});
-  }
-  void arrow(Layer layer, Vec2 a, Vec2 b, Rgba c, float) override { arrows.push_back({layer, a, b, c}); }
-  void rect(Layer, Vec2, Vec2, Rgba c) override {
-    ++rects;
-    rect_colours.push_back(c);
-  }
-  void text(Vec2, std::string_view t, Rgba) override { texts.emplace_back(t); }
-  std::vector<Rgba> rect_colours;
-  [[nodiscard]] long rects_of(Rgba c) const { return std::count(rect_colours.begin(), rect_colours.end(), c); }
-};
+using testdraw::Recorder;  // support/draw_recorder.hpp
 
 TraceLog trace_of(const std::string& algorithm, const Elements& e, PairList& pairs, Grid& grid) {
   auto d = make_detector(algorithm);
@@ -174,14 +147,14 @@ TEST(Overlays, ListArrowsFollowTheNextArrayAndVanishWhenTheOverlayIsOff) {
         ++matched;
   }
   EXPECT_EQ(matched, y->chain.size() - 1);
-  for (const auto& line : rec.segments) {
+  for (const auto& line : rec.lines) {
     if (line.colour == palette::kYList && line.layer == Layer::Overlay) {
       EXPECT_TRUE(line.from.y() >= lo && line.from.y() <= hi) << "an arc left the row's band";
     }
   }
   // Ids are drawn with the lists, but never over each other: 3 and 4 are 8 px apart here, so
   // only the first of them is labelled.
-  const auto drawn = [&](const char* id) { return std::count(rec.texts.begin(), rec.texts.end(), id); };
+  const auto drawn = [&](const char* id) { return rec.text_count(id); };
   EXPECT_EQ(drawn("2"), 1);
   EXPECT_EQ(drawn("3"), 1);
   EXPECT_EQ(drawn("4"), 0);
@@ -191,7 +164,7 @@ TEST(Overlays, ListArrowsFollowTheNextArrayAndVanishWhenTheOverlayIsOff) {
   Recorder none;
   draw_scene(t.scene(), off, t.camera, none);
   EXPECT_TRUE(none.arrows.empty());
-  EXPECT_EQ(std::find(none.texts.begin(), none.texts.end(), "4"), none.texts.end());
+  EXPECT_FALSE(none.has_text("4"));
 }
 
 // I alone draws the ids: L turns them on with the lists (the checkbox shows it), and I turns them
@@ -208,7 +181,7 @@ TEST(Overlays, IdsAreDrawnOnlyWhileTheirOverlayIsOn) {
   Recorder rec;
   draw_scene(t.scene(), f, t.camera, rec);
   EXPECT_FALSE(rec.arrows.empty()) << "the lists are drawn";
-  for (const char* id : {"0", "1", "2", "3", "4"}) EXPECT_EQ(std::count(rec.texts.begin(), rec.texts.end(), id), 0) << "id " << id;
+  for (const char* id : {"0", "1", "2", "3", "4"}) EXPECT_EQ(rec.text_count(id), 0) << "id " << id;
   // The lists turned off and on again bring the ids back; already on, they stay as they are.
   set_overlay(f, &OverlayFlags::lists, false);
   set_overlay(f, &OverlayFlags::lists, true);
@@ -227,11 +200,9 @@ TEST(Overlays, GridDrawsOnlyTheCellsInView) {
   zoomed.set({0.5, 0.5}, 400.0);  // one cell fills the view
   Recorder close;
   draw_scene(t.scene(), f, zoomed, close);
-  EXPECT_LT(close.lines, whole.lines);
-  EXPECT_LT(close.rects, whole.rects);
-  EXPECT_NE(std::find_if(whole.texts.begin(), whole.texts.end(),
-                         [](const std::string& s) { return s.find("4 x 1 cells") != std::string::npos; }),
-            whole.texts.end());
+  EXPECT_LT(close.lines.size(), whole.lines.size());
+  EXPECT_LT(close.rects.size(), whole.rects.size());
+  EXPECT_TRUE(whole.has_text_containing("4 x 1 cells"));
 }
 
 TEST(Overlays, MaskCoversTheCellAndItsHalfMaskInsideTheGrid) {
@@ -249,19 +220,19 @@ TEST(Overlays, MaskCoversTheCellAndItsHalfMaskInsideTheGrid) {
   draw_scene(s, OverlayFlags{}, t.camera, with);
   s.hovered_cell.reset();
   draw_scene(s, OverlayFlags{}, t.camera, without);
-  EXPECT_EQ(with.rects - without.rects, 2);  // (2,0) and (1,0); the row below does not exist
-  EXPECT_EQ(without.rects_of(palette::kMaskCentre), 0);
+  EXPECT_EQ(with.rects.size() - without.rects.size(), 2u);  // (2,0) and (1,0); the row below does not exist
+  EXPECT_EQ(Recorder::count(without.rects, palette::kMaskCentre), 0);
   // Nothing hovered (headless): the selected element's cell's mask, so --select shows it.
   s.selected = 2;  // at x = 2.5: cell (2, 0) of the grid from (0.5, 0.5)
   Recorder selected;
   draw_scene(s, OverlayFlags{}, t.camera, selected);
-  EXPECT_EQ(selected.rects_of(palette::kMaskCentre), 1);
-  EXPECT_EQ(selected.rects_of(palette::kMaskCell), 1);
+  EXPECT_EQ(Recorder::count(selected.rects, palette::kMaskCentre), 1);
+  EXPECT_EQ(Recorder::count(selected.rects, palette::kMaskCell), 1);
   OverlayFlags no_mask;
   no_mask.mask = false;
   Recorder off;
   draw_scene(s, no_mask, t.camera, off);
-  EXPECT_EQ(off.rects_of(palette::kMaskCentre), 0);
+  EXPECT_EQ(Recorder::count(off.rects, palette::kMaskCentre), 0);
 }
 
 TEST(Overlays, ViolationsGetMarkersThatStayVisibleWhenZoomedOut) {
@@ -272,13 +243,13 @@ TEST(Overlays, ViolationsGetMarkersThatStayVisibleWhenZoomedOut) {
   s.checks = &checks;
   Recorder rec;
   draw_scene(s, OverlayFlags{}, t.camera, rec);
-  ASSERT_EQ(rec.top_circle_min_px.size(), 1u);
-  EXPECT_GE(rec.top_circle_min_px[0], 8.0f);
+  ASSERT_EQ(rec.min_px_of(Layer::Top).size(), 1u);
+  EXPECT_GE(rec.min_px_of(Layer::Top)[0], 8.0f);
   OverlayFlags off;
   off.checks = false;
   Recorder none;
   draw_scene(s, off, t.camera, none);
-  EXPECT_TRUE(none.top_circle_min_px.empty());
+  EXPECT_TRUE(none.min_px_of(Layer::Top).empty());
 }
 
 TEST(Overlays, PickingFindsTheCellAndTheSmallestElementUnderThePoint) {
@@ -373,7 +344,7 @@ TEST(Overlays, LongYListsAreARailInListOrderWithLeadersToTheirElements) {
   f.grid = false;
   Recorder rec;
   draw_scene(s, f, camera, rec);
-  std::vector<Recorder::Arrow> rail;
+  std::vector<Recorder::Line> rail;
   for (const auto& a : rec.arrows)
     if (a.colour == palette::kYList) rail.push_back(a);
   ASSERT_EQ(rail.size(), static_cast<std::size_t>(n)) << "the head's arrow and one per element";
@@ -391,7 +362,7 @@ TEST(Overlays, LongYListsAreARailInListOrderWithLeadersToTheirElements) {
   ASSERT_NE(y_list, lists.end());
   for (std::size_t i = 0; i < y_list->chain.size(); ++i) {
     const Vec2 c(float(e.x[y_list->chain[i]]), float(e.y[y_list->chain[i]]));
-    const bool led = std::any_of(rec.segments.begin(), rec.segments.end(), [&](const Recorder::Arrow& l) {
+    const bool led = std::any_of(rec.lines.begin(), rec.lines.end(), [&](const Recorder::Line& l) {
       return (l.to - c).norm() < 1e-4f && std::abs(l.from.x() - rail[i].to.x()) < 0.2f;
     });
     EXPECT_TRUE(led) << "element " << y_list->chain[i] << " (list position " << i << ") has no leader from its slot";

@@ -11,37 +11,12 @@
 #include <vector>
 
 #include "render/overlays.hpp"
+#include "support/draw_recorder.hpp"
 
 namespace nbscope::render {
 namespace {
 
-struct Recorder final : DrawSink {
-  struct Line {
-    Layer layer;
-    Vec2 from, to;
-    Rgba colour;
-  };
-  struct Circle {
-    Layer layer;
-    Vec2 centre;
-    Rgba fill;
-  };
-  std::vector<Line> lines;
-  std::vector<Circle> circles;
-  std::vector<std::string> texts;
-  void circle(Layer layer, Vec2 c, float, Rgba fill, Rgba, float, float) override { circles.push_back({layer, c, fill}); }
-  void polygon(Layer, std::span<const Vec2>, Rgba, Rgba) override {}
-  void line(Layer layer, Vec2 a, Vec2 b, Rgba c, float) override { lines.push_back({layer, a, b, c}); }
-  void arrow(Layer, Vec2, Vec2, Rgba, float) override {}
-  void rect(Layer, Vec2, Vec2, Rgba) override {}
-  void text(Vec2, std::string_view t, Rgba) override { texts.emplace_back(t); }
-  [[nodiscard]] std::vector<Line> lines_of(Rgba c) const {
-    std::vector<Line> out;
-    for (const Line& l : lines)
-      if (l.colour == c) out.push_back(l);
-    return out;
-  }
-};
+using testdraw::Recorder;  // support/draw_recorder.hpp
 
 // Elements 0 and 1 touch across x's edge of the box [0, 10) (0.4 and 9.7: 0.7 apart through the
 // edge, radii 0.5); element 2 sits in the middle, far from every edge. y is open.
@@ -183,10 +158,10 @@ TEST(PeriodicOverlays, TheIdsOverlayNamesADumpsAtomsByTheirIds) {
   s.ids = &ids;
   OverlayFlags f;
   f.ids = true;
-  std::vector<std::string> texts = rig.draw(s, f).texts;
+  std::vector<std::string> texts = rig.draw(s, f).text_strings();
   std::sort(texts.begin(), texts.end());
   EXPECT_EQ(texts, (std::vector<std::string>{"12", "2753", "99"}));
-  texts = rig.draw(rig.scene(), f).texts;  // without ids: the rows
+  texts = rig.draw(rig.scene(), f).text_strings();  // without ids: the rows
   std::sort(texts.begin(), texts.end());
   EXPECT_EQ(texts, (std::vector<std::string>{"0", "1", "2"}));
 }

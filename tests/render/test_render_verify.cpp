@@ -12,47 +12,14 @@
 #include "render/overlays.hpp"
 #include "render/overlay_verify.hpp"
 #include "support/verify_fixture.hpp"
+#include "support/draw_recorder.hpp"
 
 namespace nbscope::render {
 namespace {
 
 using testdata::PlantedBug;
 
-// Records every call with its geometry and colours.
-struct Recorder final : DrawSink {
-  struct Segment {
-    Layer layer;
-    Vec2 from, to;
-    Rgba colour;
-    float width;
-  };
-  struct Circle {
-    Layer layer;
-    Vec2 centre;
-    float radius;
-    Rgba fill, outline;
-  };
-  struct Text {
-    Vec2 at;
-    std::string text;
-    Rgba colour;
-  };
-  std::vector<Segment> arrows, lines;
-  std::vector<Circle> circles;
-  std::vector<Text> texts;
-  void circle(Layer layer, Vec2 c, float r, Rgba fill, Rgba outline, float, float) override { circles.push_back({layer, c, r, fill, outline}); }
-  void polygon(Layer, std::span<const Vec2>, Rgba, Rgba) override {}
-  void line(Layer layer, Vec2 a, Vec2 b, Rgba c, float w) override { lines.push_back({layer, a, b, c, w}); }
-  void arrow(Layer layer, Vec2 a, Vec2 b, Rgba c, float w) override { arrows.push_back({layer, a, b, c, w}); }
-  void rect(Layer, Vec2, Vec2, Rgba) override {}
-  void text(Vec2 at, std::string_view t, Rgba c) override { texts.push_back({at, std::string(t), c}); }
-  [[nodiscard]] bool has_text(const std::string& t) const {
-    return std::any_of(texts.begin(), texts.end(), [&](const Text& x) { return x.text == t; });
-  }
-  [[nodiscard]] bool has_text_containing(const std::string& t) const {
-    return std::any_of(texts.begin(), texts.end(), [&](const Text& x) { return x.text.find(t) != std::string::npos; });
-  }
-};
+using testdraw::Recorder;  // support/draw_recorder.hpp
 
 struct Drawn {
   std::vector<TracedList> lists;

@@ -1,5 +1,5 @@
-// nbscope tests: what the layer view of a 3D frame draws, recorded without pixels (a DrawSink that
-// keeps every circle, line, rect and text), and the small frames both layer-view test files draw:
+// nbscope tests: what the layer view of a 3D frame draws, recorded without pixels (the shared
+// recorder, support/draw_recorder.hpp), and the small frames both layer-view test files draw:
 // unit cells from the origin, four spheres one to a layer, a camera over a square.
 #pragma once
 #include <algorithm>
@@ -13,63 +13,13 @@
 #include "core/grid.hpp"
 #include "render/camera.hpp"
 #include "render/draw_sink.hpp"
+#include "support/draw_recorder.hpp"
 #include "render/overlays.hpp"  // ShapeDraw
 
 namespace nbscope::render::testlayers {
 
-struct Recorder final : DrawSink {
-  struct Circle {
-    Layer layer;
-    Vec2 centre;
-    float radius;
-    Rgba fill, outline;
-  };
-  struct Line {
-    Layer layer;
-    Vec2 from, to;
-    Rgba colour;
-  };
-  struct Rect {
-    Layer layer;
-    Vec2 min, max;
-    Rgba colour;
-  };
-  struct Text {
-    Vec2 at;
-    std::string text;
-    Rgba colour;
-  };
-  std::vector<Circle> circles;
-  std::vector<Line> lines, arrows;
-  std::vector<Rect> rects;
-  std::vector<Text> texts;
-  void circle(Layer layer, Vec2 c, float r, Rgba fill, Rgba outline, float, float) override {
-    circles.push_back({layer, c, r, fill, outline});
-  }
-  void polygon(Layer, std::span<const Vec2>, Rgba, Rgba) override {}
-  void line(Layer layer, Vec2 a, Vec2 b, Rgba c, float) override { lines.push_back({layer, a, b, c}); }
-  void arrow(Layer layer, Vec2 a, Vec2 b, Rgba c, float) override { arrows.push_back({layer, a, b, c}); }
-  void rect(Layer layer, Vec2 lo, Vec2 hi, Rgba c) override { rects.push_back({layer, lo, hi, c}); }
-  void text(Vec2 at, std::string_view t, Rgba c) override { texts.push_back({at, std::string(t), c}); }
-
-  // Circles centred on `at` (within a hair).
-  [[nodiscard]] std::vector<Circle> circles_at(Vec2 at) const {
-    std::vector<Circle> out;
-    for (const Circle& c : circles)
-      if ((c.centre - at).norm() < 1e-4f) out.push_back(c);
-    return out;
-  }
-  // Segments with both ends on the circle of radius r around `at` (a dashed outline's dashes).
-  [[nodiscard]] int dashes_around(Vec2 at, float r) const {
-    int n = 0;
-    for (const Line& l : lines)
-      if (std::abs((l.from - at).norm() - r) < 1e-4f && std::abs((l.to - at).norm() - r) < 1e-4f) ++n;
-    return n;
-  }
-  [[nodiscard]] bool has_text(const std::string& t) const {
-    return std::any_of(texts.begin(), texts.end(), [&](const Text& x) { return x.text == t; });
-  }
-};
+// The one recorder of the tests that draw without GL (support/draw_recorder.hpp).
+using testdraw::Recorder;
 
 inline Vec2 at(const Elements& e, ElementId k) { return {static_cast<float>(e.x[k]), static_cast<float>(e.y[k])}; }
 

@@ -9,6 +9,7 @@
 
 #include "core/detector.hpp"
 #include "core/frame_trace.hpp"
+#include "support/draw_recorder.hpp"
 #include "support/generators.hpp"
 #include "ui/host.hpp"
 #include "ui/model.hpp"
@@ -77,21 +78,8 @@ struct BookFrame {
   std::tuple<std::string, const void*, std::int64_t, bool> trace_key_;
 };
 
-// A DrawSink that keeps what it is asked to draw.
-struct Recorder final : render::DrawSink {
-  int circles = 0, rects = 0, lines = 0, arrows = 0;
-  std::vector<std::string> texts;
-  std::vector<render::Rgba> outlines;  // each circle's outline colour
-  void circle(render::Layer, render::Vec2, float, render::Rgba, render::Rgba outline, float, float) override {
-    ++circles;
-    outlines.push_back(outline);
-  }
-  void polygon(render::Layer, std::span<const render::Vec2>, render::Rgba, render::Rgba) override {}
-  void line(render::Layer, render::Vec2, render::Vec2, render::Rgba, float) override { ++lines; }
-  void arrow(render::Layer, render::Vec2, render::Vec2, render::Rgba, float) override { ++arrows; }
-  void rect(render::Layer, render::Vec2, render::Vec2, render::Rgba) override { ++rects; }
-  void text(render::Vec2, std::string_view t, render::Rgba) override { texts.emplace_back(t); }
-};
+// The one recorder of the tests that draw without GL (support/draw_recorder.hpp).
+using render::testdraw::Recorder;
 
 // Runs one UI frame of `host` over `f` and draws its scene overlay into `sink`.
 inline void run_frame(UiHost& host, BookFrame& f, Recorder* sink = nullptr) {

@@ -283,15 +283,15 @@ TEST(StepperPanels, KeysStepPhaseAndPlayAndTheSceneShowsTheOperation) {
   st.seek(5);
   Recorder push;
   run_frame(host, f, &push);
-  EXPECT_EQ(push.arrows, 2);
-  EXPECT_GE(push.rects, 1);
-  EXPECT_GE(push.lines, 4);
-  EXPECT_GE(push.circles, 1);
+  EXPECT_EQ(push.arrows.size(), 2u);
+  EXPECT_GE(push.rects.size(), 1u);
+  EXPECT_GE(push.lines.size(), 4u);
+  EXPECT_GE(push.circles.size(), 1u);
   // A test in contact: the pair's segment and its verdict.
   st.seek(20);
   Recorder test;
   run_frame(host, f, &test);
-  EXPECT_NE(std::find(test.texts.begin(), test.texts.end(), "contact"), test.texts.end());
+  EXPECT_TRUE(test.has_text("contact"));
 
   // Space plays at the chosen speed; the frames' time moves it on.
   st.set_speed(600);  // 10 events per 1/60 s frame
@@ -315,7 +315,9 @@ TEST(StepperScene, TheCurrentElementsRingIsNotTheSelections) {
     s.stepper().seek(op);
     Recorder r;
     draw_stepper_scene(s, r);
-    const auto count = [&](render::Rgba c) { return std::count(r.outlines.begin(), r.outlines.end(), c); };
+    const auto count = [&](render::Rgba c) {
+      return std::count_if(r.circles.begin(), r.circles.end(), [&](const Recorder::Circle& circle) { return circle.outline == c; });
+    };
     EXPECT_GE(count(render::palette::kOperation), 1) << "operation " << op;
     EXPECT_EQ(count(render::palette::kSelection), 0) << "operation " << op << ": the selection's white ring";
   }
