@@ -73,6 +73,7 @@ void FrameLoop::redetect() { impl_->redetect(); }
 void FrameLoop::redetect_with_algorithm(std::string_view name) {
   FrameLoopState& m = *impl_;
   if (name == m.pipeline.options().algorithm) return;  // the same detector: nothing to detect again
+  m.settle();  // the step in flight adopted first: the pipeline may be the worker's
   m.pipeline.set_algorithm(name, [&m] { m.accept_recorded(); });
   m.redetect();
 }
@@ -80,6 +81,7 @@ void FrameLoop::redetect_with_algorithm(std::string_view name) {
 void FrameLoop::redetect_with_fault(Fault fault) {
   FrameLoopState& m = *impl_;
   if (fault == m.pipeline.options().fault) return;
+  m.settle();
   if (m.pipeline.has_recorded_lane()) check_recorded_fault(fault);
   m.pipeline.set_fault(fault);
   m.redetect();
@@ -88,6 +90,7 @@ void FrameLoop::redetect_with_fault(Fault fault) {
 void FrameLoop::redetect_with_checks(bool on) {
   FrameLoopState& m = *impl_;
   if (on == m.pipeline.options().checks) return;
+  m.settle();
   m.pipeline.set_checks(on);
   m.redetect();
 }
@@ -95,6 +98,7 @@ void FrameLoop::redetect_with_checks(bool on) {
 void FrameLoop::redetect_with_comparisons(const std::vector<std::string>& names) {
   FrameLoopState& m = *impl_;
   if (names == m.pipeline.comparison_algorithms()) return;  // nothing changes: no detector is called again
+  m.settle();
   m.pipeline.set_comparison_algorithms(names, [&m] { m.accept_recorded(); });
   m.redetect();
 }
@@ -132,7 +136,9 @@ bool FrameLoop::step_back() {
 // ---- the parts -----------------------------------------------------------------------------
 
 const FrameChange& FrameLoop::change() const { return impl_->change; }
-const FrameResult& FrameLoop::result() const { return impl_->pipeline.result(); }
+const FrameResult& FrameLoop::result() const {
+  return impl_->pipeline_on_worker() ? *impl_->shown_result : impl_->pipeline.result();  // the shown frame's either way
+}
 const LoopSource& FrameLoop::source() const { return source_; }
 LoopPipeline& FrameLoop::pipeline() { return pipeline_; }
 const LoopPipeline& FrameLoop::pipeline() const { return pipeline_; }

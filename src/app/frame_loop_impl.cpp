@@ -25,6 +25,29 @@ void FrameLoopState::detect_and_check(FrameChange::Kind kind) {
   in.previous = [this] { return elements_before(frame_number()); };
   in.where = source().scene().path + ": frame " + std::to_string(frame_number()) + ": ";
   pipeline.run(in);
+  publish(kind);
+}
+
+void FrameLoopState::detect_on_worker(const Frame& next) {
+  // On the worker, which owns the world and the pipeline until settle(): nothing of the history or
+  // the views is read here (the stale-positions fault's positions were remembered by begin_step()).
+  FrameInput in;
+  in.source = &next;
+  in.first = next.frame() == 0;
+  in.previous = [&next] { return next.elements(); };
+  in.where = frames->scene().path + ": frame " + std::to_string(next.frame()) + ": ";
+  pipeline.run(in);
+}
+
+bool FrameLoopState::detection_can_leave_thread() const {
+  // A plugin's detector is called on the thread that loaded it: its frames are detected here.
+  if (!detector_info(pipeline.options().algorithm).library.empty()) return false;
+  for (const std::string& name : pipeline.comparison_algorithms())
+    if (!detector_info(name).library.empty()) return false;
+  return true;
+}
+
+void FrameLoopState::publish(FrameChange::Kind kind) {
   record_frame();
   // Published only now: a detection that threw leaves the views on the last whole frame.
   // (A redetect after such a throw shows a frame the views have not followed: it moved it.)

@@ -35,6 +35,12 @@ struct FrameLoopState {
   FrameChange change;               // what the last detect_and_check() published (FrameLoop::change)
   bool load_unpublished = false;    // a new source whose first detection threw: the next change carries it
   bool physics_overlapped = false;  // the current frame's physics ran on the worker (frame_loop_overlap.cpp)
+  // While a step in flight is detected on the worker (it owns the pipeline until settle()): the
+  // shown frame's result and detector bytes as they were, and a record_traces() wish for the next.
+  std::unique_ptr<FrameResult> shown_result;
+  std::size_t shown_detector_bytes = 0;
+  DetectOptions shown_detect;  // the pipeline's detect options for the shown frame (its trace's)
+  std::optional<bool> wanted_traces;
 
   // The slow-frame note (app/frame_watch.hpp). Declared last: its thread, which may read the world's
   // counters, is joined before anything else goes.
@@ -76,6 +82,19 @@ struct FrameLoopState {
   // The step in flight forgotten, its world about to be replaced (a load or restart).
   void discard_step() {
     if (Simulation* sim = simulation()) sim->discard_step();
+    shown_result.reset();
+    apply_wanted_traces();
+  }
+  // The shown frame's trace while the pipeline is the worker's: its detection's own, else made by a
+  // fresh detector of the same kind (a built-in keeps nothing between frames); null under the
+  // stale-positions fault, whose input the worker holds.
+  std::shared_ptr<const FrameTrace> shown_trace();
+  // True while the pipeline is the worker's (a step in flight detected there).
+  [[nodiscard]] bool pipeline_on_worker() const { return shown_result != nullptr && pending(); }
+  // A record_traces() wish made while the pipeline was the worker's, applied once it is back.
+  void apply_wanted_traces() {
+    if (wanted_traces) pipeline.set_record_traces(*wanted_traces);
+    wanted_traces.reset();
   }
 
   // ---- the frame source ----
@@ -88,6 +107,12 @@ struct FrameLoopState {
   // The shown frame through the pipeline (lanes, faults, check), then into the history; then
   // published as a change of `kind` (a redetect that finds another frame shown moved it too).
   void detect_and_check(FrameChange::Kind kind);
+  // The frame a step in flight made, through the pipeline on the worker (frame_loop_overlap.cpp).
+  void detect_on_worker(const Frame& next);
+  // True when every lane's detector may run on the worker (no plugin: a plugin stays on its thread).
+  [[nodiscard]] bool detection_can_leave_thread() const;
+  // The detected frame into the history, then published as a change of `kind`.
+  void publish(FrameChange::Kind kind);
   // The current frame detected and checked again (a step in flight is adopted instead).
   void redetect();
   // The shown frame's summary into the history (a new frame is pushed with what the source keeps of

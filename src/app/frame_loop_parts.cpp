@@ -59,13 +59,19 @@ std::string LoopPipeline::reference_policy() const { return s_->pipeline.referen
 std::string LoopPipeline::scope_note() { return FrameChecker::scope_note(); }
 
 const std::vector<std::string>& LoopPipeline::comparison_algorithms() const { return s_->pipeline.comparison_algorithms(); }
-const Detector& LoopPipeline::detector() const { return s_->pipeline.detector(); }
+std::size_t LoopPipeline::detector_bytes() const {
+  return s_->pipeline_on_worker() ? s_->shown_detector_bytes : s_->pipeline.detector().own_bytes();
+}
 
-void LoopPipeline::record_traces(bool on) { s_->pipeline.set_record_traces(on); }
-bool LoopPipeline::record_traces() const { return s_->pipeline.record_traces(); }
+void LoopPipeline::record_traces(bool on) {
+  if (s_->pipeline_on_worker()) s_->wanted_traces = on;  // the worker reads the flag: set once it is back
+  else s_->pipeline.set_record_traces(on);
+}
+bool LoopPipeline::record_traces() const { return s_->wanted_traces.value_or(s_->pipeline.record_traces()); }
 
 std::shared_ptr<const FrameTrace> LoopPipeline::frame_trace() {
   if (!s_->loaded()) return nullptr;
+  if (s_->pipeline_on_worker()) return s_->shown_trace();  // the detector is the worker's now
   return s_->pipeline.trace(s_->source());
 }
 

@@ -102,15 +102,17 @@ class LoopPipeline {
   [[nodiscard]] static std::string scope_note();
   // The comparison detectors, in the order given.
   [[nodiscard]] const std::vector<std::string>& comparison_algorithms() const;
-  // The detector in use (for its name, own_bytes(), pseudocode()).
-  [[nodiscard]] const Detector& detector() const;
+  // The bytes the detector in use keeps between frames (Detector::own_bytes), as of the frame shown.
+  [[nodiscard]] std::size_t detector_bytes() const;
   // The current detector's traced run on the elements it was given this frame (faults not
   // applied): the one trace the stepper and the lists overlay both show. Made on the first request
   // and kept until the frame or the detector changes; its `refusal` says why it holds no operations
-  // (too many elements, a detector without a trace). Null without a scene.
+  // (too many elements, a detector without a trace). Null without a scene; while the worker detects
+  // the next frame, the shown frame's trace if its detection recorded one, else null.
   [[nodiscard]] std::shared_ptr<const FrameTrace> frame_trace();
   // Whether the frames to come record their trace in their one detection (Pipeline::set_record_traces),
-  // so that frame_trace() calls the detector no second time. Re-runs nothing.
+  // so that frame_trace() calls the detector no second time. Re-runs nothing; asked while the worker
+  // detects a step in flight, it holds from the frame after.
   void record_traces(bool on);
   [[nodiscard]] bool record_traces() const;
 

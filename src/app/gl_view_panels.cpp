@@ -30,7 +30,7 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
   sim.layer = layer();
   sim.lists = state_.overlays.lists ? &lists_ : nullptr;
   sim.trace = trace;
-  sim.detector_bytes = loop.pipeline().detector().own_bytes();
+  sim.detector_bytes = loop.pipeline().detector_bytes();
   if (loop.pipeline().fault() != Fault::None) {
     sim.fault_name = fault_name(loop.pipeline().fault());
     sim.fault_description = fault_description(loop.pipeline().fault());

@@ -49,7 +49,7 @@ class SimulatedSource final : public FrameSource, public Simulation {
   [[nodiscard]] Simulation* simulation() override { return this; }
 
   // ---- Simulation ----
-  bool begin_step() override { return live_->begin_step(); }
+  bool begin_step(std::function<void(const Frame& next)> then) override { return live_->begin_step(std::move(then)); }
   [[nodiscard]] bool pending() const override { return live_->pending(); }
   [[nodiscard]] bool step_ready() const override { return live_->step_ready(); }
   double finish_step() override { return live_->finish_step(); }

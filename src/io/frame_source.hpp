@@ -103,8 +103,10 @@ class Simulation {
  public:
   virtual ~Simulation() = default;
   // ---- the overlapped step: the next frame's physics on a worker while the caller draws ----
-  // Starts it; false (nothing pending) when no thread can be had.
-  virtual bool begin_step() = 0;
+  // Starts it, then `then` on the worker with the new frame (its detection and check); false
+  // (nothing pending) when no thread can be had. Until finish_step() the caller touches nothing
+  // `then` uses.
+  virtual bool begin_step(std::function<void(const Frame& next)> then) = 0;
   // True between begin_step() and finish_step()/discard_step().
   [[nodiscard]] virtual bool pending() const = 0;
   // True when the pending step is done: finish_step() will not wait.

@@ -37,7 +37,25 @@ double LiveWorld::step() {
   return ms_since(t0);
 }
 
-bool LiveWorld::begin_step() {
+namespace {
+// The world as a Frame for the worker, which owns it between begin_step() and finish_step().
+class WorldFrame final : public Frame {
+ public:
+  explicit WorldFrame(const PhysicsWorld& world) : world_(world) {}
+  [[nodiscard]] std::int64_t frame() const override { return world_.frame(); }
+  [[nodiscard]] double time() const override { return world_.time(); }
+  [[nodiscard]] const Elements& elements() const override { return world_.elements(); }
+  [[nodiscard]] const std::vector<ElementSource>& element_sources() const override { return world_.sources(); }
+  [[nodiscard]] std::int64_t body_count() const override { return world_.body_count(); }
+  void body_shapes(std::vector<BodyShape>& out) const override { world_.shapes(out); }
+  [[nodiscard]] const Box2dFrame* box2d() const override { return &world_; }
+
+ private:
+  const PhysicsWorld& world_;
+};
+}  // namespace
+
+bool LiveWorld::begin_step(std::function<void(const Frame& next)> then) {
   if (pending()) return true;
   PhysicsWorld& world = *world_;
   shown_.frame = world.frame();
@@ -48,10 +66,12 @@ bool LiveWorld::begin_step() {
   shown_.sources = world.sources();
   world.shapes(shown_.shapes);
   try {
-    stepping_ = std::async(std::launch::async, [&world] {
+    stepping_ = std::async(std::launch::async, [&world, then = std::move(then)] {
       const auto t0 = std::chrono::steady_clock::now();
       world.step();
-      return ms_since(t0);
+      const double physics_ms = ms_since(t0);
+      if (then) then(WorldFrame(world));
+      return physics_ms;
     });
   } catch (const std::system_error&) {
     return false;  // no thread to be had: the next step runs here as it always did

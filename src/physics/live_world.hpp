@@ -11,6 +11,7 @@
 // same world in the same order (Box2D is deterministic) (tests/app/test_frame_loop_overlap.cpp).
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <future>
 #include <memory>
 #include <vector>
@@ -51,13 +52,16 @@ class LiveWorld final : public Frame {
   double step();
 
   // ---- the overlapped step ----
-  // Starts the next step on a worker thread; false (nothing pending) when no thread can be had.
-  bool begin_step();
+  // Starts the next step on a worker thread, then `then` on the same thread with the new frame (the
+  // frame's detection and check); false (nothing pending) when no thread can be had. Until
+  // finish_step() the owner touches nothing `then` uses.
+  bool begin_step(std::function<void(const Frame& next)> then = {});
   // True between begin_step() and finish_step()/discard_step().
   [[nodiscard]] bool pending() const { return stepping_.valid(); }
   // True when a pending step has finished (finish_step() will not wait): the window adopts it then.
   [[nodiscard]] bool step_ready() const;
-  // Waits for the worker; returns the step's own milliseconds (rethrows its Error; spent either way).
+  // Waits for the worker; returns the step's own milliseconds, Box2D's alone (rethrows its Error, or
+  // `then`'s; spent either way).
   double finish_step();
   // Forgets a pending step (its world is about to be replaced); its error goes with it.
   void discard_step();

@@ -116,6 +116,37 @@ TEST(FrameLoopOverlap, DragsGiveThePlainRunsFrames) {
   }
 }
 
+// The step in flight is detected and checked on the worker: once it is done, and before it is
+// adopted, the result the window reads is still the shown frame's (pairs, report, trace), and the
+// adopted frame's result is the plain step's, pair for pair.
+TEST(FrameLoopOverlap, TheStepInFlightIsDetectedOnTheWorkerWhileTheShownResultStays) {
+  FrameLoop plain, loop;
+  load_scene_file(plain, scene("default"));
+  load_scene_file(loop, scene("default"));
+  for (int k = 0; k < 5; ++k) {
+    plain.step();
+    loop.step();
+  }
+  const PairList shown = loop.result().selected().pairs;
+  loop.begin_step();
+  ASSERT_TRUE(loop.source().step_pending());
+  while (!loop.source().step_ready()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_EQ(loop.result().frame, 5) << "the worker's detection is not what the window reads";
+  EXPECT_EQ(loop.result().selected().pairs, shown);
+  const auto trace = loop.pipeline().frame_trace();
+  ASSERT_NE(trace, nullptr);
+  EXPECT_EQ(trace->frame, 5);
+  PairList traced = trace->pairs;  // in the book's loop order
+  sort_pairs(traced);
+  EXPECT_EQ(traced, shown) << "the shown frame's trace, made beside the worker";
+  loop.step();
+  plain.step();
+  EXPECT_EQ(loop.result().frame, 6);
+  EXPECT_EQ(loop.result().selected().pairs, plain.result().selected().pairs);
+  EXPECT_EQ(loop.result().report().violation_count(), plain.result().report().violation_count());
+  EXPECT_EQ(loop.result().reference, plain.result().reference);
+}
+
 // Between begin_step() and the adoption every accessor shows the current frame, although the world
 // underneath is already being stepped to the next.
 TEST(FrameLoopOverlap, WhileTheStepRunsTheCurrentFrameIsShown) {

