@@ -133,6 +133,7 @@ void FrameLoopState::load(std::unique_ptr<FrameSource> fresh) {
 void FrameLoopState::start() {
   pipeline.clear_reports();
   physics_overlapped = false;
+  detection_overlapped = false;
   history.clear();
   violations.clear();
   // Frames known in advance (a recording's) are showable from the start; each is checked when first shown.

@@ -35,6 +35,7 @@ struct FrameLoopState {
   FrameChange change;               // what the last detect_and_check() published (FrameLoop::change)
   bool load_unpublished = false;    // a new source whose first detection threw: the next change carries it
   bool physics_overlapped = false;  // the current frame's physics ran on the worker (frame_loop_overlap.cpp)
+  bool detection_overlapped = false;  // so did its detection and check
   // While a step in flight is detected on the worker (it owns the pipeline until settle()): the
   // shown frame's result and detector bytes as they were, and a record_traces() wish for the next.
   std::unique_ptr<FrameResult> shown_result;
@@ -122,6 +123,7 @@ struct FrameLoopState {
   void set_physics_ms(double ms) {
     pipeline.set_physics_ms(ms);
     physics_overlapped = false;
+    detection_overlapped = false;
   }
   // Error unless `rec` (null: a scene) gives pairs to check for a `recorded` lane (`wanted`).
   static void check_recorded_source(bool wanted, const Recording* rec, const std::string& path);

@@ -63,6 +63,7 @@ bool FrameLoopState::settle() {
   const double physics_ms = simulation()->finish_step();  // rethrows the step's (or its detection's) Error
   set_physics_ms(physics_ms);
   physics_overlapped = true;
+  detection_overlapped = detected;
   if (detected) publish(FrameChange::Kind::stepped);
   else detect_and_check(FrameChange::Kind::stepped);
   return true;

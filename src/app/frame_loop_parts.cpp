@@ -30,6 +30,7 @@ bool LoopSource::step_ready() const {
   return sim != nullptr && sim->step_ready();
 }
 bool LoopSource::physics_overlapped() const { return s_->physics_overlapped; }
+bool LoopSource::detection_overlapped() const { return s_->detection_overlapped; }
 std::int64_t LoopSource::frame() const { return s_->loaded() ? s_->frame_number() : 0; }
 double LoopSource::time() const { return s_->loaded() ? s_->source().time() : 0; }
 

@@ -62,6 +62,8 @@ class LoopSource {
   // True when the current frame's physics ran on the worker thread, beside the drawing of the
   // frame before (its physics_ms is the worker's own time).
   [[nodiscard]] bool physics_overlapped() const;
+  // True when its detection and check ran on the worker too (the worker's own times in its report).
+  [[nodiscard]] bool detection_overlapped() const;
   // 0 after load, +1 per step(); a recording's own numbers.
   [[nodiscard]] std::int64_t frame() const;
   // Simulated seconds (a recording's own times).

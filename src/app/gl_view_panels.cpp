@@ -77,6 +77,7 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
 void GlView::fill_drawing(const FrameLoop& loop, const Session& session, ui::SimView& sim) const {
   sim.drawing = session.split.measured ? session.split : cost_;  // a window's whole frame split, else this view's parts
   sim.drawing.physics_overlapped = loop.source().physics_overlapped();
+  sim.drawing.detection_overlapped = loop.source().detection_overlapped();
   if (!session.split.measured) sim.drawing.frame_ms = session.frame_ms;
 }
 

@@ -36,6 +36,7 @@ void FrameSplitClock::frame_start(Clock::time_point now) {
     add(sum_.detection_ms, frame_.detection_ms);
     add(sum_.check_ms, frame_.check_ms);
     sum_.physics_overlapped = sum_.physics_overlapped || frame_.physics_overlapped;
+    sum_.detection_overlapped = sum_.detection_overlapped || frame_.detection_overlapped;
     ++frames_;
     if (std::chrono::duration<double>(now - window_started_).count() >= kAverageSeconds) {
       const double n = frames_;
@@ -85,15 +86,17 @@ void IdlePacer::pace(render::GlfwWindow& window, bool moving) {
 void IdlePacer::present(render::GlfwWindow& window, const ui::DrawTimings& view, const FrameLoop& loop) {
   ui::DrawTimings parts = view;
   // A new generation: the loop detected and checked a frame during this one (a step, a past frame
-  // shown, a redetect); its physics ran here unless it overlapped the frame before on a worker.
+  // shown, a redetect); its physics, detection and check ran here unless they overlapped the frame
+  // before on a worker.
   const std::uint64_t generation = loop.change().generation;
   if (generation != seen_generation_) {
     seen_generation_ = generation;
     const FrameTimings& t = loop.result().report().timings;
     parts.physics_overlapped = loop.source().physics_overlapped();
     parts.physics_ms = parts.physics_overlapped ? 0.0 : t.physics_ms;
-    parts.detection_ms = t.detection_ms;
-    parts.check_ms = t.check_ms;
+    parts.detection_overlapped = loop.source().detection_overlapped();
+    parts.detection_ms = parts.detection_overlapped ? 0.0 : t.detection_ms;
+    parts.check_ms = parts.detection_overlapped ? 0.0 : t.check_ms;
   }
   const auto t0 = Clock::now();
   window.present();

@@ -15,6 +15,7 @@ void ScriptedTimes::add_step(const FrameLoop& loop) {
   const FrameTimings& t = loop.result().report().timings;
   sum_physics += t.physics_ms;
   any_overlapped = any_overlapped || loop.source().physics_overlapped();
+  detection_overlapped = detection_overlapped || loop.source().detection_overlapped();
   sum_detect += t.detection_ms;
   sum_check += t.check_ms;
 }
@@ -28,11 +29,12 @@ void ScriptedTimes::print(std::int64_t frames, std::int64_t back, const char* sc
   const std::int64_t counted = frames + (loop.source().replaying() ? 1 : 0);
   std::fprintf(stderr,
                "nbscope: window: %s (simulated in %.2f s = sim %.1f frames/s), %lld drawn in %.2f s = %.1f FPS; "
-               "ms a simulated frame: physics %.2f%s, detection %.2f, check %.2f; ms a drawn frame: render+panels %.2f; "
+               "ms a simulated frame: physics %.2f%s, detection %.2f%s, check %.2f%s; ms a drawn frame: render+panels %.2f; "
                "algorithm %s%s%s\n",
                plural(counted, "frame").c_str(), sim_seconds, sim_seconds > 0 ? static_cast<double>(stepped) / sim_seconds : 0.0,
                static_cast<long long>(rendered + 1), seconds, drawn / seconds, sum_physics / steps,
-               any_overlapped ? " (overlapped)" : "", sum_detect / steps, sum_check / steps, sum_view / drawn,
+               any_overlapped ? " (overlapped)" : "", sum_detect / steps, detection_overlapped ? " (overlapped)" : "",
+               sum_check / steps, detection_overlapped ? " (overlapped)" : "", sum_view / drawn,
                detector_label(loop.pipeline().algorithm()).c_str(),
                screenshot != nullptr ? "; screenshot " : "", screenshot != nullptr ? screenshot : "");
   if (back > 0) {

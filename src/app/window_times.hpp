@@ -17,6 +17,7 @@ struct ScriptedTimes {
   std::int64_t stepped = 0;                     // simulated frames adopted
   double sum_physics = 0, sum_detect = 0, sum_check = 0, sum_view = 0;
   bool any_overlapped = false;                  // physics ran on the worker thread, beside the drawing
+  bool detection_overlapped = false;            // so did detection and the check
   double sum_back_show = 0, sum_back_view = 0;  // --back: showing a kept frame again, and drawing it
 
   // One simulated frame made: its pipeline's times.

@@ -8,8 +8,8 @@ namespace nbscope::ui {
 std::vector<FrameSplitRow> frame_split_rows(const DrawTimings& d, const FrameTimings& pipeline) {
   if (!d.measured) {
     return {{"physics", pipeline.physics_ms, !d.physics_overlapped, d.physics_overlapped ? "overlapped" : ""},
-            {"detection", pipeline.detection_ms, true, ""},
-            {"check", pipeline.check_ms, true, ""},
+            {"detection", pipeline.detection_ms, !d.detection_overlapped, d.detection_overlapped ? "overlapped" : ""},
+            {"check", pipeline.check_ms, !d.detection_overlapped, d.detection_overlapped ? "overlapped" : ""},
             {"trace (lists)", d.trace_ms, true, ""},
             {"overlays", d.overlay_ms, true, ""},
             {"render", d.render_ms, true, ""},
@@ -18,8 +18,8 @@ std::vector<FrameSplitRow> frame_split_rows(const DrawTimings& d, const FrameTim
   std::vector<FrameSplitRow> rows = {
       {d.idle ? "idle sleep" : "event wait", d.wait_ms, true, ""},
       {"physics", d.physics_ms, true, d.physics_overlapped ? "overlapped" : ""},
-      {"detection", d.detection_ms, true, ""},
-      {"check", d.check_ms, true, ""},
+      {"detection", d.detection_ms, true, d.detection_overlapped ? "overlapped" : ""},
+      {"check", d.check_ms, true, d.detection_overlapped ? "overlapped" : ""},
       {"trace (lists)", d.trace_ms, true, ""},
       {"overlays", d.overlay_ms, true, ""},
       {"render", d.render_ms, true, ""},

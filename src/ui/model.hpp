@@ -58,6 +58,7 @@ namespace nbscope::ui {
 // detection and check, is FrameTimings, check/report.hpp).
 struct DrawTimings {
   bool physics_overlapped = false;  // the physics ran on a worker thread while the frame before was drawn
+  bool detection_overlapped = false;  // so did the detection and the check (not a plugin's)
   double trace_ms = 0;    // the traced detection for the list overlay
   double overlay_ms = 0;  // building the overlays (CPU)
   double render_ms = 0;   // submitting the scene to GL

@@ -48,6 +48,8 @@ void compare_runs(const std::string& name, int frames, FrameLoopOptions options,
     ASSERT_FALSE(overlapped.source().step_pending());
     EXPECT_TRUE(overlapped.source().physics_overlapped());
     EXPECT_FALSE(plain.source().physics_overlapped());
+    EXPECT_TRUE(overlapped.source().detection_overlapped()) << "detected and checked on the worker too";
+    EXPECT_FALSE(plain.source().detection_overlapped());
     EXPECT_GE(overlapped.result().report().timings.physics_ms, 0);
     expect_same_frame(facts_of(plain), facts_of(overlapped));
     if (::testing::Test::HasFailure()) return;

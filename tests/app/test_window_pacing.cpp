@@ -91,6 +91,23 @@ TEST(FrameSplit, OffScreenFramesKeepTheViewsPartsAndSayThereIsNoFrameRate) {
   EXPECT_EQ(ui::frame_rate_line(d, 0), "off-screen frame (no FPS)");
 }
 
+// A frame detected and checked on the worker: its detection and check rows say "overlapped" and,
+// off-screen, are left out of the view's own sum as a worker's physics is.
+TEST(FrameSplit, DetectionOnTheWorkerIsMarkedOverlapped) {
+  ui::DrawTimings d;
+  d.detection_overlapped = true;
+  FrameTimings pipeline;
+  pipeline.detection_ms = 2;
+  pipeline.check_ms = 5;
+  const auto rows = ui::frame_split_rows(d, pipeline);
+  EXPECT_EQ(rows[1].note, "overlapped");
+  EXPECT_FALSE(rows[1].counted);
+  EXPECT_EQ(rows[2].note, "overlapped");
+  EXPECT_FALSE(rows[2].counted);
+  d.detection_overlapped = false;
+  EXPECT_TRUE(ui::frame_split_rows(d, pipeline)[1].counted);
+}
+
 // The simulation's own rate (SimRate): a worker finishing a frame every 100 ms while the window
 // draws at 30 FPS reads 10 frames/s, apart from the FPS; a paused simulation falls to 0 within the
 // window; a new run (the count going down) starts again. Synthetic clock readings.
