@@ -4,13 +4,15 @@
 // an empty list or the end of one, "·" for an entry not written yet (its contents mean nothing),
 // the entry just written highlighted with its old value, large arrays windowed around the active
 // entries (what the current operation reads or writes, the list of the cell and row it works on,
-// the element k), and an element filter that answers "where is k?". It sits in the bottom dock.
+// the element k, and to the rows the panel's room holds), and an element filter that answers "where
+// is k?". It sits in the bottom dock; a cell matrix (screen's C) keeps the other arrays at its right.
 //
 // Index: cell colours | column fitting | Marks and window focus | row and matrix arrays | element
 // section | ArraysPanel.
 #include <imgui.h>
 
 #include <algorithm>
+#include <functional>
 #include <string>
 
 #include "io/plural.hpp"
@@ -139,11 +141,21 @@ const char* const* nbs_row_names(const StepperSession& s, const TracedArray& a) 
   return nullptr;
 }
 
+// How many of a matrix's `rows` fit between the cursor and `bottom` (screen y) under its header
+// row: all of them, else those that leave a line for "... N more rows"; at least 3.
+std::int64_t rows_that_fit(std::int64_t rows, float bottom) {
+  const float row = ImGui::GetTextLineHeight() + 2 * ImGui::GetStyle().CellPadding.y;
+  const float room = bottom - ImGui::GetCursorScreenPos().y;
+  if (static_cast<float>(rows + 1) * row <= room) return rows;
+  return std::max<std::int64_t>(static_cast<std::int64_t>((room - ImGui::GetTextLineHeightWithSpacing()) / row) - 1, 3);
+}
+
 // A 2D array (or the slice of a 3D one at the focus's last index) as a matrix: rows are the first
 // index, columns the second, except that a cell matrix (screen's C[ix][iy], eq. 3.31) is drawn as the
 // scene shows its cells, ix across and iy upwards, and an array whose second index only picks one of a
 // few parallel arrays (the tree's child[m][0/1]) one row per choice, so it reads like a next array.
-void draw_matrix_array(const StepperSession& s, const Marks& m, int array) {
+// Its rows are windowed to those that fit above `bottom` (screen y), at most kMaxRows.
+void draw_matrix_array(const StepperSession& s, const Marks& m, int array, float bottom) {
   const TracedArray& a = s.stepper().trace().arrays()[array];
   const std::vector<std::int32_t>& values = s.stepper().state()[array];
   const std::int64_t depth = a.shape.size() == 3 ? a.shape[2] : 1;
@@ -152,7 +164,7 @@ void draw_matrix_array(const StepperSession& s, const Marks& m, int array) {
   const std::int64_t f[2] = {focus / depth / a.shape[1], (focus / depth) % a.shape[1]};
   const bool cells = is_cell_matrix(a, s.grid());
   const int row_dim = cells || index_is_selector(a, 1) ? 1 : 0, col_dim = 1 - row_dim;
-  const auto [r0, r1] = window_range(a.shape[row_dim], f[row_dim], kMaxRows);
+  const auto [r0, r1] = window_range(a.shape[row_dim], f[row_dim], std::min(kMaxRows, rows_that_fit(a.shape[row_dim], bottom)));
   const auto [c0, c1] =
       window_range(a.shape[col_dim], f[col_dim], fit_columns(a.shape[col_dim], s.holds_elements(array) ? m.n : 0));
   const bool book = s.book_numbering;
@@ -269,24 +281,20 @@ void mark_walk(const StepperSession& s, Marks& m) {
   if (e->op == TraceOp::TestPair && next >= 0) m.active[1] = {next, e->other};
 }
 
-// The line saying what was written last, then every array.
-void draw_arrays(const StepperSession& s) {
+// What to highlight: the last write and its line above the arrays (returned, "" when nothing was
+// written yet), the walk, the lists of the cell, row and layer the current operation works on, its element.
+std::string mark_arrays(const StepperSession& s, Marks& marks) {
   const Stepper& st = s.stepper();
   const auto& arrays = st.trace().arrays();
-  if (arrays.empty()) {
-    ImGui::TextWrapped("%s keeps no arrays: it tests every pair i < j. Pick an element to see its tests.",
-                       s.algorithm().c_str());
-    return;
-  }
-  Marks marks;
   marks.focus = s.focus_element;
   marks.n = s.elements().size();
+  std::string text;
   if (const auto w = st.last_write_event()) {
     const TraceEvent& e = st.events()[*w];
     marks.writes = e.writes;
     marks.write_count = std::min<int>(e.write_count, 2);
     marks.write_is_current = *w + 1 == st.position();
-    std::string text = marks.write_is_current ? "just written: " : "last written (operation " + std::to_string(*w + 1) + "): ";
+    text = marks.write_is_current ? "just written: " : "last written (operation " + std::to_string(*w + 1) + "): ";
     for (int i = 0; i < marks.write_count; ++i) {
       const ArrayWrite& a = e.writes[i];
       text += (i > 0 ? ",  " : "") + entry_name(arrays[a.array], a.index, s.book_numbering) + " = " +
@@ -295,13 +303,8 @@ void draw_arrays(const StepperSession& s) {
                                                      : std::string("unset")) +
               ")";
     }
-    ImGui::PushStyleColor(ImGuiCol_Text, marks.write_is_current ? ImVec4(0.95f, 0.75f, 0.3f, 1.0f) : ImVec4(0.7f, 0.6f, 0.4f, 1.0f));
-    ImGui::TextWrapped("%s", text.c_str());
-    ImGui::PopStyleColor();
   }
-  if (s.elements().dim == 3) ImGui::TextColored(kIndex, "%s", array_shapes_text(s).c_str());
   mark_walk(s, marks);
-  // The lists of the cell, row and layer the current operation works on, and its element.
   const LoopVars v = st.loop_vars();
   marks.k = v.k;
   const std::int32_t keys[3][3] = {{v.ix, v.iy, v.iz}, {-1, v.iy, v.iz}, {-1, -1, v.iz}};
@@ -309,15 +312,73 @@ void draw_arrays(const StepperSession& s) {
     if (key[0] < 0 && key[1] < 0 && key[2] < 0) continue;
     if (const auto l = s.list_of_cell(key)) marks.lists.emplace_back(l->heads, l->list);
   }
-  for (std::size_t a = 0; a < arrays.size(); ++a) {
+  return text;
+}
+
+// About how wide a cell matrix's table is: its label column and up to kMaxColumns value columns.
+float cell_matrix_width(const StepperSession& s, const TracedArray& a) {
+  const std::int64_t columns = std::min<std::int64_t>(a.shape[0], kMaxColumns);
+  const int digits = static_cast<int>(std::to_string(std::max<std::int64_t>({a.shape[0], s.elements().size(), 10})).size()) + 1;
+  const float cell = ImGui::CalcTextSize("0").x * static_cast<float>(digits) + 2 * ImGui::GetStyle().CellPadding.x + 2;
+  return ImGui::CalcTextSize("C iy\\ix ...").x + 2 * ImGui::GetStyle().CellPadding.x + static_cast<float>(columns) * cell;
+}
+
+// The controls, the line saying what was written last, then every array. A cell matrix (screen's
+// C) first keeps the rest at its right when the panel is that wide, so C and E are in view together;
+// the others flow, each beside the one before when it fits (`widths`: each array's width as last
+// drawn, 0 unknown); matrix rows are windowed to what fits above `bottom` (screen y: the end of the
+// panel's room).
+void draw_arrays(const StepperSession& s, const std::function<void()>& controls, float bottom, std::vector<float>& widths) {
+  const auto& arrays = s.stepper().trace().arrays();
+  if (arrays.empty()) {
+    controls();
+    ImGui::TextWrapped("%s keeps no arrays: it tests every pair i < j. Pick an element to see its tests.",
+                       s.algorithm().c_str());
+    return;
+  }
+  Marks marks;
+  const std::string written_text = mark_arrays(s, marks);
+  const auto written_line = [&] {
+    if (written_text.empty()) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, marks.write_is_current ? ImVec4(0.95f, 0.75f, 0.3f, 1.0f) : ImVec4(0.7f, 0.6f, 0.4f, 1.0f));
+    ImGui::TextWrapped("%s", written_text.c_str());
+    ImGui::PopStyleColor();
+    if (s.elements().dim == 3) ImGui::TextColored(kIndex, "%s", array_shapes_text(s).c_str());
+  };
+  constexpr float kBesideMinWidth = 360.0f;  // the controls, the written line and E's nine entries
+  ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(ImGui::GetStyle().CellPadding.x, 1.0f));  // more rows in view
+  std::size_t first = 0;
+  if (is_cell_matrix(arrays.front(), s.grid()) &&
+      ImGui::GetContentRegionAvail().x >= cell_matrix_width(s, arrays.front()) + kBesideMinWidth) {
+    ImGui::BeginGroup();
+    ImGui::PushID(0);
+    draw_matrix_array(s, marks, 0, bottom);
+    ImGui::PopID();
+    ImGui::EndGroup();
+    ImGui::SameLine(0, 2 * ImGui::GetStyle().ItemSpacing.x);
+    first = 1;
+  }
+  ImGui::BeginGroup();
+  controls();
+  written_line();
+  widths.resize(arrays.size(), 0.0f);
+  const float gap = 2 * ImGui::GetStyle().ItemSpacing.x;
+  const float right_edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  for (std::size_t a = first; a < arrays.size(); ++a) {
+    if (a > first && widths[a] > 0 && ImGui::GetItemRectMax().x + gap + widths[a] <= right_edge) ImGui::SameLine(0, gap);
+    ImGui::BeginGroup();
     ImGui::PushID(static_cast<int>(a));
     if (arrays[a].shape.size() >= 2) {
-      draw_matrix_array(s, marks, static_cast<int>(a));
+      draw_matrix_array(s, marks, static_cast<int>(a), bottom);
     } else {
       draw_row_array(s, marks, static_cast<int>(a));
     }
     ImGui::PopID();
+    ImGui::EndGroup();
+    widths[a] = ImGui::GetItemRectSize().x;
   }
+  ImGui::EndGroup();
+  ImGui::PopStyleVar();
 }
 
 class ArraysPanel final : public Panel {
@@ -327,6 +388,7 @@ class ArraysPanel final : public Panel {
   [[nodiscard]] PanelPlace place() const override { return PanelPlace::Bottom; }
   [[nodiscard]] bool open_by_default() const override { return false; }
   [[nodiscard]] float width() const override { return 560.0f; }
+  [[nodiscard]] bool part_of_stepping_layout() const override { return true; }
 
   void draw(UiContext& c) override {
     StepperSession& s = *session_;
@@ -336,14 +398,19 @@ class ArraysPanel final : public Panel {
       ImGui::TextDisabled("%s", idle_message(s).c_str());
       return;
     }
-    if (ImGui::Checkbox("book numbering (from 1)", &c.state.book_numbering)) s.book_numbering = c.state.book_numbering;
-    ImGui::SameLine();
-    int shown_focus = static_cast<int>(shown(s.focus_element, s.book_numbering));
-    ImGui::SetNextItemWidth(90);
-    if (ImGui::InputInt("element", &shown_focus)) {
-      const int k = s.book_numbering ? shown_focus - 1 : shown_focus;
-      s.focus_element = std::clamp<std::int32_t>(k, -1, static_cast<std::int32_t>(s.elements().size()) - 1);
-    }
+    const auto controls = [&] {
+      if (ImGui::Checkbox("book numbering (from 1)", &c.state.book_numbering)) s.book_numbering = c.state.book_numbering;
+      ImGui::SameLine();
+      int shown_focus = static_cast<int>(shown(s.focus_element, s.book_numbering));
+      ImGui::SetNextItemWidth(90);
+      if (ImGui::InputInt("element", &shown_focus)) {
+        const int k = s.book_numbering ? shown_focus - 1 : shown_focus;
+        s.focus_element = std::clamp<std::int32_t>(k, -1, static_cast<std::int32_t>(s.elements().size()) - 1);
+      }
+    };
+    // The end of the room the host gives the window's contents: matrices window their rows to it.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float bottom = ImGui::GetCursorScreenPos().y + c.room.height - ImGui::GetFrameHeight() - 2 * style.WindowPadding.y;
     const bool element = s.focus_element >= 0 && s.focus_element < s.elements().size();
     // A wide dock (a large display) puts the element beside the arrays, so the scene keeps its height.
     if (element && ImGui::GetContentRegionAvail().x >= 880.0f &&
@@ -352,13 +419,13 @@ class ArraysPanel final : public Panel {
       ImGui::TableSetupColumn("element", ImGuiTableColumnFlags_WidthStretch, 0.38f);
       ImGui::TableNextRow();
       ImGui::TableSetColumnIndex(0);
-      draw_arrays(s);
+      draw_arrays(s, controls, bottom, widths_);
       ImGui::TableSetColumnIndex(1);
       draw_element(s, s.focus_element);
       ImGui::EndTable();
       return;
     }
-    draw_arrays(s);
+    draw_arrays(s, controls, bottom, widths_);
     if (element) {
       ImGui::Separator();
       draw_element(s, s.focus_element);
@@ -367,6 +434,7 @@ class ArraysPanel final : public Panel {
 
  private:
   std::shared_ptr<StepperSession> session_;
+  std::vector<float> widths_;  // each array's width as last drawn: the flow puts it beside another when it fits
 };
 
 }  // namespace
