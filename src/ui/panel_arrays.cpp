@@ -32,14 +32,26 @@ const ImU32 kEarlierWrittenBg = IM_COL32(230, 170, 40, 90);
 const ImU32 kActiveBg = IM_COL32(40, 170, 150, 170);
 const ImU32 kFocusBg = IM_COL32(60, 110, 190, 170);
 
-// How many columns of an array of `length` entries fit the panel: values are at most as wide as the
-// largest index or, in an array of element ids, the largest id (`elements`), plus a sign; at least
-// 4, at most kMaxColumns.
-std::int64_t fit_columns(std::int64_t length, std::int64_t elements) {
-  const int digits = static_cast<int>(std::to_string(std::max<std::int64_t>({length, elements, 10})).size()) + 1;
-  const float cell = ImGui::CalcTextSize("0").x * static_cast<float>(digits) + 2 * ImGui::GetStyle().CellPadding.x + 2;
-  const float room = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("of 100000000").x - 8;
-  return std::clamp<std::int64_t>(static_cast<std::int64_t>(room / cell), 4, kMaxColumns);
+// The width kept for an array's value column: values are at most as wide as the largest index (in
+// book numbering, `length`) or, in an array of element ids, the largest id (`elements`), and -1.
+float column_width(std::int64_t length, std::int64_t elements) {
+  const int digits = static_cast<int>(std::to_string(std::max<std::int64_t>({length, elements, 10})).size());
+  return ImGui::CalcTextSize("0").x * static_cast<float>(digits) + 2 * ImGui::GetStyle().CellPadding.x + 2;
+}
+// The width kept for an array's label column: a row array's name, "index" or "of N" (`length`); a
+// matrix's, the longest its rows are named by.
+float label_width(const TracedArray& a, std::int64_t length) {
+  const float text = a.shape.size() >= 2 ? ImGui::CalcTextSize("[1] row iy-1 ...").x
+                                         : std::max({ImGui::CalcTextSize(a.name.c_str()).x, ImGui::CalcTextSize("index").x,
+                                                     ImGui::CalcTextSize(("of " + std::to_string(length)).c_str()).x});
+  return text + 2 * ImGui::GetStyle().CellPadding.x + 2;
+}
+
+// How many value columns of an array of `length` entries fit the panel beside its label (`label`
+// pixels): at least 4, at most kMaxColumns.
+std::int64_t fit_columns(std::int64_t length, std::int64_t elements, float label) {
+  const float room = ImGui::GetContentRegionAvail().x - label;
+  return std::clamp<std::int64_t>(static_cast<std::int64_t>(room / column_width(length, elements)), 4, kMaxColumns);
 }
 
 // What to highlight this frame.
@@ -102,7 +114,7 @@ void draw_row_array(const StepperSession& s, const Marks& m, int array) {
   const std::vector<std::int32_t>& values = s.stepper().state()[array];
   const auto length = static_cast<std::int64_t>(values.size());
   const auto [begin, end] =
-      window_range(length, focus_index(s, m, array, a), fit_columns(length, s.holds_elements(array) ? m.n : 0));
+      window_range(length, focus_index(s, m, array, a), fit_columns(length, s.holds_elements(array) ? m.n : 0, label_width(a, length)));
   const bool by_element = length == m.n && s.stepper().next_array_of(array) < 0;
   const int columns = static_cast<int>(end - begin) + 1;
   if (columns > 63 || !ImGui::BeginTable(a.name.c_str(), columns, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV))
@@ -166,7 +178,8 @@ void draw_matrix_array(const StepperSession& s, const Marks& m, int array, float
   const int row_dim = cells || index_is_selector(a, 1) ? 1 : 0, col_dim = 1 - row_dim;
   const auto [r0, r1] = window_range(a.shape[row_dim], f[row_dim], std::min(kMaxRows, rows_that_fit(a.shape[row_dim], bottom)));
   const auto [c0, c1] =
-      window_range(a.shape[col_dim], f[col_dim], fit_columns(a.shape[col_dim], s.holds_elements(array) ? m.n : 0));
+      window_range(a.shape[col_dim], f[col_dim],
+                   fit_columns(a.shape[col_dim], s.holds_elements(array) ? m.n : 0, label_width(a, a.shape[col_dim])));
   const bool book = s.book_numbering;
   if (depth > 1) ImGui::TextColored(kIndex, "slice [..][..][%lld]", static_cast<long long>(shown(fz, book)));
   const int columns = static_cast<int>(c1 - c0) + 1;
@@ -315,20 +328,22 @@ std::string mark_arrays(const StepperSession& s, Marks& marks) {
   return text;
 }
 
-// About how wide a cell matrix's table is: its label column and up to kMaxColumns value columns.
-float cell_matrix_width(const StepperSession& s, const TracedArray& a) {
-  const std::int64_t columns = std::min<std::int64_t>(a.shape[0], kMaxColumns);
-  const int digits = static_cast<int>(std::to_string(std::max<std::int64_t>({a.shape[0], s.elements().size(), 10})).size()) + 1;
-  const float cell = ImGui::CalcTextSize("0").x * static_cast<float>(digits) + 2 * ImGui::GetStyle().CellPadding.x + 2;
-  return ImGui::CalcTextSize("C iy\\ix ...").x + 2 * ImGui::GetStyle().CellPadding.x + static_cast<float>(columns) * cell;
+// The width array `array` asks for beside another, as fit_columns counts columns: all of them, or
+// for an array windowed anyway (longer than kMaxColumns) the window's first eight.
+float array_width(const StepperSession& s, const Marks& m, int array) {
+  const TracedArray& a = s.stepper().trace().arrays()[static_cast<std::size_t>(array)];
+  const std::size_t col_dim = a.shape.size() < 2 ? 0 : is_cell_matrix(a, s.grid()) || index_is_selector(a, 1) ? 0 : 1;
+  const std::int64_t length = a.shape.size() < 2 ? static_cast<std::int64_t>(s.stepper().state()[static_cast<std::size_t>(array)].size())
+                                                 : a.shape[col_dim];
+  const std::int64_t columns = length <= kMaxColumns ? length : 8;
+  return label_width(a, length) + static_cast<float>(columns) * column_width(length, s.holds_elements(array) ? m.n : 0);
 }
 
 // The controls, the line saying what was written last, then every array. A cell matrix (screen's
 // C) first keeps the rest at its right when the panel is that wide, so C and E are in view together;
-// the others flow, each beside the one before when it fits (`widths`: each array's width as last
-// drawn, 0 unknown); matrix rows are windowed to what fits above `bottom` (screen y: the end of the
-// panel's room).
-void draw_arrays(const StepperSession& s, const std::function<void()>& controls, float bottom, std::vector<float>& widths) {
+// the others flow, each beside the one before when all its columns fit there; matrix rows are
+// windowed to what fits above `bottom` (screen y: the end of the panel's room).
+void draw_arrays(const StepperSession& s, const std::function<void()>& controls, float bottom) {
   const auto& arrays = s.stepper().trace().arrays();
   if (arrays.empty()) {
     controls();
@@ -348,8 +363,7 @@ void draw_arrays(const StepperSession& s, const std::function<void()>& controls,
   constexpr float kBesideMinWidth = 360.0f;  // the controls, the written line and E's nine entries
   ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(ImGui::GetStyle().CellPadding.x, 1.0f));  // more rows in view
   std::size_t first = 0;
-  if (is_cell_matrix(arrays.front(), s.grid()) &&
-      ImGui::GetContentRegionAvail().x >= cell_matrix_width(s, arrays.front()) + kBesideMinWidth) {
+  if (is_cell_matrix(arrays.front(), s.grid()) && ImGui::GetContentRegionAvail().x >= array_width(s, marks, 0) + kBesideMinWidth) {
     ImGui::BeginGroup();
     ImGui::PushID(0);
     draw_matrix_array(s, marks, 0, bottom);
@@ -361,11 +375,10 @@ void draw_arrays(const StepperSession& s, const std::function<void()>& controls,
   ImGui::BeginGroup();
   controls();
   written_line();
-  widths.resize(arrays.size(), 0.0f);
   const float gap = 2 * ImGui::GetStyle().ItemSpacing.x;
-  const float right_edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  const float right_edge = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;  // the window's or a table cell's
   for (std::size_t a = first; a < arrays.size(); ++a) {
-    if (a > first && widths[a] > 0 && ImGui::GetItemRectMax().x + gap + widths[a] <= right_edge) ImGui::SameLine(0, gap);
+    if (a > first && ImGui::GetItemRectMax().x + gap + array_width(s, marks, static_cast<int>(a)) <= right_edge) ImGui::SameLine(0, gap);
     ImGui::BeginGroup();
     ImGui::PushID(static_cast<int>(a));
     if (arrays[a].shape.size() >= 2) {
@@ -375,7 +388,6 @@ void draw_arrays(const StepperSession& s, const std::function<void()>& controls,
     }
     ImGui::PopID();
     ImGui::EndGroup();
-    widths[a] = ImGui::GetItemRectSize().x;
   }
   ImGui::EndGroup();
   ImGui::PopStyleVar();
@@ -419,13 +431,13 @@ class ArraysPanel final : public Panel {
       ImGui::TableSetupColumn("element", ImGuiTableColumnFlags_WidthStretch, 0.38f);
       ImGui::TableNextRow();
       ImGui::TableSetColumnIndex(0);
-      draw_arrays(s, controls, bottom, widths_);
+      draw_arrays(s, controls, bottom);
       ImGui::TableSetColumnIndex(1);
       draw_element(s, s.focus_element);
       ImGui::EndTable();
       return;
     }
-    draw_arrays(s, controls, bottom, widths_);
+    draw_arrays(s, controls, bottom);
     if (element) {
       ImGui::Separator();
       draw_element(s, s.focus_element);
@@ -434,7 +446,6 @@ class ArraysPanel final : public Panel {
 
  private:
   std::shared_ptr<StepperSession> session_;
-  std::vector<float> widths_;  // each array's width as last drawn: the flow puts it beside another when it fits
 };
 
 }  // namespace
