@@ -173,7 +173,8 @@ void UiHost::draw_menu(UiContext& ctx) {
 
 // Decides which panels of one column are collapsed to their title bars: none while the column fits
 // `available` pixels, else those that joined it for the stepping layout first, then the lowest
-// priority first (the lower one of equals first), never one the user expanded or collapsed by hand. Heights are last frame's, so a change settles in a frame.
+// priority first (the lower one of equals first), never one the user expanded or collapsed by
+// hand. Heights are last frame's, so a change settles in a frame.
 void UiHost::fit_column(PanelPlace place, const std::vector<std::size_t>& shown, float available) {
   const float title = ImGui::GetFrameHeight();
   float total = 0;
@@ -251,7 +252,7 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
     const float banner = insets_ ? static_cast<float>(insets_->top) - menu : 0.0f;
     const float scene_w = dock_x1 - dock_x0 + 2 * kGap;
     const float scene_h = kSteppingSceneShare * display.x * display.y / std::max(scene_w, 1.0f);
-    dock_max_h = std::clamp(display.y - menu - banner - scene_h - 2 * kGap, 3.0f * ImGui::GetFrameHeight(), dock_max_h);
+    dock_max_h = std::min(dock_max_h, std::max(display.y - menu - banner - scene_h - 2 * kGap, 3.0f * ImGui::GetFrameHeight()));
   }
   float y_left = top, y_right = top, dock_y = display.y - kGap, dock_h = 0;
   covered_.assign(1, render::PixelRect{0, 0, display.x, menu});
