@@ -23,6 +23,12 @@ constexpr const char* kRestartPopup = "Restart the run?";
 constexpr float kColumnsMaxShare = 0.52f;
 constexpr float kMinColumnWidth = 200.0f;
 constexpr float kDockMaxShare = 0.45f;
+// The stepping layout: its one column is this narrow (the panels wrap), and the dock takes no more
+// than leaves the scene this share of the window (the Arrays window their rows to it).
+constexpr float kSteppingColumnWidth = 320.0f;
+constexpr float kSteppingSceneShare = 0.5f;
+
+PanelPlace place_in(const Panel& panel, bool stepping) { return stepping ? panel.stepping_place() : panel.place(); }
 
 // Narrows the columns (0: not shown) so that both with their gaps take at most kColumnsMaxShare
 // of `display_w`: the wider one gives way first, down to the other's width, then both alike.
@@ -102,13 +108,25 @@ bool UiHost::is_open(const Panel& panel, const UiState& state) {
   return it == state.panel_open.end() ? panel.open_by_default() : it->second;
 }
 
+bool UiHost::stepping_layout(const UiState& state) const {
+  bool any = false;
+  for (const auto& p : panels_) {
+    if (!p->part_of_stepping_layout()) continue;
+    if (!is_open(*p, state)) return false;
+    any = true;
+  }
+  return any;
+}
+
 render::ScreenInsets UiHost::insets(const UiState& state) const {
   if (insets_) return *insets_;
   render::ScreenInsets in;
+  const bool stepping = stepping_layout(state);
   for (const auto& p : panels_) {
     if (!is_open(*p, state)) continue;
-    if (p->place() == PanelPlace::Left) in.left = std::max<double>(in.left, p->width() + 2 * kGap);
-    if (p->place() == PanelPlace::Right) in.right = std::max<double>(in.right, p->width() + 2 * kGap);
+    const double w = (stepping ? std::min(p->width(), kSteppingColumnWidth) : p->width()) + 2 * kGap;
+    if (place_in(*p, stepping) == PanelPlace::Left) in.left = std::max(in.left, w);
+    if (place_in(*p, stepping) == PanelPlace::Right) in.right = std::max(in.right, w);
   }
   return in;
 }
@@ -154,20 +172,24 @@ void UiHost::draw_menu(UiContext& ctx) {
 }
 
 // Decides which panels of one column are collapsed to their title bars: none while the column fits
-// `available` pixels, else the lowest priority first (the lower one of equals first), never one the
-// user expanded or collapsed by hand. Heights are last frame's, so a change settles in a frame.
+// `available` pixels, else those that joined it for the stepping layout first, then the lowest
+// priority first (the lower one of equals first), never one the user expanded or collapsed by
+// hand. Heights are last frame's, so a change settles in a frame.
 void UiHost::fit_column(PanelPlace place, const std::vector<std::size_t>& shown, float available) {
   const float title = ImGui::GetFrameHeight();
   float total = 0;
   std::vector<std::size_t> candidates;
   for (const std::size_t i : shown) {
-    if (panels_[i]->place() != place || panels_[i]->takes_room_left()) continue;
+    if (place_in(*panels_[i], stepping_) != place || panels_[i]->takes_room_left()) continue;
     Slot& s = slots_[i];
     s.collapsed = s.pin == Slot::Pin::Collapsed;
     total += (s.collapsed ? title : std::max(s.expanded_height, title)) + kGap;
     if (s.pin == Slot::Pin::None) candidates.push_back(i);
   }
+  // Panels that joined the column for the stepping layout give way before its own.
+  const auto joined = [&](std::size_t i) { return place_in(*panels_[i], stepping_) != panels_[i]->place(); };
   std::stable_sort(candidates.begin(), candidates.end(), [&](std::size_t a, std::size_t b) {
+    if (joined(a) != joined(b)) return joined(a);
     return panels_[a]->priority() != panels_[b]->priority() ? panels_[a]->priority() < panels_[b]->priority() : a > b;
   });
   for (const std::size_t i : candidates) {
@@ -179,10 +201,11 @@ void UiHost::fit_column(PanelPlace place, const std::vector<std::size_t>& shown,
 
 void UiHost::fit_columns_on_change(const std::vector<std::size_t>& shown, float available) {
   constexpr int kRefitFrames = 4;  // an auto-sized window knows its height by its second or third frame
-  std::vector<int> key{static_cast<int>(available)};
+  std::vector<int> key{static_cast<int>(available), stepping_ ? 1 : 0};
   for (const std::size_t i : shown) {
     const Panel& p = *panels_[i];
-    if ((p.place() == PanelPlace::Left || p.place() == PanelPlace::Right) && !p.takes_room_left())
+    const PanelPlace place = place_in(p, stepping_);
+    if ((place == PanelPlace::Left || place == PanelPlace::Right) && !p.takes_room_left())
       key.push_back(static_cast<int>(i) * 3 + static_cast<int>(slots_[i].pin));
   }
   if (key != layout_key_) {
@@ -201,16 +224,19 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float menu = ImGui::GetFrameHeight();
   const float top = menu + kGap;
-  // The columns are as wide as their widest open panel, within half the display's width.
+  // The columns are as wide as their widest open panel, within half the display's width (one
+  // narrower column while stepping).
+  stepping_ = stepping_layout(ctx.state);
   std::vector<std::size_t> shown;
   float left_w = 0, right_w = 0;
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     const Panel& p = *panels_[i];
     if (!is_open(p, ctx.state) || !p.visible(ctx)) continue;
     shown.push_back(i);
-    if (p.place() == PanelPlace::Left) left_w = std::max(left_w, p.width());
-    if (p.place() == PanelPlace::Right) right_w = std::max(right_w, p.width());
+    if (place_in(p, stepping_) == PanelPlace::Left) left_w = std::max(left_w, p.width());
+    if (place_in(p, stepping_) == PanelPlace::Right) right_w = std::max(right_w, p.width());
   }
+  if (stepping_) right_w = std::min(right_w, kSteppingColumnWidth);
   cap_column_widths(display.x, left_w, right_w);
   std::stable_sort(shown.begin(), shown.end(),
                    [&](std::size_t a, std::size_t b) { return panels_[a]->column_order() < panels_[b]->column_order(); });
@@ -219,7 +245,15 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
   // least 55% of the height below the menu (its panels scroll).
   const float dock_x0 = left_w > 0 ? left_w + 2 * kGap : kGap;
   const float dock_x1 = display.x - (right_w > 0 ? right_w + 2 * kGap : kGap);
-  const float dock_max_h = kDockMaxShare * (display.y - top);
+  float dock_max_h = kDockMaxShare * (display.y - top);
+  if (stepping_) {
+    // The scene's rectangle (between the columns, under the menu and the banner, above the dock)
+    // keeps kSteppingSceneShare of the display; the dock's last gap and the inset's own are its.
+    const float banner = insets_ ? static_cast<float>(insets_->top) - menu : 0.0f;
+    const float scene_w = dock_x1 - dock_x0 + 2 * kGap;
+    const float scene_h = kSteppingSceneShare * display.x * display.y / std::max(scene_w, 1.0f);
+    dock_max_h = std::min(dock_max_h, std::max(display.y - menu - banner - scene_h - 2 * kGap, 3.0f * ImGui::GetFrameHeight()));
+  }
   float y_left = top, y_right = top, dock_y = display.y - kGap, dock_h = 0;
   covered_.assign(1, render::PixelRect{0, 0, display.x, menu});
   // Opaque panels and title bars: the scene under them (a heat map, pair lines) never shows through the text.
@@ -231,9 +265,11 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
   for (const std::size_t i : shown) {
     Panel& p = *panels_[i];
     Slot& slot = slots_[i];
+    const PanelPlace place = place_in(p, stepping_);
+    ctx.room = PanelRoom{display.y, stepping_};
     ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings;
     float* column_y = nullptr;
-    switch (p.place()) {
+    switch (place) {
       case PanelPlace::Floating:
         ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f - p.width() * 0.5f, top + 40.0f), ImGuiCond_FirstUseEver);
         ImGui::SetNextWindowSizeConstraints(ImVec2(p.width(), 0), ImVec2(p.width(), FLT_MAX));
@@ -241,18 +277,20 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
       case PanelPlace::Bottom: {
         const float w = std::max(dock_x1 - dock_x0, 200.0f);
         ImGui::SetNextWindowPos(ImVec2(dock_x0, dock_y), ImGuiCond_Always, ImVec2(0, 1));
-        ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0), ImVec2(w, std::max(dock_max_h - dock_h, 60.0f)));
+        ctx.room.height = std::max(dock_max_h - dock_h, 60.0f);
+        ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0), ImVec2(w, ctx.room.height));
         flags |= ImGuiWindowFlags_NoMove;
         break;
       }
       case PanelPlace::Left:
       case PanelPlace::Right: {
-        const bool left = p.place() == PanelPlace::Left;
+        const bool left = place == PanelPlace::Left;
         column_y = left ? &y_left : &y_right;
         const float w = left ? left_w : right_w;
         ImGui::SetNextWindowPos(ImVec2(left ? kGap : display.x - kGap - w, *column_y), ImGuiCond_Always);
         // No lower than the display: a panel that grew (or came) after the collapses were decided scrolls.
         const float room = std::max(display.y - *column_y - kGap, 3.0f * ImGui::GetFrameHeight());
+        ctx.room.height = room;
         ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0), ImVec2(w, room));
         if (p.takes_room_left()) slot.collapsed = slot.pin == Slot::Pin::Collapsed;  // the host never collapses it
         ImGui::SetNextWindowCollapsed(slot.collapsed, ImGuiCond_Always);
@@ -280,7 +318,7 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
       else if (title_clicked) slot.pin = Slot::Pin::Expanded;
       if (!collapsed) slot.expanded_height = std::max(size.y, natural_height);
       *column_y += size.y + kGap;
-    } else if (p.place() == PanelPlace::Bottom) {
+    } else if (place == PanelPlace::Bottom) {
       dock_y -= size.y + kGap;
       dock_h += size.y + kGap;
     }

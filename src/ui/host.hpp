@@ -1,9 +1,10 @@
 // nbscope ui: the host of all panels. Draws the menu bar and each open panel's window in its place
 // — a column at the left or right edge, the bottom dock between them, or floating — collapsing the
-// least important panels of a column that would run off the display; routes keys (P pause, O step,
-// R restart, Home, overlay letters, 1..N algorithms) and scene mouse input (left: select and drag a
-// body, right-drag: pan, wheel: zoom about the cursor); reports the part of the display the panels
-// leave to the scene.
+// least important panels of a column that would run off the display, and, with the Stepper and the
+// Arrays open, a stepping layout (one column, the scene at least half the window); routes keys (P
+// pause, O step, R restart, Home, overlay letters, 1..N algorithms) and scene mouse input (left:
+// select and drag a body, right-drag: pan, wheel: zoom about the cursor); reports the part of the
+// display the panels leave to the scene.
 //
 // Index: UiHost (panels, frame, insets) | private: column fitting, keys, mouse, menu.
 #pragma once
@@ -53,6 +54,8 @@ class UiHost {
     bool collapsed = false;     // the host's decision this frame
     Pin pin = Pin::None;        // the user's own click on its title bar wins over the host
   };
+  // Whether `state` opens every panel of the stepping layout (Panel::part_of_stepping_layout).
+  [[nodiscard]] bool stepping_layout(const UiState& state) const;
   void fit_column(PanelPlace place, const std::vector<std::size_t>& shown, float available);
   // Decides the columns' collapses again only when the panels they show (but Selection), the
   // user's pins or the display's height change, and for a few frames after (new panels size
@@ -73,6 +76,7 @@ class UiHost {
   std::array<std::int64_t, 2> restart_loses_{};  // the frames and violations the asked restart drops
   std::vector<int> layout_key_;  // what the columns' collapses were last decided for
   int refit_frames_ = 0;         // frames left to decide them again in
+  bool stepping_ = false;        // this frame's layout is the stepping layout
 };
 
 }  // namespace nbscope::ui

@@ -72,15 +72,14 @@ ZLists zlists_from_layers(const LayerSlice& slice) {
   return z;
 }
 
-std::string zlist_text(const ZLists& z, std::int32_t layer, bool book, const std::vector<std::int64_t>* ids,
-                       std::size_t max_shown) {
+std::string zlist_text(const ZLists& z, std::int32_t layer, bool book, std::size_t max_shown) {
   if (layer < 0 || static_cast<std::size_t>(layer) >= z.heads.size()) return "";
   const auto iz = static_cast<std::size_t>(layer);
   const std::vector<std::int32_t>& chain = z.chains[iz];
-  std::string text = "C[" + std::to_string(shown(layer, book)) + "] = " + std::to_string(element_number(z.heads[iz], book, ids));
+  std::string text = "C[" + std::to_string(shown(layer, book)) + "] = " + std::to_string(shown(z.heads[iz], book));
   if (chain.empty()) return text + ": empty";
   text += ": ";
-  for (std::size_t i = 0; i < chain.size() && i < max_shown; ++i) text += std::to_string(element_number(chain[i], book, ids)) + " -> ";
+  for (std::size_t i = 0; i < chain.size() && i < max_shown; ++i) text += std::to_string(shown(chain[i], book)) + " -> ";
   return text + (chain.size() > max_shown ? "..." : "-1");
 }
 

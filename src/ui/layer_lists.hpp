@@ -36,9 +36,9 @@ struct ZLists {
 // The z-lists as the book's first loop builds them from the layers of `slice` (k = 0..N-1, each
 // pushed at the front: C[iz] holds the layer's highest index, Z links downwards).
 [[nodiscard]] ZLists zlists_from_layers(const LayerSlice& slice);
-// "C[2] = 17: 17 -> 12 -> 3 -> -1", the chain cut with "..." past `max_shown` elements, elements
-// named by ui::element_number (a dump's atom ids, else rows in the chosen numbering).
-[[nodiscard]] std::string zlist_text(const ZLists& z, std::int32_t layer, bool book, const std::vector<std::int64_t>* ids,
-                                     std::size_t max_shown = 12);
+// "C[2] = 17: 17 -> 12 -> 3 -> -1", the chain cut with "..." past `max_shown` elements. Elements
+// are rows in the chosen numbering, as the arrays hold them (a dump's atom ids too: the Arrays and
+// the Stepper say the same).
+[[nodiscard]] std::string zlist_text(const ZLists& z, std::int32_t layer, bool book, std::size_t max_shown = 12);
 
 }  // namespace nbscope::ui

@@ -209,12 +209,19 @@ struct UiRequests {
   friend bool operator==(const UiRequests&, const UiRequests&) = default;
 };
 
+// What the host lets one panel's window take this frame.
+struct PanelRoom {
+  float height = 1e9f;   // the most its window may be tall (a docked panel windows its rows to it)
+  bool stepping = false;  // the stepping layout (the Stepper open): show the essentials only
+};
+
 // Everything a panel gets each frame.
 struct UiContext {
   const SimView& sim;
   UiState& state;
   UiRequests& requests;
   render::Camera& camera;
+  PanelRoom room{};  // set by the host before each panel draws
 };
 
 }  // namespace nbscope::ui

@@ -24,6 +24,11 @@ class Panel {
   // Window title; also its key in the settings file.
   [[nodiscard]] virtual const char* title() const = 0;
   [[nodiscard]] virtual PanelPlace place() const { return PanelPlace::Left; }
+  // Its place in the stepping layout (the Stepper and the Arrays open): one column at the right, so
+  // the scene keeps half the window above the Arrays; the left column's panels join it.
+  [[nodiscard]] virtual PanelPlace stepping_place() const { return place() == PanelPlace::Left ? PanelPlace::Right : place(); }
+  // True: the host uses the stepping layout while every panel saying so is open (Stepper, Arrays).
+  [[nodiscard]] virtual bool part_of_stepping_layout() const { return false; }
   [[nodiscard]] virtual bool open_by_default() const { return true; }
   // Width of the window in pixels (columns share the widest; the bottom dock spans the space between them).
   [[nodiscard]] virtual float width() const { return 250.0f; }

@@ -4,13 +4,15 @@
 // an empty list or the end of one, "·" for an entry not written yet (its contents mean nothing),
 // the entry just written highlighted with its old value, large arrays windowed around the active
 // entries (what the current operation reads or writes, the list of the cell and row it works on,
-// the element k), and an element filter that answers "where is k?". It sits in the bottom dock.
+// the element k, and to the rows the panel's room holds), and an element filter that answers "where
+// is k?". It sits in the bottom dock; a cell matrix (screen's C) keeps the other arrays at its right.
 //
 // Index: cell colours | column fitting | Marks and window focus | row and matrix arrays | element
 // section | ArraysPanel.
 #include <imgui.h>
 
 #include <algorithm>
+#include <functional>
 #include <string>
 
 #include "io/plural.hpp"
@@ -30,14 +32,26 @@ const ImU32 kEarlierWrittenBg = IM_COL32(230, 170, 40, 90);
 const ImU32 kActiveBg = IM_COL32(40, 170, 150, 170);
 const ImU32 kFocusBg = IM_COL32(60, 110, 190, 170);
 
-// How many columns of an array of `length` entries fit the panel: values are at most as wide as the
-// largest index or, in an array of element ids, the largest id (`elements`), plus a sign; at least
-// 4, at most kMaxColumns.
-std::int64_t fit_columns(std::int64_t length, std::int64_t elements) {
-  const int digits = static_cast<int>(std::to_string(std::max<std::int64_t>({length, elements, 10})).size()) + 1;
-  const float cell = ImGui::CalcTextSize("0").x * static_cast<float>(digits) + 2 * ImGui::GetStyle().CellPadding.x + 2;
-  const float room = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("of 100000000").x - 8;
-  return std::clamp<std::int64_t>(static_cast<std::int64_t>(room / cell), 4, kMaxColumns);
+// The width kept for an array's value column: values are at most as wide as the largest index (in
+// book numbering, `length`) or, in an array of element ids, the largest id (`elements`), and -1.
+float column_width(std::int64_t length, std::int64_t elements) {
+  const int digits = static_cast<int>(std::to_string(std::max<std::int64_t>({length, elements, 10})).size());
+  return ImGui::CalcTextSize("0").x * static_cast<float>(digits) + 2 * ImGui::GetStyle().CellPadding.x + 2;
+}
+// The width kept for an array's label column: a row array's name, "index" or "of N" (`length`); a
+// matrix's, the longest its rows are named by.
+float label_width(const TracedArray& a, std::int64_t length) {
+  const float text = a.shape.size() >= 2 ? ImGui::CalcTextSize("[1] row iy-1 ...").x
+                                         : std::max({ImGui::CalcTextSize(a.name.c_str()).x, ImGui::CalcTextSize("index").x,
+                                                     ImGui::CalcTextSize(("of " + std::to_string(length)).c_str()).x});
+  return text + 2 * ImGui::GetStyle().CellPadding.x + 2;
+}
+
+// How many value columns of an array of `length` entries fit the panel beside its label (`label`
+// pixels): at least 4, at most kMaxColumns.
+std::int64_t fit_columns(std::int64_t length, std::int64_t elements, float label) {
+  const float room = ImGui::GetContentRegionAvail().x - label;
+  return std::clamp<std::int64_t>(static_cast<std::int64_t>(room / column_width(length, elements)), 4, kMaxColumns);
 }
 
 // What to highlight this frame.
@@ -100,7 +114,7 @@ void draw_row_array(const StepperSession& s, const Marks& m, int array) {
   const std::vector<std::int32_t>& values = s.stepper().state()[array];
   const auto length = static_cast<std::int64_t>(values.size());
   const auto [begin, end] =
-      window_range(length, focus_index(s, m, array, a), fit_columns(length, s.holds_elements(array) ? m.n : 0));
+      window_range(length, focus_index(s, m, array, a), fit_columns(length, s.holds_elements(array) ? m.n : 0, label_width(a, length)));
   const bool by_element = length == m.n && s.stepper().next_array_of(array) < 0;
   const int columns = static_cast<int>(end - begin) + 1;
   if (columns > 63 || !ImGui::BeginTable(a.name.c_str(), columns, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV))
@@ -139,11 +153,21 @@ const char* const* nbs_row_names(const StepperSession& s, const TracedArray& a) 
   return nullptr;
 }
 
+// How many of a matrix's `rows` fit between the cursor and `bottom` (screen y) under its header
+// row: all of them, else those that leave a line for "... N more rows"; at least 3.
+std::int64_t rows_that_fit(std::int64_t rows, float bottom) {
+  const float row = ImGui::GetTextLineHeight() + 2 * ImGui::GetStyle().CellPadding.y;
+  const float room = bottom - ImGui::GetCursorScreenPos().y;
+  if (static_cast<float>(rows + 1) * row <= room) return rows;
+  return std::max<std::int64_t>(static_cast<std::int64_t>((room - ImGui::GetTextLineHeightWithSpacing()) / row) - 1, 3);
+}
+
 // A 2D array (or the slice of a 3D one at the focus's last index) as a matrix: rows are the first
 // index, columns the second, except that a cell matrix (screen's C[ix][iy], eq. 3.31) is drawn as the
 // scene shows its cells, ix across and iy upwards, and an array whose second index only picks one of a
 // few parallel arrays (the tree's child[m][0/1]) one row per choice, so it reads like a next array.
-void draw_matrix_array(const StepperSession& s, const Marks& m, int array) {
+// Its rows are windowed to those that fit above `bottom` (screen y), at most kMaxRows.
+void draw_matrix_array(const StepperSession& s, const Marks& m, int array, float bottom) {
   const TracedArray& a = s.stepper().trace().arrays()[array];
   const std::vector<std::int32_t>& values = s.stepper().state()[array];
   const std::int64_t depth = a.shape.size() == 3 ? a.shape[2] : 1;
@@ -152,9 +176,10 @@ void draw_matrix_array(const StepperSession& s, const Marks& m, int array) {
   const std::int64_t f[2] = {focus / depth / a.shape[1], (focus / depth) % a.shape[1]};
   const bool cells = is_cell_matrix(a, s.grid());
   const int row_dim = cells || index_is_selector(a, 1) ? 1 : 0, col_dim = 1 - row_dim;
-  const auto [r0, r1] = window_range(a.shape[row_dim], f[row_dim], kMaxRows);
+  const auto [r0, r1] = window_range(a.shape[row_dim], f[row_dim], std::min(kMaxRows, rows_that_fit(a.shape[row_dim], bottom)));
   const auto [c0, c1] =
-      window_range(a.shape[col_dim], f[col_dim], fit_columns(a.shape[col_dim], s.holds_elements(array) ? m.n : 0));
+      window_range(a.shape[col_dim], f[col_dim],
+                   fit_columns(a.shape[col_dim], s.holds_elements(array) ? m.n : 0, label_width(a, a.shape[col_dim])));
   const bool book = s.book_numbering;
   if (depth > 1) ImGui::TextColored(kIndex, "slice [..][..][%lld]", static_cast<long long>(shown(fz, book)));
   const int columns = static_cast<int>(c1 - c0) + 1;
@@ -269,24 +294,20 @@ void mark_walk(const StepperSession& s, Marks& m) {
   if (e->op == TraceOp::TestPair && next >= 0) m.active[1] = {next, e->other};
 }
 
-// The line saying what was written last, then every array.
-void draw_arrays(const StepperSession& s) {
+// What to highlight: the last write and its line above the arrays (returned, "" when nothing was
+// written yet), the walk, the lists of the cell, row and layer the current operation works on, its element.
+std::string mark_arrays(const StepperSession& s, Marks& marks) {
   const Stepper& st = s.stepper();
   const auto& arrays = st.trace().arrays();
-  if (arrays.empty()) {
-    ImGui::TextWrapped("%s keeps no arrays: it tests every pair i < j. Pick an element to see its tests.",
-                       s.algorithm().c_str());
-    return;
-  }
-  Marks marks;
   marks.focus = s.focus_element;
   marks.n = s.elements().size();
+  std::string text;
   if (const auto w = st.last_write_event()) {
     const TraceEvent& e = st.events()[*w];
     marks.writes = e.writes;
     marks.write_count = std::min<int>(e.write_count, 2);
     marks.write_is_current = *w + 1 == st.position();
-    std::string text = marks.write_is_current ? "just written: " : "last written (operation " + std::to_string(*w + 1) + "): ";
+    text = marks.write_is_current ? "just written: " : "last written (operation " + std::to_string(*w + 1) + "): ";
     for (int i = 0; i < marks.write_count; ++i) {
       const ArrayWrite& a = e.writes[i];
       text += (i > 0 ? ",  " : "") + entry_name(arrays[a.array], a.index, s.book_numbering) + " = " +
@@ -295,13 +316,8 @@ void draw_arrays(const StepperSession& s) {
                                                      : std::string("unset")) +
               ")";
     }
-    ImGui::PushStyleColor(ImGuiCol_Text, marks.write_is_current ? ImVec4(0.95f, 0.75f, 0.3f, 1.0f) : ImVec4(0.7f, 0.6f, 0.4f, 1.0f));
-    ImGui::TextWrapped("%s", text.c_str());
-    ImGui::PopStyleColor();
   }
-  if (s.elements().dim == 3) ImGui::TextColored(kIndex, "%s", array_shapes_text(s).c_str());
   mark_walk(s, marks);
-  // The lists of the cell, row and layer the current operation works on, and its element.
   const LoopVars v = st.loop_vars();
   marks.k = v.k;
   const std::int32_t keys[3][3] = {{v.ix, v.iy, v.iz}, {-1, v.iy, v.iz}, {-1, -1, v.iz}};
@@ -309,15 +325,72 @@ void draw_arrays(const StepperSession& s) {
     if (key[0] < 0 && key[1] < 0 && key[2] < 0) continue;
     if (const auto l = s.list_of_cell(key)) marks.lists.emplace_back(l->heads, l->list);
   }
-  for (std::size_t a = 0; a < arrays.size(); ++a) {
+  return text;
+}
+
+// The width array `array` asks for beside another, as fit_columns counts columns: all of them, or
+// for an array windowed anyway (longer than kMaxColumns) the window's first eight.
+float array_width(const StepperSession& s, const Marks& m, int array) {
+  const TracedArray& a = s.stepper().trace().arrays()[static_cast<std::size_t>(array)];
+  const std::size_t col_dim = a.shape.size() < 2 ? 0 : is_cell_matrix(a, s.grid()) || index_is_selector(a, 1) ? 0 : 1;
+  const std::int64_t length = a.shape.size() < 2 ? static_cast<std::int64_t>(s.stepper().state()[static_cast<std::size_t>(array)].size())
+                                                 : a.shape[col_dim];
+  const std::int64_t columns = length <= kMaxColumns ? length : 8;
+  return label_width(a, length) + static_cast<float>(columns) * column_width(length, s.holds_elements(array) ? m.n : 0);
+}
+
+// The controls, the line saying what was written last, then every array. A cell matrix (screen's
+// C) first keeps the rest at its right when the panel is that wide, so C and E are in view together;
+// the others flow, each beside the one before when all its columns fit there; matrix rows are
+// windowed to what fits above `bottom` (screen y: the end of the panel's room).
+void draw_arrays(const StepperSession& s, const std::function<void()>& controls, float bottom) {
+  const auto& arrays = s.stepper().trace().arrays();
+  if (arrays.empty()) {
+    controls();
+    ImGui::TextWrapped("%s keeps no arrays: it tests every pair i < j. Pick an element to see its tests.",
+                       s.algorithm().c_str());
+    return;
+  }
+  Marks marks;
+  const std::string written_text = mark_arrays(s, marks);
+  const auto written_line = [&] {
+    if (written_text.empty()) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, marks.write_is_current ? ImVec4(0.95f, 0.75f, 0.3f, 1.0f) : ImVec4(0.7f, 0.6f, 0.4f, 1.0f));
+    ImGui::TextWrapped("%s", written_text.c_str());
+    ImGui::PopStyleColor();
+    if (s.elements().dim == 3) ImGui::TextColored(kIndex, "%s", array_shapes_text(s).c_str());
+  };
+  constexpr float kBesideMinWidth = 360.0f;  // the controls, the written line and E's nine entries
+  ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(ImGui::GetStyle().CellPadding.x, 1.0f));  // more rows in view
+  std::size_t first = 0;
+  if (is_cell_matrix(arrays.front(), s.grid()) && ImGui::GetContentRegionAvail().x >= array_width(s, marks, 0) + kBesideMinWidth) {
+    ImGui::BeginGroup();
+    ImGui::PushID(0);
+    draw_matrix_array(s, marks, 0, bottom);
+    ImGui::PopID();
+    ImGui::EndGroup();
+    ImGui::SameLine(0, 2 * ImGui::GetStyle().ItemSpacing.x);
+    first = 1;
+  }
+  ImGui::BeginGroup();
+  controls();
+  written_line();
+  const float gap = 2 * ImGui::GetStyle().ItemSpacing.x;
+  const float right_edge = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;  // the window's or a table cell's
+  for (std::size_t a = first; a < arrays.size(); ++a) {
+    if (a > first && ImGui::GetItemRectMax().x + gap + array_width(s, marks, static_cast<int>(a)) <= right_edge) ImGui::SameLine(0, gap);
+    ImGui::BeginGroup();
     ImGui::PushID(static_cast<int>(a));
     if (arrays[a].shape.size() >= 2) {
-      draw_matrix_array(s, marks, static_cast<int>(a));
+      draw_matrix_array(s, marks, static_cast<int>(a), bottom);
     } else {
       draw_row_array(s, marks, static_cast<int>(a));
     }
     ImGui::PopID();
+    ImGui::EndGroup();
   }
+  ImGui::EndGroup();
+  ImGui::PopStyleVar();
 }
 
 class ArraysPanel final : public Panel {
@@ -327,6 +400,7 @@ class ArraysPanel final : public Panel {
   [[nodiscard]] PanelPlace place() const override { return PanelPlace::Bottom; }
   [[nodiscard]] bool open_by_default() const override { return false; }
   [[nodiscard]] float width() const override { return 560.0f; }
+  [[nodiscard]] bool part_of_stepping_layout() const override { return true; }
 
   void draw(UiContext& c) override {
     StepperSession& s = *session_;
@@ -336,14 +410,19 @@ class ArraysPanel final : public Panel {
       ImGui::TextDisabled("%s", idle_message(s).c_str());
       return;
     }
-    if (ImGui::Checkbox("book numbering (from 1)", &c.state.book_numbering)) s.book_numbering = c.state.book_numbering;
-    ImGui::SameLine();
-    int shown_focus = static_cast<int>(shown(s.focus_element, s.book_numbering));
-    ImGui::SetNextItemWidth(90);
-    if (ImGui::InputInt("element", &shown_focus)) {
-      const int k = s.book_numbering ? shown_focus - 1 : shown_focus;
-      s.focus_element = std::clamp<std::int32_t>(k, -1, static_cast<std::int32_t>(s.elements().size()) - 1);
-    }
+    const auto controls = [&] {
+      if (ImGui::Checkbox("book numbering (from 1)", &c.state.book_numbering)) s.book_numbering = c.state.book_numbering;
+      ImGui::SameLine();
+      int shown_focus = static_cast<int>(shown(s.focus_element, s.book_numbering));
+      ImGui::SetNextItemWidth(90);
+      if (ImGui::InputInt("element", &shown_focus)) {
+        const int k = s.book_numbering ? shown_focus - 1 : shown_focus;
+        s.focus_element = std::clamp<std::int32_t>(k, -1, static_cast<std::int32_t>(s.elements().size()) - 1);
+      }
+    };
+    // The end of the room the host gives the window's contents: matrices window their rows to it.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float bottom = ImGui::GetCursorScreenPos().y + c.room.height - ImGui::GetFrameHeight() - 2 * style.WindowPadding.y;
     const bool element = s.focus_element >= 0 && s.focus_element < s.elements().size();
     // A wide dock (a large display) puts the element beside the arrays, so the scene keeps its height.
     if (element && ImGui::GetContentRegionAvail().x >= 880.0f &&
@@ -352,13 +431,13 @@ class ArraysPanel final : public Panel {
       ImGui::TableSetupColumn("element", ImGuiTableColumnFlags_WidthStretch, 0.38f);
       ImGui::TableNextRow();
       ImGui::TableSetColumnIndex(0);
-      draw_arrays(s);
+      draw_arrays(s, controls, bottom);
       ImGui::TableSetColumnIndex(1);
       draw_element(s, s.focus_element);
       ImGui::EndTable();
       return;
     }
-    draw_arrays(s);
+    draw_arrays(s, controls, bottom);
     if (element) {
       ImGui::Separator();
       draw_element(s, s.focus_element);

@@ -260,18 +260,19 @@ class LayersPanel final : public Panel {
         ImGui::TextWrapped("z-lists (no nbs trace): as the book's first loop builds them:");
         break;
     }
-    const std::vector<std::int64_t>* ids = c.sim.ids();
+    // A dump's atoms are named by id elsewhere; the lists hold rows, as the arrays and the stepper say.
+    if (c.sim.ids() != nullptr) ImGui::TextDisabled("rows, as in Arrays (atom ids: Selection)");
     const auto [from, to] = window_range(static_cast<std::int64_t>(z.heads.size()), s.layer, kZListLines);
     if (to < static_cast<std::int64_t>(z.heads.size())) ImGui::TextDisabled("  ... %lld above", static_cast<long long>(static_cast<std::int64_t>(z.heads.size()) - to));
     for (std::int64_t iz = to; iz-- > from;) {  // the top layer first, as in the side view
       const auto layer = static_cast<std::int32_t>(iz);
       const auto at = static_cast<std::size_t>(iz);
-      const std::string head = "C[" + std::to_string(shown(layer, book)) + "] = " + std::to_string(element_number(z.heads[at], book, ids)) +
+      const std::string head = "C[" + std::to_string(shown(layer, book)) + "] = " + std::to_string(shown(z.heads[at], book)) +
                                "   (" + std::to_string(z.chains[at].size()) + ")##" + std::to_string(layer);
       if (layer == s.layer) ImGui::PushStyleColor(ImGuiCol_Text, kCurrentText);
       if (ImGui::Selectable(head.c_str(), layer == s.layer)) c.state.layer = layer;
       if (layer == s.layer) {
-        const std::string chain = zlist_text(z, layer, book, ids);
+        const std::string chain = zlist_text(z, layer, book);
         ImGui::TextWrapped("  %s", chain.substr(chain.find(": ") + 2).c_str());
         ImGui::PopStyleColor();
       }

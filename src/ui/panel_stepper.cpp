@@ -35,6 +35,7 @@ class StepperPanel final : public Panel {
   [[nodiscard]] float width() const override { return 290.0f; }
   [[nodiscard]] int priority() const override { return 30; }
   [[nodiscard]] int column_order() const override { return 0; }
+  [[nodiscard]] bool part_of_stepping_layout() const override { return true; }
 
   void draw(UiContext& c) override {
     StepperSession& s = *session_;

@@ -37,12 +37,14 @@ class TimelinePanel final : public Panel {
  public:
   [[nodiscard]] const char* title() const override { return kTimelineTitle; }
   [[nodiscard]] PanelPlace place() const override { return PanelPlace::Bottom; }
+  // Stepping through one paused frame, the dock's height is the Arrays': the transport joins the column.
+  [[nodiscard]] PanelPlace stepping_place() const override { return PanelPlace::Right; }
   [[nodiscard]] bool visible(const UiContext& c) const override { return c.sim.timeline != nullptr && !c.sim.timeline->empty(); }
 
   void draw(UiContext& c) override {
     const SimView& s = c.sim;
     draw_transport(c);
-    draw_strip(c);
+    if (!c.room.stepping) draw_strip(c);
     if (s.resuming) {
       const float done = s.resume_target > 0 ? static_cast<float>(s.resume_done) / static_cast<float>(s.resume_target) : 1.0f;
       char label[96];

@@ -31,6 +31,8 @@ class ViolationsPanel final : public Panel {
  public:
   [[nodiscard]] const char* title() const override { return kViolationsTitle; }
   [[nodiscard]] PanelPlace place() const override { return PanelPlace::Left; }
+  // The debugging loop reads it beside the stepper: it keeps its column in the stepping layout too.
+  [[nodiscard]] PanelPlace stepping_place() const override { return PanelPlace::Left; }
   [[nodiscard]] float width() const override { return 320.0f; }
   // Above the other panels of its column: when the column is short, they collapse first.
   [[nodiscard]] int priority() const override { return 30; }

@@ -54,6 +54,22 @@ std::string absolute_paths(const std::string& args) {
   return out;
 }
 
+// `common` less the option `name` and its value when `args` gives that option itself (a case's own
+// --size wins over the @args one).
+std::string common_for(const std::string& common, const std::string& args, const std::string& name) {
+  if (args.find(name + " ") == std::string::npos) return common;
+  std::istringstream in(common);
+  std::string word, out;
+  while (in >> word) {
+    if (word == name) {
+      in >> word;
+      continue;
+    }
+    out += " " + word;
+  }
+  return out;
+}
+
 std::vector<Case> load_cases() {
   std::ifstream in(kSource + "/assets/golden/cases.txt");
   std::vector<Case> cases;
@@ -67,7 +83,8 @@ std::vector<Case> load_cases() {
     }
     const auto bar = line.find('|');
     if (bar == std::string::npos) continue;
-    cases.push_back({trim(line.substr(0, bar)), absolute_paths(trim(line.substr(bar + 1)) + common)});
+    const std::string args = trim(line.substr(bar + 1));
+    cases.push_back({trim(line.substr(0, bar)), absolute_paths(args + common_for(common, args, "--size"))});
   }
   return cases;
 }

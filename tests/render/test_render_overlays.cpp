@@ -375,6 +375,47 @@ TEST(Overlays, LongYListsAreARailInListOrderWithLeadersToTheirElements) {
 namespace nbscope::render {
 namespace {
 
+// One numbering across panels: a dump's rail slots are numbered by row, in the book's numbering
+// when chosen, as the Arrays panel and the Stepper name the list's elements; never by atom id (the
+// ids overlay, off here, is where atom ids are drawn).
+TEST(Overlays, ARailOfADumpIsNumberedByRowsAsInArrays) {
+  const int n = 20;
+  Eigen::ArrayXd x(n), y = Eigen::ArrayXd::Constant(n, 0.5);
+  for (int k = 0; k < n; ++k) x[k] = 0.5 + double((k * 7) % n);
+  const Elements e = make_elements_2d(x, y, Eigen::ArrayXd::Constant(n, 0.4));
+  PairList pairs;
+  Grid grid;
+  const TraceLog log = trace_of("nbs", e, pairs, grid);
+  const std::vector<TracedList> lists = traced_lists(log, n);
+  std::vector<std::int64_t> atom_ids;
+  for (int k = 0; k < n; ++k) atom_ids.push_back(5000 + 7 * k);
+  Camera camera;
+  camera.set_viewport(1600, 300);
+  camera.fit({{-1, -1}, {21, 2}});
+  OverlayScene s;
+  s.elements = &e;
+  s.grid = &grid;
+  s.lists = &lists;
+  s.ids = &atom_ids;
+  s.book_numbering = true;
+  OverlayFlags f;
+  f.lists = true;
+  f.grid = false;
+  f.ids = false;
+  Recorder rec;
+  draw_scene(s, f, camera, rec);
+  const auto y_list = std::find_if(lists.begin(), lists.end(), [](const TracedList& l) { return l.kind == "y-list"; });
+  ASSERT_NE(y_list, lists.end());
+  for (const ElementId k : y_list->chain) EXPECT_TRUE(rec.has_text(std::to_string(k + 1))) << "row " << k << " (book " << k + 1 << ")";
+  for (const std::int64_t id : atom_ids) EXPECT_FALSE(rec.has_text(std::to_string(id))) << "atom id " << id << " on the rail";
+}
+
+}  // namespace
+}  // namespace nbscope::render
+
+namespace nbscope::render {
+namespace {
+
 // Only NBS's B[2][nx] has copies of the row below: screen's C[nx][ny] with nx == 2 has the same
 // shape, and its second column's lists are its own (drawn, not hidden as B[1] copies).
 TEST(Overlays, ScreenListsOfATwoColumnGridAreNotRowBelowCopies) {

@@ -7,6 +7,7 @@
 #include <imgui_internal.h>
 
 #include <algorithm>
+#include <memory>
 #include <random>
 #include <string>
 
@@ -159,7 +160,7 @@ TEST(LayersPanel, ZListsAreTheTracesCAndZAtTheStepperOperation) {
     }
     const std::string text = panel_text(host, f, kLayersTitle);
     EXPECT_NE(text.find("z-lists at operation " + std::to_string(p) + " of " + std::to_string(st.size())), std::string::npos) << text;
-    const std::string chain = zlist_text(*z, f.slice.layer, false, nullptr);
+    const std::string chain = zlist_text(*z, f.slice.layer, false);
     EXPECT_NE(text.find(chain.substr(chain.find(": ") + 2)), std::string::npos) << chain << "\n" << text;
   }
   // Operation 40 is within the first loop: not every element is on a z-list yet.
@@ -182,8 +183,36 @@ TEST(LayersPanel, ZListsAreTheTracesCAndZAtTheStepperOperation) {
   f.sim.paused = false;
   run_frame(host, f);
   EXPECT_NE(panel_text(host, f, kLayersTitle).find("as the book's first loop builds them"), std::string::npos);
-  EXPECT_EQ(zlist_text(book, 0, true, nullptr, 2).rfind("C[1] = " + std::to_string(book.heads[0] + 1) + ": ", 0), 0u);
-  EXPECT_NE(zlist_text(book, 0, false, nullptr, 2).find(" -> ..."), std::string::npos);
+  EXPECT_EQ(zlist_text(book, 0, true, 2).rfind("C[1] = " + std::to_string(book.heads[0] + 1) + ": ", 0), 0u);
+  EXPECT_NE(zlist_text(book, 0, false, 2).find(" -> ..."), std::string::npos);
+}
+
+// One numbering across panels: on a dump's frame (rows carry atom ids) the z-lists name rows, in
+// the book's numbering when chosen, as the Stepper and the Arrays do; atom ids are not in them.
+TEST(LayersPanel, ZListsOfADumpAreRowsAsInTheStepperNotAtomIds) {
+  Scope3d scope;
+  UiHost host;
+  auto session = add_stepper_panels(host);
+  Frame3d f;
+  auto ids = std::make_shared<std::vector<std::int64_t>>();
+  for (std::int64_t k = 0; k < f.elements.size(); ++k) ids->push_back(5000 + 7 * k);  // no atom id is a row
+  f.result.ids = ids;
+  f.state.book_numbering = true;
+  open_stepper_panels(f.state);
+  run_frame(host, f);
+  ASSERT_TRUE(session->has_capture()) << session->message();
+  Stepper& st = session->stepper();
+  st.seek(40);  // in the first loop: element k pushed onto the z-list of its layer, C[iz] = k
+  const TraceEvent& push = *st.current();
+  const auto layer = session->current_layer();
+  ASSERT_TRUE(layer.has_value());
+  f.slice = slice_layer(f.elements, f.grid(), *layer);  // the view follows the stepper's layer, as the window's does
+  const std::string head = "C[" + std::to_string(*layer + 1) + "] = " + std::to_string(push.element + 1);
+  EXPECT_NE(describe_event(*session, push).find(head), std::string::npos) << head << " in " << describe_event(*session, push);
+  const std::string text = panel_text(host, f, kLayersTitle);
+  EXPECT_NE(text.find(head), std::string::npos) << head << " in\n" << text;
+  EXPECT_NE(text.find("rows, as in Arrays"), std::string::npos) << text;
+  EXPECT_EQ(text.find("= 5"), std::string::npos) << "an atom id in the z-lists:\n" << text;
 }
 
 // The stepper's layer and row, for the view to follow: nothing before the first operation or in
