@@ -46,12 +46,9 @@ void SimulatedSource::element_path(const FrameHistory& history, ElementId k, std
                                    std::vector<std::array<double, 2>>& out) const {
   out.clear();
   if (k < 0) return;
-  // From the first summary at or after `from` (a trail is a few hundred frames of a long history).
-  const auto& summaries = history.summaries();
-  const auto begin = std::lower_bound(summaries.begin(), summaries.end(), from,
-                                      [](const FrameSummary& f, std::int64_t n) { return f.frame < n; });
   const std::int64_t newest = live_->newest_frame();
-  for (auto i = static_cast<std::size_t>(begin - summaries.begin()); i < history.size(); ++i) {
+  // From the first summary at or after `from` (a trail is a few hundred frames of a long history).
+  for (std::size_t i = history.first_from(from); i < history.size(); ++i) {
     const FrameSummary& f = history.at(i);
     if (f.frame > to) break;
     if (k >= f.elements) continue;

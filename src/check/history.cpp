@@ -54,9 +54,14 @@ void FrameHistory::enforce_budget() {
 }
 
 std::optional<std::size_t> FrameHistory::find(std::int64_t frame) const {
+  const std::size_t index = first_from(frame);
+  if (index == summaries_.size() || summaries_[index].frame != frame) return std::nullopt;
+  return index;
+}
+
+std::size_t FrameHistory::first_from(std::int64_t frame) const {
   const auto it = std::lower_bound(summaries_.begin(), summaries_.end(), frame,
                                    [](const FrameSummary& s, std::int64_t f) { return s.frame < f; });
-  if (it == summaries_.end() || it->frame != frame) return std::nullopt;
   return static_cast<std::size_t>(it - summaries_.begin());
 }
 

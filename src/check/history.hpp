@@ -46,6 +46,8 @@ class FrameHistory {
   void push(const FrameSummary& summary, std::shared_ptr<const WorldState> state, std::size_t state_bytes);
   // Index of frame `frame` among the summaries, or nullopt.
   [[nodiscard]] std::optional<std::size_t> find(std::int64_t frame) const;
+  // Index of the first summary at or after frame `frame` (size() when there is none).
+  [[nodiscard]] std::size_t first_from(std::int64_t frame) const;
   // The summaries, oldest first, and one by index.
   [[nodiscard]] const std::deque<FrameSummary>& summaries() const { return summaries_; }
   [[nodiscard]] const FrameSummary& at(std::size_t index) const { return summaries_[index]; }

@@ -61,16 +61,13 @@ void RecordingSource::element_path(const FrameHistory& history, ElementId k, std
                                    std::vector<std::array<double, 2>>& out) const {
   out.clear();
   if (k < 0) return;
-  // From the first summary at or after `from` (a trail is a few hundred frames of a long history).
-  const auto& summaries = history.summaries();
-  const auto begin = std::lower_bound(summaries.begin(), summaries.end(), from,
-                                      [](const FrameSummary& f, std::int64_t n) { return f.frame < n; });
   // A dump's rows shift as atoms come and go: the atom at row k of frame `to` is followed by its id.
   const std::size_t to_index = index_of(to);
   const std::shared_ptr<const RecordedFrame> frame_to = to_index < entries().size() ? frame_at(to_index) : nullptr;
   const bool by_atom = frame_to != nullptr && static_cast<std::size_t>(k) < frame_to->ids.size();
   const std::int64_t atom = by_atom ? frame_to->ids[static_cast<std::size_t>(k)] : -1;
-  for (auto i = static_cast<std::size_t>(begin - summaries.begin()); i < history.size(); ++i) {
+  // From the first summary at or after `from` (a trail is a few hundred frames of a long history).
+  for (std::size_t i = history.first_from(from); i < history.size(); ++i) {
     const FrameSummary& f = history.at(i);
     if (f.frame > to) break;
     const std::shared_ptr<const RecordedFrame> rf = held(index_of(f.frame));

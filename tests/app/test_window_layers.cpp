@@ -22,25 +22,6 @@
 namespace nbscope {
 namespace {
 
-// N spheres of radius 0.4 scattered (a fixed LCG) in a 12 x 12 x 12 box: a few layers, many
-// pairs, some between layers.
-Recording spheres(int n, std::uint32_t seed) {
-  Recording rec;
-  rec.path = "spheres3d.nbsrec";
-  RecordedFrame& f = rec.frames.emplace_back();
-  f.elements.dim = 3;
-  std::uint32_t s = seed;
-  const auto next = [&s] {
-    s = s * 1664525u + 1013904223u;
-    return 12.0 * static_cast<double>(s >> 8) / static_cast<double>(1u << 24);
-  };
-  for (int k = 0; k < n; ++k) {
-    const double x = next(), y = next(), z = next();
-    f.elements.push_back(x, y, z, 0.4);
-  }
-  return rec;
-}
-
 struct LayerRig : testapp::RecordingWindowRig {
   using RecordingWindowRig::RecordingWindowRig;
   // Each element's layer as NBS integerises z on the frame's grid.
@@ -50,7 +31,7 @@ struct LayerRig : testapp::RecordingWindowRig {
 };
 
 TEST(WindowLayers, AThreeDFrameIsShownOneLayerAtATimeTheBusiestFirst) {
-  LayerRig rig(spheres(400, 1));
+  LayerRig rig(testapp::scattered_spheres(400, 1));
   rig.frames(1);
   const LayerSlice* s = rig.view->layer();
   ASSERT_NE(s, nullptr) << "a 3D frame is sliced";
@@ -63,7 +44,7 @@ TEST(WindowLayers, AThreeDFrameIsShownOneLayerAtATimeTheBusiestFirst) {
 }
 
 TEST(WindowLayers, OnlyTheLayerShownAndTheOneBelowReachTheRenderer) {
-  LayerRig rig(spheres(400, 8));
+  LayerRig rig(testapp::scattered_spheres(400, 8));
   rig.view->state().layer = 2;
   rig.frames(1);
   const LayerSlice& s = *rig.view->layer();
@@ -78,7 +59,7 @@ TEST(WindowLayers, OnlyTheLayerShownAndTheOneBelowReachTheRenderer) {
 }
 
 TEST(WindowLayers, AutoIsTheFocusPairsLayerElseTheSelectedElements) {
-  LayerRig rig(spheres(400, 2));
+  LayerRig rig(testapp::scattered_spheres(400, 2));
   rig.frames(1);
   // A pair across two layers: shown in the pass of the upper one (the mask reaches down).
   std::optional<Pair> across;
@@ -100,7 +81,7 @@ TEST(WindowLayers, AutoIsTheFocusPairsLayerElseTheSelectedElements) {
 }
 
 TEST(WindowLayers, TheUsersLayerIsClampedIntoTheFrame) {
-  LayerRig rig(spheres(300, 3));
+  LayerRig rig(testapp::scattered_spheres(300, 3));
   rig.frames(1);
   const std::int32_t top = rig.view->layer()->count - 1;
   rig.view->state().layer = top + 50;
@@ -120,7 +101,7 @@ TEST(WindowLayers, TheUsersLayerIsClampedIntoTheFrame) {
 void expect_violation_layer(Fault fault) {
   FrameLoopOptions faulty;
   faulty.fault = fault;
-  LayerRig rig(spheres(400, 4), ViewOptions{}, faulty);
+  LayerRig rig(testapp::scattered_spheres(400, 4), ViewOptions{}, faulty);
   rig.frames(1);
   const auto& listed = rig.loop.history().violation_log().listed();
   ASSERT_FALSE(listed.empty()) << fault_name(fault) << " breaks the 3D frame";
@@ -151,7 +132,7 @@ TEST(WindowLayers, GoingToADroppedMaskCellOfAThreeDFrameShowsItsLayerAndOperatio
 TEST(WindowLayers, MidWayTheLayerIsTheStepperTestedPairsUpperLayer) {
   ViewOptions o;
   o.step = 1;
-  LayerRig rig(spheres(300, 5), o);
+  LayerRig rig(testapp::scattered_spheres(300, 5), o);
   rig.frames(2);
   ui::StepperSession& s = rig.view->stepper();
   ASSERT_TRUE(s.has_capture()) << s.message();
@@ -184,7 +165,7 @@ void expect_lists_follow_the_arrays(const char* algorithm) {
   o.step = 1;
   FrameLoopOptions lo;
   lo.algorithm = algorithm;
-  LayerRig rig(spheres(80, 7), o, lo);
+  LayerRig rig(testapp::scattered_spheres(80, 7), o, lo);
   rig.frames(2);
   ui::StepperSession& s = rig.view->stepper();
   ASSERT_TRUE(s.has_capture()) << algorithm << ": " << s.message();
@@ -227,7 +208,7 @@ TEST(WindowLayers, TheScenesListsAreTheStepperArraysInScreen3d) { expect_lists_f
 TEST(WindowLayers, TheScenesListsAreTheStepperArraysInTree3d) { expect_lists_follow_the_arrays("tree"); }
 
 TEST(WindowLayers, ATwoDFrameHasNoLayer) {
-  Recording rec = spheres(50, 6);
+  Recording rec = testapp::scattered_spheres(50, 6);
   Elements flat;
   for (ElementId k = 0; k < rec.frames[0].elements.size(); ++k)
     flat.push_back(rec.frames[0].elements.x[k], rec.frames[0].elements.y[k], 0, 0.4);

@@ -14,24 +14,6 @@
 namespace nbscope {
 namespace {
 
-// N spheres of radius 0.4 scattered (a fixed LCG) in a 12 x 12 x 12 box: several layers.
-Recording spheres(int n, std::uint32_t seed) {
-  Recording rec;
-  rec.path = "spheres3d.nbsrec";
-  RecordedFrame& f = rec.frames.emplace_back();
-  f.elements.dim = 3;
-  std::uint32_t s = seed;
-  const auto next = [&s] {
-    s = s * 1664525u + 1013904223u;
-    return 12.0 * static_cast<double>(s >> 8) / static_cast<double>(1u << 24);
-  };
-  for (int k = 0; k < n; ++k) {
-    const double x = next(), y = next(), z = next();
-    f.elements.push_back(x, y, z, 0.4);
-  }
-  return rec;
-}
-
 // One key tapped with Shift held, queued as the window queues it, then frames drawn with live input.
 void shift_tap(testapp::RecordingWindowRig& rig, int key) {
   using E = render::InputEvent;
@@ -42,7 +24,7 @@ void shift_tap(testapp::RecordingWindowRig& rig, int key) {
 }
 
 TEST(WindowTeach, ShiftRightMovesAPhaseFromTheFirstPressOnAThreeDFrame) {
-  testapp::RecordingWindowRig rig(spheres(300, 5));
+  testapp::RecordingWindowRig rig(testapp::scattered_spheres(300, 5));
   // Off-screen there is no GLFW backend to map the arrows: map them as it does.
   ImGui::GetIO().KeyMap[ImGuiKey_RightArrow] = GLFW_KEY_RIGHT;
   ImGui::GetIO().KeyMap[ImGuiKey_LeftArrow] = GLFW_KEY_LEFT;

@@ -110,7 +110,7 @@ TEST(FrameHistory, TruncateAfterDropsTheLaterFramesAndTheirBytes) {
 }
 
 // find() is by frame number, gaps and all.
-TEST(FrameHistory, FindsAFrameByItsNumber) {
+TEST(FrameHistory, FindsAFrameByItsNumberAndTheFirstFromAFrame) {
   FrameHistory h;
   for (const std::int64_t f : {0, 5, 9}) h.push(kept_summary(f), nullptr, 0);
   EXPECT_EQ(h.find(0), 0u);
@@ -118,6 +118,11 @@ TEST(FrameHistory, FindsAFrameByItsNumber) {
   EXPECT_EQ(h.find(9), 2u);
   EXPECT_EQ(h.find(4), std::nullopt);
   EXPECT_EQ(h.find(10), std::nullopt);
+  // Where a trail starts: the first summary at or after a frame, past the end when none is.
+  EXPECT_EQ(h.first_from(-3), 0u);
+  EXPECT_EQ(h.first_from(4), 1u);
+  EXPECT_EQ(h.first_from(5), 1u);
+  EXPECT_EQ(h.first_from(10), 3u);
 }
 
 // At most 3 summaries: after frames 0..4, frames 2, 3 and 4 remain, and the states of 0 and 1 went with them.
