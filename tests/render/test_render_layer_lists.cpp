@@ -39,6 +39,15 @@ struct Scatter {
     for (int k = 0; k < 40; ++k) e.push_back(u(rng), u(rng), u(rng), 0.45);
     grid = make_grid(e, options);
   }
+  // `algorithm`'s traced run over the scatter: the log the stepper and the lists read.
+  [[nodiscard]] TraceLog trace(const char* algorithm) const {
+    DetectOptions o;
+    o.grid = options;
+    PairList pairs;
+    TraceLog log;
+    make_detector(algorithm)->detect_traced(e, o, pairs, log);
+    return log;
+  }
 };
 
 // The layer the stepper is in: its phase's (NBS 3D's passes name theirs), else its event's cell's,
@@ -56,13 +65,9 @@ std::int32_t stepper_layer(const Stepper& st, std::int32_t last) {
 TEST(LayerView, ListsMidTraceAreTheStepperArraysInTheStepperLayer) {
   const Scatter sc;
   const auto n = static_cast<std::size_t>(sc.e.size());
-  DetectOptions o;
-  o.grid = sc.options;
   for (const char* algorithm : {"nbs", "screen", "tree"}) {
     SCOPED_TRACE(algorithm);
-    PairList pairs;
-    TraceLog log;
-    make_detector(algorithm)->detect_traced(sc.e, o, pairs, log);
+    const TraceLog log = sc.trace(algorithm);
     Stepper st;
     st.load(log);
     std::size_t checked = 0, pushes = 0, below = 0;
@@ -125,11 +130,7 @@ std::map<std::pair<std::string, ListLayerStyle>, std::size_t> nbs_pass(const Ele
 
 TEST(LayerView, EachLayerKeepsTheListsOfItsOwnPass) {
   const Scatter sc;
-  DetectOptions o;
-  o.grid = sc.options;
-  PairList pairs;
-  TraceLog log;
-  make_detector("nbs")->detect_traced(sc.e, o, pairs, log);
+  const TraceLog log = sc.trace("nbs");
   const auto lists = traced_lists(log, static_cast<std::size_t>(sc.e.size()));
   for (std::int32_t layer = 0; layer < 4; ++layer) {
     const LayerSlice slice = slice_layer(sc.e, sc.grid, layer);
@@ -138,9 +139,7 @@ TEST(LayerView, EachLayerKeepsTheListsOfItsOwnPass) {
     EXPECT_EQ(kept, nbs_pass(sc.e, sc.grid, layer)) << "layer " << layer;
   }
   // Screen 3D: each cell's list once, in its own layer's view and ghosted in the one above's.
-  PairList screen_pairs;
-  TraceLog screen;
-  make_detector("screen")->detect_traced(sc.e, o, screen_pairs, screen);
+  const TraceLog screen = sc.trace("screen");
   const auto cell_lists = traced_lists(screen, static_cast<std::size_t>(sc.e.size()));
   std::map<std::int32_t, std::set<std::pair<std::int32_t, std::int32_t>>> cells;
   for (ElementId k = 0; k < static_cast<ElementId>(sc.e.size()); ++k)
@@ -173,14 +172,10 @@ std::multiset<HeadKey> drawn_heads(const Recorder& rec, const Grid& g, double pp
 TEST(LayerView, TheListsDrawnAreExactlyTheListsKept) {
   const Scatter sc;
   const auto n = static_cast<std::size_t>(sc.e.size());
-  DetectOptions o;
-  o.grid = sc.options;
   const Camera camera = camera_over(-1.0, 5.0);
   for (const char* algorithm : {"nbs", "screen", "tree"}) {
     SCOPED_TRACE(algorithm);
-    PairList pairs;
-    TraceLog log;
-    make_detector(algorithm)->detect_traced(sc.e, o, pairs, log);
+    const TraceLog log = sc.trace(algorithm);
     // Mid-trace (the middle operation) and at the end.
     Stepper st;
     st.load(log);
@@ -219,11 +214,7 @@ TEST(LayerView, TheListsDrawnAreExactlyTheListsKept) {
 // the layer, and of rows iy-1..iy+1 of the layer below (ghosted).
 TEST(LayerView, TheRowFilterKeepsTheListsOfOneRowsPass) {
   const Scatter sc;
-  DetectOptions o;
-  o.grid = sc.options;
-  PairList pairs;
-  TraceLog log;
-  make_detector("nbs")->detect_traced(sc.e, o, pairs, log);
+  const TraceLog log = sc.trace("nbs");
   const auto lists = traced_lists(log, static_cast<std::size_t>(sc.e.size()));
   const Grid& g = sc.grid;
   std::map<std::pair<std::int32_t, std::int32_t>, std::set<std::int32_t>> cells;  // (layer, row) -> columns
@@ -265,11 +256,7 @@ TEST(LayerView, TheRowFilterKeepsTheListsOfOneRowsPass) {
 TEST(LayerView, TheStepperListIsTheBuildOfItsRow) {
   const Scatter sc;
   const auto n = static_cast<std::size_t>(sc.e.size());
-  DetectOptions o;
-  o.grid = sc.options;
-  PairList pairs;
-  TraceLog log;
-  make_detector("nbs")->detect_traced(sc.e, o, pairs, log);
+  const TraceLog log = sc.trace("nbs");
   Stepper st;
   st.load(log);
   std::int32_t layer = 0;

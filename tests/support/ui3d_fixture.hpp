@@ -73,17 +73,6 @@ struct Frame3d {
   }
 };
 
-// Runs one UI frame of `host` (its keys and mouse included) and draws its scene overlay into `sink`.
-inline void run_frame(UiHost& host, Frame3d& f, Recorder* sink = nullptr) {
-  f.requests = {};
-  f.traced();
-  ImGui::NewFrame();
-  UiContext ctx{f.sim, f.state, f.requests, f.camera};
-  host.frame(ctx, true);
-  if (sink != nullptr) host.draw_scene(ctx, *sink);
-  ImGui::Render();
-}
-
 // Every text the panel titled `title` of `host` draws in one frame, in drawing order: the panel is
 // drawn into a window of the test's own with ImGui's log on (which stops at the end of a window).
 inline std::string panel_text(UiHost& host, Frame3d& f, const char* title) {

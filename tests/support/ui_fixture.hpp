@@ -81,8 +81,10 @@ struct BookFrame {
 // The one recorder of the tests that draw without GL (support/draw_recorder.hpp).
 using render::testdraw::Recorder;
 
-// Runs one UI frame of `host` over `f` and draws its scene overlay into `sink`.
-inline void run_frame(UiHost& host, BookFrame& f, Recorder* sink = nullptr) {
+// Runs one UI frame of `host` (its keys and mouse included) over `f` (a BookFrame, a Frame3d) and
+// draws its scene overlay into `sink`.
+template <class TestFrame>
+void run_frame(UiHost& host, TestFrame& f, Recorder* sink = nullptr) {
   f.requests = {};
   f.traced();
   ImGui::NewFrame();
