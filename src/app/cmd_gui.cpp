@@ -129,7 +129,6 @@ int run_without_display(GuiOptions o, FrameLoop& loop, const std::string& scene_
       stopped = e.what();  // the last good frame stays: its picture shows the line
       break;
     }
-    view->follow(loop);  // each frame its trail point and flash fade
     failed = failed || (loop.result().report().checked && !loop.result().report().ok());
   }
   if (!stopped.empty()) {
@@ -142,7 +141,6 @@ int run_without_display(GuiOptions o, FrameLoop& loop, const std::string& scene_
   }
   for (std::int64_t i = 0; i < o.back; ++i) {
     step_back_for_flag(loop);
-    view->follow(loop);
   }
   const std::string summary = view->write_screenshot(loop);
   // Said once it worked: a refused --gl or screenshot path is then the only line on stderr.
@@ -161,7 +159,7 @@ int run_without_display(GuiOptions o, FrameLoop& loop, const std::string& scene_
 // forwards is begun on the worker rather than made here, so that the window never waits for
 // physics; without a worker (a recording, a past frame) it is made here, and speeds above 1 make
 // their extra frames here.
-void play(FrameLoop& loop, GlView& view, Session& session, double& owed_steps, bool adopted) {
+void play(FrameLoop& loop, Session& session, double& owed_steps, bool adopted) {
   owed_steps += session.speed - (adopted ? 1.0 : 0.0);
   bool deferred = false;  // one owed frame left to the worker (begun below)
   if (session.play_direction > 0 && !adopted && owed_steps >= 1.0) {
@@ -182,10 +180,9 @@ void play(FrameLoop& loop, GlView& view, Session& session, double& owed_steps, b
         owed_steps = 0;
         break;
       }
-      view.follow(loop);  // each frame shown its own trail and flashes, however many this UI frame
       continue;
     }
-    if (!step_forwards(loop, view, session)) {
+    if (!step_forwards(loop, session)) {
       owed_steps = 0;
       deferred = false;
       break;
@@ -194,7 +191,7 @@ void play(FrameLoop& loop, GlView& view, Session& session, double& owed_steps, b
   if (!session.paused && session.play_direction > 0 && (deferred || owed_steps + session.speed >= 1.0)) {
     loop.begin_step();
     // No worker for it: the owed frame is made here, as it always was.
-    if (deferred && !loop.source().step_pending() && !step_forwards(loop, view, session)) owed_steps = 0;
+    if (deferred && !loop.source().step_pending() && !step_forwards(loop, session)) owed_steps = 0;
   }
   if (loop.source().at_end()) session.paused = true;  // a recording plays once; P or R starts it again
 }
@@ -226,7 +223,7 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
                                         : ui::opening_window_size(settings ? settings->window_size : std::nullopt, render::GlfwWindow::primary_work_area());
   render::GlfwWindow window(size[0], size[1], "nbscope - " + title, !fixed && (settings == nullptr || !settings->window_size));
   window.set_vsync(!scripted);
-  GlView view(window, window.handle(), o.view);
+  GlView view(window, window.handle(), o.view, loop);  // the scene fitted, before a restored camera replaces the fit
   if (loop.source().has_scene()) {
     view.check_selection(loop);
     view.check_layer(loop);
@@ -240,7 +237,6 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
   if (o.history_mb) view.state().history_budget_mb = *o.history_mb;
   else if (settings != nullptr) view.state().history_budget_mb = settings->history_mb;
   loop.history().set_budget(static_cast<std::size_t>(view.state().history_budget_mb) << 20);
-  view.follow(loop);  // the scene fitted, before the restored camera replaces the fit
   if (settings != nullptr) ui::restore_camera(*settings, absolute_path(session.scene_path), view.camera());
   if (!stopped.empty()) view.state().panel_open[kScenesPanel] = true;  // where the line is shown
 
@@ -306,7 +302,6 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       } else if (went_back < o.back) {
         const auto t0 = Clock::now();
         step_back_for_flag(loop);
-        view.follow(loop);  // here rather than in frame(): going back's time includes the trail rebuilt
         times.sum_back_show += ms_since(t0);
         back_frame = true;
         if (++went_back == o.back) last_drawn = rendered + GlView::kSettleFrames - 1;
@@ -316,15 +311,14 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       // detected, checked and shown from now on); one still running is left to it, and this frame
       // draws the newest completed frame again. Pause and single step act at that boundary.
       const bool adopted = loop.source().step_ready();
-      if (adopted && !step_forwards(loop, view, session)) owed_steps = 0;
+      if (adopted && !step_forwards(loop, session)) owed_steps = 0;
       // A request that needs the world (a drag, a past frame, another algorithm, a restart) adopts
       // the step in flight first, waiting for it: it acts at the next frame boundary.
       apply_requests(requests, loop, view, session);
-      view.follow(loop);  // what the requests did, before play() steps on
       if (loop.resume().active()) {
         continue_resume(loop, session);
       } else if (!session.paused && !loop.source().step_pending()) {
-        play(loop, view, session, owed_steps, adopted);
+        play(loop, session, owed_steps, adopted);
       }
     }
     failed = failed || (loop.result().report().checked && !loop.result().report().ok());

@@ -427,7 +427,6 @@ int run_headless_loop(const HeadlessOptions& o) {
       check_interrupt();
       recorder->write(loop);
     }
-    if (view) view->follow(loop);  // each frame its trail point and flash fade
     progress.update(k + 1);
     if (o.rewind && !rewound) {
       if (loop.source().frame() == o.rewind->to) save_at_to();
@@ -447,7 +446,6 @@ int run_headless_loop(const HeadlessOptions& o) {
       if (writer) writer->back_to(at_to->mark);
       rewound = true;
       k = o.rewind->to;  // the frames after TO run again (frame k is the loop's k-th)
-      if (view) view->follow(loop);  // back at TO before the frames after it run again
     }
   }
   progress.finish();
@@ -462,7 +460,6 @@ int run_headless_loop(const HeadlessOptions& o) {
     const auto t0 = Clock::now();
     step_back_for_flag(loop);
     back_ms += ms_since(t0);
-    if (view) view->follow(loop);
   }
   if (o.violation > 0) go_to_violation(loop, o.violation, view.get());
   std::string screenshot_line;

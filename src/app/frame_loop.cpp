@@ -136,6 +136,7 @@ bool FrameLoop::step_back() {
 // ---- the parts -----------------------------------------------------------------------------
 
 const FrameChange& FrameLoop::change() const { return impl_->change; }
+const CellChanges& FrameLoop::cell_changes() const { return impl_->cell_changes; }
 const FrameResult& FrameLoop::result() const {
   return impl_->pipeline_on_worker() ? *impl_->shown_result : impl_->pipeline.result();  // the shown frame's either way
 }

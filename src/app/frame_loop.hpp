@@ -35,6 +35,7 @@
 #include <utility>
 #include <vector>
 
+#include "check/cell_changes.hpp"
 #include "check/history.hpp"
 #include "check/faults.hpp"
 #include "check/frame_result.hpp"
@@ -161,6 +162,9 @@ class FrameLoop {
   // What changed last and its generation (bumped by load, restart, step, a past frame shown, a
   // resume's arrival, redetect or a configuration change): views follow it instead of being told.
   [[nodiscard]] const FrameChange& change() const;
+  // Which element changed cell at which step of the frames shown, kept at every change published:
+  // the cell-change flashes of the frame shown, whenever a view draws it.
+  [[nodiscard]] const CellChanges& cell_changes() const;
   // Everything the pipeline found in the frame shown (check/frame_result.hpp): hash, each lane's
   // pairs, grid, cells and report, the check's sets R, F, T, G.
   [[nodiscard]] const FrameResult& result() const;

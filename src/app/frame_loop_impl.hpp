@@ -16,6 +16,7 @@
 #include "app/clock.hpp"
 #include "app/frame_loop.hpp"
 #include "app/frame_watch.hpp"
+#include "check/cell_changes.hpp"
 #include "check/pipeline.hpp"
 #include "core/error.hpp"
 #include "io/frame_source.hpp"
@@ -33,6 +34,7 @@ struct FrameLoopState {
   ViolationLog violations;
 
   FrameChange change;               // what the last detect_and_check() published (FrameLoop::change)
+  CellChanges cell_changes;         // which element changed cell at which step, as published
   bool load_unpublished = false;    // a new source whose first detection threw: the next change carries it
   bool physics_overlapped = false;  // the current frame's physics ran on the worker (frame_loop_overlap.cpp)
   bool detection_overlapped = false;  // so did its detection and check

@@ -33,16 +33,6 @@ constexpr std::size_t kFrameHistory = 240;
 // A fit leaves this much below the scene for the legend (render::draw_scene's lower right corner).
 constexpr double kLegendReservePx = 44.0;
 
-// The row in `after` of the atom at `row` in `before` (two frames' atom ids): -1 when it is gone.
-ElementId row_of_atom(const std::vector<std::int64_t>& before, const std::vector<std::int64_t>& after, ElementId row) {
-  if (row < 0 || static_cast<std::size_t>(row) >= before.size()) return -1;
-  const std::int64_t id = before[static_cast<std::size_t>(row)];
-  if (static_cast<std::size_t>(row) < after.size() && after[static_cast<std::size_t>(row)] == id) return row;
-  const auto sorted = std::lower_bound(after.begin(), after.end(), id);  // a dump's ids ascend (io/recording.hpp)
-  const auto it = sorted != after.end() && *sorted == id ? sorted : std::find(after.begin(), after.end(), id);
-  return it == after.end() ? -1 : static_cast<ElementId>(it - after.begin());
-}
-
 }  // namespace
 
 // ---- scene files ------------------------------------------------------------------------------
@@ -60,7 +50,7 @@ std::string default_scene_path() { return data_dir().path + "/assets/scenes/defa
 
 // ---- GlView -----------------------------------------------------------------------------------
 
-GlView::GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions& options)
+GlView::GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions& options, const FrameLoop& loop)
     : context_(context), framing_(kLegendReservePx, render::FocusZoom{6, 2}) {
   renderer_ = std::make_unique<render::Renderer>(render::resolve_shader_dir(options.shader_dir));
   imgui_ = std::make_unique<render::ImGuiLayer>(window);
@@ -98,6 +88,7 @@ GlView::GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions
   set_layer_option(options.layer);
   for (std::size_t f = 0; f < std::size(render::kListFilterNames); ++f)
     if (options.lists == render::kListFilterNames[f]) state_.list_filter = static_cast<render::ListFilter>(f);
+  follow(loop);  // the scene as loaded: the camera fits it (a saved camera or a focus may replace the fit)
 }
 
 GlView::~GlView() {
@@ -147,21 +138,19 @@ void GlView::follow(const FrameLoop& loop) {
   const FrameChange& c = loop.change();
   if (followed_ && *followed_ == c.generation) return;
   const bool new_source = !followed_ || c.loaded_at > *followed_;
-  const bool one_change = followed_ && c.generation == *followed_ + 1;
   const bool moved = followed_ && c.moved_at > *followed_;
   followed_ = c.generation;
   if (new_source) {
     // The camera fits a scene it had not shown (or the first that runs); a restart keeps it.
     source_loaded(loop, !showed_scene_ || loaded_scene_ != loop.source().scene().path);
-    if (c.moved_at > c.loaded_at) frame_shown(loop);  // steps missed after the load: a jump
-  } else if (moved && one_change && c.kind == FrameChange::Kind::stepped) {
-    follow_atoms(loop);
-    stepped(loop);
   } else if (moved) {
     follow_atoms(loop);
-    frame_shown(loop);  // a frame of the history, or several changes at once: as a jump unless a neighbour
   }
   // Only redetected: the same frame, nothing seen changes (the lists follow the trace, update_lists).
+  if (new_source || moved) rebuild_trail(loop);
+  const CellChanges& changes = loop.cell_changes();
+  flash_.resize(changes.size());
+  for (std::size_t k = 0; k < flash_.size(); ++k) flash_[k] = changes.flash(static_cast<ElementId>(k), kFlashDecay);
   followed_ids_ = loop.result().ids;
 }
 
@@ -180,13 +169,8 @@ void GlView::source_loaded(const FrameLoop& loop, bool fit) {
   }
   loaded_scene_ = loop.source().scene().path;
   showed_scene_ = loop.source().has_scene();
-  trails_.clear();
-  trail_element_ = state_.selected;
-  previous_cells_ = loop.result().selected().cells;
-  flash_.assign(static_cast<std::size_t>(loop.source().elements().size()), 0.0f);
   lists_.clear();
   lists_serial_ = 0;
-  previous_frame_ = loop.source().frame();
   if (state_.selected >= loop.source().elements().size()) state_.selected = -1;
   state_.selected_pair.reset();
   state_.selected_cell.reset();
@@ -201,71 +185,22 @@ void GlView::source_loaded(const FrameLoop& loop, bool fit) {
 }
 
 void GlView::follow_atoms(const FrameLoop& loop) {
-  // The ids of the frame last followed, of the same recording (a new source is not followed here).
+  // The ids of the frame last followed, of the same recording (a new source is not followed here);
+  // the flashes follow their atoms in the loop (check/cell_changes.hpp), the trail the selection.
   const std::vector<std::int64_t>* before = followed_ids_.get();
   const std::vector<std::int64_t>* after = loop.result().ids.get();
   if (before == nullptr || after == nullptr || before == after) return;
-  const bool trail_is_selection = trail_element_ == state_.selected;
   state_.selected = row_of_atom(*before, *after, state_.selected);
-  trail_element_ = trail_is_selection ? state_.selected : row_of_atom(*before, *after, trail_element_);
   stepper_->focus_element = row_of_atom(*before, *after, stepper_->focus_element);
   if (state_.selected_pair) {
     const ElementId i = row_of_atom(*before, *after, state_.selected_pair->i), j = row_of_atom(*before, *after, state_.selected_pair->j);
     if (i < 0 || j < 0) state_.selected_pair.reset();
     else state_.selected_pair = Pair{std::min(i, j), std::max(i, j)};
   }
-  // Cells and flashes by atom, so that a lost or inserted atom does not flash every row after it.
-  std::vector<CellIndex> cells(after->size(), CellIndex{-1, -1});
-  std::vector<float> flash(after->size(), 0.0f);
-  for (std::size_t k = 0; k < before->size() && k < previous_cells_.size(); ++k) {
-    const ElementId row = row_of_atom(*before, *after, static_cast<ElementId>(k));
-    if (row < 0) continue;
-    cells[static_cast<std::size_t>(row)] = previous_cells_[k];
-    if (k < flash_.size()) flash[static_cast<std::size_t>(row)] = flash_[k];
-  }
-  const auto& now = loop.result().selected().cells;
-  for (std::size_t k = 0; k < cells.size() && k < now.size(); ++k)
-    if (cells[k].ix < 0) cells[k] = now[k];  // an atom inserted: no flash
-  previous_cells_ = std::move(cells);
-  flash_ = std::move(flash);
-}
-
-void GlView::stepped(const FrameLoop& loop) {
-  const Elements& e = loop.source().elements();
-  // Trails follow the selected element; a new selection starts a new trail.
-  if (state_.selected != trail_element_) {
-    trails_.clear();
-    trail_element_ = state_.selected;
-  }
-  if (trail_element_ >= 0 && trail_element_ < e.size()) {
-    if (trails_.empty()) trails_.emplace_back();
-    auto& t = trails_.front();
-    t.emplace_back(static_cast<float>(e.x[trail_element_]), static_cast<float>(e.y[trail_element_]));
-    if (t.size() > kTrailPoints) t.erase(t.begin());
-  }
-  // Flashes: elements whose cell (and so list) changed this frame.
-  const auto& cells = loop.result().selected().cells;
-  flash_.resize(cells.size(), 0.0f);
-  for (std::size_t k = 0; k < cells.size(); ++k) {
-    flash_[k] *= kFlashDecay;
-    if (k < previous_cells_.size() && !(cells[k] == previous_cells_[k])) flash_[k] = 1.0f;
-  }
-  previous_cells_ = cells;
-  previous_frame_ = loop.source().frame();
-}
-
-void GlView::frame_shown(const FrameLoop& loop) {
-  // A neighbouring frame flashes as a step does; a jump starts the flashes again.
-  if (std::llabs(loop.source().frame() - previous_frame_) != 1) {
-    std::fill(flash_.begin(), flash_.end(), 0.0f);
-    previous_cells_ = loop.result().selected().cells;
-  }
-  stepped(loop);
-  rebuild_trail(loop);
 }
 
 void GlView::rebuild_trail(const FrameLoop& loop) {
-  // The selected element over the kept frames up to this one.
+  // The selected element over the kept frames up to the one shown (at most kTrailPoints of them).
   trails_.clear();
   trail_element_ = state_.selected;
   if (trail_element_ < 0) return;
@@ -329,6 +264,7 @@ bool GlView::stepper_panels_open() const {
 ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_input, float dt) {
   const auto frame_start = Clock::now();
   follow(loop);
+  if (state_.selected != trail_element_) rebuild_trail(loop);  // a new selection: its own trail
   const bool stepper_now_open = stepper_open();
   if (stepper_now_open && !stepper_was_open_) aim_stepper_at_chosen_violation(loop);
   stepper_was_open_ = stepper_now_open;

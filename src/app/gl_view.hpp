@@ -61,8 +61,10 @@ class GlView {
   static constexpr int kSettleFrames = 5;
 
   // Loads the shaders (Error when missing) and sets overlays, panels and selection from `options`
-  // (Error for an unknown name). `context` must be current; `window` is null headless.
-  GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions& options);
+  // (Error for an unknown name), then takes its first look at `loop` (its scene fitted as loaded).
+  // `context` must be current; `window` is null headless. From then on the view follows the loop's
+  // changes by itself whenever it draws (frame(), focus_violation()): nobody tells it.
+  GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions& options, const FrameLoop& loop);
   ~GlView();
   GlView(const GlView&) = delete;
   GlView& operator=(const GlView&) = delete;
@@ -76,13 +78,6 @@ class GlView {
   // Error("--step: ...") when --step asked for more operations than the shown frame's detection
   // has, or its algorithm records none (call after frame(), before the screenshot).
   void check_step() const;
-  // Catches up with what the loop did since the last call (FrameLoop::change): a new source forgets
-  // trails, flashes and lists (the camera fits a scene this view had not shown; a restart keeps it);
-  // a step adds a trail point and fades the flashes; another frame shown, or changes missed between
-  // two calls, rebuild the trail from the history and flash only from a neighbouring frame; a
-  // redetect changes nothing seen. Nothing changed: no-op. frame() and focus_violation() call it
-  // first; a loop that renders after several steps calls it after each, so each adds its point.
-  void follow(const FrameLoop& loop);
   // Shows `violation` (of the loop's current frame) as choosing it in the Violations panel does: both
   // elements selected, the camera on them, the Violations panel open; with `open_stepper` (or the
   // stepper already open) the stepper moves to the operation that decided the pair.
@@ -116,7 +111,7 @@ class GlView {
   // UiState::layer; "auto" leaves the view to choose.
   void set_layer_option(const std::string& text);
   // The selection's trail and each element's cell-change flash (1 on the frame its cell changed,
-  // then fading each step), as the next frame() draws them.
+  // then fading each step), as the last frame() drew them.
   [[nodiscard]] const std::vector<std::vector<render::Vec2>>& trails() const { return trails_; }
   [[nodiscard]] const std::vector<float>& flashes() const { return flash_; }
   // The Scaling panel's background run (owned here; cancelled when the panel closes).
@@ -145,10 +140,15 @@ class GlView {
   // The view's drawing costs into `sim` (the window's whole frame split when it measured one).
   void fill_drawing(const FrameLoop& loop, const Session& session, ui::SimView& sim) const;
   void fit_camera(const FrameLoop& loop);
-  // follow()'s cases: a new source (with `fit`, the camera on it), one step forwards, another frame shown.
+  // Catches up with what the loop did since the last look (FrameLoop::change): a new source forgets
+  // lists and the focus (the camera fits a scene this view had not shown; a restart keeps it); a
+  // frame moved to (a step, a frame shown, however many since) brings the selection along by atom
+  // id, the trail from the history and the flashes from the loop's cell changes; a redetect
+  // changes nothing seen. Nothing changed: no-op. Called first by frame() and focus_violation().
+  void follow(const FrameLoop& loop);
+  // follow()'s new source (with `fit`, the camera on it).
   void source_loaded(const FrameLoop& loop, bool fit);
-  void stepped(const FrameLoop& loop);
-  void frame_shown(const FrameLoop& loop);
+  // The selected element's trail over the kept frames up to the one shown.
   void rebuild_trail(const FrameLoop& loop);
   // A dump's frame replaced the one last followed: the selection, a violation's pair, the trail and
   // the flashes follow their atoms' ids to their new rows (none when the atom is gone).
@@ -203,11 +203,9 @@ class GlView {
   std::optional<std::uint64_t> followed_;  // the loop's generation last followed (none: never)
   bool stepper_was_open_ = false;          // the Stepper was open in the last frame()
 
-  // Trails and flashes, advanced per change followed.
-  ElementId trail_element_ = -1;
+  // Trails and flashes of the frame last followed, derived from the loop's history and cell changes.
+  ElementId trail_element_ = -1;  // the element trails_ was built for (a new selection rebuilds it)
   std::vector<std::vector<render::Vec2>> trails_;
-  std::vector<CellIndex> previous_cells_;
-  std::int64_t previous_frame_ = -1;  // the frame previous_cells_ belong to
   std::shared_ptr<const std::vector<std::int64_t>> followed_ids_;  // its atom ids (a dump's), kept with it
   std::vector<float> flash_;
   std::vector<float> frame_history_;

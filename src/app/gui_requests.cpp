@@ -106,7 +106,7 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
   if (r.drag_end) attempt([&] { loop.drag().end(); });
 }
 
-bool step_forwards(FrameLoop& loop, GlView& view, Session& session) {
+bool step_forwards(FrameLoop& loop, Session& session) {
   try {
     loop.step();
   } catch (const Error& e) {
@@ -115,7 +115,6 @@ bool step_forwards(FrameLoop& loop, GlView& view, Session& session) {
     return false;
   }
   ++session.frames_simulated;  // the simulation's own rate (SimRate)
-  view.follow(loop);  // each step its trail point and flash fade, however many this UI frame
   return true;
 }
 

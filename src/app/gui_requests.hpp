@@ -11,9 +11,9 @@ namespace nbscope {
 // Applies the UI frame's requests, at the top of the next frame (once a step in flight was adopted);
 // the view learns what they did from the loop (GlView::follow), not from here.
 void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Session& session);
-// One step forwards (adopting the step begun last frame, if any), followed by the view; false,
+// One step forwards (adopting the step begun last frame, if any); false,
 // paused, when it failed.
-bool step_forwards(FrameLoop& loop, GlView& view, Session& session);
+bool step_forwards(FrameLoop& loop, Session& session);
 // One slice of a resume in progress (the window stays responsive); when it arrives the simulation
 // plays on from the resumed frame.
 void continue_resume(FrameLoop& loop, Session& session);

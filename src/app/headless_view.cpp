@@ -18,17 +18,15 @@ class OffscreenView final : public HeadlessView {
   OffscreenView(const ViewOptions& options, const FrameLoop& loop)
       : options_(options),
         context_(render::make_offscreen_context(options.width, options.height, options.gl)),
-        view_(*context_, nullptr, options) {
+        view_(*context_, nullptr, options, loop) {  // the scene as loaded: the camera fits it
     session_.scene_path = loop.source().scene().path;
     session_.scene_files = bundled_scene_files();
     if (loop.source().has_scene()) {  // (a world that stopped at load has no elements to select)
       view_.check_selection(loop);
       view_.check_layer(loop);
     }
-    view_.follow(loop);  // the scene as loaded: the camera fits it
   }
 
-  void follow(const FrameLoop& loop) override { view_.follow(loop); }
   void focus_violation(const FrameLoop& loop, const Violation& violation) override {
     view_.focus_violation(loop, violation);
     view_.state().layer = view_.layer_option();  // --layer K still wins over the pair's layer (auto: the pair's)

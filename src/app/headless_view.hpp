@@ -13,9 +13,6 @@ namespace nbscope {
 class HeadlessView {
  public:
   virtual ~HeadlessView() = default;
-  // Catches up with the loop's changes (GlView::follow): call after each step or frame shown, so
-  // that each adds its trail point and fades the flashes; write_screenshot() follows by itself.
-  virtual void follow(const FrameLoop& loop) = 0;
   // Shows `violation` of the current frame as the Violations panel's choice does: both elements
   // selected, the camera on them, the Violations panel open and the stepper at the operation.
   virtual void focus_violation(const FrameLoop& loop, const Violation& violation) = 0;

@@ -41,8 +41,7 @@ struct ViewRig {
     load_scene_file(loop, scene(file));
     session.scene_path = loop.source().scene().path;
     session.paused = true;
-    view = std::make_unique<GlView>(*context, nullptr, options);
-    view->follow(loop);
+    view = std::make_unique<GlView>(*context, nullptr, options, loop);
   }
   void frames(int n) {
     for (int k = 0; k < n; ++k) view->frame(loop, session, false, 1.0f / 60.0f);
@@ -146,8 +145,7 @@ TEST(GlViewWindow, ATapThroughGlfwsCallbacksActs) {
   o.width = 800;
   o.height = 500;
   o.shader_dir = NBSCOPE_SHADER_DIR;
-  GlView view(window, window.handle(), o);
-  view.follow(loop);
+  GlView view(window, window.handle(), o, loop);
   view.frame(loop, session, true, 1.0f / 60.0f);
   // The key callback GLFW calls now: ImGui's, installed after the window's.
   const GLFWkeyfun key = glfwSetKeyCallback(window.handle(), nullptr);
@@ -216,10 +214,10 @@ TEST(GlView, ASelectionSurvivesARestartButNotAnotherScene) {
   EXPECT_EQ(rig.view->state().selected, 5) << "--select chose it for the first scene";
   rig.loop.step();
   rig.loop.restart();
-  rig.view->follow(rig.loop);
+  rig.frames(1);
   EXPECT_EQ(rig.view->state().selected, 5) << "a restart shows the same bodies";
   load_scene_file(rig.loop, scene("pile.json"));
-  rig.view->follow(rig.loop);
+  rig.frames(1);
   EXPECT_EQ(rig.view->state().selected, -1) << "element 5 of another scene is another body";
 }
 
@@ -233,50 +231,67 @@ bool any_flash(const GlView& view) {
   return std::any_of(view.flashes().begin(), view.flashes().end(), [](float f) { return f > 0; });
 }
 
-// Followed after every step: one trail point a step, and the elements whose cell changed flash.
-TEST(GlViewFollow, EachStepFollowedAddsItsTrailPointAndFlashes) {
+// Drawn after every step: the trail grows one point a step from the first frame, and the elements
+// whose cell changed flash.
+TEST(GlViewFollow, EachStepDrawnAddsItsTrailPointAndFlashes) {
   ViewOptions o;
   o.select = 12;
   ViewRig rig(o, "default.json");
-  EXPECT_TRUE(rig.view->trails().empty()) << "a new scene starts without a trail";
+  ASSERT_EQ(rig.view->trails().size(), 1u);
+  EXPECT_EQ(rig.view->trails().front(), std::vector<render::Vec2>{position(rig.loop, 12)}) << "a new scene: its first frame only";
   bool flashed = false;
   for (int k = 1; k <= 20; ++k) {
     rig.loop.step();
-    rig.view->follow(rig.loop);
+    rig.frames(1);
     ASSERT_EQ(rig.view->trails().size(), 1u);
-    ASSERT_EQ(rig.view->trails().front().size(), static_cast<std::size_t>(k)) << "one point a step";
+    ASSERT_EQ(rig.view->trails().front().size(), static_cast<std::size_t>(k + 1)) << "one point a step";
     EXPECT_EQ(rig.view->trails().front().back(), position(rig.loop, 12));
     flashed = flashed || any_flash(*rig.view);
   }
   EXPECT_TRUE(flashed) << "20 frames of the default scene move some element to another cell";
 }
 
-// A view that missed changes (N steps, followed once at the end) still catches up: the trail comes
-// from the history, and the flashes start again as after a jump (no cell change is known).
-TEST(GlViewFollow, StepsFollowedOnlyAtTheEndGiveTheTrailFromTheHistoryAndNoFlashes) {
+// Nobody tells a view about steps: one that draws only after N steps shows the very trail and
+// flashes of one that drew after each (the trail from the history, the flashes from the loop's
+// cell changes). (One view at a time holds the ImGui context: the first rig's figures are kept.)
+TEST(GlViewFollow, StepsDrawnOnlyAtTheEndShowWhatEachStepDrawnShows) {
   ViewOptions o;
   o.select = 12;
+  std::vector<std::vector<render::Vec2>> trails;
+  std::vector<float> flashes;
+  {
+    ViewRig each(o, "default.json");
+    for (int k = 1; k <= 20; ++k) {
+      each.loop.step();
+      each.frames(1);
+    }
+    trails = each.view->trails();
+    flashes = each.view->flashes();
+  }
+  ASSERT_TRUE(std::any_of(flashes.begin(), flashes.end(), [](float f) { return f > 0; })) << "nothing to compare";
   ViewRig rig(o, "default.json");
   std::vector<render::Vec2> path{position(rig.loop, 12)};
   for (int k = 1; k <= 20; ++k) {
     rig.loop.step();
     path.push_back(position(rig.loop, 12));
   }
-  rig.view->follow(rig.loop);
+  rig.frames(1);
   ASSERT_EQ(rig.view->trails().size(), 1u);
   EXPECT_EQ(rig.view->trails().front(), path) << "frames 0..20 from the history";
-  EXPECT_FALSE(any_flash(*rig.view)) << "a jump starts the flashes again";
-  // A restart then steps, missed alike: the new run's trail only.
+  EXPECT_EQ(rig.view->trails(), trails);
+  ASSERT_EQ(rig.view->flashes().size(), flashes.size());
+  for (std::size_t k = 0; k < flashes.size(); ++k) EXPECT_FLOAT_EQ(rig.view->flashes()[k], flashes[k]) << "element " << k;
+  // A restart then steps, unseen alike: the new run's trail only, flashes from its own steps.
   rig.loop.restart();
   rig.loop.step();
   rig.loop.step();
-  rig.view->follow(rig.loop);
+  rig.frames(1);
   ASSERT_EQ(rig.view->trails().size(), 1u);
   EXPECT_EQ(rig.view->trails().front(), std::vector<render::Vec2>(path.begin(), path.begin() + 3));
-  EXPECT_FALSE(any_flash(*rig.view));
+  EXPECT_EQ(rig.loop.cell_changes().steps(), 2u);
 }
 
-// Nothing changed since the last follow(): nothing moves, not even the flashes' fading; a redetect
+// Nothing changed since the last frame drawn: nothing moves, not even the flashes' fading; a redetect
 // (same frame) changes nothing seen either.
 TEST(GlViewFollow, NoChangeAndARedetectLeaveTrailsAndFlashesAlone) {
   ViewOptions o;
@@ -284,23 +299,22 @@ TEST(GlViewFollow, NoChangeAndARedetectLeaveTrailsAndFlashesAlone) {
   ViewRig rig(o, "default.json");
   for (int k = 0; k < 60 && !any_flash(*rig.view); ++k) {
     rig.loop.step();
-    rig.view->follow(rig.loop);
+    rig.frames(1);
   }
   ASSERT_TRUE(any_flash(*rig.view));
   const std::vector<float> flashes = rig.view->flashes();
   const auto trails = rig.view->trails();
-  rig.view->follow(rig.loop);
-  rig.frames(2);  // frame() follows too
+  rig.frames(3);
   EXPECT_EQ(rig.view->flashes(), flashes) << "no change: the flashes did not fade";
   EXPECT_EQ(rig.view->trails(), trails);
   rig.loop.redetect();
   rig.loop.redetect_with_algorithm("sort");
-  rig.view->follow(rig.loop);
+  rig.frames(1);
   EXPECT_EQ(rig.view->flashes(), flashes) << "the same frame detected again";
   EXPECT_EQ(rig.view->trails(), trails);
   // The next step fades them once.
   rig.loop.step();
-  rig.view->follow(rig.loop);
+  rig.frames(1);
   for (std::size_t k = 0; k < flashes.size(); ++k) {
     const float now = rig.view->flashes()[k];
     if (flashes[k] > 0) {
@@ -308,6 +322,22 @@ TEST(GlViewFollow, NoChangeAndARedetectLeaveTrailsAndFlashesAlone) {
     }
   }
   EXPECT_EQ(rig.view->trails().front().size(), trails.front().size() + 1);
+}
+
+// A selection made mid-run shows where the element came from at once: its trail over the kept frames.
+TEST(GlViewFollow, ANewSelectionShowsItsPastTrail) {
+  ViewRig rig(ViewOptions{}, "default.json");
+  std::vector<render::Vec2> path{position(rig.loop, 7)};
+  for (int k = 1; k <= 12; ++k) {
+    rig.loop.step();
+    path.push_back(position(rig.loop, 7));
+  }
+  rig.frames(1);
+  EXPECT_TRUE(rig.view->trails().empty()) << "nothing selected";
+  rig.view->state().selected = 7;
+  rig.frames(1);
+  ASSERT_EQ(rig.view->trails().size(), 1u);
+  EXPECT_EQ(rig.view->trails().front(), path);
 }
 
 // Going back one kept frame flashes from the neighbour; a jump starts the flashes again; either way
@@ -319,15 +349,15 @@ TEST(GlViewFollow, AFrameShownRebuildsTheTrailFromTheHistory) {
   std::vector<render::Vec2> path{position(rig.loop, 12)};
   for (int k = 1; k <= 30; ++k) {
     rig.loop.step();
-    rig.view->follow(rig.loop);
+    rig.frames(1);
     path.push_back(position(rig.loop, 12));
   }
   rig.loop.show_frame(10);
-  rig.view->follow(rig.loop);
+  rig.frames(1);
   EXPECT_EQ(rig.view->trails().front(), std::vector<render::Vec2>(path.begin(), path.begin() + 11));
   EXPECT_FALSE(any_flash(*rig.view)) << "a jump";
   ASSERT_TRUE(rig.loop.step_back());
-  rig.view->follow(rig.loop);
+  rig.frames(1);
   EXPECT_EQ(rig.view->trails().front(), std::vector<render::Vec2>(path.begin(), path.begin() + 10));
 }
 
@@ -340,11 +370,11 @@ TEST(GlViewFollow, ANewSceneFitsTheCameraARestartKeepsIt) {
   rig.view->camera().set(looked, 7.0);
   rig.loop.step();
   rig.loop.restart();
-  rig.view->follow(rig.loop);
+  rig.frames(1);
   EXPECT_EQ(rig.view->camera().centre(), looked) << "a restart keeps the camera";
   EXPECT_EQ(rig.view->camera().pixels_per_metre(), 7.0);
   load_scene_file(rig.loop, scene("pile.json"));
-  rig.view->follow(rig.loop);
+  rig.frames(1);
   EXPECT_NE(rig.view->camera().pixels_per_metre(), 7.0) << "another scene is fitted";
 }
 
@@ -355,7 +385,7 @@ TEST(GlViewFollow, TheCameraOptionWinsOverTheFit) {
   ViewRig pinned(fixed, "default.json");
   EXPECT_EQ(pinned.view->camera().pixels_per_metre(), 50.0) << "--camera over the fit";
   load_scene_file(pinned.loop, scene("pile.json"));
-  pinned.view->follow(pinned.loop);
+  pinned.frames(1);
   EXPECT_EQ(pinned.view->camera().pixels_per_metre(), 50.0) << "--camera over the fit of a new scene too";
 }
 

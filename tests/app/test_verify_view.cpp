@@ -113,8 +113,7 @@ TEST(PanelsView, TheSimViewPointsAtTheFrameLoopsOwnResult) {
   ViewOptions o = options();
   o.width = 800;
   o.height = 500;
-  GlView view(*context, nullptr, o);
-  view.follow(loop);
+  GlView view(*context, nullptr, o, loop);
   const FrameResult* seen = nullptr;
   std::int64_t number = -1;
   view.host().add_panel(std::make_unique<FrameProbe>(&seen, &number));

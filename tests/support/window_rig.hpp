@@ -42,8 +42,7 @@ struct RecordingWindowRig {
     options.shader_dir = NBSCOPE_SHADER_DIR;
     loop.load_recording(std::move(rec));
     session.paused = true;
-    view = std::make_unique<GlView>(*context, nullptr, options);
-    view->follow(loop);
+    view = std::make_unique<GlView>(*context, nullptr, options, loop);
   }
   // Draws n frames (no input), as the window does while paused.
   void frames(int n) {
