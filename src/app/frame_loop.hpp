@@ -186,12 +186,7 @@ class FrameLoop {
  private:
   // show_frame(), published as a change of `kind` (a step forwards through kept frames is `stepped`).
   void show(std::int64_t frame, FrameChange::Kind kind);
-  std::unique_ptr<FrameLoopState> impl_;
-  LoopSource source_;
-  LoopPipeline pipeline_;
-  LoopHistory history_;
-  LoopResume resume_;
-  LoopDrag drag_;
+  std::unique_ptr<FrameLoopState> impl_;  // the coordination's state and the parts (app/frame_loop_impl.hpp)
 };
 
 // Reads, validates and builds the scene file at `path`, then loop.load_scene(); throws Error

@@ -7,24 +7,23 @@
 namespace nbscope {
 
 FrameLoopState::FrameLoopState(FrameLoopOptions o)
-    : options(std::move(o)), pipeline(PipelineOptions{options.algorithm, options.fault, options.checks, options.brute_limit}) {
-  history.set_budget(options.history_budget);
-  history.set_max_summaries(options.max_summaries);
-}
+    : options(std::move(o)),
+      pipeline(source, PipelineOptions{options.algorithm, options.fault, options.checks, options.brute_limit}, options.threads),
+      history(source, options.history_budget, options.max_summaries) {}
 FrameLoopState::~FrameLoopState() { wait_for_worker(); }
 
 void FrameLoopState::detect_and_check(FrameChange::Kind kind) {
   // Every change of the shown frame comes through here: load, restart, step, show, redetect, resume.
   const std::string what =
-      "detection (" + pipeline.options().algorithm + ") and the check of " + grouped(now().size()) + " elements";
+      "detection (" + lanes().options().algorithm + ") and the check of " + grouped(now().size()) + " elements";
   watch.next_phase(frame_number(), [what] { return what; });
   const Unwatch unwatch{watch};
   FrameInput in;
-  in.source = &source();
-  in.first = source().first();
+  in.source = &frames();
+  in.first = frames().first();
   in.previous = [this] { return elements_before(frame_number()); };
-  in.where = source().scene().path + ": frame " + std::to_string(frame_number()) + ": ";
-  pipeline.run(in);
+  in.where = frames().scene().path + ": frame " + std::to_string(frame_number()) + ": ";
+  lanes().run(in);
   publish(kind);
 }
 
@@ -35,14 +34,14 @@ void FrameLoopState::detect_on_worker(const Frame& next) {
   in.source = &next;
   in.first = next.frame() == 0;
   in.previous = [&next] { return next.elements(); };
-  in.where = frames->scene().path + ": frame " + std::to_string(next.frame()) + ": ";
-  pipeline.run(in);
+  in.where = frames().scene().path + ": frame " + std::to_string(next.frame()) + ": ";
+  lanes().run(in);
 }
 
 bool FrameLoopState::detection_can_leave_thread() const {
   // A plugin's detector is called on the thread that loaded it: its frames are detected here.
-  if (!detector_info(pipeline.options().algorithm).library.empty()) return false;
-  for (const std::string& name : pipeline.comparison_algorithms())
+  if (!detector_info(lanes().options().algorithm).library.empty()) return false;
+  for (const std::string& name : lanes().comparison_algorithms())
     if (!detector_info(name).library.empty()) return false;
   return true;
 }
@@ -52,7 +51,7 @@ void FrameLoopState::publish(FrameChange::Kind kind) {
   // Published only now: a detection that threw leaves the views on the last whole frame.
   // (A redetect after such a throw shows a frame the views have not followed: it moved it.)
   const bool moved = kind != FrameChange::Kind::redetected || frame_number() != change.frame;
-  const FrameResult& result = pipeline.result();
+  const FrameResult& result = lanes().result();
   if (kind == FrameChange::Kind::loaded || load_unpublished) cell_changes.start(frame_number(), result.selected().cells, result.ids);
   else if (moved) cell_changes.show(frame_number(), result.selected().cells, result.ids, kind == FrameChange::Kind::stepped);
   ++change.generation;
@@ -69,11 +68,11 @@ void FrameLoopState::redetect() {
 }
 
 void FrameLoopState::record_frame() {
-  const FrameResult& result = pipeline.result();
+  const FrameResult& result = lanes().result();
   const FrameReport& r = result.report();
   FrameSummary s;
   s.frame = frame_number();
-  s.time = source().time();
+  s.time = frames().time();
   s.hash = r.hash;
   s.checked = r.checked;
   s.elements = now().size();
@@ -82,25 +81,25 @@ void FrameLoopState::record_frame() {
   s.physics_ms = static_cast<float>(r.timings.physics_ms);
   s.detection_ms = static_cast<float>(r.timings.detection_ms);
   s.check_ms = static_cast<float>(r.timings.check_ms);
-  if (const auto index = history.find(s.frame)) {
-    const FrameSummary& before = history.at(*index);
+  if (const auto index = kept().find(s.frame)) {
+    const FrameSummary& before = kept().at(*index);
     s.physics_ms = before.physics_ms;  // a frame shown again is not simulated again
     if (!r.checked && before.checked) {
       // Checks switched off: what the frame's last check found stays (summary and violations).
       s.checked = true;
       s.violations = before.violations;
       s.check_ms = before.check_ms;
-      history.update(*index, s);
+      kept().update(*index, s);
       return;
     }
-    history.update(*index, s);  // (update keeps its `kept`)
+    kept().update(*index, s);  // (update keeps its `kept`)
   } else {
-    KeptState kept;
-    if (history.budget() > 0) kept = source().keep(pipeline.options().checks ? &result.box2d : nullptr);
-    s.kept = kept.state != nullptr;  // with no budget only the newest frame itself can be shown
-    history.push(s, std::move(kept.state), kept.bytes);
+    KeptState state;
+    if (kept().budget() > 0) state = frames().keep(lanes().options().checks ? &result.box2d : nullptr);
+    s.kept = state.state != nullptr;  // with no budget only the newest frame itself can be shown
+    kept().push(s, std::move(state.state), state.bytes);
   }
-  if (r.checked && options.log_violations) violations.set_frame(r);
+  if (r.checked && options.log_violations) violations().set_frame(r);
 }
 
 void FrameLoopState::check_recorded_source(bool wanted, const Recording* rec, const std::string& path) {
@@ -114,48 +113,48 @@ void FrameLoopState::check_recorded_source(bool wanted, const Recording* rec, co
 }
 
 void FrameLoopState::accept_recorded() const {
-  check_recorded_fault(pipeline.options().fault);
-  if (loaded()) check_recorded_source(true, source().recording(), source().scene().path);
+  check_recorded_fault(lanes().options().fault);
+  if (loaded()) check_recorded_source(true, frames().recording(), frames().scene().path);
 }
 
 void FrameLoopState::load(std::unique_ptr<FrameSource> fresh) {
-  check_recorded_source(pipeline.has_recorded_lane(), fresh->recording(), fresh->scene().path);
+  check_recorded_source(lanes().has_recorded_lane(), fresh->recording(), fresh->scene().path);
   DetectOptions opts;
   opts.touching = options.touching;
   opts.threads = options.threads;
   opts.grid = fresh->scene().grid;  // a recording's grid pins as a scene's does
-  fresh->set_budget(options.history_budget);
+  fresh->set_budget(history.budget());
   watch.disarm();  // its note describes the old source
   watch.reset();   // a new run
   discard_step();  // the world it steps goes
-  frames = std::move(fresh);
-  pipeline.set_detect_options(opts);
+  source.frames_ = std::move(fresh);
+  lanes().set_detect_options(opts);
   start();
 }
 
 void FrameLoopState::start() {
-  pipeline.clear_reports();
-  physics_overlapped = false;
-  detection_overlapped = false;
-  history.clear();
-  violations.clear();
+  lanes().clear_reports();
+  source.physics_overlapped_ = false;
+  source.detection_overlapped_ = false;
+  kept().clear();
+  violations().clear();
   // Frames known in advance (a recording's) are showable from the start; each is checked when first shown.
-  for (const RecordedEntry& f : source().entries()) {
+  for (const RecordedEntry& f : frames().entries()) {
     FrameSummary s;
     s.frame = f.number;
     s.time = f.time;
     s.kept = true;
     s.elements = f.elements;
-    history.push(s, nullptr, 0);
+    kept().push(s, nullptr, 0);
   }
-  pipeline.remember_previous(frame_number(), now());
+  lanes().remember_previous(frame_number(), now());
   load_unpublished = true;  // until a detection publishes it (this one may throw)
   detect_and_check(FrameChange::Kind::loaded);
 }
 
 Elements FrameLoopState::elements_before(std::int64_t frame) const {
-  const auto index = history.find(frame - 1);
-  return source().previous_elements(index ? history.state(*index) : nullptr);
+  const auto index = kept().find(frame - 1);
+  return frames().previous_elements(index ? kept().state(*index) : nullptr);
 }
 
 }  // namespace nbscope

@@ -2,9 +2,9 @@
 // (frame_loop.cpp: frames, configuration, accessors; frame_loop_history.cpp: showing kept frames and
 // resuming; frame_loop_overlap.cpp: the overlapped step). Not for anyone else.
 //
-// Who owns what: the frame source (io/frame_source.hpp; made in app/frame_sources.cpp) makes frames
-// and shows past ones; the pipeline (check/pipeline.hpp) detects and checks them into a FrameResult;
-// the history and the violation log keep the run; FrameLoopState coordinates them and names no
+// Who owns what: the parts (app/frame_loop_parts.hpp) own the frame source, the pipeline and the
+// history; FrameLoopState owns them and the coordination's own state (the change published, the
+// cell changes, the slow-frame note), and is the only one that changes the parts. It names no
 // concrete source.
 #pragma once
 #include <algorithm>
@@ -25,32 +25,22 @@ namespace nbscope {
 
 struct FrameLoopState {
   FrameLoopOptions options;
-  // The run's frames: a simulated scene or recorded frames, or null before the first load.
-  std::unique_ptr<FrameSource> frames;
-  Pipeline pipeline;
-
-  // ---- history ----
-  FrameHistory history;
-  ViolationLog violations;
+  LoopSource source;      // the frame source (null before the first load)
+  LoopPipeline pipeline;  // the pipeline that detects and checks each frame
+  LoopHistory history;    // the run's frames and its violation log
+  LoopResume resume{*this};
+  LoopDrag drag{*this};
 
   FrameChange change;               // what the last detect_and_check() published (FrameLoop::change)
   CellChanges cell_changes;         // which element changed cell at which step, as published
   bool load_unpublished = false;    // a new source whose first detection threw: the next change carries it
-  bool physics_overlapped = false;  // the current frame's physics ran on the worker (frame_loop_overlap.cpp)
-  bool detection_overlapped = false;  // so did its detection and check
-  // While a step in flight is detected on the worker (it owns the pipeline until settle()): the
-  // shown frame's result and detector bytes as they were, and a record_traces() wish for the next.
-  std::unique_ptr<FrameResult> shown_result;
-  std::size_t shown_detector_bytes = 0;
-  DetectOptions shown_detect;  // the pipeline's detect options for the shown frame (its trace's)
-  std::optional<bool> wanted_traces;
 
   // The slow-frame note (app/frame_watch.hpp). Declared last: its thread, which may read the world's
   // counters, is joined before anything else goes.
   FrameWatch watch;
   // The frame the source's step() is making, when the source says what that is (Box2D's step).
   void watch_step() {
-    if (auto note = frames->step_note()) watch.arm(frames->newest_frame() + 1, std::move(note));
+    if (auto note = frames().step_note()) watch.arm(frames().newest_frame() + 1, std::move(note));
   }
   // Disarms the note when a frame is done, returned or thrown.
   struct Unwatch {
@@ -63,49 +53,34 @@ struct FrameLoopState {
   FrameLoopState(const FrameLoopState&) = delete;
   FrameLoopState& operator=(const FrameLoopState&) = delete;
 
-  // The source's simulation (the overlapped step, drags, resume), or null.
-  [[nodiscard]] Simulation* simulation() const { return frames ? frames->simulation() : nullptr; }
-  // True while a step begun by FrameLoop::begin_step() has not been adopted.
-  [[nodiscard]] bool pending() const {
-    const Simulation* sim = simulation();
-    return sim != nullptr && sim->pending();
-  }
+  // ---- the parts' own state, for the coordination ----
+  [[nodiscard]] bool loaded() const { return source.loaded(); }
+  // The frame source (loaded() first).
+  [[nodiscard]] FrameSource& frames() const { return *source.frames_; }
+  [[nodiscard]] const Elements& now() const { return frames().elements(); }
+  [[nodiscard]] std::int64_t frame_number() const { return frames().frame(); }
+  [[nodiscard]] Simulation* simulation() const { return source.simulation(); }
+  [[nodiscard]] bool pending() const { return source.pending(); }
   // True while a resume re-simulates towards the past frame shown.
   [[nodiscard]] bool resuming() const {
     const Simulation* sim = simulation();
     return sim != nullptr && sim->resuming();
   }
-  // Returns once the worker is done with the world (the accessors still show the current frame).
-  void wait_for_worker() const {
-    if (const Simulation* sim = simulation()) sim->wait();
-  }
+  void wait_for_worker() const { source.wait_for_worker(); }
+  [[nodiscard]] Pipeline& lanes() { return pipeline.pipeline_; }
+  [[nodiscard]] const Pipeline& lanes() const { return pipeline.pipeline_; }
+  [[nodiscard]] FrameHistory& kept() { return history.frames_; }
+  [[nodiscard]] const FrameHistory& kept() const { return history.frames_; }
+  [[nodiscard]] ViolationLog& violations() { return history.violations_; }
+
   // The step in flight made the current frame (detected and checked, as step() does); true if there
   // was one. Throws Error as step() does.
   bool settle();
   // The step in flight forgotten, its world about to be replaced (a load or restart).
   void discard_step() {
     if (Simulation* sim = simulation()) sim->discard_step();
-    shown_result.reset();
-    apply_wanted_traces();
+    pipeline.take_back();
   }
-  // The shown frame's trace while the pipeline is the worker's: its detection's own, else made by a
-  // fresh detector of the same kind (a built-in keeps nothing between frames); null under the
-  // stale-positions fault, whose input the worker holds.
-  std::shared_ptr<const FrameTrace> shown_trace();
-  // True while the pipeline is the worker's (a step in flight detected there).
-  [[nodiscard]] bool pipeline_on_worker() const { return shown_result != nullptr && pending(); }
-  // A record_traces() wish made while the pipeline was the worker's, applied once it is back.
-  void apply_wanted_traces() {
-    if (wanted_traces) pipeline.set_record_traces(*wanted_traces);
-    wanted_traces.reset();
-  }
-
-  // ---- the frame source ----
-  [[nodiscard]] bool loaded() const { return frames != nullptr; }
-  // The frame shown (loaded() first).
-  [[nodiscard]] const FrameSource& source() const { return *frames; }
-  [[nodiscard]] const Elements& now() const { return source().elements(); }
-  [[nodiscard]] std::int64_t frame_number() const { return source().frame(); }
 
   // The shown frame through the pipeline (lanes, faults, check), then into the history; then
   // published as a change of `kind` (a redetect that finds another frame shown moved it too).
@@ -123,9 +98,9 @@ struct FrameLoopState {
   void record_frame();
   // The current frame's physics time, measured on this thread (settle() marks the worker's).
   void set_physics_ms(double ms) {
-    pipeline.set_physics_ms(ms);
-    physics_overlapped = false;
-    detection_overlapped = false;
+    lanes().set_physics_ms(ms);
+    source.physics_overlapped_ = false;
+    source.detection_overlapped_ = false;
   }
   // Error unless `rec` (null: a scene) gives pairs to check for a `recorded` lane (`wanted`).
   static void check_recorded_source(bool wanted, const Recording* rec, const std::string& path);

@@ -1,6 +1,13 @@
-// nbscope app: the parts FrameLoop hands out (app/frame_loop.hpp): each a window on the loop's one state
-// (app/frame_loop_impl.hpp), grouped by what it is about, so that FrameLoop itself keeps only the
-// coordination (load, step, time travel). They live as long as their FrameLoop.
+// nbscope app: the parts FrameLoop hands out (app/frame_loop.hpp), grouped by what they are about,
+// so that FrameLoop itself keeps only the coordination (load, step, time travel).
+//
+// Who owns what: LoopSource owns the frame source, LoopPipeline the pipeline (and, while a step is
+// detected on the worker, the copy of the shown frame's result the views read), LoopHistory the
+// run's frames and its violation log. Each reads only its own state and the parts it was given
+// (the pipeline and the history read the source); only the loop's coordination changes them
+// (app/frame_loop_impl.hpp). LoopResume and LoopDrag own nothing: they are the simulation's verbs,
+// and each says what it costs (a step in flight is adopted first, waiting for the worker). They live
+// as long as their FrameLoop.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -13,10 +20,12 @@
 
 #include "check/faults.hpp"
 #include "check/history.hpp"
+#include "check/pipeline.hpp"
 #include "check/report.hpp"
 #include "core/detector.hpp"
 #include "core/frame_trace.hpp"
 #include "core/pairs.hpp"
+#include "io/frame_source.hpp"
 #include "physics/scene.hpp"
 #include "physics/shapes.hpp"
 
@@ -30,8 +39,6 @@ struct Recording;
 
 class LoopSource {
  public:
-  // A view of `state` (FrameLoop makes it).
-  explicit LoopSource(FrameLoopState& state) : s_(&state) {}
   // True when a scene or a recording is loaded.
   [[nodiscard]] bool has_scene() const;
   // The loaded scene (an empty default Scene before the first load; for a recording: its path, its
@@ -79,15 +86,30 @@ class LoopSource {
   void body_shapes(std::vector<BodyShape>& out) const;
 
  private:
-  FrameLoopState* s_;
+  friend struct FrameLoopState;
+  friend class FrameLoop;
+  friend class LoopPipeline;
+  friend class LoopHistory;
+  [[nodiscard]] bool loaded() const { return frames_ != nullptr; }
+  // The source's simulation (the overlapped step, drags, resume), or null.
+  [[nodiscard]] Simulation* simulation() const { return frames_ ? frames_->simulation() : nullptr; }
+  // True while a step begun by FrameLoop::begin_step() has not been adopted.
+  [[nodiscard]] bool pending() const;
+  // Returns once the worker is done with the world (the accessors still show the current frame).
+  void wait_for_worker() const;
+
+  std::unique_ptr<FrameSource> frames_;  // null before the first load
+  bool physics_overlapped_ = false;      // the current frame's physics ran on the worker
+  bool detection_overlapped_ = false;    // so did its detection and check
 };
 
 // What detects and checks each frame, read (the calls that change it are FrameLoop's
 // redetect_with_*: each detects the frame shown again), and the frame's trace.
 class LoopPipeline {
  public:
-  // A view of `state` (FrameLoop makes it).
-  explicit LoopPipeline(FrameLoopState& state) : s_(&state) {}
+  // The pipeline of `options`, detecting `source`'s frames with up to `threads` threads.
+  LoopPipeline(const LoopSource& source, const PipelineOptions& options, int threads)
+      : source_(source), pipeline_(options), threads_(threads) {}
   // The chosen detector's registry name (or "recorded"); FrameLoop::redetect_with_algorithm changes it.
   [[nodiscard]] const std::string& algorithm() const;
   // The injected fault (check/faults.hpp).
@@ -119,19 +141,43 @@ class LoopPipeline {
   [[nodiscard]] bool record_traces() const;
 
  private:
-  FrameLoopState* s_;
+  friend struct FrameLoopState;
+  friend class FrameLoop;
+  // The shown frame's result: the pipeline's, or while the worker detects a step, the copy lent().
+  [[nodiscard]] const FrameResult& shown() const { return on_worker() ? *shown_result_ : pipeline_.result(); }
+  // True while the pipeline is the worker's (a step in flight detected there).
+  [[nodiscard]] bool on_worker() const { return shown_result_ != nullptr && source_.pending(); }
+  // The worker takes the pipeline for a step in flight: the shown frame's result, detector bytes and
+  // detect options are copied for the views meanwhile.
+  void lend();
+  // The pipeline is this thread's again (the step adopted, discarded or never begun): the copy goes
+  // and a record_traces() wish made meanwhile applies.
+  void take_back();
+  // The shown frame's trace while the pipeline is the worker's: its detection's own, else made by a
+  // fresh detector of the same kind (a built-in keeps nothing between frames); null under the
+  // stale-positions fault, whose input the worker holds.
+  std::shared_ptr<const FrameTrace> shown_trace();
+
+  const LoopSource& source_;
+  Pipeline pipeline_;
+  int threads_;
+  std::unique_ptr<FrameResult> shown_result_;  // while lent: the shown frame's result
+  std::size_t shown_detector_bytes_ = 0;
+  DetectOptions shown_detect_;                 // the shown frame's detect options (its trace's)
+  std::optional<bool> wanted_traces_;          // a record_traces() wish made while lent
 };
 
 // Every frame of the run (check/history.hpp) and which of them can be shown again.
 class LoopHistory {
  public:
-  // A view of `state` (FrameLoop makes it).
-  explicit LoopHistory(FrameLoopState& state) : s_(&state) {}
+  // The history of `source`'s run: `budget` bytes of past states, at most `max_summaries` summaries.
+  LoopHistory(LoopSource& source, std::size_t budget, std::size_t max_summaries);
   // The run's frames: a summary of each, and the kept states that show past ones again.
   [[nodiscard]] const FrameHistory& frames() const;
   // Bytes of world states (or of recorded frames read from files) to keep; older ones are dropped at
   // once when the budget shrinks.
   void set_budget(std::size_t bytes);
+  [[nodiscard]] std::size_t budget() const { return frames_.budget(); }
   // The bytes the run's past holds: the summaries, the kept world states, the recorded frames kept
   // beside the one shown.
   [[nodiscard]] std::size_t bytes() const;
@@ -150,16 +196,21 @@ class LoopHistory {
   void element_path(ElementId k, std::int64_t from, std::int64_t to, std::vector<std::array<double, 2>>& out) const;
 
  private:
-  FrameLoopState* s_;
+  friend struct FrameLoopState;
+  friend class FrameLoop;
+  LoopSource& source_;
+  FrameHistory frames_;
+  ViolationLog violations_;
 };
 
 // Continuing the simulation from a past frame K: a fresh world is built from the scene and stepped
 // to K with the drags recorded before K (Box2D is deterministic), and the later frames are replaced.
+// Owns nothing (the simulation keeps the resume); acts through the loop's coordination.
 class LoopResume {
  public:
-  // A view of `state` (FrameLoop makes it).
-  explicit LoopResume(FrameLoopState& state) : s_(&state) {}
-  // Starts from the shown past frame. No effect on the live frame or a recording.
+  // The resume of `loop`'s simulation (FrameLoop makes it).
+  explicit LoopResume(FrameLoopState& loop) : loop_(loop) {}
+  // Starts from the shown past frame (a step in flight adopted first). No effect on the live frame or a recording.
   void begin();
   // Re-simulates for about `budget_ms` of wall time (at least one step); true once the world is at
   // K: the frames after K are dropped and K is the live frame. Throws Error as step() does.
@@ -175,15 +226,16 @@ class LoopResume {
   [[nodiscard]] std::optional<std::int64_t> divergence() const;
 
  private:
-  FrameLoopState* s_;
+  FrameLoopState& loop_;
 };
 
 // The mouse drag (world coordinates). Each call is recorded with its frame, so that a resume replays
-// it. Only on the live frame.
+// it. Only on the live frame. Owns nothing (the simulation holds the joint); each call that acts
+// adopts a step in flight first, waiting for the worker.
 class LoopDrag {
  public:
-  // A view of `state` (FrameLoop makes it).
-  explicit LoopDrag(FrameLoopState& state) : s_(&state) {}
+  // The drag of `loop`'s simulation (FrameLoop makes it).
+  explicit LoopDrag(FrameLoopState& loop) : loop_(loop) {}
   // Grabs the dynamic body under (x, y) with a b2MouseJoint; false when there is none (or a past
   // frame is shown: resume first).
   bool begin(double x, double y);
@@ -197,7 +249,7 @@ class LoopDrag {
  private:
   // The simulation when a drag can act on it (the newest frame shown, no resume), else null.
   [[nodiscard]] Simulation* live() const;
-  FrameLoopState* s_;
+  FrameLoopState& loop_;
 };
 
 }  // namespace nbscope
