@@ -301,6 +301,7 @@ std::unique_ptr<FrameLoop> open_headless_loop(const HeadlessOptions& o, std::vec
   if (!keep && !o.history_mb && !o.replay) {
     lo.max_summaries = 16;
     lo.log_violations = false;  // nothing shows the run's violations again (the report has them)
+    lo.track_cell_changes = false;  // nor flashes
   }
   auto owned = std::make_unique<FrameLoop>(lo);  // an unknown algorithm fails here, before the scene is read
   FrameLoop& loop = *owned;

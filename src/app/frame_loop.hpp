@@ -69,6 +69,9 @@ struct FrameLoopOptions {
   // Every frame's violations into violation_log() (the Violations panel, --violation N); the same
   // headless runs log none (each frame's report still lists its own).
   bool log_violations = true;
+  // Which element changed cell at which step (cell_changes(): the window's flashes); headless runs
+  // that draw nothing keep none (20 bytes an element a frame saved).
+  bool track_cell_changes = true;
   // Whether a pair at exactly zero gap is a contact, for every detector and the check (--touching).
   Touching touching = Touching::inclusive;
   // Threads each detection of the run may use (--threads; DetectOptions::threads); the traced run

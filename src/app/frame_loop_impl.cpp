@@ -51,9 +51,11 @@ void FrameLoopState::publish(FrameChange::Kind kind) {
   // Published only now: a detection that threw leaves the views on the last whole frame.
   // (A redetect after such a throw shows a frame the views have not followed: it moved it.)
   const bool moved = kind != FrameChange::Kind::redetected || frame_number() != change.frame;
-  const FrameResult& result = lanes().result();
-  if (kind == FrameChange::Kind::loaded || load_unpublished) cell_changes.start(frame_number(), result.selected().cells, result.ids);
-  else if (moved) cell_changes.show(frame_number(), result.selected().cells, result.ids, kind == FrameChange::Kind::stepped);
+  if (options.track_cell_changes) {
+    const FrameResult& result = lanes().result();
+    if (kind == FrameChange::Kind::loaded || load_unpublished) cell_changes.start(frame_number(), result.selected().cells, result.ids);
+    else if (moved) cell_changes.show(frame_number(), result.selected().cells, result.ids, kind == FrameChange::Kind::stepped);
+  }
   ++change.generation;
   change.kind = kind;
   change.frame = frame_number();
