@@ -55,13 +55,13 @@ GlView::GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions
   renderer_ = std::make_unique<render::Renderer>(render::resolve_shader_dir(options.shader_dir));
   imgui_ = std::make_unique<render::ImGuiLayer>(window);
   gl_description_ = context.describe();
-  hide_timings_ = options.no_timings;
+  choices_.hide_timings = options.no_timings;
   camera_.set_viewport(context.width(), context.height());
 
   apply_overlay_spec(options.overlays, state_.overlays);
   stepper_ = ui::add_stepper_panels(
       host_, ui::StepperConfig{options.step ? std::optional<std::size_t>(*options.step) : std::nullopt, options.book_numbering});
-  step_option_ = options.step;
+  choices_.step = options.step;
   state_.book_numbering = options.book_numbering;
   if (options.step) ui::open_stepper_panels(state_);
   host_.add_panel(ui::make_scaling_panel(scaling_));
@@ -81,10 +81,10 @@ GlView::GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions
           if (name == lower(p->title())) state_.panel_open[p->title()] = on;
       });
   // --select takes the number shown: from 1 in book numbering (0 then selects nothing; check_selection refuses it).
-  select_option_ = options.select;
+  choices_.select = options.select;
   state_.selected = options.select < 0 ? -1 : options.book_numbering ? options.select - 1 : options.select;
-  trail_element_ = state_.selected;
-  fixed_camera_ = options.camera;
+  followed_.trail_element = state_.selected;
+  choices_.camera = options.camera;
   set_layer_option(options.layer);
   for (std::size_t f = 0; f < std::size(render::kListFilterNames); ++f)
     if (options.lists == render::kListFilterNames[f]) state_.list_filter = static_cast<render::ListFilter>(f);
@@ -106,80 +106,80 @@ void GlView::fit_camera(const FrameLoop& loop) {
 }
 
 void GlView::check_selection(const FrameLoop& loop) const {
-  if (select_option_ < 0) return;
+  if (choices_.select < 0) return;
   // A dump's frame shows atom ids: --select names one of them.
   if (const std::vector<std::int64_t>* ids = loop.result().ids.get()) {
-    if (std::find(ids->begin(), ids->end(), select_option_) == ids->end())
-      throw Error("--select: atom " + std::to_string(select_option_) + " is not in frame " + std::to_string(loop.source().frame()) +
+    if (std::find(ids->begin(), ids->end(), choices_.select) == ids->end())
+      throw Error("--select: atom " + std::to_string(choices_.select) + " is not in frame " + std::to_string(loop.source().frame()) +
                   " (its elements are named by their atom ids)");
     return;
   }
   const std::int64_t n = loop.source().elements().size();
   const bool book = state_.book_numbering;
-  if (!(book ? (select_option_ < 1 || select_option_ > n) : select_option_ >= n)) return;
+  if (!(book ? (choices_.select < 1 || choices_.select > n) : choices_.select >= n)) return;
   const std::string numbered = n == 0                ? ""
                                : book                ? ", numbered 1.." + std::to_string(n) + " in book numbering"
                                                      : ", numbered 0.." + std::to_string(n - 1) + "; --book-numbering counts from 1";
-  throw Error("--select: element " + std::to_string(select_option_) + " does not exist (the scene has " + std::to_string(n) +
+  throw Error("--select: element " + std::to_string(choices_.select) + " does not exist (the scene has " + std::to_string(n) +
               " elements" + numbered + ")");
 }
 
 void GlView::check_step() const {
-  if (!step_option_) return;
+  if (!choices_.step) return;
   const ui::StepperSession& s = *stepper_;
   if (!s.has_capture()) throw Error("--step: " + (s.message().empty() ? std::string("nothing was recorded") : s.message()));
   const std::size_t n = s.stepper().size();
-  if (static_cast<std::uint64_t>(*step_option_) > n)
-    throw Error("--step: " + std::to_string(*step_option_) + " is past the last of the " + std::to_string(n) +
+  if (static_cast<std::uint64_t>(*choices_.step) > n)
+    throw Error("--step: " + std::to_string(*choices_.step) + " is past the last of the " + std::to_string(n) +
                 " operations of frame " + std::to_string(s.frame()) + " (" + s.algorithm() + ")");
 }
 
 void GlView::follow(const FrameLoop& loop) {
   const FrameChange& c = loop.change();
-  if (followed_ && *followed_ == c.generation) return;
-  const bool new_source = !followed_ || c.loaded_at > *followed_;
-  const bool moved = followed_ && c.moved_at > *followed_;
-  followed_ = c.generation;
+  if (followed_.generation && *followed_.generation == c.generation) return;
+  const bool new_source = !followed_.generation || c.loaded_at > *followed_.generation;
+  const bool moved = followed_.generation && c.moved_at > *followed_.generation;
+  followed_.generation = c.generation;
   if (new_source) {
     // The camera fits a scene it had not shown (or the first that runs); a restart keeps it.
-    source_loaded(loop, !showed_scene_ || loaded_scene_ != loop.source().scene().path);
+    source_loaded(loop, !followed_.had_scene || followed_.scene != loop.source().scene().path);
   } else if (moved) {
     follow_atoms(loop);
   }
   // Only redetected: the same frame, nothing seen changes (the lists follow the trace, update_lists).
   if (new_source || moved) rebuild_trail(loop);
   const CellChanges& changes = loop.cell_changes();
-  flash_.resize(changes.size());
-  for (std::size_t k = 0; k < flash_.size(); ++k) flash_[k] = changes.flash(static_cast<ElementId>(k), kFlashDecay);
-  followed_ids_ = loop.result().ids;
+  followed_.flashes.resize(changes.size());
+  for (std::size_t k = 0; k < followed_.flashes.size(); ++k) followed_.flashes[k] = changes.flash(static_cast<ElementId>(k), kFlashDecay);
+  followed_.ids = loop.result().ids;
 }
 
 void GlView::source_loaded(const FrameLoop& loop, bool fit) {
   // Element k of another scene is another body: the selection is kept across a restart only (and
   // for the first scene, where --select chose it).
-  if (!loaded_scene_.empty() && loaded_scene_ != loop.source().scene().path) {
+  if (!followed_.scene.empty() && followed_.scene != loop.source().scene().path) {
     state_.selected = -1;
     stepper_->focus_element = -1;
   }
   // --select on a dump's first frame names an atom id (as shown), not a row.
   const std::vector<std::int64_t>* ids = loop.result().ids.get();
-  if (loaded_scene_.empty() && select_option_ >= 0 && ids != nullptr) {
-    const auto it = std::find(ids->begin(), ids->end(), select_option_);
+  if (followed_.scene.empty() && choices_.select >= 0 && ids != nullptr) {
+    const auto it = std::find(ids->begin(), ids->end(), choices_.select);
     state_.selected = it == ids->end() ? -1 : static_cast<ElementId>(it - ids->begin());
   }
-  loaded_scene_ = loop.source().scene().path;
-  showed_scene_ = loop.source().has_scene();
-  lists_.clear();
-  lists_serial_ = 0;
+  followed_.scene = loop.source().scene().path;
+  followed_.had_scene = loop.source().has_scene();
+  lists_.lists.clear();
+  lists_.serial = 0;
   if (state_.selected >= loop.source().elements().size()) state_.selected = -1;
   state_.selected_pair.reset();
   state_.selected_cell.reset();
   state_.current_violation = -1;
   framing_.forget_focus();
   if (fit) fit_camera(loop);
-  if (fit && fixed_camera_) {
+  if (fit && choices_.camera) {
     // --camera X,Y,PPM: (X, Y) in the middle of the part of the view the panels leave free.
-    framing_.set_home_view(*fixed_camera_);
+    framing_.set_home_view(*choices_.camera);
     framing_.go_home(camera_, host_.insets(state_));
   }
 }
@@ -187,7 +187,7 @@ void GlView::source_loaded(const FrameLoop& loop, bool fit) {
 void GlView::follow_atoms(const FrameLoop& loop) {
   // The ids of the frame last followed, of the same recording (a new source is not followed here);
   // the flashes follow their atoms in the loop (check/cell_changes.hpp), the trail the selection.
-  const std::vector<std::int64_t>* before = followed_ids_.get();
+  const std::vector<std::int64_t>* before = followed_.ids.get();
   const std::vector<std::int64_t>* after = loop.result().ids.get();
   if (before == nullptr || after == nullptr || before == after) return;
   state_.selected = row_of_atom(*before, *after, state_.selected);
@@ -201,12 +201,12 @@ void GlView::follow_atoms(const FrameLoop& loop) {
 
 void GlView::rebuild_trail(const FrameLoop& loop) {
   // The selected element over the kept frames up to the one shown (at most kTrailPoints of them).
-  trails_.clear();
-  trail_element_ = state_.selected;
-  if (trail_element_ < 0) return;
+  followed_.trails.clear();
+  followed_.trail_element = state_.selected;
+  if (followed_.trail_element < 0) return;
   std::vector<std::array<double, 2>> path;
-  loop.history().element_path(trail_element_, loop.source().frame() - static_cast<std::int64_t>(kTrailPoints) + 1, loop.source().frame(), path);
-  auto& t = trails_.emplace_back();
+  loop.history().element_path(followed_.trail_element, loop.source().frame() - static_cast<std::int64_t>(kTrailPoints) + 1, loop.source().frame(), path);
+  auto& t = followed_.trails.emplace_back();
   for (const auto& p : path) t.emplace_back(static_cast<float>(p[0]), static_cast<float>(p[1]));
 }
 
@@ -264,7 +264,7 @@ bool GlView::stepper_panels_open() const {
 ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_input, float dt) {
   const auto frame_start = Clock::now();
   follow(loop);
-  if (state_.selected != trail_element_) rebuild_trail(loop);  // a new selection: its own trail
+  if (state_.selected != followed_.trail_element) rebuild_trail(loop);  // a new selection: its own trail
   const bool stepper_now_open = stepper_open();
   if (stepper_now_open && !stepper_was_open_) aim_stepper_at_chosen_violation(loop);
   stepper_was_open_ = stepper_now_open;
@@ -286,25 +286,25 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   t0 = Clock::now();
   build_shapes(loop);
   build_checks(loop);
-  flash_list_.clear();
-  for (std::size_t k = 0; k < flash_.size(); ++k)
-    if (flash_[k] > 0.05f) flash_list_.emplace_back(static_cast<ElementId>(k), flash_[k]);
+  scratch_.flash_list.clear();
+  for (std::size_t k = 0; k < followed_.flashes.size(); ++k)
+    if (followed_.flashes[k] > 0.05f) scratch_.flash_list.emplace_back(static_cast<ElementId>(k), followed_.flashes[k]);
 
   render::OverlayScene scene;
   scene.elements = &e;
   scene.grid = &loop.result().selected().grid;
-  scene.shapes = shapes_;
-  scene.shape_points = shape_points_;
+  scene.shapes = scratch_.shapes;
+  scene.shape_points = scratch_.shape_points;
   scene.pairs = &loop.result().selected().pairs;
-  scene.checks = &checks_;
-  scene.lists = state_.overlays.lists ? &lists_ : nullptr;
+  scene.checks = &scratch_.checks;
+  scene.lists = state_.overlays.lists ? &lists_.lists : nullptr;
   scene.layer = layer();
   scene.selected = state_.selected;
   scene.focus_pair = state_.selected_pair;
   scene.hovered_cell = state_.hovered_cell;
   describe_lists(loop, trace, scene);
-  scene.trails = trails_;
-  scene.flashes = flash_list_;
+  scene.trails = followed_.trails;
+  scene.flashes = scratch_.flash_list;
   scene.insets = host_.insets(state_);  // last frame's panels: labels keep to the part of the view they leave free
   scene.covered = host_.covered();
   scene.book_numbering = state_.book_numbering;

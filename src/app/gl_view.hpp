@@ -100,20 +100,20 @@ class GlView {
   [[nodiscard]] ui::UiHost& host() { return host_; }
   // The stepper panels' session (its trace is the frame loop's) and the lists the overlay drew last.
   [[nodiscard]] ui::StepperSession& stepper() { return *stepper_; }
-  [[nodiscard]] const std::vector<TracedList>& lists() const { return lists_; }
+  [[nodiscard]] const std::vector<TracedList>& lists() const { return lists_.lists; }
   // The layer of a 3D frame the last frame() showed (null for a 2D frame): gl_view_layer.cpp.
   [[nodiscard]] const LayerSlice* layer() const { return layer_ ? &*layer_ : nullptr; }
   // The layer --layer K pinned (headless: it wins over a violation's layer); nullopt: the view chooses.
-  [[nodiscard]] std::optional<std::int32_t> layer_option() const { return layer_option_; }
+  [[nodiscard]] std::optional<std::int32_t> layer_option() const { return choices_.layer; }
   // The bodies the last frame() handed the renderer (a 3D frame: the layer shown's and the one below's).
-  [[nodiscard]] const std::vector<render::ShapeDraw>& shapes() const { return shapes_; }
+  [[nodiscard]] const std::vector<render::ShapeDraw>& shapes() const { return scratch_.shapes; }
   // --layer's value ("", "auto" or a whole number, as parse_view_options checked it): a number pins
   // UiState::layer; "auto" leaves the view to choose.
   void set_layer_option(const std::string& text);
   // The selection's trail and each element's cell-change flash (1 on the frame its cell changed,
   // then fading each step), as the last frame() drew them.
-  [[nodiscard]] const std::vector<std::vector<render::Vec2>>& trails() const { return trails_; }
-  [[nodiscard]] const std::vector<float>& flashes() const { return flash_; }
+  [[nodiscard]] const std::vector<std::vector<render::Vec2>>& trails() const { return followed_.trails; }
+  [[nodiscard]] const std::vector<float>& flashes() const { return followed_.flashes; }
   // The Scaling panel's background run (owned here; cancelled when the panel closes).
   [[nodiscard]] ScalingJob& scaling() { return *scaling_; }
   // Where the last frame's time went (overlays, GL submit, panels, traced detection), in ms.
@@ -162,16 +162,47 @@ class GlView {
   // Any of the Stepper, Arrays and Pseudocode panels is open: each shows the held trace.
   [[nodiscard]] bool stepper_panels_open() const;
 
+  // What the command line chose (ViewOptions), kept for the loads and checks to come.
+  struct Choices {
+    bool hide_timings = false;
+    std::optional<std::array<double, 3>> camera;  // --camera: replaces the fit on load
+    std::int64_t select = -1;                     // --select K as typed (book numbering: from 1)
+    std::optional<std::int64_t> step;             // --step K
+    std::optional<std::int32_t> layer;            // --layer K
+  };
+  // The view's catch-up with the loop (follow()) and what it derived from it.
+  struct Followed {
+    std::optional<std::uint64_t> generation;  // the loop's generation last followed (none: never)
+    std::string scene;                        // the scene last loaded: a selection survives a restart, not a new scene
+    bool had_scene = false;                   // the last source followed had a scene (not a world stopped at load)
+    std::shared_ptr<const std::vector<std::int64_t>> ids;  // its atom ids (a dump's), kept with it
+    ElementId trail_element = -1;             // the element `trails` was built for (a new selection rebuilds it)
+    std::vector<std::vector<render::Vec2>> trails;  // from the loop's history
+    std::vector<float> flashes;                     // from the loop's cell changes
+  };
+  // The lists overlay, rebuilt from the frame loop's trace when it or the stepper's position changes.
+  struct ListsCache {
+    std::vector<TracedList> lists;
+    std::uint64_t serial = 0;  // the trace they were built from
+    std::size_t upto = 0;      // the events applied (SIZE_MAX: all)
+    std::chrono::steady_clock::time_point built_at;  // the last rebuild (throttled while playing)
+  };
+  // Per-frame scratch, kept to avoid reallocating.
+  struct Scratch {
+    std::vector<BodyShape> body_shapes;
+    std::vector<render::ShapeDraw> shapes;
+    std::vector<render::Vec2> shape_points;
+    render::CheckDraw checks;
+    std::vector<std::pair<ElementId, float>> flash_list;
+  };
+
   render::GlContext& context_;
   std::unique_ptr<render::Renderer> renderer_;
   std::unique_ptr<render::ImGuiLayer> imgui_;
   ui::UiHost host_;
   ui::UiState state_;
   render::Camera camera_;
-  bool hide_timings_ = false;
-  std::optional<std::array<double, 3>> fixed_camera_;  // --camera: replaces the fit on load
-  std::int64_t select_option_ = -1;                    // --select K as typed (book numbering: from 1)
-  std::optional<std::int64_t> step_option_;            // --step K
+  Choices choices_;
   std::shared_ptr<ui::StepperSession> stepper_;
   std::shared_ptr<ScalingJob> scaling_ = std::make_shared<ScalingJob>();
   // Home (the scene fitted, or --camera's view on load), a violation's pair kept in view, the refit
@@ -180,34 +211,13 @@ class GlView {
   ui::InputReplay input_;  // the window's key and button events, given to ImGui in order
   std::string gl_description_;
   Cost cost_;
-
-  // Per-frame scratch, kept to avoid reallocating.
-  std::vector<BodyShape> body_shapes_;
-  std::vector<render::ShapeDraw> shapes_;
-  std::vector<render::Vec2> shape_points_;
-  render::CheckDraw checks_;
-  std::vector<std::pair<ElementId, float>> flash_list_;
-
+  Scratch scratch_;
   // The layer shown of a 3D frame, and the frame change it was sliced for.
   std::optional<LayerSlice> layer_;
   std::uint64_t layer_generation_ = 0;
-  std::optional<std::int32_t> layer_option_;  // --layer K
-
-  // The lists overlay, rebuilt from the frame loop's trace when it or the stepper's position changes.
-  std::vector<TracedList> lists_;
-  std::uint64_t lists_serial_ = 0;   // the trace they were built from
-  std::size_t lists_upto_ = 0;       // the events applied (SIZE_MAX: all)
-  std::chrono::steady_clock::time_point lists_built_at_;  // the last rebuild (throttled while playing)
-  std::string loaded_scene_;         // the scene last loaded: a selection survives a restart, not a new scene
-  bool showed_scene_ = false;        // the last source followed had a scene (not a world stopped at load)
-  std::optional<std::uint64_t> followed_;  // the loop's generation last followed (none: never)
-  bool stepper_was_open_ = false;          // the Stepper was open in the last frame()
-
-  // Trails and flashes of the frame last followed, derived from the loop's history and cell changes.
-  ElementId trail_element_ = -1;  // the element trails_ was built for (a new selection rebuilds it)
-  std::vector<std::vector<render::Vec2>> trails_;
-  std::shared_ptr<const std::vector<std::int64_t>> followed_ids_;  // its atom ids (a dump's), kept with it
-  std::vector<float> flash_;
+  ListsCache lists_;
+  Followed followed_;
+  bool stepper_was_open_ = false;  // the Stepper was open in the last frame()
   std::vector<float> frame_history_;
 };
 

@@ -22,18 +22,18 @@ std::optional<std::int32_t> layer_number(const std::string& text) {
 }  // namespace
 
 void GlView::set_layer_option(const std::string& text) {
-  layer_option_ = layer_number(text);
-  state_.layer = layer_option_;
+  choices_.layer = layer_number(text);
+  state_.layer = choices_.layer;
 }
 
 void GlView::check_layer(const FrameLoop& loop) const {
-  if (!layer_option_) return;
+  if (!choices_.layer) return;
   const Grid& grid = loop.result().selected().grid;
   if (loop.source().elements().dim != 3 || grid.dim != 3)
     throw Error("--layer: the frame is 2D (layers are those of a 3D frame's grid)");
   const std::int64_t count = grid.n[2];
-  if (*layer_option_ >= count)
-    throw Error("--layer: " + std::to_string(*layer_option_) + " is past the top layer " + std::to_string(count - 1) +
+  if (*choices_.layer >= count)
+    throw Error("--layer: " + std::to_string(*choices_.layer) + " is past the top layer " + std::to_string(count - 1) +
                 " (the frame has " + std::to_string(count) + (count == 1 ? " layer)" : " layers)"));
 }
 

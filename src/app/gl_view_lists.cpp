@@ -17,8 +17,8 @@ constexpr std::size_t kCaptionChars = 52;
 
 void GlView::update_lists(const FrameLoop& loop, const std::shared_ptr<const FrameTrace>& trace) {
   if (!state_.overlays.lists || !trace) {
-    lists_.clear();
-    lists_serial_ = 0;
+    lists_.lists.clear();
+    lists_.serial = 0;
     return;
   }
   // Mid-trace, the lists as they stand at the stepper's operation; else the finished ones.
@@ -26,17 +26,17 @@ void GlView::update_lists(const FrameLoop& loop, const std::shared_ptr<const Fra
   const Stepper& st = stepper_->stepper();
   if (stepper_panels_open() && stepper_->has_capture() && stepper_->frame_trace() == trace && st.position() < st.size())
     upto = st.position();
-  if (lists_serial_ == trace->serial && lists_upto_ == upto) return;
+  if (lists_.serial == trace->serial && lists_.upto == upto) return;
   // Each rebuild replays the trace from its start: while the stepper plays through a long trace,
   // at most a few rebuilds a second (the overlay catches up when playback stops).
-  if (lists_serial_ == trace->serial && st.playing() && trace->log.events().size() > kReplayEveryFrameUpTo &&
-      ms_since(lists_built_at_) < kReplayIntervalMs)
+  if (lists_.serial == trace->serial && st.playing() && trace->log.events().size() > kReplayEveryFrameUpTo &&
+      ms_since(lists_.built_at) < kReplayIntervalMs)
     return;
   const auto t0 = Clock::now();
-  lists_built_at_ = t0;
-  lists_ = traced_lists(trace->log, static_cast<std::size_t>(loop.source().elements().size()), upto);
-  lists_serial_ = trace->serial;
-  lists_upto_ = upto;
+  lists_.built_at = t0;
+  lists_.lists = traced_lists(trace->log, static_cast<std::size_t>(loop.source().elements().size()), upto);
+  lists_.serial = trace->serial;
+  lists_.upto = upto;
   cost_.trace_ms += ms_since(t0);
 }
 
@@ -76,7 +76,7 @@ void GlView::describe_lists(const FrameLoop& loop, const std::shared_ptr<const F
   scene.focus_row = render::list_focus_row(stepper_row, state_.hovered_cell, selected_row);
   if (!state_.overlays.lists) return;
   auto& caption = scene.lists_caption;
-  if (!trace || lists_.empty()) {
+  if (!trace || lists_.lists.empty()) {
     const bool has_lists = algorithm_info(loop.pipeline().algorithm()).has_lists;
     const std::string why = trace && !trace->refusal.empty() ? trace->refusal
                             : !has_lists && !stepping ? "it keeps no heads or next arrays, only its tests"

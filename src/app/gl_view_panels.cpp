@@ -28,7 +28,7 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
   sim.bodies = loop.source().body_count();
   sim.elements = &e;
   sim.layer = layer();
-  sim.lists = state_.overlays.lists ? &lists_ : nullptr;
+  sim.lists = state_.overlays.lists ? &lists_.lists : nullptr;
   sim.trace = trace;
   sim.detector_bytes = loop.pipeline().detector_bytes();
   if (loop.pipeline().fault() != Fault::None) {
@@ -58,7 +58,7 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
   sim.locate_status = stepper_open() ? stepper_->target_status()
                                      : "Open the Stepper (View menu) to see the operation that decided this pair.";
   sim.scene_insets = host_.insets(state_);
-  sim.hide_timings = hide_timings_;
+  sim.hide_timings = choices_.hide_timings;
   fill_drawing(loop, session, sim);
   sim.fps = session.fps;
   sim.sim_rate = session.sim_rate;

@@ -8,12 +8,12 @@
 namespace nbscope {
 
 void GlView::build_shapes(const FrameLoop& loop) {
-  loop.source().body_shapes(body_shapes_);
-  shapes_.clear();
-  shape_points_.clear();
+  loop.source().body_shapes(scratch_.body_shapes);
+  scratch_.shapes.clear();
+  scratch_.shape_points.clear();
   const bool flat = loop.source().elements().dim == 3;  // a 3D frame's spheres seen from above: plain circles
   const LayerSlice* slice = layer();
-  for (const BodyShape& b : body_shapes_) {
+  for (const BodyShape& b : scratch_.body_shapes) {
     // A 3D frame's layers above and further below are hidden: not even handed to the renderer.
     if (slice != nullptr && b.element >= 0 && static_cast<std::size_t>(b.element) < slice->element_layer.size() && !slice->visible(b.element))
       continue;
@@ -28,31 +28,31 @@ void GlView::build_shapes(const FrameLoop& loop) {
     d.element = b.element;
     d.spoke = d.spoke && !flat;
     if (!d.is_circle) {
-      d.first = static_cast<std::uint32_t>(shape_points_.size());
+      d.first = static_cast<std::uint32_t>(scratch_.shape_points.size());
       d.count = static_cast<std::uint32_t>(b.vertex_count);
       for (int v = 0; v < b.vertex_count; ++v)
-        shape_points_.emplace_back(static_cast<float>(b.vertices[static_cast<std::size_t>(v)].x),
+        scratch_.shape_points.emplace_back(static_cast<float>(b.vertices[static_cast<std::size_t>(v)].x),
                                    static_cast<float>(b.vertices[static_cast<std::size_t>(v)].y));
     }
-    shapes_.push_back(d);
+    scratch_.shapes.push_back(d);
   }
 }
 
 void GlView::build_checks(const FrameLoop& loop) {
-  checks_.confirmed.clear();
-  checks_.broadphase_only.clear();
-  checks_.violations.clear();
+  scratch_.checks.confirmed.clear();
+  scratch_.checks.broadphase_only.clear();
+  scratch_.checks.violations.clear();
   const FrameReport& r = loop.result().report();
   if (!r.checked) return;
   const PairList& a = loop.result().selected().pairs;
   if (state_.overlays.checks) {
     const PairList& t = loop.result().touching;
-    std::set_intersection(a.begin(), a.end(), t.begin(), t.end(), std::back_inserter(checks_.confirmed));
-    for (const Violation& v : r.violations) checks_.violations.push_back(v.pair);
+    std::set_intersection(a.begin(), a.end(), t.begin(), t.end(), std::back_inserter(scratch_.checks.confirmed));
+    for (const Violation& v : r.violations) scratch_.checks.violations.push_back(v.pair);
   }
   if (state_.overlays.broadphase) {
     const PairList& f = loop.result().box2d;
-    std::set_difference(f.begin(), f.end(), a.begin(), a.end(), std::back_inserter(checks_.broadphase_only));
+    std::set_difference(f.begin(), f.end(), a.begin(), a.end(), std::back_inserter(scratch_.checks.broadphase_only));
   }
 }
 
