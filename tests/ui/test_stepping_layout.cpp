@@ -1,6 +1,7 @@
 // The stepping layout (issue 38, "Room to teach"): with Stepper, Arrays and Pseudocode open, the
-// scene keeps at least half the window and every array of the current phase is whole in the Arrays
-// panel's visible region without scrolling, at 1280x720 and 1600x1000. Three cases: the book's Fig. 3.15 under `screen` at operation 10 (C and E);
+// scene keeps at least half the window, every array of the current phase is whole in the Arrays
+// panel's visible region without scrolling, and Pseudocode is open (not collapsed to its title bar),
+// at 1280x720 and 1600x1000. Three cases: the book's Fig. 3.15 under `screen` at operation 10 (C and E);
 // the same nine under `nbs` with element 3 (the book's 4) selected, in the contacts of a row (y_heads,
 // Y, B, X and the element section); and NBS 3D on LIGGGHTS's pour at operation 14000, the contacts of
 // row 4 of layer 1 (C, Z, B, Y, A, X). In a row's phase every array is the phase's: the operation
@@ -134,6 +135,16 @@ Measured lay_out(UiHost& host, StepperSession& session, TestFrame& f, ImVec2 dis
   return m;
 }
 
+// Pseudocode's window in the last frame: open, and more than its title bar.
+void expect_pseudocode_open() {
+  const ImGuiWindow* pseudocode = ImGui::FindWindowByName(kPseudocodeTitle);
+  ASSERT_NE(pseudocode, nullptr);
+  std::printf("  Pseudocode %gx%g%s\n", pseudocode->Size.x, pseudocode->Size.y, pseudocode->Collapsed ? " (collapsed)" : "");
+  EXPECT_TRUE(pseudocode->Active);
+  EXPECT_FALSE(pseudocode->Collapsed) << "Pseudocode is collapsed to its title bar";
+  EXPECT_GE(pseudocode->Size.y, 8 * ImGui::GetTextLineHeightWithSpacing()) << "Pseudocode shows too few lines";
+}
+
 std::string case_name(const SteppingCase& c) {
   const char* const names[] = {"ScreenStep10", "NbsSelected", "Nbs3dPour"};
   return std::string(names[static_cast<int>(c.what)]) + "_" + std::to_string(static_cast<int>(c.display.x)) + "x" +
@@ -176,6 +187,7 @@ TEST_P(SteppingLayout, TheSceneKeepsHalfTheWindowAndThePhasesArraysAreOnScreen) 
   }
   EXPECT_GE(m.share, 0.5);
   for (const std::string& name : m.cut) ADD_FAILURE() << name << " is not all in the Arrays panel's visible region";
+  expect_pseudocode_open();
 }
 
 INSTANTIATE_TEST_SUITE_P(Displays, SteppingLayout,
