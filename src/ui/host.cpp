@@ -174,7 +174,8 @@ void UiHost::draw_menu(UiContext& ctx) {
 // Decides which panels of one column are collapsed to their title bars: none while the column fits
 // `available` pixels, else those that joined it for the stepping layout first, then the lowest
 // priority first (the lower one of equals first), never one the user expanded or collapsed by
-// hand. Heights are last frame's, so a change settles in a frame.
+// hand; one that scrolls in less room (Panel::least_height) is kept open when shrinking it is
+// enough. Heights are last frame's, so a change settles in a frame.
 void UiHost::fit_column(PanelPlace place, const std::vector<std::size_t>& shown, float available) {
   const float title = ImGui::GetFrameHeight();
   float total = 0;
@@ -194,9 +195,24 @@ void UiHost::fit_column(PanelPlace place, const std::vector<std::size_t>& shown,
   });
   for (const std::size_t i : candidates) {
     if (total <= available) break;
-    total -= std::max(slots_[i].expanded_height, title) - title;
+    const float full = std::max(slots_[i].expanded_height, title);
+    // One that scrolls in less room stays open when that is enough (frame() gives it the room left).
+    if (const float least = panels_[i]->least_height(); least > 0 && total - full + std::min(least, full) <= available) break;
+    total -= full - title;
     slots_[i].collapsed = true;
   }
+}
+
+float UiHost::height_below(std::size_t panel, PanelPlace place, const std::vector<std::size_t>& shown) const {
+  const auto at = std::find(shown.begin(), shown.end(), panel);
+  float below = 0;
+  for (auto it = at == shown.end() ? at : at + 1; it != shown.end(); ++it) {
+    if (place_in(*panels_[*it], stepping_) != place) continue;
+    // At the height it asks for (not as drawn: one squeezed by this panel would stay squeezed).
+    const Slot& s = slots_[*it];
+    below += (s.collapsed ? ImGui::GetFrameHeight() : std::max(s.expanded_height, ImGui::GetFrameHeight())) + kGap;
+  }
+  return below;
 }
 
 void UiHost::fit_columns_on_change(const std::vector<std::size_t>& shown, float available) {
@@ -289,7 +305,13 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
         const float w = left ? left_w : right_w;
         ImGui::SetNextWindowPos(ImVec2(left ? kGap : display.x - kGap - w, *column_y), ImGuiCond_Always);
         // No lower than the display: a panel that grew (or came) after the collapses were decided scrolls.
-        const float room = std::max(display.y - *column_y - kGap, 3.0f * ImGui::GetFrameHeight());
+        float room = std::max(display.y - *column_y - kGap, 3.0f * ImGui::GetFrameHeight());
+        // One that scrolls in less room leaves the panels under it theirs (a selection's panel coming
+        // takes its room from it), down to its least; a column short by less than a line is left as it is.
+        if (p.least_height() > 0 && !slot.collapsed) {
+          const float room_left = room - height_below(i, place, shown);
+          if (room_left + ImGui::GetTextLineHeight() < slot.expanded_height) room = std::max(room_left, p.least_height());
+        }
         ctx.room.height = room;
         ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0), ImVec2(w, room));
         if (p.takes_room_left()) slot.collapsed = slot.pin == Slot::Pin::Collapsed;  // the host never collapses it
@@ -304,7 +326,7 @@ void UiHost::frame(UiContext& ctx, bool accept_input) {
     if (ImGui::Begin(p.title(), &open, flags)) {
       p.draw(ctx);
       const ImGuiStyle& style = ImGui::GetStyle();
-      natural_height = ImGui::GetCursorPosY() - style.ItemSpacing.y + style.WindowPadding.y;
+      natural_height = std::max(ImGui::GetCursorPosY() - style.ItemSpacing.y + style.WindowPadding.y, p.full_height());
     }
     const ImVec2 size = ImGui::GetWindowSize();
     const ImVec2 pos = ImGui::GetWindowPos();

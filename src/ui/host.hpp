@@ -50,13 +50,15 @@ class UiHost {
   // Per panel (parallel to panels_): what the column fitting knows about its window.
   struct Slot {
     enum class Pin { None, Expanded, Collapsed };
-    float expanded_height = 0;  // its height when last drawn expanded
+    float expanded_height = 0;  // its height when last drawn expanded (its contents', when they scrolled)
     bool collapsed = false;     // the host's decision this frame
     Pin pin = Pin::None;        // the user's own click on its title bar wins over the host
   };
   // Whether `state` opens every panel of the stepping layout (Panel::part_of_stepping_layout).
   [[nodiscard]] bool stepping_layout(const UiState& state) const;
   void fit_column(PanelPlace place, const std::vector<std::size_t>& shown, float available);
+  // The height the panels after `panel` in its column (`shown`, in column order) ask for, with their gaps.
+  [[nodiscard]] float height_below(std::size_t panel, PanelPlace place, const std::vector<std::size_t>& shown) const;
   // Decides the columns' collapses again only when the panels they show (but Selection), the
   // user's pins or the display's height change, and for a few frames after (new panels size
   // themselves): never because a panel's contents grew, a violation was chosen or an element clicked.

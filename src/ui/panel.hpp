@@ -44,6 +44,12 @@ class Panel {
   // True: coming and going never collapses another panel; it takes the room left below the others
   // and scrolls (Selection, shown by a click: the panels the user reads stay as they are).
   [[nodiscard]] virtual bool takes_room_left() const { return false; }
+  // A panel that can show its contents in less than their height, scrolling part of them (Pseudocode's
+  // code, the current line kept in view), says how little it can take: when its column is full the host
+  // gives it the room the panels under it leave, down to this, rather than collapse it. 0: it collapses.
+  [[nodiscard]] virtual float least_height() const { return 0; }
+  // The height its contents take whole when it drew them in less (UiContext::room); 0: the height drawn.
+  [[nodiscard]] virtual float full_height() const { return 0; }
   // Draws the window's contents (the host has called Begin).
   virtual void draw(UiContext& ctx) = 0;
   // Adds to the scene, drawn after the overlays (the stepper highlights its current event).
