@@ -46,8 +46,7 @@ std::optional<std::int64_t> LoopHistory::neighbour(std::int64_t delta) const {
 void LoopHistory::element_path(ElementId k, std::int64_t from, std::int64_t to, std::vector<std::array<double, 2>>& out) const {
   out.clear();
   if (!source_.loaded() || k < 0) return;
-  source_.wait_for_worker();  // the world's geometry is read
-  source_.frames_->element_path(frames_, k, from, to, out);
+  source_.frames_->element_path(frames_, k, from, to, out);  // never waits for a step in flight (io/frame_source.hpp)
 }
 
 // ---- resume --------------------------------------------------------------------------------

@@ -45,7 +45,7 @@ Elements SimulatedSource::previous_elements(const std::shared_ptr<const WorldSta
 void SimulatedSource::element_path(const FrameHistory& history, ElementId k, std::int64_t from, std::int64_t to,
                                    std::vector<std::array<double, 2>>& out) const {
   out.clear();
-  if (k < 0) return;
+  if (k < 0 || k >= live_->elements().size()) return;  // a row of the frame shown
   const std::int64_t newest = live_->newest_frame();
   // From the first summary at or after `from` (a trail is a few hundred frames of a long history).
   for (std::size_t i = history.first_from(from); i < history.size(); ++i) {
@@ -54,7 +54,7 @@ void SimulatedSource::element_path(const FrameHistory& history, ElementId k, std
     if (k >= f.elements) continue;
     if (const auto& state = history.state(i)) {
       std::array<double, 2> p{};
-      live_->world().element_centre(*state, k, p[0], p[1]);
+      live_->element_centre(*state, k, p[0], p[1]);  // the snapshot's while the worker steps: no wait
       out.push_back(p);
     } else if (f.frame == newest) {
       out.push_back({live_->elements().x[k], live_->elements().y[k]});

@@ -77,6 +77,7 @@ class FrameSource : public Frame {
   [[nodiscard]] virtual Elements previous_elements(const std::shared_ptr<const WorldState>& kept_before) const = 0;
   // Element row `k` of frame `to` followed through the frames of `history` in [from, to]: its centre
   // at each that can be had without reading a file, oldest first (a dump's atom followed by its id).
+  // Called while a step is in flight too: it reads only what the source holds, never waits for it.
   virtual void element_path(const FrameHistory& history, ElementId k, std::int64_t from, std::int64_t to,
                             std::vector<std::array<double, 2>>& out) const = 0;
   // Bytes of frames held beside the one shown, within a budget the history's sets.

@@ -25,6 +25,11 @@ std::int64_t LiveWorld::frame() const { return pending() ? shown_.frame : world_
 double LiveWorld::time() const { return pending() ? shown_.time : world_->time(); }
 const Elements& LiveWorld::elements() const { return pending() ? shown_.elements : world_->elements(); }
 const std::vector<ElementSource>& LiveWorld::element_sources() const { return pending() ? shown_.sources : world_->sources(); }
+void LiveWorld::element_centre(const WorldState& state, ElementId k, double& x, double& y) const {
+  if (!pending()) return world_->element_centre(state, k, x, y);
+  const auto i = static_cast<std::size_t>(k);
+  PhysicsWorld::element_centre(state, shown_.sources[i], shown_.local_centres[i], x, y);
+}
 std::int64_t LiveWorld::body_count() const { return pending() ? shown_.bodies : world_->body_count(); }
 void LiveWorld::body_shapes(std::vector<BodyShape>& out) const {
   if (pending()) out = shown_.shapes;
@@ -64,6 +69,7 @@ bool LiveWorld::begin_step(std::function<void(const Frame& next)> then) {
   shown_.dragging = world.dragging();
   shown_.elements = world.elements();
   shown_.sources = world.sources();
+  shown_.local_centres = world.local_centres();
   world.shapes(shown_.shapes);
   try {
     stepping_ = std::async(std::launch::async, [&world, then = std::move(then)] {

@@ -46,6 +46,9 @@ class LiveWorld final : public Frame {
   [[nodiscard]] const std::vector<ElementSource>& element_sources() const override;
   [[nodiscard]] std::int64_t body_count() const override;
   void body_shapes(std::vector<BodyShape>& out) const override;
+  // Element k's centre at a kept frame (k must exist then and now), also while a step is pending:
+  // from the snapshot's element sources and local centres then, the world's otherwise.
+  void element_centre(const WorldState& state, ElementId k, double& x, double& y) const;
   // The world itself (only when no step is pending).
   [[nodiscard]] const Box2dFrame* box2d() const override { return world_.get(); }
   // Box2D's step on this thread; its milliseconds. Throws Error as PhysicsWorld::step().
@@ -97,6 +100,7 @@ class LiveWorld final : public Frame {
     bool dragging = false;
     Elements elements;
     std::vector<ElementSource> sources;
+    std::vector<b2Vec2> local_centres;  // element_centre() of kept frames (a trail) while the worker steps
     std::vector<BodyShape> shapes;
   };
 

@@ -216,12 +216,17 @@ void PhysicsWorld::capture(WorldState& out, const PairList* contacts) const {
 
 void PhysicsWorld::element_centre(const WorldState& state, ElementId k, double& x, double& y) const {
   const auto i = static_cast<std::size_t>(k);
-  const BodyPose& p = state.poses[static_cast<std::size_t>(sources_[i].body)];
+  element_centre(state, sources_[i], local_centres_[i], x, y);
+}
+
+void PhysicsWorld::element_centre(const WorldState& state, const ElementSource& source, b2Vec2 local_centre, double& x,
+                                  double& y) {
+  const BodyPose& p = state.poses[static_cast<std::size_t>(source.body)];
   b2Transform xf;
   xf.p.Set(p.x, p.y);
   xf.q.s = p.s;
   xf.q.c = p.c;
-  world_point(xf, local_centres_[i], x, y);
+  world_point(xf, local_centre, x, y);
 }
 
 // ---- F, G, T and the scope of A ⊆ F --------------------------------------------------------

@@ -106,6 +106,11 @@ class PhysicsWorld final : public Box2dFrame {
   void capture(WorldState& out, const PairList* contacts = nullptr) const;
   // Element k's centre at a kept frame (k must exist at that frame), as elements() had it then.
   void element_centre(const WorldState& state, ElementId k, double& x, double& y) const;
+  // The same from what a snapshot keeps of the world (LiveWorld's, while the worker steps it):
+  // the element's body and its centre in body coordinates.
+  static void element_centre(const WorldState& state, const ElementSource& source, b2Vec2 local_centre, double& x, double& y);
+  // Each element's bounding-circle centre in body coordinates, same indexing as elements().
+  [[nodiscard]] const std::vector<b2Vec2>& local_centres() const { return local_centres_; }
 
   // Picks the dynamic body under (x, y) and pulls it there with a b2MouseJoint; false if none.
   bool begin_drag(double x, double y);

@@ -178,8 +178,36 @@ TEST(FrameLoopOverlap, WhileTheStepRunsTheCurrentFrameIsShown) {
   EXPECT_EQ(loop.source().frame(), 10);
   loop.step();
   EXPECT_EQ(loop.source().frame(), 11);
+  std::vector<std::array<double, 2>> settled;
+  loop.history().element_path(0, 0, 10, settled);
+  EXPECT_EQ(path, settled) << "a trail read while the worker stepped is the one read after";
   EXPECT_EQ(loop.history().frames().size(), kept + 1);
   EXPECT_EQ(loop.history().newest_frame(), 11);
+}
+
+// A view reads the selection's trail at every draw, also while the worker steps the world (whose
+// emitters add fixtures meanwhile): the path comes from the kept states and the snapshot, never from
+// the world, so it neither waits for the step nor races it (the TSan build runs this), and it is
+// the path a settled loop gives.
+TEST(FrameLoopOverlap, TheTrailIsReadWhileTheWorkerStepsWithoutWaiting) {
+  FrameLoop loop;
+  load_scene_file(loop, scene("default"));  // its emitter pours bodies in over the first frames
+  for (int k = 0; k < 30; ++k) {
+    loop.begin_step();
+    ASSERT_TRUE(loop.source().step_pending());
+    const std::int64_t shown = loop.source().frame();
+    const ElementId last = loop.source().elements().size() - 1;  // the newest body's, the latest to exist
+    std::vector<std::array<double, 2>> during, after;
+    for (const ElementId e : {ElementId{0}, last}) {
+      loop.history().element_path(e, shown - 239, shown, during);
+      EXPECT_TRUE(loop.source().step_pending() || loop.source().step_ready());
+      ASSERT_FALSE(during.empty());
+      EXPECT_EQ(during.back()[0], loop.source().elements().x[e]) << "ends at the frame shown";
+    }
+    loop.step();
+    loop.history().element_path(last, shown - 239, shown, after);
+    EXPECT_EQ(during, after) << "frame " << shown;
+  }
 }
 
 // Calls that need the world adopt the step first: the run stays whole and nothing is lost.
