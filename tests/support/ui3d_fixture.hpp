@@ -30,8 +30,9 @@ struct Scope3d {
   }
 };
 
-// N random spheres in a 4 m cube, their grid, the layer view the app would hand the panels, and
-// (traced()) the frame's trace by `algorithm` on that grid.
+// A 3D frame as the app would hand it to the panels: its elements, their grid, the busiest layer's
+// view and (traced()) the frame's trace by `algorithm` on that grid. Frame3d(n) is N random spheres
+// in a 4 m cube, looked at from above.
 struct Frame3d {
   Elements elements;
   FrameResult result;
@@ -40,21 +41,28 @@ struct Frame3d {
   UiState state;
   UiRequests requests;
   render::Camera camera;
-  explicit Frame3d(int n = 120, const char* algorithm = "nbs") {
-    elements.dim = 3;
-    std::mt19937 rng(25);
-    std::uniform_real_distribution<double> at(0.0, 4.0), radius(0.2, 0.35);
-    for (int k = 0; k < n; ++k) elements.push_back(at(rng), at(rng), at(rng), radius(rng));
+  explicit Frame3d(int n = 120, const char* algorithm = "nbs") : Frame3d(random_spheres(n), "random-3d", algorithm) {
+    camera.set_viewport(1600, 1600);
+    camera.set({2, 2}, 100.0);
+  }
+  // `frame` (3D) named `scene_path`, paused.
+  Frame3d(Elements frame, std::string scene_path, const char* algorithm = "nbs") : elements(std::move(frame)) {
     result.lanes.front().grid = make_grid(elements, GridOptions{});
     slice = slice_layer(elements, grid(), busiest_layer(slice_layer(elements, grid(), 0)));
-    sim.scene_path = "random-3d";
+    sim.scene_path = std::move(scene_path);
     sim.elements = &elements;
     sim.frame = &result;
     sim.layer = &slice;
     sim.algorithm = algorithm;
     sim.paused = true;
-    camera.set_viewport(1600, 1600);
-    camera.set({2, 2}, 100.0);
+  }
+  static Elements random_spheres(int n) {
+    Elements e;
+    e.dim = 3;
+    std::mt19937 rng(25);
+    std::uniform_real_distribution<double> at(0.0, 4.0), radius(0.2, 0.35);
+    for (int k = 0; k < n; ++k) e.push_back(at(rng), at(rng), at(rng), radius(rng));
+    return e;
   }
   const Grid& grid() const { return result.lanes.front().grid; }
   SimView& traced() {

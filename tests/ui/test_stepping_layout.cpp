@@ -19,6 +19,7 @@
 
 #include "core/layers.hpp"
 #include "io/lammps_dump.hpp"
+#include "support/ui3d_fixture.hpp"
 #include "support/ui_fixture.hpp"
 #include "ui/panels.hpp"
 #include "ui/stepper_panels.hpp"
@@ -27,6 +28,7 @@ namespace nbscope::ui {
 namespace {
 
 using testui::BookFrame;
+using testui::Frame3d;
 using testui::ImGuiScope;
 using testui::run_frame;
 
@@ -48,37 +50,9 @@ const ImGuiTable* array_table(const ImGuiWindow& arrays, int index, const char* 
 
 // LIGGGHTS's pour (assets/examples/pour3d, 1,000 spheres, 7 x 7 cells in 6 layers) at timestep
 // 7500, as `replay --dump` shows it: the grid fitted to it, the busiest layer.
-struct PourFrame {
-  Elements elements;
-  FrameResult result;
-  LayerSlice slice;
-  SimView sim;
-  UiState state;
-  UiRequests requests;
-  render::Camera camera;
-  PourFrame() {
-    elements = read_dump_frames({std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/pour3d/atoms.7500.dump"}, {}).front().elements;
-    result.lanes.front().grid = make_grid(elements, GridOptions{});
-    slice = slice_layer(elements, grid(), busiest_layer(slice_layer(elements, grid(), 0)));
-    sim.scene_path = "atoms.7500";
-    sim.elements = &elements;
-    sim.frame = &result;
-    sim.layer = &slice;
-    sim.algorithm = "nbs";
-    sim.paused = true;
-  }
-  const Grid& grid() const { return result.lanes.front().grid; }
-  SimView& traced() {
-    if (!sim.trace) {
-      DetectOptions o;
-      o.grid.cell_size = grid().cell_size;
-      o.grid.origin = std::array<double, 3>{grid().origin[0], grid().origin[1], grid().origin[2]};
-      o.grid.cells = std::array<std::int64_t, 3>{grid().n[0], grid().n[1], grid().n[2]};
-      sim.trace = trace_frame(*make_detector(sim.algorithm), elements, o, 0, grid());
-    }
-    return sim;
-  }
-};
+Elements pour_frame() {
+  return read_dump_frames({std::string(NBSCOPE_SOURCE_DIR) + "/assets/examples/pour3d/atoms.7500.dump"}, {}).front().elements;
+}
 
 enum class Case { ScreenStep10, NbsSelected, Nbs3dPour };
 
@@ -162,7 +136,7 @@ TEST_P(SteppingLayout, TheSceneKeepsHalfTheWindowAndThePhasesArraysAreOnScreen) 
   auto session = add_stepper_panels(host, StepperConfig{step, true});
   Measured m;
   if (what == Case::Nbs3dPour) {
-    PourFrame f;
+    Frame3d f(pour_frame(), "atoms.7500");
     m = lay_out(host, *session, f, display, step);
     ASSERT_EQ(session->stepper().trace().arrays().size(), 6u);
     EXPECT_EQ(phase_text(*session, static_cast<std::size_t>(session->stepper().current_phase())), "contacts of row 4, layer 1");
