@@ -146,12 +146,13 @@ void GlView::follow(const FrameLoop& loop) {
   } else if (moved) {
     follow_atoms(loop);
   }
+  followed_.ids = loop.result().ids;
   // Only redetected: the same frame, nothing seen changes (the lists follow the trace, update_lists).
-  if (new_source || moved) rebuild_trail(loop);
+  if (!new_source && !moved) return;
+  rebuild_trail(loop);
   const CellChanges& changes = loop.cell_changes();
   followed_.flashes.resize(changes.size());
   for (std::size_t k = 0; k < followed_.flashes.size(); ++k) followed_.flashes[k] = changes.flash(static_cast<ElementId>(k), kFlashDecay);
-  followed_.ids = loop.result().ids;
 }
 
 void GlView::source_loaded(const FrameLoop& loop, bool fit) {

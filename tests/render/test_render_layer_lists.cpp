@@ -23,6 +23,16 @@
 namespace nbscope::render {
 namespace {
 
+// The lists overlay alone (no grid, mask or pairs), as the layer-list tests draw it.
+OverlayFlags lists_only() {
+  OverlayFlags f;
+  f.lists = true;
+  f.grid = false;
+  f.mask = false;
+  f.pairs = false;
+  return f;
+}
+
 using namespace testlayers;
 
 // ---- lists: the 3D twin of Overlays.ListsMidTraceAreTheStepperArraysAtThatOperation ---------------
@@ -194,11 +204,7 @@ TEST(LayerView, TheListsDrawnAreExactlyTheListsKept) {
       s.grid = &sc.grid;
       s.lists = &lists;
       s.layer = &slice;
-      OverlayFlags f;
-      f.lists = true;
-      f.grid = false;
-      f.mask = false;
-      f.pairs = false;
+      const OverlayFlags f = lists_only();
       Recorder rec;
       draw_scene(s, f, camera, rec);
       EXPECT_FALSE(expected.empty()) << "operation " << p;
@@ -239,11 +245,7 @@ TEST(LayerView, TheRowFilterKeepsTheListsOfOneRowsPass) {
       s.layer = &slice;
       s.list_filter = ListFilter::Row;
       s.focus_row = row;
-      OverlayFlags f;
-      f.lists = true;
-      f.grid = false;
-      f.mask = false;
-      f.pairs = false;
+      const OverlayFlags f = lists_only();
       Recorder rec;
       draw_scene(s, f, camera, rec);
       EXPECT_EQ(drawn_heads(rec, g, camera.pixels_per_metre()), expected) << "layer " << layer << ", row " << row;
