@@ -279,13 +279,17 @@ int run_window(const GuiOptions& o, FrameLoop& loop, Session& session, ui::Setti
       // K goes back one kept frame a frame; then the last state is drawn until the layout settles.
       if (!world_error.empty()) {
         // Stopped: the last good frame is drawn with the message until the layout settles.
+      } else if (simulated < *o.frames && loop.source().at_end()) {
+        // A watched run that ended before its N frames: its last frame is the picture.
+        if (last_drawn == INT64_MAX) last_drawn = rendered + GlView::kSettleFrames - 1;
       } else if (simulated < *o.frames) {
         // A world that stops is shown as the interactive window shows it (message, paused); the
         // screenshot is still taken, then the error ends the run (exit 2).
         try {
           if (!loop.source().step_pending()) loop.begin_step();
-          if (rendered > 0 && (!loop.source().step_pending() || loop.source().step_ready())) {
-            loop.step();  // (frame() follows it)
+          const std::uint64_t before = loop.change().generation;
+          if (rendered > 0 && (!loop.source().step_pending() || loop.source().step_ready())) loop.step();  // (frame() follows it)
+          if (loop.change().generation != before) {  // a watched run's next frame may not have landed yet
             ++simulated;
             ++session.frames_simulated;
             times.add_step(loop);

@@ -19,6 +19,7 @@
 #include "app/headless_view.hpp"
 #include "app/help.hpp"
 #include "app/progress_bar.hpp"
+#include "app/write_latency.hpp"
 #include "app/scaling_flags.hpp"
 #include "app/threads_flag.hpp"
 #include "check/recorded_lane.hpp"
@@ -77,7 +78,7 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
   const std::int64_t frames = report.runs.empty() ? 0 : report.runs.front().frames_run;
   // The run's last frame's, not the frame shown at the end (--back, --violation go elsewhere).
   const std::int64_t elements = frames > 0 ? report.runs.front().last_elements : loop.source().elements().size();
-  std::string s = std::string(loop.source().replaying() ? "replay: " : "headless: ") + loop.source().scene().name + ", " + names + (o.fault == Fault::None ? "" : std::string(", fault ") + fault_name(o.fault)) +
+  std::string s = std::string(o.watch ? "watch: " : loop.source().replaying() ? "replay: " : "headless: ") + loop.source().scene().name + ", " + names + (o.fault == Fault::None ? "" : std::string(", fault ") + fault_name(o.fault)) +
                   ", " + plural(static_cast<long long>(frames), "frame") + ", " + plural(elements, "element") + ": ";
   std::string failures;
   for (const AlgorithmRun& run : report.runs) {
@@ -339,7 +340,7 @@ std::unique_ptr<FrameLoop> open_headless_loop(const HeadlessOptions& o, std::vec
 // The run's report before its first frame: what runs, on what, checked how.
 RunReport start_report(const HeadlessOptions& o, const FrameLoop& loop, const std::vector<std::string>& names, const std::string& note) {
   RunReport report;
-  report.source = o.dump ? "dump" : o.replay ? "recording" : "scene";
+  report.source = o.watch ? "watch" : o.dump ? "dump" : o.replay ? "recording" : "scene";
   report.touching = o.touching == Touching::strict ? "strict" : "inclusive";
   report.scene_path = o.replay ? *o.replay : o.scene;
   report.scene_name = loop.source().scene().name;
@@ -350,7 +351,8 @@ RunReport start_report(const HeadlessOptions& o, const FrameLoop& loop, const st
   report.note = note;
   // A recording runs its frames (at most --frames); a scene frames 0..N (--frames N steps). Frame 0
   // is detected and checked like every other, in the window and here: one numbering (issue 37).
-  report.frames_requested = o.replay ? loop.source().recorded_frames() : o.frames + 1;
+  // A watched run: at most --frames of what arrives (the count is set once the run has ended).
+  report.frames_requested = o.watch ? o.frames : o.replay ? loop.source().recorded_frames() : o.frames + 1;
   for (const std::string& name : names) report.runs.push_back(AlgorithmRun{name});
   return report;
 }
@@ -415,13 +417,20 @@ int run_headless_loop(const HeadlessOptions& o) {
       throw Error("interrupted: " + *o.record + " not written (" + signal_name(stop_signal()) + "; a recording is whole or not at all)");
   };
 
-  Progress progress(!o.quiet && ::isatty(STDERR_FILENO) == 1, frames);
+  Progress progress(!o.quiet && ::isatty(STDERR_FILENO) == 1 && !o.watch, frames);  // a watched run's length is not known
+  WriteToCheck latency;  // a watched run's frames: from their write to their check
+  const double watch_start = wall_seconds();
   bool rewound = false;
   for (std::int64_t k = 0; k < frames; ++k) {
     // The screenshot's lists and stepper read the last frame's trace: its one detection records it.
     if (view && k + 1 == frames) loop.pipeline().record_traces(true);
-    if (k > 0) loop.step();  // the first frame was detected and checked on load
+    if (k > 0) {  // the first frame was detected and checked on load
+      const std::uint64_t before = loop.change().generation;
+      loop.step();
+      if (loop.change().generation == before) break;  // no next frame: a watched run has ended
+    }
     add_frame();
+    latency.add(loop.source().written_at(), watch_start);
     AlgorithmRun& own = report.runs.front();  // the loop's own algorithm, the one traced
     if (own.first_listed && !own.located) own.located = locate_violation(loop, *own.first_listed);
     if (recorder) {
@@ -450,6 +459,7 @@ int run_headless_loop(const HeadlessOptions& o) {
     }
   }
   progress.finish();
+  if (o.watch) report.frames_requested = report.runs.front().frames_run;  // every frame that arrived was run
   if (recorder) {
     interrupts.reset();  // from here a signal ends the process, and io/signals removes the temporary
     check_interrupt();
@@ -482,6 +492,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   if (o.violation > 0)  // where it went, as the Violations panel would say it
     summary += "; went to violation " + std::to_string(o.violation) + ", frame " + std::to_string(loop.source().frame()) + ": " +
                violation_text(loop.history().violation_log().listed()[static_cast<std::size_t>(o.violation - 1)], loop.source());
+  summary += latency.text();
   std::printf("%s\n", summary.c_str());
   return report.passed() ? 0 : 1;
 }

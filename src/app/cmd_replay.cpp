@@ -13,6 +13,7 @@
 namespace nbscope {
 
 std::unique_ptr<RecordedFrames> read_replay_input(const HeadlessOptions& o) {
+  if (o.watch) return watched_dumps(*o.watch);  // watch DUMPS (cmd_watch.cpp): a list that grows
   if (o.dump) return read_dump_recording(*o.dump, o.frames);
   if (o.input) return read_input_recording(*o.replay, *o.input, o.frames);  // gui --input (input_window.cpp)
   return read_recorded_frames(*o.replay, o.frames);

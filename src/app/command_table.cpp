@@ -311,12 +311,58 @@ CommandSpec replay_command() {
   };
 }
 
+// `nbscope watch`: the dumps of a run still being written, each frame checked as it lands.
+CommandSpec watch_command() {
+  std::vector<OptionSpec> dumps;  // replay's dump flags, but the frames' files: DUMPS is the argument
+  for (const OptionSpec& s : dump_replay_options())
+    if (std::string_view(s.name) != "--dump") dumps.push_back(s);
+  dumps.push_back({"--idle", "S", "60 headless; the window: never",
+                   "the run has ended after S seconds without a new frame (or once the writer's process is gone)",
+                   number_value(0.05, 1e9, "must be at least 0.05 (seconds)")});
+  return {
+      "watch",
+      run_watch,
+      "follows the dumps of a LAMMPS or LIGGGHTS run still being written, checking each frame as it lands",
+      {"nbscope watch 'post/atoms.*.dump' [--contacts 'post/contacts.*.dump'] [--idle S] [--headless] [--touching strict] ...",
+       "               [--frames N] [--algorithm NAME[,NAME...]|all] [--report OUT.json] [--stop-at-violation]",
+       "               [--screenshot OUT.png --size WxH ...]"},
+      {"Follows DUMPS (a dump custom file that grows, or a quoted glob that new files join) while the simulation writes it: a frame "
+       "is read once it is whole (a half-written one is waited for), detected and checked as replay --dump does, with --contacts "
+       "the code's own contact list paired by timestep.",
+       "The window (without --headless) shows each frame as it lands: the Timeline grows, time travel goes over what arrived, "
+       "pause holds the frame shown. Headless ends with the run (no new frame for --idle S, or the writer's process gone) and "
+       "prints replay's summary and how long after its write each frame was checked; --stop-at-violation ends at the first "
+       "violation (exit 1)."},
+      {{"options",
+        joined({{{"--headless", "", "", "no window even when there is a display", flag_value()},
+                 {"--frames", "N", "every frame that arrives", "the first N frames, then end", integer_value(1, kMaxFrames)},
+                 {"--algorithm", "NAME[,NAME...]|all", "recorded with --contacts, else nbs", "the detectors run and checked"},
+                 {"--report", "OUT.json", "", "headless: as headless --report"},
+                 {"--inject-fault", "NAME", "", "drop-pair, drop-mask-cell, off-by-one-cell or stale-positions (as replay)"},
+                 {"--brute-limit", "N", "2000", "as headless --brute-limit", integer_value(0, 1'000'000)},
+                 {"--quiet", "", "", "no progress bar", flag_value()},
+                 {"--stop-at-violation", "", "", "headless: ends at the first frame with a violation, shown (exit 1)", flag_value()},
+                 {"--history-mb", "N", "256 in the window, 0 headless without --screenshot",
+                  "memory for frames kept beside the one shown (a frame dropped is read again where it lies)", integer_value(0, 1'000'000)},
+                 {"--screenshot", "OUT.png", "", "renders the last frame: headless at the run's end, the window after --frames N"},
+                 {"--size", "WxH", "", "the window's or the screenshot's size in pixels"},
+                 gl_option()},
+                {threads_option(), touching_option()}})},
+       {"dumps being written (docs/watch.md)", dumps},
+       rendering_group(),
+       plugin_group()},
+      {"nbscope watch 'post/atoms.*.dump' --contacts 'post/contacts.*.dump' --touching strict",
+       "nbscope watch atoms.dump --headless --idle 10 --stop-at-violation --screenshot first_violation.png"},
+      "0 every check passed, 1 a check failed, 2 bad input (one line on stderr)",
+  };
+}
+
 }  // namespace
 
 const std::vector<CommandSpec>& command_table() {
   // The order is the order "it is one of ..." names commands in, and --help lists them in.
   static const std::vector<CommandSpec> table = [] {
-    std::vector<CommandSpec> t = {gui_command(), headless_command(), replay_command()};
+    std::vector<CommandSpec> t = {gui_command(), headless_command(), replay_command(), watch_command()};
     for (CommandSpec& c : file_commands()) t.push_back(std::move(c));
     return t;
   }();

@@ -18,6 +18,9 @@ int run_headless(Args& args);
 // `nbscope replay`: recorded frames detected and checked again (app/cmd_replay.cpp, app/replay.hpp).
 int run_replay(Args& args);
 
+// `nbscope watch`: the dumps of a run still being written, each frame checked as it lands (app/cmd_watch.cpp).
+int run_watch(Args& args);
+
 // `nbscope scaling`: ns and bytes per element against N (app/cmd_scaling.cpp).
 int run_scaling_command(Args& args);
 

@@ -57,7 +57,11 @@ void FrameLoop::step() {
   const bool stale = m.lanes().options().fault == Fault::StalePositions;
   Elements previous = stale ? m.now() : Elements{};
   m.watch_step();
-  m.set_physics_ms(m.frames().step());  // 0 when nothing is simulated
+  const std::int64_t before = m.frame_number();
+  const double physics_ms = m.frames().step();  // 0 when nothing is simulated
+  m.take_new_entries();                          // a watched run's frames that arrived
+  if (m.frame_number() == before) return;        // no frame yet (a watched run's next is not whole)
+  m.set_physics_ms(physics_ms);
   if (stale) m.lanes().remember_previous(m.frame_number(), std::move(previous));
   m.detect_and_check(FrameChange::Kind::stepped);
 }

@@ -140,8 +140,18 @@ void FrameLoopState::start() {
   source.detection_overlapped_ = false;
   kept().clear();
   violations().clear();
+  entries_taken = 0;
+  take_new_entries();
+  lanes().remember_previous(frame_number(), now());
+  load_unpublished = true;  // until a detection publishes it (this one may throw)
+  detect_and_check(FrameChange::Kind::loaded);
+}
+
+void FrameLoopState::take_new_entries() {
   // Frames known in advance (a recording's) are showable from the start; each is checked when first shown.
-  for (const RecordedEntry& f : frames().entries()) {
+  const std::vector<RecordedEntry>& entries = frames().entries();
+  for (; entries_taken < entries.size(); ++entries_taken) {
+    const RecordedEntry& f = entries[entries_taken];
     FrameSummary s;
     s.frame = f.number;
     s.time = f.time;
@@ -149,9 +159,6 @@ void FrameLoopState::start() {
     s.elements = f.elements;
     kept().push(s, nullptr, 0);
   }
-  lanes().remember_previous(frame_number(), now());
-  load_unpublished = true;  // until a detection publishes it (this one may throw)
-  detect_and_check(FrameChange::Kind::loaded);
 }
 
 Elements FrameLoopState::elements_before(std::int64_t frame) const {

@@ -111,6 +111,10 @@ struct FrameLoopState {
   void load(std::unique_ptr<FrameSource> fresh);
   // The frame source's first frame, detected and checked; a new run: the history starts again.
   void start();
+  // The source's frames known in advance that the history has not taken yet (all at start(); those
+  // a watched run added at a step): each showable, checked when first shown.
+  void take_new_entries();
+  std::size_t entries_taken = 0;  // how many of frames().entries() the history has
   // The elements of the frame before `frame` when it can be had, else `frame`'s own (the
   // stale-positions fault then has nothing older to give).
   Elements elements_before(std::int64_t frame) const;

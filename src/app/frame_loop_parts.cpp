@@ -30,6 +30,7 @@ const Recording* LoopSource::recording() const { return loaded() ? frames_->reco
 const PairList* LoopSource::recorded_pairs() const { return loaded() ? frames_->recorded_pairs() : nullptr; }
 int LoopSource::pair_base() const { return recording() != nullptr ? recording()->pair_base : 0; }
 bool LoopSource::at_end() const { return loaded() && !frames_->showing_past() && !frames_->can_step(); }
+std::optional<double> LoopSource::written_at() const { return loaded() ? frames_->written_at() : std::nullopt; }
 bool LoopSource::step_pending() const { return pending(); }
 bool LoopSource::step_ready() const {
   const Simulation* sim = simulation();

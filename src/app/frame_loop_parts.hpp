@@ -59,8 +59,12 @@ class LoopSource {
   // The recording's `base`: its pairs number elements from 0 or 1 (0 for a scene). Element ids
   // here stay 0-based rows either way.
   [[nodiscard]] int pair_base() const;
-  // True on a recording's last frame, where step() does nothing (always false for a scene).
+  // True on a recording's last frame, where step() does nothing (always false for a scene; false
+  // for a watched run until it has ended).
   [[nodiscard]] bool at_end() const;
+  // When the frame shown was written by the code that writes it (seconds since the epoch), where
+  // known (a watched run): the latency from its write to its check.
+  [[nodiscard]] std::optional<double> written_at() const;
   // True between FrameLoop::begin_step() and the call that adopts its frame.
   [[nodiscard]] bool step_pending() const;
   // True when the pending step's physics is done, so adopting it (step()) does not wait for the

@@ -12,6 +12,7 @@
 #include "check/faults.hpp"
 #include "check/report.hpp"
 #include "core/scaling.hpp"
+#include "io/dump_watch.hpp"
 
 namespace nbscope {
 
@@ -55,6 +56,7 @@ struct HeadlessOptions {
   int threads = 1;                           // --threads N: threads one detection may use (and --scaling run's plan)
   std::optional<DumpFlags> dump;             // replay --dump: frames from LAMMPS/LIGGGHTS dumps (`replay` names the first)
   std::optional<DumpFlags> input;            // gui --input FILE: ELEMENTS.csv or a dump (`replay` names it), no pairs
+  std::optional<DumpWatchSpec> watch;        // watch DUMPS: a run still being written (`replay` names it), frames = at most that many
 };
 
 // The frames `options.replay` names: a .nbsrec, or the dumps of options.dump (read as they are

@@ -44,7 +44,8 @@ class FrameSource : public Frame {
   // frames are simulated.
   [[nodiscard]] virtual const Recording* recording() const { return nullptr; }
   // Frames known before they are shown (number, time, elements), in order; empty when the run makes
-  // them as it goes. Each is showable from the start, checked when first shown.
+  // them as it goes. Each is showable from the start, checked when first shown. A run still being
+  // written (a watched one) adds to them at a step(): the loop takes the new ones in then.
   [[nodiscard]] virtual const std::vector<RecordedEntry>& entries() const;
   // True on the run's first frame: the stale-positions fault has nothing older to give.
   [[nodiscard]] virtual bool first() const = 0;
@@ -72,6 +73,9 @@ class FrameSource : public Frame {
     (void)box2d_contacts;
     return {};
   }
+  // When the frame shown was written by the code that writes it (seconds since the epoch), where
+  // known (a watched run): the latency from a frame's write to its check.
+  [[nodiscard]] virtual std::optional<double> written_at() const { return std::nullopt; }
   // The elements of the frame before the one shown, from what the history kept of it (`kept_before`,
   // maybe null); the shown frame's own when nothing older can be had.
   [[nodiscard]] virtual Elements previous_elements(const std::shared_ptr<const WorldState>& kept_before) const = 0;

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,16 @@ class RecordedFrames {
   [[nodiscard]] virtual std::shared_ptr<const RecordedFrame> read(std::size_t index) = 0;
   // True when read() reads a file (the caller keeps the frames it wants), false when every frame is held.
   [[nodiscard]] virtual bool reads_files() const = 0;
+  // A run still being written (io/dump_watch.hpp): looks for frames made whole since the last look
+  // (waiting for one, or looking once, as it was told); true when entries() grew. Known frames: false.
+  virtual bool more() { return false; }
+  // True while more() may still add frames.
+  [[nodiscard]] virtual bool growing() const { return false; }
+  // When frame `index` was written (seconds since the epoch: its file's time), where known.
+  [[nodiscard]] virtual std::optional<double> written_at(std::size_t index) const {
+    (void)index;
+    return std::nullopt;
+  }
 };
 
 // The frames of the .nbsrec file `path` (at most `max_frames`): every line but the element rows read

@@ -26,7 +26,7 @@ const std::vector<ElementSource>& RecordingSource::element_sources() const {
 }
 
 double RecordingSource::step() {
-  if (can_step()) show_index(index_ + 1);
+  if (index_ + 1 < entries().size() || frames_->more()) show_index(index_ + 1);
   return 0;
 }
 

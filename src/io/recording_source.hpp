@@ -42,10 +42,10 @@ class RecordingSource final : public FrameSource {
   [[nodiscard]] const std::vector<RecordedEntry>& entries() const override { return frames_->entries(); }
   [[nodiscard]] bool first() const override { return index_ == 0; }
   [[nodiscard]] std::int64_t newest_frame() const override { return entries().back().number; }
-  // False on the last frame.
-  [[nodiscard]] bool can_step() const override { return index_ + 1 < entries().size(); }
-  // The next recorded frame (nothing simulated: 0 ms); no effect on the last. Error, unmoved, for a
-  // frame whose text is wrong.
+  // False on the last frame, unless more frames may still come (a run being written).
+  [[nodiscard]] bool can_step() const override { return index_ + 1 < entries().size() || frames_->growing(); }
+  // The next recorded frame (nothing simulated: 0 ms); on the last, the frames looked at for a new
+  // one (RecordedFrames::more), else no effect. Error, unmoved, for a frame whose text is wrong.
   double step() override;
   // Recorded frame number `frame` (it must exist); `kept` is not needed. Error, unmoved, as step().
   void show(std::int64_t frame, const std::shared_ptr<const WorldState>& kept) override;
@@ -57,6 +57,7 @@ class RecordingSource final : public FrameSource {
                     std::vector<std::array<double, 2>>& out) const override;
   // The bytes of frames kept beside the current one, and their budget.
   [[nodiscard]] std::size_t held_bytes() const override { return kept_bytes_; }
+  [[nodiscard]] std::optional<double> written_at() const override { return frames_->written_at(index_); }
   void set_budget(std::size_t bytes) override;
 
   // ---- the recording ----

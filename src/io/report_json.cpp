@@ -1,5 +1,5 @@
 // The headless report. Keys:
-//   nbscope_report (format version 1), source ("scene" | "recording" | "dump"), scene {path, name} (a recording's
+//   nbscope_report (format version 1), source ("scene" | "recording" | "dump" | "watch"), scene {path, name} (a recording's
 //   path and file stem), not_checked {invariants [names], why} (recordings: the Box2D invariants), algorithms [names], fault {name, description},
 //   reference_policy, a_in_f_scope, note, invariants [{name, description}], frames_requested,
 //   rewind (null | {from, to, frames_simulated_again, identical, first_difference}),
