@@ -20,6 +20,7 @@
 #include "app/help.hpp"
 #include "app/progress_bar.hpp"
 #include "app/write_latency.hpp"
+#include "check/subdomains.hpp"
 #include "app/scaling_flags.hpp"
 #include "app/threads_flag.hpp"
 #include "check/recorded_lane.hpp"
@@ -419,6 +420,7 @@ int run_headless_loop(const HeadlessOptions& o) {
 
   Progress progress(!o.quiet && ::isatty(STDERR_FILENO) == 1 && !o.watch, frames);  // a watched run's length is not known
   WriteToCheck latency;  // a watched run's frames: from their write to their check
+  SubdomainTally subdomains;  // per-rank dumps: missing contacts across subdomain boundaries
   const double watch_start = wall_seconds();
   bool rewound = false;
   for (std::int64_t k = 0; k < frames; ++k) {
@@ -431,6 +433,7 @@ int run_headless_loop(const HeadlessOptions& o) {
     }
     add_frame();
     latency.add(loop.source().written_at(), watch_start);
+    subdomains.add(loop.result().report(), loop.source().elements(), loop.source().ranks());
     AlgorithmRun& own = report.runs.front();  // the loop's own algorithm, the one traced
     if (own.first_listed && !own.located) own.located = locate_violation(loop, *own.first_listed);
     if (recorder) {
@@ -492,7 +495,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   if (o.violation > 0)  // where it went, as the Violations panel would say it
     summary += "; went to violation " + std::to_string(o.violation) + ", frame " + std::to_string(loop.source().frame()) + ": " +
                violation_text(loop.history().violation_log().listed()[static_cast<std::size_t>(o.violation - 1)], loop.source());
-  summary += latency.text();
+  summary += subdomains.text() + latency.text();
   std::printf("%s\n", summary.c_str());
   return report.passed() ? 0 : 1;
 }

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "io/csv.hpp"
 #include "io/dump_frames.hpp"
+#include "io/dump_ranks.hpp"
 #include "io/input_source.hpp"
 
 namespace nbscope {
@@ -162,6 +163,12 @@ std::unique_ptr<RecordedFrames> read_dump_recording(const DumpFlags& flags, std:
     });
   };
   const bool files = regular(paths) && regular(contact_paths);
+  // A run under MPI: one file per rank (a name with `%`), each timestep's pieces read as one frame.
+  if (const auto by_rank = split_by_rank(paths); by_rank.size() > 1) {
+    if (!files) throw Error("--dump: per-rank files (" + paths.front() + ", ...) are read from files, not through a pipe");
+    index_rank_files(f, by_rank, contact_paths, max_frames);
+    return dump_frames(std::move(f));
+  }
   std::vector<DumpFrame> whole;
   std::vector<DumpContacts> whole_contacts;
   if (files) {

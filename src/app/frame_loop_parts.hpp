@@ -81,6 +81,8 @@ class LoopSource {
   [[nodiscard]] double time() const;
   // Bounding circles at the current poses (element k = fixture k, see element_sources()).
   [[nodiscard]] const Elements& elements() const;
+  // The MPI rank whose file held each row (per-rank dumps), or null.
+  [[nodiscard]] const std::vector<std::int32_t>* ranks() const;
   // Element -> (body, fixture).
   [[nodiscard]] const std::vector<ElementSource>& element_sources() const;
   // Bodies of the frame shown.

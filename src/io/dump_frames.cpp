@@ -4,6 +4,7 @@
 #include <unordered_map>
 
 #include "core/error.hpp"
+#include "io/dump_ranks.hpp"
 
 namespace nbscope {
 
@@ -48,9 +49,24 @@ class DumpFrames final : public RecordedFrames {
     const DumpFrameAt& at = f_.frames.at(index);
     DumpFrame frame = atoms_.on(f_.paths, at.file).read_frame(at, f_.options);
     std::optional<DumpContacts> contacts;
-    if (header_.has_pairs) {
-      const DumpFrameAt& c = f_.contacts[by_step_.at(at.timestep)];
-      contacts = contacts_.on(f_.contact_paths, c.file).read_contacts(c, f_.columns);
+    const DumpFrameAt* c = header_.has_pairs ? &f_.contacts[by_step_.at(at.timestep)] : nullptr;
+    if (c != nullptr) contacts = contacts_.on(f_.contact_paths, c->file).read_contacts(*c, f_.columns);
+    if (!f_.other_ranks.empty()) {
+      // Under MPI: every rank's piece of this timestep, as one frame (io/dump_ranks.hpp).
+      std::vector<DumpFrame> pieces;
+      std::vector<DumpContacts> contact_pieces;
+      pieces.push_back(std::move(frame));
+      if (contacts) contact_pieces.push_back(std::move(*contacts));
+      for (const DumpFrameFiles::Rank& rank : f_.other_ranks) {
+        const DumpFrameAt& piece = rank.frames.at(index);
+        pieces.push_back(DumpCursor(rank.paths.at(piece.file)).read_frame(piece, f_.options));
+        if (c == nullptr) continue;
+        const DumpFrameAt& cp = rank.contacts.at(by_step_.at(at.timestep));
+        contact_pieces.push_back(rank.bare_contacts ? read_bare_contacts(rank.contact_paths.at(cp.file), f_.contact_paths.at(c->file), *c, f_.columns)
+                                                    : DumpCursor(rank.contact_paths.at(cp.file)).read_contacts(cp, f_.columns));
+      }
+      frame = merge_rank_frames(std::move(pieces));
+      if (c != nullptr) contacts = merge_rank_contacts(std::move(contact_pieces));
     }
     return std::make_shared<const RecordedFrame>(recorded_from_dump(std::move(frame), contacts ? &*contacts : nullptr, f_.dt));
   }

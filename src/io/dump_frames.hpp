@@ -22,6 +22,15 @@ struct DumpFrameFiles {
   std::vector<DumpFrameAt> contacts;       // index_dump_contacts of them (with `columns`)
   ContactColumns columns;
   std::optional<double> dt;                // seconds per timestep (recording_from_dumps)
+  // Under MPI, ranks 1..P-1's files (io/dump_ranks.hpp; rank 0's are `paths` and `contact_paths`):
+  // each rank's frames aligned with `frames` by index (its contacts with `contacts`); a rank's bare
+  // `dump local` rows are read as the contact frame of rank 0's of the same index. Empty: one file set.
+  struct Rank {
+    std::vector<std::string> paths, contact_paths;
+    std::vector<DumpFrameAt> frames, contacts;
+    bool bare_contacts = false;  // its contact files are bare rows (DumpFrameAt: file and timestep only)
+  };
+  std::vector<Rank> other_ranks;
   std::string name;                        // names the recording
 };
 

@@ -50,6 +50,7 @@ struct DumpFrame {
   Elements elements;
   std::vector<std::int64_t> ids;     // row -> atom id, ascending, unique
   std::vector<std::int32_t> types;   // row -> `type` column (empty without one)
+  std::vector<std::int32_t> ranks;   // row -> the MPI rank whose file held it (per-rank files, io/dump_ranks.hpp; else empty)
   // Bound on the error of a pair's gap |c_i - c_j| - (r_i + r_j) from the digits printed in this frame
   // (half a unit of the last printed digit, the largest over its coordinates and radii, scaled by the
   // box for xs ys zs), or DumpOptions::tolerance. 0 only when every number is exact.

@@ -272,6 +272,7 @@ RecordedFrame recorded_from_dump(DumpFrame f, const DumpContacts* contacts, std:
   if (contacts != nullptr) r.pairs = contacts_as_rows(f, *contacts);
   r.elements = std::move(f.elements);
   r.ids = std::move(f.ids);
+  r.ranks = std::move(f.ranks);
   r.precision = f.precision;
   return r;
 }

@@ -48,6 +48,8 @@ struct RecordedFrame {
   PairList pairs;  // the `pairs` block: 0-based, as given (order within a pair, i == j, repeats kept)
   // The element of each row as its source names it (a dump's atom ids, ascending); empty: the row itself.
   std::vector<std::int64_t> ids;
+  // The MPI rank whose file held each row (a run's per-rank dumps, io/dump_ranks.hpp); empty: one file set.
+  std::vector<std::int32_t> ranks;
   // Largest error the file's printed digits allow in a pair's gap |c_i - c_j| - (r_i + r_j) (0: exact,
   // as a .nbsrec's round-trip numbers are): disagreements within it are at the boundary, not violations.
   double precision = 0;

@@ -37,6 +37,8 @@ class Frame {
   [[nodiscard]] virtual const PairList* recorded_pairs() const { return nullptr; }
   // What the positions behind recorded_pairs() resolve (check/check.hpp's precision band); 0: exact.
   [[nodiscard]] virtual double precision() const { return 0; }
+  // The MPI rank whose file held each row (a run's per-rank dumps), or null when one file set did.
+  [[nodiscard]] virtual const std::vector<std::int32_t>* ranks() const { return nullptr; }
 };
 
 // One dynamic circle per element: how frames without bodies are drawn.
