@@ -170,8 +170,10 @@ TEST(DumpCli, AContactRemovedFromTheListIsAViolationNamingBothAtomsAndTheFrame) 
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   const std::string atoms = "atoms " + std::to_string(gone[0]) + ", " + std::to_string(gone[1]);
   EXPECT_NE(r.out.find(atoms), std::string::npos) << "wanted '" << atoms << "' in: " << r.out;
-  EXPECT_NE(r.out.find("first in frame 1000"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("missing from the recorded pairs"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("first in timestep 1000"), std::string::npos) << r.out;
+  // The missing pair's gap, as verify gives it: in contact, so negative.
+  EXPECT_NE(r.out.find("missing from the recorded pairs; distance - radii = -"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("; periodic: none; touching: strict (<)"), std::string::npos) << r.out;
 }
 
 TEST(DumpCli, ADefaultFormatDumpPassesWithPairsWithinTheDataPrecision) {
