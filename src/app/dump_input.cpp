@@ -198,6 +198,9 @@ std::unique_ptr<RecordedFrames> read_dump_recording(const DumpFlags& flags, std:
       if (alone) unmatched.push_back(c);
       return alone;
     });
+    if (!unmatched.empty() && f.contacts.empty() && !f.frames.empty())  // nothing left to check: not a note
+      throw Error(unmatched.front().where + ": no contact frame has the timestep of an atoms frame (contacts from timestep " +
+                  std::to_string(unmatched.front().timestep) + ", atoms from " + std::to_string(f.frames.front().timestep) + ")");
     if (!unmatched.empty()) {
       std::erase_if(whole_contacts, [&](const DumpContacts& c) {
         return std::any_of(unmatched.begin(), unmatched.end(), [&](const DumpFrameAt& u) { return u.timestep == c.timestep; });

@@ -424,6 +424,10 @@ TEST(DumpCli, AContactFrameWithNoAtomsFrameIsSkippedWithOneNote) {
   EXPECT_EQ(std::count(many.err.begin(), many.err.end(), '\n'), 1) << many.err;
   EXPECT_NE(many.err.find("nbscope: note: " + files.contacts + ":"), std::string::npos) << many.err;
   EXPECT_NE(many.err.find(": 4 timesteps have contacts but no atoms frame (250, 500, 750, ...); skipped"), std::string::npos) << many.err;
+  // No contact frame of any atoms frame's timestep: nothing would be checked, so it is refused.
+  write_text(files.contacts, local_frame(250, {}, 0.05) + local_frame(750, {}, 0.05));
+  expect_one_error_line(replay(files), files.contacts + ":");
+  expect_one_error_line(replay(files), "no contact frame has the timestep of an atoms frame (contacts from timestep 250, atoms from 0)");
 }
 
 TEST(DumpCli, ContactIdsWithNoContactListToReadAreRefused) {
