@@ -7,7 +7,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <map>
 #include <utility>
 #include <vector>
 
@@ -38,111 +37,6 @@
 namespace nbscope {
 
 namespace {
-
-// "A==R 30, T-in-A 7" for the invariants `run` broke.
-std::string broken_text(const AlgorithmRun& run) {
-  std::string s;
-  for (int k = 0; k < kInvariantCount; ++k)
-    if (run.broken[static_cast<std::size_t>(k)] > 0)
-      s += (s.empty() ? "" : ", ") + std::string(invariant_name(static_cast<Invariant>(k))) + " " +
-           std::to_string(run.broken[static_cast<std::size_t>(k)]);
-  return s;
-}
-
-// "A==R (2, 11) given twice in the recorded pairs" for violation `v`; a recording whose pairs count
-// from 1 also gets the pair as its file numbers it, a dump's frame names the atoms by their ids.
-std::string violation_text(const Violation& v, const LoopSource& source) {
-  std::string pair = std::to_string(v.pair.i) + ", " + std::to_string(v.pair.j);
-  if (v.atom_i >= 0) {
-    pair = "atoms " + std::to_string(v.atom_i) + ", " + std::to_string(v.atom_j);
-  } else if (const int base = source.carries_pairs() ? source.pair_base() : 0; base != 0) {
-    pair += "; the file's " + std::to_string(v.pair.i + base) + "," + std::to_string(v.pair.j + base);
-  }
-  return std::string(invariant_name(v.invariant)) + " (" + pair + ") " + v.what;
-}
-
-// ": A==R (2, 11) given twice in the recorded pairs" for the first violation `run` lists.
-std::string first_violation_text(const AlgorithmRun& run, const LoopSource& source) {
-  if (!run.first_listed) return "";
-  return ": " + violation_text(*run.first_listed, source) + (run.located ? "; located: " + run.located->text : "");
-}
-
-// The one line on stdout: what ran, whether every invariant held, where it broke, the mean timings.
-std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const RunReport& report) {
-  std::map<std::string, std::int64_t> refs;
-  for (const AlgorithmRun& run : report.runs)
-    for (const auto& [name, count] : run.references) refs[name] += count;
-  std::string refs_text;
-  for (const auto& [name, count] : refs) refs_text += (refs_text.empty() ? "" : ", ") + name;
-  std::string names;
-  for (const AlgorithmRun& run : report.runs) names += (names.empty() ? "" : ",") + detector_label(run.algorithm);
-  const std::int64_t frames = report.runs.empty() ? 0 : report.runs.front().frames_run;
-  // The run's last frame's, not the frame shown at the end (--back, --violation go elsewhere).
-  const std::int64_t elements = frames > 0 ? report.runs.front().last_elements : loop.source().elements().size();
-  std::string s = std::string(o.watch ? "watch: " : loop.source().replaying() ? "replay: " : "headless: ") + loop.source().scene().name + ", " + names + (o.fault == Fault::None ? "" : std::string(", fault ") + fault_name(o.fault)) +
-                  ", " + plural(static_cast<long long>(frames), "frame") + ", " + plural(elements, "element") + ": ";
-  std::string failures;
-  for (const AlgorithmRun& run : report.runs) {
-    if (run.violations == 0) continue;
-    failures += (failures.empty() ? "" : "; ") + (report.runs.size() > 1 ? run.algorithm + ": " : std::string()) +
-                plural(run.violations, "violation") + " in " + plural(run.frames_with_violations, "frame") + " (" + broken_text(run) +
-                "), first in frame " + std::to_string(run.first_violation_frame.value_or(-1)) +
-                first_violation_text(run, loop.source());
-  }
-  const std::string every = report.runs.size() > 1 ? " for every algorithm" : "";
-  if (failures.empty() && loop.source().replaying()) {
-    s += "A==R held in every frame" + every;
-  } else if (failures.empty()) {
-    s += "all " + std::to_string(kInvariantCount) + " invariants held in every frame" + every;
-  } else {
-    s += failures;
-  }
-  s += " (reference " + refs_text + ")";
-  // Recorded pairs the data cannot decide: named, counted, not violations.
-  for (const AlgorithmRun& run : report.runs) {
-    if (run.boundary == 0 && run.ties == 0) continue;
-    s += "; " + (report.runs.size() > 1 ? run.algorithm + ": " : std::string());
-    if (run.boundary > 0) s += plural(run.boundary, "pair") + " at the boundary, within the data's precision";
-    if (run.ties > 0) s += std::string(run.boundary > 0 ? ", " : "") + plural(run.ties, "exact tie") + " (a contact under --touching inclusive, not strict)";
-  }
-  if (o.touching == Touching::strict) s += "; touching strict (<)";
-  if (report.stopped_at) {
-    const Violation& v = loop.result().report().violations.front();
-    s += "; stopped at the first violation, frame " + std::to_string(*report.stopped_at) + ": " + violation_text(v, loop.source());
-  } else if (o.stop_at_violation) {
-    s += "; no violation to stop at";
-  }
-  if (report.rewind) {
-    const RunReport::Rewind& r = *report.rewind;
-    s += "; rewound from frame " + std::to_string(r.from) + " to " + std::to_string(r.to) + " and resumed: " +
-         (r.diverged_at ? "the frames simulated again DIFFER from the first run from frame " + std::to_string(*r.diverged_at)
-                        : "frames " + std::to_string(r.to + 1) + ".." + std::to_string(r.from) +
-                              " simulated again are identical to the first run (element hashes)");
-  }
-  // Recorded frames: say plainly what was not checked rather than let it pass silently.
-  if (loop.source().replaying()) s += "; A-in-F, T-in-A, AABB-in-cells not checked (recorded frames have no Box2D world)";
-  if (!report.note.empty()) s += " (" + report.note + ")";
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "; ms per frame: physics %.3f, detection", report.runs.empty() ? 0.0 : report.runs.front().physics.mean(report.runs.front().frames_run));
-  s += loop.source().replaying() ? "; ms per frame: detection" : buf;  // recorded frames have no physics
-  double check = 0;
-  for (const AlgorithmRun& run : report.runs) {
-    std::snprintf(buf, sizeof buf, "%s%s %.3f", &run == &report.runs.front() ? " " : ", ", report.runs.size() > 1 ? run.algorithm.c_str() : "",
-                  run.detection.mean(run.frames_run));
-    s += report.runs.size() > 1 ? buf : buf + 1;  // one algorithm: no name
-    check += run.check.mean(run.frames_run);
-  }
-  std::snprintf(buf, sizeof buf, ", check %.3f", check);
-  s += buf;
-  // The check by part (CheckTimings), each the sum of the algorithms' means: R, F, G/T, then each invariant.
-  for (int k = 0; k < CheckTimings::kParts; ++k) {
-    double ms = 0;
-    for (const AlgorithmRun& run : report.runs) ms += run.check_parts[static_cast<std::size_t>(k)].mean(run.frames_run);
-    std::snprintf(buf, sizeof buf, "%s%s %.3f", k == 0 ? " (" : ", ", CheckTimings::part_name(k), ms);
-    s += buf;
-  }
-  return s + ")";
-}
 
 // The detectors `--algorithm` names: one, a comma-separated list, or "all" (every detector that
 // handles `dim`-D frames, nbs first as the one shown and summarised first; brute only while brute
@@ -343,6 +237,7 @@ RunReport start_report(const HeadlessOptions& o, const FrameLoop& loop, const st
   RunReport report;
   report.source = o.watch ? "watch" : o.dump ? "dump" : o.replay ? "recording" : "scene";
   report.touching = o.touching == Touching::strict ? "strict" : "inclusive";
+  report.frame_unit = frame_unit_of(loop.source());
   report.scene_path = o.replay ? *o.replay : o.scene;
   report.scene_name = loop.source().scene().name;
   report.fault = fault_name(o.fault);
@@ -379,12 +274,13 @@ int run_headless_loop(const HeadlessOptions& o) {
     throw Error("--back: " + std::to_string(o.back) + " goes before the first recorded frame (" + plural(frames, "frame") + " replayed: at most " +
                 std::to_string(frames - 1) + " back)");
   // Each frame's report is aggregated, and streamed to --report, as it is made: nothing per frame stays in memory.
-  std::unique_ptr<RunReportWriter> writer = o.report ? std::make_unique<RunReportWriter>(*o.report, names.size()) : nullptr;
+  std::unique_ptr<RunReportWriter> writer = o.report ? std::make_unique<RunReportWriter>(*o.report, names.size(), report.box2d_fields()) : nullptr;
   const auto add_frame = [&] {
     const auto add = [&](std::size_t r, const FrameReport& f) {
       report.runs[r].add(f);
       if (writer) writer->add_frame(r, f, loop.result().ids.get());
     };
+    for (std::size_t a = 0; a < 3; ++a) report.periodic[a] = report.periodic[a] || loop.source().elements().box.periodic[a];
     add(0, loop.result().report());
     for (std::size_t lane = 1; lane < loop.result().lanes.size(); ++lane) add(lane, loop.result().lanes[lane].report);
   };
@@ -485,17 +381,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   // Notes on stderr only once every output is written: an error is then the only line there.
   if (!screenshot_line.empty()) std::fprintf(stderr, "nbscope: %s\n", screenshot_line.c_str());
   if (!o.notice.empty()) std::fprintf(stderr, "nbscope: %s\n", o.notice.c_str());
-  std::string summary = summary_of(o, loop, report);
-  if (o.back > 0) {
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "; went back %s to frame %lld: %.3f ms a frame (kept frame rebuilt, detected, checked)",
-                  plural(o.back, "frame").c_str(), static_cast<long long>(loop.source().frame()), back_ms / static_cast<double>(o.back));
-    summary += buf;
-  }
-  if (o.violation > 0)  // where it went, as the Violations panel would say it
-    summary += "; went to violation " + std::to_string(o.violation) + ", frame " + std::to_string(loop.source().frame()) + ": " +
-               violation_text(loop.history().violation_log().listed()[static_cast<std::size_t>(o.violation - 1)], loop.source());
-  summary += subdomains.text() + latency.text();
+  const std::string summary = headless_summary(o, loop, report, back_ms) + subdomains.text() + latency.text();
   std::printf("%s\n", summary.c_str());
   return report.passed() ? 0 : 1;
 }

@@ -55,10 +55,7 @@ struct PairsReport {
   // "cells (4,6) and (4,5), distance - radii = -0.0123 (overlap)"
   [[nodiscard]] std::string facts(std::int64_t i, std::int64_t j) const {
     const auto a = static_cast<ElementId>(i), b = static_cast<ElementId>(j);
-    const double gap = contact_gap(e, a, b);
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.6g", gap);
-    return "cells " + cell(i) + " and " + cell(j) + ", distance - radii = " + buf + (gap <= 0 ? " (in contact)" : " (apart)");
+    return "cells " + cell(i) + " and " + cell(j) + ", " + gap_text(contact_gap(e, a, b));
   }
 };
 

@@ -266,15 +266,17 @@ CommandSpec replay_command() {
       {"Detects and checks recorded frames again (the first N with --frames), as headless does (--stop-at-violation too); a window "
        "plays them (P, O, R, the Timeline over every recorded frame, the Violations panel, the stepper on any frame) when there is a "
        "display and no --headless.",
-       "No Box2D world: only A==R is checked; A-in-F, T-in-A, AABB-in-cells are reported as not checked, and the faults are drop-pair, "
-       "drop-mask-cell, off-by-one-cell, stale-positions.",
+       "No Box2D world: only A==R is checked; A-in-F, T-in-A, AABB-in-cells are reported as not checked (a dump's run leaves them "
+       "out), and the faults are drop-pair, drop-mask-cell, off-by-one-cell, stale-positions.",
        "When the frames carry your simulation's pairs, --algorithm recorded checks them (the default then; nbs,recorded compares; all "
        "adds recorded last): a missing, extra, repeated or i == j pair fails (exit 1), named with its frame; of the faults only "
        "drop-pair acts on them.",
        "--dump reads LAMMPS and LIGGGHTS dump custom files instead (id, x y [z], radius or diameter; any order, ids with gaps, atoms "
        "lost or inserted: an element is its atom id), ordered by timestep, and --contacts the code's own contact list (dump local of "
        "LIGGGHTS's compute pair/gran/local pos id) as the recorded pairs. LIGGGHTS counts rsq < radsum^2: compare with --touching "
-       "strict. A disagreement within what the file's printed digits resolve is listed as at the boundary, not a violation.",
+       "strict. A disagreement within what the file's printed digits resolve is listed as at the boundary, not a violation. "
+       "A dump's frames are named by their timesteps; its summary ends with the periodic axes and the touching convention; a contact "
+       "frame with no atoms frame is skipped with a note.",
        "The format (text; docs/formats.md):",
        "  nbsrec 1                 first line; '#' comments and blank lines anywhere\n"
        "  dim 3                    optional, before the first frame: 3D, rows x,y,z,r (dim 2 is the default)\n"

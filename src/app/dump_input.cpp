@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 
@@ -102,18 +103,17 @@ DumpBox parse_box(const std::string& text) {
 std::int64_t timestep_of(const DumpFrameAt& f) { return f.timestep; }
 std::int64_t timestep_of(std::int64_t t) { return t; }
 
-// "its timesteps: 0, 1000, 2000" (the first and last few of many), for a contact frame no dump frame matches.
-std::string timesteps_text(const std::vector<DumpFrameAt>& frames) {
-  std::string s = "its timesteps: ";
-  const std::size_t n = frames.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    if (n > 8 && k == 4) {
-      s += "..., ";
-      k = n - 3;
-    }
-    s += std::to_string(frames[k].timestep) + (k + 1 < n ? ", " : "");
-  }
-  return s + (n > 8 ? " (" + std::to_string(n) + " frames)" : "");
+// "contacts.750.dump:1: timestep 750 has contacts but no atoms frame; skipped", or for several
+// "contacts.250.dump:1: 4 timesteps have contacts but no atoms frame (250, 750, 1250, ...); skipped".
+std::string unmatched_contacts_note(const std::vector<DumpFrameAt>& unmatched) {
+  const std::string& where = unmatched.front().where;
+  if (unmatched.size() == 1)
+    return where + ": timestep " + std::to_string(unmatched.front().timestep) + " has contacts but no atoms frame; skipped";
+  std::string steps;
+  constexpr std::size_t kNamed = 3;
+  for (std::size_t k = 0; k < unmatched.size() && k < kNamed; ++k) steps += (k > 0 ? ", " : "") + std::to_string(unmatched[k].timestep);
+  if (unmatched.size() > kNamed) steps += ", ...";
+  return where + ": " + std::to_string(unmatched.size()) + " timesteps have contacts but no atoms frame (" + steps + "); skipped";
 }
 
 }  // namespace
@@ -196,11 +196,24 @@ std::unique_ptr<RecordedFrames> read_dump_recording(const DumpFlags& flags, std:
       std::erase_if(f.contacts, [&](const DumpFrameAt& c) { return c.timestep > last; });
       std::erase_if(whole_contacts, [&](const DumpContacts& c) { return c.timestep > last; });
     }
-    for (const DumpFrameAt& c : f.contacts)
-      if (!f.frames.empty() && !std::binary_search(f.frames.begin(), f.frames.end(), c.timestep,
-                                                   [](const auto& a, const auto& b) { return timestep_of(a) < timestep_of(b); }))
-        throw Error(c.where + ": contacts of timestep " + std::to_string(c.timestep) + ", but the dump has no frame of it (" +
-                    timesteps_text(f.frames) + ")");
+    // A contact frame no atoms frame matches (contacts dumped more often than atoms): nothing to check
+    // it against; skipped, with one note for all of them.
+    std::vector<DumpFrameAt> unmatched;
+    std::erase_if(f.contacts, [&](const DumpFrameAt& c) {
+      const bool alone = !std::binary_search(f.frames.begin(), f.frames.end(), c.timestep,
+                                             [](const auto& a, const auto& b) { return timestep_of(a) < timestep_of(b); });
+      if (alone) unmatched.push_back(c);
+      return alone;
+    });
+    if (!unmatched.empty() && f.contacts.empty() && !f.frames.empty())  // nothing left to check: not a note
+      throw Error(unmatched.front().where + ": no contact frame has the timestep of an atoms frame (contacts from timestep " +
+                  std::to_string(unmatched.front().timestep) + ", atoms from " + std::to_string(f.frames.front().timestep) + ")");
+    if (!unmatched.empty()) {
+      std::erase_if(whole_contacts, [&](const DumpContacts& c) {
+        return std::any_of(unmatched.begin(), unmatched.end(), [&](const DumpFrameAt& u) { return u.timestep == c.timestep; });
+      });
+      std::fprintf(stderr, "nbscope: note: %s\n", unmatched_contacts_note(unmatched).c_str());
+    }
   }
   if (!files) return held_frames(recording_from_dumps(std::move(whole), whole_contacts, flags.dt, f.name));
   f.paths = std::move(paths);

@@ -110,7 +110,7 @@ void GlView::check_selection(const FrameLoop& loop) const {
   // A dump's frame shows atom ids: --select names one of them.
   if (const std::vector<std::int64_t>* ids = loop.result().ids.get()) {
     if (std::find(ids->begin(), ids->end(), choices_.select) == ids->end())
-      throw Error("--select: atom " + std::to_string(choices_.select) + " is not in frame " + std::to_string(loop.source().frame()) +
+      throw Error("--select: atom " + std::to_string(choices_.select) + " is not in " + frame_label(frame_unit_of(loop.source()), loop.source().frame()) +
                   " (its elements are named by their atom ids)");
     return;
   }

@@ -3,6 +3,7 @@
 #include <tuple>
 
 #include "app/gl_view.hpp"
+#include "app/headless.hpp"
 #include "check/recorded_lane.hpp"
 
 namespace nbscope {
@@ -20,6 +21,7 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
   sim.algorithm = loop.pipeline().algorithm();
   sim.error = session.error;
   sim.touching = loop.pipeline().touching();
+  sim.frame_unit = frame_unit_of(loop.source());
   sim.threads = loop.pipeline().threads();
   sim.paused = session.paused;
   sim.time_step = loop.source().scene().time_step;

@@ -1,5 +1,6 @@
 #include "app/gui_requests.hpp"
 
+#include "app/headless.hpp"
 #include "core/error.hpp"
 
 namespace nbscope {
@@ -96,7 +97,7 @@ void apply_requests(const ui::UiRequests& r, FrameLoop& loop, GlView& view, Sess
         show(v.frame);
         view.focus_violation(loop, v, false);
       } else {
-        session.error = "frame " + std::to_string(v.frame) + " is no longer kept (the history budget dropped it; a larger budget in the Timeline keeps more)";
+        session.error = frame_label(frame_unit_of(loop.source()), v.frame) + " is no longer kept (the history budget dropped it; a larger budget in the Timeline keeps more)";
       }
     }
   }

@@ -20,6 +20,7 @@ class HeadlessView;
 struct RunReport;
 
 class FrameLoop;
+class LoopSource;
 
 struct HeadlessOptions {
   std::string scene;                  // --scene FILE (required)
@@ -83,6 +84,12 @@ std::optional<LocatedViolation> locate_violation(FrameLoop& loop, const Violatio
 bool traces_every_frame(const std::string& algorithm);
 // "FROM:TO" of --rewind; Error names the flag and what is wrong.
 HeadlessOptions::Rewind parse_rewind(const std::string& text);
+
+// What `source`'s frames are called: a dump's are timesteps (Recording::frame_unit), else frames.
+FrameUnit frame_unit_of(const LoopSource& source);
+// The one line on stdout after the run (headless_summary.cpp): what ran, whether every invariant
+// held, where it broke, the mean timings; --back's cost (`back_ms` in all) and --violation's pair.
+std::string headless_summary(const HeadlessOptions& options, const FrameLoop& loop, const RunReport& report, double back_ms);
 
 // Reads every headless flag from `args` and refuses leftovers; throws Error on bad values.
 HeadlessOptions parse_headless_options(Args& args);

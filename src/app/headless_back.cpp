@@ -23,7 +23,7 @@ void go_to_violation(FrameLoop& loop, std::int64_t n, HeadlessView* view) {
     throw Error("--violation: " + std::to_string(n) + " is past the run's " + plural(static_cast<long long>(listed.size()), "listed violation"));
   const Violation v = listed[static_cast<std::size_t>(n - 1)];
   if (!loop.history().can_show(v.frame))
-    throw Error("--violation: its frame " + std::to_string(v.frame) + " is no longer kept (a larger --history-mb keeps more)");
+    throw Error("--violation: its " + frame_label(frame_unit_of(loop.source()), v.frame) + " is no longer kept (a larger --history-mb keeps more)");
   loop.show_frame(v.frame);
   if (view != nullptr) view->focus_violation(loop, v);  // (follows the frame shown first)
 }
@@ -45,7 +45,7 @@ void rewind_for_flag(FrameLoop& loop, const HeadlessOptions::Rewind& r, RunRepor
 
 void step_back_for_flag(FrameLoop& loop) {
   if (!loop.step_back())
-    throw Error("--back: frame " + std::to_string(loop.source().frame()) + " is the oldest kept (a larger --history-mb keeps more)");
+    throw Error("--back: " + frame_label(frame_unit_of(loop.source()), loop.source().frame()) + " is the oldest kept (a larger --history-mb keeps more)");
 }
 
 }  // namespace nbscope

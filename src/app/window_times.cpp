@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "app/frame_loop.hpp"
+#include "app/headless.hpp"
 #include "core/detector.hpp"
 #include "io/plural.hpp"
 
@@ -40,9 +41,9 @@ void ScriptedTimes::print(std::int64_t frames, std::int64_t back, const char* sc
   if (back > 0) {
     const double k = static_cast<double>(back);
     std::fprintf(stderr,
-                 "nbscope: window: went back %s to frame %lld: %.2f ms a frame (the kept frame rebuilt, "
+                 "nbscope: window: went back %s to %s: %.2f ms a frame (the kept frame rebuilt, "
                  "detected and checked again %.2f, render+panels %.2f)\n",
-                 plural(back, "frame").c_str(), static_cast<long long>(loop.source().frame()), (sum_back_show + sum_back_view) / k,
+                 plural(back, "frame").c_str(), frame_label(frame_unit_of(loop.source()), loop.source().frame()).c_str(), (sum_back_show + sum_back_view) / k,
                  sum_back_show / k, sum_back_view / k);
   }
 }

@@ -189,8 +189,9 @@ void FrameChecker::check(const CheckInput& in, FrameReport& out) {
   };
   const auto report = [&](Invariant inv, const Pair& p, const char* what) {
     ++out.broken[static_cast<std::size_t>(inv)];
-    if (out.violations.size() < kMaxListedViolationsPerFrame)
-      out.violations.push_back({frame, inv, p, cell_of(p.i), cell_of(p.j), what});
+    if (out.violations.size() >= kMaxListedViolationsPerFrame) return;
+    out.violations.push_back({frame, inv, p, cell_of(p.i), cell_of(p.j), what});
+    if (p.i >= 0 && p.j >= 0 && p.i < n && p.j < n && p.i != p.j) out.violations.back().gap = contact_gap(e, p.i, p.j);
   };
 
   // A itself must be well formed before any set algebra: 0 <= i < j < n, each pair once, sorted. A

@@ -94,7 +94,8 @@ Diagnosis diagnose(const Violation& v, std::span<const TraceEvent> events, const
             axis_name + " is another (" + std::to_string(axis == 0 ? v.cell_i.ix : axis == 1 ? v.cell_i.iy : v.cell_i.iz) +
             "): its cells output is not the cell it used.";
       } else {
-        t = "frame " + std::to_string(v.frame) + "'s " + algorithm + " trace records nothing about " + id(v.pair.i) + " and " + id(v.pair.j) + ".";
+        // "the frame's": the violation's own frame, named where the text is shown (a frame or a dump's timestep).
+        t = "the frame's " + algorithm + " trace records nothing about " + id(v.pair.i) + " and " + id(v.pair.j) + ".";
       }
       break;
   }

@@ -49,6 +49,23 @@ std::string boundary_text(const BoundaryPair& b) {
   return buf;
 }
 
+std::string gap_text(double gap) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "distance - radii = %.6g (%s)", gap, gap <= 0 ? "in contact" : "apart");
+  return buf;
+}
+
+std::string frame_label(FrameUnit unit, std::int64_t number) { return std::string(frame_unit_name(unit)) + " " + std::to_string(number); }
+
+const char* frame_unit_name(FrameUnit unit) { return unit == FrameUnit::timestep ? "timestep" : "frame"; }
+
+std::string periodic_text(const std::array<bool, 3>& periodic) {
+  std::string s;
+  for (std::size_t a = 0; a < 3; ++a)
+    if (periodic[a]) s += std::string(s.empty() ? "" : ",") + static_cast<char>('x' + a);
+  return s.empty() ? "none" : s;
+}
+
 void name_atoms(FrameReport& report, const std::vector<std::int64_t>* ids) {
   if (ids == nullptr) return;
   const auto atom = [ids](ElementId row) {

@@ -7,6 +7,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -48,7 +49,23 @@ struct Violation {
   // The atom ids of pair.i and pair.j when the frame names its elements by them (a dump's), else -1:
   // the violation names its atoms after the frame is gone (the run's log, reports).
   std::int64_t atom_i = -1, atom_j = -1;
+  // |c_i - c_j| - (r_i + r_j) of the pair, minimum image on periodic axes (negative: they overlap);
+  // NaN when the pair is no two elements of the frame (a `cells` violation, a pair out of range).
+  double gap = std::numeric_limits<double>::quiet_NaN();
 };
+// "distance - radii = -0.00189614 (in contact)" for a pair's gap: verify's wrong pairs and every
+// violation say it in these words.
+std::string gap_text(double gap);
+
+// What a run calls its frames: a scene's and a recording's frames are numbered frames, a dump's
+// numbers are the simulation's timesteps (issue 39). Recording::frame_unit says it for recorded frames.
+enum class FrameUnit : std::uint8_t { frame, timestep };
+// "frame 12" or "timestep 20000": how every message, report line and panel names frame `number`.
+std::string frame_label(FrameUnit unit, std::int64_t number);
+// "frame" or "timestep".
+const char* frame_unit_name(FrameUnit unit);
+// "x,y" for the periodic axes of `periodic` (x, y, z), "none" for none.
+std::string periodic_text(const std::array<bool, 3>& periodic);
 
 // A pair on which A and R disagree only at the contact boundary: the recorded pairs came from a file,
 // and the gap |c_i - c_j| - (r_i + r_j) is within what its printed digits resolve, or exactly 0 (a tie
@@ -242,6 +259,8 @@ struct RunReport {
   std::string note;                  // anything else the reader should know ("" for nothing)
   std::string touching = "inclusive";  // the contact convention (--touching): "inclusive" or "strict"
   std::string source = "scene";      // where the frames came from: "scene" (Box2D), "recording" (.nbsrec) or "dump" (LAMMPS/LIGGGHTS)
+  FrameUnit frame_unit = FrameUnit::frame;  // what the frames' numbers are: a dump's are timesteps
+  std::array<bool, 3> periodic{};    // the axes periodic in any frame run (x, y, z)
   std::int64_t frames_requested = 0;
   std::vector<AlgorithmRun> runs;
   // headless --rewind FROM:TO: the run went back from frame FROM to TO and simulated the frames
@@ -253,6 +272,11 @@ struct RunReport {
   std::optional<Rewind> rewind;
   // headless --stop-at-violation: the frame the run stopped on (nullopt: no violation, every frame ran).
   std::optional<std::int64_t> stopped_at;
+
+  // False for a dump's frames, which never had a Box2D world: their reports leave out Box2D's sets
+  // (F, G, T), their invariants and the physics time. A recording of a scene keeps them (its
+  // report says what it could not check again).
+  [[nodiscard]] bool box2d_fields() const { return source != "dump"; }
 
   // True when every run ran every requested frame and passed.
   [[nodiscard]] bool passed() const {
@@ -266,6 +290,11 @@ struct RunReport {
 // The invariants that need Box2D's world (A-in-F, T-in-A, AABB-in-cells), and why recorded frames skip them.
 [[nodiscard]] inline bool needs_box2d(Invariant invariant) {
   return invariant != Invariant::AEqualsR && invariant != Invariant::Cells && invariant != Invariant::Contract;
+}
+// True when part `k` of CheckTimings (R, F, G/T, then the invariants) is work on Box2D's sets: none
+// of it runs on recorded frames, so their reports leave it out.
+[[nodiscard]] inline bool check_part_needs_box2d(int k) {
+  return k == 1 || k == 2 || (k >= 3 && needs_box2d(static_cast<Invariant>(k - 3)));
 }
 inline constexpr const char* kNoBox2dReason =
     "recorded frames have no Box2D world: A-in-F, T-in-A and AABB-in-cells are not available (not passed: not checked)";

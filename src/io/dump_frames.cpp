@@ -32,6 +32,7 @@ class DumpFrames final : public RecordedFrames {
     if (f_.frames.empty()) throw Error(f_.name + ": no frames");
     header_.path = f_.name;
     header_.has_pairs = !f_.contacts.empty();
+    header_.frame_unit = FrameUnit::timestep;
     for (std::size_t k = 0; k < f_.contacts.size(); ++k) by_step_.emplace(f_.contacts[k].timestep, k);
     entries_.reserve(f_.frames.size());
     for (const DumpFrameAt& at : f_.frames) {

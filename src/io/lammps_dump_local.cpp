@@ -283,6 +283,7 @@ Recording recording_from_dumps(std::vector<DumpFrame> frames, const std::vector<
   Recording rec;
   rec.path = path;
   rec.has_pairs = !contacts.empty();
+  rec.frame_unit = FrameUnit::timestep;
   std::unordered_map<std::int64_t, std::size_t> by_step;
   for (std::size_t k = 0; k < contacts.size(); ++k) by_step.emplace(contacts[k].timestep, k);
   // A contact frame past the last dump frame is one `--frames N` left out, not a mismatch.

@@ -29,6 +29,7 @@
 
 #include "core/elements.hpp"
 #include "core/grid.hpp"
+#include "check/report.hpp"
 #include "core/pairs.hpp"
 #include "io/input_file.hpp"
 
@@ -72,6 +73,9 @@ struct Recording {
   std::vector<RecordedFrame> frames;  // at least one
   bool has_pairs = false;  // every frame has a `pairs` block (the reader refuses some without)
   int pair_base = 0;       // `base`: the file numbers its pairs' elements from 0 or 1
+  // What the frames' numbers are: a .nbsrec's are frames, a dump's are the simulation's timesteps.
+  // The one place a run's messages and panels learn it from (FrameUnit, check/report.hpp).
+  FrameUnit frame_unit = FrameUnit::frame;
 };
 
 // Reads and validates a .nbsrec file, at most `max_frames` frames (the rest is not read). Throws

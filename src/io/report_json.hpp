@@ -25,8 +25,9 @@ class RunReportWriter {
   };
   using Mark = std::vector<SpoolMark>;
 
-  // One scratch file for each of `runs` algorithms; Error when none can be created.
-  RunReportWriter(std::string path, std::size_t runs);
+  // One scratch file for each of `runs` algorithms; Error when none can be created. Without
+  // `box2d_fields` (a dump's run: RunReport::box2d_fields) the frames leave out Box2D's sets.
+  RunReportWriter(std::string path, std::size_t runs, bool box2d_fields = true);
   ~RunReportWriter();
   RunReportWriter(const RunReportWriter&) = delete;
   RunReportWriter& operator=(const RunReportWriter&) = delete;
@@ -48,6 +49,7 @@ class RunReportWriter {
     std::int64_t frames = 0;
   };
   std::string path_;
+  bool box2d_ = true;
   std::vector<Spool> spools_;
 };
 

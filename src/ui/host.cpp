@@ -156,8 +156,8 @@ void UiHost::draw_menu(UiContext& ctx) {
     ImGui::EndMenu();
   }
   char where[160];
-  std::snprintf(where, sizeof where, "%s  |  %s  |  frame %lld%s", ctx.sim.scene_name.c_str(), ctx.sim.algorithm.c_str(),
-                static_cast<long long>(ctx.sim.frame_number()), ctx.sim.showing_past ? " (past)" : "");
+  std::snprintf(where, sizeof where, "%s  |  %s  |  %s%s", ctx.sim.scene_name.c_str(), ctx.sim.algorithm.c_str(),
+                ctx.sim.frame_label(ctx.sim.frame_number()).c_str(), ctx.sim.showing_past ? " (past)" : "");
   // Right-aligned: the injected fault (red), then scene, algorithm and frame.
   const std::string fault = ctx.sim.fault_name.empty() ? "" : "FAULT: " + ctx.sim.fault_name;
   const float spacing = ImGui::GetStyle().ItemSpacing.x;

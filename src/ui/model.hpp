@@ -85,6 +85,7 @@ struct SimView {
   std::string algorithm;
   std::string error;  // the last failed request (bad scene file, ...), shown in red
   Touching touching = Touching::inclusive;  // the contact convention (--touching), shown in Stats
+  FrameUnit frame_unit = FrameUnit::frame;  // what frame numbers are: a dump's are timesteps (every label says so)
   int threads = 1;  // threads a detection may use (--threads): the Scaling panel compares 1 and this
 
   bool paused = false;
@@ -138,6 +139,8 @@ struct SimView {
   std::string gl_description;
   int width = 0, height = 0;
 
+  // "frame 12" or "timestep 20000": frame `number` as every panel names it.
+  [[nodiscard]] std::string frame_label(std::int64_t number) const { return nbscope::frame_label(frame_unit, number); }
   // The shown frame's number (0 with nothing loaded).
   [[nodiscard]] std::int64_t frame_number() const { return frame != nullptr ? frame->frame : 0; }
   // The shown frame's simulated time in seconds (0 with nothing loaded).

@@ -19,7 +19,7 @@ class ControlsPanel final : public Panel {
     if (ImGui::Button("Step (O)")) c.requests.step_once = true;
     same_line_if_fits(button_width("Restart (R)"), 4.0f);
     if (ImGui::Button("Restart (R)")) c.requests.restart = true;
-    ImGui::Text("frame %lld   t = %.3f s", static_cast<long long>(s.frame_number()), s.sim_time());
+    ImGui::Text("%s   t = %.3f s", s.frame_label(s.frame_number()).c_str(), s.sim_time());
     if (s.paused) {
       ImGui::SameLine();
       ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "paused");

@@ -54,12 +54,12 @@ class StepperPanel final : public Panel {
       return;
     }
     if (!s.current_for(c.sim)) {
-      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "showing frame %lld (now %lld)",
-                         static_cast<long long>(s.frame()), static_cast<long long>(c.sim.frame_number()));
+      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "showing %s (now %lld)", c.sim.frame_label(s.frame()).c_str(),
+                         static_cast<long long>(c.sim.frame_number()));
       if (ImGui::Button("Record this frame")) s.capture(c.sim);
     }
     Stepper& st = s.stepper();
-    draw_transport(s);
+    draw_transport(c.sim, s);
     draw_phases(s);
     draw_long_trace(c, s);
     ImGui::Separator();
@@ -189,7 +189,7 @@ class StepperPanel final : public Panel {
 
   // The buttons, the scrubber (which also names the algorithm and frame) and, by the phase list,
   // the playback speed; the keys in a tooltip. Kept compact: the column shares the display's height.
-  void draw_transport(StepperSession& s) {
+  void draw_transport(const SimView& sim, StepperSession& s) {
     Stepper& st = s.stepper();
     // Six arrow buttons and Play share the width: 30 px each where there is room, else narrower.
     const float spacing = ImGui::GetStyle().ItemSpacing.x;
@@ -213,8 +213,8 @@ class StepperPanel final : public Panel {
     std::uint64_t pos = st.position();
     const std::uint64_t lo = 0, hi = st.size();
     char label[96];
-    std::snprintf(label, sizeof label, "%llu / %llu  (%s, frame %lld)", static_cast<unsigned long long>(pos),
-                  static_cast<unsigned long long>(hi), s.algorithm().c_str(), static_cast<long long>(s.frame()));
+    std::snprintf(label, sizeof label, "%llu / %llu  (%s, %s)", static_cast<unsigned long long>(pos),
+                  static_cast<unsigned long long>(hi), s.algorithm().c_str(), sim.frame_label(s.frame()).c_str());
     // A scrubber needs its grab: a thin, see-through one, so that the text over it stays readable.
     ImGui::SetNextItemWidth(-1);
     ImGui::PushStyleVar(ImGuiStyleVar_GrabMinSize, 4.0f);

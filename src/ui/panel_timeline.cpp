@@ -82,14 +82,14 @@ class TimelinePanel final : public Panel {
     tooltip(s.replaying ? "the last recorded frame" : "the newest (live) frame");
     ImGui::SameLine();
     if (s.showing_past) {
-      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "frame %lld of %lld (past)", static_cast<long long>(s.frame_number()),
+      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "%s of %lld (past)", s.frame_label(s.frame_number()).c_str(),
                          static_cast<long long>(s.newest_frame));
       ImGui::SameLine();
       if (ImGui::SmallButton("Resume here")) c.requests.resume_here = true;
       tooltip("continue the simulation from this frame: the later frames are replaced. The scene is re-simulated\n"
               "from frame 0 with the same steps and drags, so Box2D arrives here bit for bit.");
     } else {
-      ImGui::Text("frame %lld of %lld%s", static_cast<long long>(s.frame_number()), static_cast<long long>(s.newest_frame),
+      ImGui::Text("%s of %lld%s", s.frame_label(s.frame_number()).c_str(), static_cast<long long>(s.newest_frame),
                   s.replaying ? " (recorded)" : " (live)");
     }
     if (!s.resume_note.empty()) {
@@ -209,13 +209,13 @@ class TimelinePanel final : public Panel {
       const FrameSummary* near = nearest(frames, want);
       if (near != nullptr && hovered) {
         if (near->checked) {
-          ImGui::SetTooltip("frame %lld%s\nA = %s, detection %s ms\n%s\n(light: kept frames; dark: "
+          ImGui::SetTooltip("%s%s\nA = %s, detection %s ms\n%s\n(light: kept frames; dark: "
                             "dropped by the budget; white: shown; green: newest)",
-                            static_cast<long long>(near->frame), near->kept ? "" : " (not kept: the budget dropped it)",
+                            s.frame_label(near->frame).c_str(), near->kept ? "" : " (not kept: the budget dropped it)",
                             plural(static_cast<long long>(near->pairs), "pair").c_str(), format_ms(s, near->detection_ms).c_str(),
                             plural(static_cast<long long>(near->violations), "violation").c_str());
         } else {
-          ImGui::SetTooltip("frame %lld%s\nnot checked yet", static_cast<long long>(near->frame),
+          ImGui::SetTooltip("%s%s\nnot checked yet", s.frame_label(near->frame).c_str(),
                             near->kept ? "" : " (not kept)");
         }
       }

@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -94,7 +95,7 @@ class ViolationsPanel final : public Panel {
       const Violation& v = all[static_cast<std::size_t>(c.state.current_violation)];
       ImGui::Separator();
       ImGui::PushTextWrapPos(0.0f);
-      ImGui::TextColored(kRed, "%s", describe_violation(v, book, frame_dim(s)).c_str());
+      ImGui::TextColored(kRed, "%s", describe_violation(v, book, frame_dim(s), s.frame_unit).c_str());
       const auto truth = grid_cells(s, v);
       if (truth && !same_cells(v, *truth))
         ImGui::TextColored(kOrange, "The grid puts them in %s: the detector's cells are not the true ones.",
@@ -159,7 +160,7 @@ class ViolationsPanel final : public Panel {
                                   ImGuiTableFlags_SizingFixedFit;
     if (!ImGui::BeginTable("violations", 4, flags, ImVec2(0, height))) return;
     ImGui::TableSetupScrollFreeze(0, 1);
-    ImGui::TableSetupColumn("frame");
+    ImGui::TableSetupColumn(frame_unit_name(c.sim.frame_unit));
     ImGui::TableSetupColumn("check");
     ImGui::TableSetupColumn("pair");
     ImGui::TableSetupColumn("detector's", ImGuiTableColumnFlags_WidthStretch);
@@ -195,7 +196,7 @@ class ViolationsPanel final : public Panel {
         std::snprintf(frame, sizeof frame, "%lld##v%zu", static_cast<long long>(v.frame), index);
         const bool current = static_cast<std::int64_t>(index) == c.state.current_violation;
         if (ImGui::Selectable(frame, current, ImGuiSelectableFlags_SpanAllColumns)) go(c, index);
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe_violation(v, book, frame_dim(c.sim)).c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe_violation(v, book, frame_dim(c.sim), c.sim.frame_unit).c_str());
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(invariant_name(v.invariant));
         const auto truth = grid_cells(c.sim, v);
@@ -276,9 +277,9 @@ std::optional<std::size_t> violation_index(const SimView& sim, const Violation& 
   return std::nullopt;
 }
 
-std::string describe_violation(const Violation& v, bool book, int dim) {
-  return std::string(invariant_name(v.invariant)) + " in frame " + std::to_string(v.frame) + ": " + pair_text(v, book) + " " +
-         v.what + "; the detector's cells " + cells_joined(v.cell_i, v.cell_j, book, dim, " and ");
+std::string describe_violation(const Violation& v, bool book, int dim, FrameUnit unit) {
+  return std::string(invariant_name(v.invariant)) + " in " + frame_label(unit, v.frame) + ": " + pair_text(v, book) + " " + v.what +
+         (std::isfinite(v.gap) ? "; " + gap_text(v.gap) : "") + "; the detector's cells " + cells_joined(v.cell_i, v.cell_j, book, dim, " and ");
 }
 
 std::string boundary_line(const BoundaryPair& b, bool book, const std::vector<std::int64_t>* ids) {

@@ -50,7 +50,7 @@ std::optional<std::size_t> violation_index(const SimView& sim, const Violation& 
 // "A==R in frame 3: (4, 6) missing from A (in R); the detector's cells (5,6) and (4,7)", in the
 // chosen numbering (cells of a 3D frame, `dim` 3, with iz); its elements named "atoms (2753, 12)" when
 // it carries their atom ids (a dump's frame: Violation::atom_i, atom_j).
-std::string describe_violation(const Violation& violation, bool book, int dim = 2);
+std::string describe_violation(const Violation& violation, bool book, int dim = 2, FrameUnit unit = FrameUnit::frame);
 // The cells the grid gives the violation's two elements (core/cells.hpp's integerisation: what the
 // Selection panel and the picture show), to hold against the detector's (Violation::cell_i, cell_j);
 // nullopt unless the violation is of the frame on screen (only its elements are at hand).

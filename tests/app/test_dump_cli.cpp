@@ -170,8 +170,10 @@ TEST(DumpCli, AContactRemovedFromTheListIsAViolationNamingBothAtomsAndTheFrame) 
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   const std::string atoms = "atoms " + std::to_string(gone[0]) + ", " + std::to_string(gone[1]);
   EXPECT_NE(r.out.find(atoms), std::string::npos) << "wanted '" << atoms << "' in: " << r.out;
-  EXPECT_NE(r.out.find("first in frame 1000"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("missing from the recorded pairs"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("first in timestep 1000"), std::string::npos) << r.out;
+  // The missing pair's gap, as verify gives it: in contact, so negative.
+  EXPECT_NE(r.out.find("missing from the recorded pairs; distance - radii = -"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("; periodic: none; touching: strict (<)"), std::string::npos) << r.out;
 }
 
 TEST(DumpCli, ADefaultFormatDumpPassesWithPairsWithinTheDataPrecision) {
@@ -398,22 +400,34 @@ TEST(PeriodicCli, EveryBadBoxIsOneLineAndExitTwo) {
 
 // ---- contacts the dump does not match, and --contact-ids with nothing to read ----
 
-TEST(DumpCli, AContactFrameWithNoDumpFrameIsRefusedUnlessFramesCutTheDump) {
+TEST(DumpCli, AContactFrameWithNoAtomsFrameIsSkippedWithOneNote) {
   const DumpRun files = write_run("dump_cli_extra_contacts", "%.17g");
   // The contacts of timesteps 0 and 1000, and one more frame (timestep 2000) the dump does not have.
   write_text(files.contacts, read_text(files.contacts) + local_frame(2000, files.lists[1], 0.05));
   const Result r = replay(files);
-  expect_one_error_line(r, files.contacts + ":");
-  EXPECT_NE(r.err.find("contacts of timestep 2000, but the dump has no frame of it (its timesteps: 0, 1000)"), std::string::npos) << r.err;
-  // --frames 5 keeps the whole two-frame dump: still refused.
-  expect_one_error_line(replay(files, "--touching strict --frames 5"), "contacts of timestep 2000");
-  // --frames 1 cuts the dump after timestep 0: the contact frames past it go with it.
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_EQ(r.err.rfind("nbscope: note: " + files.contacts + ":", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(": timestep 2000 has contacts but no atoms frame; skipped\n"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.out.find("2 frames"), std::string::npos) << r.out;
+  // --frames 1 cuts the dump after timestep 0: the contact frames past it go with it, without a note.
   const Result cut = replay(files, "--touching strict --frames 1");
   EXPECT_EQ(cut.exit_code, 0) << cut.out << cut.err;
+  EXPECT_EQ(cut.err, "");
   EXPECT_NE(cut.out.find("1 frame"), std::string::npos) << cut.out;
-  // A contact frame between the dump's: refused naming the dump's timesteps too.
-  write_text(files.contacts, local_frame(0, files.lists[0], 0.05) + local_frame(500, {}, 0.05) + local_frame(1000, files.lists[1], 0.05));
-  expect_one_error_line(replay(files), "contacts of timestep 500, but the dump has no frame of it (its timesteps: 0, 1000)");
+  // Contact frames between the dump's (contacts dumped more often than atoms): one note for all, the
+  // count and the first timesteps.
+  write_text(files.contacts, local_frame(0, files.lists[0], 0.05) + local_frame(250, {}, 0.05) + local_frame(500, {}, 0.05) +
+                                 local_frame(750, {}, 0.05) + local_frame(900, {}, 0.05) + local_frame(1000, files.lists[1], 0.05));
+  const Result many = replay(files);
+  EXPECT_EQ(many.exit_code, 0) << many.out << many.err;
+  EXPECT_EQ(std::count(many.err.begin(), many.err.end(), '\n'), 1) << many.err;
+  EXPECT_NE(many.err.find("nbscope: note: " + files.contacts + ":"), std::string::npos) << many.err;
+  EXPECT_NE(many.err.find(": 4 timesteps have contacts but no atoms frame (250, 500, 750, ...); skipped"), std::string::npos) << many.err;
+  // No contact frame of any atoms frame's timestep: nothing would be checked, so it is refused.
+  write_text(files.contacts, local_frame(250, {}, 0.05) + local_frame(750, {}, 0.05));
+  expect_one_error_line(replay(files), files.contacts + ":");
+  expect_one_error_line(replay(files), "no contact frame has the timestep of an atoms frame (contacts from timestep 250, atoms from 0)");
 }
 
 TEST(DumpCli, ContactIdsWithNoContactListToReadAreRefused) {

@@ -308,6 +308,12 @@ TEST(DebugPanels, AtomsAreNamedByTheirIdsAndBoundaryPairsAreListedApart) {
   EXPECT_EQ(violation_line(v, true), "A==R: atoms (99, 100) missing from A, cells (2,3) (4,5)");
   EXPECT_EQ(describe_violation(v, false), "A==R in frame 0: atoms (99, 100) missing from A; the detector's cells (1,2) and (3,4)");
   EXPECT_EQ(describe_violation(rows, false), "A==R in frame 0: (2, 3) missing from A; the detector's cells (1,2) and (3,4)");
+  // A dump's frame is its timestep, and a pair of two elements carries its gap (the checker measures it).
+  Violation dumped = v;
+  dumped.frame = 20000;
+  dumped.gap = -0.0125;
+  EXPECT_EQ(describe_violation(dumped, false, 2, FrameUnit::timestep),
+            "A==R in timestep 20000: atoms (99, 100) missing from A; distance - radii = -0.0125 (in contact); the detector's cells (1,2) and (3,4)");
   BoundaryPair tie{Pair{0, 1}, 0.0, 0.0, true, true};
   EXPECT_EQ(boundary_line(tie, false, &ids),
             "atoms (2753, 12): an exact tie (gap 0): a contact under --touching inclusive, not under strict (R has it, A not)");
