@@ -483,6 +483,8 @@ int run_headless_loop(const HeadlessOptions& o) {
     summary += "; went to violation " + std::to_string(o.violation) + ", frame " + std::to_string(loop.source().frame()) + ": " +
                violation_text(loop.history().violation_log().listed()[static_cast<std::size_t>(o.violation - 1)], loop.source());
   std::printf("%s\n", summary.c_str());
+  for (const AlgorithmRun& run : report.runs)  // a simulation's list that is mostly not contacts: say what it likely is
+    if (const std::string hint = apart_pairs_hint(run.apart, run.pairs, run.apart_gap_max); !hint.empty()) std::printf("%s\n", hint.c_str());
   return report.passed() ? 0 : 1;
 }
 
