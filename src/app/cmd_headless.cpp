@@ -383,6 +383,8 @@ int run_headless_loop(const HeadlessOptions& o) {
   if (!o.notice.empty()) std::fprintf(stderr, "nbscope: %s\n", o.notice.c_str());
   const std::string summary = headless_summary(o, loop, report, back_ms) + subdomains.text() + latency.text();
   std::printf("%s\n", summary.c_str());
+  for (const AlgorithmRun& run : report.runs)  // a simulation's list that is mostly not contacts: say what it likely is
+    if (const std::string hint = apart_pairs_hint(run.apart, run.pairs, run.apart_gap_max); !hint.empty()) std::printf("%s\n", hint.c_str());
   return report.passed() ? 0 : 1;
 }
 

@@ -84,10 +84,14 @@ int verify_pairs(const std::string& input, const std::string& pairs_path, const 
   } else {
     if (dump.columns.numbers || dump.columns.names)
       throw Error("--contact-ids: needs --contacts, a dump local file as --pairs (" + pairs_path + " is not one: its pairs are i,j)");
-    given = read_given_pairs_csv(pairs_path, base);
+    GivenPairsHeader header;
+    given = read_given_pairs_csv(pairs_path, base, &header);
     if (frame.dump) {  // a dump's pairs name atoms by id, as `pairs --input FILE.dump` writes them
       if (base != 0) throw Error("--base: the pairs of a dump name atoms by their ids");
       given_pairs_ids_to_rows(*frame.dump, pairs_path, given);
+    } else if (header.atom_ids) {  // read as rows they would be checked as the wrong pairs
+      throw Error(pairs_path + ":" + std::to_string(header.line) + ": the header `id1,id2` says atom ids, but " + input +
+                  " has none (its elements are rows, `i,j`): give the dump they came from as --input");
     }
   }
   DetectOptions options;
@@ -131,6 +135,11 @@ int verify_pairs(const std::string& input, const std::string& pairs_path, const 
   if (!boundary.empty()) summary += ", " + std::to_string(boundary.size()) + " at the boundary (not wrong: the data cannot decide them)";
   if (touching == Touching::strict) summary += " (touching strict: <)";
   print_line(summary + (v.ok() ? ": right" : ": WRONG"));
+  double gap_max = 0;  // the given pairs apart: many of them is a neighbour list given as contacts
+  for (const verify::GivenPair& x : v.extra) gap_max = std::max(gap_max, contact_gap(e, static_cast<ElementId>(x.i), static_cast<ElementId>(x.j)));
+  if (const std::string hint = apart_pairs_hint(static_cast<std::int64_t>(v.extra.size()), static_cast<std::int64_t>(given.size()), gap_max);
+      !hint.empty())
+    print_line(hint);
   for (const BoundaryPair& b : boundary)
     print_line(std::string(b.in_r ? "boundary, not given " : "boundary, given ") + p.id(b.pair.i) + "," + p.id(b.pair.j) + ": " +
                boundary_text(b));

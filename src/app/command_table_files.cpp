@@ -23,8 +23,8 @@ CommandSpec pairs_command() {
       "contact pairs of an elements file as CSV",
       {"nbscope pairs --input ELEMENTS.csv [--algorithm NAME] [--output PAIRS.csv] [--repeat K]",
        "              [--cell-size D] [--origin X,Y[,Z]] [--cells NX,NY[,NZ]] [--max-pairs M] [--threads N]"},
-      {"Contact pairs of the elements (rows x,y,r or x,y,z,r) as CSV \"i,j\" (0-based, i < j, sorted), to PAIRS.csv or stdout. "
-       "Detection time (without I/O) and pair count go to stderr."},
+      {"Contact pairs of the elements (rows x,y,r or x,y,z,r) as CSV \"i,j\" (0-based, i < j, sorted), to PAIRS.csv or stdout; "
+       "of a dump's frame (--input FILE.dump) \"id1,id2\", the atoms' ids. Detection time (without I/O) and pair count go to stderr."},
       {{"options", with_grid({{"--input", "ELEMENTS.csv", "", "the elements, one x,y,r or x,y,z,r a row (required)"},
                               {"--algorithm", "NAME", "a --detector-lib's detector, else nbs", "the detector (nbscope algorithms)"},
                               {"--output", "PAIRS.csv", "stdout", "where the pairs go"},
@@ -78,8 +78,8 @@ CommandSpec verify_command() {
        "               [--screenshot OUT.png [--size WxH] [--overlays SPEC] [--panels SPEC] [--select K]",
        "               [--lists F] [--layer K|auto] [--camera X,Y,PPM] [--no-timings] [--shader-dir DIR]",
        "               [--book-numbering] [--gl osmesa|egl|auto]]"},
-      {"--pairs: your contact pairs (one a line, i,j in either order) against brute force (sort above --brute-limit): a summary line, "
-       "then every missing, extra, duplicated, i == j and out-of-range pair with both elements' cells and distance - radii.",
+      {"--pairs: your contact pairs (one a line, i,j in either order; atom ids with --input FILE.dump) against brute force (sort above "
+       "--brute-limit): a summary line, then every missing, extra, duplicated, i == j and out-of-range pair with both elements' cells and distance - radii.",
        "--arrays: your heads and next arrays, in the schema dump writes (\"base\": 1 for 1-based), against the book: every list ends (a "
        "cycle or a bad index is found, never followed), every element on one list, the list of its own cell; --exact also the book's "
        "order. The first problem in the book's terms, led by the contract it breaks (contract list-cell broken: E[7] = 5, but element 5 "

@@ -16,6 +16,7 @@
 #include <tuple>
 
 #include "core/error.hpp"
+#include "core/pairs.hpp"
 #include "io/data_dir.hpp"
 #include "render/overlays.hpp"
 #include "render/shader.hpp"
@@ -103,6 +104,7 @@ void GlView::fit_camera(const FrameLoop& loop) {
   camera_.set_viewport(context_.width(), context_.height());
   framing_.set_home_box(render::elements_box(loop.source().elements(), loop.result().selected().grid));
   framing_.go_home(camera_, host_.insets(state_));
+  followed_.fitted_empty = loop.source().elements().size() == 0;
 }
 
 void GlView::check_selection(const FrameLoop& loop) const {
@@ -145,6 +147,9 @@ void GlView::follow(const FrameLoop& loop) {
     source_loaded(loop, !followed_.had_scene || followed_.scene != loop.source().scene().path);
   } else if (moved) {
     follow_atoms(loop);
+    // A run's first frame may have no atoms (LIGGGHTS's timestep 0, before insertion): the first
+    // frame with some is what Home fits, unless the user has moved the camera or --camera pins it.
+    if (followed_.fitted_empty && loop.source().elements().size() > 0 && camera_.at_home() && !choices_.camera) fit_camera(loop);
   }
   followed_.ids = loop.result().ids;
   // Only redetected: the same frame, nothing seen changes (the lists follow the trace, update_lists).
@@ -227,7 +232,9 @@ void GlView::focus_violation(const FrameLoop& loop, const Violation& v, bool ope
       state_.current_violation = static_cast<std::int64_t>(k);
       break;
     }
-  const Eigen::Vector2d a(e.x[v.pair.i], e.y[v.pair.i]), b(e.x[v.pair.j], e.y[v.pair.j]);
+  // The pair as the check measures it: i and j's nearest image (across a periodic edge, not the box apart).
+  const Eigen::Vector2d a(e.x[v.pair.i], e.y[v.pair.i]);
+  const Eigen::Vector2d b = a + Eigen::Vector2d(axis_delta(e, 0, e.x[v.pair.j] - a.x()), axis_delta(e, 1, e.y[v.pair.j] - a.y()));
   // The pair's middle in the middle of the free view, zoomed so that it spans a sixth to a half of it.
   camera_.set_viewport(context_.width(), context_.height());
   framing_.focus(camera_, 0.5 * (a + b), (b - a).norm() + e.r[v.pair.i] + e.r[v.pair.j], host_.insets(state_));

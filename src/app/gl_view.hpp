@@ -179,6 +179,7 @@ class GlView {
     ElementId trail_element = -1;             // the element `trails` was built for (a new selection rebuilds it)
     std::vector<std::vector<render::Vec2>> trails;  // from the loop's history
     std::vector<float> flashes;                     // from the loop's cell changes
+    bool fitted_empty = false;  // Home fitted a frame without elements: the first frame with some is fitted again
   };
   // The lists overlay, rebuilt from the frame loop's trace when it or the stepper's position changes.
   struct ListsCache {

@@ -66,6 +66,15 @@ std::string periodic_text(const std::array<bool, 3>& periodic) {
   return s.empty() ? "none" : s;
 }
 
+std::string apart_pairs_hint(std::int64_t apart, std::int64_t listed, double gap_max) {
+  if (apart < 10 || apart * 20 < listed) return "";
+  char gap[32];
+  std::snprintf(gap, sizeof gap, "%.3g", gap_max);
+  return "hint: " + std::to_string(apart) + " of the " + std::to_string(listed) + " listed pairs do not touch (gaps up to " + gap +
+         "): a neighbour list rather than contacts? LAMMPS lists contacts with `compute property/local patom1 patom2 cutoff "
+         "radius`, LIGGGHTS with `compute pair/gran/local pos id`";
+}
+
 void name_atoms(FrameReport& report, const std::vector<std::int64_t>* ids) {
   if (ids == nullptr) return;
   const auto atom = [ids](ElementId row) {

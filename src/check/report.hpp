@@ -5,6 +5,7 @@
 // Index: Invariant | Violation | FrameCounts, FrameTimings, CheckTimings, FrameReport | FrameSummary |
 // TimingStats, AlgorithmRun, RunReport.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -77,6 +78,11 @@ struct BoundaryPair {
   bool tie = false;       // gap exactly 0: in contact under --touching inclusive, not under strict
   bool in_r = false;      // R has it (the recorded pairs do not), else the reverse
 };
+// "hint: 3126 of the 3660 listed pairs do not touch (gaps up to 0.3): a neighbour list rather than
+// contacts? ..." when many of a simulation's `listed` pairs are `apart` (at least 10, and 5 % of
+// them: a code's neighbour list dumped as its contacts; a bug's few extra pairs stay below), else "".
+[[nodiscard]] std::string apart_pairs_hint(std::int64_t apart, std::int64_t listed, double gap_max);
+
 // Most boundary pairs listed per frame; the count stays exact beyond it.
 inline constexpr std::size_t kMaxListedBoundaryPerFrame = 200;
 // "at the boundary, within the data's precision (gap -3.1e-08, resolution 8.7e-08)" or
@@ -99,6 +105,9 @@ struct FrameCounts {
   std::int64_t aabb_float_rounding = 0;
   // A==R disagreements of recorded pairs at the boundary (BoundaryPair): within the data's precision, exact ties.
   std::int64_t boundary = 0, ties = 0;
+  // Recorded pairs apart (in the list, not in contact, not at the boundary) and their largest gap.
+  std::int64_t apart = 0;
+  double apart_gap_max = 0;
 };
 
 // Wall-clock milliseconds of one frame's three stages.
@@ -222,6 +231,9 @@ struct AlgorithmRun {
   std::map<std::string, std::int64_t> references;  // frames per reference detector's name
   std::int64_t last_elements = 0;           // elements of the last frame
   std::int64_t boundary = 0, ties = 0;      // recorded pairs at the boundary (FrameCounts::boundary, ties), over the frames
+  std::int64_t pairs = 0;                   // |A| over the frames (a recorded lane: the pairs listed)
+  std::int64_t apart = 0;                   // recorded pairs apart (FrameCounts::apart), over the frames
+  double apart_gap_max = 0;                 // and their largest gap
   TimingStats physics, detection, check;    // FrameTimings, by stage
   std::array<TimingStats, CheckTimings::kParts> check_parts;  // CheckTimings, by part
 
@@ -239,6 +251,9 @@ struct AlgorithmRun {
     last_elements = f.counts.elements;
     boundary += f.counts.boundary;
     ties += f.counts.ties;
+    pairs += f.counts.a;
+    apart += f.counts.apart;
+    apart_gap_max = std::max(apart_gap_max, f.counts.apart_gap_max);
     physics.add(f.timings.physics_ms);
     detection.add(f.timings.detection_ms);
     check.add(f.timings.check_ms);

@@ -325,7 +325,8 @@ Elements read_elements_csv(const std::string& path, std::int64_t max_elements, s
 void write_pairs_csv(std::ostream& out, const PairList& sorted_pairs, const std::vector<std::int64_t>& ids) {
   // In chunks: fifty million pairs as one string would take 600 MB more than the pairs themselves.
   constexpr std::size_t kChunk = std::size_t{1} << 16;
-  std::string buf = "i,j\n";
+  // A dump's pairs name atoms by id, and say so: verify --pairs reads an `id1,id2` file as ids.
+  std::string buf = ids.empty() ? "i,j\n" : "id1,id2\n";
   buf.reserve(kChunk + 32);
   char num[32];
   for (const Pair& p : sorted_pairs) {

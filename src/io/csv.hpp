@@ -75,7 +75,7 @@ void parse_element_row(const std::vector<std::string_view>& fields, const std::s
 bool parse_plain_row(std::string_view line, int& count, std::array<double, 4>& out);
 
 // Writes header `i,j` and then the pairs sorted, one a line, atomically; with `ids` (a dump's row ->
-// atom id, ascending), each element as its id.
+// atom id, ascending), header `id1,id2` and each element as its id.
 void write_pairs_csv(const std::string& path, const PairList& sorted_pairs, const std::vector<std::int64_t>& ids = {});
 // The same to a stream (e.g. std::cout), in chunks.
 void write_pairs_csv(std::ostream& out, const PairList& sorted_pairs, const std::vector<std::int64_t>& ids = {});

@@ -21,7 +21,8 @@ bool whole(std::string_view f, std::int64_t& out) {
 
 }  // namespace
 
-std::vector<verify::GivenPair> parse_given_pairs_csv(const std::string& text, const std::string& where, int base, std::size_t max_pairs) {
+std::vector<verify::GivenPair> parse_given_pairs_csv(const std::string& text, const std::string& where, int base, std::size_t max_pairs,
+                                                     GivenPairsHeader* header) {
   // Spreadsheets and some editors write a UTF-8 byte order mark: skipped, as ELEMENTS.csv skips it.
   const std::size_t bom = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
   if (text.find_first_not_of(" \t\r\n", bom) == std::string::npos) throw Error(where + ": empty file (a header `i,j` alone is no pairs)");
@@ -41,7 +42,8 @@ std::vector<verify::GivenPair> parse_given_pairs_csv(const std::string& text, co
     std::int64_t i = 0, j = 0;
     const bool numbers = fields.size() == 2 && whole(fields[0], i) && whole(fields[1], j);
     if (first_row && !numbers && fields.size() == 2 && !whole(fields[0], i)) {
-      first_row = false;  // a header line such as `i,j`
+      first_row = false;  // a header line such as `i,j`, or `id1,id2` (atom ids)
+      if (header != nullptr) *header = {line_no, fields[0] == "id1" && fields[1] == "id2"};
       continue;
     }
     first_row = false;
@@ -73,8 +75,8 @@ void given_pairs_ids_to_rows(const DumpFrame& frame, const std::string& where, s
   }
 }
 
-std::vector<verify::GivenPair> read_given_pairs_csv(const std::string& path, int base) {
-  return parse_given_pairs_csv(read_input_file(path, "pairs file", kMaxElementsBytes, kMaxLineBytes), path, base);
+std::vector<verify::GivenPair> read_given_pairs_csv(const std::string& path, int base, GivenPairsHeader* header) {
+  return parse_given_pairs_csv(read_input_file(path, "pairs file", kMaxElementsBytes, kMaxLineBytes), path, base, kDefaultMaxPairs, header);
 }
 
 }  // namespace nbscope

@@ -6,7 +6,14 @@ namespace nbscope::render {
 
 WorldRect elements_box(const Elements& e, const Grid& grid) {
   WorldRect box{{0, 0}, {1, 1}};
-  if (e.size() == 0) return box;
+  if (e.size() == 0) {  // no atoms yet: the periodic box where the frame has one
+    for (int a = 0; a < 2; ++a) {
+      if (!e.box.periodic[a] || e.box.length(a) <= 0) continue;
+      box.min[a] = e.box.lo[a];
+      box.max[a] = e.box.hi[a];
+    }
+    return box;
+  }
   const double d = grid.dim == 2 ? grid.cell_size : 0.0;
   box.min = Eigen::Vector2d((e.x - e.r).minCoeff(), (e.y - e.r).minCoeff()).array() - 0.5 * d;
   box.max = Eigen::Vector2d((e.x + e.r).maxCoeff(), (e.y + e.r).maxCoeff()).array() + 0.5 * d;

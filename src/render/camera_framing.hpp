@@ -14,7 +14,8 @@
 namespace nbscope::render {
 
 // The elements' bounding box and half a cell around it (no grid, or a 3D one: the box alone), so
-// that the neighbour cells and the list heads stay in view; {0,0}..{1,1} when there is none.
+// that the neighbour cells and the list heads stay in view; without elements the frame's periodic
+// box on its periodic axes, {0,0}..{1,1} on the others.
 [[nodiscard]] WorldRect elements_box(const Elements& elements, const Grid& grid);
 
 // How close a focus brings its subject: it spans at least 1/`widest` and at most 1/`narrowest` of

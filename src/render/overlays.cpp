@@ -247,15 +247,20 @@ void draw_focus_pair(const OverlayScene& s, const ViewFrame& v, LabelSpace& labe
       sink.rect(Layer::Cells, a, a + Vec2::Constant(float(d)), palette::kSelectionCell);
     }
   }
+  // As the check measures the pair: each element joined to the other's nearest image, ringed there
+  // too; across a periodic edge from both sides (the camera frames i's side, focus_violation).
   std::array<std::array<Vec2, 2>, 2> segments;
-  const int count = pair_segments(e, p.i, p.j, segments);
-  for (int k = 0; k < count; ++k) {
-    const auto [a, b] = segments[static_cast<std::size_t>(k)];
+  const bool crosses = pair_segments(e, p.i, p.j, segments) == 2;
+  const Vec2 d = min_image_delta(e, p.i, p.j).cast<float>();
+  const std::array<std::pair<ElementId, ElementId>, 2> sides{{{p.i, p.j}, {p.j, p.i}}};
+  for (int side = 0; side < (crosses ? 2 : 1); ++side) {
+    const auto [from, to] = sides[static_cast<std::size_t>(side)];
+    const Vec2 a = centre_of(e, from), b = a + (side == 0 ? d : Vec2(-d));
     sink.line(Layer::Top, a, b, palette::kSelection, 3.5f);
     sink.line(Layer::Top, a, b, palette::kViolation, 1.5f);
+    sink.circle(Layer::Top, a, static_cast<float>(e.r[from]), kNone, palette::kSelection, 2.5f, 9.0f);
+    sink.circle(Layer::Top, b, static_cast<float>(e.r[to]), kNone, palette::kSelection, 2.5f, 9.0f);
   }
-  for (const ElementId k : {p.i, p.j})
-    sink.circle(Layer::Top, centre_of(e, k), static_cast<float>(e.r[k]), kNone, palette::kSelection, 2.5f, 9.0f);
   if (s.layer != nullptr) draw_layer_marks(e, PairList{p}, *s.layer, palette::kSelection, Layer::Top, v, labels, sink);
 }
 

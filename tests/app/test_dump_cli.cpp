@@ -204,7 +204,7 @@ TEST(DumpCli, ExactTiesAreNamedUnderTheOtherConvention) {
   const Result pi = run("pairs --input " + dir + "/a.dump");
   EXPECT_NE(pi.out.find("\n1,2\n"), std::string::npos) << pi.out;
   const Result ps = run("pairs --input " + dir + "/a.dump --touching strict");
-  EXPECT_EQ(ps.out, "i,j\n") << ps.out;
+  EXPECT_EQ(ps.out, "id1,id2\n") << ps.out;
 }
 
 TEST(DumpCli, PairsOfADumpFrameAreNamedByAtomIds) {
@@ -215,7 +215,7 @@ TEST(DumpCli, PairsOfADumpFrameAreNamedByAtomIds) {
   for (auto& p : want)
     if (p[0] > p[1]) std::swap(p[0], p[1]);
   std::sort(want.begin(), want.end());
-  std::string text = "i,j\n";
+  std::string text = "id1,id2\n";  // atom ids, and the header says so
   for (const auto& p : want) text += std::to_string(p[0]) + "," + std::to_string(p[1]) + "\n";
   EXPECT_EQ(r.out, text);
   // Several frames and no --timestep: refused, naming them.
@@ -241,7 +241,7 @@ TEST(DumpCli, TimestepSeeksItsFrameWithoutParsingTheOthers) {
   for (auto& p : want)
     if (p[0] > p[1]) std::swap(p[0], p[1]);
   std::sort(want.begin(), want.end());
-  std::string text = "i,j\n";
+  std::string text = "id1,id2\n";
   for (const auto& p : want) text += std::to_string(p[0]) + "," + std::to_string(p[1]) + "\n";
   const Result r = run("pairs --input " + seek + " --timestep 1000 --touching strict");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -281,6 +281,19 @@ TEST(DumpCli, VerifyReadsTheIdsOfADumpsPairsFile) {
   expect_one_error_line(run(verify + files.dir + "/absent.csv"), "absent.csv:2: pair (");
   expect_one_error_line(run(verify + files.dir + "/absent.csv"), "atom 999999 is not in the frame of timestep 1000");
   expect_one_error_line(run(verify + files.dir + "/own.csv --base 1"), "--base: the pairs of a dump name atoms by their ids");
+}
+
+// `id1,id2` (what pairs writes from a dump) says atom ids: against elements without ids (an
+// ELEMENTS.csv) it is refused, naming the header's line, not read as rows.
+TEST(DumpCli, AnIdsPairsFileAgainstElementsWithoutIdsIsRefused) {
+  const std::string dir = scratch_dir("dump_cli_ids_header");
+  write_text(dir + "/e.csv", "x,y,r\n0,0,0.5\n0.9,0,0.5\n5,5,0.5\n");
+  write_text(dir + "/ids.csv", "# from pairs --input atoms.dump\nid1,id2\n1,2\n");
+  expect_one_error_line(run("verify --input " + dir + "/e.csv --pairs " + dir + "/ids.csv"),
+                        "ids.csv:2: the header `id1,id2` says atom ids, but " + dir + "/e.csv has none");
+  write_text(dir + "/rows.csv", "i,j\n0,1\n");  // ELEMENTS.csv's rows as before
+  const Result rows = run("verify --input " + dir + "/e.csv --pairs " + dir + "/rows.csv");
+  EXPECT_EQ(rows.exit_code, 0) << rows.out << rows.err;
 }
 
 TEST(DumpCli, PeriodicContactsAcrossTheBoundaryAreFound) {

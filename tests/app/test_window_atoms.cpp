@@ -140,5 +140,67 @@ TEST(WindowAtoms, APeriodicFramesScreenshotIsWritten) {
   write_png(std::string(NBSCOPE_TEST_OUT) + "/window_periodic.png", rig.view->screenshot());
 }
 
+// A violation across x's periodic edge of [0, 100): atoms 7 (x 0.3) and 8 (x 99.75) touch through
+// the edge, 0.55 apart. Going to it frames the pair as the check measures it (atom 7 and 8's image
+// at -0.25), not the two atoms' positions 99 apart (which put the whole box in view).
+TEST(WindowAtoms, AViolationAcrossAPeriodicEdgeFramesTheMinimumImagePair) {
+  Recording rec;
+  rec.path = "periodic.dump";
+  RecordedFrame f = dump_frame(0, {7, 8, 9}, {0.3, 99.75, 50});
+  f.elements.r << 0.5, 0.5, 0.5;
+  f.elements.box.periodic[0] = true;
+  f.elements.box.lo[0] = 0;
+  f.elements.box.hi[0] = 100;
+  rec.frames = {f};
+  AtomRig rig(std::move(rec));
+  rig.frames(1);
+  Violation v;
+  v.frame = rig.loop.source().frame();
+  v.pair = Pair{0, 1};
+  v.what = "in contact (in R) but missing from the recorded pairs";
+  rig.view->focus_violation(rig.loop, v);
+  rig.frames(GlView::kSettleFrames);
+  const render::WorldRect seen = rig.view->camera().view();
+  EXPECT_LT(seen.max.x() - seen.min.x(), 20.0) << "zoomed on the pair, not the box";
+  for (const double x : {0.3, -0.25}) {  // atom 7, and atom 8's nearest image
+    EXPECT_GT(x, seen.min.x()) << x;
+    EXPECT_LT(x, seen.max.x()) << x;
+  }
+  std::filesystem::create_directories(NBSCOPE_TEST_OUT);
+  write_png(std::string(NBSCOPE_TEST_OUT) + "/window_periodic_violation.png", rig.view->screenshot());
+}
+
+// A run whose first frame has no atoms (LIGGGHTS's timestep 0, before insertion): Home fits the
+// first frame with atoms once it is shown, not the empty frame's placeholder box.
+TEST(WindowAtoms, AnEmptyFirstFrameIsNotWhatHomeFits) {
+  Recording rec;
+  rec.path = "pour.dump";
+  rec.frames = {dump_frame(0, {}, {}), dump_frame(1, {1, 2, 3}, {10, 30, 50})};
+  AtomRig rig(std::move(rec));
+  rig.frames(1);
+  rig.loop.step();
+  rig.frames(GlView::kSettleFrames);
+  const render::WorldRect seen = rig.view->camera().view();
+  for (const double x : {9.75, 50.25}) {  // the atoms' extent
+    EXPECT_GT(x, seen.min.x()) << x;
+    EXPECT_LT(x, seen.max.x()) << x;
+  }
+  EXPECT_LT(seen.max.x() - seen.min.x(), 160.0) << "fitted, not zoomed out";
+}
+
+// (One view at a time: each holds the ImGui context.) A camera the user moved is theirs: the first
+// frame with atoms does not fit it again.
+TEST(WindowAtoms, AnEmptyFirstFrameLeavesACameraTheUserMoved) {
+  Recording again;
+  again.path = "pour.dump";
+  again.frames = {dump_frame(0, {}, {}), dump_frame(1, {1}, {10}), dump_frame(2, {1, 2}, {10, 500})};
+  AtomRig moved(std::move(again));
+  moved.frames(1);
+  moved.view->camera().set({3, 4}, 17.0);
+  moved.loop.step();
+  moved.frames(1);
+  EXPECT_EQ(moved.view->camera().pixels_per_metre(), 17.0);
+}
+
 }  // namespace
 }  // namespace nbscope

@@ -5,9 +5,10 @@
 //
 // Each page runs in a fresh directory holding links to the tree's assets/, docs/ and examples/, its
 // commands in the page's order (a command makes the files the next one reads, as for a reader).
-// Inputs made as the docs say (make_inputs()): README.md's LIGGGHTS frames are tests/dem/pour2d.in
-// run there (its dump lines are the README's), docs/dem.md's `post/` is tests/dem/pour3d.in run in
-// post/; `myplugin.c` (README, install.md) and `brute_plugin.c` (plugins.md) are
+// Inputs made as the docs say (make_inputs()): docs/dem.md's recipes (`<!-- run: CODE FILE -->`:
+// its LAMMPS input run by lmp, its LIGGGHTS input by liggghts) run there, the LAMMPS one for
+// README.md too, and a block marked `<!-- part-of: CODE -->` (README.md, formats.md) must be lines of
+// that recipe; `myplugin.c` (README, install.md) and `brute_plugin.c` (plugins.md) are
 // examples/minimal/brute_plugin.c, the plugin docs/plugins.md shows. Substitutions (substitute()):
 // `/tmp/` is the page directory's tmp/ (parallel runs share no files), `-I<prefix>/include` and
 // `-I/usr/local/include` the tree's include/ (the installed header), `--scene FILE` default.json.
@@ -81,25 +82,64 @@ std::vector<std::string> split_lines(const std::string& text) {
 
 std::string quote(const std::string& s) { return "'" + s + "'"; }
 
+// docs/dem.md's recipe input for `code` ("lammps", "liggghts"): the fenced block after its mark
+// `<!-- run: CODE FILE -->`, as {FILE, text}; {"", ""} when the page has none.
+std::pair<std::string, std::string> recipe_of(const std::string& code) {
+  const std::vector<std::string> lines = lines_of(kSource / "docs/dem.md");
+  const std::regex mark("<!-- run: " + code + " (\\S+) -->");
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    std::smatch m;
+    if (!std::regex_match(lines[k], m, mark)) continue;
+    std::size_t at = k + 1;
+    while (at < lines.size() && trim(lines[at]).empty()) ++at;
+    std::string text;
+    for (++at; at < lines.size() && !fence(lines[at]); ++at) text += lines[at] + "\n";
+    return {m[1], text};
+  }
+  return {"", ""};
+}
+
+// Every line of a block marked `<!-- part-of: CODE -->` in `page` is a line of CODE's recipe.
+void check_recipe_parts(const std::string& page) {
+  const std::vector<std::string> lines = lines_of(kSource / page);
+  static const std::regex mark("<!-- part-of: (\\S+) -->");
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    std::smatch m;
+    if (!std::regex_match(lines[k], m, mark)) continue;
+    const std::string recipe = "\n" + recipe_of(m[1]).second;
+    EXPECT_NE(recipe, "\n") << page << ":" << k + 1 << ": no recipe " << m[1] << " in docs/dem.md";
+    std::size_t at = k + 1;
+    while (at < lines.size() && trim(lines[at]).empty()) ++at;
+    for (++at; at < lines.size() && !fence(lines[at]); ++at)
+      EXPECT_NE(recipe.find("\n" + lines[at] + "\n"), std::string::npos)
+          << page << ":" << at + 1 << ": '" << lines[at] << "' is not a line of the " << m[1] << " recipe (docs/dem.md)";
+  }
+}
+
 // The inputs a page's commands read, made as the docs say (the header).
 void make_inputs(const std::string& page, const fs::path& dir) {
   const std::string minimal = (kSource / "examples/minimal/brute_plugin.c").string();
-  const auto liggghts = [&](const std::string& in, const fs::path& where) {
-    if (std::system("command -v liggghts >/dev/null 2>&1") != 0) {
+  // docs/dem.md's recipe for `code` run as written, in `dir`, by `program` (lmp, liggghts).
+  const auto recipe = [&](const std::string& code, const std::string& program) {
+    if (std::system(("command -v " + program + " >/dev/null 2>&1").c_str()) != 0) {
       const char* ci = std::getenv("CI");
-      if (ci != nullptr && std::string(ci) == "true") FAIL() << page << ": liggghts is not installed (CI=true: it must run)";
-      GTEST_SKIP() << page << ": its LIGGGHTS frames need liggghts (apt-get install liggghts)";
+      if (ci != nullptr && std::string(ci) == "true") FAIL() << page << ": " << program << " is not installed (CI=true: it must run)";
+      GTEST_SKIP() << page << ": its " << code << " frames need " << program << " (apt-get install " << code << ")";
     }
-    fs::create_directories(where);
-    const std::string cmd = "cd " + quote(where.string()) + " && liggghts -in " + quote((kSource / "tests/dem" / in).string()) +
-                            " -log log.liggghts -echo none -screen /dev/null >liggghts.out 2>&1";
-    ASSERT_EQ(std::system(cmd.c_str()), 0) << page << ": liggghts " << in << " failed (" << where << "/log.liggghts)";
+    const auto [file, text] = recipe_of(code);
+    ASSERT_FALSE(file.empty()) << "docs/dem.md has no `<!-- run: " << code << " FILE -->` recipe";
+    std::ofstream(dir / file) << text;
+    // -screen none would crash LIGGGHTS (fix insert/pack prints to the NULL screen).
+    const std::string cmd = "cd " + quote(dir.string()) + " && " + program + " -in " + quote(file) + " -log log." + program +
+                            " -echo none -screen /dev/null >" + program + ".out 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << page << ": " << program << " -in " << file << " failed (" << dir << "/log." << program << ")";
   };
   if (page == "README.md") {
-    liggghts("pour2d.in", dir);
+    recipe("lammps", "lmp");
     fs::copy_file(minimal, dir / "myplugin.c");
   } else if (page == "docs/dem.md") {
-    liggghts("pour3d.in", dir / "post");
+    recipe("lammps", "lmp");
+    if (!testing::Test::IsSkipped() && !testing::Test::HasFatalFailure()) recipe("liggghts", "liggghts");
   } else if (page == "docs/install.md") {
     fs::copy_file(minimal, dir / "myplugin.c");
   } else if (page == "docs/plugins.md") {
@@ -144,6 +184,7 @@ std::string where(const Command& c) { return c.page + ":" + std::to_string(c.lin
 TEST(DocsCommands, EveryCommandBlockIsTaggedAndEverySynopsisNamesRealOptions) {
   const Inventory inv = inventory();
   for (const std::string& p : inv.problems) ADD_FAILURE() << p;
+  for (const std::string& page : pages()) check_recipe_parts(page);
   std::map<Kind, int> count;
   for (const Command& c : inv.commands) {
     ++count[c.kind];

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "render/camera_framing.hpp"
 #include "render/overlays.hpp"
 #include "support/draw_recorder.hpp"
 
@@ -134,6 +135,48 @@ TEST(PeriodicOverlays, AViolationAcrossTheEdgeIsMarkedOnBothSides) {
       EXPECT_TRUE(std::abs(c.centre.x() - 0.05f) < 1e-5f || std::abs(c.centre.x() - 10.05f) < 1e-5f) << c.centre.x();
     }
   EXPECT_EQ(rings, 2);
+}
+
+// A violation gone to across the edge is drawn as the check measures it: each element joined to the
+// other's nearest image (0.7 long), both ringed there, from both sides; never a line across the box
+// nor one stopping at the edge (the half-links left the image unmarked).
+TEST(PeriodicOverlays, AFocusPairAcrossTheEdgeJoinsEachElementToTheOthersNearestImage) {
+  const Rig rig(true);
+  OverlayScene s = rig.scene();
+  s.focus_pair = Pair{0, 1};
+  const Recorder rec = rig.draw(s);
+  const auto marked = rec.lines_of(palette::kViolation);
+  ASSERT_EQ(marked.size(), 2u);
+  std::vector<std::pair<float, float>> ends;
+  for (const auto& l : marked) ends.emplace_back(std::min(l.from.x(), l.to.x()), std::max(l.from.x(), l.to.x()));
+  std::sort(ends.begin(), ends.end());
+  EXPECT_NEAR(ends[0].first, -0.3f, 1e-5f) << "element 1's image left of element 0";
+  EXPECT_NEAR(ends[0].second, 0.4f, 1e-5f);
+  EXPECT_NEAR(ends[1].first, 9.7f, 1e-5f);
+  EXPECT_NEAR(ends[1].second, 10.4f, 1e-5f) << "element 0's image right of element 1";
+  std::vector<float> rings;
+  for (const auto& c : rec.circles)
+    if (c.layer == Layer::Top && c.outline == palette::kSelection) rings.push_back(c.centre.x());
+  std::sort(rings.begin(), rings.end());
+  ASSERT_EQ(rings.size(), 4u);
+  EXPECT_NEAR(rings[0], -0.3f, 1e-5f);
+  EXPECT_NEAR(rings[1], 0.4f, 1e-5f);
+  EXPECT_NEAR(rings[2], 9.7f, 1e-5f);
+  EXPECT_NEAR(rings[3], 10.4f, 1e-5f);
+}
+
+// Home of a frame without elements (every frame of a run still empty): its periodic box, not a
+// metre square at the origin.
+TEST(PeriodicOverlays, AFrameWithoutElementsFitsItsPeriodicBox) {
+  Elements e;
+  e.box.periodic[0] = e.box.periodic[1] = true;
+  e.box.lo[0] = -5;
+  e.box.hi[0] = 95;
+  e.box.lo[1] = 10;
+  e.box.hi[1] = 40;
+  const WorldRect box = elements_box(e, Grid{});
+  EXPECT_EQ(box.min, Eigen::Vector2d(-5, 10));
+  EXPECT_EQ(box.max, Eigen::Vector2d(95, 40));
 }
 
 TEST(PeriodicOverlays, ATrailWrappedAcrossTheBoxDrawsNoSegmentAcrossIt) {
