@@ -1,5 +1,6 @@
 // `nbscope dump`: one detector's integer arrays, as they stand when its lists are complete, as JSON
 // on stdout (formats in io/dump_json.hpp and the README).
+#include <cstdio>
 #include <cerrno>
 #include <cstring>
 #include <iostream>
@@ -69,6 +70,7 @@ int run_dump(Args& args) {
   collector.write(source, std::cout);
   std::cout.flush();
   if (!std::cout) throw Error(std::string("stdout: cannot write: ") + std::strerror(errno));  // `> /dev/full`
+  if (!frame.note.empty()) std::fprintf(stderr, "nbscope: %s\n", frame.note.c_str());
   return 0;
 }
 

@@ -104,6 +104,7 @@ std::string summary_of(const HeadlessOptions& o, const FrameLoop& loop, const Ru
     if (run.ties > 0) s += std::string(run.boundary > 0 ? ", " : "") + plural(run.ties, "exact tie") + " (a contact under --touching inclusive, not strict)";
   }
   if (o.touching == Touching::strict) s += "; touching strict (<)";
+  if (!o.view.units.name.empty()) s += "; " + o.view.units.description();
   if (report.stopped_at) {
     const Violation& v = loop.result().report().violations.front();
     s += "; stopped at the first violation, frame " + std::to_string(*report.stopped_at) + ": " + violation_text(v, loop.source());
@@ -341,6 +342,7 @@ RunReport start_report(const HeadlessOptions& o, const FrameLoop& loop, const st
   RunReport report;
   report.source = o.dump ? "dump" : o.replay ? "recording" : "scene";
   report.touching = o.touching == Touching::strict ? "strict" : "inclusive";
+  report.units = o.view.units;
   report.scene_path = o.replay ? *o.replay : o.scene;
   report.scene_name = loop.source().scene().name;
   report.fault = fault_name(o.fault);

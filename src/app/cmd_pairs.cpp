@@ -88,6 +88,7 @@ int run_pairs(Args& args) {
   if (options.touching == Touching::strict) std::fprintf(stderr, ", touching strict (<)");
   if (elements.box.any()) std::fprintf(stderr, ", periodic");
   std::fputc('\n', stderr);
+  if (!frame.note.empty()) std::fprintf(stderr, "nbscope: %s\n", frame.note.c_str());
   return 0;
 }
 

@@ -11,6 +11,7 @@
 #include "io/csv.hpp"
 #include "io/dump_frames.hpp"
 #include "io/input_source.hpp"
+#include "io/lammps_data.hpp"
 
 namespace nbscope {
 
@@ -115,6 +116,25 @@ std::string timesteps_text(const std::vector<DumpFrameAt>& frames) {
   return s + (n > 8 ? " (" + std::to_string(n) + " frames)" : "");
 }
 
+// The frames of `paths` where some are data files (one frame each): all read whole, ordered by timestep.
+std::vector<DumpFrame> read_frames_and_data(const std::vector<std::string>& paths, const DumpOptions& options) {
+  std::vector<std::string> dumps;
+  std::vector<DumpFrame> frames;
+  for (const std::string& p : paths) {
+    if (is_data_file(p)) frames.push_back(read_lammps_data(p, options));
+    else dumps.push_back(p);
+  }
+  if (!dumps.empty())
+    for (DumpFrame& f : read_dump_frames(dumps, options)) frames.push_back(std::move(f));
+  std::stable_sort(frames.begin(), frames.end(), [](const DumpFrame& a, const DumpFrame& b) { return a.timestep < b.timestep; });
+  for (std::size_t k = 1; k < frames.size(); ++k)
+    if (frames[k].timestep == frames[k - 1].timestep)
+      throw Error(frames[k].where + ": timestep " + std::to_string(frames[k].timestep) + " is also in " + frames[k - 1].where +
+                  " (two files of one timestep)");
+  if (static_cast<std::int64_t>(frames.size()) > options.max_frames) frames.resize(static_cast<std::size_t>(options.max_frames));
+  return frames;
+}
+
 }  // namespace
 
 DumpFlags take_dump_flags(Args& args) {
@@ -126,6 +146,8 @@ DumpFlags take_dump_flags(Args& args) {
   f.options.tolerance = args.number("--tolerance");
   if (const auto p = args.value("--periodic")) f.options.periodic = parse_periodic(*p);
   if (const auto b = args.value("--box")) f.box = parse_box(*b);
+  f.units = args.value("--units");  // one of its row's choices
+  f.log = args.value("--log");
   return f;
 }
 
@@ -161,13 +183,15 @@ std::unique_ptr<RecordedFrames> read_dump_recording(const DumpFlags& flags, std:
       return std::filesystem::is_regular_file(p, ec);
     });
   };
-  const bool files = regular(paths) && regular(contact_paths);
+  // A data file is one frame, read whole; so is every dump beside it then.
+  const bool data = std::any_of(paths.begin(), paths.end(), [](const std::string& p) { return is_data_file(p); });
+  const bool files = regular(paths) && regular(contact_paths) && !data;
   std::vector<DumpFrame> whole;
   std::vector<DumpContacts> whole_contacts;
   if (files) {
     f.frames = index_dump_frames(paths, f.options);
   } else {
-    whole = read_dump_frames(paths, f.options);
+    whole = data ? read_frames_and_data(paths, f.options) : read_dump_frames(paths, f.options);
     for (const DumpFrame& d : whole) f.frames.push_back(DumpFrameAt{d.timestep, d.time, d.elements.size(), 0, 0, 0, d.where});
   }
   const bool cut = static_cast<std::int64_t>(f.frames.size()) > max_frames;
@@ -202,6 +226,12 @@ std::unique_ptr<RecordedFrames> read_dump_recording(const DumpFlags& flags, std:
 }
 
 DumpFrame read_dump_input(const std::string& path, const DumpFlags& flags) {
+  if (is_data_file(path)) {
+    DumpFrame f = read_lammps_data(path, flags.options);
+    if (flags.timestep && *flags.timestep != f.timestep)
+      throw Error(path + ": a data file of timestep " + std::to_string(f.timestep) + ", not " + std::to_string(*flags.timestep));
+    return f;
+  }
   // A seek: only the chosen frame is parsed (a big dump's other frames are counted, not held).
   DumpSeek seek = seek_dump_frame(path, flags.timestep, flags.options);
   if (seek.frames == 0) throw Error(path + ": no frames");
@@ -231,9 +261,13 @@ void apply_periodic_flags(const DumpFlags& flags, Elements& elements) {
 
 InputFrame read_input_frame(const std::string& path, const DumpFlags& flags) {
   InputFrame in;
-  if (is_dump_file(path)) {
+  if (is_dump_file(path) || is_data_file(path)) {
     if (flags.box) throw Error("--box: " + path + " is a dump: its box is its BOX BOUNDS (--periodic x,y[,z] makes axes periodic)");
     DumpFrame f = read_dump_input(path, flags);
+    if (!flags.options.force_2d && is_planar(f)) {
+      make_planar(f);
+      in.note = planar_note(path);
+    }
     in.elements = std::move(f.elements);
     in.ids = f.ids;
     in.precision = f.precision;
@@ -251,7 +285,7 @@ InputFrame read_input_frame(const std::string& path, const DumpFlags& flags) {
 }
 
 std::unique_ptr<RecordedFrames> read_input_recording(const std::string& path, const DumpFlags& flags, std::int64_t max_frames) {
-  if (is_dump_file(path)) {
+  if (is_dump_file(path) || is_data_file(path)) {
     if (flags.box) throw Error("--box: " + path + " is a dump: its box is its BOX BOUNDS (--periodic x,y[,z] makes axes periodic)");
     DumpFlags every = flags;
     every.dumps = {path};  // every frame of it, without contacts
@@ -281,6 +315,12 @@ const std::vector<OptionSpec>& dump_input_options() {
        number_value(0, std::numeric_limits<double>::infinity(), "must be 0 or more (a length)")},
       {"--periodic", "x,y[,z]", "a dump's pp axes", "these axes periodic: contacts by the minimum image (nbs and brute)"},
       {"--box", "XLO:XHI,YLO:YHI[,ZLO:ZHI]", "a dump's BOX BOUNDS", "the periodic box of elements from a CSV file (with --periodic)"},
+      {"--units", "lj|real|metal|si|cgs|micro|nano", "a data file's `units =`, else --log's, else m and s",
+       "the run's LAMMPS units: every length and time printed and shown is in them (lj: sigma and tau; real: Angstrom "
+       "and fs; metal: Angstrom and ps; si: m and s; cgs: cm and s; micro: micrometre and microsecond; nano: nm and ns)",
+       choice_value({"lj", "real", "metal", "si", "cgs", "micro", "nano"})},
+      {"--log", "log.lammps", "", "the run's LAMMPS log: its `units` command (when --units is not given) and its `timestep` "
+                                  "(when --dt is not given)"},
   };
   return options;
 }

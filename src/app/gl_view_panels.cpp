@@ -20,6 +20,7 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
   sim.algorithm = loop.pipeline().algorithm();
   sim.error = session.error;
   sim.touching = loop.pipeline().touching();
+  sim.units = choices_.units;
   sim.threads = loop.pipeline().threads();
   sim.paused = session.paused;
   sim.time_step = loop.source().scene().time_step;

@@ -428,6 +428,39 @@ DumpSeek seek_dump_frame(const std::string& path, std::optional<std::int64_t> ti
   return CustomReader(text, options).seek(timestep);
 }
 
+DumpFrame first_dump_frame(const std::string& path, const DumpOptions& options) {
+  DumpText text(path);
+  CustomReader reader(text, options);
+  std::optional<DumpFrame> last;
+  for (int k = 0; k < 16 && (!last || last->elements.size() == 0); ++k) {  // LIGGGHTS's frame 0 may be empty
+    if (last && text.bytes_left() == 0) break;
+    try {
+      last = reader.next_frame();
+    } catch (const Error&) {
+      if (!last) throw;
+      break;  // the end of the file: the frames before are what it holds
+    }
+  }
+  return std::move(*last);
+}
+
+bool is_planar(const DumpFrame& frame) {
+  const Elements& e = frame.elements;
+  if (e.dim != 3 || (e.size() > 0 && (e.z != 0).any())) return false;
+  const double lo = frame.box.lo[2], hi = frame.box.hi[2];
+  if (lo == -0.5 && hi == 0.5) return true;
+  return e.size() > 0 && hi - lo < 4 * e.r.maxCoeff();
+}
+
+void make_planar(DumpFrame& frame) {
+  Elements& e = frame.elements;
+  if (e.dim != 3) return;
+  e.dim = 2;
+  e.z.resize(0);
+  e.box.periodic[2] = false;
+  e.box.lo[2] = e.box.hi[2] = 0;
+}
+
 DumpSeek seek_dump_frame_in(const std::string& text, const std::string& where, std::optional<std::int64_t> timestep,
                             const DumpOptions& options) {
   DumpText lines(text, where);

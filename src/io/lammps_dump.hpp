@@ -57,6 +57,15 @@ struct DumpFrame {
   std::string where;                 // "<path>:<line>" of its ITEM: TIMESTEP, for messages
 };
 
+// True when a 3D frame is a `dimension 2` run's: every z exactly 0, and a thin z box (LAMMPS's 2D
+// -0.5..0.5, or thinner than two of its largest diameters: no second layer fits).
+bool is_planar(const DumpFrame& frame);
+// `frame` made 2D, as --2d reads it: z and its periodicity dropped.
+void make_planar(DumpFrame& frame);
+// The first frame with atoms of the `dump custom` file `path` (else its last, or Error when it has
+// none), parsed as read_dump_frames parses it: what a run looks like, without reading it all.
+DumpFrame first_dump_frame(const std::string& path, const DumpOptions& options);
+
 // Which two columns of a `dump local` file hold a contact's ids.
 struct ContactColumns {
   std::optional<std::array<int, 2>> numbers;          // --contact-ids 7,8: 1-based column numbers

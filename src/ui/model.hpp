@@ -19,6 +19,7 @@
 
 #include "check/frame_result.hpp"
 #include "check/report.hpp"
+#include "check/units.hpp"
 #include "core/elements.hpp"
 #include "core/frame_trace.hpp"
 #include "core/grid.hpp"
@@ -85,6 +86,7 @@ struct SimView {
   std::string algorithm;
   std::string error;  // the last failed request (bad scene file, ...), shown in red
   Touching touching = Touching::inclusive;  // the contact convention (--touching), shown in Stats
+  Units units;  // the run's units (--units, a data file's, a LAMMPS log's): every length and time shown is in them
   int threads = 1;  // threads a detection may use (--threads): the Scaling panel compares 1 and this
 
   bool paused = false;
