@@ -308,7 +308,8 @@ const std::vector<OptionSpec>& dump_input_options() {
       {"--radius", "R", "", "every atom's radius, for a dump without a radius or diameter column",
        number_value(kMinRadius, kMaxRadius, "must be positive and finite")},
       {"--type-radius", "T:R,...", "", "radii by atom type, for a dump without a radius or diameter column (1:0.0015,2:0.00225)"},
-      {"--2d", "", "2D when the dump has no z column", "read a dump as 2D: z dropped (LIGGGHTS's dimension 2 writes z = 0)",
+      {"--2d", "", "2D without a z column, or with every z 0 in a thin z box (a `dimension 2` run: a note says so)",
+       "read a dump as 2D: z dropped (LAMMPS's and LIGGGHTS's dimension 2 write z = 0)",
        flag_value()},
       {"--tolerance", "L", "half a unit of the last printed digit", "the precision band of a dump's contacts: a disagreement whose "
                                                                    "gap is within L is at the boundary, not a violation",

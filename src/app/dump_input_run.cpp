@@ -106,6 +106,7 @@ std::string settle_planar(DumpFlags& flags, const std::vector<std::string>& inpu
   const std::vector<std::string> files = files_of(inputs);
   if (files.empty() || !regular_file(files.front())) return "";
   const std::string& path = files.front();
+  if (!is_dump_file(path) && !is_data_file(path)) return "";  // ELEMENTS.csv: its dimension is its columns'
   DumpFrame probe = is_data_file(path) ? read_lammps_data(path, flags.options) : first_dump_frame(path, flags.options);
   if (!is_planar(probe)) return "";
   flags.options.force_2d = true;
