@@ -33,7 +33,7 @@ int run_dump(Args& args) {
   if (format != "json") throw Error("dump: --format: '" + format + "' is not a known format (json)");
 
   auto detector = make_detector(*algorithm);  // before reading: a bad name fails fast
-  (void)settle_units(dump_flags, {*input});  // the arrays hold no lengths, but a bad --log is refused
+  (void)settle_units_and_log(dump_flags, {*input});  // the arrays hold no lengths, but a bad --log is refused
   const InputFrame frame = read_input_frame(*input, dump_flags);
   const Elements& elements = frame.elements;
   if (!detector->supports_dim(elements.dim))

@@ -39,7 +39,7 @@ int run_pairs(Args& args) {
   auto detector = make_detector(algorithm);  // before reading: a bad name fails fast
   if (output) check_output_path(*output);    // and a bad output path before any detection
   if (output) check_outputs_distinct({{"--input", *input}}, {{"--output", *output}});
-  (void)settle_units(dump_flags, {*input});  // nothing printed here is a length, but a bad --log is refused
+  (void)settle_units_and_log(dump_flags, {*input});  // nothing printed here is a length, but a bad --log is refused
   const InputFrame frame = read_input_frame(*input, dump_flags);
   const Elements& elements = frame.elements;
   if (!detector->supports_dim(elements.dim))

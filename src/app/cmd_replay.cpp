@@ -66,10 +66,10 @@ int run_replay(Args& args) {
   // What the run's files say of it: its units, and a `dimension 2` run read as 2D.
   std::string planar;
   if (o.dump) {
-    o.view.units = settle_units(*o.dump, o.dump->dumps);
+    o.view.units = settle_units_and_log(*o.dump, o.dump->dumps);
     planar = settle_planar(*o.dump, o.dump->dumps);
   } else {
-    o.view.units = settle_units(dump, {});
+    o.view.units = settle_units_and_log(dump, {});
   }
   if (o.fault == Fault::DropBox2dContact)
     throw Error(std::string("--inject-fault ") + fault_name(o.fault) +

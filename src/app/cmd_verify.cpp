@@ -79,7 +79,7 @@ std::vector<verify::GivenPair> given_from_contacts(const DumpFrame& frame, const
 
 int verify_pairs(const std::string& input, const std::string& pairs_path, const GridFlags& flags, int base,
                  std::int64_t brute_limit, DumpFlags dump, Touching touching, int threads) {
-  const Units units = settle_units(dump, {input});
+  const Units units = settle_units_and_log(dump, {input});
   const InputFrame frame = read_input_frame(input, dump);
   const Elements& e = frame.elements;
   std::vector<verify::GivenPair> given;

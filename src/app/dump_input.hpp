@@ -42,8 +42,10 @@ bool is_data_file(const std::string& path);
 
 // The units of a run from the files `inputs` (paths or globs): --units, else a data file's header
 // (`units = lj`), else the `units` command of --log's LAMMPS log; nbscope's own (m, s) when none says.
-// Sets flags.dt from the log's `timestep` when --dt is not given. Error for a units name nbscope does not know.
-Units settle_units(DumpFlags& flags, const std::vector<std::string>& inputs);
+// From the log also: flags.dt from its `timestep` when --dt is not given, and, for a data file among
+// `inputs` (which has no boundary flags), --periodic from its `boundary` when --periodic is not given.
+// Error for a units name nbscope does not know, or a log that cannot be read.
+Units settle_units_and_log(DumpFlags& flags, const std::vector<std::string>& inputs);
 // A `dimension 2` run read as 2D without --2d: when the first frame with atoms of `inputs` has every
 // z exactly 0 in a thin z box (io/lammps_dump.hpp: is_planar), sets --2d and returns the one-line
 // note that says so; "" otherwise (and for --2d given, or a pipe, which cannot be read twice).

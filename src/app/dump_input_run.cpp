@@ -1,5 +1,7 @@
 // What a dump run is, found in its files before it is read: a data file among them, its units (the
 // data file's header, or LAMMPS's log), and whether it is a `dimension 2` run (app/dump_input.hpp).
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -32,10 +34,11 @@ bool regular_file(const std::string& path) {
   return std::filesystem::is_regular_file(path, ec);
 }
 
-// The `units` and `timestep` commands of a LAMMPS log (the last of each before the first `run`).
+// The `units`, `timestep` and `boundary` commands of a LAMMPS log (the last of each before the first `run`).
 struct LogFacts {
   std::string units;
   std::optional<double> timestep;
+  std::optional<std::array<bool, 3>> periodic;  // `boundary p f p`: the axes whose first word is p
 };
 
 LogFacts read_log(const std::string& path) {
@@ -57,6 +60,13 @@ LogFacts read_log(const std::string& path) {
       } catch (const std::logic_error&) {
         // `timestep ${dt}`: a variable; --dt gives it
       }
+    } else if (command == "boundary") {
+      std::array<bool, 3> axes{value == "p", false, false};
+      std::string y, z;
+      words >> y >> z;
+      axes[1] = y == "p";
+      axes[2] = z == "p";
+      facts.periodic = axes;
     } else if (command == "run") {
       break;  // the frames' settings are those of the first run
     }
@@ -76,15 +86,18 @@ bool is_data_file(const std::string& path) {
   return head.rfind("ITEM:", 0) != 0 && looks_like_lammps_data(head);
 }
 
-Units settle_units(DumpFlags& flags, const std::vector<std::string>& inputs) {
+Units settle_units_and_log(DumpFlags& flags, const std::vector<std::string>& inputs) {
   std::optional<LogFacts> log;
   if (flags.log) {
     log = read_log(*flags.log);
     if (!flags.dt && log->timestep) flags.dt = log->timestep;
   }
   std::string name = flags.units.value_or("");
+  const std::vector<std::string> files = files_of(inputs);
+  if (log && log->periodic && !flags.options.periodic && std::any_of(files.begin(), files.end(), is_data_file))
+    flags.options.periodic = log->periodic;
   if (name.empty())
-    for (const std::string& p : files_of(inputs)) {
+    for (const std::string& p : files) {
       if (!is_data_file(p)) continue;
       const std::string units = lammps_data_units(peek_input(p, 4096, "input file"));
       if (!units.empty()) {

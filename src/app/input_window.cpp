@@ -35,7 +35,7 @@ int run_input_gui(Args& args) {
   if (o.fault == Fault::DropBox2dContact)
     throw Error(std::string("--inject-fault ") + fault_name(o.fault) + ": --input's frames have no Box2D contact list");
   if (o.view.screenshot) check_output_path(*o.view.screenshot);
-  o.view.units = settle_units(dump, {*input});
+  o.view.units = settle_units_and_log(dump, {*input});
   const std::string planar = settle_planar(dump, {*input});
   o.input = std::move(dump);
   if (replay_window_available()) {

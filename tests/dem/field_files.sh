@@ -10,7 +10,8 @@
 # 2. its data file (write_data) as --input and --dump: the contacts of its timestep verified right,
 #    the same pairs as `pairs` gives, one frame of 240 atoms;
 # 3. its units: with --log log.lammps the report and the JSON say lj (sigma, tau), --units wins, a wrong
-#    --units is one error line; verify of a contact list with one contact deleted names the gap in sigma.
+#    --units is one error line; verify of a contact list with one contact deleted names the gap in sigma;
+#    the log's `boundary` makes a data file's axes periodic.
 # Exit 77 (CTest's skip) when lmp is missing, unless CI=true: CI must run it, so there it fails.
 set -euo pipefail
 
@@ -75,4 +76,11 @@ awk 'NR == 4 { $0 = $0 - 1 } NR != 10' contacts.5000.dump >removed.dump
 expect 1 verify_units.txt "$nbscope" verify --input pour2d.data --pairs removed.dump --touching strict --log log.lammps
 holds verify_units.txt "(units lj (lengths in sigma, times in tau))"
 grep -q '^missing .* distance - radii = -[0-9.e-]* sigma (in contact)$' verify_units.txt || fail "verify names no gap in sigma"
+# A data file has no boundary flags: the log's `boundary p f p` makes x periodic, so two atoms either
+# side of x = 0..20 (no image flags) touch across it; without the log they do not.
+printf 'LAMMPS data file via write_data, version 29 Sep 2021, timestep = 0\n\n2 atoms\n1 atom types\n\n0 20 xlo xhi\n0 30 ylo yhi\n-0.5 0.5 zlo zhi\n\nAtoms # sphere\n\n1 1 1 1 0.2 5 0 0 0 0\n2 1 1 1 19.7 5 0 0 0 0\n' >edge.data
+expect 0 edge_log.txt "$nbscope" pairs --input edge.data --log log.lammps --output edge_log.csv
+[ "$(sed -n 2p edge_log.csv)" = "1,2" ] || fail "with the log's boundary, atoms 1 and 2 do not touch across x"
+expect 0 edge_alone.txt "$nbscope" pairs --input edge.data --output edge_alone.csv
+[ "$(wc -l <edge_alone.csv)" -eq 1 ] || fail "without a log, a data file's x is periodic"
 echo "--- field files: passed"
