@@ -72,5 +72,16 @@ TEST(PanelsInUnits, ALjRunShowsLengthsInSigmaAndTimesInTau) {
   EXPECT_NE(panel_text(host, f, "Controls").find("t = 0.700 s"), std::string::npos);
 }
 
+// A pair at the boundary of the data's precision gives its gap in the run's units (a bare number without).
+TEST(PanelsInUnits, ABoundaryPairsGapCarriesItsUnit) {
+  const std::vector<std::int64_t> ids{7, 9};
+  const BoundaryPair b{Pair{0, 1}, -3.1e-08, 8.7e-08, false, true};
+  const Units lj = *units_named("lj");
+  EXPECT_EQ(boundary_line(b, false, &ids, &lj),
+            "atoms (7, 9): at the boundary, within the data's precision (gap -3.1e-08 sigma, resolution 8.7e-08 sigma) (R has it, A not)");
+  EXPECT_EQ(boundary_line(b, false, &ids),
+            "atoms (7, 9): at the boundary, within the data's precision (gap -3.1e-08, resolution 8.7e-08) (R has it, A not)");
+}
+
 }  // namespace
 }  // namespace nbscope::ui
