@@ -136,6 +136,25 @@ TEST(LammpsData, ADimension2FileIsPlanar) {
   EXPECT_FALSE(is_planar(parse_lammps_data("t\n\n2 atoms\n0 5 xlo xhi\n0 5 ylo yhi\n-5 5 zlo zhi\n" + atoms, "d.data", {})));
 }
 
+// Every prefix of a data file, and every byte of it replaced by a hostile one, is a frame or one Error: never a crash.
+TEST(LammpsData, CutAndCorruptedFilesAreAFrameOrAnError) {
+  const std::string whole = kSphere;
+  const auto parses_or_refuses = [](const std::string& text) {
+    try {
+      (void)parse_lammps_data(text, "d.data", {});
+    } catch (const Error&) {
+      // refused, in one line
+    }
+  };
+  for (std::size_t n = 0; n <= whole.size(); ++n) parses_or_refuses(whole.substr(0, n));
+  for (std::size_t k = 0; k < whole.size(); ++k)
+    for (const char c : {'#', '9', '-', 'e', ' ', '\n', 'A', '\0'}) {
+      std::string bad = whole;
+      bad[k] = c;
+      parses_or_refuses(bad);
+    }
+}
+
 // ---- files written by LAMMPS itself ----
 
 // `write_data` and a `dump custom` (%.17g, sorted by id) of the same step: the data file's frame has
