@@ -120,8 +120,9 @@ std::string settle_planar(DumpFlags& flags, const std::vector<std::string>& inpu
   if (files.empty() || !regular_file(files.front())) return "";
   const std::string& path = files.front();
   if (!is_dump_file(path) && !is_data_file(path)) return "";  // ELEMENTS.csv: its dimension is its columns'
-  DumpFrame probe = is_data_file(path) ? read_lammps_data(path, flags.options) : first_dump_frame(path, flags.options);
-  if (!is_planar(probe)) return "";
+  const std::optional<DumpFrame> probe =
+      is_data_file(path) ? read_lammps_data(path, flags.options) : first_z_periodic_frame(path, flags.options);
+  if (!probe || !is_planar(*probe)) return "";
   flags.options.force_2d = true;
   return planar_note(path);
 }

@@ -130,6 +130,24 @@ class CustomReader {
     return f;
   }
 
+  // The frame whose items come next, its rows parsed when `wanted` holds for its box, else skipped
+  // (none returned); Error when the text has none.
+  template <class Wanted>
+  std::optional<DumpFrame> next_frame_if(Wanted wanted) {
+    Header header;
+    std::string_view names;
+    any_ = true;
+    if (!next_header(header, names)) throw Error(text_.at() + "no frame here");
+    DumpFrame f = begin_frame(header);
+    const Layout lay = layout_of(names, text_.at(), options_);
+    if (!wanted(f.box)) {
+      skip_rows(header, f);
+      return std::nullopt;
+    }
+    parse_rows(header, lay, f, nullptr);
+    return f;
+  }
+
   // The frame of `timestep` (none: the first) parsed, every other one's rows counted only; stops
   // after the frame of `timestep`.
   DumpSeek seek(std::optional<std::int64_t> timestep) {
@@ -428,20 +446,23 @@ DumpSeek seek_dump_frame(const std::string& path, std::optional<std::int64_t> ti
   return CustomReader(text, options).seek(timestep);
 }
 
-DumpFrame first_dump_frame(const std::string& path, const DumpOptions& options) {
+std::optional<DumpFrame> first_z_periodic_frame(const std::string& path, const DumpOptions& options) {
   DumpText text(path);
   CustomReader reader(text, options);
   std::optional<DumpFrame> last;
   for (int k = 0; k < 16 && (!last || last->elements.size() == 0); ++k) {  // LIGGGHTS's frame 0 may be empty
     if (last && text.bytes_left() == 0) break;
+    std::optional<DumpFrame> next;
     try {
-      last = reader.next_frame();
+      next = reader.next_frame_if([](const DumpBox& box) { return box.flags[2] == "pp"; });
     } catch (const Error&) {
       if (!last) throw;
       break;  // the end of the file: the frames before are what it holds
     }
+    if (!next) return std::nullopt;  // z is not periodic: no `dimension 2` run
+    last = std::move(next);
   }
-  return std::move(*last);
+  return last;
 }
 
 bool is_planar(const DumpFrame& frame) {

@@ -62,9 +62,10 @@ struct DumpFrame {
 bool is_planar(const DumpFrame& frame);
 // `frame` made 2D, as --2d reads it: z and its periodicity dropped.
 void make_planar(DumpFrame& frame);
-// The first frame with atoms of the `dump custom` file `path` (else its last, or Error when it has
-// none), parsed as read_dump_frames parses it: what a run looks like, without reading it all.
-DumpFrame first_dump_frame(const std::string& path, const DumpOptions& options);
+// The first frame with atoms of the `dump custom` file `path` (else its last; Error when it has none),
+// parsed as read_dump_frames parses it, when its BOX BOUNDS flag z periodic (`pp`), as a `dimension 2`
+// run's must; none otherwise, its rows not parsed. What a run looks like, without reading it all.
+std::optional<DumpFrame> first_z_periodic_frame(const std::string& path, const DumpOptions& options);
 
 // Which two columns of a `dump local` file hold a contact's ids.
 struct ContactColumns {

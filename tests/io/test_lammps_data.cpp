@@ -136,6 +136,25 @@ TEST(LammpsData, ADimension2FileIsPlanar) {
   EXPECT_FALSE(is_planar(parse_lammps_data("t\n\n2 atoms\n0 5 xlo xhi\n0 5 ylo yhi\n-5 5 zlo zhi\n" + atoms, "d.data", {})));
 }
 
+// A run's look: its first frame with atoms when z is periodic (LIGGGHTS's empty frame 0 passed over),
+// none when it is not (its rows not parsed: a bad number there is not seen).
+TEST(LammpsData, TheFirstZPeriodicFrameWithAtomsShowsA2dRun) {
+  const auto dir = testlammps::fresh_dir("probe");
+  const auto frame = [](int step, const char* flags, const std::string& rows, int n) {
+    return "ITEM: TIMESTEP\n" + std::to_string(step) + "\nITEM: NUMBER OF ATOMS\n" + std::to_string(n) + "\nITEM: BOX BOUNDS " + flags +
+           "\n0 10\n0 10\n-0.5 0.5\nITEM: ATOMS id type x y z radius\n" + rows;
+  };
+  const std::string rows = "1 1 1 1 0 0.5\n2 1 1.9 1 0 0.5\n";
+  std::ofstream(dir / "flat.dump") << frame(0, "pp ff pp", "", 0) << frame(100, "pp ff pp", rows, 2);
+  const std::optional<DumpFrame> f = first_z_periodic_frame((dir / "flat.dump").string(), {});
+  ASSERT_TRUE(f.has_value());
+  EXPECT_EQ(f->timestep, 100);
+  EXPECT_TRUE(is_planar(*f));
+  std::ofstream(dir / "deep.dump") << frame(0, "pp ff ff", "1 1 1 1 x 0.5\n", 1);
+  EXPECT_FALSE(first_z_periodic_frame((dir / "deep.dump").string(), {}).has_value());
+  std::filesystem::remove_all(dir);
+}
+
 // Every prefix of a data file, and every byte of it replaced by a hostile one, is a frame or one Error: never a crash.
 TEST(LammpsData, CutAndCorruptedFilesAreAFrameOrAnError) {
   const std::string whole = kSphere;
