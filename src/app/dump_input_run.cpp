@@ -107,7 +107,12 @@ Units settle_units_and_log(DumpFlags& flags, const std::vector<std::string>& inp
       }
     }
   if (name.empty() && log) name = log->units;
-  return name.empty() ? Units{} : *units_named(name);
+  if (name.empty()) return Units{};
+  Units units = *units_named(name);
+  // Without a dt (--dt, the log's) or ITEM: TIME, a frame's time is its timestep: say so, not tau.
+  const auto has_time = [](const std::string& p) { return regular_file(p) && is_dump_file(p) && dump_has_time(p); };
+  if (!flags.dt && !files.empty() && !has_time(files.front())) units.time = "steps";
+  return units;
 }
 
 std::string planar_note(const std::string& path) {

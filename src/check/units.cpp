@@ -26,7 +26,11 @@ std::string Units::length_text(double value, const char* format) const { return 
 std::string Units::time_text(double value, const char* format) const { return with_unit(value, format, time); }
 
 std::string Units::description() const {
-  return name.empty() ? "" : "units " + name + " (lengths in " + length + ", times in " + time + ")";
+  if (name.empty()) return "";
+  const std::optional<Units> own = units_named(name);
+  if (own && own->time != time)  // the frames' times are timesteps
+    return "units " + name + " (lengths in " + length + "; times in " + time + ": --dt or --log gives them in " + own->time + ")";
+  return "units " + name + " (lengths in " + length + ", times in " + time + ")";
 }
 
 std::optional<Units> units_named(std::string_view name) {

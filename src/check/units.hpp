@@ -12,7 +12,7 @@ namespace nbscope {
 struct Units {
   std::string name;          // "lj", "real", ...; "" for nbscope's own (m, s)
   std::string length = "m";  // "sigma", "Angstrom", ...
-  std::string time = "s";    // "tau", "fs", ...
+  std::string time = "s";    // "tau", "fs", ...; "steps" for a run whose times are its timesteps (no dt known)
 
   // "1.5 sigma": `value` printed with `format` (a printf format of one double), then the length unit.
   [[nodiscard]] std::string length_text(double value, const char* format = "%.3g") const;

@@ -465,6 +465,17 @@ std::optional<DumpFrame> first_z_periodic_frame(const std::string& path, const D
   return last;
 }
 
+bool dump_has_time(const std::string& path) {
+  DumpText text(path);
+  std::string_view line;
+  while (text.next(line)) {
+    const std::string_view item = dump::item_of(line);
+    if (item == "TIME") return true;
+    if (item.data() != nullptr && item.rfind("ATOMS", 0) == 0) return false;
+  }
+  return false;
+}
+
 bool is_planar(const DumpFrame& frame) {
   const Elements& e = frame.elements;
   if (e.dim != 3 || (e.size() > 0 && (e.z != 0).any())) return false;

@@ -69,6 +69,8 @@ assert u == {"name": "lj", "length": "sigma", "time": "tau"}, u
 PY
 expect 0 units_flag.txt "$nbscope" replay --headless --dump 'atoms.*.dump' --log log.lammps --units real
 holds units_flag.txt "units real (lengths in Angstrom, times in fs)"
+expect 0 units_steps.txt "$nbscope" replay --headless --dump 'atoms.*.dump' --units lj
+holds units_steps.txt "units lj (lengths in sigma; times in steps: --dt or --log gives them in tau)"
 expect 2 units_bad.txt "$nbscope" replay --headless --dump 'atoms.*.dump' --units furlong
 [ "$(wc -l <units_bad.txt)" -eq 1 ] || fail "a bad --units is not one line"
 holds units_bad.txt "nbscope: error: --units"
