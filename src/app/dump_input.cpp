@@ -329,8 +329,8 @@ const std::vector<OptionSpec>& dump_input_options() {
 const std::vector<OptionSpec>& dump_replay_options() {
   static const std::vector<OptionSpec> options = [] {
     std::vector<OptionSpec> o = {
-        {"--dump", "FILES", "", "LAMMPS/LIGGGHTS dump custom frames (id, x y [z], radius ...): a file or a quoted glob, .gz too; "
-                                "repeatable; frames ordered by timestep", repeated_value()},
+        {"--dump", "FILES", "", "LAMMPS/LIGGGHTS dump custom frames (id, x y [z], radius ...): a file or a quoted glob, .gz too, "
+                                "or a LAMMPS data file (one frame); repeatable; frames ordered by timestep", repeated_value()},
         {"--contacts", "FILES", "", "the code's contact list, dump local (LIGGGHTS compute pair/gran/local pos id): the recorded pairs",
          repeated_value()},
         {"--dt", "S", "", "seconds per timestep: a frame's time is S x timestep (ITEM: TIME wins; neither: the timestep)",
