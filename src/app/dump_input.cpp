@@ -316,7 +316,7 @@ const std::vector<OptionSpec>& dump_input_options() {
        number_value(0, std::numeric_limits<double>::infinity(), "must be 0 or more (a length)")},
       {"--periodic", "x,y[,z]", "a dump's pp axes", "these axes periodic: contacts by the minimum image (nbs and brute)"},
       {"--box", "XLO:XHI,YLO:YHI[,ZLO:ZHI]", "a dump's BOX BOUNDS", "the periodic box of elements from a CSV file (with --periodic)"},
-      {"--units", "lj|real|metal|si|cgs|micro|nano", "a data file's `units =`, else --log's, else m and s",
+      {"--units", "lj|real|metal|si|cgs|micro|nano", "a dump's ITEM: UNITS, a data file's `units =`, else --log's, else m and s",
        "the run's LAMMPS units: every length and time printed and shown is in them (lj: sigma and tau; real: Angstrom "
        "and fs; metal: Angstrom and ps; si: m and s; cgs: cm and s; micro: micrometre and microsecond; nano: nm and ns)",
        choice_value({"lj", "real", "metal", "si", "cgs", "micro", "nano"})},

@@ -40,8 +40,10 @@ bool is_dump_file(const std::string& path);
 // True when `path` is a LAMMPS data file (write_data's; io/lammps_data.hpp): one frame, read as a dump's.
 bool is_data_file(const std::string& path);
 
-// The units of a run from the files `inputs` (paths or globs): --units, else a data file's header
-// (`units = lj`), else the `units` command of --log's LAMMPS log; nbscope's own (m, s) when none says.
+// The units of a run from the files `inputs` (paths or globs): --units, else the first dump's ITEM:
+// UNITS, else a data file's header (`units = lj`), else the `units` command of --log's LAMMPS log;
+// nbscope's own (m, s) when none says. A run without a dt (--dt, the log's) or ITEM: TIME gets its
+// times in "steps" (its frames' times are their timesteps).
 // From the log also: flags.dt from its `timestep` when --dt is not given, and, for a data file among
 // `inputs` (which has no boundary flags), --periodic from its `boundary` when --periodic is not given.
 // Error for a units name nbscope does not know, or a log that cannot be read.

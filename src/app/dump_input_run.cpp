@@ -51,7 +51,8 @@ LogFacts read_log(const std::string& path) {
     std::string command, value;
     if (!(words >> command >> value)) continue;
     if (command == "units") {
-      if (!units_named(value)) throw Error(path + ":" + std::to_string(n) + ": units '" + excerpt(value) + "': nbscope knows lj, real, metal, si, cgs, electron, micro and nano");
+      if (!units_named(value))
+        throw Error(path + ":" + std::to_string(n) + ": units '" + excerpt(value) + "': nbscope knows lj, real, metal, si, cgs, electron, micro and nano");
       facts.units = value;
     } else if (command == "timestep") {
       try {
@@ -92,17 +93,25 @@ Units settle_units_and_log(DumpFlags& flags, const std::vector<std::string>& inp
     log = read_log(*flags.log);
     if (!flags.dt && log->timestep) flags.dt = log->timestep;
   }
-  std::string name = flags.units.value_or("");
   const std::vector<std::string> files = files_of(inputs);
   if (log && log->periodic && !flags.options.periodic && std::any_of(files.begin(), files.end(), is_data_file))
     flags.options.periodic = log->periodic;
+  // The first dump's head: its ITEM: UNITS and whether its frames carry ITEM: TIME.
+  const bool dump = !files.empty() && regular_file(files.front()) && is_dump_file(files.front());
+  const DumpHead head = dump ? read_dump_head(files.front()) : DumpHead{};
+  std::string name = flags.units.value_or("");
+  const auto known = [](const std::string& units, const std::string& where) {
+    if (!units_named(units))
+      throw Error(where + ": units '" + excerpt(units) + "': nbscope knows lj, real, metal, si, cgs, electron, micro and nano (--units names them)");
+    return units;
+  };
+  if (name.empty() && !head.units.empty()) name = known(head.units, files.front());
   if (name.empty())
     for (const std::string& p : files) {
       if (!is_data_file(p)) continue;
       const std::string units = lammps_data_units(peek_input(p, 4096, "input file"));
       if (!units.empty()) {
-        if (!units_named(units)) throw Error(p + ":1: units '" + excerpt(units) + "': nbscope knows lj, real, metal, si, cgs, electron, micro and nano (--units names them)");
-        name = units;
+        name = known(units, p + ":1");
         break;
       }
     }
@@ -110,8 +119,7 @@ Units settle_units_and_log(DumpFlags& flags, const std::vector<std::string>& inp
   if (name.empty()) return Units{};
   Units units = *units_named(name);
   // Without a dt (--dt, the log's) or ITEM: TIME, a frame's time is its timestep: say so, not tau.
-  const auto has_time = [](const std::string& p) { return regular_file(p) && is_dump_file(p) && dump_has_time(p); };
-  if (!flags.dt && !files.empty() && !has_time(files.front())) units.time = "steps";
+  if (!flags.dt && !files.empty() && !head.has_time) units.time = "steps";
   return units;
 }
 

@@ -465,15 +465,20 @@ std::optional<DumpFrame> first_z_periodic_frame(const std::string& path, const D
   return last;
 }
 
-bool dump_has_time(const std::string& path) {
+DumpHead read_dump_head(const std::string& path) {
   DumpText text(path);
+  DumpHead head;
   std::string_view line;
   while (text.next(line)) {
     const std::string_view item = dump::item_of(line);
-    if (item == "TIME") return true;
-    if (item.data() != nullptr && item.rfind("ATOMS", 0) == 0) return false;
+    if (item == "TIME") head.has_time = true;
+    if (item == "UNITS" && text.next(line)) {
+      const std::vector<std::string_view> words = dump::words_of(line);
+      if (words.size() == 1) head.units = std::string(words.front());
+    }
+    if (item.data() != nullptr && item.rfind("ATOMS", 0) == 0) break;
   }
-  return false;
+  return head;
 }
 
 DumpSeek seek_dump_frame_in(const std::string& text, const std::string& where, std::optional<std::int64_t> timestep,

@@ -67,9 +67,12 @@ void make_planar(DumpFrame& frame);
 // run's must; none otherwise, its rows not parsed. What a run looks like, without reading it all.
 std::optional<DumpFrame> first_z_periodic_frame(const std::string& path, const DumpOptions& options);
 
-// True when the first frame of the `dump custom` file `path` has an ITEM: TIME (`dump_modify time yes`):
-// its frames' times are times, not timesteps. Only the first frame's ITEM lines are read.
-bool dump_has_time(const std::string& path);
+// What the first frame's ITEM lines of a `dump custom` file say of the run (only they are read).
+struct DumpHead {
+  bool has_time = false;  // ITEM: TIME (`dump_modify time yes`): the frames' times are times, not timesteps
+  std::string units;      // ITEM: UNITS (`dump_modify units yes`, first frame only): "lj", ...; "" without
+};
+DumpHead read_dump_head(const std::string& path);
 
 // Which two columns of a `dump local` file hold a contact's ids.
 struct ContactColumns {

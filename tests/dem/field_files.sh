@@ -10,7 +10,7 @@
 # 2. its data file (write_data) as --input and --dump: the contacts of its timestep verified right,
 #    the same pairs as `pairs` gives, one frame of 240 atoms;
 # 3. its units: with --log log.lammps the report and the JSON say lj (sigma, tau), --units wins, a wrong
-#    --units is one error line; verify of a contact list with one contact deleted names the gap in sigma;
+#    --units is one error line, the dump's own ITEM: UNITS (dump_modify units yes) is read; verify of a contact list with one contact deleted names the gap in sigma;
 #    the log's `boundary` makes a data file's axes periodic.
 # Exit 77 (CTest's skip) when lmp is missing, unless CI=true: CI must run it, so there it fails.
 set -euo pipefail
@@ -69,7 +69,7 @@ assert u == {"name": "lj", "length": "sigma", "time": "tau"}, u
 PY
 expect 0 units_flag.txt "$nbscope" replay --headless --dump 'atoms.*.dump' --log log.lammps --units real
 holds units_flag.txt "units real (lengths in Angstrom, times in fs)"
-expect 0 units_steps.txt "$nbscope" replay --headless --dump 'atoms.*.dump' --units lj
+expect 0 units_steps.txt "$nbscope" replay --headless --dump 'atoms.*.dump'   # the dump's own ITEM: UNITS
 holds units_steps.txt "units lj (lengths in sigma; times in steps: --dt or --log gives them in tau)"
 expect 2 units_bad.txt "$nbscope" replay --headless --dump 'atoms.*.dump' --units furlong
 [ "$(wc -l <units_bad.txt)" -eq 1 ] || fail "a bad --units is not one line"

@@ -155,6 +155,21 @@ TEST(LammpsData, TheFirstZPeriodicFrameWithAtomsShowsA2dRun) {
   std::filesystem::remove_all(dir);
 }
 
+// A dump's head: ITEM: UNITS (first frame only, as dump_modify units yes writes it) and ITEM: TIME.
+TEST(LammpsData, ADumpsHeadGivesItsUnitsAndWhetherItHasTimes) {
+  const auto dir = testlammps::fresh_dir("head");
+  const std::string frame = "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n0\nITEM: BOX BOUNDS pp pp pp\n0 1\n0 1\n0 1\nITEM: ATOMS id x y z radius\n";
+  std::ofstream(dir / "u.dump") << "ITEM: UNITS\nreal\nITEM: TIME\n0\n" << frame;
+  std::ofstream(dir / "plain.dump") << frame;
+  const DumpHead u = read_dump_head((dir / "u.dump").string()), plain = read_dump_head((dir / "plain.dump").string());
+  EXPECT_EQ(u.units, "real");
+  EXPECT_TRUE(u.has_time);
+  EXPECT_EQ(plain.units, "");
+  EXPECT_FALSE(plain.has_time);
+  EXPECT_EQ(parse_dump_frames("ITEM: UNITS\nreal\n" + frame, "d.dump", {}).size(), 1u);  // the reader still passes it by
+  std::filesystem::remove_all(dir);
+}
+
 // Every prefix of a data file, and every byte of it replaced by a hostile one, is a frame or one Error: never a crash.
 TEST(LammpsData, CutAndCorruptedFilesAreAFrameOrAnError) {
   const std::string whole = kSphere;
