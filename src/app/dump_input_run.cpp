@@ -96,16 +96,25 @@ Units settle_units_and_log(DumpFlags& flags, const std::vector<std::string>& inp
   const std::vector<std::string> files = files_of(inputs);
   if (log && log->periodic && !flags.options.periodic && std::any_of(files.begin(), files.end(), is_data_file))
     flags.options.periodic = log->periodic;
-  // The first dump's head: its ITEM: UNITS and whether its frames carry ITEM: TIME.
-  const bool dump = !files.empty() && regular_file(files.front()) && is_dump_file(files.front());
-  const DumpHead head = dump ? read_dump_head(files.front()) : DumpHead{};
+  // The dumps' heads: ITEM: UNITS (in the run's first frame only, whichever file holds it by name) and
+  // whether the frames carry ITEM: TIME.
+  const auto dump = [](const std::string& p) { return regular_file(p) && is_dump_file(p); };
+  const DumpHead head = !files.empty() && dump(files.front()) ? read_dump_head(files.front()) : DumpHead{};
+  std::string units_in = files.empty() ? "" : files.front();
+  DumpHead units_head = head;
+  if (!flags.units)
+    for (std::size_t k = 1; k < files.size() && units_head.units.empty(); ++k)
+      if (dump(files[k])) {
+        units_head = read_dump_head(files[k]);
+        units_in = files[k];
+      }
   std::string name = flags.units.value_or("");
   const auto known = [](const std::string& units, const std::string& where) {
     if (!units_named(units))
       throw Error(where + ": units '" + excerpt(units) + "': nbscope knows lj, real, metal, si, cgs, electron, micro and nano (--units names them)");
     return units;
   };
-  if (name.empty() && !head.units.empty()) name = known(head.units, files.front());
+  if (name.empty() && !units_head.units.empty()) name = known(units_head.units, units_in);
   if (name.empty())
     for (const std::string& p : files) {
       if (!is_data_file(p)) continue;

@@ -9,7 +9,7 @@ namespace {
 std::string with_unit(double value, const char* format, const std::string& unit) {
   char buf[64];
   std::snprintf(buf, sizeof buf, format, value);
-  return std::string(buf) + " " + unit;
+  return unit.empty() ? std::string(buf) : std::string(buf) + " " + unit;
 }
 
 // LAMMPS's `units` styles (its manual's table): the length and time unit of each.
@@ -21,7 +21,9 @@ const Units kUnits[] = {
 
 }  // namespace
 
-std::string Units::length_text(double value, const char* format) const { return with_unit(value, format, length); }
+std::string Units::length_text(double value, const char* format, bool unit_when_own) const {
+  return with_unit(value, format, name.empty() && !unit_when_own ? "" : length);
+}
 
 std::string Units::time_text(double value, const char* format) const { return with_unit(value, format, time); }
 

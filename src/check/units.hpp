@@ -14,8 +14,9 @@ struct Units {
   std::string length = "m";  // "sigma", "Angstrom", ...
   std::string time = "s";    // "tau", "fs", ...; "steps" for a run whose times are its timesteps (no dt known)
 
-  // "1.5 sigma": `value` printed with `format` (a printf format of one double), then the length unit.
-  [[nodiscard]] std::string length_text(double value, const char* format = "%.3g") const;
+  // "1.5 sigma": `value` printed with `format` (a printf format of one double), then the length unit;
+  // without `unit_when_own`, nbscope's own metres are left out ("1.5": where a scene never showed them).
+  [[nodiscard]] std::string length_text(double value, const char* format = "%.3g", bool unit_when_own = true) const;
   // "5 tau": the same with the time unit.
   [[nodiscard]] std::string time_text(double value, const char* format = "%.3g") const;
   // "units lj (lengths in sigma, times in tau)"; "" for nbscope's own.

@@ -66,10 +66,16 @@ TEST(PanelsInUnits, ALjRunShowsLengthsInSigmaAndTimesInTau) {
   EXPECT_NE(controls.find("t = 0.700 tau"), std::string::npos) << controls;
   EXPECT_NE(controls.find("time step 0.5 tau"), std::string::npos) << controls;
   EXPECT_EQ(controls.find("ms"), std::string::npos) << controls;
-  // No units (a scene, a .nbsrec): metres and seconds, as before.
+  f.state.selected = 0;
+  char r[32];
+  std::snprintf(r, sizeof r, "%.4g", f.elements.r[0]);
+  EXPECT_NE(panel_text(host, f, "Selection").find("r = " + std::string(r) + " sigma"), std::string::npos) << panel_text(host, f, "Selection");
+  // No units (a scene, a .nbsrec): metres and seconds, as before (a radius bare, as the Selection panel always gave it).
   f.sim.units = Units{};
   EXPECT_NE(panel_text(host, f, "Stats").find("d = " + std::string(d) + " m"), std::string::npos);
   EXPECT_NE(panel_text(host, f, "Controls").find("t = 0.700 s"), std::string::npos);
+  const std::string bare = panel_text(host, f, "Selection");
+  EXPECT_NE(bare.find("r = " + std::string(r) + "\n"), std::string::npos) << bare;
 }
 
 // A pair at the boundary of the data's precision gives its gap in the run's units (a bare number without).
