@@ -127,8 +127,9 @@ Units settle_units_and_log(DumpFlags& flags, const std::vector<std::string>& inp
   if (name.empty() && log) name = log->units;
   if (name.empty()) return Units{};
   Units units = *units_named(name);
-  // Without a dt (--dt, the log's) or ITEM: TIME, a frame's time is its timestep: say so, not tau.
-  if (!flags.dt && !files.empty() && !head.has_time) units.time = "steps";
+  // Without a dt (--dt, the log's) or ITEM: TIME, a dump's or data file's time is its timestep: say so, not tau.
+  const bool timesteps = std::any_of(files.begin(), files.end(), [](const std::string& p) { return is_dump_file(p) || is_data_file(p); });
+  if (!flags.dt && timesteps && !head.has_time) units.time = "steps";
   return units;
 }
 
