@@ -1,5 +1,6 @@
 // Fuzz target: the LAMMPS/LIGGGHTS dump readers (io/lammps_dump.hpp) on arbitrary bytes, as a
-// `dump custom` file and as a `dump local` one; bytes starting 1f 8b are gunzipped in memory first
+// `dump custom` file and as a `dump local` one, and the data file reader (io/lammps_data.hpp), whose
+// one frame keeps a dump frame's promises; bytes starting 1f 8b are gunzipped in memory first
 // (through zlib, at most 1 MB out), as the readers read a .gz. What they accept must keep the
 // header's promises: timesteps rising, ids ascending and unique, equal columns, r > 0, centres of
 // periodic axes inside the box, a finite precision >= 0; contacts as rows name rows that exist.
@@ -14,6 +15,7 @@
 
 #include "core/error.hpp"
 #include "fuzz_check.hpp"
+#include "io/lammps_data.hpp"
 #include "io/lammps_dump.hpp"
 
 namespace {
@@ -87,6 +89,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     frames[0].elements.r[0] = -frames[0].elements.r[0];
   check_frames(frames);
   check_seek(text, options, frames);
+  try {
+    check_frames({nbscope::parse_lammps_data(text, "fuzz.data", options)});
+  } catch (const nbscope::Error&) {
+  }
   std::vector<nbscope::DumpContacts> contacts;
   try {
     contacts = nbscope::parse_dump_contacts(text, "fuzz.dump", {});

@@ -1,5 +1,6 @@
 // `nbscope dump`: one detector's integer arrays, as they stand when its lists are complete, as JSON
 // on stdout (formats in io/dump_json.hpp and the README).
+#include <cstdio>
 #include <cerrno>
 #include <cstring>
 #include <iostream>
@@ -32,6 +33,7 @@ int run_dump(Args& args) {
   if (format != "json") throw Error("dump: --format: '" + format + "' is not a known format (json)");
 
   auto detector = make_detector(*algorithm);  // before reading: a bad name fails fast
+  (void)settle_units_and_log(dump_flags, {*input});  // the arrays hold no lengths, but a bad --log is refused
   const InputFrame frame = read_input_frame(*input, dump_flags);
   const Elements& elements = frame.elements;
   if (!detector->supports_dim(elements.dim))
@@ -69,6 +71,7 @@ int run_dump(Args& args) {
   collector.write(source, std::cout);
   std::cout.flush();
   if (!std::cout) throw Error(std::string("stdout: cannot write: ") + std::strerror(errno));  // `> /dev/full`
+  if (!frame.note.empty()) std::fprintf(stderr, "nbscope: %s\n", frame.note.c_str());
   return 0;
 }
 

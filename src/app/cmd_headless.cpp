@@ -238,6 +238,7 @@ RunReport start_report(const HeadlessOptions& o, const FrameLoop& loop, const st
   report.source = o.watch ? "watch" : o.dump ? "dump" : o.replay ? "recording" : "scene";
   report.touching = o.touching == Touching::strict ? "strict" : "inclusive";
   report.frame_unit = frame_unit_of(loop.source());
+  report.units = o.view.units;
   report.scene_path = o.replay ? *o.replay : o.scene;
   report.scene_name = loop.source().scene().name;
   report.fault = fault_name(o.fault);

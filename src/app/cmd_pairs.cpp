@@ -39,6 +39,7 @@ int run_pairs(Args& args) {
   auto detector = make_detector(algorithm);  // before reading: a bad name fails fast
   if (output) check_output_path(*output);    // and a bad output path before any detection
   if (output) check_outputs_distinct({{"--input", *input}}, {{"--output", *output}});
+  (void)settle_units_and_log(dump_flags, {*input});  // nothing printed here is a length, but a bad --log is refused
   const InputFrame frame = read_input_frame(*input, dump_flags);
   const Elements& elements = frame.elements;
   if (!detector->supports_dim(elements.dim))
@@ -88,6 +89,7 @@ int run_pairs(Args& args) {
   if (options.touching == Touching::strict) std::fprintf(stderr, ", touching strict (<)");
   if (elements.box.any()) std::fprintf(stderr, ", periodic");
   std::fputc('\n', stderr);
+  if (!frame.note.empty()) std::fprintf(stderr, "nbscope: %s\n", frame.note.c_str());
   return 0;
 }
 

@@ -64,6 +64,14 @@ int run_replay(Args& args) {
     throw Error("replay: --dt, --radius, --type-radius, --2d, --tolerance, --periodic and --box read dumps: they need --dump FILES");
   }
   if (!file && !o.dump) throw Error("replay: FILE.nbsrec or --dump FILES is required (nbscope replay FILE.nbsrec [--headless] ...)");
+  // What the run's files say of it: its units, and a `dimension 2` run read as 2D.
+  std::string planar;
+  if (o.dump) {
+    o.view.units = settle_units_and_log(*o.dump, o.dump->dumps);
+    planar = settle_planar(*o.dump, o.dump->dumps);
+  } else {
+    o.view.units = settle_units_and_log(dump, {});
+  }
   if (o.fault == Fault::DropBox2dContact)
     throw Error(std::string("--inject-fault ") + fault_name(o.fault) +
                 ": recorded frames have no Box2D contact list (use drop-pair, drop-mask-cell, off-by-one-cell or stale-positions)");
@@ -80,10 +88,12 @@ int run_replay(Args& args) {
     if (o.report) throw Error("--report: needs --headless (the window writes no report)");
     if (o.stop_at_violation)
       throw Error("--stop-at-violation: needs --headless (the window lists every violation in its Violations panel)");
+    if (!planar.empty()) std::fprintf(stderr, "nbscope: %s\n", planar.c_str());
     return run_replay_window(o);
   }
+  o.notice = planar;
   // Said after the run, not before it: when the recording is refused, the error is the only line.
-  if (!headless) o.notice = "no window (no display, or built without it): replayed headless";
+  if (!headless) o.notice += std::string(o.notice.empty() ? "" : "\nnbscope: ") + "no window (no display, or built without it): replayed headless";
   return run_headless_loop(o);
 }
 

@@ -46,6 +46,7 @@ struct PairsReport {
   const Grid& grid;
   int base;
   const std::vector<std::int64_t>& ids;  // a dump's atom ids: elements are named by them
+  const Units& units;                    // the run's (--units, a data file's, --log's): lengths carry their unit when named
   [[nodiscard]] std::string id(std::int64_t k) const { return std::to_string(ids.empty() ? k + base : element_id(&ids, k)); }
   [[nodiscard]] std::string cell(std::int64_t k) const {
     const auto i = static_cast<ElementId>(k);
@@ -55,7 +56,11 @@ struct PairsReport {
   // "cells (4,6) and (4,5), distance - radii = -0.0123 (overlap)"
   [[nodiscard]] std::string facts(std::int64_t i, std::int64_t j) const {
     const auto a = static_cast<ElementId>(i), b = static_cast<ElementId>(j);
-    return "cells " + cell(i) + " and " + cell(j) + ", " + gap_text(contact_gap(e, a, b));
+    const double gap = contact_gap(e, a, b);
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.6g", gap);
+    const std::string length = units.name.empty() ? std::string(buf) : units.length_text(gap, "%.6g");
+    return "cells " + cell(i) + " and " + cell(j) + ", distance - radii = " + length + (gap <= 0 ? " (in contact)" : " (apart)");
   }
 };
 
@@ -73,7 +78,8 @@ std::vector<verify::GivenPair> given_from_contacts(const DumpFrame& frame, const
 }
 
 int verify_pairs(const std::string& input, const std::string& pairs_path, const GridFlags& flags, int base,
-                 std::int64_t brute_limit, const DumpFlags& dump, Touching touching, int threads) {
+                 std::int64_t brute_limit, DumpFlags dump, Touching touching, int threads) {
+  const Units units = settle_units_and_log(dump, {input});
   const InputFrame frame = read_input_frame(input, dump);
   const Elements& e = frame.elements;
   std::vector<verify::GivenPair> given;
@@ -111,7 +117,7 @@ int verify_pairs(const std::string& input, const std::string& pairs_path, const 
   }
   sort_pairs(r);
   verify::PairsVerdict v = verify::compare_pairs(e.size(), given, r);
-  const PairsReport p{e, grid, base, frame.ids};
+  const PairsReport p{e, grid, base, frame.ids, units};
   // A dump's printed digits bound what it can decide: disagreements within them are at the boundary.
   std::vector<BoundaryPair> boundary;
   const double precision = frame.dump ? frame.precision : 0;
@@ -134,6 +140,7 @@ int verify_pairs(const std::string& input, const std::string& pairs_path, const 
                         " with itself, " + std::to_string(v.out_of_range.size()) + " out of range";
   if (!boundary.empty()) summary += ", " + std::to_string(boundary.size()) + " at the boundary (not wrong: the data cannot decide them)";
   if (touching == Touching::strict) summary += " (touching strict: <)";
+  if (!units.name.empty()) summary += " (" + units.description() + ")";
   print_line(summary + (v.ok() ? ": right" : ": WRONG"));
   double gap_max = 0;  // the given pairs apart: many of them is a neighbour list given as contacts
   for (const verify::GivenPair& x : v.extra) gap_max = std::max(gap_max, contact_gap(e, static_cast<ElementId>(x.i), static_cast<ElementId>(x.j)));
@@ -142,7 +149,7 @@ int verify_pairs(const std::string& input, const std::string& pairs_path, const 
     print_line(hint);
   for (const BoundaryPair& b : boundary)
     print_line(std::string(b.in_r ? "boundary, not given " : "boundary, given ") + p.id(b.pair.i) + "," + p.id(b.pair.j) + ": " +
-               boundary_text(b));
+               boundary_text(b, units.name.empty() ? nullptr : &units));
   for (const Pair& m : v.missing) print_line("missing " + p.id(m.i) + "," + p.id(m.j) + ": " + p.facts(m.i, m.j));
   for (const verify::GivenPair& x : v.extra)
     print_line("extra " + p.id(x.i) + "," + p.id(x.j) + " (line " + std::to_string(x.line) + "): " + p.facts(x.i, x.j));
@@ -158,6 +165,7 @@ int verify_pairs(const std::string& input, const std::string& pairs_path, const 
     print_line("out of range " + p.id(o.i) + "," + p.id(o.j) + " (line " + std::to_string(o.line) + "): " + hint);
   }
   std::fflush(stdout);
+  if (!frame.note.empty()) std::fprintf(stderr, "nbscope: %s\n", frame.note.c_str());
   return v.ok() ? 0 : 1;
 }
 

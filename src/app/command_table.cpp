@@ -90,7 +90,7 @@ const std::vector<OptionSpec>& gui_input_options() {
 
 OptionGroup rendering_group() { return {"rendering options (gui, headless, replay, verify --screenshot)", rendering_options()}; }
 OptionGroup plugin_group() { return {kPluginOptionsTitle, plugin_options()}; }
-OptionGroup dump_input_group() { return {"--input FILE.dump: a LAMMPS or LIGGGHTS dump (docs/dem.md)", dump_input_options()}; }
+OptionGroup dump_input_group() { return {"--input FILE.dump: a LAMMPS or LIGGGHTS dump, or a LAMMPS data file (docs/dem.md)", dump_input_options()}; }
 OptionGroup dump_replay_group() { return {"frames from LAMMPS and LIGGGHTS dumps (docs/dem.md)", dump_replay_options()}; }
 OptionGroup gui_input_group() { return {"gui --input FILE (without --arrays): a dump or ELEMENTS.csv", gui_input_options()}; }
 

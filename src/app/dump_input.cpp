@@ -13,6 +13,7 @@
 #include "io/dump_frames.hpp"
 #include "io/dump_ranks.hpp"
 #include "io/input_source.hpp"
+#include "io/lammps_data.hpp"
 
 namespace nbscope {
 
@@ -116,6 +117,25 @@ std::string unmatched_contacts_note(const std::vector<DumpFrameAt>& unmatched) {
   return where + ": " + std::to_string(unmatched.size()) + " timesteps have contacts but no atoms frame (" + steps + "); skipped";
 }
 
+// The frames of `paths` where some are data files (one frame each): all read whole, ordered by timestep.
+std::vector<DumpFrame> read_frames_and_data(const std::vector<std::string>& paths, const DumpOptions& options) {
+  std::vector<std::string> dumps;
+  std::vector<DumpFrame> frames;
+  for (const std::string& p : paths) {
+    if (is_data_file(p)) frames.push_back(read_lammps_data(p, options));
+    else dumps.push_back(p);
+  }
+  if (!dumps.empty())
+    for (DumpFrame& f : read_dump_frames(dumps, options)) frames.push_back(std::move(f));
+  std::stable_sort(frames.begin(), frames.end(), [](const DumpFrame& a, const DumpFrame& b) { return a.timestep < b.timestep; });
+  for (std::size_t k = 1; k < frames.size(); ++k)
+    if (frames[k].timestep == frames[k - 1].timestep)
+      throw Error(frames[k].where + ": timestep " + std::to_string(frames[k].timestep) + " is also in " + frames[k - 1].where +
+                  " (two files of one timestep)");
+  if (static_cast<std::int64_t>(frames.size()) > options.max_frames) frames.resize(static_cast<std::size_t>(options.max_frames));
+  return frames;
+}
+
 }  // namespace
 
 DumpFlags take_dump_flags(Args& args) {
@@ -127,6 +147,8 @@ DumpFlags take_dump_flags(Args& args) {
   f.options.tolerance = args.number("--tolerance");
   if (const auto p = args.value("--periodic")) f.options.periodic = parse_periodic(*p);
   if (const auto b = args.value("--box")) f.box = parse_box(*b);
+  f.units = args.value("--units");  // one of its row's choices
+  f.log = args.value("--log");
   return f;
 }
 
@@ -162,9 +184,11 @@ std::unique_ptr<RecordedFrames> read_dump_recording(const DumpFlags& flags, std:
       return std::filesystem::is_regular_file(p, ec);
     });
   };
-  const bool files = regular(paths) && regular(contact_paths);
+  // A data file is one frame, read whole; so is every dump beside it then.
+  const bool data = std::any_of(paths.begin(), paths.end(), [](const std::string& p) { return is_data_file(p); });
+  const bool files = regular(paths) && regular(contact_paths) && !data;
   // A run under MPI: one file per rank (a name with `%`), each timestep's pieces read as one frame.
-  if (const auto by_rank = split_by_rank(paths); by_rank.size() > 1) {
+  if (const auto by_rank = split_by_rank(paths); by_rank.size() > 1 && !data) {
     if (!files) throw Error("--dump: per-rank files (" + paths.front() + ", ...) are read from files, not through a pipe");
     index_rank_files(f, by_rank, contact_paths, max_frames);
     return dump_frames(std::move(f));
@@ -174,7 +198,7 @@ std::unique_ptr<RecordedFrames> read_dump_recording(const DumpFlags& flags, std:
   if (files) {
     f.frames = index_dump_frames(paths, f.options);
   } else {
-    whole = read_dump_frames(paths, f.options);
+    whole = data ? read_frames_and_data(paths, f.options) : read_dump_frames(paths, f.options);
     for (const DumpFrame& d : whole) f.frames.push_back(DumpFrameAt{d.timestep, d.time, d.elements.size(), 0, 0, 0, d.where});
   }
   const bool cut = static_cast<std::int64_t>(f.frames.size()) > max_frames;
@@ -222,6 +246,12 @@ std::unique_ptr<RecordedFrames> read_dump_recording(const DumpFlags& flags, std:
 }
 
 DumpFrame read_dump_input(const std::string& path, const DumpFlags& flags) {
+  if (is_data_file(path)) {
+    DumpFrame f = read_lammps_data(path, flags.options);
+    if (flags.timestep && *flags.timestep != f.timestep)
+      throw Error(path + ": a data file of timestep " + std::to_string(f.timestep) + ", not " + std::to_string(*flags.timestep));
+    return f;
+  }
   // A seek: only the chosen frame is parsed (a big dump's other frames are counted, not held).
   DumpSeek seek = seek_dump_frame(path, flags.timestep, flags.options);
   if (seek.frames == 0) throw Error(path + ": no frames");
@@ -251,9 +281,13 @@ void apply_periodic_flags(const DumpFlags& flags, Elements& elements) {
 
 InputFrame read_input_frame(const std::string& path, const DumpFlags& flags) {
   InputFrame in;
-  if (is_dump_file(path)) {
+  if (is_dump_file(path) || is_data_file(path)) {
     if (flags.box) throw Error("--box: " + path + " is a dump: its box is its BOX BOUNDS (--periodic x,y[,z] makes axes periodic)");
     DumpFrame f = read_dump_input(path, flags);
+    if (!flags.options.force_2d && is_planar(f)) {
+      make_planar(f);
+      in.note = planar_note(path);
+    }
     in.elements = std::move(f.elements);
     in.ids = f.ids;
     in.precision = f.precision;
@@ -271,7 +305,7 @@ InputFrame read_input_frame(const std::string& path, const DumpFlags& flags) {
 }
 
 std::unique_ptr<RecordedFrames> read_input_recording(const std::string& path, const DumpFlags& flags, std::int64_t max_frames) {
-  if (is_dump_file(path)) {
+  if (is_dump_file(path) || is_data_file(path)) {
     if (flags.box) throw Error("--box: " + path + " is a dump: its box is its BOX BOUNDS (--periodic x,y[,z] makes axes periodic)");
     DumpFlags every = flags;
     every.dumps = {path};  // every frame of it, without contacts
@@ -294,13 +328,20 @@ const std::vector<OptionSpec>& dump_input_options() {
       {"--radius", "R", "", "every atom's radius, for a dump without a radius or diameter column",
        number_value(kMinRadius, kMaxRadius, "must be positive and finite")},
       {"--type-radius", "T:R,...", "", "radii by atom type, for a dump without a radius or diameter column (1:0.0015,2:0.00225)"},
-      {"--2d", "", "2D when the dump has no z column", "read a dump as 2D: z dropped (LIGGGHTS's dimension 2 writes z = 0)",
+      {"--2d", "", "2D without a z column, or with every z 0 in a thin z box (a `dimension 2` run: a note says so)",
+       "read a dump as 2D: z dropped (LAMMPS's and LIGGGHTS's dimension 2 write z = 0)",
        flag_value()},
       {"--tolerance", "L", "half a unit of the last printed digit", "the precision band of a dump's contacts: a disagreement whose "
                                                                    "gap is within L is at the boundary, not a violation",
        number_value(0, std::numeric_limits<double>::infinity(), "must be 0 or more (a length)")},
       {"--periodic", "x,y[,z]", "a dump's pp axes", "these axes periodic: contacts by the minimum image (nbs and brute)"},
       {"--box", "XLO:XHI,YLO:YHI[,ZLO:ZHI]", "a dump's BOX BOUNDS", "the periodic box of elements from a CSV file (with --periodic)"},
+      {"--units", "lj|real|metal|si|cgs|micro|nano", "a dump's ITEM: UNITS, a data file's `units =`, else --log's, else m and s",
+       "the run's LAMMPS units: every length and time printed and shown is in them (lj: sigma and tau; real: Angstrom "
+       "and fs; metal: Angstrom and ps; si: m and s; cgs: cm and s; micro: micrometre and microsecond; nano: nm and ns)",
+       choice_value({"lj", "real", "metal", "si", "cgs", "micro", "nano"})},
+      {"--log", "log.lammps", "", "the run's LAMMPS log: its `units` command (when --units is not given) and its `timestep` "
+                                  "(when --dt is not given)"},
   };
   return options;
 }
@@ -308,8 +349,8 @@ const std::vector<OptionSpec>& dump_input_options() {
 const std::vector<OptionSpec>& dump_replay_options() {
   static const std::vector<OptionSpec> options = [] {
     std::vector<OptionSpec> o = {
-        {"--dump", "FILES", "", "LAMMPS/LIGGGHTS dump custom frames (id, x y [z], radius ...): a file or a quoted glob, .gz too; "
-                                "repeatable; frames ordered by timestep", repeated_value()},
+        {"--dump", "FILES", "", "LAMMPS/LIGGGHTS dump custom frames (id, x y [z], radius ...): a file or a quoted glob, .gz too, "
+                                "or a LAMMPS data file (one frame); repeatable; frames ordered by timestep", repeated_value()},
         {"--contacts", "FILES", "", "the code's contact list, dump local (LIGGGHTS compute pair/gran/local pos id): the recorded pairs",
          repeated_value()},
         {"--dt", "S", "", "seconds per timestep: a frame's time is S x timestep (ITEM: TIME wins; neither: the timestep)",

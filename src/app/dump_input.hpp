@@ -8,6 +8,7 @@
 
 #include "app/cli.hpp"
 #include "app/command_table.hpp"
+#include "check/units.hpp"
 #include "core/pairs.hpp"
 #include "io/lammps_dump.hpp"
 #include "io/recorded_frames.hpp"
@@ -26,6 +27,8 @@ struct DumpFlags {
   std::optional<double> dt;           // --dt S: a frame's time is S x its timestep (without ITEM: TIME)
   std::optional<std::int64_t> timestep;  // pairs/dump/verify --timestep S: which frame of the dump
   std::optional<DumpBox> box;         // --box XLO:XHI,YLO:YHI[,ZLO:ZHI]: the periodic box of an input that has none
+  std::optional<std::string> units;   // --units lj|real|...: the run's units (else a data file's header, else --log's)
+  std::optional<std::string> log;     // --log log.lammps: the run's `units` (and `timestep`, for --dt) from LAMMPS's log
 };
 
 // Takes the dump flags replay, pairs, dump and verify share: --contact-ids, --radius, --type-radius,
@@ -34,6 +37,23 @@ struct DumpFlags {
 DumpFlags take_dump_flags(Args& args);
 // True when `path` is a dump (its first bytes are "ITEM:" or gzip's), not ELEMENTS.csv.
 bool is_dump_file(const std::string& path);
+// True when `path` is a LAMMPS data file (write_data's; io/lammps_data.hpp): one frame, read as a dump's.
+bool is_data_file(const std::string& path);
+
+// The units of a run from the files `inputs` (paths or globs): --units, else the first dump's ITEM:
+// UNITS, else a data file's header (`units = lj`), else the `units` command of --log's LAMMPS log;
+// nbscope's own (m, s) when none says. A run without a dt (--dt, the log's) or ITEM: TIME gets its
+// times in "steps" (its frames' times are their timesteps).
+// From the log also: flags.dt from its `timestep` when --dt is not given, and, for a data file among
+// `inputs` (which has no boundary flags), --periodic from its `boundary` when --periodic is not given.
+// Error for a units name nbscope does not know, or a log that cannot be read.
+Units settle_units_and_log(DumpFlags& flags, const std::vector<std::string>& inputs);
+// A `dimension 2` run read as 2D without --2d: when the first frame with atoms of `inputs` has every
+// z exactly 0 in a thin z box (io/lammps_dump.hpp: is_planar), sets --2d and returns the one-line
+// note that says so; "" otherwise (and for --2d given, or a pipe, which cannot be read twice).
+std::string settle_planar(DumpFlags& flags, const std::vector<std::string>& inputs);
+// The note for a planar input read as 2D: "<path>: every z is 0 in a thin z box (a `dimension 2` run): read as 2D, as --2d does".
+std::string planar_note(const std::string& path);
 
 // The frames replay runs: every frame of flags.dumps with flags.contacts as their pairs (io/lammps_dump.hpp),
 // at most `max_frames`. Files are indexed now and each frame read when it is shown (io/dump_frames.hpp);
@@ -48,6 +68,7 @@ struct InputFrame {
   std::vector<std::int64_t> ids;  // a dump's row -> atom id (empty for ELEMENTS.csv: rows are the ids)
   double precision = 0;           // a dump frame's precision band (DumpFrame::precision)
   std::optional<DumpFrame> dump;  // the dump frame (for a dump local file's contacts), without its columns
+  std::string note;               // a note for stderr once the command has succeeded (a planar frame read as 2D); "" for none
 };
 // Reads --input `path` as a dump (is_dump_file) or as ELEMENTS.csv; Error for dump flags on a CSV file.
 InputFrame read_input_frame(const std::string& path, const DumpFlags& flags);

@@ -57,6 +57,7 @@ GlView::GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions
   imgui_ = std::make_unique<render::ImGuiLayer>(window);
   gl_description_ = context.describe();
   choices_.hide_timings = options.no_timings;
+  choices_.units = options.units;
   camera_.set_viewport(context.width(), context.height());
 
   apply_overlay_spec(options.overlays, state_.overlays);

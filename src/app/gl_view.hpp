@@ -165,6 +165,7 @@ class GlView {
   // What the command line chose (ViewOptions), kept for the loads and checks to come.
   struct Choices {
     bool hide_timings = false;
+    Units units;                                  // the run's units (ViewOptions::units): the panels show lengths and times in them
     std::optional<std::array<double, 3>> camera;  // --camera: replaces the fit on load
     std::int64_t select = -1;                     // --select K as typed (book numbering: from 1)
     std::optional<std::int64_t> step;             // --step K

@@ -22,6 +22,7 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
   sim.error = session.error;
   sim.touching = loop.pipeline().touching();
   sim.frame_unit = frame_unit_of(loop.source());
+  sim.units = choices_.units;
   sim.threads = loop.pipeline().threads();
   sim.paused = session.paused;
   sim.time_step = loop.source().scene().time_step;

@@ -103,6 +103,7 @@ std::string headless_summary(const HeadlessOptions& o, const FrameLoop& loop, co
   } else if (o.touching == Touching::strict) {
     s += "; touching strict (<)";
   }
+  if (!o.view.units.name.empty()) s += "; " + o.view.units.description();
   if (report.stopped_at) {
     const Violation& v = loop.result().report().violations.front();
     s += "; stopped at the first violation, " + label(*report.stopped_at) + ": " + violation_text(v, source);

@@ -1,6 +1,7 @@
 // `nbscope gui --input ELEMENTS.csv|FILE.dump` (no --arrays): the window on that frame, or on the
 // dump's frames, as a recording without pairs through replay's loop (2D or 3D: a 3D frame is shown
 // one layer at a time). Without a display it renders --frames N headless into --screenshot, as gui does.
+#include <cstdio>
 #include <algorithm>
 #include <filesystem>
 
@@ -34,15 +35,18 @@ int run_input_gui(Args& args) {
   if (o.fault == Fault::DropBox2dContact)
     throw Error(std::string("--inject-fault ") + fault_name(o.fault) + ": --input's frames have no Box2D contact list");
   if (o.view.screenshot) check_output_path(*o.view.screenshot);
+  o.view.units = settle_units_and_log(dump, {*input});
+  const std::string planar = settle_planar(dump, {*input});
   o.input = std::move(dump);
   if (replay_window_available()) {
     // --frames N: N frames (a one-frame input is drawn again each time: the frame rate is of redraws).
     o.view.frames = frames;
+    if (!planar.empty()) std::fprintf(stderr, "nbscope: %s\n", planar.c_str());
     return run_replay_window(o);
   }
   if (!o.view.screenshot) o.view.screenshot = fallback_screenshot_path(std::filesystem::path(*input).stem().string());
   o.frames = std::max<std::int64_t>(1, frames.value_or(120));
-  o.notice = "no display: rendered headless instead";
+  o.notice = (planar.empty() ? "" : planar + "\nnbscope: ") + "no display: rendered headless instead";
   return run_headless_loop(o);
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/cli.hpp"
+#include "check/units.hpp"
 #include "core/scaling.hpp"
 
 namespace nbscope {
@@ -38,6 +39,7 @@ struct ViewOptions {
   std::string layer;                      // --layer K|auto: the layer of a 3D frame shown ("" = the view's choice)
   std::optional<ScalingShown> scaling;    // headless --scaling: the Scaling panel open on these rows
   std::optional<std::int64_t> frames;     // gui --frames N of a scripted window (set by the command, not parse_view_options)
+  Units units;                            // the run's units (set by the command from --units, a data file, --log): panels and reports use them
 };
 
 // Takes the rendering flags out of `args`; `headless` also accepts --gl. Error names a bad value.

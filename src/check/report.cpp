@@ -39,14 +39,15 @@ const char* invariant_description(Invariant invariant) {
   return "?";
 }
 
-std::string boundary_text(const BoundaryPair& b) {
-  char buf[160];
-  if (b.tie) {
-    std::snprintf(buf, sizeof buf, "an exact tie (gap 0): a contact under --touching inclusive, not under strict");
-  } else {
-    std::snprintf(buf, sizeof buf, "at the boundary, within the data's precision (gap %.3g, resolution %.3g)", b.gap, b.resolution);
-  }
-  return buf;
+std::string boundary_text(const BoundaryPair& b, const Units* units) {
+  if (b.tie) return "an exact tie (gap 0): a contact under --touching inclusive, not under strict";
+  const auto length = [units](double v) {
+    if (units != nullptr) return units->length_text(v);
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.3g", v);
+    return std::string(buf);
+  };
+  return "at the boundary, within the data's precision (gap " + length(b.gap) + ", resolution " + length(b.resolution) + ")";
 }
 
 std::string gap_text(double gap) {

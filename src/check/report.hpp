@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "check/units.hpp"
 #include "core/cells.hpp"
 #include "core/pairs.hpp"
 
@@ -86,8 +87,9 @@ struct BoundaryPair {
 // Most boundary pairs listed per frame; the count stays exact beyond it.
 inline constexpr std::size_t kMaxListedBoundaryPerFrame = 200;
 // "at the boundary, within the data's precision (gap -3.1e-08, resolution 8.7e-08)" or
-// "an exact tie (gap 0): a contact under --touching inclusive, not under strict".
-std::string boundary_text(const BoundaryPair& b);
+// "an exact tie (gap 0): a contact under --touching inclusive, not under strict"; with `units`
+// (a run in its own units), the lengths carry their unit ("gap -3.1e-08 sigma").
+std::string boundary_text(const BoundaryPair& b, const Units* units = nullptr);
 
 // Sizes of the frame's sets (see docs/architecture.md "Invariants").
 struct FrameCounts {
@@ -273,6 +275,7 @@ struct RunReport {
   std::string scope_note;            // which pairs A-in-F applies to, in words (Box2D's filters)
   std::string note;                  // anything else the reader should know ("" for nothing)
   std::string touching = "inclusive";  // the contact convention (--touching): "inclusive" or "strict"
+  Units units;                       // the run's units (LAMMPS's: --units, a data file's, a log's; else m and s)
   std::string source = "scene";      // where the frames came from: "scene" (Box2D), "recording" (.nbsrec) or "dump" (LAMMPS/LIGGGHTS)
   FrameUnit frame_unit = FrameUnit::frame;  // what the frames' numbers are: a dump's are timesteps
   std::array<bool, 3> periodic{};    // the axes periodic in any frame run (x, y, z)

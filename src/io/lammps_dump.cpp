@@ -130,6 +130,24 @@ class CustomReader {
     return f;
   }
 
+  // The frame whose items come next, its rows parsed when `wanted` holds for its box, else skipped
+  // (none returned); Error when the text has none.
+  template <class Wanted>
+  std::optional<DumpFrame> next_frame_if(Wanted wanted) {
+    Header header;
+    std::string_view names;
+    any_ = true;
+    if (!next_header(header, names)) throw Error(text_.at() + "no frame here");
+    DumpFrame f = begin_frame(header);
+    const Layout lay = layout_of(names, text_.at(), options_);
+    if (!wanted(f.box)) {
+      skip_rows(header, f);
+      return std::nullopt;
+    }
+    parse_rows(header, lay, f, nullptr);
+    return f;
+  }
+
   // The frame of `timestep` (none: the first) parsed, every other one's rows counted only; stops
   // after the frame of `timestep`.
   DumpSeek seek(std::optional<std::int64_t> timestep) {
@@ -426,6 +444,41 @@ DumpSeek seek_dump_frame(const std::string& path, std::optional<std::int64_t> ti
   }
   DumpText text(path);
   return CustomReader(text, options).seek(timestep);
+}
+
+std::optional<DumpFrame> first_z_periodic_frame(const std::string& path, const DumpOptions& options) {
+  DumpText text(path);
+  CustomReader reader(text, options);
+  std::optional<DumpFrame> last;
+  for (int k = 0; k < 16 && (!last || last->elements.size() == 0); ++k) {  // LIGGGHTS's frame 0 may be empty
+    if (last && text.bytes_left() == 0) break;
+    std::optional<DumpFrame> next;
+    try {
+      next = reader.next_frame_if([](const DumpBox& box) { return box.flags[2] == "pp"; });
+    } catch (const Error&) {
+      if (!last) throw;
+      break;  // the end of the file: the frames before are what it holds
+    }
+    if (!next) return std::nullopt;  // z is not periodic: no `dimension 2` run
+    last = std::move(next);
+  }
+  return last;
+}
+
+DumpHead read_dump_head(const std::string& path) {
+  DumpText text(path);
+  DumpHead head;
+  std::string_view line;
+  while (text.next(line)) {
+    const std::string_view item = dump::item_of(line);
+    if (item == "TIME") head.has_time = true;
+    if (item == "UNITS" && text.next(line)) {
+      const std::vector<std::string_view> words = dump::words_of(line);
+      if (words.size() == 1) head.units = std::string(words.front());
+    }
+    if (item.data() != nullptr && item.rfind("ATOMS", 0) == 0) break;
+  }
+  return head;
 }
 
 DumpSeek seek_dump_frame_in(const std::string& text, const std::string& where, std::optional<std::int64_t> timestep,

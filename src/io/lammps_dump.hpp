@@ -58,6 +58,23 @@ struct DumpFrame {
   std::string where;                 // "<path>:<line>" of its ITEM: TIMESTEP, for messages
 };
 
+// True when a 3D frame is a `dimension 2` run's: every z exactly 0, and a thin z box (LAMMPS's 2D
+// -0.5..0.5, or thinner than two of its largest diameters: no second layer fits).
+bool is_planar(const DumpFrame& frame);
+// `frame` made 2D, as --2d reads it: z and its periodicity dropped.
+void make_planar(DumpFrame& frame);
+// The first frame with atoms of the `dump custom` file `path` (else its last; Error when it has none),
+// parsed as read_dump_frames parses it, when its BOX BOUNDS flag z periodic (`pp`), as a `dimension 2`
+// run's must; none otherwise, its rows not parsed. What a run looks like, without reading it all.
+std::optional<DumpFrame> first_z_periodic_frame(const std::string& path, const DumpOptions& options);
+
+// What the first frame's ITEM lines of a `dump custom` file say of the run (only they are read).
+struct DumpHead {
+  bool has_time = false;  // ITEM: TIME (`dump_modify time yes`): the frames' times are times, not timesteps
+  std::string units;      // ITEM: UNITS (`dump_modify units yes`, first frame only): "lj", ...; "" without
+};
+DumpHead read_dump_head(const std::string& path);
+
 // Which two columns of a `dump local` file hold a contact's ids.
 struct ContactColumns {
   std::optional<std::array<int, 2>> numbers;          // --contact-ids 7,8: 1-based column numbers

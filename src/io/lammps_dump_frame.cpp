@@ -196,3 +196,24 @@ void finish_frame(RawAtoms& raw, DumpFrame& frame, const DumpOptions& options, b
 }
 
 }  // namespace nbscope::dump
+
+namespace nbscope {
+
+bool is_planar(const DumpFrame& frame) {
+  const Elements& e = frame.elements;
+  if (e.dim != 3 || (e.size() > 0 && (e.z != 0).any())) return false;
+  const double lo = frame.box.lo[2], hi = frame.box.hi[2];
+  if (lo == -0.5 && hi == 0.5) return true;
+  return e.size() > 0 && hi - lo < 4 * e.r.maxCoeff();
+}
+
+void make_planar(DumpFrame& frame) {
+  Elements& e = frame.elements;
+  if (e.dim != 3) return;
+  e.dim = 2;
+  e.z.resize(0);
+  e.box.periodic[2] = false;
+  e.box.lo[2] = e.box.hi[2] = 0;
+}
+
+}  // namespace nbscope

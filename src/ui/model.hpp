@@ -19,6 +19,7 @@
 
 #include "check/frame_result.hpp"
 #include "check/report.hpp"
+#include "check/units.hpp"
 #include "core/elements.hpp"
 #include "core/frame_trace.hpp"
 #include "core/grid.hpp"
@@ -86,6 +87,7 @@ struct SimView {
   std::string error;  // the last failed request (bad scene file, ...), shown in red
   Touching touching = Touching::inclusive;  // the contact convention (--touching), shown in Stats
   FrameUnit frame_unit = FrameUnit::frame;  // what frame numbers are: a dump's are timesteps (every label says so)
+  Units units;  // the run's units (--units, a data file's, a LAMMPS log's): every length and time shown is in them
   int threads = 1;  // threads a detection may use (--threads): the Scaling panel compares 1 and this
 
   bool paused = false;

@@ -43,10 +43,10 @@ class SelectionPanel final : public Panel {
     else
       ImGui::Text("element %lld", num(k));
     if (e.dim == 3) {
-      ImGui::TextWrapped("centre (%.4g, %.4g, %.4g)  r = %.4g", e.x[k], e.y[k], e.z[k], e.r[k]);
+      ImGui::TextWrapped("centre (%.4g, %.4g, %.4g)  r = %s", e.x[k], e.y[k], e.z[k], s.units.length_text(e.r[k], "%.4g", false).c_str());
       for (const std::string& line : selection_layer_lines(s, k, book)) ImGui::TextUnformatted(line.c_str());
     } else {
-      ImGui::Text("centre (%.3f, %.3f)  r = %.3f", e.x[k], e.y[k], e.r[k]);
+      ImGui::Text("centre (%.3f, %.3f)  r = %s", e.x[k], e.y[k], s.units.length_text(e.r[k], "%.3f", false).c_str());
       if (const Grid* grid = s.grid()) ImGui::Text("cell ix = %lld, iy = %lld", num(grid->cell(e.x[k], 0)), num(grid->cell(e.y[k], 1)));
     }
 

@@ -53,12 +53,13 @@ class StatsPanel final : public Panel {
     ImGui::Text("N = %s, %s", plural(n, "element").c_str(), plural(static_cast<long long>(s.bodies), "body", "bodies").c_str());
     if (const Grid* grid = s.grid()) {
       if (grid->dim == 3) {
-        ImGui::Text("cells %lld x %lld x %lld = %lld, d = %.3g m", static_cast<long long>(grid->n[0]),
+        ImGui::Text("cells %lld x %lld x %lld = %lld, d = %s", static_cast<long long>(grid->n[0]),
                     static_cast<long long>(grid->n[1]), static_cast<long long>(grid->n[2]),
-                    static_cast<long long>(grid->cell_count()), grid->cell_size);
+                    static_cast<long long>(grid->cell_count()), s.units.length_text(grid->cell_size).c_str());
       } else {
-        ImGui::Text("cells %lld x %lld = %lld, d = %.3g m", static_cast<long long>(grid->n[0]),
-                    static_cast<long long>(grid->n[1]), static_cast<long long>(grid->cell_count()), grid->cell_size);
+        ImGui::Text("cells %lld x %lld = %lld, d = %s", static_cast<long long>(grid->n[0]),
+                    static_cast<long long>(grid->n[1]), static_cast<long long>(grid->cell_count()),
+                    s.units.length_text(grid->cell_size).c_str());
       }
     }
     ImGui::Text("pairs %zu", s.pairs() != nullptr ? s.pairs()->size() : std::size_t{0});

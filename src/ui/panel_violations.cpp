@@ -122,7 +122,7 @@ class ViolationsPanel final : public Panel {
     if (!ImGui::CollapsingHeader(title)) return;
     ImGui::PushTextWrapPos(0.0f);
     const std::vector<std::int64_t>* ids = s.ids();
-    for (const BoundaryPair& b : s.report()->boundary) ImGui::TextUnformatted(boundary_line(b, book, ids).c_str());
+    for (const BoundaryPair& b : s.report()->boundary) ImGui::TextUnformatted(boundary_line(b, book, ids, &s.units).c_str());
     const std::int64_t unlisted = n - static_cast<std::int64_t>(s.report()->boundary.size());
     if (unlisted > 0) ImGui::TextDisabled("+%lld more counted, not listed", static_cast<long long>(unlisted));
     ImGui::PopTextWrapPos();
@@ -282,8 +282,8 @@ std::string describe_violation(const Violation& v, bool book, int dim, FrameUnit
          (std::isfinite(v.gap) ? "; " + gap_text(v.gap) : "") + "; the detector's cells " + cells_joined(v.cell_i, v.cell_j, book, dim, " and ");
 }
 
-std::string boundary_line(const BoundaryPair& b, bool book, const std::vector<std::int64_t>* ids) {
-  return pair_text(b.pair, book, ids) + ": " + boundary_text(b) + (b.in_r ? " (R has it, A not)" : " (A has it, R not)");
+std::string boundary_line(const BoundaryPair& b, bool book, const std::vector<std::int64_t>* ids, const Units* units) {
+  return pair_text(b.pair, book, ids) + ": " + boundary_text(b, units != nullptr && !units->name.empty() ? units : nullptr) + (b.in_r ? " (R has it, A not)" : " (A has it, R not)");
 }
 
 std::optional<std::array<CellIndex, 2>> grid_cells(const SimView& sim, const Violation& v) {

@@ -60,8 +60,9 @@ std::string cell_pair_text(const CellIndex& a, const CellIndex& b, bool book, in
 // The Stats panel's line for one of the frame's violations: "A==R: (4, 6) missing from A (in R),
 // cells (5,6) (4,7)", in the chosen numbering; its elements named by the atom ids it carries.
 std::string violation_line(const Violation& violation, bool book);
-// The Violations panel's line for a pair at the boundary: "atoms (2753, 12): at the boundary, within ... (R has it, A not)".
-std::string boundary_line(const BoundaryPair& b, bool book, const std::vector<std::int64_t>* ids);
+// The Violations panel's line for a pair at the boundary: "atoms (2753, 12): at the boundary, within ... (R has it, A not)";
+// its gap in the run's `units` when it has named ones (null or nbscope's own: bare numbers).
+std::string boundary_line(const BoundaryPair& b, bool book, const std::vector<std::int64_t>* ids, const Units* units = nullptr);
 // The Stats panel's line for the contact convention: "touching: inclusive (<=)" or "touching: strict (<)".
 std::string touching_line(Touching touching);
 
