@@ -34,6 +34,7 @@ class RecordingSource final : public FrameSource {
   // The frame's `pairs` block when the recording carries pairs, else null.
   [[nodiscard]] const PairList* recorded_pairs() const override { return header().has_pairs ? &current_->pairs : nullptr; }
   [[nodiscard]] double precision() const override { return current_->precision; }
+  [[nodiscard]] std::shared_ptr<const AtomColumns> columns() const override { return current_->columns; }
 
   // ---- FrameSource ----
   [[nodiscard]] const Scene& scene() const override { return scene_; }

@@ -10,6 +10,7 @@
 
 #include "core/elements.hpp"
 #include "core/pairs.hpp"
+#include "physics/atom_columns.hpp"
 #include "physics/box2d_frame.hpp"
 #include "physics/shapes.hpp"
 
@@ -37,6 +38,8 @@ class Frame {
   [[nodiscard]] virtual const PairList* recorded_pairs() const { return nullptr; }
   // What the positions behind recorded_pairs() resolve (check/check.hpp's precision band); 0: exact.
   [[nodiscard]] virtual double precision() const { return 0; }
+  // The frame's other per-atom columns (a dump's type, vx, proc, ...), or null when it has none.
+  [[nodiscard]] virtual std::shared_ptr<const AtomColumns> columns() const { return nullptr; }
 };
 
 // One dynamic circle per element: how frames without bodies are drawn.
