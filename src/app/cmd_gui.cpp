@@ -20,6 +20,7 @@
 #include <filesystem>
 
 #include "app/clock.hpp"
+#include "app/colour_by.hpp"
 #include "app/commands.hpp"
 #include "app/frame_loop.hpp"
 #include "app/gl_view.hpp"
@@ -76,6 +77,7 @@ GuiOptions parse_gui_options(Args& args) {
   if (auto n = args.integer("--max-contacts")) o.max_contacts = *n;
   o.back = args.integer("--back").value_or(0);
   parse_view_options(args, false, o.view);
+  o.view.colour_by = take_colour_by(args);
   if (auto p = args.positional()) throw Error(*p + ": unexpected argument (the scene goes after --scene)");
   args.finish();
   if (o.view.screenshot && !o.frames) throw Error("--screenshot: needs --frames N (how many frames to run first)");

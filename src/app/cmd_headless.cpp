@@ -13,6 +13,8 @@
 #include "app/clock.hpp"
 #include "app/commands.hpp"
 #include "app/frame_loop.hpp"
+#include "app/colour_by.hpp"
+#include "app/export_vtk.hpp"
 #include "app/frame_recorder.hpp"
 #include "app/headless.hpp"
 #include "app/headless_view.hpp"
@@ -107,6 +109,8 @@ HeadlessOptions parse_headless_options(Args& args) {
   o.touching = take_touching(args);
   o.threads = take_threads(args);
   parse_view_options(args, true, o.view);
+  o.view.colour_by = take_colour_by(args);
+  o.export_vtk = args.value("--export-vtk");
   o.record = args.value("--record");
   o.stop_at_violation = args.flag("--stop-at-violation");
   if (const auto r = args.value("--rewind")) o.rewind = parse_rewind(*r);
@@ -140,6 +144,7 @@ HeadlessOptions parse_headless_options(Args& args) {
   if (o.violation > 0 && (o.stop_at_violation || o.back > 0))
     throw Error("--violation: goes to a violation's own frame; --back and --stop-at-violation choose another");
   check_stop_at_violation(o);
+  check_colour_by_drawn(o.view);
   return o;
 }
 
@@ -160,6 +165,7 @@ void check_headless_paths(const HeadlessOptions& o) {
     std::vector<NamedPath> outputs;
     if (o.report) outputs.push_back({"--report", *o.report});
     if (o.record) outputs.push_back({"--record", *o.record});
+    if (o.export_vtk) outputs.push_back({"--export-vtk", *o.export_vtk + "/series.pvd"});
     if (o.view.screenshot) outputs.push_back({"--screenshot", *o.view.screenshot});
     std::vector<NamedPath> inputs{o.replay ? NamedPath{"recording", *o.replay} : NamedPath{"--scene", o.scene}};
     if (o.dump) {  // every file a glob names: `--record atoms.1000.dump` must not overwrite one
@@ -315,6 +321,7 @@ int run_headless_loop(const HeadlessOptions& o) {
       throw Error("interrupted: " + *o.record + " not written (" + signal_name(stop_signal()) + "; a recording is whole or not at all)");
   };
 
+  const std::unique_ptr<VtkSeries> vtk = o.export_vtk ? std::make_unique<VtkSeries>(*o.export_vtk) : nullptr;  // DIR made now
   Progress progress(!o.quiet && ::isatty(STDERR_FILENO) == 1 && !o.watch, frames);  // a watched run's length is not known
   WriteToCheck latency;  // a watched run's frames: from their write to their check
   SubdomainTally subdomains;  // per-rank dumps: missing contacts across subdomain boundaries
@@ -337,6 +344,7 @@ int run_headless_loop(const HeadlessOptions& o) {
       check_interrupt();
       recorder->write(loop);
     }
+    if (vtk) vtk->add(vtk_frame_of(loop.source().elements(), loop.result()));
     progress.update(k + 1);
     if (o.rewind && !rewound) {
       if (loop.source().frame() == o.rewind->to) save_at_to();
@@ -360,6 +368,7 @@ int run_headless_loop(const HeadlessOptions& o) {
   }
   progress.finish();
   if (o.watch) report.frames_requested = report.runs.front().frames_run;  // every frame that arrived was run
+  if (vtk) vtk->finish();
   if (recorder) {
     interrupts.reset();  // from here a signal ends the process, and io/signals removes the temporary
     check_interrupt();

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "app/colour_by.hpp"
 #include "app/commands.hpp"
 #include "app/replay.hpp"
 #include "app/threads_flag.hpp"
@@ -43,6 +44,9 @@ int run_replay(Args& args) {
   dump.dt = args.number("--dt");  // positive: its row's range
   const bool window = !headless && replay_window_available();
   parse_view_options(args, !window, o.view);
+  o.view.colour_by = take_colour_by(args);
+  o.export_vtk = args.value("--export-vtk");
+  dump.options.keep_columns = o.view.colour_by || o.export_vtk;  // the dump's other columns colour and are exported
   const auto file = args.positional();  // after the flags, so a flag's value is not taken for it
   if (const auto extra = args.positional()) {
     // `--dump atoms.*.dump` unquoted: the shell made the glob's files into words.
@@ -81,6 +85,7 @@ int run_replay(Args& args) {
     throw Error("--violation: goes to a violation's own frame; --back and --stop-at-violation choose another");
   if (window) {
     if (o.record) throw Error("--record: needs --headless (the window writes no recording)");
+    if (o.export_vtk) throw Error("--export-vtk: needs --headless (the window plays frames back and forth: export a straight run)");
     if (o.back > 0 || o.violation > 0)
       throw Error(std::string(o.back > 0 ? "--back" : "--violation") + ": needs --headless (the window travels with its Timeline and Violations panel)");
     if (o.algorithm == "all" || o.algorithm.find(',') != std::string::npos)
@@ -94,6 +99,7 @@ int run_replay(Args& args) {
   o.notice = planar;
   // Said after the run, not before it: when the recording is refused, the error is the only line.
   if (!headless) o.notice += std::string(o.notice.empty() ? "" : "\nnbscope: ") + "no window (no display, or built without it): replayed headless";
+  check_colour_by_drawn(o.view);
   return run_headless_loop(o);
 }
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "app/colour_by.hpp"
 #include "app/commands.hpp"
 #include "app/replay.hpp"
 #include "app/threads_flag.hpp"
@@ -32,6 +33,9 @@ int run_watch(Args& args) {
   spec.contacts = args.values("--contacts");
   spec.dt = args.number("--dt");
   const auto idle = args.number("--idle");
+  o.view.colour_by = take_colour_by(args);
+  o.export_vtk = args.value("--export-vtk");
+  dump.options.keep_columns = o.view.colour_by || o.export_vtk;  // the dump's other columns colour and are exported
   const bool window = !headless && replay_window_available();
   parse_view_options(args, !window, o.view);
   const auto dumps = args.positional();
@@ -59,6 +63,7 @@ int run_watch(Args& args) {
     if (o.stop_at_violation) throw Error("--stop-at-violation: needs --headless (the window lists every violation in its Violations panel)");
     if (o.algorithm == "all" || o.algorithm.find(',') != std::string::npos)
       throw Error("--algorithm: the window shows one algorithm at a time (switch with 1..9); several need --headless");
+    if (o.export_vtk) throw Error("--export-vtk: needs --headless (the window plays frames back and forth: export a straight run)");
     if (o.view.screenshot) {
       // Scripted: the window runs until N frames have landed, saves the picture and ends.
       if (o.frames == std::numeric_limits<std::int64_t>::max())
@@ -68,6 +73,7 @@ int run_watch(Args& args) {
     return run_replay_window(o);
   }
   if (!headless) o.notice = "no window (no display, or built without it): watched headless";
+  check_colour_by_drawn(o.view);
   return run_headless_loop(o);
 }
 

@@ -2,9 +2,11 @@
 // (pairs, dump, verify, scaling, algorithms) in command_table_files.cpp.
 #include "app/command_table.hpp"
 
+#include "app/colour_by.hpp"
 #include "app/command_table_parts.hpp"
 #include "app/commands.hpp"
 #include "app/dump_input.hpp"
+#include "app/export_vtk.hpp"
 #include "app/threads_flag.hpp"
 #include "physics/scene.hpp"
 
@@ -164,7 +166,7 @@ CommandSpec gui_command() {
          {"--screenshot", "OUT.png", "", "with --frames: the picture saved before exiting (without a display: where the headless "
                                          "rendering goes)"},
          {"--size", "WxH", "", "the window's (and the screenshot's) size in pixels; without it the window opens to the screen's work area, or at the size it last closed at (a scripted --frames run: 1280x720)"}},
-                {threads_option(), touching_option()}})},
+                {threads_option(), touching_option(), colour_by_option()}})},
        gui_input_group(),
        {"your arrays (gui --input ELEMENTS.csv --arrays ARRAYS.json)", arrays},
        rendering_group(),
@@ -241,7 +243,7 @@ CommandSpec headless_command() {
          {"--n", "MIN..MAX", "1000..1000000", "with --scaling run: the sizes, as nbscope scaling --n"},
          {"--points-per-decade", "K", "2", "with --scaling run: sizes a decade, as nbscope scaling --points-per-decade",
                   integer_value(1, 20)}},
-                {threads_option(), touching_option()}})},
+                {threads_option(), touching_option(), colour_by_option(), export_vtk_option()}})},
        {"screenshot (no display needed)", output},
        rendering_group(),
        plugin_group()},
@@ -304,7 +306,7 @@ CommandSpec replay_command() {
          {"--screenshot", "OUT.png", "", "headless: renders the last frame off-screen, as headless --screenshot"},
          {"--size", "WxH", "", "the window's or the screenshot's size in pixels (without it the window opens to the screen's work area)"},
          gl_option()},
-                {threads_option(), touching_option()}})},
+                {threads_option(), touching_option(), colour_by_option(), export_vtk_option()}})},
        dump_replay_group(),
        rendering_group(),
        plugin_group()},
@@ -349,7 +351,7 @@ CommandSpec watch_command() {
                  {"--screenshot", "OUT.png", "", "renders the last frame: headless at the run's end, the window after --frames N"},
                  {"--size", "WxH", "", "the window's or the screenshot's size in pixels"},
                  gl_option()},
-                {threads_option(), touching_option()}})},
+                {threads_option(), touching_option(), colour_by_option(), export_vtk_option()}})},
        {"dumps being written (docs/watch.md)", dumps},
        rendering_group(),
        plugin_group()},

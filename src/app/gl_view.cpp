@@ -87,10 +87,12 @@ GlView::GlView(render::GlContext& context, GLFWwindow* window, const ViewOptions
   state_.selected = options.select < 0 ? -1 : options.book_numbering ? options.select - 1 : options.select;
   followed_.trail_element = state_.selected;
   choices_.camera = options.camera;
+  choices_.colour_by = options.colour_by;
   set_layer_option(options.layer);
   for (std::size_t f = 0; f < std::size(render::kListFilterNames); ++f)
     if (options.lists == render::kListFilterNames[f]) state_.list_filter = static_cast<render::ListFilter>(f);
   follow(loop);  // the scene as loaded: the camera fits it (a saved camera or a focus may replace the fit)
+  if (loop.source().has_scene()) update_colours(loop);  // an unknown --color-by column: refused before anything is drawn
 }
 
 GlView::~GlView() {
@@ -295,6 +297,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   t0 = Clock::now();
   build_shapes(loop);
   build_checks(loop);
+  update_colours(loop);
   scratch_.flash_list.clear();
   for (std::size_t k = 0; k < followed_.flashes.size(); ++k)
     if (followed_.flashes[k] > 0.05f) scratch_.flash_list.emplace_back(static_cast<ElementId>(k), followed_.flashes[k]);
@@ -318,6 +321,10 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   scene.covered = host_.covered();
   scene.book_numbering = state_.book_numbering;
   scene.ids = loop.result().ids.get();  // a dump's atoms are labelled by their ids
+  if (choices_.colour_by) {
+    scene.element_fills = colours_.fills;
+    scene.colour_key = &colours_.key;
+  }
   if (loop.drag().active() && state_.selected >= 0 && state_.mouse_world)
     scene.drag = std::array<render::Vec2, 2>{
         render::Vec2(static_cast<float>(e.x[state_.selected]), static_cast<float>(e.y[state_.selected])),

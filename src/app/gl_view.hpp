@@ -18,6 +18,7 @@
 #include "core/layers.hpp"
 #include "io/png.hpp"
 #include "render/camera_framing.hpp"
+#include "render/colour_map.hpp"
 #include "render/gl_context.hpp"
 #include "render/imgui_layer.hpp"
 #include "render/renderer.hpp"
@@ -134,6 +135,9 @@ class GlView {
   // The stepper's position while it is mid-way through `trace`, this frame's (nullptr otherwise).
   [[nodiscard]] const Stepper* stepping_through(const std::shared_ptr<const FrameTrace>& trace) const;
   void build_checks(const FrameLoop& loop);
+  // --color-by's fills and legend for the frame shown, made again when the loop changes it
+  // (gl_view_scene.cpp); Error for a column the frame does not have.
+  void update_colours(const FrameLoop& loop);
   // Fills the panels' view of this frame (gl_view_panels.cpp).
   void fill_panels_view(const FrameLoop& loop, const Session& session, const std::shared_ptr<const FrameTrace>& trace,
                         ui::SimView& sim);
@@ -170,6 +174,13 @@ class GlView {
     std::int64_t select = -1;                     // --select K as typed (book numbering: from 1)
     std::optional<std::int64_t> step;             // --step K
     std::optional<std::int32_t> layer;            // --layer K
+    std::optional<std::string> colour_by;         // --color-by WHAT
+  };
+  // --color-by's colours of the frame shown, and the loop's generation they were made for.
+  struct Colours {
+    std::optional<std::uint64_t> generation;
+    std::vector<render::Rgba> fills;
+    render::ColourKey key;
   };
   // The view's catch-up with the loop (follow()) and what it derived from it.
   struct Followed {
@@ -214,6 +225,7 @@ class GlView {
   std::string gl_description_;
   Cost cost_;
   Scratch scratch_;
+  Colours colours_;
   // The layer shown of a 3D frame, and the frame change it was sliced for.
   std::optional<LayerSlice> layer_;
   std::uint64_t layer_generation_ = 0;

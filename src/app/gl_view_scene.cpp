@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <iterator>
 
+#include "app/colour_by.hpp"
 #include "app/gl_view.hpp"
 
 namespace nbscope {
@@ -54,6 +55,13 @@ void GlView::build_checks(const FrameLoop& loop) {
     const PairList& f = loop.result().box2d;
     std::set_difference(f.begin(), f.end(), a.begin(), a.end(), std::back_inserter(scratch_.checks.broadphase_only));
   }
+}
+
+void GlView::update_colours(const FrameLoop& loop) {
+  if (!choices_.colour_by || colours_.generation == loop.change().generation) return;
+  const ColourValues v = colour_values_of(*choices_.colour_by, loop.result(), loop.source().elements());
+  colours_.key = render::colour_values(v.values, v.categorical, v.title, colours_.fills);
+  colours_.generation = loop.change().generation;
 }
 
 }  // namespace nbscope

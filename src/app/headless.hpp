@@ -34,6 +34,7 @@ struct HeadlessOptions {
   bool quiet = false;                 // --quiet: no progress bar even on a terminal
   ViewOptions view;                   // --screenshot, --size, --gl, --overlays, ... (app/view_options.hpp)
   std::optional<std::string> record;  // --record OUT.nbsrec: every frame's elements (io/recording.hpp)
+  std::optional<std::string> export_vtk;  // --export-vtk DIR: every frame as VTK XML PolyData (app/export_vtk.hpp)
   std::optional<std::string> replay;  // `nbscope replay FILE`: recorded frames instead of a scene
                                       // (frames = at most that many of them)
   bool stop_at_violation = false;     // --stop-at-violation: stop on the first frame with a violation,

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "app/colour_by.hpp"
 #include "app/commands.hpp"
 #include "app/dump_input.hpp"
 #include "app/replay.hpp"
@@ -29,6 +30,8 @@ int run_input_gui(Args& args) {
     throw Error("--contact-ids: gui --input reads no contacts (replay --dump FILES --contacts FILES reads a dump's contacts)");
   const auto frames = args.integer("--frames");
   parse_view_options(args, false, o.view);
+  o.view.colour_by = take_colour_by(args);
+  dump.options.keep_columns = o.view.colour_by.has_value();
   if (auto p = args.positional()) throw Error(*p + ": unexpected argument (the elements go after --input)");
   args.finish();
   if (o.view.screenshot && !frames) throw Error("--screenshot: needs --frames N (how many frames to draw first)");

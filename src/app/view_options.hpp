@@ -38,6 +38,7 @@ struct ViewOptions {
   std::string lists;                      // --lists all|selected|row: the lists overlay's filter ("" = by size)
   std::string layer;                      // --layer K|auto: the layer of a 3D frame shown ("" = the view's choice)
   std::optional<ScalingShown> scaling;    // headless --scaling: the Scaling panel open on these rows
+  std::optional<std::string> colour_by;   // --color-by WHAT (app/colour_by.hpp; taken by the commands that draw frames)
   std::optional<std::int64_t> frames;     // gui --frames N of a scripted window (set by the command, not parse_view_options)
   Units units;                            // the run's units (set by the command from --units, a data file, --log): panels and reports use them
 };

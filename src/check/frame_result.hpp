@@ -11,6 +11,7 @@
 #include "core/frame_trace.hpp"
 #include "core/grid.hpp"
 #include "core/pairs.hpp"
+#include "physics/atom_columns.hpp"
 
 namespace nbscope {
 
@@ -29,6 +30,8 @@ struct FrameResult {
   std::uint64_t hash = 0;         // hash_elements() of the frame's elements
   // The atom ids of the elements' rows as the frame carries them (a dump's), or null: rows name them.
   std::shared_ptr<const std::vector<std::int64_t>> ids;
+  // The frame's other per-atom columns (Frame::columns: a dump's type, vx, ...), or null.
+  std::shared_ptr<const AtomColumns> columns;
   // Lane 0 is the selected detector, then the comparison ones in the order given.
   std::vector<LaneResult> lanes = std::vector<LaneResult>(1);
   // The check's sets, sorted (empty when checks are off): R of lane 0, F (Box2D's contact list),

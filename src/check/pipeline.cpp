@@ -130,6 +130,7 @@ const FrameResult& Pipeline::run(const FrameInput& in) {
   result_.frame = frame;
   result_.time = source.time();
   result_.ids = source.ids();
+  result_.columns = source.columns();
   for (std::size_t k = 0; k < lanes_.size(); ++k) {
     if (lanes_[k].recorded) lanes_[k].recorded->set_pairs(source.recorded_pairs());
     detect(lanes_[k], result_.lanes[k], input, in.where, k == 0 && record_traces_ && !lanes_[k].recorded);

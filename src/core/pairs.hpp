@@ -70,6 +70,9 @@ inline constexpr std::size_t kDefaultMaxPairs = 50'000'000;
 
 // Minimum-image |c_i - c_j| - (r_i + r_j): negative for an overlap; for messages.
 [[nodiscard]] double contact_gap(const Elements& e, ElementId i, ElementId j);
+// Each element's largest overlap r_i + r_j - |c_i - c_j| (minimum image) over its pairs in `pairs`
+// that overlap; 0 for an element with none (--color-by overlap, --export-vtk's `overlap`).
+[[nodiscard]] std::vector<double> element_overlaps(const Elements& e, const PairList& pairs);
 
 // Moves every centre into [lo, hi) on the frame's periodic axes (within its dimension): a centre
 // exactly at hi goes to lo, one far outside by whole periods. Open axes are left alone.

@@ -24,6 +24,19 @@ const char* touching_name(Touching touching) {
   return touching == Touching::strict ? "strict" : "inclusive";
 }
 
+std::vector<double> element_overlaps(const Elements& e, const PairList& pairs) {
+  std::vector<double> out(static_cast<std::size_t>(e.size()), 0.0);
+  for (const Pair& p : pairs) {
+    if (p.i < 0 || p.j < 0 || p.i >= e.size() || p.j >= e.size() || p.i == p.j) continue;  // a code's own pairs may be bad
+    const double overlap = -contact_gap(e, p.i, p.j);
+    double& a = out[static_cast<std::size_t>(p.i)];
+    double& b = out[static_cast<std::size_t>(p.j)];
+    a = std::max(a, overlap);
+    b = std::max(b, overlap);
+  }
+  return out;
+}
+
 double contact_gap(const Elements& e, ElementId i, ElementId j) {
   return std::sqrt(centre_distance2(e, i, j)) - (e.r[i] + e.r[j]);
 }

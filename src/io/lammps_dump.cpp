@@ -29,6 +29,8 @@ struct Layout {
   bool scaled = false;
   bool has_z = false, has_type = false;
   Column radius = Column::kOther;  // kRadius, kDiameter, or kOther: from the options
+  std::vector<int> kept;            // DumpOptions::keep_columns: each kOther column's place among the kept, else -1
+  std::vector<std::string> kept_names;
 };
 
 Layout layout_of(std::string_view names_line, const std::string& at, const DumpOptions& options) {
@@ -70,6 +72,15 @@ Layout layout_of(std::string_view names_line, const std::string& at, const DumpO
   if (lay.radius == Column::kOther && !options.radius && (options.type_radius.empty() || !lay.has_type))
     throw Error(at + "no radius: ITEM: ATOMS has no radius or diameter column; give --radius R" +
                 (lay.has_type ? " or --type-radius TYPE:R,..." : ""));
+  lay.kept.assign(lay.names.size(), -1);
+  if (options.keep_columns)
+    for (std::size_t c = 0; c < lay.names.size(); ++c) {
+      const bool position = lay.names[c].size() <= 3 && (lay.names[c][0] == 'x' || lay.names[c][0] == 'y' || lay.names[c][0] == 'z') &&
+                            lay.names[c].find_first_not_of("xyzsu") == std::string::npos;
+      if (lay.roles[c] != Column::kOther || position) continue;  // xu beside x: a position all the same
+      lay.kept[c] = static_cast<int>(lay.kept_names.size());
+      lay.kept_names.push_back(lay.names[c]);
+    }
   return lay;
 }
 
@@ -274,6 +285,14 @@ class CustomReader {
   // thrown (false returned), the rest of the rows counted as skip_rows does.
   bool parse_rows(const Header& header, const Layout& lay, DumpFrame& f, std::optional<Error>* refused) {
     dump::RawAtoms raw(lay.has_z ? 3 : 2, lay.has_type);
+    if (options_.keep_columns) {
+      raw.keep_columns = true;
+      raw.header = lay.names;
+      raw.kept_names = lay.kept_names;
+      raw.kept_values.resize(lay.kept_names.size());
+      raw.kept_numeric.assign(lay.kept_names.size(), 1);
+      row_kept_.assign(lay.kept_names.size(), 0.0);
+    }
     // Slots by id only for as many rows as the text left can hold (a row is 8 bytes or more).
     raw.start(*header.atoms, static_cast<std::uint64_t>(*header.atoms) <= text_.bytes_left() / 8);
     raw.first_line = text_.line_number() + 1;
@@ -319,7 +338,10 @@ class CustomReader {
     for (; dump::next_word(p, end, w); ++c) {
       if (c >= ncols) continue;
       const Column role = lay.roles[c];
-      if (role == Column::kOther) continue;
+      if (role == Column::kOther) {
+        if (const int k = lay.kept[c]; k >= 0) keep_value(w, raw, static_cast<std::size_t>(k));
+        continue;
+      }
       if (role == Column::kId || role == Column::kType) {
         std::int64_t v = 0;
         const auto [end_int, ec_int] = std::from_chars(w.data(), w.data() + w.size(), v);
@@ -348,7 +370,18 @@ class CustomReader {
     if (radius < kMinRadius || radius > kMaxRadius)
       throw Error(text_.at() + "radius " + std::to_string(radius) + " is outside the supported radii 1e-100 to 1e100");
     if (type < INT32_MIN || type > INT32_MAX) throw Error(text_.at() + "type " + std::to_string(type) + " does not fit 32 bits");
-    raw.push(id, static_cast<std::int32_t>(type), pos, radius);
+    raw.push(id, static_cast<std::int32_t>(type), pos, radius, row_kept_.data());
+  }
+
+  // A kept column's value; a word that is no number makes the column a text one, dropped (LAMMPS's `element`).
+  void keep_value(std::string_view w, dump::RawAtoms& raw, std::size_t k) {
+    double v = 0;
+    const auto [ptr, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
+    if (ec != std::errc() || ptr != w.data() + w.size()) {
+      raw.kept_numeric[k] = 0;
+      v = 0;
+    }
+    row_kept_[k] = v;
   }
 
   double radius_of(std::int64_t type, const Layout& lay) {
@@ -364,6 +397,7 @@ class CustomReader {
   const DumpOptions& options_;
   bool any_ = false;        // a line that is not blank was read
   std::int64_t frames_ = 0;  // ITEM: ATOMS lines read
+  std::vector<double> row_kept_;  // the row's kept columns (DumpOptions::keep_columns)
   std::optional<std::pair<std::int64_t, std::string>> last_;  // the timestep of the frame before, and its where
 };
 

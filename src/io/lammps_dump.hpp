@@ -31,6 +31,8 @@ struct DumpOptions {
   // --periodic x,y[,z]: these axes periodic whatever BOX BOUNDS says (with the dump's box as the period).
   std::optional<std::array<bool, 3>> periodic;
   std::int64_t max_frames = std::numeric_limits<std::int64_t>::max();  // --frames N: the first N frames (by timestep)
+  // --color-by, --export-vtk: keep each frame's other numeric columns (DumpFrame::columns); else they are skipped unparsed.
+  bool keep_columns = false;
 };
 
 // ITEM: BOX BOUNDS as read.
@@ -51,6 +53,8 @@ struct DumpFrame {
   std::vector<std::int64_t> ids;     // row -> atom id, ascending, unique
   std::vector<std::int32_t> types;   // row -> `type` column (empty without one)
   std::vector<std::int32_t> ranks;   // row -> the MPI rank whose file held it (per-rank files, io/dump_ranks.hpp; else empty)
+  // With DumpOptions::keep_columns: `type` and every other numeric column but id, positions and radius, by row.
+  std::shared_ptr<const AtomColumns> columns;
   // Bound on the error of a pair's gap |c_i - c_j| - (r_i + r_j) from the digits printed in this frame
   // (half a unit of the last printed digit, the largest over its coordinates and radii, scaled by the
   // box for xs ys zs), or DumpOptions::tolerance. 0 only when every number is exact.

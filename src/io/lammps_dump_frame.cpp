@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <string>
 
 #include "core/error.hpp"
@@ -18,6 +19,7 @@ void RawAtoms::start(std::int64_t n, bool by_id_allowed) {
     y.resize(n);
     if (dim == 3) z.resize(n);
     r.resize(n);
+    for (Eigen::ArrayXd& c : kept_values) c.resize(n);
     if (with_types) types.assign(k, 0);
     file_row.assign(k, 0);
     size = n;
@@ -35,6 +37,7 @@ void RawAtoms::grow(Eigen::Index n) {
   y.conservativeResize(n);
   if (dim == 3) z.conservativeResize(n);
   r.conservativeResize(n);
+  for (Eigen::ArrayXd& c : kept_values) c.conservativeResize(n);
 }
 
 void RawAtoms::leave_by_id() {
@@ -49,6 +52,7 @@ void RawAtoms::leave_by_id() {
     y[kept] = y[k];
     if (dim == 3) z[kept] = z[k];
     r[kept] = r[k];
+    for (Eigen::ArrayXd& c : kept_values) c[kept] = c[k];
     ids.push_back(k + 1);
     if (with_types) types[d] = types[s];
     file_row[d] = file_row[s] - 1;
@@ -109,12 +113,13 @@ std::vector<std::uint32_t> id_order(const RawAtoms& raw, const DumpFrame& where)
 // The rows put in `order` (order[k]: the row that goes to k) in place, cycle by cycle; `order`
 // becomes the identity.
 void permute(RawAtoms& raw, std::vector<std::uint32_t>& order) {
-  Eigen::ArrayXd* cols[4] = {&raw.x, &raw.y, &raw.r, &raw.z};
-  const int ncols = raw.dim == 3 ? 4 : 3;
+  std::vector<Eigen::ArrayXd*> cols = {&raw.x, &raw.y, &raw.r};
+  if (raw.dim == 3) cols.push_back(&raw.z);
+  for (Eigen::ArrayXd& c : raw.kept_values) cols.push_back(&c);
+  std::vector<double> saved(cols.size());
   for (std::size_t i = 0; i < order.size(); ++i) {
     if (order[i] == i) continue;
-    double saved[4];
-    for (int c = 0; c < ncols; ++c) saved[c] = (*cols[c])[static_cast<Eigen::Index>(i)];
+    for (std::size_t c = 0; c < cols.size(); ++c) saved[c] = (*cols[c])[static_cast<Eigen::Index>(i)];
     const std::int64_t saved_id = raw.ids[i];
     const std::int32_t saved_type = raw.with_types ? raw.types[i] : 0;
     std::size_t j = i;
@@ -123,17 +128,35 @@ void permute(RawAtoms& raw, std::vector<std::uint32_t>& order) {
       order[j] = static_cast<std::uint32_t>(j);
       const auto dj = static_cast<Eigen::Index>(j), dk = static_cast<Eigen::Index>(k);
       if (k == i) {
-        for (int c = 0; c < ncols; ++c) (*cols[c])[dj] = saved[c];
+        for (std::size_t c = 0; c < cols.size(); ++c) (*cols[c])[dj] = saved[c];
         raw.ids[j] = saved_id;
         if (raw.with_types) raw.types[j] = saved_type;
         break;
       }
-      for (int c = 0; c < ncols; ++c) (*cols[c])[dj] = (*cols[c])[dk];
+      for (std::size_t c = 0; c < cols.size(); ++c) (*cols[c])[dj] = (*cols[c])[dk];
       raw.ids[j] = raw.ids[k];
       if (raw.with_types) raw.types[j] = raw.types[k];
       j = k;
     }
   }
+}
+
+// The frame's columns (DumpFrame::columns): `type`, then each kept column that held numbers only.
+std::shared_ptr<const AtomColumns> kept_columns(RawAtoms& raw, const std::vector<std::int32_t>& types) {
+  auto out = std::make_shared<AtomColumns>();
+  out->header = raw.header;
+  if (!types.empty()) {
+    out->names.emplace_back("type");
+    out->values.emplace_back(types.begin(), types.end());
+  }
+  for (std::size_t c = 0; c < raw.kept_values.size(); ++c) {
+    if (raw.kept_numeric[c] == 0) continue;
+    out->names.push_back(raw.kept_names[c]);
+    const Eigen::ArrayXd& v = raw.kept_values[c];
+    out->values.emplace_back(v.data(), v.data() + raw.size);
+  }
+  std::vector<Eigen::ArrayXd>().swap(raw.kept_values);
+  return out;
 }
 
 // v moved by whole periods into [lo, hi).
@@ -182,6 +205,7 @@ void finish_frame(RawAtoms& raw, DumpFrame& frame, const DumpOptions& options, b
   e.r = std::move(raw.r);
   frame.ids = std::move(raw.ids);
   frame.types = std::move(raw.types);
+  if (raw.keep_columns) frame.columns = kept_columns(raw, frame.types);
   if (options.tolerance) {
     frame.precision = *options.tolerance;
     return;

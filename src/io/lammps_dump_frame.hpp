@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "io/lammps_dump.hpp"
@@ -20,6 +21,12 @@ struct RawAtoms {
   int dim;
   bool with_types;
   Eigen::ArrayXd x, y, z, r;  // rows [0, size), or slots by id while `by_id`
+  // DumpOptions::keep_columns: the ATOMS line's names, and the other columns kept (as x; set before
+  // start()) with their names and whether every value was a number (a text column is dropped).
+  bool keep_columns = false;
+  std::vector<std::string> header, kept_names;
+  std::vector<Eigen::ArrayXd> kept_values;
+  std::vector<char> kept_numeric;
   std::vector<std::int64_t> ids;  // row -> id (while by_id: empty, slot k is id k + 1)
   std::vector<std::int32_t> types;
   // Each row's place in the file, for messages; while by_id: place + 1 per slot, 0 for a slot not yet filled.
@@ -33,7 +40,7 @@ struct RawAtoms {
   // Room for `n` rows (NUMBER OF ATOMS), slots by id when `by_id_allowed` (else at most 2^24 ahead).
   void start(std::int64_t n, bool by_id_allowed);
   // One row.
-  void push(std::int64_t id, std::int32_t type, const double (&pos)[3], double radius) {
+  void push(std::int64_t id, std::int32_t type, const double (&pos)[3], double radius, const double* kept_row = nullptr) {
     Eigen::Index k = 0;
     if (by_id && id >= 1 && id <= x.size() && file_row[static_cast<std::size_t>(id - 1)] == 0) {
       k = static_cast<Eigen::Index>(id - 1);
@@ -52,6 +59,7 @@ struct RawAtoms {
     y[k] = pos[1];
     if (dim == 3) z[k] = pos[2];
     r[k] = radius;
+    for (std::size_t c = 0; c < kept_values.size(); ++c) kept_values[c][k] = kept_row[c];
   }
   // Columns of `n` rows (not fewer than size).
   void grow(Eigen::Index n);

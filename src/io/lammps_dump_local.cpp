@@ -274,6 +274,7 @@ RecordedFrame recorded_from_dump(DumpFrame f, const DumpContacts* contacts, std:
   r.ids = std::move(f.ids);
   r.ranks = std::move(f.ranks);
   r.precision = f.precision;
+  r.columns = std::move(f.columns);
   return r;
 }
 

@@ -39,7 +39,8 @@ std::unique_ptr<RecordedFrames> held_frames(Recording recording) { return std::m
 std::size_t recorded_frame_bytes(const RecordedFrame& f) {
   const auto n = static_cast<std::size_t>(f.elements.size());
   return sizeof f + n * static_cast<std::size_t>(f.elements.dim + 1) * sizeof(double) + f.ids.capacity() * sizeof(std::int64_t) +
-         f.ranks.capacity() * sizeof(std::int32_t) + f.pairs.capacity() * sizeof(f.pairs[0]);
+         f.ranks.capacity() * sizeof(std::int32_t) + f.pairs.capacity() * sizeof(f.pairs[0]) +
+         (f.columns ? f.columns->values.size() * n * sizeof(double) : 0);
 }
 
 }  // namespace nbscope

@@ -32,6 +32,7 @@
 #include "check/report.hpp"
 #include "core/pairs.hpp"
 #include "io/input_file.hpp"
+#include "physics/atom_columns.hpp"
 
 namespace nbscope {
 
@@ -54,6 +55,8 @@ struct RecordedFrame {
   // Largest error the file's printed digits allow in a pair's gap |c_i - c_j| - (r_i + r_j) (0: exact,
   // as a .nbsrec's round-trip numbers are): disagreements within it are at the boundary, not violations.
   double precision = 0;
+  // The frame's other per-atom columns (a dump's type, vx, proc, ... when they are asked for), or null.
+  std::shared_ptr<const AtomColumns> columns;
 };
 
 // Row `row` as its frame names it: the atom id `ids` gives it (a dump's), else the row itself (no

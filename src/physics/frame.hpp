@@ -10,6 +10,7 @@
 
 #include "core/elements.hpp"
 #include "core/pairs.hpp"
+#include "physics/atom_columns.hpp"
 #include "physics/box2d_frame.hpp"
 #include "physics/shapes.hpp"
 
@@ -39,6 +40,8 @@ class Frame {
   [[nodiscard]] virtual double precision() const { return 0; }
   // The MPI rank whose file held each row (a run's per-rank dumps), or null when one file set did.
   [[nodiscard]] virtual const std::vector<std::int32_t>* ranks() const { return nullptr; }
+  // The frame's other per-atom columns (a dump's type, vx, proc, ...), or null when it has none.
+  [[nodiscard]] virtual std::shared_ptr<const AtomColumns> columns() const { return nullptr; }
 };
 
 // One dynamic circle per element: how frames without bodies are drawn.

@@ -48,12 +48,34 @@ struct Key {
   std::string text;
   Rgba colour = palette::kTextDim;
   bool arrow = false;
+  bool swatch = false;  // a square of `colour` before the text (which is then drawn in kText)
 };
 struct Line {
   std::vector<Key> keys;
   int swatches = 0;  // a colour ramp of this many steps before the text
   bool heat = false;
+  bool colour_map = false;  // the ramp is --color-by's map (colour_map.hpp)
 };
+
+// --color-by's key: the title and each category's swatch, or the colour bar with its low and high.
+void colour_legend(const ColourKey& key, std::vector<Line>& lines) {
+  char buf[96];
+  if (key.continuous) {
+    std::snprintf(buf, sizeof buf, "%.4g .. %.4g", key.low, key.high);
+    lines.push_back({{{key.title + " " + buf, palette::kText}}, 8, false, true});
+    return;
+  }
+  Line l{{{key.title, palette::kText}}};
+  for (const auto& [label, colour] : key.categories) {
+    if (l.keys.size() == 7) {  // a long list wraps
+      lines.push_back(std::move(l));
+      l = Line{};
+    }
+    l.keys.push_back({label, colour, false, true});
+  }
+  if (key.more > 0) l.keys.push_back({"+" + std::to_string(key.more) + " more", palette::kTextDim});
+  lines.push_back(std::move(l));
+}
 
 // What the layer view of a 3D frame adds to the legend: the ghosts, the cross-layer marks, the mask.
 void layer_legend(const OverlayScene& s, const OverlayFlags& f, std::vector<Line>& lines) {
@@ -232,6 +254,7 @@ void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& 
                  LabelSpace& labels, DrawSink& sink) {
   // The lines, each a text and an optional swatch row; laid out bottom-up from the free corner.
   std::vector<Line> lines;
+  if (s.colour_key != nullptr) colour_legend(*s.colour_key, lines);
   const bool grid = f.grid && s.grid != nullptr && (s.grid->dim == 2 || s.layer != nullptr);
   if (grid && stats.heat_map && stats.max_cell > 0) {
     lines.push_back({{{"elements per cell 1 .. " + std::to_string(std::max(1, stats.max_cell)) + " (its list's length)"}}, 5, true});
@@ -269,7 +292,9 @@ void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& 
   if (lines.empty()) return;
 
   constexpr double kPad = 6.0, kSwatchPx = 12.0, kArrowPx = 18.0, kGapPx = 10.0;
-  const auto key_px = [&](const Key& k) { return (k.arrow ? kArrowPx + 4.0 : 0.0) + label_width(k.text.size()); };
+  const auto key_px = [&](const Key& k) {
+    return (k.arrow ? kArrowPx + 4.0 : 0.0) + (k.swatch ? kSwatchPx + 2.0 : 0.0) + label_width(k.text.size());
+  };
   double width_px = 0;
   for (const Line& l : lines) {
     double w = l.swatches > 0 ? kSwatchPx * l.swatches + 4.0 : 0.0;
@@ -294,7 +319,8 @@ void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& 
     const double cy = top + kPad + line_px * (double(i) + 0.5);
     double x = left + kPad;
     for (int k = 0; k < l.swatches; ++k) {
-      const Rgba c = l.heat ? heat(float(k) / float(l.swatches - 1)) : shade(k + 1);
+      const float t = float(k) / float(l.swatches - 1);
+      const Rgba c = l.colour_map ? colour_map(t) : l.heat ? heat(t) : shade(k + 1);
       sink.rect(Layer::Top, v.at_px(x + 1, cy + 5), v.at_px(x + kSwatchPx - 1, cy - 5), c.with_alpha(255));
       x += kSwatchPx;
     }
@@ -307,8 +333,13 @@ void draw_legend(const OverlayScene& s, const OverlayFlags& f, const GridStats& 
         sink.line(Layer::Top, v.at_px(x + kArrowPx - 5, cy + 4), v.at_px(x + kArrowPx, cy), k.colour, 2.0f);
         x += kArrowPx + 4.0;
       }
+      if (k.swatch) {
+        sink.rect(Layer::Top, v.at_px(x + 1, cy + 5), v.at_px(x + kSwatchPx - 1, cy - 5), k.colour.with_alpha(255));
+        x += kSwatchPx + 2.0;
+      }
+      const Rgba text_colour = k.swatch ? palette::kText : k.colour;
       // The reserved box holds the text: it is drawn directly, not placed.
-      sink.text(v.at_px(x + 0.5 * label_width(k.text.size()), cy), k.text, k.colour);
+      sink.text(v.at_px(x + 0.5 * label_width(k.text.size()), cy), k.text, text_colour);
       x += label_width(k.text.size()) + kGapPx;
     }
   }

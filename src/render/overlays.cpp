@@ -84,12 +84,17 @@ void draw_bodies(const OverlayScene& s, const WorldRect& view, double ppm, DrawS
       dashed_circle(Layer::Cells, b.centre, b.radius, kBelowOutline, ppm, sink);
       continue;
     }
-    const Rgba fill = b.motion == Motion::Static      ? palette::kStaticFill
-                      : b.motion == Motion::Kinematic ? palette::kKinematicFill
-                                                      : palette::kDynamicFill;
-    const Rgba outline = b.motion == Motion::Static      ? palette::kStaticOutline
-                         : b.motion == Motion::Kinematic ? palette::kKinematicOutline
-                                                         : palette::kDynamicOutline;
+    Rgba fill = b.motion == Motion::Static      ? palette::kStaticFill
+                : b.motion == Motion::Kinematic ? palette::kKinematicFill
+                                                : palette::kDynamicFill;
+    Rgba outline = b.motion == Motion::Static      ? palette::kStaticOutline
+                   : b.motion == Motion::Kinematic ? palette::kKinematicOutline
+                                                   : palette::kDynamicOutline;
+    // --color-by: the moving bodies (a scene's walls keep their colour; a dump's atoms are all dynamic).
+    if (b.motion == Motion::Dynamic && b.element >= 0 && static_cast<std::size_t>(b.element) < s.element_fills.size()) {
+      fill = s.element_fills[static_cast<std::size_t>(b.element)];
+      outline = mix(fill, palette::kText, 0.45f);
+    }
     if (b.is_circle) {
       if (!in_view(view, b.centre.x(), b.centre.y(), b.radius)) continue;
       sink.circle(Layer::Bodies, b.centre, b.radius, fill, outline, 1.0f);

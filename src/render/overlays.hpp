@@ -19,6 +19,7 @@
 #include "core/layers.hpp"
 #include "core/pairs.hpp"
 #include "render/camera.hpp"
+#include "render/colour_map.hpp"
 #include "render/draw_sink.hpp"
 #include "render/label_space.hpp"
 #include "render/overlay_layers.hpp"
@@ -133,6 +134,9 @@ struct OverlayScene {
   // as in 2D, those of the layer below (which the mask reaches) ghosted, the others hidden; lists,
   // pairs, checks and the mask of this layer and the one below. Null for a 2D frame.
   const LayerSlice* layer = nullptr;
+  // --color-by: each element's fill (by row; empty: the bodies' own colours) and what they mean (the legend's).
+  std::span<const Rgba> element_fills;
+  const ColourKey* colour_key = nullptr;
 };
 
 // The row whose lists the Row filter keeps (and whose row-below copies are drawn): the stepper's row

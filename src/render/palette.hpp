@@ -54,6 +54,12 @@ inline constexpr Rgba kFlash{255, 255, 120, 200};
 inline constexpr Rgba kDragLine{255, 255, 255, 200};
 inline constexpr Rgba kText{235, 235, 240};
 inline constexpr Rgba kTextDim{170, 175, 185};
+// --color-by: a categorical value's colour (type, rank; the 11th value takes the first again), and
+// the continuous map's stops from the frame's lowest value (first) to its highest (viridis).
+// (Tableau's 10, its blue moved second: the first is never taken for the bodies' own blue.)
+inline constexpr Rgba kCategory[10] = {{242, 142, 43},  {78, 121, 167}, {89, 161, 79},  {225, 87, 89},  {118, 183, 178},
+                                       {237, 201, 72},  {176, 122, 161}, {255, 157, 167}, {156, 117, 95}, {186, 176, 172}};
+inline constexpr Rgba kColourMap[5] = {{68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}};
 }  // namespace palette
 
 // Linear blend of a and b (t in [0, 1]), channel by channel, alpha included.
