@@ -3,26 +3,14 @@
 // `dump local` rows (no header: io/dump_ranks.hpp) are whole once they stop growing; the processes
 // that write them are found and followed until they end.
 #pragma once
-#include <glob.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cstddef>
-#include <cstring>
 #include <deque>
-#include <filesystem>
-#include <fstream>
 #include <set>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "core/error.hpp"
-#include "io/dump_ranks.hpp"
-#include "io/excerpt.hpp"
 #include "io/lammps_dump.hpp"
 
 namespace nbscope::follow {
@@ -31,8 +19,6 @@ using Clock = std::chrono::steady_clock;
 
 // Seconds since `t`.
 inline double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-// ---- following one file ------------------------------------------------------------------------
 
 // A whole frame found in a file: where it starts, its timestep and rows, when the file was written.
 struct WholeFrame {
@@ -46,132 +32,19 @@ class FollowedFile {
  public:
   // `bare_rows`: the file may be a rank's bare `dump local` rows (contacts under MPI), not an error.
   FollowedFile(std::string path, std::size_t file, bool bare_rows) : path_(std::move(path)), file_(file), may_be_bare_(bare_rows) {}
-
   // The frames made whole by what was written since the last look.
-  std::vector<WholeFrame> look() {
-    std::vector<WholeFrame> found;
-    struct stat st {};
-    if (::stat(path_.c_str(), &st) != 0) return found;  // not written yet (or gone: its frames were read)
-    const auto size = static_cast<std::size_t>(st.st_size);
-    if (bare_ || (may_be_bare_ && pos_ == 0 && size > 0 && is_bare_rows(path_))) {
-      // A rank's bare `dump local` rows: no count to wait for; whole once unchanged for 0.1 s.
-      bare_ = true;
-      if (size != bare_size_) {
-        bare_size_ = size;
-        bare_since_ = Clock::now();
-      }
-      return found;
-    }
-    if (size < pos_)
-      throw Error(path_ + ": shrank from " + std::to_string(pos_) + " to " + std::to_string(size) +
-                  " bytes while watched (a new run writing over it?)");
-    if (size == pos_) return found;
-    const double written = static_cast<double>(st.st_mtim.tv_sec) + 1e-9 * static_cast<double>(st.st_mtim.tv_nsec);
-    std::ifstream in(path_, std::ios::binary);
-    if (!in) return found;  // between its creation and its first bytes: looked at again
-    in.seekg(static_cast<std::streamoff>(pos_));
-    constexpr std::size_t kChunk = std::size_t{8} << 20;
-    std::vector<char> buf(std::min(kChunk, size - pos_));
-    while (pos_ < size) {
-      const std::size_t want = std::min(buf.size(), size - pos_);
-      in.read(buf.data(), static_cast<std::streamsize>(want));
-      const auto got = static_cast<std::size_t>(in.gcount());
-      if (got == 0) break;
-      if (pos_ == 0 && got >= 2 && static_cast<unsigned char>(buf[0]) == 0x1f && static_cast<unsigned char>(buf[1]) == 0x8b)
-        throw Error(path_ + ": gzip: a gzip dump cannot be read while it is written (replay it once the run has ended)");
-      take(std::string_view(buf.data(), got), written, found);
-    }
-    return found;
-  }
-
+  std::vector<WholeFrame> look();
   // A frame begun and not yet whole, as "N of M rows" (empty when none).
-  [[nodiscard]] std::string unfinished() const {
-    if (!in_rows_ && lines_in_header_ == 0) return "";
-    return path_ + ":" + std::to_string(frame_.line) + ": timestep " + std::to_string(frame_.timestep) + " has " +
-           std::to_string(frame_.atoms - rows_left_) + " of its " + std::to_string(frame_.atoms) + " rows";
-  }
+  [[nodiscard]] std::string unfinished() const;
   [[nodiscard]] const std::string& path() const { return path_; }
-  // True for a rank's bare rows (no ITEM lines: io/dump_ranks.hpp), and once they have stopped growing.
-  [[nodiscard]] bool bare() const { return bare_; }
-  [[nodiscard]] bool bare_settled() const { return bare_ && seconds_since(bare_since_) >= 0.1; }
+  // True once the file is known to be a rank's bare rows (or is empty: a rank with no contacts) and has
+  // not changed for 0.1 s: whole, as far as anything can tell.
+  [[nodiscard]] bool bare_settled() const { return may_be_bare_ && pos_ == 0 && seconds_since(bare_since_) >= 0.1 && (bare_ || bare_size_ == 0) && seen_; }
 
  private:
-  // Bytes `text` (the file's next ones) taken in: rows counted, header lines read.
-  void take(std::string_view text, double written, std::vector<WholeFrame>& found) {
-    std::size_t k = 0;
-    while (k < text.size()) {
-      if (in_rows_) {
-        const char* nl = static_cast<const char*>(std::memchr(text.data() + k, '\n', text.size() - k));
-        if (nl == nullptr) break;
-        k = static_cast<std::size_t>(nl - text.data()) + 1;
-        ++line_;
-        if (--rows_left_ == 0) finish(written, found);
-        continue;
-      }
-      const char* nl = static_cast<const char*>(std::memchr(text.data() + k, '\n', text.size() - k));
-      if (partial_.empty() && lines_in_header_ == 0) line_start_ = pos_ + k;
-      if (nl == nullptr) {
-        partial_.append(text.substr(k));
-        k = text.size();
-        break;
-      }
-      const std::size_t end = static_cast<std::size_t>(nl - text.data());
-      partial_.append(text.substr(k, end - k));
-      k = end + 1;
-      std::string line = std::move(partial_);
-      partial_.clear();
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      header_line(line, written, found);
-    }
-    pos_ += text.size();
-  }
-
-  // One line of a frame's items: TIMESTEP, NUMBER OF ATOMS/ENTRIES, then ATOMS/ENTRIES ends the header.
-  void header_line(const std::string& line, double written, std::vector<WholeFrame>& found) {
-    ++line_;
-    const std::string at = path_ + ":" + std::to_string(line_) + ": ";
-    if (lines_in_header_ == 0) {
-      if (line.rfind("ITEM: TIMESTEP", 0) != 0)
-        throw Error(at + "'" + excerpt(line) + "' where a frame's 'ITEM: TIMESTEP' should start (not a dump?)");
-      frame_ = DumpFrameAt{};
-      frame_.file = file_;
-      frame_.offset = line_start_;
-      frame_.line = line_;
-      frame_.where = path_ + ":" + std::to_string(line_);
-      frame_.atoms = -1;
-    }
-    ++lines_in_header_;
-    if (lines_in_header_ > 64) throw Error(frame_.where + ": no 'ITEM: ATOMS' or 'ITEM: ENTRIES' line in its first 64 lines");
-    const auto integer = [&](const char* what) {
-      std::int64_t v = 0;
-      const char* end = line.data() + line.size();
-      const char* p = line.data();
-      while (p < end && *p == ' ') ++p;
-      const auto r = std::from_chars(p, end, v);
-      if (r.ec != std::errc{}) throw Error(at + "'" + excerpt(line) + "' is not " + what);
-      return v;
-    };
-    if (expect_ == Expect::timestep) frame_.timestep = integer("a timestep");
-    else if (expect_ == Expect::count) frame_.atoms = integer("a count of rows");
-    else if (expect_ == Expect::time) frame_.time = std::strtod(line.c_str(), nullptr);
-    expect_ = Expect::none;
-    if (line.rfind("ITEM: TIMESTEP", 0) == 0) expect_ = Expect::timestep;
-    else if (line.rfind("ITEM: TIME", 0) == 0) expect_ = Expect::time;
-    else if (line.rfind("ITEM: NUMBER OF", 0) == 0) expect_ = Expect::count;
-    else if (line.rfind("ITEM: ATOMS", 0) == 0 || line.rfind("ITEM: ENTRIES", 0) == 0) {
-      if (frame_.atoms < 0) throw Error(at + "'" + excerpt(line) + "' before 'ITEM: NUMBER OF ATOMS' (or ENTRIES)");
-      rows_left_ = frame_.atoms;
-      in_rows_ = true;
-      if (rows_left_ == 0) finish(written, found);
-    }
-  }
-
-  void finish(double written, std::vector<WholeFrame>& found) {
-    found.push_back(WholeFrame{frame_, written});
-    in_rows_ = false;
-    lines_in_header_ = 0;
-    expect_ = Expect::none;
-  }
+  void take(std::string_view text, double written, std::vector<WholeFrame>& found);
+  void header_line(const std::string& line, double written, std::vector<WholeFrame>& found);
+  void finish(double written, std::vector<WholeFrame>& found);
 
   enum class Expect { none, timestep, time, count };
   std::string path_;
@@ -186,49 +59,25 @@ class FollowedFile {
   Expect expect_ = Expect::none;
   DumpFrameAt frame_;           // the frame being read
   bool may_be_bare_ = false;
+  bool seen_ = false;           // the file exists
   bool bare_ = false;           // a rank's bare rows: followed by size alone
   std::size_t bare_size_ = 0;
   Clock::time_point bare_since_ = Clock::now();  // since when bare_size_ has not changed
 };
 
 // The files of `specs` now (a glob matching nothing yet: none; a path not written yet: none).
-inline std::vector<std::string> files_of(const std::vector<std::string>& specs) {
-  std::vector<std::string> out;
-  for (const std::string& spec : specs) {
-    if (spec.find_first_of("*?[") == std::string::npos) {
-      out.push_back(spec);
-      continue;
-    }
-    glob_t g{};
-    if (glob(spec.c_str(), 0, nullptr, &g) == 0)
-      for (std::size_t k = 0; k < g.gl_pathc; ++k) out.emplace_back(g.gl_pathv[k]);
-    globfree(&g);
-  }
-  return out;
-}
+std::vector<std::string> files_of(const std::vector<std::string>& specs);
 
 // The files of one kind (atoms, or contacts): every file matching, each followed.
 class FollowedFiles {
  public:
   // `bare_rows`: as FollowedFile's (the contacts' files).
   FollowedFiles(std::vector<std::string> specs, bool bare_rows) : specs_(std::move(specs)), bare_rows_(bare_rows) {}
-
   // Frames made whole since the last look, in every file (new files included).
-  std::vector<WholeFrame> look() {
-    for (const std::string& p : files_of(specs_))
-      if (known_.insert(p).second) files_.emplace_back(p, files_.size(), bare_rows_);
-    std::vector<WholeFrame> found;
-    for (FollowedFile& f : files_)
-      for (WholeFrame& w : f.look()) found.push_back(std::move(w));
-    return found;
-  }
+  std::vector<WholeFrame> look();
   [[nodiscard]] const std::string& path(std::size_t file) const { return files_[file].path(); }
   // The file followed at `path`, or null.
-  [[nodiscard]] const FollowedFile* find(const std::string& path) const {
-    for (const FollowedFile& f : files_)
-      if (f.path() == path) return &f;
-    return nullptr;
-  }
+  [[nodiscard]] const FollowedFile* find(const std::string& path) const;
   [[nodiscard]] std::size_t size() const { return files_.size(); }
   [[nodiscard]] const std::deque<FollowedFile>& files() const { return files_; }
 
@@ -239,58 +88,17 @@ class FollowedFiles {
   std::deque<FollowedFile> files_;  // a deque: paths handed out stay valid as files are added
 };
 
-// ---- the writer -------------------------------------------------------------------------------
-
 // The processes that hold the watched files open: found while they write, then followed until they
 // are gone (a file LAMMPS writes frame after frame stays open until the run ends; one file a frame
 // is open only while written, and may never be seen: then only --idle ends the run).
 class Writers {
  public:
-  // Looks for processes holding one of `paths` open (at most every 0.25 s).
-  void look(const std::vector<std::string>& paths) {
-    if (!pids_.empty() || seconds_since(last_look_) < 0.25) return;  // one writer found: followed from now on
-    last_look_ = Clock::now();
-    std::set<std::string> wanted;
-    for (const std::string& p : paths) {
-      std::error_code ec;
-      const auto c = std::filesystem::weakly_canonical(p, ec);
-      if (!ec) wanted.insert(c.string());
-    }
-    const std::string self = std::to_string(::getpid());
-    std::error_code ec;
-    for (const auto& proc : std::filesystem::directory_iterator("/proc", ec)) {
-      const std::string pid = proc.path().filename().string();
-      if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos || pid == self || pids_.count(pid) > 0) continue;
-      std::error_code fd_ec;
-      for (const auto& fd : std::filesystem::directory_iterator(proc.path() / "fd", fd_ec)) {
-        std::error_code link_ec;
-        const auto target = std::filesystem::read_symlink(fd.path(), link_ec);
-        if (!link_ec && wanted.count(target.string()) > 0) {
-          pids_.insert(pid);
-          break;
-        }
-      }
-    }
-  }
+  // Looks for processes holding one of `paths` open (at most every 0.25 s; none once one is found).
+  void look(const std::vector<std::string>& paths);
   // The writers seen, as "pid 123" or "pids 123, 124".
-  [[nodiscard]] std::string named() const {
-    std::string s;
-    for (const std::string& pid : pids_) s += (s.empty() ? "" : ", ") + pid;
-    return (pids_.size() == 1 ? "pid " : "pids ") + s;
-  }
-  // True once a writer was seen and every one seen has ended.
-  [[nodiscard]] bool gone() const {
-    if (pids_.empty()) return false;
-    for (const std::string& pid : pids_) {
-      // Gone: no such process, or one that has exited and waits for its parent (a zombie: 'Z').
-      std::ifstream stat("/proc/" + pid + "/stat");
-      std::string line;
-      if (!std::getline(stat, line)) continue;
-      const std::size_t paren = line.rfind(')');
-      if (paren == std::string::npos || paren + 2 >= line.size() || line[paren + 2] != 'Z') return false;
-    }
-    return true;
-  }
+  [[nodiscard]] std::string named() const;
+  // True once a writer was seen and every one seen has ended (or waits for its parent: a zombie).
+  [[nodiscard]] bool gone() const;
 
  private:
   std::set<std::string> pids_;

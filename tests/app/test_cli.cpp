@@ -139,7 +139,7 @@ const BadInput kBadInputs[] = {
     {"negative_radius", "1,2,-0.5\n", "", "IN:1: r: radius must be > 0, got -0.5"},
     {"unknown_algorithm", "1,2,1\n", "--algorithm quick", "unknown algorithm 'quick' (known: ALGOS)"},
     {"unknown_flag", "1,2,1\n", "--fast", "pairs: --fast is not an option of pairs (see nbscope --help)"},
-    {"option_of_another_command", "1,2,1\n", "--report=r.json", "pairs: --report is not an option of pairs (it is one of headless, replay)"},
+    {"option_of_another_command", "1,2,1\n", "--report=r.json", "pairs: --report is not an option of pairs (it is one of headless, replay, watch)"},
     {"bad_repeat", "1,2,1\n", "--repeat 0", "--repeat: '0' is not a whole number from 1 to 1000000"},
     {"missing_value", "1,2,1\n", "--algorithm", "--algorithm: missing value"},
     {"repeated_flag", "1,2,1\n", "--repeat 2 --repeat=3", "--repeat: given more than once"},
@@ -221,7 +221,7 @@ TEST(Cli, AnOptionOfAnotherCommandIsNamed) {
   for (const char* args : {"gui --report x.json", "--report x.json", "gui --scene s.json --report=x.json"}) {
     const auto r = run(args);
     EXPECT_EQ(r.exit_code, 2) << args;
-    EXPECT_EQ(r.err, "nbscope: error: gui: --report is not an option of gui (it is one of headless, replay)\n") << args;
+    EXPECT_EQ(r.err, "nbscope: error: gui: --report is not an option of gui (it is one of headless, replay, watch)\n") << args;
   }
 #endif
   auto r = run("replay --rewind 5:2 in.nbsrec");

@@ -171,18 +171,18 @@ TEST(CliOptions, SharedGroupsAreOnTheCommandsThatNameThem) {
         EXPECT_EQ(commands_taking(o.name), commands) << o.name;
       }
   };
-  every_option_on(rendering_options(), "gui, headless, replay, verify");
-  every_option_on(plugin_options(), "gui, headless, replay, pairs, dump, scaling, algorithms");
+  every_option_on(rendering_options(), "gui, headless, replay, watch, verify");
+  every_option_on(plugin_options(), "gui, headless, replay, watch, pairs, dump, scaling, algorithms");
   every_option_on(grid_options(), "gui, pairs, dump, verify");
-  every_option_on({gl_option()}, "headless, replay, verify");
-  every_option_on({threads_option()}, "gui, headless, replay, pairs, verify, scaling");
-  every_option_on({touching_option()}, "gui, headless, replay, pairs, dump, verify, scaling");
+  every_option_on({gl_option()}, "headless, replay, watch, verify");
+  every_option_on({threads_option()}, "gui, headless, replay, watch, pairs, verify, scaling");
+  every_option_on({touching_option()}, "gui, headless, replay, watch, pairs, dump, verify, scaling");
   every_option_on({dump_input_options()[0]}, "pairs, dump, verify");  // --timestep: one frame of a dump
   for (const OptionSpec& o : dump_input_options())
     if (std::string(o.name) != "--timestep" && std::string(o.name) != "--contact-ids") {
-      EXPECT_EQ(commands_taking(o.name), "gui, replay, pairs, dump, verify") << o.name;
+      EXPECT_EQ(commands_taking(o.name), "gui, replay, watch, pairs, dump, verify") << o.name;
     }
-  EXPECT_EQ(commands_taking("--contact-ids"), "replay, pairs, dump, verify") << "hidden on gui: refused with its reason";
+  EXPECT_EQ(commands_taking("--contact-ids"), "replay, watch, pairs, dump, verify") << "hidden on gui: refused with its reason";
   EXPECT_EQ(commands_taking("--dump"), "replay");
 }
 
@@ -262,14 +262,14 @@ std::string command_error(const std::vector<std::string>& args, const std::strin
 
 // An option is named by its name, not blamed through its value (left over as a positional).
 TEST(CliOptions, AnOptionNotTakenIsNamed) {
-  EXPECT_EQ(command_error({"--report", "x.json"}, "gui", true), "gui: --report is not an option of gui (it is one of headless, replay)");
+  EXPECT_EQ(command_error({"--report", "x.json"}, "gui", true), "gui: --report is not an option of gui (it is one of headless, replay, watch)");
   EXPECT_EQ(command_error({"--scene", "s.json", "--report=x.json"}, "gui", false),
-            "gui: --report is not an option of gui (it is one of headless, replay)");
+            "gui: --report is not an option of gui (it is one of headless, replay, watch)");
   EXPECT_EQ(command_error({"--fast", "yes"}, "pairs", false), "pairs: --fast is not an option of pairs (see nbscope --help)");
   EXPECT_EQ(command_error({"--gl", "osmesa", "r.nbsrec"}, "replay", true), "replay: --gl does not apply here (see nbscope --help)");
   EXPECT_EQ(command_error({"extra"}, "gui", false), "extra: unexpected argument (see nbscope --help)");
   EXPECT_EQ(command_error({"--contact-ids", "1,2"}, "gui", false),
-            "gui: --contact-ids is not an option of gui (it is one of replay, pairs, dump, verify)")
+            "gui: --contact-ids is not an option of gui (it is one of replay, watch, pairs, dump, verify)")
       << "a hidden option not read is not offered";
 }
 

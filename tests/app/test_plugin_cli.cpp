@@ -228,7 +228,7 @@ TEST(PluginCli, LibrariesThatAreNotPluginsAreRefusedAtLoad) {
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_EQ(missing.err.rfind("nbscope: error: /nonexistent/x.so: cannot load: ", 0), 0u) << missing.err;
   expect_error(run("verify --input '" + nine_csv() + "' --detector-lib '" + lib + "'"),
-               "verify: --detector-lib is not an option of verify (it is one of gui, headless, replay, pairs, dump, scaling, "
+               "verify: --detector-lib is not an option of verify (it is one of gui, headless, replay, watch, pairs, dump, scaling, "
                "algorithms)");
 }
 

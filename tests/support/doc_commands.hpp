@@ -17,7 +17,8 @@
 // - a synopsis: it has `[`, a ` ...` word or an upper-case placeholder (FILE, N, ELEMENTS.csv, ...):
 //   not run; its command must exist and take every `--flag` it names (`nbscope COMMAND --help`);
 // - covered elsewhere: `scripts/dev ...` (tests/scripts/test_dev_script.cpp), `cmake --install`,
-//   `cpack`, `apt install` (tests/install; installing the .deb needs root), `ctest` (the suite itself);
+//   `cpack`, `apt install` (tests/install; installing the .deb needs root), `ctest` (the suite itself),
+//   `nbscope watch` and a simulation started in the background (`... &`: tests/dem/watch_lammps.sh);
 // - a window (`gui` without --screenshot, `replay` without --headless or --screenshot): run on the
 //   test's own Xvfb until its window shows, then SIGTERM: it must show and exit as below; then as written
 //   without a display, where it runs headless, its output checked as any command's (in a build without
@@ -226,6 +227,9 @@ inline void classify(Command& c) {
   } else if ((w[0] == "cmake" && has_word(w, "--install")) || has_word(w, "cpack") || has_word(w, "apt")) {
     c.kind = Kind::covered;
     c.covered_by = "tests/install: cmake --install into a prefix, the .deb cpack makes (its files checked, extracted: installing it needs root)";
+  } else if ((w[0] == "nbscope" && w.size() > 1 && w[1] == "watch") || w.back() == "&") {
+    c.kind = Kind::covered;  // a simulation started in the background and watched: no doc command can wait for one
+    c.covered_by = "tests/dem/watch_lammps.sh, mpi_lammps.sh (dem.watch, dem.mpi_np2/4): a real LAMMPS run watched while it writes";
   } else if (w[0] == "ctest") {
     c.kind = Kind::covered;
     c.covered_by = "the test suite itself";
