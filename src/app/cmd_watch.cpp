@@ -48,6 +48,7 @@ int run_watch(Args& args) {
     throw Error("--contact-ids: needs --contacts FILES (the dump local files whose columns it names)");
   if (o.fault == Fault::DropBox2dContact)
     throw Error(std::string("--inject-fault ") + fault_name(o.fault) + ": dump frames have no Box2D contact list");
+  o.view.units = settle_units_and_log(dump, {});  // --units, --log (the dumps themselves may not exist yet)
   spec.dumps = {*dumps};
   spec.columns = dump.columns;
   spec.options = dump.options;

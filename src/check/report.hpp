@@ -276,7 +276,8 @@ struct RunReport {
   std::string note;                  // anything else the reader should know ("" for nothing)
   std::string touching = "inclusive";  // the contact convention (--touching): "inclusive" or "strict"
   Units units;                       // the run's units (LAMMPS's: --units, a data file's, a log's; else m and s)
-  std::string source = "scene";      // where the frames came from: "scene" (Box2D), "recording" (.nbsrec) or "dump" (LAMMPS/LIGGGHTS)
+  std::string source = "scene";      // where the frames came from: "scene" (Box2D), "recording" (.nbsrec), "dump" (LAMMPS/LIGGGHTS)
+                                     // or "watch" (a LAMMPS/LIGGGHTS run's dumps while it writes them)
   FrameUnit frame_unit = FrameUnit::frame;  // what the frames' numbers are: a dump's are timesteps
   std::array<bool, 3> periodic{};    // the axes periodic in any frame run (x, y, z)
   std::int64_t frames_requested = 0;
@@ -294,7 +295,7 @@ struct RunReport {
   // False for a dump's frames, which never had a Box2D world: their reports leave out Box2D's sets
   // (F, G, T), their invariants and the physics time. A recording of a scene keeps them (its
   // report says what it could not check again).
-  [[nodiscard]] bool box2d_fields() const { return source != "dump"; }
+  [[nodiscard]] bool box2d_fields() const { return source != "dump" && source != "watch"; }
 
   // True when every run ran every requested frame and passed.
   [[nodiscard]] bool passed() const {

@@ -119,7 +119,8 @@ void FollowedFile::header_line(const std::string& line, double written, std::vec
   ++line_;
   const std::string at = path_ + ":" + std::to_string(line_) + ": ";
   if (lines_in_header_ == 0) {
-    if (line.rfind("ITEM: TIMESTEP", 0) != 0)
+    // A frame starts with its TIMESTEP, or with UNITS (dump_modify units yes) or TIME (time yes) before it.
+    if (line.rfind("ITEM:", 0) != 0)
       throw Error(at + "'" + excerpt(line) + "' where a frame's 'ITEM: TIMESTEP' should start (not a dump?)");
     frame_ = DumpFrameAt{};
     frame_.file = file_;

@@ -43,6 +43,7 @@ class WatchedDumps final : public RecordedFrames {
   explicit WatchedDumps(DumpWatchSpec spec) : spec_(std::move(spec)), atoms_(spec_.dumps, false), contacts_(spec_.contacts, true) {
     header_.path = spec_.dumps.front();
     header_.has_pairs = !spec_.contacts.empty();
+    header_.frame_unit = FrameUnit::timestep;  // a dump's frames are its timesteps
     last_arrival_ = Clock::now();
     const bool wait = spec_.wait;
     spec_.wait = true;  // the first frame is waited for in any case: a run has one before it is shown
@@ -69,6 +70,15 @@ class WatchedDumps final : public RecordedFrames {
       contact_pieces.push_back(c.bare_path.empty() ? DumpCursor(contacts_.path(c.at.file)).read_contacts(c.at, spec_.columns)
                                                    : read_bare_contacts(c.bare_path, contacts_.path(c.at.file), c.at, spec_.columns));
     DumpFrame frame = merge_rank_frames(std::move(pieces));
+    // A `dimension 2` run (every z 0 in a thin z box) is read as 2D, as replay reads it: decided by
+    // the first frame with atoms read, and then every frame alike.
+    if (!spec_.options.force_2d && !planar_ && frame.elements.size() > 0) {
+      planar_ = is_planar(frame);
+      if (*planar_)
+        std::fprintf(stderr, "nbscope: note: %s: every z is 0 in a thin z box (a `dimension 2` run): read as 2D, as --2d does\n",
+                     frame.where.c_str());
+    }
+    if (planar_.value_or(false)) make_planar(frame);
     std::optional<DumpContacts> contacts;
     if (!contact_pieces.empty()) contacts = merge_rank_contacts(std::move(contact_pieces));
     return std::make_shared<const RecordedFrame>(recorded_from_dump(std::move(frame), contacts ? &*contacts : nullptr, spec_.dt));
@@ -247,6 +257,7 @@ class WatchedDumps final : public RecordedFrames {
   int ranks_ = 0;      // the run's MPI ranks (1: one file set); 0 until its first frame says
   int rank_run_ = -1;  // the digit run of the names that numbers the ranks (io/dump_ranks.hpp)
   Clock::time_point first_whole_{};
+  std::optional<bool> planar_;  // a `dimension 2` run, once its first frame with atoms said
   bool gone_seen_ = false;  // the writer was found gone at gone_at_
   Clock::time_point gone_at_{};
   std::optional<std::int64_t> last_taken_;

@@ -10,7 +10,8 @@
 # 2. watch --headless on frames/atoms.*.dump (new files joining the glob) with a planted fault
 #    (drop-pair on the code's own list) and --stop-at-violation: exit 1 at the first frame, the
 #    violation named by atom ids and the report written;
-# 3. the window (its own Xvfb) on the same glob, --frames 4 --screenshot: a picture of the fourth frame.
+# 3. the window (its own Xvfb) on the same glob, --frames 4 --screenshot: a picture of the fourth frame;
+# 4. a `dimension 2` run watched without --2d (read as 2D, one note), its frames exported (--export-vtk).
 # Then the two watched runs are held to `replay` of the same files: the same frames, the same verdicts.
 # Exit 77 (CTest's skip) when lmp is missing, unless CI=true.
 set -euo pipefail
@@ -70,6 +71,24 @@ if [ -n "$window" ]; then
   [ -s window.png ] || fail "the watch window wrote no screenshot"
   holds window.txt "nbscope: window: 4 frames"
 fi
+
+# A `dimension 2` run (tests/dem/lammps_pour2d.in: z all 0 in a thin z box, ITEM: UNITS first) watched
+# without --2d: read as 2D with one note, exported for ParaView as it lands.
+mkdir -p flat && (
+  cd flat
+  "$nbscope" watch 'atoms.*.dump' --contacts 'contacts.*.dump' --headless --idle 3 --touching strict --export-vtk vtk \
+    >flat.txt 2>flat.err & flat=$!
+  sleep 0.3
+  "$simulator" -in "$here/lammps_pour2d.in" -log log.lammps -echo none -screen /dev/null >lmp.out 2>&1 || fail "lmp (2D) exited non-zero"
+  rc=0; wait "$flat" || rc=$?
+  cat flat.txt flat.err
+  [ "$rc" -eq 0 ] || fail "watch of the 2D run exited $rc, expected 0"
+  frames=$(ls atoms.*.dump | wc -l)
+  holds flat.txt "watch: atoms.*, recorded, $frames frames, 240 elements: A==R held in every frame"
+  holds flat.err "every z is 0 in a thin z box (a \`dimension 2\` run): read as 2D"
+  [ "$(ls vtk/frame_*.vtp | wc -l)" -eq "$frames" ] || fail "--export-vtk wrote $(ls vtk | wc -l) files for $frames frames"
+  holds vtk/series.pvd "frame_0.vtp"
+)
 
 # What was watched is what replay of the finished files says.
 "$nbscope" replay --headless --dump atoms.dump --contacts contacts.dump --touching strict >replay.txt 2>&1 ||
