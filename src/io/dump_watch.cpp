@@ -47,9 +47,14 @@ class WatchedDumps final : public RecordedFrames {
     last_arrival_ = Clock::now();
     const bool wait = spec_.wait;
     spec_.wait = true;  // the first frame is waited for in any case: a run has one before it is shown
-    if (!more()) {
+    // Before its first frame a run may take a while to set up: first_wait_s at least is waited.
+    const double idle = spec_.idle_s;
+    spec_.idle_s = std::max(idle, spec_.first_wait_s);
+    const bool first = more();
+    spec_.idle_s = idle;
+    if (!first) {
       char s[32];
-      std::snprintf(s, sizeof s, "%g", spec_.idle_s);
+      std::snprintf(s, sizeof s, "%g", std::max(idle, spec_.first_wait_s));
       throw Error(spec_.dumps.front() + ": no frame arrived in " + s + " s" + (atoms_.size() == 0 ? " (no file matches yet)" : ""));
     }
     spec_.wait = wait;
@@ -156,8 +161,16 @@ class WatchedDumps final : public RecordedFrames {
   // first frame's files have been whole for 0.25 s (or a later frame is whole); one set else.
   bool ranks_known() {
     if (ranks_ > 0) return true;
-    const double since = follow::seconds_since(first_whole_);
-    if (since < 0.25 && atoms_ready_.size() < 2) return false;
+    // A name with no number but the timestep numbers no ranks: one file set, known at once. Else the
+    // first frame's pieces are all whole once a later frame is (a dump is written by every rank at
+    // the same step), or after a second.
+    const Pieces& first = atoms_ready_.begin()->second;
+    bool numbered = false;
+    for (const auto& [slot, w] : first) {
+      const std::string& path = atoms_.path(w.at.file);
+      for (int run = 0; digit_run(path, run) >= 0; ++run) numbered = numbered || digit_run(path, run) != w.at.timestep;
+    }
+    if (numbered && atoms_ready_.size() < 2 && follow::seconds_since(first_whole_) < 1.0 && !writers_.gone()) return false;
     std::vector<std::string> paths;
     for (const FollowedFile& f : atoms_.files()) paths.push_back(f.path());
     rank_run_ = rank_run_of(paths);

@@ -26,13 +26,15 @@ struct DumpWatchSpec {
   // The run has ended after this many seconds without a new frame (--idle), or once a file it held
   // open is closed by every process with nothing new (the writer gone); infinity: never (the window).
   double idle_s = std::numeric_limits<double>::infinity();
+  // Its first frame is waited for at least this long, whatever idle_s says (a simulation sets up first).
+  double first_wait_s = 60;
   // True: more() waits until a frame arrives or the run ends (headless); false: it looks once (the window).
   bool wait = true;
   double poll_s = 0.02;               // how often the files are looked at while waiting
 };
 
-// The run's frames: waits for its first (Error "<spec>: no frame arrived in S s" when the run ends
-// first). Errors as replay's for what a frame holds wrong, and: a file that shrinks (a new run
+// The run's frames: waits for its first (Error "<spec>: no frame arrived in S s" after the longer of
+// idle_s and first_wait_s). Errors as replay's for what a frame holds wrong, and: a file that shrinks (a new run
 // writing over it), a frame whose timestep is not after the last one taken, a timestep in two files,
 // a gzip file (it cannot be read while it is written), an atoms frame with no contact frame once a
 // later contact frame is whole.

@@ -127,6 +127,7 @@ TEST(DumpWatch, NoFrameBeforeTheIdleTimeIsAnError) {
   const std::string dir = temp_dir("watch-none");
   DumpWatchSpec spec = looking_once(dir + "/atoms.*.dump");
   spec.idle_s = 0.1;
+  spec.first_wait_s = 0.1;
   const std::string e = error_of([&] { watched_dumps(spec); });
   EXPECT_NE(e.find("atoms.*.dump: no frame arrived in 0.1 s (no file matches yet)"), std::string::npos) << e;
   std::filesystem::remove_all(dir);
