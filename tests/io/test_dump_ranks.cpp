@@ -44,6 +44,20 @@ TEST(DumpRanks, PiecesBecomeOneFrameInIdOrderWithTheirRanks) {
   EXPECT_EQ(f.ranks, (std::vector<std::int32_t>{1, 0, 1, 0, 1}));
   EXPECT_DOUBLE_EQ(f.elements.x[0], 10);  // atom 1: rank 1's first row
   EXPECT_DOUBLE_EQ(f.elements.x[3], 1);   // atom 7: rank 0's second row
+  // The kept columns (--color-by, --export-vtk) follow their rows.
+  DumpFrame a = piece({2, 7}, 0), b = piece({1, 5, 9}, 10);
+  const auto columns = [](std::vector<double> vx) {
+    auto c = std::make_shared<AtomColumns>();
+    c->header = {"id", "type", "x", "y", "z", "radius", "vx"};
+    c->names = {"vx"};
+    c->values = {std::move(vx)};
+    return c;
+  };
+  a.columns = columns({0.2, 0.7});
+  b.columns = columns({0.1, 0.5, 0.9});
+  const DumpFrame with = merge_rank_frames({a, b});
+  ASSERT_TRUE(with.columns);
+  EXPECT_EQ(with.columns->values[0], (std::vector<double>{0.1, 0.2, 0.5, 0.7, 0.9}));
   const std::string e = error_of([] { merge_rank_frames({piece({2, 7}, 0), piece({7}, 10)}); });
   EXPECT_NE(e.find("atom 7 is also in rank 0's frame"), std::string::npos) << e;
 }
