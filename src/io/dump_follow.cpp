@@ -46,6 +46,9 @@ std::vector<WholeFrame> FollowedFile::look() {
   std::vector<WholeFrame> found;
   struct stat st {};
   if (::stat(path_.c_str(), &st) != 0) return found;  // not written yet (or gone: its frames were read)
+  if (S_ISDIR(st.st_mode)) throw Error(path_ + ": is a directory (watch follows dump files: 'post/atoms.*.dump')");
+  if (!S_ISREG(st.st_mode))
+    throw Error(path_ + ": not a regular file (a pipe cannot be read again as it grows: replay --dump reads one whole)");
   const auto size = static_cast<std::size_t>(st.st_size);
   if (may_be_bare_ && pos_ == 0) {
     // Maybe a rank's bare `dump local` rows: no count to wait for, whole once unchanged for 0.1 s. Its

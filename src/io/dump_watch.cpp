@@ -55,7 +55,7 @@ class WatchedDumps final : public RecordedFrames {
     if (!first) {
       char s[32];
       std::snprintf(s, sizeof s, "%g", std::max(idle, spec_.first_wait_s));
-      throw Error(spec_.dumps.front() + ": no frame arrived in " + s + " s" + (atoms_.size() == 0 ? " (no file matches yet)" : ""));
+      throw Error(spec_.dumps.front() + ": no frame arrived in " + s + " s" + (none_exist() ? " (no file matches yet)" : ""));
     }
     spec_.wait = wait;
   }
@@ -241,6 +241,14 @@ class WatchedDumps final : public RecordedFrames {
     if (!fresh) throw Error(w.at.where + ": timestep " + std::to_string(t) + " is also in " + it->second.at.where + " (two dumps of one run?)");
   }
 
+  // True when no file of the atoms exists yet (a glob that matches none, a path not written).
+  [[nodiscard]] bool none_exist() const {
+    for (const FollowedFile& f : atoms_.files()) {
+      std::error_code ec;
+      if (std::filesystem::exists(f.path(), ec)) return false;
+    }
+    return true;
+  }
   // No new frame for --idle, the writer gone, or --frames N taken.
   [[nodiscard]] bool ended() {
     if (static_cast<std::int64_t>(taken_.size()) >= spec_.options.max_frames) return true;

@@ -2,6 +2,7 @@
 // that grow and files that appear are followed, atoms and contacts paired by timestep, and what a
 // writer cannot have meant (a file that shrinks, timesteps out of order) is refused by name.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -120,6 +121,17 @@ TEST(DumpWatch, NotADumpIsRefusedAtItsLine) {
   write_file(path, "x,y,r\n0,0,1\n");
   const std::string e = error_of([&] { watched_dumps(looking_once(path)); });
   EXPECT_NE(e.find("atoms.dump:1: 'x,y,r' where a frame's 'ITEM: TIMESTEP' should start"), std::string::npos) << e;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(DumpWatch, ADirectoryOrAPipeIsRefusedAtOnce) {
+  const std::string dir = temp_dir("watch-dir");
+  std::string e = error_of([&] { watched_dumps(looking_once(dir)); });
+  EXPECT_NE(e.find(": is a directory"), std::string::npos) << e;
+  const std::string fifo = dir + "/atoms.fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  e = error_of([&] { watched_dumps(looking_once(fifo)); });
+  EXPECT_NE(e.find("atoms.fifo: not a regular file"), std::string::npos) << e;
   std::filesystem::remove_all(dir);
 }
 
