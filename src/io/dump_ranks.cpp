@@ -189,6 +189,17 @@ DumpFrame merge_rank_frames(std::vector<DumpFrame> pieces) {
   out.ranks.resize(static_cast<std::size_t>(n));
   const bool typed = std::all_of(pieces.begin(), pieces.end(), [](const DumpFrame& p) { return !p.types.empty() || p.ids.empty(); });
   if (typed) out.types.resize(static_cast<std::size_t>(n));
+  // The kept columns (--color-by, --export-vtk), when every rank's file has the same ones.
+  const bool columned = first.columns && std::all_of(pieces.begin(), pieces.end(), [&](const DumpFrame& p) {
+    return p.columns && p.columns->names == first.columns->names;
+  });
+  std::shared_ptr<AtomColumns> columns;
+  if (columned) {
+    columns = std::make_shared<AtomColumns>();
+    columns->header = first.columns->header;
+    columns->names = first.columns->names;
+    columns->values.assign(columns->names.size(), std::vector<double>(static_cast<std::size_t>(n)));
+  }
   for (std::size_t k = 0; k < order.size(); ++k) {
     const auto [id, r, row] = order[k];
     if (k > 0 && order[k - 1][0] == id)
@@ -204,7 +215,18 @@ DumpFrame merge_rank_frames(std::vector<DumpFrame> pieces) {
     out.ids[k] = id;
     out.ranks[k] = static_cast<std::int32_t>(r);
     if (typed) out.types[k] = p.types[static_cast<std::size_t>(row)];
+    if (columns)
+      for (std::size_t c = 0; c < columns->values.size(); ++c) columns->values[c][k] = p.columns->values[c][static_cast<std::size_t>(row)];
   }
+  out.columns = std::move(columns);
+  // How the run split its box among the ranks (every rank's file holds the global box): drawn by the views.
+  Bounds box;
+  for (std::size_t a = 0; a < 3; ++a) {
+    box.min[a] = out.box.lo[a];
+    box.max[a] = out.box.hi[a];
+  }
+  if (auto split = infer_subdomains(out.elements, out.ranks, static_cast<int>(pieces.size()), box))
+    out.subdomains = std::make_shared<const Subdomains>(*split);
   return out;
 }
 
