@@ -25,9 +25,6 @@ void check_colour_by_drawn(const ViewOptions& view) {
 namespace {
 
 [[noreturn]] void no_column(const std::string& what, const std::string& column, const FrameResult& result, const Elements& e) {
-  if (what == "rank")  // neither a proc column nor per-rank files
-    throw Error("--color-by rank: the frames have no 'proc' column and were not read from per-rank files (a dump name with %: "
-                "atoms.%.*.dump, docs/dem.md#mpi)");
   std::string has;
   if (result.columns) {
     for (const std::string& h : result.columns->header) has += (has.empty() ? "" : " ") + h;

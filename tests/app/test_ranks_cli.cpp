@@ -54,8 +54,7 @@ TEST(RanksCli, ColourByRankTakesTheFilesRanksAndWithoutThemSaysSoInOneLine) {
   // One file set and no proc column: neither.
   const Result none = run("replay --headless --dump '" + dir + "/atoms.0.100.dump' --color-by rank --screenshot '" + dir + "/none.png'");
   EXPECT_EQ(none.exit_code, 2);
-  EXPECT_EQ(none.err, "nbscope: error: --color-by rank: the frames have no 'proc' column and were not read from per-rank files (a dump "
-                      "name with %: atoms.%.*.dump, docs/dem.md#mpi)\n");
+  EXPECT_EQ(none.err, "nbscope: error: --color-by rank: the dump has no column 'proc' (it has: id type x y radius)\n");
 }
 #endif
 
