@@ -8,7 +8,7 @@ namespace nbscope {
 
 OptionSpec colour_by_option() {
   return {"--color-by", "type|vx|overlap|rank|COLUMN", "",
-          "colours the atoms by a dump column (type, rank = proc: a colour each; vx or any numeric column: a map over the frame's "
+          "colours the atoms by a dump column (type, rank = proc, else the per-rank file: a colour each; vx or any numeric column: a map over the frame's "
           "range) or by overlap (each atom's largest r_i + r_j - |c_i - c_j|, computed by nbscope), with a legend (docs/export.md)"};
 }
 
@@ -37,7 +37,7 @@ namespace {
 
 }  // namespace
 
-ColourValues colour_values_of(const std::string& what, const FrameResult& result, const Elements& e) {
+ColourValues colour_values_of(const std::string& what, const FrameResult& result, const Elements& e, const std::vector<std::int32_t>* ranks) {
   ColourValues out;
   out.title = what;
   const auto n = static_cast<std::size_t>(e.size());
@@ -53,6 +53,11 @@ ColourValues colour_values_of(const std::string& what, const FrameResult& result
       out.values = *v;
       return out;
     }
+  }
+  if (what == "rank" && ranks != nullptr && ranks->size() == n) {  // per-rank files: the file that held each row
+    out.values.assign(ranks->begin(), ranks->end());
+    out.title = "rank";
+    return out;
   }
   const bool from_file = !result.columns || result.columns->has(column);  // a dump names its columns; other frames have the elements'
   const auto axis = column == "x" ? 0 : column == "y" ? 1 : column == "z" && e.dim == 3 ? 2 : -1;

@@ -46,6 +46,7 @@ const Elements& LoopSource::elements() const {
   return loaded() ? frames_->elements() : kNone;
 }
 const std::vector<std::int32_t>* LoopSource::ranks() const { return loaded() ? frames_->ranks() : nullptr; }
+const Subdomains* LoopSource::subdomains() const { return loaded() ? frames_->subdomains() : nullptr; }
 const std::vector<ElementSource>& LoopSource::element_sources() const {
   static const std::vector<ElementSource> kNone;
   return loaded() ? frames_->element_sources() : kNone;

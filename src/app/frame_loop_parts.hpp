@@ -83,6 +83,8 @@ class LoopSource {
   [[nodiscard]] const Elements& elements() const;
   // The MPI rank whose file held each row (per-rank dumps), or null.
   [[nodiscard]] const std::vector<std::int32_t>* ranks() const;
+  // Each rank's subdomain (per-rank dumps, when the split was found), or null.
+  [[nodiscard]] const Subdomains* subdomains() const;
   // Element -> (body, fixture).
   [[nodiscard]] const std::vector<ElementSource>& element_sources() const;
   // Bodies of the frame shown.

@@ -321,6 +321,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   scene.covered = host_.covered();
   scene.book_numbering = state_.book_numbering;
   scene.ids = loop.result().ids.get();  // a dump's atoms are labelled by their ids
+  scene.subdomains = loop.source().subdomains();
   if (choices_.colour_by) {
     scene.element_fills = colours_.fills;
     scene.colour_key = &colours_.key;

@@ -30,6 +30,7 @@ void GlView::fill_panels_view(const FrameLoop& loop, const Session& session, con
   sim.frame = &loop.result();  // the loop's own: read, not copied
   sim.bodies = loop.source().body_count();
   sim.elements = &e;
+  sim.subdomains = loop.source().subdomains();
   sim.layer = layer();
   sim.lists = state_.overlays.lists ? &lists_.lists : nullptr;
   sim.trace = trace;

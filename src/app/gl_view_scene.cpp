@@ -59,7 +59,7 @@ void GlView::build_checks(const FrameLoop& loop) {
 
 void GlView::update_colours(const FrameLoop& loop) {
   if (!choices_.colour_by || colours_.generation == loop.change().generation) return;
-  const ColourValues v = colour_values_of(*choices_.colour_by, loop.result(), loop.source().elements());
+  const ColourValues v = colour_values_of(*choices_.colour_by, loop.result(), loop.source().elements(), loop.source().ranks());
   colours_.key = render::colour_values(v.values, v.categorical, v.title, colours_.fills);
   colours_.generation = loop.change().generation;
 }

@@ -28,12 +28,13 @@ std::string broken_text(const AlgorithmRun& run) {
 }
 
 // "A==R (2, 11) given twice in the recorded pairs" for violation `v`; a recording whose pairs count
-// from 1 also gets the pair as its file numbers it, a dump's frame names the atoms by their ids; a
-// pair of two elements ends with its gap, as verify gives it.
+// from 1 also gets the pair as its file numbers it, a dump's frame names the atoms by their ids (and
+// their ranks when two ranks' files held them: "atoms 4 of rank 1, 22 of rank 0"); a pair of two
+// elements ends with its gap, as verify gives it.
 std::string violation_text(const Violation& v, const LoopSource& source) {
-  std::string pair = std::to_string(v.pair.i) + ", " + std::to_string(v.pair.j);
+  std::string pair = violation_pair_text(v);
   if (v.atom_i >= 0) {
-    pair = "atoms " + std::to_string(v.atom_i) + ", " + std::to_string(v.atom_j);
+    pair = "atoms " + pair;
   } else if (const int base = source.carries_pairs() ? source.pair_base() : 0; base != 0) {
     pair += "; the file's " + std::to_string(v.pair.i + base) + "," + std::to_string(v.pair.j + base);
   }

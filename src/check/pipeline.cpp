@@ -182,7 +182,7 @@ const FrameResult& Pipeline::run(const FrameInput& in) {
       check.recorded = lanes_[k].recorded != nullptr;
       if (check.recorded) check.precision = source.precision();
       checker_.check(check, lane.report);
-      name_atoms(lane.report, result_.ids.get());
+      name_atoms(lane.report, result_.ids.get(), source.ranks());
       lane.report.check_timings.invariant_ms[static_cast<std::size_t>(Invariant::Contract)] += contract_ms;
       if (k == 0) result_.reference = checker_.reference_pairs();
       lane.report.timings.check_ms = ms_since(t0);

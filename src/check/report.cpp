@@ -1,6 +1,7 @@
 #include "check/report.hpp"
 
 #include <cstdio>
+#include <type_traits>
 
 namespace nbscope {
 
@@ -76,15 +77,28 @@ std::string apart_pairs_hint(std::int64_t apart, std::int64_t listed, double gap
          "radius`, LIGGGHTS with `compute pair/gran/local pos id`";
 }
 
-void name_atoms(FrameReport& report, const std::vector<std::int64_t>* ids) {
-  if (ids == nullptr) return;
-  const auto atom = [ids](ElementId row) {
-    return row >= 0 && static_cast<std::size_t>(row) < ids->size() ? (*ids)[static_cast<std::size_t>(row)] : std::int64_t{-1};
+void name_atoms(FrameReport& report, const std::vector<std::int64_t>* ids, const std::vector<std::int32_t>* ranks) {
+  const auto at = [](const auto* column, ElementId row) {
+    using T = std::decay_t<decltype((*column)[0])>;
+    return column != nullptr && row >= 0 && static_cast<std::size_t>(row) < column->size() ? (*column)[static_cast<std::size_t>(row)] : T{-1};
   };
+  if (ids == nullptr && ranks == nullptr) return;
   for (Violation& v : report.violations) {
-    v.atom_i = atom(v.pair.i);
-    v.atom_j = atom(v.pair.j);
+    v.atom_i = at(ids, v.pair.i);
+    v.atom_j = at(ids, v.pair.j);
+    v.rank_i = at(ranks, v.pair.i);
+    v.rank_j = at(ranks, v.pair.j);
   }
+}
+
+std::string violation_pair_text(const Violation& v, int first) {
+  const auto name = [&](std::int64_t atom, ElementId row) { return std::to_string(atom >= 0 ? atom : row >= 0 ? row + first : row); };
+  std::string i = name(v.atom_i, v.pair.i), j = name(v.atom_j, v.pair.j);
+  if (v.rank_i >= 0 && v.rank_j >= 0 && v.rank_i != v.rank_j) {
+    i += " of rank " + std::to_string(v.rank_i);
+    j += " of rank " + std::to_string(v.rank_j);
+  }
+  return i + ", " + j;
 }
 
 }  // namespace nbscope

@@ -51,6 +51,8 @@ struct Violation {
   // The atom ids of pair.i and pair.j when the frame names its elements by them (a dump's), else -1:
   // the violation names its atoms after the frame is gone (the run's log, reports).
   std::int64_t atom_i = -1, atom_j = -1;
+  // The MPI ranks whose files held pair.i and pair.j (a run's per-rank dumps), else -1.
+  std::int32_t rank_i = -1, rank_j = -1;
   // |c_i - c_j| - (r_i + r_j) of the pair, minimum image on periodic axes (negative: they overlap);
   // NaN when the pair is no two elements of the frame (a `cells` violation, a pair out of range).
   double gap = std::numeric_limits<double>::quiet_NaN();
@@ -172,9 +174,13 @@ struct FrameReport {
   [[nodiscard]] bool ok() const { return checked && violation_count() == 0; }
 };
 
-// Gives each violation of `report` the atom ids of its pair from `ids` (the frame's, by row); no
-// effect when `ids` is null (rows name the elements).
-void name_atoms(FrameReport& report, const std::vector<std::int64_t>* ids);
+// Gives each violation of `report` the atom ids of its pair from `ids` (the frame's, by row; null:
+// rows name the elements) and their ranks from `ranks` (per-rank dumps; null: none).
+void name_atoms(FrameReport& report, const std::vector<std::int64_t>* ids, const std::vector<std::int32_t>* ranks = nullptr);
+
+// Violation `v`'s two elements as every text names them: "4 of rank 1, 22 of rank 0" when its atoms
+// were in two ranks' files, else "4, 22" (atom ids, or rows numbered from `first`: 0, or 1 as the book).
+std::string violation_pair_text(const Violation& v, int first = 0);
 
 // What the timeline shows of one frame of a run: kept for every frame, whether or not the frame
 // itself can still be shown (the history keeps frames within a memory budget, check/history.hpp).

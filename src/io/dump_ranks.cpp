@@ -219,6 +219,14 @@ DumpFrame merge_rank_frames(std::vector<DumpFrame> pieces) {
       for (std::size_t c = 0; c < columns->values.size(); ++c) columns->values[c][k] = p.columns->values[c][static_cast<std::size_t>(row)];
   }
   out.columns = std::move(columns);
+  // How the run split its box among the ranks (every rank's file holds the global box): drawn by the views.
+  Bounds box;
+  for (std::size_t a = 0; a < 3; ++a) {
+    box.min[a] = out.box.lo[a];
+    box.max[a] = out.box.hi[a];
+  }
+  if (auto split = infer_subdomains(out.elements, out.ranks, static_cast<int>(pieces.size()), box))
+    out.subdomains = std::make_shared<const Subdomains>(*split);
   return out;
 }
 

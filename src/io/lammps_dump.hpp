@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/elements.hpp"
+#include "core/subdomain_grid.hpp"
 #include "io/recording.hpp"
 
 namespace nbscope {
@@ -53,6 +54,7 @@ struct DumpFrame {
   std::vector<std::int64_t> ids;     // row -> atom id, ascending, unique
   std::vector<std::int32_t> types;   // row -> `type` column (empty without one)
   std::vector<std::int32_t> ranks;   // row -> the MPI rank whose file held it (per-rank files, io/dump_ranks.hpp; else empty)
+  std::shared_ptr<const Subdomains> subdomains;  // per-rank files: how the box was split among the ranks (else null)
   // With DumpOptions::keep_columns: `type` and every other numeric column but id, positions and radius, by row.
   std::shared_ptr<const AtomColumns> columns;
   // Bound on the error of a pair's gap |c_i - c_j| - (r_i + r_j) from the digits printed in this frame

@@ -273,6 +273,7 @@ RecordedFrame recorded_from_dump(DumpFrame f, const DumpContacts* contacts, std:
   r.elements = std::move(f.elements);
   r.ids = std::move(f.ids);
   r.ranks = std::move(f.ranks);
+  r.subdomains = std::move(f.subdomains);
   r.precision = f.precision;
   r.columns = std::move(f.columns);
   return r;

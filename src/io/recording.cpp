@@ -268,7 +268,7 @@ class RecordingParser {
     // ~110 bytes a frame from a 10-byte line: millions of empty frames must not take the machine.
     if (rec_.frames.size() >= frame_limit_)
       throw Error(at + "more than " + std::to_string(frame_limit_) + " frames, the limit for a recording (replay --frames N reads the first N)");
-    rec_.frames.push_back({number, time, {}, {}, {}, {}, 0, nullptr});
+    rec_.frames.push_back({number, time, {}, {}, {}, {}, 0, nullptr, nullptr});
     places_.push_back({offset_, line_no});
     state_ = FrameState{line_no, false};
     return true;

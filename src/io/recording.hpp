@@ -31,6 +31,7 @@
 #include "core/grid.hpp"
 #include "check/report.hpp"
 #include "core/pairs.hpp"
+#include "core/subdomain_grid.hpp"
 #include "io/input_file.hpp"
 #include "physics/atom_columns.hpp"
 
@@ -57,6 +58,8 @@ struct RecordedFrame {
   double precision = 0;
   // The frame's other per-atom columns (a dump's type, vx, proc, ... when they are asked for), or null.
   std::shared_ptr<const AtomColumns> columns;
+  // With ranks: each rank's subdomain as LAMMPS split the box (core/subdomain_grid.hpp), when found.
+  std::shared_ptr<const Subdomains> subdomains;
 };
 
 // Row `row` as its frame names it: the atom id `ids` gives it (a dump's), else the row itself (no

@@ -35,6 +35,7 @@ class RecordingSource final : public FrameSource {
   [[nodiscard]] const PairList* recorded_pairs() const override { return header().has_pairs ? &current_->pairs : nullptr; }
   [[nodiscard]] double precision() const override { return current_->precision; }
   [[nodiscard]] const std::vector<std::int32_t>* ranks() const override { return current_->ranks.empty() ? nullptr : &current_->ranks; }
+  [[nodiscard]] const Subdomains* subdomains() const override { return current_->subdomains.get(); }
   [[nodiscard]] std::shared_ptr<const AtomColumns> columns() const override { return current_->columns; }
 
   // ---- FrameSource ----

@@ -10,6 +10,7 @@
 
 #include "core/elements.hpp"
 #include "core/pairs.hpp"
+#include "core/subdomain_grid.hpp"
 #include "physics/atom_columns.hpp"
 #include "physics/box2d_frame.hpp"
 #include "physics/shapes.hpp"
@@ -40,6 +41,8 @@ class Frame {
   [[nodiscard]] virtual double precision() const { return 0; }
   // The MPI rank whose file held each row (a run's per-rank dumps), or null when one file set did.
   [[nodiscard]] virtual const std::vector<std::int32_t>* ranks() const { return nullptr; }
+  // With ranks: each rank's subdomain as the run split the box, or null when not known.
+  [[nodiscard]] virtual const Subdomains* subdomains() const { return nullptr; }
   // The frame's other per-atom columns (a dump's type, vx, proc, ...), or null when it has none.
   [[nodiscard]] virtual std::shared_ptr<const AtomColumns> columns() const { return nullptr; }
 };

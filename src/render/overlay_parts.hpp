@@ -112,4 +112,7 @@ void draw_mask_3d(const Grid& g, std::array<std::int32_t, 2> cell, std::int32_t 
 // Per traced list: -1 when the layer view leaves it out, else its ListLayerStyle (lists_in_layer).
 std::vector<std::int8_t> list_layer_styles(const OverlayScene& s);
 
+// Each rank's subdomain (s.subdomains) outlined in its colour and labelled "rank r" (overlay_subdomains.cpp).
+void draw_subdomains(const OverlayScene& s, const ViewFrame& v, LabelSpace& labels, DrawSink& sink);
+
 }  // namespace nbscope::render::detail

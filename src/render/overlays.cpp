@@ -39,6 +39,7 @@ std::span<const OverlayInfo> overlay_infos() {
       {"ids", 'I', &OverlayFlags::ids, "element ids (inside or beside the circle, never over another label)"},
       {"trails", 'T', &OverlayFlags::trails, "trails of the selected element"},
       {"flash", 'H', &OverlayFlags::flash, "flash elements that changed cell"},
+      {"subdomains", 'D', &OverlayFlags::subdomains, "each MPI rank's subdomain, labelled with its rank (per-rank dumps)"},
   };
   return infos;
 }
@@ -383,6 +384,7 @@ void draw_scene(const OverlayScene& scene, const OverlayFlags& f, const Camera& 
   const Elements& e = *s.elements;
   if (f.bodies || f.elements) draw_ghosts(s, view, sink);  // periodic frames only
   draw_box_edges(e, view, ppm, sink);
+  if (f.subdomains && s.subdomains != nullptr) draw_subdomains(s, v, labels, sink);
   if (f.elements) draw_elements(e, s.layer, view, ppm, sink);
   // Trails are the selected element's: not while it is in a hidden layer.
   if (f.trails && (s.layer == nullptr || s.selected < 0 || s.selected >= static_cast<ElementId>(e.size()) || s.layer->visible(s.selected)))

@@ -18,6 +18,7 @@
 #include "core/grid.hpp"
 #include "core/layers.hpp"
 #include "core/pairs.hpp"
+#include "core/subdomain_grid.hpp"
 #include "render/camera.hpp"
 #include "render/colour_map.hpp"
 #include "render/draw_sink.hpp"
@@ -65,6 +66,7 @@ struct OverlayFlags {
   bool ids = false;         // element ids, inside the circle or beside it, never over another label
   bool trails = true;       // trails of selected elements
   bool flash = true;        // elements that changed cell this frame
+  bool subdomains = true;   // each MPI rank's subdomain (a frame read from per-rank dumps; others have none)
 };
 
 // One overlay's name, key and flag, for panels, key handling and settings.
@@ -137,6 +139,8 @@ struct OverlayScene {
   // --color-by: each element's fill (by row; empty: the bodies' own colours) and what they mean (the legend's).
   std::span<const Rgba> element_fills;
   const ColourKey* colour_key = nullptr;
+  // Each MPI rank's subdomain (a frame read from per-rank dumps: core/subdomain_grid.hpp), or null.
+  const Subdomains* subdomains = nullptr;
 };
 
 // The row whose lists the Row filter keeps (and whose row-below copies are drawn): the stepper's row

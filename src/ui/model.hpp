@@ -43,16 +43,10 @@ namespace nbscope::ui {
   return std::string(ids != nullptr ? "atoms (" : "(") + std::to_string(element_number(p.i, book, ids)) + ", " +
          std::to_string(element_number(p.j, book, ids)) + ")";
 }
-// Row `row` of violation `v`'s pair as its frame named it: the atom id the violation carries, else
-// the row in the chosen numbering.
-[[nodiscard]] inline std::int64_t element_number(const Violation& v, std::int64_t row, bool book) {
-  const std::int64_t atom = row == v.pair.i ? v.atom_i : row == v.pair.j ? v.atom_j : -1;
-  return atom >= 0 ? atom : shown(row, book);
-}
-// Violation `v`'s pair as its frame named it: "atoms (12, 40)" for a dump's, else "(4, 6)".
+// Violation `v`'s pair as its frame named it: "atoms (12, 40)" for a dump's ("atoms (4 of rank 1, 22
+// of rank 0)" across two ranks' files), else "(4, 6)".
 [[nodiscard]] inline std::string pair_text(const Violation& v, bool book) {
-  return std::string(v.atom_i >= 0 ? "atoms (" : "(") + std::to_string(element_number(v, v.pair.i, book)) + ", " +
-         std::to_string(element_number(v, v.pair.j, book)) + ")";
+  return std::string(v.atom_i >= 0 ? "atoms (" : "(") + violation_pair_text(v, book ? 1 : 0) + ")";
 }
 
 // Where the window's own part of a frame's time went, in milliseconds (the pipeline's part, physics,
@@ -97,6 +91,7 @@ struct SimView {
   // The shown frame's source (the FrameResult holds no elements).
   std::int64_t bodies = 0;
   const Elements* elements = nullptr;
+  const Subdomains* subdomains = nullptr;  // each MPI rank's subdomain (per-rank dumps), else null: no subdomains overlay
   // The layer of a 3D frame the view shows (core/layers.hpp: every element's layer, the layer's
   // neighbours), null for a 2D frame.
   const LayerSlice* layer = nullptr;

@@ -21,6 +21,7 @@ class OverlaysPanel final : public Panel {
   void draw(UiContext& c) override {
     if (!ImGui::BeginTable("overlays", 2)) return;
     for (const render::OverlayInfo& o : render::overlay_infos()) {
+      if (o.flag == &render::OverlayFlags::subdomains && c.sim.subdomains == nullptr) continue;  // a frame with ranks only
       ImGui::TableNextColumn();
       char label[48];
       std::snprintf(label, sizeof label, "%s (%c)", o.name, o.key);

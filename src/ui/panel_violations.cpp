@@ -202,9 +202,8 @@ class ViolationsPanel final : public Panel {
         const auto truth = grid_cells(c.sim, v);
         const bool wrong = truth && !same_cells(v, *truth);
         ImGui::TableNextColumn();
-        // A dump's frame: its atoms' ids, which the violation carries.
-        ImGui::Text("%lld, %lld", static_cast<long long>(element_number(v, v.pair.i, book)),
-                    static_cast<long long>(element_number(v, v.pair.j, book)));
+        // A dump's frame: its atoms' ids, which the violation carries (and their ranks, when two).
+        ImGui::TextUnformatted(violation_pair_text(v, book ? 1 : 0).c_str());
         if (wrong) ImGui::TextDisabled("true");  // under the pair, beside the grid's cells
         ImGui::TableNextColumn();
         const int dim = frame_dim(c.sim);

@@ -202,5 +202,68 @@ TEST(WindowAtoms, AnEmptyFirstFrameLeavesACameraTheUserMoved) {
   EXPECT_EQ(moved.view->camera().pixels_per_metre(), 17.0);
 }
 
+// A frame read from two ranks' files (io/dump_ranks.hpp): four atoms, one in each quarter of a 10 x
+// 10 box split 2 x 2, ranks 0..3 as LAMMPS numbers them (z fastest, then y: rank 1 upper left).
+Recording four_ranks() {
+  RecordedFrame f = dump_frame(100, {1, 2, 3, 4}, {});
+  for (const auto& [x, y] : {std::pair{2.5, 2.5}, {2.5, 7.5}, {7.5, 2.5}, {7.5, 7.5}}) f.elements.push_back(x, y, 0, 1.5);
+  f.ranks = {0, 1, 2, 3};
+  auto split = std::make_shared<Subdomains>();
+  split->grid = {2, 2, 1};
+  split->box.max[0] = split->box.max[1] = split->box.max[2] = 10;
+  f.subdomains = split;
+  Recording rec;
+  rec.path = "atoms.%.dump";
+  rec.frames = {f};
+  return rec;
+}
+
+// The colour of the screenshot's pixel over world point (x, y).
+render::Rgba pixel_at(AtomRig& rig, const Image& image, double x, double y) {
+  const Eigen::Vector2d p = rig.view->camera().to_screen({x, y});
+  const std::uint8_t* c = image.at(static_cast<int>(p.x()), static_cast<int>(p.y()));
+  return {c[0], c[1], c[2]};
+}
+
+TEST(WindowAtoms, PerRankFramesAreColouredByRankAndShowEachRanksSubdomain) {
+  ViewOptions options;
+  options.colour_by = "rank";  // no proc column: the ranks of the files
+  options.panels = "none";
+  options.overlays = "-grid";  // nothing over the atoms' fills
+  AtomRig rig(four_ranks(), options);
+  rig.frames(3);
+  const Image image = rig.view->screenshot();
+  write_png(std::string(NBSCOPE_TEST_OUT) + "/window_ranks.png", image);
+  const double xs[] = {2.5, 2.5, 7.5, 7.5}, ys[] = {2.5, 7.5, 2.5, 7.5};
+  for (std::size_t rank = 0; rank < 4; ++rank) {
+    // Left of and above the centre: clear of the spoke drawn from it to the right.
+    EXPECT_EQ(pixel_at(rig, image, xs[rank] - 0.6, ys[rank] + 0.6), render::category_colour(rank)) << "the atom of rank " << rank;
+  }
+  EXPECT_TRUE(rig.view->state().overlays.subdomains);
+  // Along the cut x = 5 between ranks 0 and 2 (y 2.5): one of the two ranks' outline colours.
+  const render::Rgba cut = pixel_at(rig, image, 5.0, 2.5);
+  EXPECT_TRUE(cut == render::category_colour(0) || cut == render::category_colour(2)) << int(cut.r) << "," << int(cut.g) << "," << int(cut.b);
+  rig.view->state().overlays.subdomains = false;  // D
+  rig.frames(1);
+  EXPECT_NE(pixel_at(rig, rig.view->screenshot(), 5.0, 2.5), cut);
+}
+
+TEST(WindowAtoms, ColourByRankWithoutRanksOrAProcColumnIsOneClearError) {
+  Recording rec = four_ranks();
+  rec.frames.front().ranks.clear();
+  rec.frames.front().subdomains.reset();
+  ViewOptions options;
+  options.colour_by = "rank";
+  try {
+    AtomRig rig(std::move(rec), options);
+    rig.frames(1);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("--color-by rank: the frames have no column 'proc'"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos);
+  }
+}
+
 }  // namespace
 }  // namespace nbscope

@@ -62,6 +62,26 @@ TEST(DumpRanks, PiecesBecomeOneFrameInIdOrderWithTheirRanks) {
   EXPECT_NE(e.find("atom 7 is also in rank 0's frame"), std::string::npos) << e;
 }
 
+TEST(DumpRanks, TheMergedFrameKeepsEveryRanksColumnsAndFindsHowTheBoxWasSplit) {
+  // Rank 0 holds x < 5, rank 1 x >= 5 of a 10-wide box: LAMMPS's `processors 2 1 1`.
+  std::vector<DumpFrame> pieces{piece({2, 7}, 1), piece({1, 5, 9}, 6)};
+  for (std::size_t r = 0; r < 2; ++r) {
+    auto columns = std::make_shared<AtomColumns>();
+    columns->header = {"id", "type", "x", "y", "radius", "proc"};
+    columns->names = {"type", "proc"};
+    columns->values = {std::vector<double>(pieces[r].ids.size(), 1), std::vector<double>(pieces[r].ids.size(), static_cast<double>(r))};
+    pieces[r].columns = columns;
+    pieces[r].box.hi[0] = pieces[r].box.hi[1] = 10;
+  }
+  const DumpFrame f = merge_rank_frames(std::move(pieces));
+  ASSERT_NE(f.columns, nullptr);
+  EXPECT_EQ(*f.columns->find("proc"), (std::vector<double>{1, 0, 1, 0, 1}));  // by id: 1 2 5 7 9
+  ASSERT_NE(f.subdomains, nullptr);
+  EXPECT_EQ(f.subdomains->grid, (std::array<int, 3>{2, 1, 1}));
+  EXPECT_DOUBLE_EQ(f.subdomains->bounds_of(1).min[0], 5);
+  EXPECT_DOUBLE_EQ(f.subdomains->bounds_of(0).max[1], 10);
+}
+
 TEST(DumpRanks, AContactTwoRanksListIsOneButARepeatWithinARankStays) {
   DumpContacts zero, one;
   zero.ids = {{1, 2}, {2, 7}, {2, 7}};  // a repeat within rank 0: the check names it
