@@ -93,7 +93,7 @@ class FollowedFiles {
 // is open only while written, and may never be seen: then only --idle ends the run).
 class Writers {
  public:
-  // Looks for processes holding one of `paths` open (at most every 0.25 s; none once one is found).
+  // Looks for processes holding one of `paths` open (at most every 0.1 s; none once one is found).
   void look(const std::vector<std::string>& paths);
   // The writers seen, as "pid 123" or "pids 123, 124".
   [[nodiscard]] std::string named() const;

@@ -28,12 +28,15 @@ command -v mpirun >/dev/null || skip "mpirun is not installed (apt-get install o
 rm -rf "$out" && mkdir -p "$out/ghost" "$out/twice" && cd "$out"
 holds() { grep -qF -- "$2" "$1" || { cat "$1" >&2; fail "$1 does not say '$2'"; }; }
 
-"$nbscope" watch 'atoms.*.dump' --contacts 'contacts.*.dump' --headless --idle 5 --touching strict >watch.txt 2>watch.err & watch=$!
+# The input dumps timesteps 4000..12000 every 1000: the watch ends at its 9th frame (--idle would end it
+# too, but a loaded machine can take longer than any short idle between two of a run's frames).
+"$nbscope" watch 'atoms.*.dump' --contacts 'contacts.*.dump' --headless --frames 9 --idle 60 --touching strict >watch.txt 2>watch.err & watch=$!
 sleep 0.3
 mpirun --allow-run-as-root --oversubscribe -np "$np" "$simulator" -in "$here/lammps_mpi.in" -var px "$px" -var py "$py" \
   -log log.lammps -echo none -screen none >lmp.out 2>&1 || { tail -n 20 log.lammps lmp.out >&2; fail "mpirun lmp exited non-zero"; }
 grep -q "$px by $py by 1 MPI processor grid" log.lammps || fail "lmp did not run on a $px by $py by 1 grid"
 frames=$(ls atoms.0.*.dump | wc -l)
+[ "$frames" -eq 9 ] || fail "lmp wrote $frames frames, the watch waits for 9"
 [ "$(ls atoms.*.dump | wc -l)" -eq $((frames * np)) ] || fail "expected $np files a frame"
 head -n 1 "contacts.1.$(sed -n 2p atoms.0.*.dump | head -n 1).dump" | grep -q ITEM && fail "rank 1's dump local has ITEM lines: not the case tested"
 

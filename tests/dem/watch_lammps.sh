@@ -76,7 +76,8 @@ fi
 # without --2d: read as 2D with one note, exported for ParaView as it lands.
 mkdir -p flat && (
   cd flat
-  "$nbscope" watch 'atoms.*.dump' --contacts 'contacts.*.dump' --headless --idle 3 --touching strict --export-vtk vtk \
+  # lammps_pour2d.in dumps timesteps 0..5000 every 1000: 6 frames (no short --idle: a loaded machine is slow).
+  "$nbscope" watch 'atoms.*.dump' --contacts 'contacts.*.dump' --headless --frames 6 --idle 60 --touching strict --export-vtk vtk \
     >flat.txt 2>flat.err & flat=$!
   sleep 0.3
   "$simulator" -in "$here/lammps_pour2d.in" -log log.lammps -echo none -screen /dev/null >lmp.out 2>&1 || fail "lmp (2D) exited non-zero"
@@ -84,6 +85,7 @@ mkdir -p flat && (
   cat flat.txt flat.err
   [ "$rc" -eq 0 ] || fail "watch of the 2D run exited $rc, expected 0"
   frames=$(ls atoms.*.dump | wc -l)
+  [ "$frames" -eq 6 ] || fail "lmp wrote $frames frames of the 2D run, the watch waits for 6"
   holds flat.txt "watch: atoms.*, recorded, $frames frames, 240 elements: A==R held in every frame"
   holds flat.err "every z is 0 in a thin z box (a \`dimension 2\` run): read as 2D"
   [ "$(ls vtk/frame_*.vtp | wc -l)" -eq "$frames" ] || fail "--export-vtk wrote $(ls vtk | wc -l) files for $frames frames"

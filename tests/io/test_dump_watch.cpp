@@ -156,7 +156,7 @@ TEST(DumpWatch, WaitingEndsWhenTheWritersProcessIsGone) {
   if (child == 0) {
     std::ofstream held(path, std::ios::app);
     held << three_atoms(100) << std::flush;
-    ::usleep(2'000'000);  // seen open (the watch looks every 0.25 s), then gone
+    ::usleep(2'000'000);  // seen open (the watch looks every 0.1 s), then gone
     ::_exit(0);
   }
   DumpWatchSpec spec;
