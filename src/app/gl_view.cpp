@@ -320,6 +320,7 @@ ui::UiRequests GlView::frame(FrameLoop& loop, const Session& session, bool live_
   scene.insets = host_.insets(state_);  // last frame's panels: labels keep to the part of the view they leave free
   scene.covered = host_.covered();
   scene.book_numbering = state_.book_numbering;
+  if (!choices_.units.name.empty()) scene.length_unit = choices_.units.length;  // d = 1.2 sigma (a scene's metres unsaid, as ever)
   scene.ids = loop.result().ids.get();  // a dump's atoms are labelled by their ids
   scene.subdomains = loop.source().subdomains();
   if (choices_.colour_by) {

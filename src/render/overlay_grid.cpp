@@ -188,8 +188,9 @@ void draw_grid(const OverlayScene& s, const ViewFrame& v, const GridCounts& coun
   // The dimensions above the top-left corner, kept inside the free part of the view (placed first:
   // nothing covers them), on a backdrop so that bodies above the grid never hide them.
   char buf[160];
-  int used = std::snprintf(buf, sizeof buf, "%lld x %lld cells, d = %.3g%s", static_cast<long long>(g.n[0]),
-                           static_cast<long long>(g.n[1]), d, step > 1 ? (", lines every " + std::to_string(step)).c_str() : "");
+  int used = std::snprintf(buf, sizeof buf, "%lld x %lld cells, d = %.3g%s%s%s", static_cast<long long>(g.n[0]),
+                           static_cast<long long>(g.n[1]), d, s.length_unit.empty() ? "" : " ", s.length_unit.c_str(),
+                           step > 1 ? (", lines every " + std::to_string(step)).c_str() : "");
   if (s.layer != nullptr && used > 0 && static_cast<std::size_t>(used) < sizeof buf) {
     // The layer shown and its band of z (the book's layer iz: iz*d <= z - z_min < (iz+1)*d).
     const int iz = s.layer->layer, shown = s.book_numbering ? iz + 1 : iz;

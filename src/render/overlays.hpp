@@ -127,6 +127,8 @@ struct OverlayScene {
   ScreenInsets insets;         // pixels at the view's edges covered by panels: the grid's numbers and list heads keep clear
   std::span<const PixelRect> covered;  // the panels' windows and the menu bar: no label is drawn under them
   bool book_numbering = false;  // element ids and cell indices drawn from 1, as the book prints them
+  // The run's length unit after the grid's cell size ("sigma": d = 1.2 sigma); empty for none (a scene's metres).
+  std::string length_unit;
   // The atom id of each row (a dump's frame, io/recording.hpp): the ids overlay shows these instead.
   const std::vector<std::int64_t>* ids = nullptr;
   // Someone's own arrays checked (nbscope verify --arrays): `lists` are theirs, these are the

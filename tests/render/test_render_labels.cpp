@@ -172,5 +172,24 @@ TEST(Labels, BookNumberingCountsIdsAndCellsFromOne) {
   EXPECT_TRUE(at(r0, "21").isApprox(at(r1, "22")));
 }
 
+// A run in named units (--units lj) gives the grid's cell size in them; a scene's metres stay unsaid.
+TEST(Labels, TheGridsTitleGivesTheCellSizeInTheRunsUnit) {
+  Field f;
+  f.camera.set({10, 10}, 30.0);
+  OverlayScene metres = f.scene({});
+  OverlayScene sigma = metres;
+  sigma.length_unit = "sigma";
+  TextRecorder r0, r1;
+  draw_scene(metres, grid_and_ids(), f.camera, r0);
+  draw_scene(sigma, grid_and_ids(), f.camera, r1);
+  const auto title = [](const TextRecorder& r) {
+    for (const auto& x : r.texts)
+      if (x.text.find(" cells, d = ") != std::string::npos) return x.text;
+    return std::string();
+  };
+  EXPECT_EQ(title(r0), "20 x 20 cells, d = 1");
+  EXPECT_EQ(title(r1), "20 x 20 cells, d = 1 sigma");
+}
+
 }  // namespace
 }  // namespace nbscope::render
