@@ -135,8 +135,8 @@ class WatchedDumps final : public RecordedFrames {
     if (header_.has_pairs)
       for (WholeFrame& w : contacts_.look()) add(contacts_ready_, std::move(w), contacts_, false);
     while (!atoms_ready_.empty() && static_cast<std::int64_t>(taken_.size()) < spec_.options.max_frames) {
+      if (!ranks_known()) break;  // (it may sort the pieces again: the iterator is taken after it)
       const auto a = atoms_ready_.begin();
-      if (!ranks_known()) break;
       if (static_cast<int>(a->second.size()) < ranks_) break;  // another rank's piece is still being written
       Taken t;
       for (const auto& [rank, w] : a->second) {

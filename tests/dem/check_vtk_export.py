@@ -200,7 +200,13 @@ def main():
             fail("%s: missing lines %s, expected %s" % (name, missing, want))
     print("the deleted contact %s of timestep %d: one line of kind 2 (missing)" % (deleted, last))
 
-    # 4. --color-by in a headless screenshot, and its refusals.
+    # 4. --color-by in a headless screenshot, and its refusals: where this nbscope renders (a build
+    # with NBSCOPE_GUI=OFF, as the sanitizer build, makes no pictures: --version says so).
+    version = subprocess.run([nbscope, "--version"], capture_output=True, text=True).stdout
+    if "window: no" in version:
+        print("--color-by: not run (%s)" % next(l for l in version.split("\n") if l.startswith("window:")))
+        print("ok")
+        return 0
     shot = replay + ["--contacts", "contacts.*.dump", "--frames", "1", "--size", "640x480", "--overlays", "-grid"]
     def pixels(png):
         reader = vtkPNGReader()
