@@ -198,7 +198,7 @@ const FollowedFile* FollowedFiles::find(const std::string& path) const {
 // ---- the writer ----------------------------------------------------------------------------
 
 void Writers::look(const std::vector<std::string>& paths) {
-  if (!pids_.empty() || seconds_since(last_look_) < 0.1) return;  // one writer found: followed from now on
+  if (!looking()) return;  // one writer found: followed from now on
   last_look_ = Clock::now();
   std::set<std::string> wanted;
   for (const std::string& p : paths) {

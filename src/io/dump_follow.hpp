@@ -95,6 +95,8 @@ class Writers {
  public:
   // Looks for processes holding one of `paths` open (at most every 0.1 s; none once one is found).
   void look(const std::vector<std::string>& paths);
+  // True while no writer has been found and a look is due (the caller gathers the paths only then).
+  [[nodiscard]] bool looking() const { return pids_.empty() && seconds_since(last_look_) >= 0.1; }
   // The writers seen, as "pid 123" or "pids 123, 124".
   [[nodiscard]] std::string named() const;
   // True once a writer was seen and every one seen has ended (or waits for its parent: a zombie).

@@ -151,6 +151,7 @@ class WatchedDumps final : public RecordedFrames {
       last_taken_ = a->first;
       atoms_ready_.erase(a);
     }
+    if (!writers_.looking()) return;  // the writer found (or looked for just now): no paths to gather every poll
     std::vector<std::string> paths;
     for (const FollowedFile& f : atoms_.files()) paths.push_back(f.path());
     for (const FollowedFile& f : contacts_.files()) paths.push_back(f.path());

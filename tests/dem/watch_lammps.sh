@@ -39,8 +39,15 @@ window=
 # The window where this nbscope has one (a build with NBSCOPE_GUI=OFF, as the sanitizer build, has none).
 if command -v Xvfb >/dev/null && "$nbscope" --version | grep -q "^window: yes"; then
   # A display of its own (-displayfd picks a free one), for as long as this script runs.
-  exec 3< <(Xvfb -displayfd 1 -screen 0 1280x720x24 -nolisten tcp 2>/dev/null)
-  read -r -t 10 display <&3 || fail "Xvfb did not start"
+  # Another server starting at the same moment can take the display it chose: tried again then.
+  display=
+  for attempt in 1 2 3 4 5; do
+    exec 3< <(exec Xvfb -displayfd 1 -screen 0 1280x720x24 -nolisten tcp 2>/dev/null)
+    if read -r -t 10 display <&3; then break; fi
+    display=
+    sleep 0.2
+  done
+  [ -n "$display" ] || fail "Xvfb did not start (5 tries)"
   trap 'pkill -P $$ Xvfb 2>/dev/null || true' EXIT
   DISPLAY=":$display" "$nbscope" watch 'frames/atoms.*.dump' --contacts 'frames/contacts.*.dump' --touching strict \
     --frames 4 --screenshot window.png --size 960x600 >window.txt 2>&1 & window=$!
